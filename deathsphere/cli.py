@@ -1,0 +1,253 @@
+"""The ``deathsphere`` command line: parse options, call the model, render.
+
+No physics here.  Every command shares :func:`body_options` and
+:func:`output_options`; usage errors become one line on stderr with exit
+status 2 (:func:`main`), results go to stdout, diagnostics to stderr.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+
+import click
+import numpy as np
+from rich.console import Console
+
+from deathsphere import __version__
+from deathsphere.constants import BODIES, SIDES, STANDARD_GRAVITY, TABLE1_SPHERE_RADIUS, TABLE1_WHEEL_RADIUS
+from deathsphere.exitcodes import ExitCode
+from deathsphere.grid import RangeError, grid_chunks, grid_size, parse_many
+from deathsphere.inputs import InputError, read_requests
+from deathsphere.model import Setup, Table, angle_problem, evaluate, make_requests
+from deathsphere.render import FORMATS, write_csv, write_json, write_ndjson, write_rich_table
+
+CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
+
+#: Largest grid ``orbit`` evaluates in one go; bigger ones belong to ``sweep``.
+ORBIT_MAX_ROWS = 1_000_000
+
+
+def stdout_console() -> Console:
+    # rich honours NO_COLOR and TERM=dumb itself
+    return Console(highlight=False)
+
+
+def stderr_console() -> Console:
+    return Console(stderr=True, highlight=False)
+
+
+# ---------------------------------------------------------------------------
+# shared options
+
+
+def output_options(formats=FORMATS):
+    def decorator(f):
+        return click.option(
+            "--format", "fmt", type=click.Choice(formats, case_sensitive=False), default=None,
+            help="Output format [default: table on a terminal, csv when piped].")(f)
+    return decorator
+
+
+def body_options(f):
+    options = [
+        click.option("--body", type=click.Choice(BODIES, case_sensitive=False), default="wheel",
+                     show_default=True, help="Rolling body."),
+        click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside",
+                     show_default=True, help="Body inside or outside the fixed sphere."),
+        click.option("-a", "--wheel-radius", "a", type=float, default=TABLE1_WHEEL_RADIUS, show_default=True,
+                     metavar="M", help="Body radius a [m]."),
+        click.option("-r", "--sphere-radius", "r", type=float, default=TABLE1_SPHERE_RADIUS, show_default=True,
+                     metavar="M", help="Fixed sphere radius r [m]."),
+        click.option("-k", "--inertia", "k", type=float, default=None, metavar="K",
+                     help="Inertia factor k: I11 = 2 k m a^2 for a wheel, I = k m a^2 for a sphere "
+                          "[default: 0.5 wheel, 0.4 sphere]."),
+        click.option("-g", "--gravity", "g", type=float, default=STANDARD_GRAVITY, show_default=True,
+                     metavar="M_S2", help="Gravitational acceleration [m/s^2]."),
+        click.option("--mu", type=float, default=math.inf, metavar="MU",
+                     help="Friction coefficient available; orbits needing more have status 'slips' "
+                          "[default: unlimited]."),
+    ]
+    for option in reversed(options):
+        f = option(f)
+    return f
+
+
+def make_setup(body, side, a, r, k, g, mu) -> Setup:
+    try:
+        return Setup(body=body.lower(), side=side.lower(), a=a, r=r, k=k, g=g, mu=mu)
+    except ValueError as exc:
+        raise click.UsageError(str(exc)) from None
+
+
+def parse_angles(texts, name: str, max_values: int | None = None):
+    try:
+        values = parse_many(texts, f"--{name}", max_values)
+    except RangeError as exc:
+        raise click.BadParameter(str(exc).split(": ", 1)[-1], param_hint=f"'--{name}'") from None
+    for v in values:
+        problem = angle_problem(name, float(v))
+        if problem:
+            raise click.BadParameter(problem, param_hint=f"'--{name}'")
+    return values
+
+
+def choose_format(fmt: str | None) -> str:
+    if fmt:
+        return fmt.lower()
+    return "table" if sys.stdout.isatty() else "csv"
+
+
+def emit(chunks, fmt: str, title: str | None = None) -> int:
+    """Write tables in the chosen format to stdout; returns the row count."""
+    out = sys.stdout
+    if fmt == "csv":
+        return write_csv(chunks, out)
+    if fmt == "json":
+        return write_json(chunks, out)
+    if fmt == "ndjson":
+        return write_ndjson(chunks, out)
+    tables = list(chunks)
+    table = tables[0] if len(tables) == 1 else Table({n: np.concatenate([t[n] for t in tables]) for n in tables[0].names})
+    return write_rich_table(table, stdout_console(), title)
+
+
+# ---------------------------------------------------------------------------
+# commands
+
+
+@click.group(context_settings=CONTEXT)
+@click.version_option(__version__, "-V", "--version", prog_name="deathsphere")
+def cli():
+    """Orbits of a wheel or sphere rolling without slipping on a fixed sphere:
+    the motorcycle "globe of death" as physics, after K. T. McDonald,
+    "Circular Orbits Inside the Sphere of Death" (1993).
+
+    \b
+    Examples:
+      deathsphere orbit --theta 60 --alpha 10          one orbit, every quantity
+      deathsphere orbit --theta 30:90:15 --alpha 10 --format csv
+      deathsphere table1                                the paper's Table 1, checked
+    """
+
+
+@cli.command()
+@click.option("--theta", multiple=True, metavar="DEG",
+              help="Polar angle of the contact point from the upward vertical, 0..180 (90 = equator). "
+                   "Repeat it or give start:stop:step.")
+@click.option("--alpha", multiple=True, metavar="DEG",
+              help="Tilt of the wheel's diameter through the contact point below the orbit plane, "
+                   "-180..180. Repeat it or give start:stop:step.")
+@click.option("--input", "input_file", type=click.File("r"), default=None, metavar="FILE|-",
+              help="CSV of requests, one orbit per row; its header names the options "
+                   "(theta, alpha, a, r, k, g, mu, body, side). '-' reads stdin.")
+@body_options
+@output_options()
+def orbit(theta, alpha, input_file, body, side, a, r, k, g, mu, fmt):
+    """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, g-load.
+
+    All combinations of the --theta and --alpha values are evaluated.  Each
+    row has a status: ok, no_fit (eq. 0/81), no_orbit (Omega^2 <= 0, eq. 29),
+    no_contact (eq. 33/83), slips (needs more than --mu) or invalid (bad
+    input row); the reason column says why.
+
+    \b
+    Examples:
+      deathsphere orbit --theta 60 --alpha 10
+      deathsphere orbit --theta 60 --alpha 5:40:5 --mu 1 --format csv
+      printf 'theta,alpha\\n60,10\\n90,25\\n' | deathsphere orbit --input -
+    """
+    setup = make_setup(body, side, a, r, k, g, mu)
+    fmt = choose_format(fmt)
+    defaults = dict(body=setup.body, side=setup.side, a=setup.a, r=setup.r, k=k, g=setup.g, mu=setup.mu)
+    if input_file is not None:
+        for name, values in (("theta", theta), ("alpha", alpha)):
+            if len(values) > 1 or any(":" in v for v in values):
+                raise click.UsageError(f"with --input, --{name} may give one default value, not a list or range")
+        if theta:
+            defaults["theta"] = float(parse_angles(theta, "theta")[0])
+        if alpha:
+            defaults["alpha"] = float(parse_angles(alpha, "alpha")[0])
+        try:
+            req = read_requests(input_file, defaults, source=getattr(input_file, "name", "input"))
+        except InputError as exc:
+            raise click.UsageError(str(exc)) from None
+    else:
+        if not theta:
+            raise click.UsageError("give --theta DEG (or --input FILE)")
+        needs_alpha = setup.body == "wheel"
+        if needs_alpha and not alpha:
+            raise click.UsageError("give --alpha DEG for a wheel (or --input FILE)")
+        thetas = parse_angles(theta, "theta", ORBIT_MAX_ROWS)
+        alphas = parse_angles(alpha, "alpha", ORBIT_MAX_ROWS) if alpha else np.array([math.nan])
+        axes = {"theta": thetas, "alpha": alphas}
+        if grid_size(axes) > ORBIT_MAX_ROWS:
+            raise click.UsageError(f"{grid_size(axes)} orbits is more than `orbit` holds at once "
+                                   f"({ORBIT_MAX_ROWS}); use `deathsphere sweep`, which streams")
+        _, grid = next(grid_chunks(axes, grid_size(axes)))
+        defaults.update(grid)
+        req = make_requests(grid_size(axes), **defaults)
+    table = evaluate(req)
+    emit([table], fmt, title="Horizontal orbits (McDonald 1993, eqs. 0, 29-36)")
+    if (table["status"] == "invalid").any():
+        n_bad = int((table["status"] == "invalid").sum())
+        stderr_console().print(f"deathsphere: {n_bad} input row(s) invalid; see their reason column",
+                               style="yellow")
+        sys.exit(ExitCode.INVALID_ROWS)
+
+
+@cli.command("table1")
+@output_options()
+def table1_command(fmt):
+    """The paper's Table 1: printed mu, v_cm and "No. of g's" beside the computed values.
+
+    Wheel a = 0.3 m, k = 1/2 in a sphere r = 3.0 m, standard gravity.  The
+    note column names every disagreement; docs/errata.md explains them.
+
+    \b
+    Example:
+      deathsphere table1
+      deathsphere table1 --format csv
+    """
+    from deathsphere.render import table1_view
+    from deathsphere.table1 import PRINTED, table1
+
+    table = table1()
+    fmt = choose_format(fmt)
+    if fmt == "table":
+        stdout_console().print(table1_view(table, PRINTED))
+    else:
+        emit([table], fmt)
+
+
+# ---------------------------------------------------------------------------
+# entry point
+
+
+def main(argv=None) -> None:
+    """Run the CLI; usage errors are one line on stderr with exit status 2."""
+    try:
+        code = cli.main(args=argv, prog_name="deathsphere", standalone_mode=False)
+    except click.exceptions.UsageError as exc:
+        hint = f" (see 'deathsphere {exc.ctx.info_name} --help')" if exc.ctx and exc.ctx.parent else \
+            " (see 'deathsphere --help')"
+        message = " ".join(exc.format_message().split())
+        click.echo(f"deathsphere: error: {message}{hint}", err=True)
+        sys.exit(ExitCode.USAGE)
+    except click.exceptions.FileError as exc:
+        click.echo(f"deathsphere: error: {' '.join(exc.format_message().split())}", err=True)
+        sys.exit(ExitCode.USAGE)
+    except click.exceptions.ClickException as exc:
+        click.echo(f"deathsphere: error: {' '.join(exc.format_message().split())}", err=True)
+        sys.exit(ExitCode.USAGE)
+    except (click.exceptions.Abort, KeyboardInterrupt):
+        click.echo("deathsphere: interrupted", err=True)
+        sys.exit(130)
+    except BrokenPipeError:
+        # the reader went away (e.g. `| head`): stop quietly, and keep Python
+        # from complaining when it flushes stdout at exit
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        sys.exit(ExitCode.OK)
+    sys.exit(code or 0)

@@ -1,0 +1,333 @@
+"""The user-facing model: a validated :class:`Setup`, orbit requests, and the
+result :class:`Table` of ordered named columns (the CLI contract, design.md).
+
+Data flows one way: requests (degrees, per-row parameters) are validated here,
+grouped by body, handed to the pure physics in :mod:`deathsphere.physics`
+(radians), and the results are scattered back into one table in input order.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from deathsphere.constants import (
+    BODIES,
+    DEFAULT_INERTIA,
+    SIDES,
+    STANDARD_GRAVITY,
+    TABLE1_SPHERE_RADIUS,
+    TABLE1_WHEEL_RADIUS,
+)
+from deathsphere.physics import wheel
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+
+#: The contract's columns, in order (design.md).  Add, never rename or reorder.
+COLUMNS = (
+    "input_row", "body", "side", "theta_deg", "alpha_deg", "a_m", "r_m", "k", "g_m_s2",
+    "status", "reason",
+    "r_prime_m", "omega_rad_s", "period_s", "v_cm_m_s", "spin_rad_s", "accel_m_s2",
+    "accel_g", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
+    # extensions (appended; see CHANGELOG.md)
+    "mu_available", "omega3_rad_s",
+)
+
+#: Columns holding text; every other column is float64 (input_row is int).
+TEXT_COLUMNS = frozenset({"body", "side", "status", "reason"})
+
+#: Physics output key -> contract column.
+_PHYSICS_COLUMNS = {
+    "r_prime": "r_prime_m",
+    "omega": "omega_rad_s",
+    "period": "period_s",
+    "v_cm": "v_cm_m_s",
+    "spin": "spin_rad_s",
+    "accel": "accel_m_s2",
+    "accel_g": "accel_g",
+    "normal": "normal_per_mass_m_s2",
+    "friction": "friction_per_mass_m_s2",
+    "mu_required": "mu_required",
+    "omega3": "omega3_rad_s",
+}
+
+#: Request fields: name -> (default, unit, what it is).
+REQUEST_FIELDS = {
+    "body": ("wheel", "", "wheel | sphere | particle"),
+    "side": ("inside", "", "inside | outside"),
+    "theta": (None, "deg", "polar angle of the contact point, 0..180"),
+    "alpha": (None, "deg", "tilt of the wheel below the orbit plane, -180..180"),
+    "a": (TABLE1_WHEEL_RADIUS, "m", "body radius, > 0"),
+    "r": (TABLE1_SPHERE_RADIUS, "m", "sphere radius, > a inside"),
+    "k": (None, "", "inertia factor, >= 0 (default by body)"),
+    "g": (STANDARD_GRAVITY, "m/s^2", "gravity, > 0"),
+    "mu": (math.inf, "", "friction coefficient available, >= 0 (inf: no limit)"),
+}
+
+
+class Table:
+    """Ordered named columns of equal-length arrays (the result type).
+
+    ``table["v_cm_m_s"]`` is a float64 array; ``table.names`` the column
+    order; ``len(table)`` the number of rows.  Undefined values are NaN in
+    float columns (empty in CSV, null in JSON).
+    """
+
+    def __init__(self, columns: dict[str, np.ndarray]):
+        lengths = {len(v) for v in columns.values()}
+        if len(lengths) > 1:
+            raise ValueError(f"columns of unequal length: {lengths}")
+        self.columns = dict(columns)
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.columns)
+
+    def __len__(self) -> int:
+        return len(next(iter(self.columns.values()))) if self.columns else 0
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.columns[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self.columns
+
+    def records(self) -> list[dict]:
+        """Rows as dicts (NaN -> None), for notebooks and JSON."""
+        cols = [(n, self.columns[n].tolist()) for n in self.columns]
+        out = []
+        for i in range(len(self)):
+            out.append({n: _clean(v[i]) for n, v in cols})
+        return out
+
+    def __repr__(self) -> str:
+        return f"Table({len(self)} rows x {len(self.columns)} columns: {', '.join(self.names)})"
+
+
+def _clean(v):
+    return None if isinstance(v, float) and math.isnan(v) else v
+
+
+@dataclass(frozen=True)
+class Setup:
+    """A validated body-on-sphere configuration.
+
+    Parameters are SI: ``a`` body radius [m], ``r`` sphere radius [m], ``k``
+    inertia factor (wheel: I11 = 2 k m a^2; sphere: I = k m a^2; default by
+    body, see :data:`deathsphere.constants.DEFAULT_INERTIA`), ``g`` [m/s^2],
+    ``mu`` friction coefficient available (``inf``: unlimited).  Raises
+    ``ValueError`` with a clear message for invalid values; a physically
+    impossible orbit is never an error (it is a status).
+
+    >>> Setup().a, Setup().r, Setup().k
+    (0.3, 3.0, 0.5)
+    """
+
+    body: str = "wheel"
+    side: str = "inside"
+    a: float = TABLE1_WHEEL_RADIUS
+    r: float = TABLE1_SPHERE_RADIUS
+    k: float | None = None
+    g: float = STANDARD_GRAVITY
+    mu: float = math.inf
+
+    def __post_init__(self):
+        k = DEFAULT_INERTIA.get(self.body, 0.0) if self.k is None else self.k
+        object.__setattr__(self, "k", k)
+        problem = validate_scalars(self.body, self.side, self.a, self.r, k, self.g, self.mu)
+        if problem:
+            raise ValueError(problem)
+        for name in ("a", "r", "k", "g", "mu"):
+            object.__setattr__(self, name, float(getattr(self, name)))
+
+
+def _finite_number(value) -> bool:
+    return isinstance(value, (int, float, np.floating, np.integer)) and not isinstance(value, bool) \
+        and math.isfinite(value)
+
+
+def validate_scalars(body, side, a, r, k, g, mu=math.inf) -> str:
+    """The first problem with one set of parameters, in words ('' if none)."""
+    if body not in BODIES:
+        return f"body must be one of {', '.join(BODIES)} (got {body!r})"
+    if side not in SIDES:
+        return f"side must be one of {', '.join(SIDES)} (got {side!r})"
+    for name, value in (("a", a), ("r", r), ("k", k), ("g", g)):
+        if not _finite_number(value):
+            return f"{name} must be a finite number (got {value!r})"
+    if isinstance(mu, bool) or not isinstance(mu, (int, float, np.floating, np.integer)) or math.isnan(mu):
+        return f"mu must be a number >= 0 or inf (got {mu!r})"
+    return _range_problem(body, side, a, r, k, g, mu)
+
+
+def _range_problem(body, side, a, r, k, g, mu) -> str:
+    if a <= 0:
+        return f"a (body radius) must be > 0 m (got {a:g})"
+    if r <= 0:
+        return f"r (sphere radius) must be > 0 m (got {r:g})"
+    if side == "inside" and r <= a:
+        return f"r (sphere radius) must be > a = {a:g} m for a body inside (got {r:g})"
+    if k < 0:
+        return f"k (inertia factor) must be >= 0 (got {k:g})"
+    if g <= 0:
+        return f"g must be > 0 m/s^2 (got {g:g})"
+    if mu < 0:
+        return f"mu must be >= 0 (got {mu:g})"
+    return ""
+
+
+def angle_problem(name: str, value: float) -> str:
+    """Why an angle in degrees is not allowed ('' if it is)."""
+    lo, hi = (0.0, 180.0) if name == "theta" else (-180.0, 180.0)
+    if not math.isfinite(value):
+        return f"{name} must be a finite number of degrees (got {value!r})"
+    if not lo <= value <= hi:
+        return f"{name} must be in [{lo:g}, {hi:g}] deg (got {value:g})"
+    return ""
+
+
+# ---------------------------------------------------------------------------
+# requests: per-row parameters, vectorised validation, evaluation
+
+
+def _as_array(value, n, dtype):
+    arr = np.asarray(value, dtype=dtype)
+    return np.broadcast_to(arr, (n,)).copy() if arr.shape != (n,) else arr.copy()
+
+
+def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **fields) -> dict:
+    """Build a request batch of ``n`` rows from scalars or length-n arrays.
+
+    ``fields`` are the :data:`REQUEST_FIELDS` (theta and alpha in degrees);
+    missing ones take their defaults; ``k=None`` or NaN means "by body".
+    ``invalid`` is an object array of reasons ('' for rows parsed fine).
+    """
+    req = {}
+    for name, (default, _, _) in REQUEST_FIELDS.items():
+        value = fields.get(name, default)
+        if name in ("body", "side"):
+            req[name] = _as_array(value, n, object)
+        else:
+            req[name] = _as_array(np.nan if value is None else value, n, float)
+    req["input_row"] = np.arange(1, n + 1) if input_row is None else _as_array(input_row, n, np.int64)
+    req["invalid"] = _as_array("" if invalid is None else invalid, n, object)
+    return req
+
+
+def validate_requests(req: dict) -> np.ndarray:
+    """Reason each row is invalid ('' for valid rows), without raising.
+
+    Vectorised masks decide which rows fail; words are built only for those.
+    """
+    body, side = req["body"], req["side"]
+    k = req["k"].copy()
+    for b, default in DEFAULT_INERTIA.items():
+        k[np.isnan(k) & (body == b)] = default
+    req["k"] = k
+    reason = req["invalid"].copy()
+    pending = reason == ""
+    checks = [
+        (~np.isin(body, BODIES), lambda i: f"body must be one of {', '.join(BODIES)} (got {body[i]!r})"),
+        (~np.isin(side, SIDES), lambda i: f"side must be one of {', '.join(SIDES)} (got {side[i]!r})"),
+    ]
+    for name in ("a", "r", "k", "g"):
+        v = req[name]
+        checks.append((~np.isfinite(v), lambda i, n=name, v=v: f"{n} must be a finite number (got {v[i]!r})"))
+    checks.append((np.isnan(req["mu"]), lambda i: "mu must be a number >= 0 or inf"))
+    with np.errstate(invalid="ignore"):
+        range_bad = (req["a"] <= 0) | (req["r"] <= 0) | ((side == "inside") & (req["r"] <= req["a"])) \
+            | (k < 0) | (req["g"] <= 0) | (req["mu"] < 0)
+    checks.append((range_bad, lambda i: _range_problem(
+        body[i], side[i], req["a"][i], req["r"][i], k[i], req["g"][i], req["mu"][i])))
+    theta, alpha = req["theta"], req["alpha"]
+    with np.errstate(invalid="ignore"):
+        checks.append((~(np.isfinite(theta) & (theta >= 0) & (theta <= 180)),
+                       lambda i: angle_problem("theta", theta[i]) if not np.isnan(theta[i])
+                       else "theta is missing (give --theta or a theta column)"))
+        needs_alpha = body == "wheel"
+        checks.append((needs_alpha & ~(np.isfinite(alpha) & (alpha >= -180) & (alpha <= 180)),
+                       lambda i: angle_problem("alpha", alpha[i]) if not np.isnan(alpha[i])
+                       else "alpha is missing (give --alpha or an alpha column)"))
+    for failed, words in checks:
+        hit = pending & failed
+        for i in np.flatnonzero(hit):  # only the (few) bad rows get words
+            reason[i] = words(i)
+        pending &= ~hit
+    return reason
+
+
+def evaluate(req: dict) -> Table:
+    """Evaluate a request batch: one output row per request, in input order.
+
+    Invalid rows come out with status ``invalid`` and the reason; the rest
+    are computed, grouped by body and side (a handful of vectorised calls).
+    """
+    n = len(req["theta"])
+    invalid = validate_requests(req)
+    ok = invalid == ""
+    out = {name: np.full(n, np.nan) for name in _PHYSICS_COLUMNS.values()}
+    status = np.full(n, Status.INVALID, dtype=np.int8)
+    reason = np.array(invalid, dtype=object)
+
+    wheel_rows = np.flatnonzero(ok & (req["body"] == "wheel"))
+    if wheel_rows.size:
+        sel = {key: req[key][wheel_rows] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
+        res = wheel.horizontal_orbit(
+            np.deg2rad(sel["theta"]), np.deg2rad(sel["alpha"]), sel["a"], sel["r"], sel["k"], sel["g"],
+            outside=req["side"][wheel_rows] == "outside", mu=sel["mu"])
+        _scatter(out, status, reason, wheel_rows, res)
+    other = np.flatnonzero(ok & (req["body"] != "wheel"))
+    if other.size:
+        reason[other] = "this body is not implemented yet (only wheel)"
+
+    columns = {
+        "input_row": req["input_row"].astype(np.int64),
+        "body": req["body"].astype(object),
+        "side": req["side"].astype(object),
+        "theta_deg": req["theta"],
+        "alpha_deg": np.where(req["body"] == "wheel", req["alpha"], np.nan),
+        "a_m": req["a"],
+        "r_m": req["r"],
+        "k": req["k"],
+        "g_m_s2": req["g"],
+        "status": STATUS_LABELS[status],
+        "reason": reason,
+    }
+    for key in COLUMNS:
+        if key in _PHYSICS_COLUMNS.values():
+            columns[key] = out[key]
+    # inf ("no limit") is not representable in JSON: empty/null means no --mu given
+    columns["mu_available"] = np.where(np.isinf(req["mu"]), np.nan, req["mu"])
+    return Table({name: columns[name] for name in COLUMNS})
+
+
+def _scatter(out, status, reason, rows, res):
+    for key, column in _PHYSICS_COLUMNS.items():
+        if key in res:
+            out[column][rows] = res[key]
+    status[rows] = res["status"]
+    reason[rows] = REASON_TEXT[res["reason"]]
+
+
+def horizontal_orbit(setup: Setup, theta_deg, alpha_deg) -> Table:
+    """Steady horizontal orbits for every (theta, alpha) pair, broadcast.
+
+    McDonald (1993) eqs. (0), (8b), (13), (29)-(36) for a wheel (inside or
+    outside, eqs. (81), (83)).  ``theta_deg`` and ``alpha_deg`` broadcast
+    against each other (pass ``theta[:, None], alpha[None, :]`` for a grid);
+    the result is a flat :class:`Table` with the contract's columns.
+
+    >>> t = horizontal_orbit(Setup(), 60, 10)
+    >>> round(float(t["v_cm_m_s"][0]), 2), str(t["status"][0])
+    (7.88, 'ok')
+    """
+    theta, alpha = np.broadcast_arrays(np.asarray(theta_deg, dtype=float), np.asarray(alpha_deg, dtype=float))
+    theta, alpha = theta.ravel(), alpha.ravel()
+    bad = [angle_problem("theta", t) for t in np.unique(theta)] + [angle_problem("alpha", a) for a in np.unique(alpha)]
+    bad = [b for b in bad if b]
+    if bad:
+        raise ValueError(bad[0])
+    req = make_requests(theta.size, body=setup.body, side=setup.side, theta=theta, alpha=alpha,
+                        a=setup.a, r=setup.r, k=setup.k, g=setup.g, mu=setup.mu)
+    return evaluate(req)

@@ -1,0 +1,88 @@
+"""Status and reason codes shared by every configuration.
+
+A status names the *first* condition an orbit fails, in the order of the
+contract (design.md): fit, real rotation rate, contact, friction.  Each status
+carries a reason code whose words live in :data:`REASONS`; physics functions
+return small integer arrays, and only the model turns them into text.
+"""
+
+from enum import IntEnum
+
+import numpy as np
+
+
+class Status(IntEnum):
+    OK = 0
+    NO_FIT = 1
+    NO_ORBIT = 2
+    NO_CONTACT = 3
+    SLIPS = 4
+    INVALID = 5
+
+    @property
+    def label(self) -> str:
+        return self.name.lower()
+
+
+STATUS_LABELS = np.array([s.label for s in Status], dtype=object)
+
+
+class Reason(IntEnum):
+    NONE = 0
+    NO_FIT_INSIDE = 1
+    NO_FIT_OUTSIDE = 2
+    ALPHA_IN_ORBIT_PLANE = 3
+    ZERO_DENOMINATOR = 4
+    OMEGA_ZERO = 5
+    OMEGA_IMAGINARY = 6
+    NO_CONTACT_INSIDE = 7
+    NO_CONTACT_OUTSIDE = 8
+    SLIPS = 9
+    POLE = 10
+    SPIN_TOO_SMALL = 11
+    PARTICLE_ABOVE_EQUATOR = 12
+    NO_FIT_VERTICAL = 13
+    SPHERE_NO_FIT = 14
+    ZERO_RATE_EQUATOR = 15
+
+
+REASONS = {
+    Reason.NONE: "",
+    Reason.NO_FIT_INSIDE: "does not fit inside the sphere at this tilt (eq. 0 needs sin(theta - alpha) > a/r)",
+    Reason.NO_FIT_OUTSIDE: "would cut into the sphere at this tilt (eq. 81 needs theta < alpha < theta + 180 deg)",
+    Reason.ALPHA_IN_ORBIT_PLANE: "alpha = 0 or 180 deg: wheel in the orbit plane; eq. 29 diverges so there is no steady horizontal orbit",
+    Reason.ZERO_DENOMINATOR: "the denominator of eq. 29 ((2k+1) r' + k a cos(alpha)) vanishes",
+    Reason.OMEGA_ZERO: "Omega^2 = 0 (eq. 29 at alpha = 90 deg): the wheel stands at rest; not an orbit",
+    Reason.OMEGA_IMAGINARY: "Omega^2 < 0 (eq. 29): no real rotation rate",
+    Reason.NO_CONTACT_INSIDE: "contact force pulls away from the wall (eq. 33 needs r' Omega^2 sin(theta) > g cos(theta))",
+    Reason.NO_CONTACT_OUTSIDE: "contact force pulls into the sphere (eq. 83 needs r' Omega^2 sin(theta) < g cos(theta))",
+    Reason.SLIPS: "mu_required exceeds the friction coefficient given (mu_available)",
+    Reason.POLE: "contact point at a pole: the orbit has zero radius",
+    Reason.SPIN_TOO_SMALL: "|omega_3| below the minimum for a real orbit (eq. 56)",
+    Reason.PARTICLE_ABOVE_EQUATOR: "a frictionless particle has no horizontal orbit at or above the equator",
+    Reason.NO_FIT_VERTICAL: "wheel does not fit on this circle (needs r sin(theta) > a)",
+    Reason.SPHERE_NO_FIT: "rolling sphere does not fit inside (needs a < r)",
+    Reason.ZERO_RATE_EQUATOR: "on the equator eq. 55 needs omega_3 != 0",
+}
+
+# Reasons never contain a comma, so CSV output stays splittable with awk -F,.
+REASON_TEXT = np.array([REASONS[Reason(i)] for i in range(len(Reason))], dtype=object)
+
+
+def first_failure(conditions):
+    """Status and reason of the first failing condition, vectorised.
+
+    ``conditions`` is an ordered list of ``(failed_mask, status, reason_array)``;
+    later entries only apply where no earlier one failed.  Returns integer
+    arrays ``(status, reason)`` broadcast to the common shape.
+    """
+    shape = np.broadcast_shapes(*(np.shape(c[0]) for c in conditions))
+    status = np.full(shape, Status.OK, dtype=np.int8)
+    reason = np.full(shape, Reason.NONE, dtype=np.int8)
+    undecided = np.ones(shape, dtype=bool)
+    for failed, st, why in conditions:
+        hit = undecided & np.broadcast_to(failed, shape)
+        status[hit] = st
+        reason[hit] = np.broadcast_to(why, shape)[hit]
+        undecided &= ~hit
+    return status, reason

@@ -1,0 +1,232 @@
+"""Writers for result tables: rich table, CSV, JSON and NDJSON.
+
+Every writer takes an iterable of :class:`~deathsphere.model.Table` chunks so
+that sweeps stream with flat memory; the header (CSV) or the opening bracket
+(JSON) is written once.  Undefined values (NaN) are empty in CSV and null in
+JSON; floats are written in Python's shortest round-trip form.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import IO, Iterable
+
+import numpy as np
+from rich import box
+from rich.console import Console, Group
+from rich.table import Table as RichTable
+
+from deathsphere.model import TEXT_COLUMNS, Table
+from deathsphere.table1 import decimals
+
+FORMATS = ("table", "csv", "json", "ndjson")
+
+
+def _csv_field(text: str) -> str:
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
+def _float_strings(values: np.ndarray) -> list[str]:
+    return ["" if x != x else repr(x) for x in values.tolist()]
+
+
+def _column_strings(name: str, values: np.ndarray) -> list[str]:
+    if name in TEXT_COLUMNS or values.dtype == object:
+        return [_csv_field(str(v)) for v in values.tolist()]
+    if values.dtype.kind in "iub":
+        return [str(v) for v in values.tolist()]
+    return _float_strings(values)
+
+
+def csv_text(table: Table, header: bool) -> str:
+    """One chunk as CSV text (with the header line first if asked)."""
+    columns = [_column_strings(n, table[n]) for n in table.names]
+    lines = [",".join(row) for row in zip(*columns)]
+    if header:
+        lines.insert(0, ",".join(table.names))
+    return "\n".join(lines) + "\n" if lines else ""
+
+
+def write_csv(chunks: Iterable[Table], out: IO[str]) -> int:
+    rows = 0
+    for i, table in enumerate(chunks):
+        out.write(csv_text(table, header=i == 0))
+        rows += len(table)
+    return rows
+
+
+def _json_value(v):
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+def json_records(table: Table) -> list[str]:
+    cols = [(n, table[n].tolist()) for n in table.names]
+    return [json.dumps({n: _json_value(v[i]) for n, v in cols}) for i in range(len(table))]
+
+
+def write_ndjson(chunks: Iterable[Table], out: IO[str]) -> int:
+    rows = 0
+    for table in chunks:
+        lines = json_records(table)
+        if lines:
+            out.write("\n".join(lines) + "\n")
+        rows += len(lines)
+    return rows
+
+
+def write_json(chunks: Iterable[Table], out: IO[str]) -> int:
+    """A JSON array of row objects, streamed chunk by chunk."""
+    rows = 0
+    out.write("[")
+    for table in chunks:
+        for line in json_records(table):
+            out.write(("\n  " if rows == 0 else ",\n  ") + line)
+            rows += 1
+    out.write("\n]\n" if rows else "]\n")
+    return rows
+
+
+def format_number(value, digits: int = 4) -> str:
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "—"
+    if isinstance(value, (int, np.integer)):
+        return str(value)
+    if isinstance(value, float) and math.isinf(value):
+        return "∞" if value > 0 else "-∞"
+    return f"{value:.{digits}g}"
+
+
+STATUS_STYLE = {"ok": "green", "slips": "yellow", "invalid": "red"}
+
+
+def status_text(status: str) -> str:
+    style = STATUS_STYLE.get(status, "magenta")
+    return f"[{style}]{status}[/{style}]"
+
+
+#: (column, label, unit, source) for the one-orbit view.
+ORBIT_FIELDS = (
+    ("r_prime_m", "r' centre to axis", "m", "eq. 8b"),
+    ("omega_rad_s", "Ω orbital rate", "rad/s", "eq. 29"),
+    ("period_s", "period 2π/Ω", "s", ""),
+    ("v_cm_m_s", "v_cm = |r'|Ω centre speed", "m/s", ""),
+    ("spin_rad_s", "ω₁ = r'Ω/a wheel spin", "rad/s", "eq. 13"),
+    ("omega3_rad_s", "ω₃ = -Ω sin α", "rad/s", "eq. 13"),
+    ("accel_m_s2", "centre acceleration", "m/s²", "eq. 32"),
+    ("accel_g", "centre acceleration", "g", "eq. 36"),
+    ("normal_per_mass_m_s2", "normal force / m", "m/s²", "eq. 32"),
+    ("friction_per_mass_m_s2", "friction / m (+ down)", "m/s²", "eq. 32"),
+    ("mu_required", "μ required", "", "eq. 35"),
+)
+
+OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
+
+
+def one_orbit_table(table: Table, row: int = 0) -> RichTable:
+    """A two-column view of every quantity of one orbit."""
+    get = {n: table[n][row] for n in table.names}
+    get = {n: (v.item() if hasattr(v, "item") else v) for n, v in get.items()}
+    angles = f"θ = {format_number(get['theta_deg'])}°"
+    if not _isnan(get["alpha_deg"]):
+        angles += f", α = {format_number(get['alpha_deg'])}°"
+    title = (f"{get['body']} {get['side']}, {angles}\n"
+             f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
+             f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
+    out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
+    out.add_column("quantity")
+    out.add_column("value", justify="right")
+    out.add_column("unit")
+    out.add_column("source", style="dim")
+    for col, label, unit, source in ORBIT_FIELDS:
+        if col in get:
+            out.add_row(label, format_number(get[col], 5), unit, source)
+    mu = get.get("mu_available")
+    out.add_row("μ available", "∞" if _isnan(mu) else format_number(mu), "", "--mu")
+    out.add_row("status", status_text(get["status"]), "", "")
+    out.caption = f"{get['status']}: {get['reason'] or OK_REASON}"
+    out.caption_justify = "left"
+    return out
+
+
+def _isnan(v) -> bool:
+    return v is None or (isinstance(v, float) and math.isnan(v))
+
+
+#: Columns of the many-orbit terminal view (fits 80 columns): (column, header).
+SUMMARY_FIELDS = (
+    ("input_row", "#"),
+    ("theta_deg", "θ°"),
+    ("alpha_deg", "α°"),
+    ("status", "status"),
+    ("omega_rad_s", "Ω\nrad/s"),
+    ("v_cm_m_s", "v_cm\nm/s"),
+    ("spin_rad_s", "ω₁\nrad/s"),
+    ("accel_g", "accel\ng"),
+    ("mu_required", "μ\nrequired"),
+)
+
+
+def many_orbits_table(table: Table, title: str | None = None) -> Group:
+    """One summary row per orbit, then each distinct reason once."""
+    out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
+    fields = [(c, h) for c, h in SUMMARY_FIELDS if c in table]
+    for col, head in fields:
+        out.add_column(head, justify="left" if col in TEXT_COLUMNS else "right", no_wrap=True)
+    cols = {c: table[c].tolist() for c, _ in fields}
+    for i in range(len(table)):
+        cells = []
+        for col, _ in fields:
+            v = cols[col][i]
+            if col == "status":
+                cells.append(status_text(v))
+            elif col in TEXT_COLUMNS:
+                cells.append(str(v))
+            else:
+                cells.append(format_number(v))
+        out.add_row(*cells)
+    reasons = dict.fromkeys(zip(table["status"].tolist(), table["reason"].tolist()))
+    legend = [f"{status_text(st)}: {why}" for st, why in reasons if why]
+    return Group(out, *legend)
+
+
+def write_rich_table(table: Table, console: Console, title: str | None = None) -> int:
+    """Terminal view: every quantity for one orbit, a summary row per orbit for many."""
+    if len(table) == 1:
+        console.print(one_orbit_table(table))
+    else:
+        console.print(many_orbits_table(table, title))
+    return len(table)
+
+
+def table1_view(table: Table, printed) -> Group:
+    """Table 1 printed vs computed (✓ where the printed value is reproduced
+    at its printed precision), then the notes."""
+    out = RichTable(title="McDonald (1993) Table 1: wheel a = 0.3 m, k = 1/2, sphere r = 3.0 m",
+                    box=box.SIMPLE_HEAVY, title_justify="left")
+    for head in ("θ°", "α°", "μ", "μ eq.35", "v_cm", "eq.29", "g's", "acc g", "acc m/s²"):
+        out.add_column(head, justify="right", no_wrap=True)
+    tick = {True: "[green]✓[/green]", False: "[red]✗[/red]"}
+    notes = []
+    for i, row in enumerate(printed):
+        out.add_row(
+            row[0], row[1], row[2],
+            f"{table['mu_computed'][i]:.{decimals(row[2]) + 1}f}{tick[bool(table['mu_agrees'][i])]}",
+            row[3],
+            f"{table['v_cm_computed_m_s'][i]:.{decimals(row[3]) + 1}f}{tick[bool(table['v_cm_agrees'][i])]}",
+            row[4],
+            f"{table['accel_g_computed'][i]:.2f}{tick[bool(table['gs_column_is_g'][i])]}",
+            f"{table['accel_m_s2_computed'][i]:.1f}{tick[bool(table['gs_column_is_m_s2'][i])]}",
+        )
+        if not table["mu_agrees"][i]:
+            notes.append(f"θ={row[0]}° α={row[1]}°: μ printed {row[2]}, eq. 35 gives "
+                         f"{table['mu_computed'][i]:.4f} (erratum T1-mu)")
+    if table["gs_column_is_m_s2"].all() and not table["gs_column_is_g"].any():
+        notes.append("\"No. of g's\" is the centre acceleration in m/s², not in g, in every row (erratum T1-g)")
+    lines = ["Printed: μ, v_cm (m/s), \"No. of g's\"; computed with one more digit; "
+             "✓ = reproduced at the printed precision.", *notes, "Evidence: docs/errata.md"]
+    return Group(out, *lines)
