@@ -13,6 +13,6 @@ try:
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0.0.0+unknown"
 
-# the model is imported lazily below
+from deathsphere.model import Setup, Table, horizontal_orbit  # noqa: E402
 
-__all__ = ["Setup", "horizontal_orbit", "__version__"]
+__all__ = ["Setup", "Table", "horizontal_orbit", "__version__"]

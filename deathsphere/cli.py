@@ -113,11 +113,46 @@ def emit(chunks, fmt: str, title: str | None = None) -> int:
     return write_rich_table(table, stdout_console(), title)
 
 
+class DeathsphereGroup(click.Group):
+    """A click group whose ``main`` turns every usage error into one line on
+    stderr with exit status 2, and a closed pipe or Ctrl-C into a quiet stop.
+    (Done here rather than in a wrapper so that click's CliRunner sees it.)"""
+
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
+        try:
+            code = super().main(args=args, prog_name=prog_name or "deathsphere",
+                                complete_var=complete_var, standalone_mode=False, **extra)
+        except click.exceptions.UsageError as exc:
+            command = exc.ctx.command_path if exc.ctx is not None else "deathsphere"
+            fail(f"{one_line(exc.format_message())} (see '{command} --help')")
+        except click.exceptions.ClickException as exc:  # e.g. a missing --input file
+            fail(one_line(exc.format_message()))
+        except (click.exceptions.Abort, KeyboardInterrupt):
+            click.echo("deathsphere: interrupted", err=True)
+            sys.exit(130)
+        except BrokenPipeError:
+            # the reader went away (e.g. `| head`): stop quietly, and keep
+            # Python from complaining when it flushes stdout at exit
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            sys.exit(ExitCode.OK)
+        sys.exit(code or 0)
+
+
+def one_line(message: str) -> str:
+    return " ".join(message.split())
+
+
+def fail(message: str):
+    click.echo(f"deathsphere: error: {message}", err=True)
+    sys.exit(ExitCode.USAGE)
+
+
 # ---------------------------------------------------------------------------
 # commands
 
 
-@click.group(context_settings=CONTEXT)
+@click.group(cls=DeathsphereGroup, context_settings=CONTEXT)
 @click.version_option(__version__, "-V", "--version", prog_name="deathsphere")
 def cli():
     """Orbits of a wheel or sphere rolling without slipping on a fixed sphere:
@@ -197,6 +232,92 @@ def orbit(theta, alpha, input_file, body, side, a, r, k, g, mu, fmt):
         sys.exit(ExitCode.INVALID_ROWS)
 
 
+def parse_parameter(texts, name: str, default: float) -> np.ndarray:
+    if not texts:
+        return np.array([default])
+    try:
+        return parse_many(texts, f"-{name}")
+    except RangeError as exc:
+        raise click.BadParameter(str(exc).split(": ", 1)[-1], param_hint=f"'-{name}'") from None
+
+
+STATUSES = ("ok", "no_fit", "no_orbit", "no_contact", "slips")
+
+
+@cli.command()
+@click.option("--theta", multiple=True, required=True, metavar="DEG",
+              help="Polar angle(s) of the contact point, 0..180; values or start:stop:step.")
+@click.option("--alpha", multiple=True, metavar="DEG", help="Tilt angle(s) of the wheel, -180..180.")
+@click.option("-a", "--wheel-radius", "a_values", multiple=True, metavar="M",
+              help=f"Body radius [m], values or ranges [default: {TABLE1_WHEEL_RADIUS}].")
+@click.option("-r", "--sphere-radius", "r_values", multiple=True, metavar="M",
+              help=f"Sphere radius [m], values or ranges [default: {TABLE1_SPHERE_RADIUS}].")
+@click.option("-k", "--inertia", "k_values", multiple=True, metavar="K",
+              help="Inertia factor(s) [default: 0.5 wheel, 0.4 sphere].")
+@click.option("--body", type=click.Choice(BODIES, case_sensitive=False), default="wheel", show_default=True)
+@click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside", show_default=True)
+@click.option("-g", "--gravity", "g", type=float, default=STANDARD_GRAVITY, show_default=True, metavar="M_S2")
+@click.option("--mu", type=float, default=math.inf, metavar="MU", help="Friction available [default: unlimited].")
+@click.option("--only", multiple=True, type=click.Choice(STATUSES, case_sensitive=False),
+              help="Keep only rows with this status (repeatable), e.g. --only ok.")
+@click.option("--chunk-size", type=click.IntRange(1, 10_000_000), default=16384, show_default=True,
+              help="Orbits evaluated per chunk; memory stays flat whatever the grid size.")
+@output_options(("csv", "ndjson", "json"))
+def sweep(theta, alpha, a_values, r_values, k_values, body, side, g, mu, only, chunk_size, fmt):
+    """Stream a grid of orbits (all combinations) as CSV or NDJSON.
+
+    Rows come out in grid order (a, r, k, theta, alpha; alpha fastest) as
+    they are computed, chunk by chunk, so output starts at once and memory
+    stays flat.  A progress bar shows on stderr when it is a terminal.
+
+    \b
+    Examples:
+      deathsphere sweep --theta 5:175:1 --alpha 1:89:1 --only ok | sort -t, -k21,21g | head
+      deathsphere sweep --theta 60 --alpha 1:50:1 -a 0.1 -a 0.3 -a 0.6 --format ndjson
+    """
+    body, side = body.lower(), side.lower()
+    thetas = parse_angles(theta, "theta")
+    if body == "wheel" and not alpha:
+        raise click.UsageError("give --alpha DEG (values or start:stop:step) for a wheel")
+    alphas = parse_angles(alpha, "alpha") if alpha else np.array([math.nan])
+    axes = {
+        "a": parse_parameter(a_values, "a", TABLE1_WHEEL_RADIUS),
+        "r": parse_parameter(r_values, "r", TABLE1_SPHERE_RADIUS),
+        "k": parse_parameter(k_values, "k", math.nan),
+        "theta": thetas,
+        "alpha": alphas,
+    }
+    for a in axes["a"]:
+        for r in axes["r"]:
+            for k in axes["k"]:
+                make_setup(body, side, float(a), float(r), None if math.isnan(k) else float(k), g, mu)
+    total = grid_size(axes)
+    keep = {s.lower() for s in only}
+
+    def chunks(advance):
+        for first, grid in grid_chunks(axes, chunk_size):
+            n = len(grid["theta"])
+            req = make_requests(n, input_row=np.arange(first + 1, first + n + 1), body=body, side=side,
+                                g=g, mu=mu, **grid)
+            table = evaluate(req)
+            if keep:
+                mask = np.isin(table["status"], list(keep))
+                table = Table({name: col[mask] for name, col in table.columns.items()})
+            yield table
+            advance(n)
+
+    fmt = (fmt or "csv").lower()
+    if sys.stderr.isatty():
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+        with Progress(TextColumn("sweep"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
+                      console=stderr_console(), transient=True) as progress:
+            task = progress.add_task("sweep", total=total)
+            emit(chunks(lambda n: progress.advance(task, n)), fmt)
+    else:
+        emit(chunks(lambda n: None), fmt)
+
+
 @cli.command("table1")
 @output_options()
 def table1_command(fmt):
@@ -226,28 +347,5 @@ def table1_command(fmt):
 
 
 def main(argv=None) -> None:
-    """Run the CLI; usage errors are one line on stderr with exit status 2."""
-    try:
-        code = cli.main(args=argv, prog_name="deathsphere", standalone_mode=False)
-    except click.exceptions.UsageError as exc:
-        hint = f" (see 'deathsphere {exc.ctx.info_name} --help')" if exc.ctx and exc.ctx.parent else \
-            " (see 'deathsphere --help')"
-        message = " ".join(exc.format_message().split())
-        click.echo(f"deathsphere: error: {message}{hint}", err=True)
-        sys.exit(ExitCode.USAGE)
-    except click.exceptions.FileError as exc:
-        click.echo(f"deathsphere: error: {' '.join(exc.format_message().split())}", err=True)
-        sys.exit(ExitCode.USAGE)
-    except click.exceptions.ClickException as exc:
-        click.echo(f"deathsphere: error: {' '.join(exc.format_message().split())}", err=True)
-        sys.exit(ExitCode.USAGE)
-    except (click.exceptions.Abort, KeyboardInterrupt):
-        click.echo("deathsphere: interrupted", err=True)
-        sys.exit(130)
-    except BrokenPipeError:
-        # the reader went away (e.g. `| head`): stop quietly, and keep Python
-        # from complaining when it flushes stdout at exit
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-        sys.exit(ExitCode.OK)
-    sys.exit(code or 0)
+    """Console-script entry point (see :class:`DeathsphereGroup` for exit codes)."""
+    cli.main(args=argv)

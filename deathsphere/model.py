@@ -150,9 +150,9 @@ def _finite_number(value) -> bool:
 def validate_scalars(body, side, a, r, k, g, mu=math.inf) -> str:
     """The first problem with one set of parameters, in words ('' if none)."""
     if body not in BODIES:
-        return f"body must be one of {', '.join(BODIES)} (got {body!r})"
+        return f"body must be one of {' | '.join(BODIES)} (got {body!r})"
     if side not in SIDES:
-        return f"side must be one of {', '.join(SIDES)} (got {side!r})"
+        return f"side must be one of {' | '.join(SIDES)} (got {side!r})"
     for name, value in (("a", a), ("r", r), ("k", k), ("g", g)):
         if not _finite_number(value):
             return f"{name} must be a finite number (got {value!r})"
@@ -183,7 +183,7 @@ def angle_problem(name: str, value: float) -> str:
     if not math.isfinite(value):
         return f"{name} must be a finite number of degrees (got {value!r})"
     if not lo <= value <= hi:
-        return f"{name} must be in [{lo:g}, {hi:g}] deg (got {value:g})"
+        return f"{name} must be within {lo:g}..{hi:g} deg (got {value:g})"
     return ""
 
 
@@ -228,8 +228,8 @@ def validate_requests(req: dict) -> np.ndarray:
     reason = req["invalid"].copy()
     pending = reason == ""
     checks = [
-        (~np.isin(body, BODIES), lambda i: f"body must be one of {', '.join(BODIES)} (got {body[i]!r})"),
-        (~np.isin(side, SIDES), lambda i: f"side must be one of {', '.join(SIDES)} (got {side[i]!r})"),
+        (~np.isin(body, BODIES), lambda i: f"body must be one of {' | '.join(BODIES)} (got {body[i]!r})"),
+        (~np.isin(side, SIDES), lambda i: f"side must be one of {' | '.join(SIDES)} (got {side[i]!r})"),
     ]
     for name in ("a", "r", "k", "g"):
         v = req[name]

@@ -29,16 +29,37 @@ def _csv_field(text: str) -> str:
     return text
 
 
-def _float_strings(values: np.ndarray) -> list[str]:
-    return ["" if x != x else repr(x) for x in values.tolist()]
+def _float_text(x: float) -> str:
+    return "" if x != x else repr(x)
 
 
 def _column_strings(name: str, values: np.ndarray) -> list[str]:
+    """Text of one column.  Values that repeat (inputs, statuses, reasons)
+    are formatted once each: a chunk of a grid holds few distinct inputs, and
+    float formatting is what CSV output spends its time on."""
+    n = len(values)
+    if n == 0:
+        return []
     if name in TEXT_COLUMNS or values.dtype == object:
-        return [_csv_field(str(v)) for v in values.tolist()]
+        unique, inverse = np.unique(values.astype(str), return_inverse=True)
+        text = [_csv_field(u) for u in unique.tolist()]
+        return [text[i] for i in inverse.tolist()]
     if values.dtype.kind in "iub":
-        return [str(v) for v in values.tolist()]
-    return _float_strings(values)
+        return list(map(str, values.tolist()))
+    if (values[0] == values).all() or np.isnan(values).all():
+        return [_float_text(float(values[0]))] * n
+    if name in REPEATING_COLUMNS:
+        unique, inverse = np.unique(values, return_inverse=True)
+        text = list(map(_float_text, unique.tolist()))
+        return [text[i] for i in inverse.tolist()]
+    text = list(map(repr, values.tolist()))
+    for i in np.flatnonzero(np.isnan(values)).tolist():
+        text[i] = ""
+    return text
+
+
+#: Input columns: in a grid chunk they take few distinct values.
+REPEATING_COLUMNS = frozenset({"theta_deg", "alpha_deg", "a_m", "r_m", "k", "g_m_s2", "mu_available"})
 
 
 def csv_text(table: Table, header: bool) -> str:

@@ -44,6 +44,14 @@ class Reason(IntEnum):
     NO_FIT_VERTICAL = 13
     SPHERE_NO_FIT = 14
     ZERO_RATE_EQUATOR = 15
+    VERTICAL_TOP_TOO_SLOW = 16
+    VERTICAL_OUTSIDE_LEAVES = 17
+    SPHERE_NO_CONTACT_INSIDE = 18
+    SPHERE_NO_CONTACT_OUTSIDE = 19
+    EQUATOR_SINGLE_ROOT = 20
+    SPHERE_OMEGA_ZERO = 21
+    SPHERE_K_ZERO = 22
+    PARTICLE_OUTSIDE_BELOW_EQUATOR = 23
 
 
 REASONS = {
@@ -63,6 +71,14 @@ REASONS = {
     Reason.NO_FIT_VERTICAL: "wheel does not fit on this circle (needs r sin(theta) > a)",
     Reason.SPHERE_NO_FIT: "rolling sphere does not fit inside (needs a < r)",
     Reason.ZERO_RATE_EQUATOR: "on the equator eq. 55 needs omega_3 != 0",
+    Reason.VERTICAL_TOP_TOO_SLOW: "top rate too low: the wheel leaves the wall at the top of the vertical orbit (eq. 28a needs r' phidot0^2 > g)",
+    Reason.VERTICAL_OUTSIDE_LEAVES: "outside the sphere a vertical orbit cannot close: the wheel leaves the surface at phi_leave (eq. 82)",
+    Reason.SPHERE_NO_CONTACT_INSIDE: "contact force pulls away from the wall (eq. 58 needs (r-a) Omega^2 sin^2(theta) > g cos(theta))",
+    Reason.SPHERE_NO_CONTACT_OUTSIDE: "contact force pulls into the sphere (eq. 59 needs (r+a) Omega^2 sin^2(theta) < g cos(theta))",
+    Reason.EQUATOR_SINGLE_ROOT: "on the equator eq. 55 is linear in Omega: only one orbit (branch 0)",
+    Reason.SPHERE_OMEGA_ZERO: "Omega = 0 cannot satisfy eq. 55 (it would need g = 0)",
+    Reason.SPHERE_K_ZERO: "k = 0: omega_3 drops out of eq. 55 and cannot be found from Omega",
+    Reason.PARTICLE_OUTSIDE_BELOW_EQUATOR: "outside the sphere below the equator the normal force would have to pull (N/m = g/cos(theta) < 0)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -1,0 +1,442 @@
+"""Exact equations of motion of a wheel or sphere rolling on a fixed sphere.
+
+Beyond the paper: McDonald (1993) writes the Newton-Euler equations in general
+form, eqs. (2)-(7b), and then only solves them for steady circular orbits.
+This module integrates them for *any* motion.  The derivation (state, contact
+geometry, elimination and recovery of the contact force) is in
+``docs/dynamics.md``.
+
+State
+-----
+A state is a float (or complex, for complex-step derivatives) array of shape
+``(9, ...)``: rows 0-2 are the centre ``c`` of the body [m] (origin at the
+centre of the fixed sphere, z up), rows 3-5 the unit vector ``e1`` (the wheel
+axis; for a sphere a body-fixed marker that does not enter the dynamics),
+rows 6-8 the angular velocity ``w`` of the body [rad/s], all in lab (or
+turning-frame) Cartesian components.  Trailing axes index bodies; every
+parameter broadcasts against them.  The velocity of the centre is not carried:
+it is ``a e3 x w`` (eq. 6), so rolling without slipping holds identically.
+
+Contact geometry (docs/dynamics.md sec. 2): for a wheel ``e3`` is the unit
+projection of ``c`` on the wheel plane, ``e3 = s c_perp/|c_perp|`` with
+``c_perp = c - (c.e1) e1``, s = +1 inside (rim point farthest from the
+sphere's centre) and s = -1 outside (nearest); for a sphere ``e3 = s c/|c|``.
+The contact point is ``p = c + a e3`` and the contact condition ``|p| = r``.
+
+Equations (eqs. 2, 3, 6, 7b in general form, force eliminated as in eq. 4)::
+
+    dc/dt  = a e3 x w
+    de1/dt = w x e1
+    M dw/dt = e3 x (de3/dt x w) + (g/a) e3 x z - k w1 (w x e1)   [wheel]
+    M = k (1 + e1 e1^T) + 1 - e3 e3^T      (wheel; sphere: k 1 + 1 - e3 e3^T)
+
+with w1 = w.e1; the last (gyroscopic) term is absent for a sphere.  M is
+inverted in closed form, M^-1 = e1e1/(2k+1) + e2e2/(k+1) + e3e3/k for a wheel.
+The contact force is recovered from eq. (2), F/m = d2c/dt2 + g z.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from deathsphere.physics.wheel import omega_squared
+
+N_STATE = 9
+#: slices of the state rows
+C, E1, W = slice(0, 3), slice(3, 6), slice(6, 9)
+
+
+class BodyParams(NamedTuple):
+    """Parameters of the rolling body, numpy arrays broadcastable against the
+    trailing (body) axes of a state.
+
+    a [m] body radius, r [m] radius of the fixed sphere, k [-] inertia factor
+    (wheel: I11 = 2 k m a^2, I22 = I33 = k m a^2, eq. 1; sphere: I = k m a^2,
+    eq. 41), g [m/s^2], outside (bool) body on the outside of the sphere,
+    sphere (bool) the body is a sphere rather than a wheel.
+    """
+
+    a: np.ndarray
+    r: np.ndarray
+    k: np.ndarray
+    g: np.ndarray
+    outside: np.ndarray
+    sphere: np.ndarray
+
+
+def body_params(a, r, k, g, outside=False, sphere=False) -> BodyParams:
+    """Validated :class:`BodyParams` (beyond the paper; see docs/dynamics.md).
+
+    Raises ValueError for non-finite values, a <= 0, k <= 0 (the equations of
+    motion are singular at k = 0: M has eigenvalue k), g <= 0, or r <= a for
+    a body inside the sphere.  Arrays are broadcast to one shape.
+    """
+    a, r, k, g = (np.asarray(x, dtype=float) for x in (a, r, k, g))
+    outside = np.asarray(outside, dtype=bool)
+    sphere = np.asarray(sphere, dtype=bool)
+    a, r, k, g, outside, sphere = np.broadcast_arrays(a, r, k, g, outside, sphere)
+    for name, x in (("a", a), ("r", r), ("k", k), ("g", g)):
+        if not np.all(np.isfinite(x)):
+            raise ValueError(f"{name} must be finite")
+    if np.any(a <= 0):
+        raise ValueError("body radius a must be > 0")
+    if np.any(r <= 0):
+        raise ValueError("sphere radius r must be > 0")
+    if np.any(k <= 0):
+        raise ValueError("inertia factor k must be > 0 for the equations of motion")
+    if np.any(g <= 0):
+        raise ValueError("g must be > 0")
+    if np.any(~outside & (r <= a)):
+        raise ValueError("a body inside the sphere needs r > a")
+    return BodyParams(a, r, k, g, outside, sphere)
+
+
+# --------------------------------------------------------------------------
+# small vector helpers on axis 0 (bilinear: no conjugation, complex-step safe)
+
+def _dot(u, v):
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+
+
+def _cross(u, v):
+    return np.stack((u[1] * v[2] - u[2] * v[1],
+                     u[2] * v[0] - u[0] * v[2],
+                     u[0] * v[1] - u[1] * v[0]))
+
+
+def _zcross(u):
+    """z x u."""
+    return np.stack((-u[1], u[0], np.zeros_like(u[2])))
+
+
+def _norm(u):
+    # sqrt of the bilinear square: analytic, so complex-step derivatives work
+    return np.sqrt(_dot(u, u))
+
+
+def _geometry(state, p: BodyParams):
+    """Contact direction e3 and auxiliary quantities (docs/dynamics.md sec. 2)."""
+    c, e1, w = state[C], state[E1], state[W]
+    wheel = ~p.sphere
+    e1h = e1 / _norm(e1)
+    c1 = _dot(c, e1h)
+    cperp = c - np.where(wheel, c1, 0.0) * e1h
+    rho = _norm(cperp)
+    s = np.where(p.outside, -1.0, 1.0)
+    n = cperp / rho
+    e3 = s * n
+    return c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s
+
+
+def _motion(state, p: BodyParams):
+    """Time derivatives in the lab frame and the acceleration of the centre.
+
+    Returns (cdot, e1dot, wdot, cddot, e3, e3dot).
+    """
+    c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s = _geometry(state, p)
+    a, k, g = p.a, p.k, p.g
+    cdot = a * _cross(e3, w)                    # eq. (6)
+    e1dot = _cross(w, e1)                       # e1 is carried by the body
+    e1hdot = _cross(w, e1h)
+    # rate of the contact direction e3 (not a body vector)
+    cperp_dot = cdot - np.where(wheel, 1.0, 0.0) * (
+        (_dot(cdot, e1h) + _dot(c, e1hdot)) * e1h + c1 * e1hdot)
+    e3dot = s * (cperp_dot - n * _dot(n, cperp_dot)) / rho
+    w1 = _dot(w, e1h)
+    zhat = np.zeros_like(e3)
+    zhat[2] = 1.0
+    rhs = (_cross(e3, _cross(e3dot, w)) + (g / a) * _cross(e3, zhat)
+           - np.where(wheel, k, 0.0) * w1 * _cross(w, e1h))
+    # closed-form inverse of M (docs/dynamics.md eq. D7)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv_k = np.where(k > 0, 1.0 / np.where(k > 0, k, 1.0), np.nan)
+    r3 = _dot(e3, rhs)
+    wdot = (rhs - e3 * r3) / (k + 1) + e3 * (r3 * inv_k)
+    r1 = _dot(e1h, rhs)
+    wdot = wdot + np.where(wheel, 1.0 / (2 * k + 1) - 1.0 / (k + 1), 0.0) * r1 * e1h
+    cddot = a * (_cross(e3dot, w) + _cross(e3, wdot))
+    return cdot, e1dot, wdot, cddot, e3, e3dot
+
+
+def rhs(state, params: BodyParams, frame_rate=0.0):
+    """Right-hand side d(state)/dt of the exact equations of motion.
+
+    Eqs. (2), (3), (6), (7b) of McDonald (1993) in general form (beyond the
+    paper: docs/dynamics.md).  ``state`` has shape (9, ...); returns the same
+    shape.  ``frame_rate`` [rad/s] (broadcastable) is the rate Omega of a frame
+    turning about +z in which the state's components are taken; the steady
+    horizontal orbit of rate Omega is then a fixed point.  Complex input is
+    supported (complex-step differentiation).
+    """
+    state = np.asarray(state)
+    cdot, e1dot, wdot, _, _, _ = _motion(state, params)
+    out = np.concatenate((cdot, e1dot, wdot))
+    if np.any(np.asarray(frame_rate) != 0):
+        fr = np.asarray(frame_rate)
+        out = out - fr * np.concatenate(
+            (_zcross(state[C]), _zcross(state[E1]), _zcross(state[W])))
+    return out
+
+
+def ode(params: BodyParams, frame_rate=0.0):
+    """A ``fun(t, y)`` for :func:`scipy.integrate.solve_ivp` (beyond the paper).
+
+    ``y`` is the state of n bodies flattened from shape (9, n) (C order), so
+    ``y.reshape(9, n)`` recovers it; with ``vectorized=True`` solve_ivp passes
+    (9 n, m) arrays, which are handled too.  ``params`` fields must broadcast
+    against shape (n,).
+    """
+    shape = np.broadcast_shapes(*(np.shape(x) for x in params),
+                                np.shape(frame_rate))
+    n = int(np.prod(shape))
+    p_flat = BodyParams(*(np.broadcast_to(x, shape).reshape(-1) for x in params))
+    fr = np.broadcast_to(np.asarray(frame_rate, dtype=float), shape).reshape(-1)
+    p_col = BodyParams(*(x[:, None] for x in p_flat))
+
+    def fun(t, y):
+        y = np.asarray(y)
+        if y.ndim == 1:
+            return rhs(y.reshape(9, n), p_flat, fr).reshape(-1)
+        m = y.shape[1]
+        return rhs(y.reshape(9, n, m), p_col, fr[:, None]).reshape(9 * n, m)
+
+    return fun
+
+
+# --------------------------------------------------------------------------
+# invariants, constraints, contact force
+
+def contact_point(state, params: BodyParams):
+    """Contact point p = c + a e3 [m], shape (3, ...) (eq. 00 with e3 of
+    docs/dynamics.md sec. 2)."""
+    e3 = _geometry(np.asarray(state), params)[8]
+    return np.asarray(state)[C] + params.a * e3
+
+
+def energy(state, params: BodyParams):
+    """Energy per unit mass [J/kg] (beyond the paper, cf. eq. 27):
+    |dc/dt|^2/2 + (k a^2/2)(|w|^2 + w1^2 [wheel only]) + g c_z.
+
+    Conserved by the exact flow (the rolling contact force does no work).
+    """
+    state = np.asarray(state)
+    c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s = _geometry(state, params)
+    v = params.a * _cross(e3, w)
+    w1 = _dot(w, e1h)
+    rot = _dot(w, w) + np.where(wheel, w1 * w1, 0.0)
+    return 0.5 * _dot(v, v) + 0.5 * params.k * params.a ** 2 * rot + params.g * c[2]
+
+
+def constraint_residuals(state, params: BodyParams):
+    """Residuals of the constraints (beyond the paper; docs/dynamics.md sec. 4).
+
+    Returns a dict of arrays over the bodies:
+
+    ``axis``         |e1| - 1 [-]
+    ``contact``      |p| - r [m], p = c + a e3 the contact point
+    ``contact_rate`` d|p|/dt [m/s] computed from the equations of motion
+                     (zero identically: the flow is tangent to the contact
+                     surface; a check of the geometry, eq. D5)
+    ``slip``         |v_cm - a e3 x w| [m/s] with v_cm = dc/dt of :func:`rhs`;
+                     zero by construction (rolling is built into the state,
+                     eq. 6), reported so a simulator can log it uniformly.
+    """
+    state = np.asarray(state)
+    cdot, _, _, _, e3, e3dot = _motion(state, params)
+    c, e1, w = state[C], state[E1], state[W]
+    pvec = c + params.a * e3
+    pn = _norm(pvec)
+    pdot = cdot + params.a * e3dot
+    slip = cdot - params.a * _cross(e3, w)
+    return {
+        "axis": _norm(e1) - 1.0,
+        "contact": pn - params.r,
+        "contact_rate": _dot(pvec, pdot) / pn,
+        "slip": _norm(slip),
+    }
+
+
+def contact_force(state, params: BodyParams):
+    """Contact force of the sphere on the body, per unit mass, from a state.
+
+    Eq. (2) solved for F: F/m = d2c/dt2 + g z, with d2c/dt2 from the exact
+    equations (beyond the paper; it reduces to eqs. 30/32 and 57 on steady
+    orbits).  Returns a dict:
+
+    ``force``     (3, ...) F/m [m/s^2], lab components
+    ``normal``    component pressing body and sphere together [m/s^2]
+                  (-F.n inside, +F.n outside, n = p/|p| the outward normal at
+                  the contact point); > 0 means contact holds
+    ``friction``  (3, ...) tangential part of F/m [m/s^2]
+    ``friction_magnitude`` |friction| [m/s^2]
+    ``mu_required`` |friction| / normal, NaN where normal <= 0
+    """
+    state = np.asarray(state)
+    _, _, _, cddot, e3, _ = _motion(state, params)
+    zhat = np.zeros_like(cddot)
+    zhat[2] = 1.0
+    force = cddot + params.g * zhat
+    pvec = state[C] + params.a * e3
+    nrm = pvec / _norm(pvec)
+    fn = _dot(force, nrm)
+    normal = np.where(params.outside, fn, -fn)
+    fric = force - fn * nrm
+    fmag = _norm(fric)
+    ok = normal > 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mu = np.where(ok, fmag / np.where(ok, normal, 1.0), np.nan)
+    return {"force": force, "normal": normal, "friction": fric,
+            "friction_magnitude": fmag, "mu_required": mu}
+
+
+def project(state, params: BodyParams):
+    """Return the state moved back onto the constraint surface (beyond the
+    paper, docs/dynamics.md sec. 4): e1 renormalised, then c shifted along the
+    contact normal by r - |p| so that |p| = r exactly (e3 is unchanged by this
+    shift).  For a simulator that wants to remove integration drift."""
+    state = np.array(state, dtype=np.result_type(state, float), copy=True)
+    e1 = state[E1]
+    state[E1] = e1 / _norm(e1)
+    pvec = contact_point(state, params)
+    pn = _norm(pvec)
+    state[C] = state[C] + (params.r - pn) * pvec / pn
+    return state
+
+
+def state_from_contact(p_hat, e1, w, params: BodyParams):
+    """State with contact point r * p_hat, axis e1 and angular velocity w.
+
+    Beyond the paper (docs/dynamics.md sec. 2, eq. D3): for a wheel
+    e3 = p_perp/|p_perp| with p_perp the projection of p on the wheel plane,
+    then c = p - a e3; for a sphere c = p - a e3 with e3 = p_hat inside and
+    -p_hat outside.  Inputs (3, ...) arrays (p_hat and e1 are normalised
+    here).  No check that the wheel fits (|p_perp| > a inside).
+    """
+    p_hat = np.asarray(p_hat)
+    e1 = np.asarray(e1)
+    p_hat = p_hat / _norm(p_hat)
+    e1 = e1 / _norm(e1)
+    pvec = params.r * p_hat
+    pperp = pvec - _dot(pvec, e1) * e1
+    e3_wheel = pperp / _norm(pperp)
+    e3_sphere = np.where(params.outside, -1.0, 1.0) * p_hat
+    e3 = np.where(params.sphere, e3_sphere, e3_wheel)
+    c = pvec - params.a * e3
+    return np.concatenate(np.broadcast_arrays(c, e1, np.asarray(w)))
+
+
+# --------------------------------------------------------------------------
+# steady horizontal orbits
+
+def wheel_orbit_state(theta, alpha, a, r, k, g, outside=False, phi=0.0):
+    """State of a wheel placed exactly on the steady horizontal orbit
+    (theta, alpha), and its rate Omega.
+
+    McDonald (1993) eqs. (11)-(13), (8b), (29): contact point at polar angle
+    theta and azimuth phi, e1 = -sin(alpha) r_hat - cos(alpha) z,
+    e3 = cos(alpha) r_hat - sin(alpha) z (r_hat horizontal, towards the
+    contact point), c = p - a e3 (so the centre is at distance
+    r' = r sin(theta) - a cos(alpha) from the axis), and
+    w = (r'/a) Omega e1 - Omega sin(alpha) e3 (eq. 13) with
+    Omega = +sqrt(Omega^2) of eq. (29).  Same formulas outside (sec. 3).
+
+    Inputs broadcast; angles [rad], lengths [m], g [m/s^2].  Returns
+    ``(state, Omega)`` with state shape (9, ...) and Omega [rad/s]; NaN where
+    Omega^2 <= 0 or undefined.  Complex theta/alpha are accepted (complex
+    step).  Whether the wheel fits / keeps contact is not checked here (see
+    :func:`deathsphere.physics.wheel.horizontal_orbit`).
+    """
+    theta, alpha, a, r, k, g, phi = np.broadcast_arrays(
+        *(np.asarray(x) for x in (theta, alpha, a, r, k, g, phi)))
+    om2 = omega_squared(theta, alpha, a, r, k, g)
+    if np.iscomplexobj(om2):
+        ok = np.real(om2) > 0
+    else:
+        ok = np.nan_to_num(om2, nan=-1.0) > 0
+    omega = np.where(ok, np.sqrt(np.where(ok, om2, 1.0)), np.nan)
+    cp, sp = np.cos(phi), np.sin(phi)
+    zero = np.zeros_like(cp)
+    rhat = np.stack((cp, sp, zero))
+    zhat = np.stack((zero, zero, np.ones_like(cp)))
+    st, ct = np.sin(theta), np.cos(theta)
+    sa, ca = np.sin(alpha), np.cos(alpha)
+    pvec = r * (st * rhat + ct * zhat)
+    e1 = -sa * rhat - ca * zhat
+    e3 = ca * rhat - sa * zhat
+    c = pvec - a * e3
+    rp = r * st - a * ca
+    w = (rp / a) * omega * e1 - omega * sa * e3
+    return np.concatenate((c, e1, w)), omega
+
+
+def sphere_orbit_rates(theta, omega3, a, r, k, g, outside=False):
+    """The two rates Omega of steady horizontal orbits of a rolling sphere
+    with spin omega3, eq. (55): (k+1) r' Omega^2 cos(theta) + k a omega3 Omega
+    + g = 0, r' = r - a inside, r + a outside (sec. 5).
+
+    omega3 [rad/s] is w.e3 with e3 from the sphere's centre to the contact
+    point.  Returns ``(slow, fast)`` [rad/s]: the root of smaller and larger
+    |Omega|; NaN where eq. (56) fails (no real root).  On the equator only
+    ``slow`` = -g/(k a omega3) exists (``fast`` is NaN).
+    """
+    theta, omega3, a, r, k, g, outside = np.broadcast_arrays(
+        *(np.asarray(x, dtype=float) for x in (theta, omega3, a, r, k, g)),
+        np.asarray(outside, dtype=bool))
+    rp = np.where(outside, r + a, r - a)
+    A = (k + 1) * rp * np.cos(theta)
+    B = k * a * omega3
+    disc = B * B - 4 * A * g
+    real = disc >= 0
+    sq = np.sqrt(np.where(real, disc, 0.0))
+    # numerically stable pair of roots: q = -(B + sign(B) sq)/2
+    sgn = np.where(B >= 0, 1.0, -1.0)
+    q = -0.5 * (B + sgn * sq)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r1 = np.where(q != 0, g / np.where(q != 0, q, 1.0), np.nan)       # C/q
+        r2 = np.where(A != 0, q / np.where(A != 0, A, 1.0), np.nan)       # q/A
+    tiny = np.abs(A) <= 1e-12 * (np.abs(r) + a)
+    r2 = np.where(tiny, np.nan, r2)
+    slow = np.where(np.abs(r1) <= np.abs(np.nan_to_num(r2, nan=np.inf)), r1, r2)
+    fast = np.where(np.abs(r1) <= np.abs(np.nan_to_num(r2, nan=np.inf)), r2, r1)
+    slow = np.where(real, slow, np.nan)
+    fast = np.where(real & ~tiny, fast, np.nan)
+    return slow, fast
+
+
+def sphere_orbit_state(theta, Omega, a, r, k, g, outside=False, phi=0.0):
+    """State of a sphere on the steady horizontal orbit of polar angle theta
+    and rate Omega, and its spin omega3.
+
+    McDonald (1993) eqs. (42), (44), (55): the centre at distance
+    r' = r - a (inside) or r + a (outside) from the origin on the ray of polar
+    angle theta and azimuth phi; e3 (centre to contact) = +/- that ray;
+    w = -(1/a) e3 x v_cm + omega3 e3 (eq. 6a) with v_cm = Omega z x c and
+    omega3 from eq. (55) solved for it:
+    omega3 = -((k+1) r' Omega^2 cos(theta) + g) / (k a Omega).
+    The e1 rows hold a body-fixed marker (the paper's axis 1 at t = 0).
+
+    Returns ``(state, omega3)``; NaN where Omega = 0.
+    """
+    theta, Omega, a, r, k, g, outside, phi = np.broadcast_arrays(
+        *(np.asarray(x) for x in (theta, Omega, a, r, k, g)),
+        np.asarray(outside, dtype=bool), np.asarray(phi))
+    rp = np.where(outside, r + a, r - a)
+    nz = Omega != 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        omega3 = np.where(nz, -((k + 1) * rp * Omega ** 2 * np.cos(theta) + g)
+                          / (k * a * np.where(nz, Omega, 1.0)), np.nan)
+    cp, sp = np.cos(phi), np.sin(phi)
+    zero = np.zeros_like(cp)
+    rhat = np.stack((cp, sp, zero))
+    zhat = np.stack((zero, zero, np.ones_like(cp)))
+    chat = np.sin(theta) * rhat + np.cos(theta) * zhat
+    c = rp * chat
+    s = np.where(outside, -1.0, 1.0)
+    e3 = s * chat
+    v = Omega * _zcross(c)
+    w = -_cross(e3, v) / a + omega3 * e3
+    e2 = np.stack((-sp, cp, zero))
+    e1 = _cross(e2, e3)
+    return np.concatenate((c, e1, w)), omega3

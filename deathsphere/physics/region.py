@@ -1,0 +1,586 @@
+"""The allowed (theta, alpha) region of steady horizontal wheel orbits.
+
+McDonald (1993), figure "alpha_wh" and sec. 2.2.2: for a wheel of radius a
+inside a sphere of radius r (inertia factor k), a steady horizontal orbit at
+polar angle theta and tilt alpha exists where the wheel fits, eq. (0),
+Omega^2 of eq. (29) is positive, and the contact force presses the wheel
+onto the wall, eq. (33); outside the sphere (sec. 3) the fit is eq. (81) and
+the contact condition eq. (83).  This module computes the boundary curves of
+that region, the intervals of alpha allowed at each theta (optionally also
+limited by a friction coefficient mu and a largest g-load), the speed range
+over each interval, the highest orbit possible, and every tilt alpha giving a
+prescribed speed or rotation rate.
+
+Method (docs/limits.md, beyond the paper).  Every boundary is the zero set of
+a trigonometric polynomial in (theta, alpha): with C = cos(alpha),
+S = sin(alpha), s = sin(theta), c = cos(theta), r' = r s - a C (eq. 8b) and
+D = (2k+1) r' + k a C (the bracket of eq. 29),
+
+=========================  ===============================  ==========
+boundary                   function                         degree in alpha
+=========================  ===============================  ==========
+fit, eq. (0) / (81)        sin(theta - alpha) - a/r  /  sin(alpha - theta)   1
+Omega^2 = 0 or pole (29)   C,  S,  D                        1 each
+contact, eq. (33) / (83)   P_N = r' C s - c S D             2
+friction, eq. (35)         P_F^2 - mu^2 P_N^2,  P_F = r' C c + s S D         4
+g-load, eq. (36)           (r' C)^2 - G^2 (S D)^2           4
+speed v_cm, eq. (29)       g r'^2 C - v^2 S D               3
+=========================  ===============================  ==========
+
+since Omega^2 = g C / (S D), normal force per mass = +-g P_N / (S D) and
+F_theta / m = -g P_F / (S D) (eq. 32).  A trigonometric polynomial of degree
+N has at most 2N zeros per period; they are the unimodular roots
+z = exp(i alpha) of a polynomial of degree 2N, found all at once as the
+eigenvalues of its companion matrix (batched over theta), then each one
+refined by bisection inside a bracket whose ends are the midpoints to its
+neighbours, so that a sign change is required and the refined root satisfies
+the physical equation to about 1e-15 rad.  No zero of odd multiplicity can be
+missed: the polynomial has no others.
+
+Angles are in radians, lengths in metres, g in m/s^2, speeds in m/s.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from deathsphere.physics.status import Status
+from deathsphere.physics.wheel import horizontal_orbit
+
+__all__ = [
+    "AlphaIntervals",
+    "HighestOrbit",
+    "BOUNDARY_LABELS",
+    "fit_interval",
+    "alpha_window",
+    "boundary_alphas",
+    "boundary_values",
+    "allowed_alpha",
+    "feasible",
+    "highest_orbit",
+    "solve_alpha",
+    "boundary_curves",
+]
+
+TWO_PI = 2.0 * np.pi
+
+#: Refined roots are bisected to this bracket width [rad].
+ROOT_XTOL = 1e-14
+
+#: A root z of the companion polynomial counts as real (|z| = 1) within this.
+_UNIT_CIRCLE_TOL = 1e-6
+
+#: Coefficients below this fraction of the largest are treated as zero when
+#: deciding the degree of a trigonometric polynomial for one theta.
+_DEGREE_TOL = 1e-13
+
+#: Breakpoints closer than this [rad] are merged (zero-width cells).
+_MERGE_TOL = 1e-13
+
+#: Names and labels of the boundaries, in drawing order.
+BOUNDARY_LABELS = {
+    "eq0": "eq. (0): wheel fits",
+    "eq29": "eq. (29): Omega^2 = 0 or pole",
+    "eq33": "eq. (33): contact force = 0",
+    "mu": "eq. (35): mu_required = mu",
+    "max_g": "eq. (36): g-load = max_g",
+}
+
+
+# ---------------------------------------------------------------------------
+# bivariate trigonometric polynomials
+# ---------------------------------------------------------------------------
+
+class _Trig2:
+    """f(theta, alpha) = sum h[p, q] exp(i (p - P) theta) exp(i (q - Q) alpha),
+    a real trigonometric polynomial of degree P in theta and Q in alpha.
+    Products are 2-D convolutions of the coefficient arrays."""
+
+    __slots__ = ("h",)
+
+    def __init__(self, h):
+        self.h = np.atleast_2d(np.asarray(h, dtype=complex))
+
+    @property
+    def deg(self):
+        return (self.h.shape[0] - 1) // 2, (self.h.shape[1] - 1) // 2
+
+    def _padded(self, p, q):
+        dp, dq = p - self.deg[0], q - self.deg[1]
+        return np.pad(self.h, ((dp, dp), (dq, dq)))
+
+    @staticmethod
+    def _lift(x):
+        return x if isinstance(x, _Trig2) else _Trig2([[complex(x)]])
+
+    def __add__(self, other):
+        other = self._lift(other)
+        p, q = max(self.deg[0], other.deg[0]), max(self.deg[1], other.deg[1])
+        return _Trig2(self._padded(p, q) + other._padded(p, q))
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return _Trig2(-self.h)
+
+    def __sub__(self, other):
+        return self + (-self._lift(other))
+
+    def __rsub__(self, other):
+        return self._lift(other) - self
+
+    def __mul__(self, other):
+        if not isinstance(other, _Trig2):
+            return _Trig2(self.h * complex(other))
+        a, b = self.h, other.h
+        out = np.zeros((a.shape[0] + b.shape[0] - 1, a.shape[1] + b.shape[1] - 1), dtype=complex)
+        for i in range(b.shape[0]):
+            for j in range(b.shape[1]):
+                if b[i, j] != 0:
+                    out[i:i + a.shape[0], j:j + a.shape[1]] += a * b[i, j]
+        return _Trig2(out)
+
+    __rmul__ = __mul__
+
+    def d_alpha(self):
+        """Partial derivative with respect to alpha."""
+        q = np.arange(-self.deg[1], self.deg[1] + 1)
+        return _Trig2(self.h * (1j * q)[None, :])
+
+    def in_alpha(self, theta):
+        """Coefficients (n, 2Q+1) of the polynomial in alpha at each theta."""
+        theta = np.asarray(theta, dtype=float).reshape(-1)
+        p = np.arange(-self.deg[0], self.deg[0] + 1)
+        return np.exp(1j * np.outer(theta, p)) @ self.h
+
+
+def _basis(a, r, k):
+    """The building blocks C, S, s, c, r', D, S D of the module docstring."""
+    C = _Trig2([[0.5, 0.0, 0.5]])
+    S = _Trig2([[0.5j, 0.0, -0.5j]])
+    s = _Trig2([[0.5j], [0.0], [-0.5j]])
+    c = _Trig2([[0.5], [0.0], [0.5]])
+    rp = r * s - a * C
+    D = (2 * k + 1) * rp + k * a * C
+    return C, S, s, c, rp, D, S * D
+
+
+def _functions(a, r, k, g, mu=np.inf, max_g=np.inf, outside=False):
+    """Boundary functions whose zero sets bound the region (module docstring)."""
+    C, S, s, c, rp, D, SD = _basis(a, r, k)
+    fit = (S * c - C * s) if outside else (s * C - c * S - a / r)
+    P_N = rp * C * s - c * SD
+    out = {"eq0": [fit], "eq29": [C, S, D], "eq33": [P_N]}
+    if np.isfinite(mu):
+        P_F = rp * C * c + s * SD
+        out["mu"] = [P_F * P_F - (mu * mu) * (P_N * P_N)]
+    if np.isfinite(max_g):
+        RC = rp * C
+        out["max_g"] = [RC * RC - (max_g * max_g) * (SD * SD)]
+    return out
+
+
+# ---------------------------------------------------------------------------
+# univariate evaluation and root finding, batched over rows
+# ---------------------------------------------------------------------------
+
+def _eval_rows(h, x):
+    """Real trigonometric polynomial with coefficient rows h (n, 2N+1) at
+    x (n, m): sum_j h_j exp(i (j - N) x), taken real."""
+    n2 = h.shape[1]
+    N = (n2 - 1) // 2
+    out = np.broadcast_to(h[:, N:N + 1].real, x.shape).copy()
+    for j in range(1, N + 1):
+        hj = h[:, N + j:N + j + 1]                     # exp(+i j x) coefficient
+        out += 2.0 * (hj.real * np.cos(j * x) - hj.imag * np.sin(j * x))
+    return out
+
+
+def _candidate_roots(h):
+    """Angles of the unimodular roots of z^N f(z), rows of h (n, 2N+1).
+    Returns (n, 2N) with NaN where a root is not on the unit circle."""
+    n, n2 = h.shape
+    N = (n2 - 1) // 2
+    out = np.full((n, 2 * N), np.nan)
+    if N == 0 or n == 0:
+        return out
+    scale = np.max(np.abs(h), axis=1)
+    safe = np.where(scale > 0, scale, 1.0)
+    hn = h / safe[:, None]
+    # effective degree: the outermost harmonic that is not negligible
+    big = np.abs(hn) > _DEGREE_TOL
+    idx = np.arange(n2)
+    eff = np.max(np.where(big, np.abs(idx - N), -1), axis=1)   # -1: f == 0
+    for m in range(1, N + 1):
+        rows = np.nonzero(eff == m)[0]
+        if rows.size == 0:
+            continue
+        coef = hn[rows, N - m:N + m + 1]               # ascending powers z^0 .. z^2m
+        lead = coef[:, -1]
+        monic = coef[:, :-1] / lead[:, None]
+        comp = np.zeros((rows.size, 2 * m, 2 * m), dtype=complex)
+        if m * 2 > 1:
+            comp[:, np.arange(1, 2 * m), np.arange(0, 2 * m - 1)] = 1.0
+        comp[:, :, -1] = -monic
+        z = np.linalg.eigvals(comp)
+        on = np.abs(np.abs(z) - 1.0) < _UNIT_CIRCLE_TOL
+        out[rows, :2 * m] = np.where(on, np.angle(z), np.nan)
+    return out
+
+
+def _refine(h, left, right, fl, fr):
+    """Bisection on brackets (n, m) with f(left) f(right) < 0."""
+    for _ in range(80):
+        width = right - left
+        if not np.any(width > ROOT_XTOL * np.maximum(1.0, np.abs(left))):
+            break
+        mid = 0.5 * (left + right)
+        fm = _eval_rows(h, mid)
+        same = np.sign(fm) == np.sign(fl)
+        exact = fm == 0
+        left = np.where(same | exact, mid, left)
+        fl = np.where(same, fm, fl)
+        right = np.where(same & ~exact, right, mid)
+    return 0.5 * (left + right)
+
+
+def _roots_in(h, lo, hi):
+    """All zeros of odd multiplicity of the real trigonometric polynomials
+    with coefficient rows h (n, 2N+1) in the windows [lo, hi] (arrays (n,),
+    hi - lo <= 2 pi).  Returns (n, m) sorted, NaN-padded."""
+    h = np.asarray(h, dtype=complex)
+    n = h.shape[0]
+    lo = np.broadcast_to(np.asarray(lo, dtype=float), (n,))
+    hi = np.broadcast_to(np.asarray(hi, dtype=float), (n,))
+    ang = _candidate_roots(h)
+    if ang.shape[1] == 0:
+        return np.full((n, 0), np.nan)
+    pad = 1e-7
+    d = np.mod(ang - lo[:, None] + pad, TWO_PI) - pad
+    cand = lo[:, None] + d
+    cand = np.where(np.isfinite(cand) & (cand <= hi[:, None] + pad), cand, np.nan)
+    cand = np.sort(cand, axis=1)
+    m = cand.shape[1]
+    # brackets: from the midpoint to the previous candidate to the midpoint
+    # to the next one (window ends at the extremes)
+    mids = 0.5 * (cand[:, :-1] + cand[:, 1:])
+    left = np.concatenate([lo[:, None], mids], axis=1)
+    right = np.concatenate([mids, np.full((n, 1), np.nan)], axis=1)
+    right = np.where(np.isnan(right), hi[:, None], right)
+    left = np.clip(left, lo[:, None], hi[:, None])
+    right = np.clip(right, lo[:, None], hi[:, None])
+    valid = np.isfinite(cand)
+    left = np.where(valid, left, lo[:, None])
+    right = np.where(valid, right, lo[:, None])
+    fl = _eval_rows(h, left)
+    fr = _eval_rows(h, right)
+    zero_l = valid & (fl == 0)
+    zero_r = valid & (fr == 0) & ~zero_l
+    bracket = valid & (fl * fr < 0)
+    root = _refine(h, np.where(bracket, left, 0.0), np.where(bracket, right, 0.0),
+                   np.where(bracket, fl, 1.0), np.where(bracket, fr, -1.0))
+    root = np.where(bracket, root, np.nan)
+    root = np.where(zero_l, left, root)
+    root = np.where(zero_r, right, root)
+    root = np.sort(root, axis=1)
+    # a root at a bracket end may have been found twice
+    dup = np.zeros_like(root, dtype=bool)
+    dup[:, 1:] = np.abs(np.diff(root, axis=1)) <= _MERGE_TOL
+    root = np.sort(np.where(dup, np.nan, root), axis=1)
+    keep = max(1, int(np.max(np.sum(np.isfinite(root), axis=1), initial=0)))
+    return root[:, :min(keep, m)]
+
+
+def _cat_sorted(arrays, n):
+    """Concatenate NaN-padded (n, m_i) arrays and sort each row (NaN last)."""
+    arrays = [np.asarray(x, dtype=float).reshape(n, -1) for x in arrays]
+    if not arrays:
+        return np.full((n, 0), np.nan)
+    out = np.sort(np.concatenate(arrays, axis=1), axis=1)
+    width = int(np.max(np.sum(np.isfinite(out), axis=1), initial=0))
+    return out[:, :width]
+
+
+# ---------------------------------------------------------------------------
+# parameters
+# ---------------------------------------------------------------------------
+
+def _check(a, r, k, g, outside, mu=np.inf, max_g=np.inf):
+    for name, val in (("a", a), ("r", r), ("k", k), ("g", g)):
+        if not np.isscalar(val) and np.ndim(val) != 0:
+            raise ValueError(f"{name} must be a scalar, got shape {np.shape(val)}")
+        if not math.isfinite(float(val)):
+            raise ValueError(f"{name} must be finite, got {val}")
+    a, r, k, g = float(a), float(r), float(k), float(g)
+    if a <= 0:
+        raise ValueError(f"wheel radius a must be > 0, got {a}")
+    if r <= 0:
+        raise ValueError(f"sphere radius r must be > 0, got {r}")
+    if not outside and r <= a:
+        raise ValueError(f"a wheel inside needs r > a, got a = {a}, r = {r}")
+    if k < 0:
+        raise ValueError(f"inertia factor k must be >= 0, got {k}")
+    if g <= 0:
+        raise ValueError(f"gravity g must be > 0, got {g}")
+    mu, max_g = float(mu), float(max_g)
+    if math.isnan(mu) or mu < 0:
+        raise ValueError(f"friction coefficient mu must be >= 0 (inf: no limit), got {mu}")
+    if math.isnan(max_g) or max_g <= 0:
+        raise ValueError(f"max_g must be > 0 (inf: no limit), got {max_g}")
+    return a, r, k, g, bool(outside), mu, max_g
+
+
+def _theta_1d(theta):
+    t = np.asarray(theta, dtype=float)
+    if not np.all(np.isfinite(t)):
+        raise ValueError("theta must be finite")
+    return t, t.reshape(-1)
+
+
+# ---------------------------------------------------------------------------
+# public API
+# ---------------------------------------------------------------------------
+
+def fit_interval(theta, a, r, outside=False):
+    """Open interval (lo, hi) of alpha in which the wheel fits [rad].
+
+    Inside, eq. (0): theta - pi + asin(a/r) < alpha < theta - asin(a/r).
+    Outside, eq. (81): theta < alpha < theta + pi.  Arrays broadcast with
+    theta; every other tilt is these plus a multiple of 2 pi.
+    """
+    theta = np.asarray(theta, dtype=float)
+    if outside:
+        return theta.copy(), theta + np.pi
+    e = math.asin(a / r)
+    return theta - np.pi + e, theta - e
+
+
+def alpha_window(theta, outside=False):
+    """Default search window for alpha [rad], one full period containing the
+    fit interval of eqs. (0)/(81) for 0 < theta < pi: [-pi, pi) inside,
+    [0, 2 pi) outside (beyond the paper: a convention of this package)."""
+    theta = np.asarray(theta, dtype=float)
+    lo = np.full(theta.shape, 0.0 if outside else -np.pi)
+    return lo, lo + TWO_PI
+
+
+def boundary_alphas(theta, a, r, k, outside=False, mu=np.inf, max_g=np.inf, window=None):
+    """Every alpha on each boundary curve of the allowed region, at each theta.
+
+    Boundaries (McDonald 1993, figure "alpha_wh"): ``eq0`` fit, eq. (0)
+    (eq. (81) outside); ``eq29`` where Omega^2 of eq. (29) changes sign
+    (cos alpha = 0, sin alpha = 0, or (2k+1) r' + k a cos alpha = 0);
+    ``eq33`` where the normal force of eq. (32) vanishes, the edge of
+    eq. (33) (eq. (83) outside); with finite ``mu`` also ``mu``, where
+    mu_required of eq. (35) equals mu, and with finite ``max_g``, ``max_g``
+    where the g-load of eq. (36) equals max_g (these two: beyond the paper).
+
+    ``mu`` and ``max_g`` curves are kept only where the orbit is real and in
+    contact (elsewhere mu_required and the g-load are not physical).
+
+    Parameters
+    ----------
+    theta : array_like, [rad]
+    a, r : float, [m];  k : float, [-]
+    window : (lo, hi) arrays broadcastable to theta, [rad], hi - lo <= 2 pi;
+        default :func:`alpha_window`.
+
+    Returns
+    -------
+    dict name -> float array of shape theta.shape + (m,), sorted along the
+    last axis, NaN-padded; each alpha solves its equation to ~1e-14 rad.
+    """
+    a, r, k, _, outside, mu, max_g = _check(a, r, k, 1.0, outside, mu, max_g)
+    t, t1 = _theta_1d(theta)
+    lo, hi = alpha_window(t1, outside) if window is None else (
+        np.broadcast_to(np.asarray(window[0], dtype=float), t.shape).reshape(-1),
+        np.broadcast_to(np.asarray(window[1], dtype=float), t.shape).reshape(-1))
+    n = t1.size
+    out = {}
+    for name, funcs in _functions(a, r, k, 1.0, mu, max_g, outside).items():
+        roots = _cat_sorted([_roots_in(f.in_alpha(t1), lo, hi) for f in funcs], n)
+        if name in ("mu", "max_g") and roots.size:
+            orb = horizontal_orbit(t1[:, None], np.where(np.isfinite(roots), roots, 0.0),
+                                   a, r, k, 1.0, outside)
+            physical = np.isfinite(orb["normal"]) & (orb["normal"] > 0)
+            roots = _cat_sorted([np.where(physical, roots, np.nan)], n)
+        out[name] = roots.reshape(t.shape + (roots.shape[1],))
+    return out
+
+
+def boundary_values(theta, alpha, a, r, k, outside=False, mu=np.inf, max_g=np.inf):
+    """Values of the boundary functions (module docstring table) at
+    (theta, alpha), broadcast; a boundary crosses where its value changes
+    sign.  ``eq29`` is the product C S D, whose sign is that of Omega^2 of
+    eq. (29).  For renderers that locate the curves cell by cell."""
+    a, r, k, _, outside, mu, max_g = _check(a, r, k, 1.0, outside, mu, max_g)
+    th, al = np.broadcast_arrays(np.asarray(theta, dtype=float), np.asarray(alpha, dtype=float))
+    t1, a1 = th.reshape(-1), al.reshape(-1, 1)
+    out = {}
+    for name, funcs in _functions(a, r, k, 1.0, mu, max_g, outside).items():
+        val = np.ones(t1.shape + (1,))
+        for f in funcs:
+            val = val * _eval_rows(f.in_alpha(t1), a1)
+        out[name] = val.reshape(th.shape)
+    return out
+
+
+@dataclass(frozen=True)
+class AlphaIntervals:
+    """Intervals of alpha giving a feasible orbit, per theta (rad, m/s).
+
+    ``lo``, ``hi``, ``speed_min``, ``speed_max`` have shape theta.shape + (m,),
+    NaN-padded beyond ``count`` (shape theta.shape).  Each interval is open,
+    lo < alpha < hi; the speed v_cm = |r'| Omega ranges over the open interval
+    (speed_min, speed_max) (inf where Omega diverges at an end; an end value is
+    a bound, not attained).
+    """
+
+    theta: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    speed_min: np.ndarray
+    speed_max: np.ndarray
+    count: np.ndarray
+
+    def intervals(self, index=()):
+        """List of (lo, hi, speed_min, speed_max) tuples for one theta."""
+        index = np.index_exp[index] if not isinstance(index, tuple) else index
+        n = int(self.count[index])
+        return [(float(self.lo[index][j]), float(self.hi[index][j]),
+                 float(self.speed_min[index][j]), float(self.speed_max[index][j]))
+                for j in range(n)]
+
+    def contains(self, alpha):
+        """True where alpha (broadcast with theta) lies in an interval."""
+        alpha = np.asarray(alpha, dtype=float)[..., None]
+        with np.errstate(invalid="ignore"):
+            inside = (alpha > self.lo) & (alpha < self.hi)
+        return np.any(inside, axis=-1)
+
+
+def _feasible_at(t, alpha, a, r, k, g, outside, mu, max_g):
+    orb = horizontal_orbit(t, alpha, a, r, k, g, outside, mu)
+    ok = orb["status"] == Status.OK
+    if np.isfinite(max_g):
+        ok &= orb["accel_g"] <= max_g
+    return ok
+
+
+def feasible(theta, alpha, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf):
+    """True where (theta, alpha) is a feasible orbit: status ``ok`` of
+    :func:`deathsphere.physics.wheel.horizontal_orbit` (eqs. (0)/(81), (29),
+    (33)/(83), (35) with mu) and g-load of eq. (36) <= max_g."""
+    a, r, k, g, outside, mu, max_g = _check(a, r, k, g, outside, mu, max_g)
+    return _feasible_at(theta, alpha, a, r, k, g, outside, mu, max_g)
+
+
+def _speed_sq(t, alpha, a, r, k, g):
+    """v_cm^2 = g r'^2 cos(alpha) / (sin(alpha) D) (eq. 29), inf at a pole,
+    clipped at 0."""
+    rp = r * np.sin(t) - a * np.cos(alpha)
+    den = np.sin(alpha) * ((2 * k + 1) * rp + k * a * np.cos(alpha))
+    num = g * rp * rp * np.cos(alpha)
+    pole = np.abs(den) <= 1e-12 * ((2 * k + 1) * r + (k + 1) * a)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        v2 = num / np.where(pole, 1.0, den)
+    v2 = np.where(pole, np.inf, v2)
+    return np.maximum(v2, 0.0)
+
+
+def allowed_alpha(theta, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf):
+    """Intervals of alpha where a steady horizontal orbit is feasible.
+
+    Feasible means: the wheel fits (eq. (0); eq. (81) outside), Omega^2 of
+    eq. (29) is > 0, the normal force is positive (eq. (33); eq. (83)
+    outside), mu_required of eq. (35) <= ``mu`` and the g-load of eq. (36)
+    <= ``max_g`` — exactly status ``ok`` of
+    :func:`deathsphere.physics.wheel.horizontal_orbit` plus the g-load test.
+    The limits mu and max_g are beyond the paper (docs/limits.md).
+
+    Method: all crossings of every boundary inside the fit interval are
+    found (module docstring); the fit interval is cut at them, each piece is
+    tested at its midpoint and neighbouring feasible pieces are merged.  The
+    speed range of a piece is taken over its ends and the interior zeros of
+    d(v_cm^2)/d alpha.
+
+    Parameters
+    ----------
+    theta : array_like, [rad];  a, r : float, [m];  k : float, [-];
+    g : float, [m/s^2];  outside : bool;  mu : float, [-] (inf: no limit);
+    max_g : float, [-] (inf: no limit).
+
+    Returns
+    -------
+    AlphaIntervals (angles in rad, speeds in m/s).
+    """
+    a, r, k, g, outside, mu, max_g = _check(a, r, k, g, outside, mu, max_g)
+    t, t1 = _theta_1d(theta)
+    n = t1.size
+    lo, hi = fit_interval(t1, a, r, outside)
+    funcs = _functions(a, r, k, g, mu, max_g, outside)
+    cuts = [_roots_in(f.in_alpha(t1), lo, hi)
+            for name, fs in funcs.items() if name != "eq0" for f in fs]
+    b = _cat_sorted([lo[:, None], hi[:, None]] + cuts, n)
+    # merge coincident cuts, so that no zero-width piece splits an interval
+    dup = np.zeros(b.shape, dtype=bool)
+    dup[:, 1:] = np.diff(b, axis=1) <= _MERGE_TOL
+    b = _cat_sorted([np.where(dup, np.nan, b)], n)
+    cell_lo, cell_hi = b[:, :-1], b[:, 1:]
+    valid = np.isfinite(cell_lo) & np.isfinite(cell_hi)
+    mid = np.where(valid, 0.5 * (cell_lo + cell_hi), 0.0)
+    feas = valid & _feasible_at(t1[:, None], mid, a, r, k, g, outside, mu, max_g)
+    prev = np.zeros_like(feas)
+    prev[:, 1:] = feas[:, :-1]
+    nxt = np.zeros_like(feas)
+    nxt[:, :-1] = feas[:, 1:]
+    start, end = feas & ~prev, feas & ~nxt
+    count = np.sum(start, axis=1)
+    m = int(np.max(count, initial=0))
+    out_lo = np.full((n, m), np.nan)
+    out_hi = np.full((n, m), np.nan)
+    rs, cs = np.nonzero(start)
+    out_lo[rs, np.cumsum(start, axis=1)[rs, cs] - 1] = cell_lo[rs, cs]
+    re, ce = np.nonzero(end)
+    out_hi[re, np.cumsum(end, axis=1)[re, ce] - 1] = cell_hi[re, ce]
+    vmin, vmax = _speed_range(t1, out_lo, out_hi, lo, hi, a, r, k, g)
+    shape = t.shape + (m,)
+    return AlphaIntervals(theta=t, lo=out_lo.reshape(shape), hi=out_hi.reshape(shape),
+                          speed_min=vmin.reshape(shape), speed_max=vmax.reshape(shape),
+                          count=count.reshape(t.shape))
+
+
+def _speed_functions(a, r, k, g):
+    C, S, s, c, rp, D, SD = _basis(a, r, k)
+    num = g * rp * rp * C
+    return num, SD
+
+
+def _speed_range(t1, ilo, ihi, lo, hi, a, r, k, g):
+    """Infimum and supremum of v_cm over each open interval (ilo, ihi)."""
+    n, m = ilo.shape
+    if m == 0:
+        return np.full((n, 0), np.nan), np.full((n, 0), np.nan)
+    num, SD = _speed_functions(a, r, k, g)
+    dv = num.d_alpha() * SD - num * SD.d_alpha()          # numerator of d(v^2)/d alpha
+    crit = _roots_in(dv.in_alpha(t1), lo, hi)             # (n, K)
+    valid = np.isfinite(ilo)
+    safe_lo = np.where(valid, ilo, 0.0)
+    safe_hi = np.where(valid, ihi, 0.0)
+    v_lo = _speed_sq(t1[:, None], safe_lo, a, r, k, g)
+    v_hi = _speed_sq(t1[:, None], safe_hi, a, r, k, g)
+    vmin = np.minimum(v_lo, v_hi)
+    vmax = np.maximum(v_lo, v_hi)
+    if crit.shape[1]:
+        vc = _speed_sq(t1[:, None], np.where(np.isfinite(crit), crit, 0.0), a, r, k, g)  # (n, K)
+        within = (np.isfinite(crit)[:, None, :]
+                  & (crit[:, None, :] > safe_lo[:, :, None])
+                  & (crit[:, None, :] < safe_hi[:, :, None]))
+        vmin = np.minimum(vmin, np.min(np.where(within, vc[:, None, :], np.inf), axis=2))
+        vmax = np.maximum(vmax, np.max(np.where(within, vc[:, None, :], -np.inf), axis=2))
+    vmin = np.where(valid, np.sqrt(vmin), np.nan)
+    vmax = np.where(valid, np.sqrt(vmax), np.nan)
+    return vmin, vmax
