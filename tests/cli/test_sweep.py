@@ -1,0 +1,42 @@
+import csv
+import io
+import json
+import subprocess
+import sys
+
+from deathsphere.model import COLUMNS
+
+
+def test_sweep_streams_the_whole_grid_in_order(run):
+    res = run("sweep", "--theta", "10:170:40", "--alpha", "5:25:10", "--chunk-size", "4")
+    out = list(csv.DictReader(io.StringIO(res.stdout)))
+    assert res.exit_code == 0 and len(out) == 5 * 3
+    assert [int(r["input_row"]) for r in out] == list(range(1, 16))
+    assert res.stdout.count("input_row") == 1  # one header across chunks
+
+
+def test_sweep_only_filter_and_parameters(run):
+    res = run("sweep", "--theta", "30:150:10", "--alpha", "5:45:5", "-a", "0.1", "-a", "0.3", "--only", "ok",
+              "--format", "ndjson")
+    out = [json.loads(line) for line in res.stdout.splitlines()]
+    assert out and all(r["status"] == "ok" for r in out)
+    assert {r["a_m"] for r in out} == {0.1, 0.3}
+    assert list(out[0]) == list(COLUMNS)
+
+
+def test_sweep_only_filter_that_keeps_nothing_still_has_a_header(run):
+    res = run("sweep", "--theta", "0", "--alpha", "10", "--only", "ok")
+    assert res.stdout.strip() == ",".join(COLUMNS)
+
+
+def test_sweep_bad_parameter_is_a_usage_error(run):
+    res = run("sweep", "--theta", "60", "--alpha", "10", "-a", "0.1", "-a", "-2")
+    assert res.exit_code == 2 and "a (body radius)" in res.stderr
+
+
+def test_sweep_into_head_ends_quietly():
+    proc = subprocess.run(
+        f"{sys.executable} -m deathsphere sweep --theta 0:180:0.05 --alpha 0:90:0.05 | head -3",
+        shell=True, capture_output=True, text=True, timeout=60)
+    assert len(proc.stdout.splitlines()) == 3
+    assert "Traceback" not in proc.stderr and "Error" not in proc.stderr

@@ -1,0 +1,30 @@
+"""The shell examples run as a user would run them, and their answers are
+checked against the Python API by brute force."""
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from deathsphere import Setup, horizontal_orbit
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def run_example(name, **env):
+    path = os.path.dirname(sys.executable) + os.pathsep + os.environ["PATH"]
+    proc = subprocess.run(["bash", str(EXAMPLES / name)], capture_output=True, text=True, check=True,
+                          env={**os.environ, "PATH": path, **env}, timeout=120)
+    return proc.stdout.strip().splitlines()
+
+
+def test_highest_orbit_example_matches_brute_force():
+    header, best = run_example("highest_orbit_mu1.sh", MAX_G="5")
+    assert header == "theta_deg,alpha_deg,v_cm_m_s,accel_g,mu_required"
+    theta, alpha, v, g_load, mu = map(float, best.split(","))
+    assert mu <= 1 and g_load <= 5
+    grid = horizontal_orbit(Setup(mu=1.0), np.arange(5, 90.25, 0.5)[:, None], np.arange(0.5, 60.25, 0.5)[None, :])
+    feasible = (grid["status"] == "ok") & (grid["accel_g"] <= 5)
+    assert grid["theta_deg"][feasible].min() == theta
