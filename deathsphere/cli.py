@@ -29,6 +29,13 @@ CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 ORBIT_MAX_ROWS = 1_000_000
 
 
+ORBIT_TITLES = {
+    "wheel": "Horizontal orbits of a wheel (McDonald 1993, eqs. 0, 29-36)",
+    "sphere": "Horizontal orbits of a rolling sphere (McDonald 1993, eqs. 55-59)",
+    "particle": "Horizontal orbits of a sliding particle (frictionless)",
+}
+
+
 def stdout_console() -> Console:
     # rich honours NO_COLOR and TERM=dumb itself
     return Console(highlight=False)
@@ -91,6 +98,29 @@ def parse_angles(texts, name: str, max_values: int | None = None):
         if problem:
             raise click.BadParameter(problem, param_hint=f"'--{name}'")
     return values
+
+
+def parse_rates(texts, name: str, max_values: int | None = None):
+    try:
+        return parse_many(texts, f"--{name}", max_values)
+    except RangeError as exc:
+        raise click.BadParameter(str(exc).split(": ", 1)[-1], param_hint=f"'--{name}'") from None
+
+
+def check_body_inputs(body: str, alpha, omega3, omega) -> None:
+    """Which of --alpha, --omega3, --omega each body takes (usage error if wrong)."""
+    if body == "wheel":
+        if omega3 or omega:
+            raise click.UsageError("--omega3/--omega are for --body sphere; a wheel takes --alpha")
+        if not alpha:
+            raise click.UsageError("give --alpha DEG for a wheel (or --input FILE)")
+    elif body == "sphere":
+        if alpha:
+            raise click.UsageError("a sphere's tilt is fixed (theta - 90 deg); give --omega3 or --omega, not --alpha")
+        if bool(omega3) == bool(omega):
+            raise click.UsageError("give exactly one of --omega3 RAD_S and --omega RAD_S for a sphere")
+    elif alpha or omega3 or omega:
+        raise click.UsageError("a particle takes only --theta (no --alpha, --omega3 or --omega)")
 
 
 def choose_format(fmt: str | None) -> str:
@@ -174,12 +204,17 @@ def cli():
 @click.option("--alpha", multiple=True, metavar="DEG",
               help="Tilt of the wheel's diameter through the contact point below the orbit plane, "
                    "-180..180. Repeat it or give start:stop:step.")
+@click.option("--omega3", multiple=True, metavar="RAD_S",
+              help="Sphere: spin about the contact normal (axis 3, centre to contact point); "
+                   "eq. 55 gives up to two orbit rates, one row each (branch 0 slow, 1 fast).")
+@click.option("--omega", multiple=True, metavar="RAD_S",
+              help="Sphere: the orbital rate Omega (signed, about the upward vertical); omega3 follows from eq. 55.")
 @click.option("--input", "input_file", type=click.File("r"), default=None, metavar="FILE|-",
               help="CSV of requests, one orbit per row; its header names the options "
-                   "(theta, alpha, a, r, k, g, mu, body, side). '-' reads stdin.")
+                   "(theta, alpha, a, r, k, g, mu, body, side, omega3, omega). '-' reads stdin.")
 @body_options
 @output_options()
-def orbit(theta, alpha, input_file, body, side, a, r, k, g, mu, fmt):
+def orbit(theta, alpha, omega3, omega, input_file, body, side, a, r, k, g, mu, fmt):
     """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, g-load.
 
     All combinations of the --theta and --alpha values are evaluated.  Each
@@ -188,22 +223,33 @@ def orbit(theta, alpha, input_file, body, side, a, r, k, g, mu, fmt):
     input row); the reason column says why.
 
     \b
+    Bodies: a wheel (default; needs --alpha), a rolling sphere (--body
+    sphere; needs --omega3 or --omega; sec. 4-5) and a frictionless sliding
+    particle (--body particle; needs only --theta).  --side outside puts the
+    body on the outside of the sphere (sec. 3, 5).
+
+    \b
     Examples:
       deathsphere orbit --theta 60 --alpha 10
       deathsphere orbit --theta 60 --alpha 5:40:5 --mu 1 --format csv
+      deathsphere orbit --body sphere --theta 60 --omega3 40
+      deathsphere orbit --body particle --theta 120:170:10
       printf 'theta,alpha\\n60,10\\n90,25\\n' | deathsphere orbit --input -
     """
     setup = make_setup(body, side, a, r, k, g, mu)
     fmt = choose_format(fmt)
     defaults = dict(body=setup.body, side=setup.side, a=setup.a, r=setup.r, k=k, g=setup.g, mu=setup.mu)
     if input_file is not None:
-        for name, values in (("theta", theta), ("alpha", alpha)):
+        for name, values in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega)):
             if len(values) > 1 or any(":" in v for v in values):
                 raise click.UsageError(f"with --input, --{name} may give one default value, not a list or range")
         if theta:
             defaults["theta"] = float(parse_angles(theta, "theta")[0])
         if alpha:
             defaults["alpha"] = float(parse_angles(alpha, "alpha")[0])
+        for name, values in (("omega3", omega3), ("omega", omega)):
+            if values:
+                defaults[name] = float(parse_rates(values, name)[0])
         try:
             req = read_requests(input_file, defaults, source=getattr(input_file, "name", "input"))
         except InputError as exc:
@@ -211,12 +257,13 @@ def orbit(theta, alpha, input_file, body, side, a, r, k, g, mu, fmt):
     else:
         if not theta:
             raise click.UsageError("give --theta DEG (or --input FILE)")
-        needs_alpha = setup.body == "wheel"
-        if needs_alpha and not alpha:
-            raise click.UsageError("give --alpha DEG for a wheel (or --input FILE)")
-        thetas = parse_angles(theta, "theta", ORBIT_MAX_ROWS)
-        alphas = parse_angles(alpha, "alpha", ORBIT_MAX_ROWS) if alpha else np.array([math.nan])
-        axes = {"theta": thetas, "alpha": alphas}
+        check_body_inputs(setup.body, alpha, omega3, omega)
+        axes = {
+            "theta": parse_angles(theta, "theta", ORBIT_MAX_ROWS),
+            "alpha": parse_angles(alpha, "alpha", ORBIT_MAX_ROWS) if alpha else np.array([math.nan]),
+            "omega3": parse_rates(omega3, "omega3", ORBIT_MAX_ROWS) if omega3 else np.array([math.nan]),
+            "omega": parse_rates(omega, "omega", ORBIT_MAX_ROWS) if omega else np.array([math.nan]),
+        }
         if grid_size(axes) > ORBIT_MAX_ROWS:
             raise click.UsageError(f"{grid_size(axes)} orbits is more than `orbit` holds at once "
                                    f"({ORBIT_MAX_ROWS}); use `deathsphere sweep`, which streams")
@@ -224,7 +271,7 @@ def orbit(theta, alpha, input_file, body, side, a, r, k, g, mu, fmt):
         defaults.update(grid)
         req = make_requests(grid_size(axes), **defaults)
     table = evaluate(req)
-    emit([table], fmt, title="Horizontal orbits (McDonald 1993, eqs. 0, 29-36)")
+    emit([table], fmt, title=ORBIT_TITLES[setup.body] if input_file is None else "Horizontal orbits")
     if (table["status"] == "invalid").any():
         n_bad = int((table["status"] == "invalid").sum())
         stderr_console().print(f"deathsphere: {n_bad} input row(s) invalid; see their reason column",

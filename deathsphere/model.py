@@ -21,7 +21,7 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
-from deathsphere.physics import wheel
+from deathsphere.physics import particle, sphere, wheel
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 
 #: The contract's columns, in order (design.md).  Add, never rename or reorder.
@@ -31,10 +31,11 @@ COLUMNS = (
     "r_prime_m", "omega_rad_s", "period_s", "v_cm_m_s", "spin_rad_s", "accel_m_s2",
     "accel_g", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
     # extensions (appended; see CHANGELOG.md)
-    "mu_available", "omega3_rad_s",
+    "mu_available", "omega3_rad_s", "branch",
 )
 
-#: Columns holding text; every other column is float64 (input_row is int).
+#: Columns holding text; ``branch`` holds ints or None; every other column is
+#: float64 (input_row is int).
 TEXT_COLUMNS = frozenset({"body", "side", "status", "reason"})
 
 #: Physics output key -> contract column.
@@ -63,6 +64,8 @@ REQUEST_FIELDS = {
     "k": (None, "", "inertia factor, >= 0 (default by body)"),
     "g": (STANDARD_GRAVITY, "m/s^2", "gravity, > 0"),
     "mu": (math.inf, "", "friction coefficient available, >= 0 (inf: no limit)"),
+    "omega3": (None, "rad/s", "sphere: spin about the contact normal (eq. 55 gives Omega)"),
+    "omega": (None, "rad/s", "sphere: orbital rate Omega (eq. 55 gives omega3)"),
 }
 
 
@@ -249,6 +252,12 @@ def validate_requests(req: dict) -> np.ndarray:
         checks.append((needs_alpha & ~(np.isfinite(alpha) & (alpha >= -180) & (alpha <= 180)),
                        lambda i: angle_problem("alpha", alpha[i]) if not np.isnan(alpha[i])
                        else "alpha is missing (give --alpha or an alpha column)"))
+    omega3, omega = req["omega3"], req["omega"]
+    is_sphere = body == "sphere"
+    checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
+                   lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
+    checks.append((~is_sphere & ~(np.isnan(omega3) & np.isnan(omega)),
+                   lambda i: "omega3 and omega are inputs for a sphere only (--body sphere)"))
     for failed, words in checks:
         hit = pending & failed
         for i in np.flatnonzero(hit):  # only the (few) bad rows get words
@@ -257,57 +266,107 @@ def validate_requests(req: dict) -> np.ndarray:
     return reason
 
 
-def evaluate(req: dict) -> Table:
-    """Evaluate a request batch: one output row per request, in input order.
+def _wheel(req, rows):
+    sel = {key: req[key][rows] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
+    res = wheel.horizontal_orbit(
+        np.deg2rad(sel["theta"]), np.deg2rad(sel["alpha"]), sel["a"], sel["r"], sel["k"], sel["g"],
+        outside=req["side"][rows] == "outside", mu=sel["mu"])
+    return [(rows, np.full(rows.size, -1), res)]
 
-    Invalid rows come out with status ``invalid`` and the reason; the rest
-    are computed, grouped by body and side (a handful of vectorised calls).
+
+def _sphere(req, rows):
+    """Spin given: both roots of eq. (55), one row each; rate given: one row."""
+    outside = req["side"][rows] == "outside"
+    sel = {key: req[key][rows] for key in ("theta", "a", "r", "k", "g", "mu", "omega3", "omega")}
+    theta = np.deg2rad(sel["theta"])
+    spun = ~np.isnan(sel["omega3"])
+    parts = []
+    if spun.any():
+        m = spun
+        res = sphere.sphere_orbit(theta[m], sel["omega3"][m], sel["a"][m], sel["r"][m],
+                                  sel["k"][m], sel["g"][m], outside[m], sel["mu"][m])
+        res = {key: np.asarray(v).reshape(-1) for key, v in res.items()}
+        parts.append((np.repeat(rows[m], 2), res["branch"].astype(int), res))
+    if (~spun).any():
+        m = ~spun
+        res = sphere.sphere_orbit_from_rate(theta[m], sel["omega"][m], sel["a"][m], sel["r"][m],
+                                            sel["k"][m], sel["g"][m], outside[m], sel["mu"][m])
+        parts.append((rows[m], np.asarray(res["branch"]).astype(int), res))
+    return parts
+
+
+def _particle(req, rows):
+    res = particle.particle_orbit(np.deg2rad(req["theta"][rows]), req["r"][rows], req["g"][rows],
+                                  outside=req["side"][rows] == "outside", mu=req["mu"][rows])
+    return [(rows, np.full(rows.size, -1), res)]
+
+
+SOLVERS = {"wheel": _wheel, "sphere": _sphere, "particle": _particle}
+
+
+def evaluate(req: dict) -> Table:
+    """Evaluate a request batch, in input order.
+
+    Every request yields one row, except a sphere given its spin omega3,
+    which yields one row per root of eq. (55) (``branch`` 0 slow, 1 fast),
+    both with the request's ``input_row``.  Invalid requests come out with
+    status ``invalid`` and the reason; the rest are computed, grouped by body
+    (a handful of vectorised calls, no loop over orbits).
     """
-    n = len(req["theta"])
     invalid = validate_requests(req)
     ok = invalid == ""
-    out = {name: np.full(n, np.nan) for name in _PHYSICS_COLUMNS.values()}
-    status = np.full(n, Status.INVALID, dtype=np.int8)
-    reason = np.array(invalid, dtype=object)
+    body = req["body"]
+    bad = np.flatnonzero(~ok)
+    parts = [(bad, np.full(bad.size, -1), None)]
+    for name, solver in SOLVERS.items():
+        rows = np.flatnonzero(ok & (body == name))
+        if rows.size:
+            parts.extend(solver(req, rows))
 
-    wheel_rows = np.flatnonzero(ok & (req["body"] == "wheel"))
-    if wheel_rows.size:
-        sel = {key: req[key][wheel_rows] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
-        res = wheel.horizontal_orbit(
-            np.deg2rad(sel["theta"]), np.deg2rad(sel["alpha"]), sel["a"], sel["r"], sel["k"], sel["g"],
-            outside=req["side"][wheel_rows] == "outside", mu=sel["mu"])
-        _scatter(out, status, reason, wheel_rows, res)
-    other = np.flatnonzero(ok & (req["body"] != "wheel"))
-    if other.size:
-        reason[other] = "this body is not implemented yet (only wheel)"
+    source = np.concatenate([p[0] for p in parts]).astype(np.int64)
+    branch = np.concatenate([p[1] for p in parts]).astype(np.int64)
+    m = source.size
+    out = {name: np.full(m, np.nan) for name in _PHYSICS_COLUMNS.values()}
+    status = np.full(m, Status.INVALID, dtype=np.int8)
+    reason = np.empty(m, dtype=object)
+    alpha = req["alpha"][source].copy()
+    start = 0
+    for rows, _, res in parts:
+        span = slice(start, start + rows.size)
+        start += rows.size
+        if res is None:
+            reason[span] = invalid[rows]
+            continue
+        for key, column in _PHYSICS_COLUMNS.items():
+            if key in res:
+                out[column][span] = res[key]
+        status[span] = res["status"]
+        reason[span] = REASON_TEXT[res["reason"]]
 
+    order = np.lexsort((branch, source))
+    pick = source[order]
+    # a sphere's bank angle is fixed: theta - 90 deg inside, theta + 90 outside (sec. 4)
+    sphere_alpha = req["theta"] + np.where(req["side"] == "outside", 90.0, -90.0)
+    alpha = np.where(body[source] == "sphere", sphere_alpha[source], alpha)
     columns = {
-        "input_row": req["input_row"].astype(np.int64),
-        "body": req["body"].astype(object),
-        "side": req["side"].astype(object),
-        "theta_deg": req["theta"],
-        "alpha_deg": np.where(req["body"] == "wheel", req["alpha"], np.nan),
-        "a_m": req["a"],
-        "r_m": req["r"],
-        "k": req["k"],
-        "g_m_s2": req["g"],
-        "status": STATUS_LABELS[status],
-        "reason": reason,
+        "input_row": req["input_row"][pick].astype(np.int64),
+        "body": body[pick].astype(object),
+        "side": req["side"][pick].astype(object),
+        "theta_deg": req["theta"][pick],
+        "alpha_deg": np.where(body[pick] == "particle", np.nan, alpha[order]),
+        "a_m": np.where(body[pick] == "particle", np.nan, req["a"][pick]),
+        "r_m": req["r"][pick],
+        "k": req["k"][pick],
+        "g_m_s2": req["g"][pick],
+        "status": STATUS_LABELS[status[order]],
+        "reason": reason[order],
     }
-    for key in COLUMNS:
-        if key in _PHYSICS_COLUMNS.values():
-            columns[key] = out[key]
+    for key in _PHYSICS_COLUMNS.values():
+        columns[key] = out[key][order]
     # inf ("no limit") is not representable in JSON: empty/null means no --mu given
-    columns["mu_available"] = np.where(np.isinf(req["mu"]), np.nan, req["mu"])
+    columns["mu_available"] = np.where(np.isinf(req["mu"][pick]), np.nan, req["mu"][pick])
+    columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
     return Table({name: columns[name] for name in COLUMNS})
-
-
-def _scatter(out, status, reason, rows, res):
-    for key, column in _PHYSICS_COLUMNS.items():
-        if key in res:
-            out[column][rows] = res[key]
-    status[rows] = res["status"]
-    reason[rows] = REASON_TEXT[res["reason"]]
 
 
 def horizontal_orbit(setup: Setup, theta_deg, alpha_deg) -> Table:

@@ -41,6 +41,7 @@ def _column_strings(name: str, values: np.ndarray) -> list[str]:
     if n == 0:
         return []
     if name in TEXT_COLUMNS or values.dtype == object:
+        values = np.where(values == None, "", values)  # noqa: E711  (elementwise)
         unique, inverse = np.unique(values.astype(str), return_inverse=True)
         text = [_csv_field(u) for u in unique.tolist()]
         return [text[i] for i in inverse.tolist()]
@@ -138,6 +139,7 @@ ORBIT_FIELDS = (
     ("v_cm_m_s", "v_cm = |r'|Ω centre speed", "m/s", ""),
     ("spin_rad_s", "ω₁ = r'Ω/a wheel spin", "rad/s", "eq. 13"),
     ("omega3_rad_s", "ω₃ = -Ω sin α", "rad/s", "eq. 13"),
+    ("branch", "branch of eq. 55 (0 slow, 1 fast)", "", "eq. 55"),
     ("accel_m_s2", "centre acceleration", "m/s²", "eq. 32"),
     ("accel_g", "centre acceleration", "g", "eq. 36"),
     ("normal_per_mass_m_s2", "normal force / m", "m/s²", "eq. 32"),
@@ -146,6 +148,29 @@ ORBIT_FIELDS = (
 )
 
 OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
+
+#: Labels that differ by body: (body, column) -> (label, source); None hides the row.
+BODY_LABELS = {
+    ("sphere", "r_prime_m"): ("r' centre to axis, (r ∓ a) sin θ", "eq. 42"),
+    ("sphere", "accel_m_s2"): ("centre acceleration", ""),
+    ("sphere", "spin_rad_s"): ("rolling rate v_cm/a", ""),
+    ("sphere", "omega3_rad_s"): ("ω₃ spin about contact normal", "eq. 55"),
+    ("sphere", "omega_rad_s"): ("Ω orbital rate (signed)", "eq. 55"),
+    ("sphere", "accel_g"): ("centre acceleration", ""),
+    ("sphere", "normal_per_mass_m_s2"): ("normal force / m", "eq. 57"),
+    ("sphere", "friction_per_mass_m_s2"): ("friction / m (+ down)", "eq. 57"),
+    ("particle", "omega_rad_s"): ("Ω orbital rate", "Ω² = -g/(r cos θ)"),
+    ("particle", "r_prime_m"): ("r' = r sin θ", ""),
+    ("particle", "accel_m_s2"): ("centre acceleration", ""),
+    ("particle", "normal_per_mass_m_s2"): ("normal force / m", ""),
+    ("particle", "friction_per_mass_m_s2"): None,
+    ("particle", "spin_rad_s"): None,
+    ("particle", "omega3_rad_s"): None,
+    ("particle", "accel_g"): ("centre acceleration", ""),
+    ("particle", "mu_required"): None,
+    ("wheel", "branch"): None,
+    ("particle", "branch"): None,
+}
 
 
 def one_orbit_table(table: Table, row: int = 0) -> RichTable:
@@ -164,8 +189,9 @@ def one_orbit_table(table: Table, row: int = 0) -> RichTable:
     out.add_column("unit")
     out.add_column("source", style="dim")
     for col, label, unit, source in ORBIT_FIELDS:
-        if col in get:
-            out.add_row(label, format_number(get[col], 5), unit, source)
+        override = BODY_LABELS.get((get["body"], col), (label, source))
+        if col in get and override is not None:
+            out.add_row(override[0], format_number(get[col], 5), unit, override[1])
     mu = get.get("mu_available")
     out.add_row("μ available", "∞" if _isnan(mu) else format_number(mu), "", "--mu")
     out.add_row("status", status_text(get["status"]), "", "")
@@ -178,24 +204,30 @@ def _isnan(v) -> bool:
     return v is None or (isinstance(v, float) and math.isnan(v))
 
 
-#: Columns of the many-orbit terminal view (fits 80 columns): (column, header).
-SUMMARY_FIELDS = (
-    ("input_row", "#"),
-    ("theta_deg", "θ°"),
-    ("alpha_deg", "α°"),
-    ("status", "status"),
-    ("omega_rad_s", "Ω\nrad/s"),
-    ("v_cm_m_s", "v_cm\nm/s"),
-    ("spin_rad_s", "ω₁\nrad/s"),
-    ("accel_g", "accel\ng"),
-    ("mu_required", "μ\nrequired"),
-)
+#: Headers of the many-orbit terminal view, and the columns shown per body
+#: (each set fits 80 terminal columns).
+SUMMARY_HEADERS = {
+    "input_row": "#", "theta_deg": "θ°", "alpha_deg": "α°", "branch": "br", "omega3_rad_s": "ω₃\nrad/s",
+    "status": "status", "omega_rad_s": "Ω\nrad/s", "v_cm_m_s": "v_cm\nm/s", "spin_rad_s": "ω₁\nrad/s",
+    "accel_g": "accel\ng", "mu_required": "μ\nrequired",
+}
+SUMMARY_COLUMNS = {
+    "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s", "spin_rad_s",
+              "accel_g", "mu_required"),
+    "sphere": ("input_row", "theta_deg", "branch", "omega3_rad_s", "status", "omega_rad_s", "v_cm_m_s",
+               "accel_g", "mu_required"),
+    "particle": ("input_row", "theta_deg", "status", "omega_rad_s", "v_cm_m_s", "accel_g"),
+    "mixed": ("input_row", "theta_deg", "alpha_deg", "branch", "status", "omega_rad_s", "v_cm_m_s",
+              "accel_g", "mu_required"),
+}
 
 
 def many_orbits_table(table: Table, title: str | None = None) -> Group:
     """One summary row per orbit, then each distinct reason once."""
     out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
-    fields = [(c, h) for c, h in SUMMARY_FIELDS if c in table]
+    bodies = set(table["body"].tolist())
+    columns = SUMMARY_COLUMNS[bodies.pop() if len(bodies) == 1 else "mixed"]
+    fields = [(c, SUMMARY_HEADERS[c]) for c in columns]
     for col, head in fields:
         out.add_column(head, justify="left" if col in TEXT_COLUMNS else "right", no_wrap=True)
     cols = {c: table[c].tolist() for c, _ in fields}

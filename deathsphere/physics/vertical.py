@@ -46,6 +46,13 @@ def _arrays(*xs):
     return [np.asarray(x, dtype=float) for x in xs]
 
 
+def _cos(theta):
+    """cos(theta), snapped to 0 within SINGULAR: theta = 90 deg given in
+    degrees is a great circle only up to round-off (cos = 6e-17)."""
+    c = np.cos(theta)
+    return np.where(np.abs(c) <= SINGULAR, 0.0, c)
+
+
 def vertical_r_prime(theta, a, r, outside=False):
     """Radius r' of the circle of the wheel's centre, eq. (8b) with alpha = 0 / pi.
 
@@ -170,7 +177,7 @@ def contact_force(phi, theta, phidot0, a, r, k, g, outside=False):
     # g cos(phi) - r' phidot^2 = -(D - B cos(phi)), by eq. (27)
     radial = -(d - b * np.cos(phi))
     normal = np.where(outside, radial, -radial) * np.sin(theta)
-    meridional = radial * np.cos(theta)
+    meridional = radial * _cos(theta)
     friction = np.hypot(along, meridional)
     ok = fits & (normal > 0)
     mu = np.where(ok, friction / np.where(ok, normal, 1.0), np.nan)
@@ -228,7 +235,7 @@ def slip_angle(theta, phidot0, a, r, k, g, mu, outside=False):
     contact_top = np.where(outside, b > d, d > b) & fits
     finite = np.isfinite(mu)
     mu_s = np.where(finite, mu, 0.0)
-    q2 = (mu_s * np.sin(theta)) ** 2 - np.cos(theta) ** 2
+    q2 = (mu_s * np.sin(theta)) ** 2 - _cos(theta) ** 2
     q = np.sqrt(np.maximum(q2, 0.0))
     cg = c * g
     big_r = np.hypot(cg, q * b)
@@ -243,7 +250,7 @@ def slip_angle(theta, phidot0, a, r, k, g, mu, outside=False):
     leave = np.arccos(np.minimum(d / b, 1.0))
     outside_phi = np.where(outside_phi < leave, outside_phi, np.nan)
     phi = np.where(outside, outside_phi, inside_phi)
-    phi = np.where(has_r, phi, np.nan)          # k = 0 and q = 0: mu_required = mu at most
+    phi = np.where(cg > 0, phi, np.nan)         # k = 0: mu_required = |cot(theta)| throughout
     phi = np.where(q2 < 0, 0.0, phi)            # mu below |cot(theta)|: slips at the top
     phi = np.where(phi < 0, 0.0, phi)           # round-off at the top
     return np.where(finite & contact_top, phi, np.nan)
@@ -273,7 +280,7 @@ def worst_point(theta, phidot0, a, r, k, g):
     d_s = np.where(ok, d, 2.0 * b)
     phi_w = np.arccos(b / d_s)
     sin_s = np.where(ok, np.sin(theta), 1.0)
-    mu_max = np.sqrt(np.cos(theta) ** 2 + (c * g) ** 2 / ((d_s - b) * (d_s + b))) / sin_s
+    mu_max = np.sqrt(_cos(theta) ** 2 + (c * g) ** 2 / ((d_s - b) * (d_s + b))) / sin_s
     return np.where(ok, phi_w, np.nan), np.where(ok, mu_max, np.nan)
 
 
@@ -302,7 +309,9 @@ def lap_time(theta, phidot0, a, r, k, g):
 
 
 def phi_grid(n, endpoint=True):
-    """n azimuths [rad] from the top (0) round to 2 pi (included when endpoint)."""
+    """n azimuths [rad] from the top (0) round to 2 pi (included when
+    endpoint): the points of :func:`vertical_profile`, the point-by-point
+    view of eqs. (27)-(28b)."""
     return np.linspace(0.0, 2 * np.pi, int(n), endpoint=endpoint)
 
 
@@ -348,6 +357,8 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
                      generalised); NaN inside
     ``phi_slip``     where rolling first needs more than ``mu`` (NaN if never /
                      not before it leaves)
+    ``contact``      bool: the wheel keeps contact all the way round (eq. 28a;
+                     always False outside)
     ``status``, ``reason``  int8 codes: no_fit (NO_FIT_VERTICAL inside, r
                      sin(theta) <= a; NO_FIT_OUTSIDE at theta = 0, 180 deg),
                      no_contact (VERTICAL_TOP_TOO_SLOW inside, eq. 28a;
@@ -383,7 +394,7 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
         (mu_max > mu, Status.SLIPS, Reason.SLIPS),
     ])
     sin_s = np.where(fits, np.sin(theta), 1.0)
-    mu_top = np.where(fits, np.abs(np.cos(theta)) / sin_s, np.nan)
+    mu_top = np.where(fits, np.abs(_cos(theta)) / sin_s, np.nan)
     leave = np.where(outside, release_angle(theta, phidot0, a, r, k, g), np.nan)
     return {
         "r_prime": rp,
@@ -406,6 +417,7 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
         "normal_bottom": np.where(outside, np.nan, bottom["normal"]),
         "phi_leave": leave,
         "phi_slip": slip_angle(theta, phidot0, a, r, k, g, mu, outside),
+        "contact": contact,
         "status": status,
         "reason": reason,
     }
@@ -420,7 +432,7 @@ def vertical_profile(phi, theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
 
     ``phi`` [rad], ``omega`` rate phidot [rad/s], ``v_cm`` speed r' phidot
     [m/s], ``accel`` |centre acceleration| = hypot(r' phidot^2, r' phiddot)
-    [m/s^2] (phiddot from eq. 26), ``along``, ``meridional``, ``friction``,
+    [m/s^2] (phiddot from eq. 26), ``along``, ``radial``, ``meridional``, ``friction``,
     ``normal`` (per unit mass, see :func:`contact_force`), ``mu_required``
     (NaN where normal <= 0), ``status``/``reason`` per point: no_fit,
     no_contact where the normal force is not positive (outside: from
@@ -450,6 +462,7 @@ def vertical_profile(phi, theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
         "v_cm": np.where(nan, np.nan, rp_safe * w),
         "accel": np.where(nan, np.nan, accel),
         "along": f["along"],
+        "radial": f["radial"],
         "meridional": f["meridional"],
         "friction": f["friction"],
         "normal": f["normal"],
