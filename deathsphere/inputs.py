@@ -29,16 +29,24 @@ class InputError(ValueError):
     """The input as a whole cannot be read (empty, unknown column, ...)."""
 
 
-def allowed_columns() -> str:
-    return ", ".join(list(REQUEST_FIELDS) + list(ALIASES))
+def allowed_columns(fields=REQUEST_FIELDS) -> str:
+    return ", ".join(list(fields) + [a for a, f in ALIASES.items() if f in fields])
 
 
 def read_requests(stream: IO[str], defaults: dict, source: str = "input") -> dict:
-    """Parse a request CSV into a request batch (see :func:`make_requests`).
+    """Parse a request CSV into an orbit request batch (see :func:`make_requests`)."""
+    n, values, invalid = read_table(stream, defaults, source)
+    return make_requests(n, invalid=invalid, **values)
+
+
+def read_table(stream: IO[str], defaults: dict, source: str = "input", fields=REQUEST_FIELDS):
+    """Parse a CSV whose header names some of ``fields`` (name -> (default,
+    unit, words)).  Returns ``(n, values, invalid)``: the number of records,
+    one array per field (columns, else ``defaults``), and the reason each
+    record is unreadable ('' if it is fine).
 
     ``defaults`` fill fields that have no column or an empty cell.  Blank
-    lines are skipped; every other record is one request, numbered from 1 in
-    ``input_row``.
+    lines are skipped; every other record is one request, numbered from 1.
     """
     reader = csv.reader(stream)
     header = None
@@ -48,11 +56,12 @@ def read_requests(stream: IO[str], defaults: dict, source: str = "input") -> dic
     else:
         header = None
     if not header:
-        raise InputError(f"{source} is empty: expected a header line naming the columns ({allowed_columns()})")
+        raise InputError(f"{source} is empty: expected a header line naming the columns "
+                         f"({allowed_columns(fields)})")
     names = [ALIASES.get(h.strip().lower(), h.strip().lower()) for h in header]
-    unknown = [h for h, n in zip(header, names) if n not in REQUEST_FIELDS]
+    unknown = [h for h, n in zip(header, names) if n not in fields]
     if unknown:
-        raise InputError(f"{source}: unknown column {unknown[0]!r}; allowed: {allowed_columns()}")
+        raise InputError(f"{source}: unknown column {unknown[0]!r}; allowed: {allowed_columns(fields)}")
     dupes = sorted({n for n in names if names.count(n) > 1})
     if dupes:
         raise InputError(f"{source}: column {dupes[0]!r} appears more than once")
@@ -68,10 +77,10 @@ def read_requests(stream: IO[str], defaults: dict, source: str = "input") -> dic
         for name, cell in zip(names, row):
             cell = cell.strip()
             if name in TEXT_FIELDS:
-                values[name].append(cell.lower() if cell else defaults.get(name, REQUEST_FIELDS[name][0]))
+                values[name].append(cell.lower() if cell else defaults.get(name, fields[name][0]))
                 continue
             if not cell:
-                default = defaults.get(name, REQUEST_FIELDS[name][0])
+                default = defaults.get(name, fields[name][0])
                 values[name].append(math.nan if default is None else default)
                 continue
             try:
@@ -83,7 +92,7 @@ def read_requests(stream: IO[str], defaults: dict, source: str = "input") -> dic
                     invalid[i] = f"{name}: {cell!r} is not a finite number"
                 number = math.nan
             values[name].append(number)
-    fields = {k: v for k, v in defaults.items() if v is not None}
-    fields.update({name: np.array(v, dtype=object if name in TEXT_FIELDS else float)
-                   for name, v in values.items()})
-    return make_requests(n, invalid=invalid, **fields)
+    out = {k: v for k, v in defaults.items() if v is not None}
+    out.update({name: np.array(v, dtype=object if name in TEXT_FIELDS else float)
+                for name, v in values.items()})
+    return n, out, invalid

@@ -283,3 +283,52 @@ def table1_view(table: Table, printed) -> Group:
     lines = ["Printed: μ, v_cm (m/s), \"No. of g's\"; computed with one more digit; "
              "✓ = reproduced at the printed precision.", *notes, "Evidence: docs/errata.md"]
     return Group(out, *lines)
+
+
+#: (column, label, unit, source) for the vertical-orbit view.
+VERTICAL_FIELDS = (
+    ("r_prime_m", "r' radius of the centre's circle", "m", "eq. 8b"),
+    ("v_cm_m_s", "speed at the top", "m/s", ""),
+    ("v_top_min_m_s", "least top speed for contact", "m/s", "eq. 28a"),
+    ("omega_rad_s", "rate at the top", "rad/s", ""),
+    ("v_bottom_m_s", "speed at the bottom", "m/s", "eq. 27"),
+    ("period_s", "lap time", "s", "eq. 27"),
+    ("accel_g", "largest acceleration (bottom)", "g", ""),
+    ("normal_top_per_mass_m_s2", "normal force / m at the top", "m/s²", "eq. 28"),
+    ("normal_bottom_per_mass_m_s2", "normal force / m at the bottom", "m/s²", "eq. 28"),
+    ("mu_top", "μ at top and bottom, |cot θ|", "", "eq. 28b"),
+    ("phi_worst_deg", "worst point φ (μ peaks)", "deg", ""),
+    ("mu_required", "μ required (at the worst point)", "", "eq. 28b"),
+    ("phi_slip_deg", "first slip at φ (with --mu)", "deg", ""),
+    ("phi_leave_deg", "leaves the surface at φ", "deg", "eq. 82"),
+)
+
+
+def vertical_view(table: Table):
+    """One vertical orbit: a quantity per line; several: one line each."""
+    if len(table) == 1:
+        get = {n: table[n][0].item() if hasattr(table[n][0], "item") else table[n][0] for n in table.names}
+        title = (f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n"
+                 f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
+                 f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
+        out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
+        for head in ("quantity", "value", "unit", "source"):
+            out.add_column(head, justify="right" if head == "value" else "left")
+        for col, label, unit, source in VERTICAL_FIELDS:
+            if not _isnan(get[col]):
+                out.add_row(label, format_number(get[col], 5), unit, source)
+        out.add_row("status", status_text(get["status"]), "", "")
+        out.caption = f"{get['status']}: {get['reason'] or 'keeps contact all round with enough friction'}"
+        out.caption_justify = "left"
+        return out
+    out = RichTable(title="Vertical orbits (eqs. 27-28b)", box=box.SIMPLE_HEAVY, title_justify="left")
+    cols = (("input_row", "#"), ("theta_deg", "θ°"), ("v_cm_m_s", "v top\nm/s"), ("status", "status"),
+            ("v_top_min_m_s", "v min\nm/s"), ("period_s", "lap\ns"), ("phi_worst_deg", "worst\nφ°"),
+            ("mu_required", "μ\nrequired"), ("phi_leave_deg", "leaves\nφ°"))
+    for col, head in cols:
+        out.add_column(head, justify="left" if col == "status" else "right", no_wrap=True)
+    for i in range(len(table)):
+        out.add_row(*[status_text(table[c][i]) if c == "status" else format_number(table[c][i].item())
+                      for c, _ in cols])
+    reasons = dict.fromkeys(zip(table["status"].tolist(), table["reason"].tolist()))
+    return Group(out, *[f"{status_text(st)}: {why}" for st, why in reasons if why])

@@ -1,0 +1,148 @@
+"""Vertical orbits of a wheel as result tables (sec. 2.2.1; sec. 3, eq. 82).
+
+A request is a vertical circle (cone angle ``theta`` about a horizontal
+axis, 90 deg = great circle) and the wheel's speed at the top (``v_top`` of
+its centre, or the rate ``phidot_top``).  :func:`evaluate_vertical` gives one
+summary row per request; :func:`vertical_points` the orbit point by point.
+
+The summary shares the orbit contract's columns where the meaning carries
+over (rates and speeds are taken at the top, accelerations at the bottom where
+they peak, forces and mu at the worst point, where mu peaks), then adds its
+own.  Physics: :mod:`deathsphere.physics.vertical`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from deathsphere.model import COLUMNS as ORBIT_COLUMNS
+from deathsphere.model import REQUEST_FIELDS, Table, make_requests, validate_requests
+from deathsphere.physics import vertical
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+
+#: Request fields of a vertical orbit (CSV header names for --input).
+VERTICAL_FIELDS = {
+    "side": REQUEST_FIELDS["side"],
+    "theta": (None, "deg", "cone angle of the orbit about the horizontal axis, 0..180 (90: great circle)"),
+    "v_top": (None, "m/s", "speed of the wheel's centre at the top"),
+    "phidot_top": (None, "rad/s", "orbital rate at the top"),
+    **{name: REQUEST_FIELDS[name] for name in ("a", "r", "k", "g", "mu")},
+}
+
+#: Summary columns: the orbit contract's first 22 (without omega3/branch),
+#: then the vertical-orbit columns.
+COLUMNS = ORBIT_COLUMNS[: ORBIT_COLUMNS.index("mu_available") + 1] + (
+    "v_top_min_m_s", "omega_top_min_rad_s", "v_bottom_m_s", "phi_worst_deg", "mu_top",
+    "normal_top_per_mass_m_s2", "normal_bottom_per_mass_m_s2", "phi_leave_deg", "phi_slip_deg",
+)
+
+#: Point-by-point columns (``--points N``).
+POINT_COLUMNS = (
+    "input_row", "theta_deg", "phi_deg", "status", "reason", "omega_rad_s", "v_cm_m_s", "accel_m_s2",
+    "normal_per_mass_m_s2", "friction_along_per_mass_m_s2", "friction_meridional_per_mass_m_s2",
+    "mu_required",
+)
+
+_SUMMARY_KEYS = {
+    "r_prime": "r_prime_m", "omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s",
+    "spin": "spin_rad_s", "accel": "accel_m_s2", "accel_g": "accel_g", "normal": "normal_per_mass_m_s2",
+    "friction": "friction_per_mass_m_s2", "mu_required": "mu_required", "v_min": "v_top_min_m_s",
+    "omega_min": "omega_top_min_rad_s", "v_bottom": "v_bottom_m_s", "mu_top": "mu_top",
+    "normal_top": "normal_top_per_mass_m_s2", "normal_bottom": "normal_bottom_per_mass_m_s2",
+}
+_ANGLE_KEYS = {"phi_worst": "phi_worst_deg", "phi_leave": "phi_leave_deg", "phi_slip": "phi_slip_deg"}
+
+
+def vertical_requests(n: int, invalid=None, input_row=None, v_top=None, phidot_top=None, **fields) -> dict:
+    """A vertical-orbit request batch: an orbit request of a wheel in the
+    orbit plane (alpha = 0 inside, 180 deg outside) plus the top speed/rate."""
+    side = np.broadcast_to(np.asarray(fields.pop("side", "inside"), dtype=object), (n,))
+    req = make_requests(n, invalid=invalid, input_row=input_row, body="wheel", side=side,
+                        alpha=np.where(side == "outside", 180.0, 0.0), **fields)
+    for name, value in (("v_top", v_top), ("phidot_top", phidot_top)):
+        req[name] = np.broadcast_to(np.asarray(math.nan if value is None else value, dtype=float), (n,)).copy()
+    return req
+
+
+def _validate(req) -> np.ndarray:
+    reason = validate_requests(req)
+    v, w = req["v_top"], req["phidot_top"]
+    both_or_none = np.isnan(v) == np.isnan(w)
+    for i in np.flatnonzero((reason == "") & both_or_none):
+        reason[i] = "give exactly one of v_top (m/s) and phidot_top (rad/s)"
+    for i in np.flatnonzero((reason == "") & ~np.isnan(v) & ~(v >= 0)):
+        reason[i] = f"v_top must be >= 0 m/s (got {v[i]:g})"
+    return reason
+
+
+def _top_rate(req, rows):
+    theta = np.deg2rad(req["theta"][rows])
+    outside = req["side"][rows] == "outside"
+    from_speed = vertical.top_rate_from_speed(req["v_top"][rows], theta, req["a"][rows], req["r"][rows], outside)
+    with np.errstate(invalid="ignore"):
+        return theta, outside, np.where(np.isnan(req["v_top"][rows]), np.abs(req["phidot_top"][rows]), from_speed)
+
+
+def evaluate_vertical(req: dict) -> Table:
+    """One summary row per request, in input order (invalid rows kept, with reasons)."""
+    n = len(req["theta"])
+    reason_words = _validate(req)
+    rows = np.flatnonzero(reason_words == "")
+    out = {col: np.full(n, np.nan) for col in list(_SUMMARY_KEYS.values()) + list(_ANGLE_KEYS.values())}
+    status = np.full(n, Status.INVALID, dtype=np.int8)
+    reason = reason_words.astype(object)
+    if rows.size:
+        theta, outside, rate = _top_rate(req, rows)
+        res = vertical.vertical_orbit(theta, rate, req["a"][rows], req["r"][rows], req["k"][rows],
+                                      req["g"][rows], outside, req["mu"][rows])
+        for key, col in _SUMMARY_KEYS.items():
+            out[col][rows] = res[key]
+        for key, col in _ANGLE_KEYS.items():
+            out[col][rows] = np.rad2deg(res[key])
+        status[rows] = res["status"]
+        reason[rows] = REASON_TEXT[res["reason"]]
+    columns = {
+        "input_row": req["input_row"].astype(np.int64), "body": req["body"], "side": req["side"],
+        "theta_deg": req["theta"], "alpha_deg": req["alpha"], "a_m": req["a"], "r_m": req["r"],
+        "k": req["k"], "g_m_s2": req["g"], "status": STATUS_LABELS[status], "reason": reason,
+        "mu_available": np.where(np.isinf(req["mu"]), np.nan, req["mu"]),
+        **out,
+    }
+    return Table({name: columns[name] for name in COLUMNS})
+
+
+def vertical_points(req: dict, points: int) -> Table:
+    """The orbit point by point: ``points`` azimuths phi from the top (0 deg)
+    round to 360 deg for every valid request (rows grouped by request, in
+    input order); an invalid request gives one row with its reason."""
+    n = len(req["theta"])
+    reason_words = _validate(req)
+    rows = np.flatnonzero(reason_words == "")
+    phi = vertical.phi_grid(points)
+    source = np.concatenate([np.repeat(rows, points), np.flatnonzero(reason_words != "")])
+    m = rows.size * points
+    cols = {c: np.full(source.size, np.nan) for c in POINT_COLUMNS[5:]}
+    status = np.full(source.size, Status.INVALID, dtype=np.int8)
+    reason = np.empty(source.size, dtype=object)
+    reason[m:] = reason_words[source[m:]]
+    phi_col = np.full(source.size, np.nan)
+    if rows.size:
+        theta, outside, rate = _top_rate(req, rows)
+        res = vertical.vertical_profile(phi[None, :], theta[:, None], rate[:, None], req["a"][rows, None],
+                                        req["r"][rows, None], req["k"][rows, None], req["g"][rows, None],
+                                        outside[:, None], req["mu"][rows, None])
+        for key, col in (("omega", "omega_rad_s"), ("v_cm", "v_cm_m_s"), ("accel", "accel_m_s2"),
+                         ("normal", "normal_per_mass_m_s2"), ("along", "friction_along_per_mass_m_s2"),
+                         ("meridional", "friction_meridional_per_mass_m_s2"), ("mu_required", "mu_required")):
+            cols[col][:m] = np.asarray(res[key]).reshape(-1)
+        status[:m] = np.asarray(res["status"]).reshape(-1)
+        reason[:m] = REASON_TEXT[np.asarray(res["reason"]).reshape(-1)]
+        phi_col[:m] = np.tile(np.rad2deg(phi), rows.size)
+    order = np.argsort(source, kind="stable")
+    columns = {
+        "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],
+        "phi_deg": phi_col, "status": STATUS_LABELS[status], "reason": reason, **cols,
+    }
+    return Table({name: columns[name][order] for name in POINT_COLUMNS})
