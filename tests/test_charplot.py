@@ -1,0 +1,94 @@
+"""The terminal map of the allowed (theta, alpha) region (deathsphere.charplot):
+layout, labels, and that the shading and the curves are where the physics
+(deathsphere.physics.wheel, point by point) puts them."""
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from deathsphere.charplot import MARKS, SHADE, char_map, to_rich
+from deathsphere.physics import wheel
+from deathsphere.physics.geometry import r_prime
+from deathsphere.physics.status import Status
+
+A, R, K, G = 0.3, 3.0, 0.5, 9.80665
+BOUNDARY_CHARS = "".join(ch for ch, _ in MARKS.values())
+
+
+def _feasible(cmap, outside=False, mu=np.inf, max_g=np.inf):
+    th, al = np.meshgrid(np.deg2rad(cmap.theta_deg), np.deg2rad(cmap.alpha_deg))
+    orb = wheel.horizontal_orbit(th, al, A, R, K, G, outside, mu)
+    return (orb["status"] == Status.OK) & (orb["accel_g"] <= max_g)
+
+
+@pytest.mark.parametrize("kwargs", [{}, {"mu": 1.0, "max_g": 5.0}, {"outside": True}],
+                         ids=["paper", "limits", "outside"])
+def test_layout_fits_80_columns_and_grid_is_consistent(kwargs):
+    cmap = char_map(A, R, K, **kwargs)
+    assert all(len(line) <= 80 for line in cmap.lines)
+    assert len(cmap.cells) == cmap.alpha_deg.size and len(cmap.lines) <= 40
+    assert all(len(row) == cmap.theta_deg.size == 72 for row in cmap.cells)
+    # the grid printed is the grid described
+    for i, row in enumerate(cmap.cells):
+        assert cmap.lines[cmap.row0 + i][cmap.col0:] == row
+    assert cmap.theta_deg[0] > 0 and cmap.theta_deg[-1] < 180
+    text = str(cmap)
+    assert "theta [deg]" in text and "alpha [deg]" in text
+    assert "0" in cmap.lines[cmap.row0 + len(cmap.cells) + 1] and "180" in text
+
+
+def test_labels_name_the_equations():
+    text = str(char_map(A, R, K))
+    for label in ("eq. (0)", "eq. (29)", "eq. (33)", "allowed", "a/r = 0.1", "k = 0.5"):
+        assert label in text
+    limited = str(char_map(A, R, K, mu=1.0, max_g=5.0))
+    assert "mu_required = mu" in limited and "g-load = max_g" in limited and "mu = 1" in limited
+    outside = str(char_map(A, R, K, outside=True))
+    assert "eq. (81)" in outside and "eq. (83)" in outside
+
+
+@pytest.mark.parametrize("kwargs", [{}, {"mu": 1.0, "max_g": 5.0}, {"outside": True}],
+                         ids=["paper", "limits", "outside"])
+def test_shaded_cells_are_exactly_the_feasible_ones(kwargs):
+    cmap = char_map(A, R, K, **kwargs)
+    grid = np.array([list(row) for row in cmap.cells])
+    ok = _feasible(cmap, **kwargs)
+    assert ok.sum() > 100
+    assert np.all(ok[grid == SHADE])                       # shaded -> feasible
+    assert np.all(np.isin(grid[ok], list(SHADE + BOUNDARY_CHARS)))   # feasible -> shaded or on a curve
+    margin = 0.6 if kwargs.get("outside") else 0.8         # the curves cover only a margin
+    assert np.sum(grid == SHADE) > margin * ok.sum()
+
+
+def test_curves_are_drawn_where_they_are():
+    cmap = char_map(A, R, K)
+    grid = np.array([list(row) for row in cmap.cells])
+    dal = cmap.alpha_deg[0] - cmap.alpha_deg[1]
+    row_of = lambda alpha_deg: int(np.argmin(np.abs(cmap.alpha_deg - alpha_deg)))  # noqa: E731
+    # eq. (29): alpha = 0 and 90 deg are full rows of '='
+    eq29 = MARKS["eq29"][0]
+    assert np.mean(grid[row_of(0.0)] == eq29) > 0.8 and np.mean(grid[row_of(90.0)] == eq29) > 0.4
+    for j in range(8, 34, 5):                              # theta = 20 .. 85 deg
+        th = np.deg2rad(cmap.theta_deg[j])
+
+        def normal(al):
+            om2 = wheel.omega_squared(th, al, A, R, K, G)
+            return r_prime(th, al, A, R) * om2 * np.sin(th) - G * np.cos(th)
+
+        alpha_c = np.rad2deg(brentq(normal, 1e-3, np.pi / 2 - 1e-3, xtol=1e-12))
+        i = row_of(alpha_c)
+        assert MARKS["eq33"][0] in grid[max(i - 1, 0):i + 2, j], (cmap.theta_deg[j], alpha_c)
+        assert abs(cmap.alpha_deg[i] - alpha_c) <= dal / 2 + 1e-9
+    # eq. (0): alpha = theta - asin(a/r) crosses the row of 30 deg near theta = 35.7 deg
+    j = int(np.argmin(np.abs(cmap.theta_deg - (30.0 + np.rad2deg(np.arcsin(A / R))))))
+    assert MARKS["eq0"][0] in grid[row_of(30.0), j - 1:j + 2]
+
+
+def test_narrow_width_and_rich_rendering():
+    cmap = char_map(A, R, K, width=60, rows=12)
+    assert all(len(line) <= 60 for line in cmap.lines) and len(cmap.cells) == 12
+    rich_text = to_rich(cmap)
+    assert rich_text.plain.rstrip("\n") == str(cmap)
+    assert any(span.style for span in rich_text.spans)
+    with pytest.raises(ValueError, match="width"):
+        char_map(A, R, K, width=20)
