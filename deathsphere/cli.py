@@ -107,13 +107,16 @@ def parse_rates(texts, name: str, max_values: int | None = None):
         raise click.BadParameter(str(exc).split(": ", 1)[-1], param_hint=f"'--{name}'") from None
 
 
-def check_body_inputs(body: str, alpha, omega3, omega) -> None:
-    """Which of --alpha, --omega3, --omega each body takes (usage error if wrong)."""
+def check_body_inputs(body: str, alpha, omega3, omega, speed) -> None:
+    """Which of --alpha, --speed, --omega3, --omega each body takes (usage error if wrong)."""
+    if body != "wheel" and speed:
+        raise click.UsageError("--speed is for a wheel (eq. 29 is solved for alpha)")
     if body == "wheel":
-        if omega3 or omega:
-            raise click.UsageError("--omega3/--omega are for --body sphere; a wheel takes --alpha")
-        if not alpha:
-            raise click.UsageError("give --alpha DEG for a wheel (or --input FILE)")
+        if omega3:
+            raise click.UsageError("--omega3 is for --body sphere; a wheel takes --alpha, --speed or --omega")
+        if (bool(alpha) + bool(speed) + bool(omega)) != 1:
+            raise click.UsageError("give exactly one of --alpha DEG, --speed M_S and --omega RAD_S for a wheel "
+                                   "(or --input FILE)")
     elif body == "sphere":
         if alpha:
             raise click.UsageError("a sphere's tilt is fixed (theta - 90 deg); give --omega3 or --omega, not --alpha")
@@ -211,13 +214,17 @@ def cli():
               help="Sphere: spin about the contact normal (axis 3, centre to contact point); "
                    "eq. 55 gives up to two orbit rates, one row each (branch 0 slow, 1 fast).")
 @click.option("--omega", multiple=True, metavar="RAD_S",
-              help="Sphere: the orbital rate Omega (signed, about the upward vertical); omega3 follows from eq. 55.")
+              help="The orbital rate Omega. Wheel: eq. 29 is solved for every tilt alpha giving it (one row "
+                   "each). Sphere: signed about the upward vertical; omega3 follows from eq. 55.")
+@click.option("--speed", multiple=True, metavar="M_S",
+              help="Wheel: the centre speed v_cm; eq. 29 is solved for every tilt alpha giving it (one row each, "
+                   "branch = root number in increasing alpha).")
 @click.option("--input", "input_file", type=click.File("r"), default=None, metavar="FILE|-",
               help="CSV of requests, one orbit per row; its header names the options "
                    "(theta, alpha, a, r, k, g, mu, body, side, omega3, omega). '-' reads stdin.")
 @body_options
 @output_options()
-def orbit(theta, alpha, omega3, omega, input_file, body, side, a, r, k, g, mu, fmt):
+def orbit(theta, alpha, omega3, omega, speed, input_file, body, side, a, r, k, g, mu, fmt):
     """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, g-load.
 
     All combinations of the --theta and --alpha values are evaluated.  Each
@@ -235,6 +242,7 @@ def orbit(theta, alpha, omega3, omega, input_file, body, side, a, r, k, g, mu, f
     Examples:
       deathsphere orbit --theta 60 --alpha 10
       deathsphere orbit --theta 60 --alpha 5:40:5 --mu 1 --format csv
+      deathsphere orbit --theta 60 --speed 7     every tilt alpha at 7 m/s (eq. 29 solved)
       deathsphere orbit --body sphere --theta 60 --omega3 40
       deathsphere orbit --body particle --theta 120:170:10
       printf 'theta,alpha\\n60,10\\n90,25\\n' | deathsphere orbit --input -
@@ -243,14 +251,15 @@ def orbit(theta, alpha, omega3, omega, input_file, body, side, a, r, k, g, mu, f
     fmt = choose_format(fmt)
     defaults = dict(body=setup.body, side=setup.side, a=setup.a, r=setup.r, k=k, g=setup.g, mu=setup.mu)
     if input_file is not None:
-        for name, values in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega)):
+        for name, values in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega),
+                             ("speed", speed)):
             if len(values) > 1 or any(":" in v for v in values):
                 raise click.UsageError(f"with --input, --{name} may give one default value, not a list or range")
         if theta:
             defaults["theta"] = float(parse_angles(theta, "theta")[0])
         if alpha:
             defaults["alpha"] = float(parse_angles(alpha, "alpha")[0])
-        for name, values in (("omega3", omega3), ("omega", omega)):
+        for name, values in (("omega3", omega3), ("omega", omega), ("speed", speed)):
             if values:
                 defaults[name] = float(parse_rates(values, name)[0])
         try:
@@ -260,8 +269,9 @@ def orbit(theta, alpha, omega3, omega, input_file, body, side, a, r, k, g, mu, f
     else:
         if not theta:
             raise click.UsageError("give --theta DEG (or --input FILE)")
-        check_body_inputs(setup.body, alpha, omega3, omega)
+        check_body_inputs(setup.body, alpha, omega3, omega, speed)
         axes = {
+            "speed": parse_rates(speed, "speed", ORBIT_MAX_ROWS) if speed else np.array([math.nan]),
             "theta": parse_angles(theta, "theta", ORBIT_MAX_ROWS),
             "alpha": parse_angles(alpha, "alpha", ORBIT_MAX_ROWS) if alpha else np.array([math.nan]),
             "omega3": parse_rates(omega3, "omega3", ORBIT_MAX_ROWS) if omega3 else np.array([math.nan]),

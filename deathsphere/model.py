@@ -21,8 +21,8 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
-from deathsphere.physics import particle, sphere, wheel
-from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+from deathsphere.physics import particle, region, sphere, wheel
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 
 #: The contract's columns, in order (design.md).  Add, never rename or reorder.
 COLUMNS = (
@@ -65,7 +65,8 @@ REQUEST_FIELDS = {
     "g": (STANDARD_GRAVITY, "m/s^2", "gravity, > 0"),
     "mu": (math.inf, "", "friction coefficient available, >= 0 (inf: no limit)"),
     "omega3": (None, "rad/s", "sphere: spin about the contact normal (eq. 55 gives Omega)"),
-    "omega": (None, "rad/s", "sphere: orbital rate Omega (eq. 55 gives omega3)"),
+    "omega": (None, "rad/s", "orbital rate Omega: sphere -> omega3 (eq. 55); wheel -> every alpha (eq. 29)"),
+    "speed": (None, "m/s", "wheel: centre speed v_cm; eq. 29 is solved for every alpha"),
 }
 
 
@@ -248,16 +249,24 @@ def validate_requests(req: dict) -> np.ndarray:
         checks.append((~(np.isfinite(theta) & (theta >= 0) & (theta <= 180)),
                        lambda i: angle_problem("theta", theta[i]) if not np.isnan(theta[i])
                        else "theta is missing (give --theta or a theta column)"))
-        needs_alpha = body == "wheel"
-        checks.append((needs_alpha & ~(np.isfinite(alpha) & (alpha >= -180) & (alpha <= 180)),
-                       lambda i: angle_problem("alpha", alpha[i]) if not np.isnan(alpha[i])
-                       else "alpha is missing (give --alpha or an alpha column)"))
-    omega3, omega = req["omega3"], req["omega"]
-    is_sphere = body == "sphere"
+    omega3, omega, speed = req["omega3"], req["omega"], req["speed"]
+    is_wheel, is_sphere = body == "wheel", body == "sphere"
+    targets = (~np.isnan(alpha)).astype(int) + (~np.isnan(omega)) + (~np.isnan(speed))
+    checks.append((is_wheel & (targets != 1),
+                   lambda i: "a wheel needs exactly one of alpha, speed (m/s) and omega (rad/s)"))
+    with np.errstate(invalid="ignore"):
+        checks.append((is_wheel & ~np.isnan(alpha) & ~((alpha >= -180) & (alpha <= 180)),
+                       lambda i: angle_problem("alpha", alpha[i])))
+        for name, v in (("speed", speed), ("omega", omega)):
+            checks.append((is_wheel & ~np.isnan(v) & ~(np.isfinite(v) & (v > 0)),
+                           lambda i, n=name, v=v: f"{n} must be a finite number > 0 (got {v[i]:g})"))
+    checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
     checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
-    checks.append((~is_sphere & ~(np.isnan(omega3) & np.isnan(omega)),
-                   lambda i: "omega3 and omega are inputs for a sphere only (--body sphere)"))
+    checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
+    checks.append((is_sphere & ~np.isnan(alpha), lambda i: "a sphere's tilt is fixed (theta - 90 deg): no alpha"))
+    checks.append(((body == "particle") & ~(np.isnan(alpha) & np.isnan(omega)),
+                   lambda i: "a particle takes only theta (no alpha or omega)"))
     for failed, words in checks:
         hit = pending & failed
         for i in np.flatnonzero(hit):  # only the (few) bad rows get words
@@ -267,11 +276,47 @@ def validate_requests(req: dict) -> np.ndarray:
 
 
 def _wheel(req, rows):
-    sel = {key: req[key][rows] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
-    res = wheel.horizontal_orbit(
-        np.deg2rad(sel["theta"]), np.deg2rad(sel["alpha"]), sel["a"], sel["r"], sel["k"], sel["g"],
-        outside=req["side"][rows] == "outside", mu=sel["mu"])
-    return [(rows, np.full(rows.size, -1), res)]
+    tilted = rows[~np.isnan(req["alpha"][rows])]
+    parts = []
+    if tilted.size:
+        sel = {key: req[key][tilted] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
+        res = wheel.horizontal_orbit(
+            np.deg2rad(sel["theta"]), np.deg2rad(sel["alpha"]), sel["a"], sel["r"], sel["k"], sel["g"],
+            outside=req["side"][tilted] == "outside", mu=sel["mu"])
+        parts.append((tilted, np.full(tilted.size, -1), res))
+    solve = rows[np.isnan(req["alpha"][rows])]
+    if solve.size:
+        parts.extend(_wheel_solved(req, solve))
+    return parts
+
+
+def _wheel_solved(req, rows):
+    """Speed or rate given: every alpha of eq. (29), one row per root (branch
+    = root index, in increasing alpha); a request with no root gives one
+    no_orbit row.  One vectorised call per distinct setup and target kind."""
+    outside = (req["side"][rows] == "outside").astype(float)
+    by_speed = (~np.isnan(req["speed"][rows])).astype(float)
+    setups = np.column_stack([req[key][rows] for key in ("a", "r", "k", "g", "mu")] + [outside, by_speed])
+    unique, inverse = np.unique(setups, axis=0, return_inverse=True)
+    parts = []
+    for u, (a, r, k, g, mu, out, speed_given) in enumerate(unique):
+        sub = rows[inverse.reshape(-1) == u]
+        target = "speed" if speed_given else "omega"
+        res = region.solve_alpha(np.deg2rad(req["theta"][sub]), a, r, k, g, outside=bool(out), mu=mu,
+                                 **{target: req[target][sub]})
+        count = np.asarray(res["count"]).reshape(-1)
+        roots = res["alpha"].reshape(sub.size, -1)
+        row_i, root_j = np.nonzero(np.arange(roots.shape[1])[None, :] < count[:, None])
+        flat = {key: np.asarray(v).reshape(sub.size, -1)[row_i, root_j] for key, v in res.items()
+                if key not in ("count",) and np.size(v) == roots.size}
+        flat["alpha_deg"] = np.rad2deg(flat.pop("alpha"))
+        parts.append((sub[row_i], root_j, flat))
+        none = sub[count == 0]
+        if none.size:
+            parts.append((none, np.full(none.size, -1), {
+                "status": np.full(none.size, Status.NO_ORBIT, dtype=np.int8),
+                "reason": np.full(none.size, Reason.NO_ALPHA_FOR_RATE, dtype=np.int8)}))
+    return parts
 
 
 def _sphere(req, rows):
@@ -307,9 +352,11 @@ SOLVERS = {"wheel": _wheel, "sphere": _sphere, "particle": _particle}
 def evaluate(req: dict) -> Table:
     """Evaluate a request batch, in input order.
 
-    Every request yields one row, except a sphere given its spin omega3,
-    which yields one row per root of eq. (55) (``branch`` 0 slow, 1 fast),
-    both with the request's ``input_row``.  Invalid requests come out with
+    Every request yields one row, except where one request has several
+    answers, each a row with the request's ``input_row`` and its ``branch``:
+    a sphere given its spin omega3 (the roots of eq. (55): 0 slow, 1 fast)
+    and a wheel given its speed or rate (every alpha of eq. (29), in
+    increasing alpha; none: one ``no_orbit`` row).  Invalid requests come out with
     status ``invalid`` and the reason; the rest are computed, grouped by body
     (a handful of vectorised calls, no loop over orbits).
     """
@@ -342,6 +389,8 @@ def evaluate(req: dict) -> Table:
                 out[column][span] = res[key]
         status[span] = res["status"]
         reason[span] = REASON_TEXT[res["reason"]]
+        if "alpha_deg" in res:  # a wheel's tilt solved from its speed or rate
+            alpha[span] = res["alpha_deg"]
 
     order = np.lexsort((branch, source))
     pick = source[order]

@@ -22,8 +22,8 @@ boundary                   function                         degree in alpha
 fit, eq. (0) / (81)        sin(theta - alpha) - a/r  /  sin(alpha - theta)   1
 Omega^2 = 0 or pole (29)   C,  S,  D                        1 each
 contact, eq. (33) / (83)   P_N = r' C s - c S D             2
-friction, eq. (35)         P_F^2 - mu^2 P_N^2,  P_F = r' C c + s S D         4
-g-load, eq. (36)           (r' C)^2 - G^2 (S D)^2           4
+friction, eq. (35)         P_F -+ mu P_N,  P_F = r' C c + s S D             2 each
+g-load, eq. (36)           r' C -+ G S D                    2 each
 speed v_cm, eq. (29)       g r'^2 C - v^2 S D               3
 =========================  ===============================  ==========
 
@@ -57,12 +57,13 @@ __all__ = [
     "fit_interval",
     "alpha_window",
     "boundary_alphas",
-    "boundary_values",
+    "boundary_thetas",
+    "boundary_factors",
+    "project_to_boundary",
     "allowed_alpha",
     "feasible",
     "highest_orbit",
     "solve_alpha",
-    "boundary_curves",
 ]
 
 TWO_PI = 2.0 * np.pi
@@ -150,11 +151,39 @@ class _Trig2:
         q = np.arange(-self.deg[1], self.deg[1] + 1)
         return _Trig2(self.h * (1j * q)[None, :])
 
+    def d_theta(self):
+        """Partial derivative with respect to theta."""
+        p = np.arange(-self.deg[0], self.deg[0] + 1)
+        return _Trig2(self.h * (1j * p)[:, None])
+
     def in_alpha(self, theta):
         """Coefficients (n, 2Q+1) of the polynomial in alpha at each theta."""
         theta = np.asarray(theta, dtype=float).reshape(-1)
-        p = np.arange(-self.deg[0], self.deg[0] + 1)
-        return np.exp(1j * np.outer(theta, p)) @ self.h
+        return _unit_powers(theta, self.deg[0]) @ self.h
+
+    def in_theta(self, alpha):
+        """Coefficients (n, 2P+1) of the polynomial in theta at each alpha."""
+        alpha = np.asarray(alpha, dtype=float).reshape(-1)
+        return _unit_powers(alpha, self.deg[1]) @ self.h.T
+
+    def __call__(self, theta, alpha):
+        """Values at (theta, alpha), broadcast."""
+        th, al = np.broadcast_arrays(np.asarray(theta, dtype=float), np.asarray(alpha, dtype=float))
+        rows = self.in_alpha(th.reshape(-1))
+        val = np.sum(rows * _unit_powers(al.reshape(-1), self.deg[1]), axis=1).real
+        return val.reshape(th.shape)
+
+
+def _unit_powers(x, n):
+    """exp(i j x) for j = -n .. n, shape (x.size, 2n + 1), by repeated
+    multiplication (cheaper than exp of the outer product)."""
+    z = np.exp(1j * x)
+    out = np.empty((x.size, 2 * n + 1), dtype=complex)
+    out[:, n] = 1.0
+    for j in range(1, n + 1):
+        out[:, n + j] = out[:, n + j - 1] * z
+        out[:, n - j] = np.conj(out[:, n + j])
+    return out
 
 
 def _basis(a, r, k):
@@ -176,10 +205,10 @@ def _functions(a, r, k, g, mu=np.inf, max_g=np.inf, outside=False):
     out = {"eq0": [fit], "eq29": [C, S, D], "eq33": [P_N]}
     if np.isfinite(mu):
         P_F = rp * C * c + s * SD
-        out["mu"] = [P_F * P_F - (mu * mu) * (P_N * P_N)]
+        out["mu"] = [P_F - mu * P_N, P_F + mu * P_N]
     if np.isfinite(max_g):
         RC = rp * C
-        out["max_g"] = [RC * RC - (max_g * max_g) * (SD * SD)]
+        out["max_g"] = [RC - max_g * SD, RC + max_g * SD]
     return out
 
 
@@ -411,21 +440,77 @@ def boundary_alphas(theta, a, r, k, outside=False, mu=np.inf, max_g=np.inf, wind
     return out
 
 
-def boundary_values(theta, alpha, a, r, k, outside=False, mu=np.inf, max_g=np.inf):
-    """Values of the boundary functions (module docstring table) at
-    (theta, alpha), broadcast; a boundary crosses where its value changes
-    sign.  ``eq29`` is the product C S D, whose sign is that of Omega^2 of
-    eq. (29).  For renderers that locate the curves cell by cell."""
+def boundary_thetas(alpha, a, r, k, outside=False, mu=np.inf, max_g=np.inf, window=(0.0, np.pi)):
+    """Every theta on each boundary curve at each alpha: the companion of
+    :func:`boundary_alphas` along lines of constant alpha -- the same
+    boundaries, eqs. (0)/(81), (29), (33)/(83) and the mu (eq. 35) and g-load
+    (eq. 36) limits, with the same names and NaN-padded layout -- for
+    renderers that need the curves where they are steep in theta.  Default
+    window: 0 <= theta <= pi [rad]."""
     a, r, k, _, outside, mu, max_g = _check(a, r, k, 1.0, outside, mu, max_g)
-    th, al = np.broadcast_arrays(np.asarray(theta, dtype=float), np.asarray(alpha, dtype=float))
-    t1, a1 = th.reshape(-1), al.reshape(-1, 1)
+    al, a1 = _theta_1d(alpha)
+    n = a1.size
+    lo = np.broadcast_to(np.asarray(window[0], dtype=float), al.shape).reshape(-1)
+    hi = np.broadcast_to(np.asarray(window[1], dtype=float), al.shape).reshape(-1)
     out = {}
     for name, funcs in _functions(a, r, k, 1.0, mu, max_g, outside).items():
-        val = np.ones(t1.shape + (1,))
-        for f in funcs:
-            val = val * _eval_rows(f.in_alpha(t1), a1)
-        out[name] = val.reshape(th.shape)
+        roots = _cat_sorted([_roots_in(f.in_theta(a1), lo, hi) for f in funcs], n)
+        if name in ("mu", "max_g") and roots.size:
+            orb = horizontal_orbit(np.where(np.isfinite(roots), roots, 1.0), a1[:, None],
+                                   a, r, k, 1.0, outside)
+            physical = np.isfinite(orb["normal"]) & (orb["normal"] > 0)
+            roots = _cat_sorted([np.where(physical, roots, np.nan)], n)
+        out[name] = roots.reshape(al.shape + (roots.shape[1],))
     return out
+
+
+def boundary_factors(theta, alpha, a, r, k, outside=False, mu=np.inf, max_g=np.inf):
+    """Values at (theta, alpha) of the functions whose zero sets are the
+    boundaries (module docstring table), broadcast.
+
+    Returns dict name -> list of arrays, one per factor: ``eq0`` [fit],
+    ``eq29`` [cos alpha, sin alpha, D] (Omega^2 of eq. (29) has the sign of
+    their product), ``eq33`` [P_N], ``mu`` [P_F - mu P_N, P_F + mu P_N],
+    ``max_g`` [r' C - G S D, r' C + G S D].  For contouring renderers, with
+    :func:`project_to_boundary` to put the contour's vertices on the curve.
+    """
+    a, r, k, _, outside, mu, max_g = _check(a, r, k, 1.0, outside, mu, max_g)
+    return {name: [f(theta, alpha) for f in funcs]
+            for name, funcs in _functions(a, r, k, 1.0, mu, max_g, outside).items()}
+
+
+def project_to_boundary(name, factor, theta, alpha, a, r, k, outside=False, mu=np.inf,
+                        max_g=np.inf, max_step=0.05, iterations=30):
+    """Move points (theta, alpha) [rad] onto the zero set of one boundary
+    factor (see :func:`boundary_factors`; eqs. (0), (29), (33), (35), (36))
+    by Newton steps along the gradient, each step at most ``max_step`` rad.
+    Beyond the paper: a rendering aid (docs/limits.md, sec. 7).
+
+    Returns ``(theta, alpha, ok)``: ``ok`` is False where the iteration did
+    not reach |f| <= 1e-13 |grad f| (the point is then left where it was).
+    """
+    a, r, k, _, outside, mu, max_g = _check(a, r, k, 1.0, outside, mu, max_g)
+    f = _functions(a, r, k, 1.0, mu, max_g, outside)[name][factor]
+    ft, fa = f.d_theta(), f.d_alpha()
+    th0, al0 = np.broadcast_arrays(np.asarray(theta, dtype=float), np.asarray(alpha, dtype=float))
+    th, al = th0.astype(float).copy(), al0.astype(float).copy()
+    ok = np.zeros(th.shape, dtype=bool)
+    for _ in range(iterations):
+        val, gt, ga = f(th, al), ft(th, al), fa(th, al)
+        g2 = gt * gt + ga * ga
+        ok = np.abs(val) <= 1e-13 * np.sqrt(g2)
+        if np.all(ok):
+            break
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(g2 > 0, val / np.where(g2 > 0, g2, 1.0), 0.0)
+        dt, da = -step * gt, -step * ga
+        length = np.hypot(dt, da)
+        shrink = np.where(length > max_step, max_step / np.where(length > 0, length, 1.0), 1.0)
+        th = np.where(ok, th, th + shrink * dt)
+        al = np.where(ok, al, al + shrink * da)
+    th = np.where(ok, th, th0)
+    al = np.where(ok, al, al0)
+    return th, al, ok
 
 
 @dataclass(frozen=True)
@@ -455,10 +540,14 @@ class AlphaIntervals:
                 for j in range(n)]
 
     def contains(self, alpha):
-        """True where alpha (broadcast with theta) lies in an interval."""
-        alpha = np.asarray(alpha, dtype=float)[..., None]
-        with np.errstate(invalid="ignore"):
-            inside = (alpha > self.lo) & (alpha < self.hi)
+        """True where alpha lies in an interval.  ``alpha`` has shape
+        theta.shape, or theta.shape followed by more axes (several alphas
+        per theta)."""
+        alpha = np.asarray(alpha, dtype=float)
+        extra = max(alpha.ndim - self.theta.ndim, 0)
+        shape = self.theta.shape + (1,) * extra + self.lo.shape[-1:]
+        lo, hi = self.lo.reshape(shape), self.hi.reshape(shape)
+        inside = (alpha[..., None] > lo) & (alpha[..., None] < hi)
         return np.any(inside, axis=-1)
 
 
@@ -584,3 +673,168 @@ def _speed_range(t1, ilo, ihi, lo, hi, a, r, k, g):
     vmin = np.where(valid, np.sqrt(vmin), np.nan)
     vmax = np.where(valid, np.sqrt(vmax), np.nan)
     return vmin, vmax
+
+
+# ---------------------------------------------------------------------------
+# the highest orbit possible
+# ---------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class HighestOrbit:
+    """The smallest theta at which a feasible tilt exists (beyond the paper).
+
+    ``theta`` [rad] is the infimum of feasible polar angles, located to
+    ``theta_bracket = (infeasible, feasible)``; ``alpha_lo``, ``alpha_hi``
+    [rad] the first allowed interval at the feasible end of the bracket,
+    ``alpha`` its midpoint (the limiting tilt), ``speed_min``, ``speed_max``
+    [m/s] the speed range over it and ``speed`` the limit, as theta -> theta*,
+    of the least speed of a feasible orbit: inf when the highest orbit is
+    reached only at unbounded speed (e.g. friction limit alone: alpha -> 0),
+    0 when the wheel's centre tends to the axis (r' -> 0).  ``found`` is False, and the numbers
+    NaN, when no theta of the scan is feasible.
+    """
+
+    found: bool
+    theta: float
+    alpha: float
+    alpha_lo: float
+    alpha_hi: float
+    speed: float
+    speed_min: float
+    speed_max: float
+    theta_bracket: tuple
+
+
+def highest_orbit(a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf,
+                  n_theta=2048, xtol=1e-11):
+    """The highest orbit possible: the smallest theta with a feasible alpha.
+
+    Beyond the paper (docs/limits.md).  Feasibility at one theta is decided
+    exactly by :func:`allowed_alpha` (all alpha boundaries found); in theta
+    the feasible set is scanned on ``n_theta`` midpoints of (0, pi), and the
+    first change infeasible -> feasible is refined by bisection to ``xtol``
+    rad.  A feasible island narrower than pi/n_theta in theta lying below the
+    first feasible scan point could be missed (none exists for the equations
+    here; the docs give the closed form that the tests check).
+
+    Parameters
+    ----------
+    a, r : float, [m];  k : float, [-];  g : float, [m/s^2];  outside : bool;
+    mu : float, [-] friction available (inf: no limit);
+    max_g : float, [-] largest g-load allowed (inf: no limit).
+
+    Returns
+    -------
+    HighestOrbit
+    """
+    a, r, k, g, outside, mu, max_g = _check(a, r, k, g, outside, mu, max_g)
+    grid = (np.arange(n_theta) + 0.5) * (np.pi / n_theta)
+    iv = allowed_alpha(grid, a, r, k, g, outside, mu, max_g)
+    hit = np.nonzero(iv.count > 0)[0]
+    if hit.size == 0:
+        nan = float("nan")
+        return HighestOrbit(False, nan, nan, nan, nan, nan, nan, nan, (nan, nan))
+    j = int(hit[0])
+    lo = 0.0 if j == 0 else float(grid[j - 1])
+    hi = float(grid[j])
+    while hi - lo > xtol:
+        mid = 0.5 * (lo + hi)
+        if allowed_alpha(mid, a, r, k, g, outside, mu, max_g).count > 0:
+            hi = mid
+        else:
+            lo = mid
+    at = allowed_alpha(hi, a, r, k, g, outside, mu, max_g)
+    alo, ahi, vmin, vmax = at.intervals()[0]
+    alpha = 0.5 * (alo + ahi)
+    speed = _limit_speed(lo, hi, vmin, a, r, k, g, outside, mu, max_g)
+    if np.isfinite(speed) and np.isfinite(vmax) and (ahi - alo) < 1e-6:
+        speed = float(np.sqrt(_speed_sq(hi, alpha, a, r, k, g)))
+    return HighestOrbit(True, 0.5 * (lo + hi), alpha, alo, ahi, speed, vmin, vmax, (lo, hi))
+
+
+def _limit_speed(lo, hi, vmin_near, a, r, k, g, outside, mu, max_g):
+    """Limit of the least speed as theta -> theta* from the feasible side,
+    from its scaling between distances d and 1e4 d above theta*: growth by
+    more than 10 means it diverges (inf), a fall by more than 10 that it
+    tends to 0 (r' -> 0 at a corner), else the value nearest theta*."""
+    d = max(hi - lo, 1e-300)
+    far = allowed_alpha(lo + 1e4 * d, a, r, k, g, outside, mu, max_g)
+    if far.count == 0:
+        return float(vmin_near)
+    v_far = far.intervals()[0][2]
+    if not np.isfinite(vmin_near):
+        return float("inf")
+    if vmin_near > 10.0 * v_far:
+        return float("inf")
+    if vmin_near < 0.1 * v_far:
+        return 0.0
+    return float(vmin_near)
+
+
+# ---------------------------------------------------------------------------
+# tilt for a given speed or rotation rate
+# ---------------------------------------------------------------------------
+
+def solve_alpha(theta, a, r, k, g=9.80665, speed=None, omega=None, outside=False,
+                mu=np.inf, alpha_range=None):
+    """Every tilt alpha at which eq. (29) gives the centre speed
+    v_cm = |r'| Omega = ``speed`` [m/s], or the rotation rate ``omega``
+    [rad/s] (give exactly one), at polar angle ``theta`` [rad].
+
+    The zeros of g r'^2 cos(alpha) - v^2 sin(alpha) D (speed) or
+    g cos(alpha) - Omega^2 sin(alpha) D (rate), trigonometric polynomials of
+    degree 3 and 2 (at most 6 and 4 tilts per period), are all found as
+    described in the module docstring; each is reported with every quantity
+    of :func:`deathsphere.physics.wheel.horizontal_orbit` (with ``mu``), so
+    its status says whether it is a feasible orbit.  Tangent (double) roots,
+    where the speed is exactly a local extremum of v_cm(alpha), are not
+    reported.
+
+    Parameters
+    ----------
+    theta : array_like, [rad];  speed / omega : array_like (broadcast with
+    theta), > 0;  alpha_range : (lo, hi) [rad], hi - lo <= 2 pi, default the
+    fit interval of eq. (0) (eq. (81) outside), which keeps every root that
+    fits; pass e.g. (-pi, pi) to see the others too (status ``no_fit``).
+
+    Returns
+    -------
+    dict with ``alpha`` (shape + (m,), rad, sorted, NaN-padded), ``count``
+    (shape) and the keys of ``horizontal_orbit`` at each root (padding: NaN,
+    status ``invalid``).
+    """
+    if (speed is None) == (omega is None):
+        raise ValueError("give exactly one of speed and omega")
+    a, r, k, g, outside, mu, _ = _check(a, r, k, g, outside, mu)
+    target = np.asarray(speed if speed is not None else omega, dtype=float)
+    if not np.all(np.isfinite(target)) or np.any(target <= 0):
+        raise ValueError(f"{'speed' if speed is not None else 'omega'} must be finite and > 0")
+    t, tg = np.broadcast_arrays(np.asarray(theta, dtype=float), target)
+    shape = t.shape
+    _, t1 = _theta_1d(t)
+    tg = tg.reshape(-1)
+    n = t1.size
+    C, S, s, c, rp, D, SD = _basis(a, r, k)
+    A = g * rp * rp * C if speed is not None else g * C + 0.0 * SD
+    B = SD + 0.0 * A
+    A = A + 0.0 * B
+    h = A.in_alpha(t1) - (tg * tg)[:, None] * B.in_alpha(t1)
+    if alpha_range is None:
+        lo, hi = fit_interval(t1, a, r, outside)
+    else:
+        lo = np.broadcast_to(np.asarray(alpha_range[0], dtype=float), shape).reshape(-1)
+        hi = np.broadcast_to(np.asarray(alpha_range[1], dtype=float), shape).reshape(-1)
+        if np.any(hi - lo > TWO_PI) or np.any(hi < lo):
+            raise ValueError("alpha_range must satisfy lo <= hi <= lo + 2 pi")
+    roots = _roots_in(h, lo, hi)
+    m = roots.shape[1]
+    found = np.isfinite(roots)
+    orb = horizontal_orbit(t1[:, None], np.where(found, roots, 0.0), a, r, k, g, outside, mu)
+    out = {"alpha": roots.reshape(shape + (m,)), "count": np.sum(found, axis=1).reshape(shape)}
+    for key, val in orb.items():
+        if key in ("status", "reason"):
+            val = np.where(found, val, Status.INVALID if key == "status" else 0).astype(np.int8)
+        else:
+            val = np.where(found, val, np.nan)
+        out[key] = val.reshape(shape + (m,))
+    return out

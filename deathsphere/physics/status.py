@@ -52,6 +52,7 @@ class Reason(IntEnum):
     SPHERE_OMEGA_ZERO = 21
     SPHERE_K_ZERO = 22
     PARTICLE_OUTSIDE_BELOW_EQUATOR = 23
+    NO_ALPHA_FOR_RATE = 24
 
 
 REASONS = {
@@ -79,6 +80,7 @@ REASONS = {
     Reason.SPHERE_OMEGA_ZERO: "Omega = 0 cannot satisfy eq. 55 (it would need g = 0)",
     Reason.SPHERE_K_ZERO: "k = 0: omega_3 drops out of eq. 55 and cannot be found from Omega",
     Reason.PARTICLE_OUTSIDE_BELOW_EQUATOR: "outside the sphere below the equator the normal force would have to pull (N/m = g/cos(theta) < 0)",
+    Reason.NO_ALPHA_FOR_RATE: "no tilt alpha in the fit range gives this speed or rate (eq. 29 has no root)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

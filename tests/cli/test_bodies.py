@@ -82,3 +82,24 @@ def test_mixed_batch_with_body_and_side_columns(run):
 def test_body_usage_errors(run, args, words):
     res = run("orbit", *args)
     assert res.exit_code == 2 and words in res.stderr and len(res.stderr.strip().splitlines()) == 1
+
+
+def test_wheel_speed_is_solved_for_every_alpha(run):
+    out = rows(run("orbit", "--theta", "100", "--speed", "4", "--speed", "6", "--format", "csv").stdout)
+    assert out and {r["input_row"] for r in out} == {"1", "2"}
+    for r in out:
+        assert float(r["v_cm_m_s"]) == pytest.approx(4.0 if r["input_row"] == "1" else 6.0, rel=1e-9)
+        assert r["branch"] != "" and r["alpha_deg"] != ""
+    # a dense scan of eq. (29) finds the same number of roots for 4 m/s
+    alpha = np.linspace(-179.999, 179.999, 720001)
+    from deathsphere.physics import wheel
+    res = wheel.horizontal_orbit(np.deg2rad(100.0), np.deg2rad(alpha), 0.3, 3.0, 0.5, 9.80665)
+    fits = res["status"] != 1  # not no_fit
+    v = np.where(fits, res["v_cm"], np.nan) - 4.0
+    crossings = np.count_nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)
+    assert crossings == sum(r["input_row"] == "1" for r in out)
+
+
+def test_wheel_rate_without_root_is_one_no_orbit_row(run):
+    out = rows(run("orbit", "--theta", "30", "--omega", "0.5", "--format", "csv").stdout)
+    assert len(out) == 1 and out[0]["status"] == "no_orbit" and "no tilt alpha" in out[0]["reason"]

@@ -83,7 +83,7 @@ def test_mu_gives_slips(run):
     (["--theta", "1:2", "--alpha", "10"], "start:stop:step"),
     (["--theta", "60", "--alpha", "10", "--format", "xml"], "'xml' is not one of"),
     (["--input", "/no/such/file.csv"], "No such file"),
-    (["--theta", "60"], "give --alpha"),
+    (["--theta", "60"], "exactly one of --alpha"),
     (["--alpha", "10"], "give --theta"),
     (["--theta", "60", "--alpha", "10", "--body", "bicycle"], "'bicycle' is not one of"),
 ])
