@@ -101,5 +101,5 @@ def test_wheel_speed_is_solved_for_every_alpha(run):
 
 
 def test_wheel_rate_without_root_is_one_no_orbit_row(run):
-    out = rows(run("orbit", "--theta", "30", "--omega", "0.5", "--format", "csv").stdout)
+    out = rows(run("orbit", "--theta", "90", "--omega", "0.1", "--format", "csv").stdout)
     assert len(out) == 1 and out[0]["status"] == "no_orbit" and "no tilt alpha" in out[0]["reason"]
