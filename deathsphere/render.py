@@ -247,9 +247,35 @@ def many_orbits_table(table: Table, title: str | None = None) -> Group:
     return Group(out, *legend)
 
 
-def write_rich_table(table: Table, console: Console, title: str | None = None) -> int:
-    """Terminal view: every quantity for one orbit, a summary row per orbit for many."""
+def generic_table(table: Table, title: str | None = None) -> RichTable:
+    """Any table: one column per field (for results that are not orbits)."""
+    out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
     if len(table) == 1:
+        out.add_column("quantity")
+        out.add_column("value", justify="right")
+        for name in table.names:
+            v = table[name][0].item() if hasattr(table[name][0], "item") else table[name][0]
+            out.add_row(name, str(v) if isinstance(v, (str, bool)) else format_number(v, 6))
+        return out
+    # columns equal in every row (the inputs) go to the caption
+    same = [n for n in table.names if len(set(map(str, table[n].tolist()))) == 1]
+    names = [n for n in table.names if n not in same]
+    out.caption = ", ".join(f"{n} = {format_number(table[n][0].item())}" for n in same)
+    out.caption_justify = "left"
+    for name in names:
+        out.add_column(name.replace("_", " "), justify="left" if table[name].dtype == object else "right")
+    cols = [table[n].tolist() for n in names]
+    for i in range(len(table)):
+        out.add_row(*[str(c[i]) if isinstance(c[i], (str, bool)) else format_number(c[i]) for c in cols])
+    return out
+
+
+def write_rich_table(table: Table, console: Console, title: str | None = None) -> int:
+    """Terminal view: every quantity for one orbit, a summary row per orbit
+    for many; any other table column by column."""
+    if "body" not in table or "status" not in table:
+        console.print(generic_table(table, title))
+    elif len(table) == 1:
         console.print(one_orbit_table(table))
     else:
         console.print(many_orbits_table(table, title))

@@ -1,0 +1,95 @@
+"""Result tables for the allowed region and the rider's limits (beyond the
+paper; methods in docs/limits.md, physics in :mod:`deathsphere.physics.region`)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from deathsphere.model import Setup, Table
+from deathsphere.physics import region
+
+#: Boundary name -> the equation it comes from (inside, outside).
+EQUATIONS = {
+    "eq0": ("eq. 0: the wheel fits", "eq. 81: the wheel fits"),
+    "eq29": ("eq. 29: Omega^2 = 0 or diverges", "eq. 29: Omega^2 = 0 or diverges"),
+    "eq33": ("eq. 33: normal force = 0", "eq. 83: normal force = 0"),
+    "mu": ("mu_required = mu", "mu_required = mu"),
+    "max_g": ("g-load = max_g", "g-load = max_g"),
+}
+
+
+def _limit(x: float) -> float:
+    return math.nan if math.isinf(x) else x
+
+
+def _degrees(alpha_rad):
+    """Degrees, rounded at 1e-10 deg: the roots are accurate to ~1e-12 rad,
+    and an end at alpha = 0 should not print as 1.3e-13 (nor -0)."""
+    return np.round(np.rad2deg(alpha_rad), 10) + 0.0
+
+
+def _speed(v):
+    """At an end where Omega^2 -> 0 (alpha -> 90 deg) the speed goes to 0 as
+    sqrt(cot alpha), so a 1e-12 rad root error leaves ~1e-7 m/s: speeds
+    below 1e-6 m/s are that round-off, and are the limit 0."""
+    return np.where(np.abs(v) < 1e-6, 0.0, v)
+
+
+def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: float, step_deg: float) -> Table:
+    """Every boundary curve alpha(theta) of the allowed region, one row per
+    point (curve, equation, theta_deg, alpha_deg), theta on a grid of
+    ``step_deg`` over (0, 180) deg, each alpha root-found to 1e-9 rad or better."""
+    theta = np.arange(step_deg, 180.0 - 0.5 * step_deg, step_deg)
+    curves = region.boundary_alphas(np.deg2rad(theta), a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g)
+    names, eqs, thetas, alphas = [], [], [], []
+    for name, alpha in curves.items():
+        i, j = np.nonzero(np.isfinite(alpha))
+        names.append(np.full(i.size, name, dtype=object))
+        eqs.append(np.full(i.size, EQUATIONS[name][int(outside)], dtype=object))
+        thetas.append(theta[i])
+        alphas.append(np.rad2deg(alpha[i, j]))
+    return Table({"curve": np.concatenate(names), "equation": np.concatenate(eqs),
+                  "theta_deg": np.concatenate(thetas), "alpha_deg": np.concatenate(alphas),
+                  "a_over_r": np.full(sum(map(len, names)), a_over_r), "k": np.full(sum(map(len, names)), k)})
+
+
+def intervals_table(setup: Setup, theta_deg: np.ndarray, max_g: float) -> Table:
+    """The open intervals of alpha with a feasible orbit at each theta, with
+    the speed range over each; a theta without any gives one row with
+    ``intervals`` = 0."""
+    iv = region.allowed_alpha(np.deg2rad(theta_deg), setup.a, setup.r, setup.k, setup.g,
+                              setup.side == "outside", setup.mu, max_g)
+    count = np.asarray(iv.count).reshape(-1)
+    m = iv.lo.shape[-1]
+    slots = np.maximum(count, 1)
+    row = np.repeat(np.arange(theta_deg.size), slots)
+    j = np.concatenate([np.arange(s) for s in slots]) if row.size else np.empty(0, int)
+    present = j < count[row]
+    lo, hi, vmin, vmax = (np.where(present, getattr(iv, f).reshape(-1, m)[row, np.minimum(j, m - 1)], np.nan)
+                          for f in ("lo", "hi", "speed_min", "speed_max"))
+    n = row.size
+    return Table({
+        "theta_deg": theta_deg[row], "intervals": count[row],
+        "interval": np.where(present, j + 1, 0),
+        "alpha_min_deg": _degrees(lo), "alpha_max_deg": _degrees(hi),
+        "v_min_m_s": _speed(vmin), "v_max_m_s": np.where(np.isinf(vmax), np.nan, _speed(vmax)),
+        "a_m": np.full(n, setup.a), "r_m": np.full(n, setup.r), "k": np.full(n, setup.k),
+        "mu_available": np.full(n, _limit(setup.mu)), "max_g": np.full(n, _limit(max_g)),
+    })
+
+
+def highest_orbit_table(setup: Setup, max_g: float) -> Table:
+    """The highest orbit possible (smallest theta) within mu and max_g.
+
+    ``v_cm_m_s`` is the limit of the least speed as theta -> theta*; empty
+    when that limit is unbounded (e.g. friction alone: alpha -> 0)."""
+    h = region.highest_orbit(setup.a, setup.r, setup.k, setup.g, setup.side == "outside", setup.mu, max_g)
+    row = {
+        "found": h.found, "theta_deg": math.degrees(h.theta), "alpha_deg": math.degrees(h.alpha),
+        "alpha_min_deg": math.degrees(h.alpha_lo), "alpha_max_deg": math.degrees(h.alpha_hi),
+        "v_cm_m_s": _limit(h.speed), "a_m": setup.a, "r_m": setup.r, "k": setup.k,
+        "mu_available": _limit(setup.mu), "max_g": _limit(max_g),
+    }
+    return Table({name: np.array([value]) for name, value in row.items()})

@@ -1,0 +1,81 @@
+import csv
+import io
+import json
+import sys
+
+import numpy as np
+import pytest
+
+
+def rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_map_in_the_terminal_labels_the_three_curves(run):
+    text = run("map", "--format", "table", env={"COLUMNS": "80"}).stdout
+    lines = text.splitlines()
+    assert max(len(line) for line in lines) <= 80
+    for label in ("eq. (0)", "eq. (29)", "eq. (33)", "a/r = 0.1"):
+        assert label in text
+
+
+def test_map_boundaries_as_data(run):
+    out = rows(run("map", "--format", "csv", "--step", "1").stdout)
+    assert {r["curve"] for r in out} == {"eq0", "eq29", "eq33"}
+    # eq. (0) as an equality: sin(theta - alpha) = a/r on its curve
+    th = np.deg2rad([float(r["theta_deg"]) for r in out if r["curve"] == "eq0"])
+    al = np.deg2rad([float(r["alpha_deg"]) for r in out if r["curve"] == "eq0"])
+    assert np.allclose(np.abs(np.sin(th - al)), 0.1, atol=1e-9)
+
+
+def test_map_with_limits_adds_their_curves(run):
+    out = json.loads(run("map", "--format", "json", "--mu", "1", "--max-g", "5", "--step", "2").stdout)
+    assert {"mu", "max_g"} <= {r["curve"] for r in out}
+
+
+def test_map_writes_an_image(run, tmp_path):
+    out = tmp_path / "map.png"
+    res = run("map", "--output", str(out))
+    assert res.exit_code == 0 and out.read_bytes()[:4] == b"\x89PNG"
+    assert "wrote" in res.stderr
+
+
+def test_map_without_the_plot_extra_says_which_extra(run, tmp_path, monkeypatch):
+    monkeypatch.setitem(sys.modules, "matplotlib", None)
+    res = run("map", "--output", str(tmp_path / "map.png"))
+    assert res.exit_code == 2
+    (line,) = res.stderr.strip().splitlines()
+    assert "pip install 'deathsphere[plot]'" in line
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--a-over-r", "0"], "--a-over-r"), (["--a-over-r", "1.5"], "--a-over-r"),
+    (["--output", "map.jpg"], ".png, .svg or .pdf"), (["--max-g", "0"], "--max-g"), (["-k", "-1"], "k (inertia"),
+])
+def test_map_usage_errors(run, args, words):
+    res = run("map", *args)
+    assert res.exit_code == 2 and words in res.stderr
+
+
+def test_highest_orbit_with_mu_and_g_limit(run):
+    (row,) = json.loads(run("limits", "--mu", "1", "--max-g", "5", "--format", "json").stdout)
+    # closed form (docs/limits.md): theta* = 90 deg + atan(1/G) - atan(mu)
+    assert row["found"] is True
+    assert row["theta_deg"] == pytest.approx(90 + np.degrees(np.arctan(1 / 5)) - 45, abs=1e-6)
+    assert row["v_cm_m_s"] == pytest.approx(10.38, abs=0.01)
+
+
+def test_alpha_intervals_at_theta(run):
+    out = rows(run("limits", "--theta", "60", "--theta", "30", "--mu", "1.2", "--format", "csv").stdout)
+    assert [r["intervals"] for r in out] == ["1", "0"]
+    lo, hi = float(out[0]["alpha_min_deg"]), float(out[0]["alpha_max_deg"])
+    # every alpha strictly inside is ok with mu 1.2; just outside the top end it slips
+    ok = run("orbit", "--theta", "60", "--alpha", f"{lo + 0.01}:{hi - 0.01}:0.5", "--mu", "1.2", "--format", "csv")
+    assert {r["status"] for r in rows(ok.stdout)} == {"ok"}
+    beyond = rows(run("orbit", "--theta", "60", "--alpha", str(hi + 0.01), "--mu", "1.2", "--format", "csv").stdout)
+    assert beyond[0]["status"] != "ok"
+
+
+def test_limits_is_for_a_wheel(run):
+    res = run("limits", "--body", "sphere", "--theta", "60")
+    assert res.exit_code == 2 and "wheel" in res.stderr
