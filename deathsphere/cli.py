@@ -202,6 +202,7 @@ def cli():
       deathsphere map                                   the allowed region (paper's figure)
       deathsphere limits --mu 1 --max-g 5               the highest orbit a rider can hold
       deathsphere table1                                the paper's Table 1, checked
+      deathsphere verify                                every claim of the paper, checked
     """
 
 
@@ -554,6 +555,49 @@ def limits_command(theta, max_g, body, side, a, r, k, g, mu, fmt):
         table = highest_orbit_table(setup, max_g)
         title = "The highest orbit possible (smallest theta with a feasible tilt)"
     emit([table], fmt, title=title)
+
+
+@cli.command("verify")
+@click.option("--claim", "claims", multiple=True, metavar="ID", help="Check only this claim (repeatable).")
+@output_options()
+def verify_command(claims, fmt):
+    """Check every quantitative claim of the paper: a checklist with the evidence.
+
+    Each claim (Table 1, the inequalities and limits of each section, the
+    figure, ...) is recomputed from this package's physics and marked
+    confirmed, corrected (right in substance, wrong in a sign, a factor, a
+    label or a digit: see docs/errata.md) or refuted, with numbers.
+
+    \b
+    Examples:
+      deathsphere verify
+      deathsphere verify --claim T1-g --claim E28
+      deathsphere verify --format csv
+    """
+    from deathsphere import verify
+
+    known = {c.id for c in verify.CLAIMS}
+    for c in claims:
+        if c not in known:
+            raise click.BadParameter(f"unknown claim {c!r}; known: {' '.join(sorted(known))}",
+                                     param_hint="'--claim'")
+    fmt = choose_format(fmt)
+    ids = list(claims) or None
+    if sys.stderr.isatty():
+        from rich.progress import Progress
+
+        total = len(ids or verify.CLAIMS)
+        with Progress(console=stderr_console(), transient=True) as progress:
+            task = progress.add_task("checking claims", total=total)
+            table = verify.run(ids, progress=lambda c: progress.update(task, advance=1, description=c.id))
+    else:
+        table = verify.run(ids)
+    if fmt == "table":
+        from deathsphere.render import checklist_view
+
+        stdout_console().print(checklist_view(table, verify.counts(table)))
+    else:
+        emit([table], fmt)
 
 
 @cli.command("table1")

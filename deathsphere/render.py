@@ -358,3 +358,21 @@ def vertical_view(table: Table):
                       for c, _ in cols])
     reasons = dict.fromkeys(zip(table["status"].tolist(), table["reason"].tolist()))
     return Group(out, *[f"{status_text(st)}: {why}" for st, why in reasons if why])
+
+
+VERDICT_MARK = {"confirmed": "[green]✓ confirmed[/green]", "corrected": "[yellow]~ corrected[/yellow]",
+                "refuted": "[red]✗ refuted[/red]"}
+
+
+def checklist_view(table: Table, counts: dict) -> Group:
+    """``deathsphere verify``: one block per claim, then the counts."""
+    from rich.markup import escape
+
+    parts = []
+    for row in table.records():
+        parts.append(f"{VERDICT_MARK[row['verdict']]}  [bold]{escape(row['id'])}[/bold]  "
+                     f"(sec. {escape(row['section'])}, {escape(row['equation'])}) {escape(row['claim'])}")
+        parts.append(f"    [dim]{escape(row['evidence'])}[/dim]")
+    parts.append("")
+    parts.append(", ".join(f"{n} {v}" for v, n in counts.items()) + f" ({len(table)} claims)")
+    return Group(*parts)

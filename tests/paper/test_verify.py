@@ -1,0 +1,49 @@
+"""`deathsphere verify`: every claim's verdict, asserted.
+
+The expected verdicts are the findings recorded in docs/errata.md (decided by
+the derivations and tests cited there), not read back from the checker.
+"""
+
+import json
+
+import pytest
+
+from deathsphere import verify
+
+EXPECTED = {
+    "T1-v": "confirmed", "T1-mu": "corrected", "T1-g": "corrected",
+    "E29": "confirmed", "E0": "confirmed", "Q": "confirmed", "A0": "confirmed", "UP": "confirmed",
+    "P": "confirmed",
+    "E28a": "confirmed", "E28b": "corrected", "E28": "corrected", "E82": "confirmed",
+    "E56": "confirmed", "E58": "confirmed", "E58-text": "corrected", "E57": "corrected",
+    "E59": "confirmed", "S5-spin": "corrected", "S3-class": "corrected", "FIG": "confirmed",
+}
+
+
+@pytest.fixture(scope="module")
+def checklist():
+    return verify.run()
+
+
+def test_every_claim_is_expected(checklist):
+    assert set(checklist["id"]) == set(EXPECTED), "a claim was added or dropped: decide its verdict here"
+
+
+@pytest.mark.parametrize("claim_id", sorted(EXPECTED))
+def test_verdict(checklist, claim_id):
+    i = list(checklist["id"]).index(claim_id)
+    assert checklist["verdict"][i] == EXPECTED[claim_id], checklist["evidence"][i]
+    assert checklist["evidence"][i]
+
+
+def test_cli_checklist_and_counts(run):
+    res = run("verify", "--claim", "T1-v", "--claim", "T1-g", "--format", "table", env={"COLUMNS": "120"})
+    assert res.exit_code == 0
+    assert "1 confirmed, 1 corrected, 0 refuted (2 claims)" in res.stdout
+    data = json.loads(run("verify", "--claim", "E82", "--format", "json").stdout)
+    assert data[0]["verdict"] == "confirmed" and "cos phi" in data[0]["evidence"]
+
+
+def test_cli_unknown_claim(run):
+    res = run("verify", "--claim", "nope")
+    assert res.exit_code == 2 and "unknown claim" in res.stderr
