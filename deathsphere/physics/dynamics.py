@@ -41,6 +41,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.wheel import omega_squared
 
 N_STATE = 9
@@ -309,10 +310,11 @@ def state_from_contact(p_hat, e1, w, params: BodyParams):
     """State with contact point r * p_hat, axis e1 and angular velocity w.
 
     Beyond the paper (docs/dynamics.md sec. 2, eq. D3): for a wheel
-    e3 = p_perp/|p_perp| with p_perp the projection of p on the wheel plane,
-    then c = p - a e3; for a sphere c = p - a e3 with e3 = p_hat inside and
-    -p_hat outside.  Inputs (3, ...) arrays (p_hat and e1 are normalised
-    here).  No check that the wheel fits (|p_perp| > a inside).
+    e3 = s p_perp/|p_perp| (s = +1 inside, -1 outside) with p_perp the
+    projection of p on the wheel plane, then c = p - a e3; for a sphere
+    c = p - a e3 with e3 = s p_hat.  Inputs (3, ...) arrays (p_hat and e1
+    are normalised here).  No check that the wheel fits (|p_perp| > a
+    inside).
     """
     p_hat = np.asarray(p_hat)
     e1 = np.asarray(e1)
@@ -320,7 +322,7 @@ def state_from_contact(p_hat, e1, w, params: BodyParams):
     e1 = e1 / _norm(e1)
     pvec = params.r * p_hat
     pperp = pvec - _dot(pvec, e1) * e1
-    e3_wheel = pperp / _norm(pperp)
+    e3_wheel = np.where(params.outside, -1.0, 1.0) * pperp / _norm(pperp)
     e3_sphere = np.where(params.outside, -1.0, 1.0) * p_hat
     e3 = np.where(params.sphere, e3_sphere, e3_wheel)
     c = pvec - params.a * e3
@@ -351,10 +353,9 @@ def wheel_orbit_state(theta, alpha, a, r, k, g, outside=False, phi=0.0):
     theta, alpha, a, r, k, g, phi = np.broadcast_arrays(
         *(np.asarray(x) for x in (theta, alpha, a, r, k, g, phi)))
     om2 = omega_squared(theta, alpha, a, r, k, g)
-    if np.iscomplexobj(om2):
-        ok = np.real(om2) > 0
-    else:
-        ok = np.nan_to_num(om2, nan=-1.0) > 0
+    # Omega^2 within round-off of 0 (alpha = 90 deg) is no orbit, as in
+    # wheel.horizontal_orbit
+    ok = np.nan_to_num(np.real(om2), nan=-1.0) > SINGULAR * np.real(g / r)
     omega = np.where(ok, np.sqrt(np.where(ok, om2, 1.0)), np.nan)
     cp, sp = np.cos(phi), np.sin(phi)
     zero = np.zeros_like(cp)
@@ -440,3 +441,47 @@ def sphere_orbit_state(theta, Omega, a, r, k, g, outside=False, phi=0.0):
     e2 = np.stack((-sp, cp, zero))
     e1 = _cross(e2, e3)
     return np.concatenate((c, e1, w)), omega3
+
+
+# --------------------------------------------------------------------------
+# vertical orbits
+
+def vertical_orbit_state(theta, phidot0, a, r, k=0.5, g=9.80665):
+    """State of a wheel at the top of a vertical orbit (sec. 2.2.1).
+
+    McDonald (1993) eqs. (26)-(27), alpha = 0, beta = pi/2: the orbit lies in
+    the vertical plane y = r cos(theta); at the top (phi = 0) the contact
+    point is p = (0, r cos(theta), r sin(theta)), e1 = y_hat (the wheel in the
+    orbit plane), e3 = z_hat, c = p - a z_hat (distance r' = r sin(theta) - a
+    from the orbit's centre) and w = (r'/a) phidot0 e1 (rolling, eq. 13 with
+    alpha = 0); the centre moves towards -x.  k and g do not enter the state
+    (kept for a uniform signature).  Complex theta/phidot0 accepted.
+    Returns shape (9, ...).
+    """
+    theta, phidot0, a, r = np.broadcast_arrays(*(np.asarray(x) for x in (theta, phidot0, a, r)))
+    rp = r * np.sin(theta) - a
+    zero = np.zeros_like(rp)
+    c = np.stack((zero, r * np.cos(theta), rp))
+    e1 = np.stack((zero, zero + 1.0, zero))
+    w = np.stack((zero, rp * phidot0 / a, zero))
+    return np.concatenate((c, e1, w))
+
+
+def vertical_orbit_period(theta, phidot0, a, r, k, g, n=256):
+    """Period [s] of the vertical orbit with rate phidot0 [rad/s] at the top.
+
+    From energy conservation, eq. (27):
+    phidot^2 = phidot0^2 + 2 g (1 - cos(phi)) / ((2k+1) r'),
+    T = integral_0^2pi dphi / phidot (trapezoid rule on the periodic
+    integrand: spectrally accurate).  NaN where r' <= 0 or phidot0 == 0.
+    """
+    theta, phidot0, a, r, k, g = np.broadcast_arrays(
+        *(np.asarray(x, dtype=float) for x in (theta, phidot0, a, r, k, g)))
+    rp = r * np.sin(theta) - a
+    ok = (rp > 0) & (phidot0 != 0)
+    rp_s = np.where(ok, rp, 1.0)
+    pd0 = np.where(ok, phidot0, 1.0)
+    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False).reshape((n,) + (1,) * rp.ndim)
+    rate = np.sqrt(pd0 ** 2 + 2 * g * (1 - np.cos(phi)) / ((2 * k + 1) * rp_s))
+    T = 2 * np.pi * np.mean(1.0 / rate, axis=0)
+    return np.where(ok, T, np.nan)

@@ -1,0 +1,59 @@
+import csv
+import io
+
+import pytest
+
+
+def rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_steady_orbit_holds(run):
+    res = run("simulate", "--theta", "60", "--alpha", "10", "--periods", "3", "--summary-only", "--format", "csv")
+    (row,) = rows(res.stdout)
+    assert row["status"] == "completed" and float(row["periods_simulated"]) == pytest.approx(3.0)
+    assert float(row["max_theta_drift_deg"]) < 1e-8 and float(row["max_alpha_drift_deg"]) < 1e-8
+    assert row["method"] == "DOP853" and float(row["rtol"]) == 1e-10
+
+
+def test_time_series_streams_with_summary_on_stderr(run):
+    res = run("simulate", "--theta", "60", "--alpha", "10", "--perturb", "0.05", "--periods", "2",
+              "--points-per-period", "8", "--format", "csv")
+    out = rows(res.stdout)
+    assert list(out[0])[:3] == ["input_row", "t_s", "phi_deg"] and len(out) >= 16
+    alphas = [float(r["alpha_deg"]) for r in out]
+    assert max(alphas) - min(alphas) > 1.0  # the kick makes alpha nutate
+    assert "completed" in res.stderr
+
+
+def test_unstable_orbit_loses_contact(run):
+    res = run("simulate", "--theta", "90", "--alpha", "80", "--perturb", "1e-6", "--summary-only", "--format", "json")
+    assert '"status": "contact_lost"' in res.stdout
+
+
+def test_vertical_run_and_slip(run):
+    res = run("simulate", "--vertical", "--theta", "60", "--v-top", "6", "--mu", "0.6", "--summary-only",
+              "--format", "csv")
+    (row,) = rows(res.stdout)
+    assert row["status"] == "slips" and row["orbit"] == "vertical"
+
+
+def test_simulate_table_on_a_terminal(run):
+    text = run("simulate", "--body", "sphere", "--theta", "60", "--omega3", "40", "--periods", "1",
+               "--format", "table", env={"COLUMNS": "100"}).stdout
+    assert "solve_ivp DOP853" in text and "status" in text
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--theta", "60"], "needs --alpha"),
+    (["--theta", "60", "--alpha", "10", "--v-top", "3"], "--v-top is for --vertical"),
+    (["--vertical", "--theta", "90"], "--v-top"),
+    (["--body", "sphere", "--theta", "60"], "exactly one of --omega3"),
+    (["--body", "particle", "--theta", "120"], "a wheel or a sphere"),
+    (["--theta", "260", "--alpha", "10"], "theta must be within"),
+    (["--theta", "60", "--alpha", "10", "--rtol", "0"], "--rtol"),
+    (["--theta", "60", "--alpha", "10", "--perturb", "nan"], "--perturb"),
+])
+def test_simulate_usage_errors(run, args, words):
+    res = run("simulate", *args)
+    assert res.exit_code == 2 and words in res.stderr and len(res.stderr.strip().splitlines()) == 1
