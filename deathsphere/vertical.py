@@ -117,7 +117,6 @@ def vertical_points(req: dict, points: int) -> Table:
     """The orbit point by point: ``points`` azimuths phi from the top (0 deg)
     round to 360 deg for every valid request (rows grouped by request, in
     input order); an invalid request gives one row with its reason."""
-    n = len(req["theta"])
     reason_words = _validate(req)
     rows = np.flatnonzero(reason_words == "")
     phi = vertical.phi_grid(points)

@@ -813,7 +813,6 @@ def solve_alpha(theta, a, r, k, g=9.80665, speed=None, omega=None, outside=False
     shape = t.shape
     _, t1 = _theta_1d(t)
     tg = tg.reshape(-1)
-    n = t1.size
     C, S, s, c, rp, D, SD = _basis(a, r, k)
     A = g * rp * rp * C if speed is not None else g * C + 0.0 * SD
     B = SD + 0.0 * A

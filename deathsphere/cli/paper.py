@@ -1,0 +1,83 @@
+"""``deathsphere table1`` and ``deathsphere verify``: the paper, checked."""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from deathsphere.cli.base import (
+    choose_format,
+    cli,
+    emit,
+    output_options,
+    stderr_console,
+    stdout_console,
+)
+
+
+@cli.command("table1")
+@output_options()
+def table1_command(fmt):
+    """The paper's Table 1: printed mu, v_cm and "No. of g's" beside the computed values.
+
+    Wheel a = 0.3 m, k = 1/2 in a sphere r = 3.0 m, standard gravity.  The
+    note column names every disagreement; docs/errata.md explains them.
+
+    \b
+    Example:
+      deathsphere table1
+      deathsphere table1 --format csv
+    """
+    from deathsphere.render import table1_view
+    from deathsphere.table1 import PRINTED, table1
+
+    table = table1()
+    fmt = choose_format(fmt)
+    if fmt == "table":
+        stdout_console().print(table1_view(table, PRINTED))
+    else:
+        emit([table], fmt)
+
+
+@cli.command("verify")
+@click.option("--claim", "claims", multiple=True, metavar="ID", help="Check only this claim (repeatable).")
+@output_options()
+def verify_command(claims, fmt):
+    """Check every quantitative claim of the paper: a checklist with the evidence.
+
+    Each claim (Table 1, the inequalities and limits of each section, the
+    figure, ...) is recomputed from this package's physics and marked
+    confirmed, corrected (right in substance, wrong in a sign, a factor, a
+    label or a digit: see docs/errata.md) or refuted, with numbers.
+
+    \b
+    Examples:
+      deathsphere verify
+      deathsphere verify --claim T1-g --claim E28
+      deathsphere verify --format csv
+    """
+    from deathsphere import verify
+
+    known = {c.id for c in verify.CLAIMS}
+    for c in claims:
+        if c not in known:
+            raise click.BadParameter(f"unknown claim {c!r}; known: {' '.join(sorted(known))}",
+                                     param_hint="'--claim'")
+    fmt = choose_format(fmt)
+    ids = list(claims) or None
+    if sys.stderr.isatty():
+        from rich.progress import Progress
+
+        total = len(ids or verify.CLAIMS)
+        with Progress(console=stderr_console(), transient=True) as progress:
+            task = progress.add_task("checking claims", total=total)
+            table = verify.run(ids, progress=lambda c: progress.update(task, advance=1, description=c.id))
+    else:
+        table = verify.run(ids)
+    if fmt == "table":
+        from deathsphere.render import checklist_view
+
+        stdout_console().print(checklist_view(table, verify.counts(table)))
+    else:
+        emit([table], fmt)

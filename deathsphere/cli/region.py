@@ -1,0 +1,120 @@
+"""``deathsphere map`` and ``deathsphere limits``: the allowed region and
+the rider's limits."""
+
+from __future__ import annotations
+
+import math
+
+import click
+
+from deathsphere.cli.base import (
+    body_options,
+    choose_format,
+    cli,
+    emit,
+    fail,
+    make_setup,
+    one_line,
+    output_options,
+    parse_angles,
+    stderr_console,
+    stdout_console,
+)
+from deathsphere.constants import SIDES, STANDARD_GRAVITY
+
+
+@cli.command("map")
+@click.option("--a-over-r", "a_over_r", type=float, default=0.1, show_default=True,
+              help="Wheel radius over sphere radius (the paper's figure: 0.1).")
+@click.option("-k", "--inertia", "k", type=float, default=0.5, show_default=True, metavar="K")
+@click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside", show_default=True)
+@click.option("--mu", type=float, default=math.inf, metavar="MU", help="Also draw the friction limit mu_required = MU.")
+@click.option("--max-g", "max_g", type=float, default=math.inf, metavar="G",
+              help="Also draw the g-load limit accel_g = G.")
+@click.option("--output", type=click.Path(dir_okay=False, writable=True), default=None, metavar="FILE",
+              help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
+@click.option("--step", type=click.FloatRange(0.001, 10.0), default=0.5, show_default=True, metavar="DEG",
+              help="theta step of the boundary data (--format csv/json).")
+@output_options()
+def map_command(a_over_r, k, side, mu, max_g, output, step, fmt):
+    """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.
+
+    Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
+    (contact); outside the sphere by eqs. (81), (29), (83).  With --mu or
+    --max-g the friction and g-load limits are drawn too.  On a terminal a
+    character plot; --format csv/json prints the boundary curves as data
+    (root-found to 1e-9 rad); --output writes a figure.
+
+    \b
+    Examples:
+      deathsphere map
+      deathsphere map --mu 1 --max-g 5
+      deathsphere map --format csv --step 1 | head
+      deathsphere map --output map.png
+    """
+    side = side.lower()
+    if not (math.isfinite(a_over_r) and 0 < a_over_r and (a_over_r < 1 or side == "outside")):
+        raise click.BadParameter("must be > 0 (and < 1 inside the sphere)", param_hint="'--a-over-r'")
+    make_setup("wheel", side, a_over_r, 1.0, k, STANDARD_GRAVITY, mu)
+    if not max_g > 0:
+        raise click.BadParameter("must be > 0 (inf: no limit)", param_hint="'--max-g'")
+    outside = side == "outside"
+    if output is not None:
+        from deathsphere.plot import PlotExtraMissing, plot_map
+
+        try:
+            plot_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g, output=output)
+        except PlotExtraMissing as exc:
+            fail(one_line(str(exc)))
+        except ValueError as exc:
+            raise click.BadParameter(str(exc), param_hint="'--output'") from None
+        stderr_console().print(f"deathsphere: wrote {output}")
+        return
+    fmt = choose_format(fmt)
+    if fmt == "table":
+        from deathsphere.charplot import char_map, to_rich
+
+        width = max(40, min(stdout_console().width, 100))
+        stdout_console().print(to_rich(char_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g,
+                                                width=width)), end="")
+        return
+    from deathsphere.limits import boundary_table
+
+    emit([boundary_table(a_over_r, k, outside, mu, max_g, step)], fmt)
+
+
+@cli.command("limits")
+@click.option("--theta", multiple=True, metavar="DEG",
+              help="Polar angle(s) of the orbit; without it: the highest orbit possible.")
+@click.option("--max-g", "max_g", type=float, default=math.inf, metavar="G",
+              help="Largest centre acceleration the rider takes, in g [default: unlimited].")
+@body_options
+@output_options()
+def limits_command(theta, max_g, body, side, a, r, k, g, mu, fmt):
+    """Which tilts alpha give a feasible orbit at theta, and at what speeds (beyond the paper).
+
+    With --theta: the interval(s) of alpha where the wheel fits, Omega^2 > 0
+    and it keeps contact, within --mu and --max-g, with the speed range over
+    each.  Without --theta: the highest orbit possible (smallest theta) with
+    its alpha and speed.  Method: docs/limits.md.
+
+    \b
+    Examples:
+      deathsphere limits --theta 60 --mu 1.2
+      deathsphere limits --mu 1 --max-g 5
+    """
+    from deathsphere.limits import highest_orbit_table, intervals_table
+
+    setup = make_setup(body, side, a, r, k, g, mu)
+    if setup.body != "wheel":
+        raise click.UsageError("limits are computed for a wheel (--body wheel)")
+    if not max_g > 0:
+        raise click.BadParameter("must be > 0 (inf: no limit)", param_hint="'--max-g'")
+    fmt = choose_format(fmt)
+    if theta:
+        table = intervals_table(setup, parse_angles(theta, "theta", 100_000), max_g)
+        title = "Feasible tilts (fit, Omega^2 > 0, contact, mu, g-load)"
+    else:
+        table = highest_orbit_table(setup, max_g)
+        title = "The highest orbit possible (smallest theta with a feasible tilt)"
+    emit([table], fmt, title=title)

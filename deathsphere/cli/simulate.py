@@ -1,0 +1,156 @@
+"""``deathsphere simulate``: the exact equations of motion, integrated."""
+
+from __future__ import annotations
+
+import math
+import sys
+
+import click
+
+from deathsphere.cli.base import (
+    body_options,
+    choose_format,
+    cli,
+    emit,
+    fail,
+    make_setup,
+    one_line,
+    output_options,
+    stderr_console,
+    stdout_console,
+)
+from deathsphere.model import angle_problem
+
+
+@cli.command("simulate")
+@click.option("--theta", required=True, type=float, metavar="DEG",
+              help="Polar angle of the contact point (vertical orbits: the cone angle, 90 = great circle).")
+@click.option("--alpha", type=float, default=None, metavar="DEG", help="Wheel: tilt of the steady orbit.")
+@click.option("--omega3", type=float, default=None, metavar="RAD_S", help="Sphere: spin about the contact normal.")
+@click.option("--omega", type=float, default=None, metavar="RAD_S", help="Sphere: the signed orbital rate instead.")
+@click.option("--branch", type=click.IntRange(0, 1), default=0, show_default=True,
+              help="Sphere with --omega3: root of eq. 55 (0 slow, 1 fast).")
+@click.option("--vertical", is_flag=True, help="A vertical orbit of a wheel, started at the top with --v-top.")
+@click.option("--v-top", "v_top", type=float, default=None, metavar="M_S", help="Vertical: speed at the top.")
+@click.option("--perturb", type=float, default=0.0, show_default=True, metavar="EPS",
+              help="Kick off the steady orbit [rad]: the wheel tilted by EPS about its direction of travel "
+                   "(a sphere: its contact point moved EPS down the meridian); rolling and contact still hold.")
+@click.option("--periods", type=click.FloatRange(0, 1e6, min_open=True), default=20.0, show_default=True,
+              help="How long: periods of the steady orbit (vertical: laps).")
+@click.option("--points-per-period", type=click.IntRange(2, 100_000), default=100, show_default=True)
+@click.option("--method", type=click.Choice(("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")), default="DOP853",
+              show_default=True, help="scipy.integrate.solve_ivp method.")
+@click.option("--rtol", type=click.FloatRange(1e-14, 1e-2), default=1e-10, show_default=True)
+@click.option("--atol", type=click.FloatRange(1e-16, 1.0), default=None, help="[default: = rtol, per scaled component]")
+@click.option("--frame", type=click.Choice(("turning", "lab")), default="turning", show_default=True,
+              help="Integrate in the frame turning with the steady orbit, or in the lab.")
+@click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
+@click.option("--output", type=click.Path(dir_okay=False, writable=True), default=None, metavar="FILE",
+              help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra).")
+@body_options
+@output_options()
+def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, perturb, periods, points_per_period,
+                     method, rtol, atol, frame, summary_only, output, body, side, a, r, k, g, mu, fmt):
+    """Integrate the exact equations of motion from a steady orbit (beyond the paper).
+
+    The rigid-body equations of a wheel or sphere rolling without slipping
+    (eqs. 2-7b in general form, docs/dynamics.md) are integrated with
+    scipy.integrate.solve_ivp.  The run stops with status contact_lost when
+    the normal force reaches zero and slips when the friction needed exceeds
+    --mu; otherwise completed.  On a terminal: the summary (drift of theta
+    and alpha, least normal force, most friction, energy and constraint
+    drift, method and tolerances).  Piped: the time series as CSV, the
+    summary on stderr.
+
+    \b
+    Examples:
+      deathsphere simulate --theta 60 --alpha 10 --periods 20
+      deathsphere simulate --theta 60 --alpha 10 --perturb 0.05 --format csv > run.csv
+      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-6    (unstable: loses contact)
+      deathsphere simulate --vertical --theta 90 --v-top 5.2
+      deathsphere simulate --body sphere --theta 60 --omega3 40
+    """
+    from deathsphere import simulation
+    from deathsphere.render import simulation_view
+
+    setup = make_setup(body, side, a, r, k, g, mu)
+    if setup.body == "particle":
+        raise click.UsageError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)")
+    if vertical:
+        if setup.body != "wheel" or alpha is not None or v_top is None:
+            raise click.UsageError("--vertical simulates a wheel: give --theta and --v-top (no --alpha)")
+        if v_top < 0:
+            raise click.BadParameter("must be >= 0", param_hint="'--v-top'")
+    elif v_top is not None:
+        raise click.UsageError("--v-top is for --vertical orbits")
+    elif setup.body == "wheel" and (alpha is None or omega3 is not None or omega is not None):
+        raise click.UsageError("a wheel's steady orbit needs --alpha DEG")
+    elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
+        raise click.UsageError("a sphere's steady orbit needs exactly one of --omega3 and --omega")
+    problem = angle_problem("theta", theta) or (angle_problem("alpha", alpha) if alpha is not None else "")
+    if problem:
+        raise click.UsageError(problem)
+    for name, value in (("perturb", perturb), ("omega3", omega3), ("omega", omega), ("v-top", v_top)):
+        if value is not None and not math.isfinite(value):
+            raise click.BadParameter("must be a finite number", param_hint=f"'--{name}'")
+    try:
+        if vertical:
+            starts = simulation.vertical_starts(setup, theta, v_top, perturb=perturb)
+        elif setup.body == "wheel":
+            starts = simulation.horizontal_starts(setup, theta, alpha, perturb=perturb)
+        else:
+            starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
+                                                  perturb=perturb)
+        sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
+                                    rtol=rtol, atol=atol, frame=frame)
+    except ValueError as exc:
+        raise click.UsageError(str(exc)) from None
+    fmt = choose_format(fmt)
+    series = []
+
+    def chunks(advance):
+        for table in sim.chunks(progress=advance):
+            if output is not None:
+                series.append(table)
+            yield table
+
+    def run(advance):
+        if fmt == "table" or summary_only:
+            for _ in chunks(advance):
+                pass
+        else:
+            emit(chunks(advance), fmt)
+
+    if sys.stderr.isatty():
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeElapsedColumn,
+        )
+
+        with Progress(TextColumn("simulate"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                      console=stderr_console(), transient=True) as progress:
+            task = progress.add_task("simulate", total=sim.n_chunks)
+            run(lambda done, total: progress.update(task, completed=done, total=total))
+    else:
+        run(lambda done, total: None)
+    summary = sim.summary()
+    if fmt == "table":
+        stdout_console().print(simulation_view(summary))
+    elif summary_only:
+        emit([summary], fmt)
+    else:
+        stderr_console().print(simulation_view(summary))
+    if output is not None:
+        from deathsphere.plot import PlotExtraMissing
+        from deathsphere.plot_simulation import plot_simulation
+
+        try:
+            plot_simulation(simulation.concat_tables(series), summary, output=output)
+        except PlotExtraMissing as exc:
+            fail(one_line(str(exc)))
+        except ValueError as exc:
+            raise click.BadParameter(str(exc), param_hint="'--output'") from None
+        stderr_console().print(f"deathsphere: wrote {output}")
