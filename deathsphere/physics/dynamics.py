@@ -150,7 +150,7 @@ def _motion(state, p: BodyParams):
     zhat[2] = 1.0
     rhs = (_cross(e3, _cross(e3dot, w)) + (g / a) * _cross(e3, zhat)
            - np.where(wheel, k, 0.0) * w1 * _cross(w, e1h))
-    # closed-form inverse of M (docs/dynamics.md eq. D7)
+    # closed-form inverse of M (docs/dynamics.md eq. D5)
     with np.errstate(divide="ignore", invalid="ignore"):
         inv_k = np.where(k > 0, 1.0 / np.where(k > 0, k, 1.0), np.nan)
     r3 = _dot(e3, rhs)
@@ -239,7 +239,7 @@ def constraint_residuals(state, params: BodyParams):
     ``contact``      |p| - r [m], p = c + a e3 the contact point
     ``contact_rate`` d|p|/dt [m/s] computed from the equations of motion
                      (zero identically: the flow is tangent to the contact
-                     surface; a check of the geometry, eq. D5)
+                     surface; a check of the geometry, eq. D6)
     ``slip``         |v_cm - a e3 x w| [m/s] with v_cm = dc/dt of :func:`rhs`;
                      zero by construction (rolling is built into the state,
                      eq. 6), reported so a simulator can log it uniformly.
@@ -309,7 +309,7 @@ def project(state, params: BodyParams):
 def state_from_contact(p_hat, e1, w, params: BodyParams):
     """State with contact point r * p_hat, axis e1 and angular velocity w.
 
-    Beyond the paper (docs/dynamics.md sec. 2, eq. D3): for a wheel
+    Beyond the paper (docs/dynamics.md sec. 2, eq. D2): for a wheel
     e3 = s p_perp/|p_perp| (s = +1 inside, -1 outside) with p_perp the
     projection of p on the wheel plane, then c = p - a e3; for a sphere
     c = p - a e3 with e3 = s p_hat.  Inputs (3, ...) arrays (p_hat and e1
