@@ -32,11 +32,15 @@ COLUMNS = (
     "accel_g", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
     # extensions (appended; see CHANGELOG.md)
     "mu_available", "omega3_rad_s", "branch",
+    "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s",
 )
+
+#: Columns filled by :func:`add_stability` (empty where not computed).
+STABILITY_COLUMNS = COLUMNS[COLUMNS.index("stability"):]
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
 #: float64 (input_row is int).
-TEXT_COLUMNS = frozenset({"body", "side", "status", "reason"})
+TEXT_COLUMNS = frozenset({"body", "side", "status", "reason", "stability", "stability_method"})
 
 #: Physics output key -> contract column.
 _PHYSICS_COLUMNS = {
@@ -349,14 +353,16 @@ def _particle(req, rows):
 SOLVERS = {"wheel": _wheel, "sphere": _sphere, "particle": _particle}
 
 
-def evaluate(req: dict) -> Table:
+def evaluate(req: dict, stability: bool = True) -> Table:
     """Evaluate a request batch, in input order.
 
     Every request yields one row, except where one request has several
     answers, each a row with the request's ``input_row`` and its ``branch``:
     a sphere given its spin omega3 (the roots of eq. (55): 0 slow, 1 fast)
     and a wheel given its speed or rate (every alpha of eq. (29), in
-    increasing alpha; none: one ``no_orbit`` row).  Invalid requests come out with
+    increasing alpha; none: one ``no_orbit`` row).  With ``stability`` the
+    exact linear stability of every orbit that exists with contact (status
+    ok or slips) fills the stability columns (:func:`add_stability`).  Invalid requests come out with
     status ``invalid`` and the reason; the rest are computed, grouped by body
     (a handful of vectorised calls, no loop over orbits).
     """
@@ -415,7 +421,53 @@ def evaluate(req: dict) -> Table:
     # inf ("no limit") is not representable in JSON: empty/null means no --mu given
     columns["mu_available"] = np.where(np.isinf(req["mu"][pick]), np.nan, req["mu"][pick])
     columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
+    columns.update(add_stability(columns) if stability else _no_stability(len(pick)))
     return Table({name: columns[name] for name in COLUMNS})
+
+
+def _no_stability(n: int) -> dict:
+    blank = np.full(n, "", dtype=object)
+    return {"stability": blank, "stability_method": blank.copy(), "growth_rate_1_s": np.full(n, np.nan),
+            "freq_slow_rad_s": np.full(n, np.nan), "freq_fast_rad_s": np.full(n, np.nan)}
+
+
+#: ``stability_method`` values.
+EXACT_METHOD = "exact-linearisation"
+
+
+def add_stability(columns: dict) -> dict:
+    """The stability columns for rows whose steady orbit exists with contact.
+
+    Beyond the paper (docs/stability.md): the exact equations of motion
+    linearised about the orbit in the frame turning with it, with the neutral
+    modes of the symmetry and of the family of orbits removed; growth rate
+    = max Re(eigenvalue) [1/s], the two nutation frequencies [rad/s] in the
+    turning frame.  A sliding particle is not analysed (``unknown``).
+    """
+    from deathsphere.physics import stability as exact
+
+    n = len(columns["status"])
+    out = _no_stability(n)
+    live = np.isin(columns["status"], ("ok", "slips"))
+    body, outside = columns["body"], columns["side"] == "outside"
+    theta = np.deg2rad(columns["theta_deg"])
+    par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}
+    for name in ("wheel", "sphere"):
+        rows = np.flatnonzero(live & (body == name))
+        if not rows.size:
+            continue
+        second = np.deg2rad(columns["alpha_deg"][rows]) if name == "wheel" else columns["omega_rad_s"][rows]
+        solver = exact.wheel_stability if name == "wheel" else exact.sphere_stability
+        res = solver(theta[rows], second, *(par[key][rows] for key in ("a", "r", "k", "g")), outside=outside[rows])
+        out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]
+        out["stability_method"][rows] = EXACT_METHOD
+        out["growth_rate_1_s"][rows] = res["growth_rate"]
+        out["freq_slow_rad_s"][rows] = res["freq_slow"]
+        out["freq_fast_rad_s"][rows] = res["freq_fast"]
+    rows = np.flatnonzero(live & (body == "particle"))
+    out["stability"][rows] = "unknown"
+    out["stability_method"][rows] = "not analysed (sliding particle)"
+    return out
 
 
 def horizontal_orbit(setup: Setup, theta_deg, alpha_deg) -> Table:

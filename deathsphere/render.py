@@ -145,9 +145,15 @@ ORBIT_FIELDS = (
     ("normal_per_mass_m_s2", "normal force / m", "m/s²", "eq. 32"),
     ("friction_per_mass_m_s2", "friction / m (+ down)", "m/s²", "eq. 32"),
     ("mu_required", "μ required", "", "eq. 35"),
+    ("growth_rate_1_s", "growth rate (max Re λ)", "1/s", "exact"),
+    ("freq_slow_rad_s", "nutation, slow (turning frame)", "rad/s", "exact"),
+    ("freq_fast_rad_s", "nutation, fast (turning frame)", "rad/s", "exact"),
 )
 
 OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
+
+STABILITY_STYLE = {"stable": "[green]stable[/green]", "unstable": "[red]unstable[/red]",
+                   "unknown": "[magenta]unknown[/magenta]"}
 
 #: Labels that differ by body: (body, column) -> (label, source); None hides the row.
 BODY_LABELS = {
@@ -194,6 +200,9 @@ def one_orbit_table(table: Table, row: int = 0) -> RichTable:
             out.add_row(override[0], format_number(get[col], 5), unit, override[1])
     mu = get.get("mu_available")
     out.add_row("μ available", "∞" if _isnan(mu) else format_number(mu), "", "--mu")
+    if get.get("stability"):
+        out.add_row("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "",
+                    get["stability_method"])
     out.add_row("status", status_text(get["status"]), "", "")
     out.caption = f"{get['status']}: {get['reason'] or OK_REASON}"
     out.caption_justify = "left"
@@ -209,16 +218,16 @@ def _isnan(v) -> bool:
 SUMMARY_HEADERS = {
     "input_row": "#", "theta_deg": "θ°", "alpha_deg": "α°", "branch": "br", "omega3_rad_s": "ω₃\nrad/s",
     "status": "status", "omega_rad_s": "Ω\nrad/s", "v_cm_m_s": "v_cm\nm/s", "spin_rad_s": "ω₁\nrad/s",
-    "accel_g": "accel\ng", "mu_required": "μ\nrequired",
+    "accel_g": "accel\ng", "mu_required": "μ\nrequired", "stability": "stability",
 }
 SUMMARY_COLUMNS = {
-    "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s", "spin_rad_s",
-              "accel_g", "mu_required"),
+    "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s",
+              "accel_g", "mu_required", "stability"),
     "sphere": ("input_row", "theta_deg", "branch", "omega3_rad_s", "status", "omega_rad_s", "v_cm_m_s",
-               "accel_g", "mu_required"),
+               "mu_required", "stability"),
     "particle": ("input_row", "theta_deg", "status", "omega_rad_s", "v_cm_m_s", "accel_g"),
     "mixed": ("input_row", "theta_deg", "alpha_deg", "branch", "status", "omega_rad_s", "v_cm_m_s",
-              "accel_g", "mu_required"),
+              "mu_required", "stability"),
 }
 
 
@@ -237,6 +246,8 @@ def many_orbits_table(table: Table, title: str | None = None) -> Group:
             v = cols[col][i]
             if col == "status":
                 cells.append(status_text(v))
+            elif col == "stability":
+                cells.append(STABILITY_STYLE.get(v, v))
             elif col in TEXT_COLUMNS:
                 cells.append(str(v))
             else:
@@ -327,6 +338,7 @@ VERTICAL_FIELDS = (
     ("mu_required", "μ required (at the worst point)", "", "eq. 28b"),
     ("phi_slip_deg", "first slip at φ (with --mu)", "deg", ""),
     ("phi_leave_deg", "leaves the surface at φ", "deg", "eq. 82"),
+    ("growth_rate_1_s", "growth rate of a perturbation", "1/s", "floquet"),
 )
 
 
@@ -343,6 +355,9 @@ def vertical_view(table: Table):
         for col, label, unit, source in VERTICAL_FIELDS:
             if not _isnan(get[col]):
                 out.add_row(label, format_number(get[col], 5), unit, source)
+        if get.get("stability"):
+            out.add_row("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "",
+                        get["stability_method"])
         out.add_row("status", status_text(get["status"]), "", "")
         out.caption = f"{get['status']}: {get['reason'] or 'keeps contact all round with enough friction'}"
         out.caption_justify = "left"
@@ -414,3 +429,46 @@ def simulation_view(summary: Table):
     out.caption = f"{status}: {get['reason']}" if get.get("reason") else None
     out.caption_justify = "left"
     return out
+
+
+def _cell(v, digits=4):
+    if v is None:
+        return "—"
+    if isinstance(v, str):
+        return STABILITY_STYLE.get(v, v)
+    return format_number(v, digits)
+
+
+def stability_view(table: Table, setup) -> Group:
+    """``deathsphere stability``: the exact block, then the paper's results."""
+    get = table.records()
+    head = (f"stability of a wheel {setup.side}, θ = {format_number(get[0]['theta_deg'])}°, "
+            f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(setup.a)} m, "
+            f"r = {format_number(setup.r)} m, k = {format_number(setup.k)})")
+    exact = RichTable(title=head + "\nexact: the equations of motion linearised about the orbit",
+                      box=box.SIMPLE_HEAVY, title_justify="left")
+    for col in ("quantity", "value", "units"):
+        exact.add_column(col, justify="right" if col == "value" else "left")
+    for row in get:
+        if row["source"] == "exact":
+            exact.add_row(row["quantity"], _cell(row["exact"], 5), row["units"])
+    paper = RichTable(title="the paper's results (printed, corrected, exact; deviation = printed vs exact)",
+                      box=box.SIMPLE_HEAVY, title_justify="left")
+    for col in ("result", "eq.", "applies", "printed", "corrected", "exact", "deviation"):
+        paper.add_column(col, justify="left" if col in ("result", "eq.") else "right")
+    notes = []
+    for row in get:
+        if row["source"] == "exact":
+            continue
+        verdict = row["quantity"].startswith("verdict")
+        dev = row["deviation"]
+        dev_text = "—" if dev is None else (("differs" if dev else "agrees") if verdict else f"{100 * dev:+.1f} %")
+        validity = row["validity"]
+        symbol = "a/r'" if row["source"].endswith("small wheel") else "r'/a"
+        applies = ("yes" if row["applies"] else "no") + (f" ({symbol} {validity:.3g})" if validity is not None else "")
+        paper.add_row(f"{row['source'][7:]}: {row['quantity']}", row["equation"], applies,
+                      _cell(row["paper"]), _cell(row["corrected"]), _cell(row["exact"]), dev_text)
+        if row["note"] not in notes:
+            notes.append(row["note"])
+    return Group(exact, paper, *[f"[dim]{n}[/dim]" for n in notes], "[dim]errata E1-E9: docs/stability.md, "
+                                                                        "docs/errata.md[/dim]")

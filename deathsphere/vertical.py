@@ -36,7 +36,10 @@ VERTICAL_FIELDS = {
 COLUMNS = ORBIT_COLUMNS[: ORBIT_COLUMNS.index("mu_available") + 1] + (
     "v_top_min_m_s", "omega_top_min_rad_s", "v_bottom_m_s", "phi_worst_deg", "mu_top",
     "normal_top_per_mass_m_s2", "normal_bottom_per_mass_m_s2", "phi_leave_deg", "phi_slip_deg",
+    "stability", "stability_method", "growth_rate_1_s",
 )
+
+FLOQUET_METHOD = "floquet"
 
 #: Point-by-point columns (``--points N``).
 POINT_COLUMNS = (
@@ -85,8 +88,14 @@ def _top_rate(req, rows):
         return theta, outside, np.where(np.isnan(req["v_top"][rows]), np.abs(req["phidot_top"][rows]), from_speed)
 
 
-def evaluate_vertical(req: dict) -> Table:
-    """One summary row per request, in input order (invalid rows kept, with reasons)."""
+def evaluate_vertical(req: dict, stability: bool = True) -> Table:
+    """One summary row per request, in input order (invalid rows kept, with reasons).
+
+    With ``stability``, orbits that keep contact (status ok or slips; inside:
+    outside no vertical orbit closes) get their exact stability from the
+    Floquet multipliers of the linearised equations of motion over one lap
+    (beyond the paper, docs/stability.md sec. 2); ``growth_rate_1_s`` is
+    log(max |multiplier|) / lap time."""
     n = len(req["theta"])
     reason_words = _validate(req)
     rows = np.flatnonzero(reason_words == "")
@@ -103,7 +112,20 @@ def evaluate_vertical(req: dict) -> Table:
             out[col][rows] = np.rad2deg(res[key])
         status[rows] = res["status"]
         reason[rows] = REASON_TEXT[res["reason"]]
+    verdict = np.full(n, "", dtype=object)
+    method = np.full(n, "", dtype=object)
+    growth = np.full(n, np.nan)
+    live = np.flatnonzero(np.isin(status, (Status.OK, Status.SLIPS)) & (req["side"] == "inside"))
+    if stability and live.size:
+        from deathsphere.physics.stability import VERDICT_LABELS, vertical_floquet
+
+        floquet = vertical_floquet(np.deg2rad(req["theta"][live]), out["omega_rad_s"][live], req["a"][live],
+                                   req["r"][live], req["k"][live], req["g"][live])
+        verdict[live] = VERDICT_LABELS[floquet["verdict"]]
+        method[live] = FLOQUET_METHOD
+        growth[live] = floquet["growth_rate"]
     columns = {
+        "stability": verdict, "stability_method": method, "growth_rate_1_s": growth,
         "input_row": req["input_row"].astype(np.int64), "body": req["body"], "side": req["side"],
         "theta_deg": req["theta"], "alpha_deg": req["alpha"], "a_m": req["a"], "r_m": req["r"],
         "k": req["k"], "g_m_s2": req["g"], "status": STATUS_LABELS[status], "reason": reason,

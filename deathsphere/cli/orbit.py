@@ -33,6 +33,13 @@ from deathsphere.grid import RangeError, grid_chunks, grid_size, parse_many
 from deathsphere.inputs import InputError, read_requests
 from deathsphere.model import Table, evaluate, make_requests
 
+def stability_option(f):
+    return click.option(
+        "--stability/--no-stability", "with_stability", default=True, show_default=True,
+        help="Fill the stability columns from the exact linearisation (docs/stability.md); "
+             "--no-stability leaves them empty and runs faster.")(f)
+
+
 ORBIT_TITLES = {
     "wheel": "Horizontal orbits of a wheel (McDonald 1993, eqs. 0, 29-36)",
     "sphere": "Horizontal orbits of a rolling sphere (McDonald 1993, eqs. 55-59)",
@@ -79,8 +86,9 @@ def check_body_inputs(body: str, alpha, omega3, omega, speed) -> None:
               help="CSV of requests, one orbit per row; its header names the options "
                    "(theta, alpha, a, r, k, g, mu, body, side, omega3, omega). '-' reads stdin.")
 @body_options
+@stability_option
 @output_options()
-def orbit(theta, alpha, omega3, omega, speed, input_file, body, side, a, r, k, g, mu, fmt):
+def orbit(theta, alpha, omega3, omega, speed, input_file, body, side, a, r, k, g, mu, with_stability, fmt):
     """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, g-load.
 
     All combinations of the --theta and --alpha values are evaluated.  Each
@@ -139,7 +147,7 @@ def orbit(theta, alpha, omega3, omega, speed, input_file, body, side, a, r, k, g
         _, grid = next(grid_chunks(axes, grid_size(axes)))
         defaults.update(grid)
         req = make_requests(grid_size(axes), **defaults)
-    table = evaluate(req)
+    table = evaluate(req, stability=with_stability)
     emit([table], fmt, title=ORBIT_TITLES[setup.body] if input_file is None else "Horizontal orbits")
     if (table["status"] == "invalid").any():
         n_bad = int((table["status"] == "invalid").sum())
@@ -178,8 +186,9 @@ STATUSES = ("ok", "no_fit", "no_orbit", "no_contact", "slips")
               help="Keep only rows with this status (repeatable), e.g. --only ok.")
 @click.option("--chunk-size", type=click.IntRange(1, 10_000_000), default=16384, show_default=True,
               help="Orbits evaluated per chunk; memory stays flat whatever the grid size.")
+@stability_option
 @output_options(("csv", "ndjson", "json"))
-def sweep(theta, alpha, a_values, r_values, k_values, body, side, g, mu, only, chunk_size, fmt):
+def sweep(theta, alpha, a_values, r_values, k_values, body, side, g, mu, only, chunk_size, with_stability, fmt):
     """Stream a grid of orbits (all combinations) as CSV or NDJSON.
 
     Rows come out in grid order (a, r, k, theta, alpha; alpha fastest) as
@@ -215,7 +224,7 @@ def sweep(theta, alpha, a_values, r_values, k_values, body, side, g, mu, only, c
             n = len(grid["theta"])
             req = make_requests(n, input_row=np.arange(first + 1, first + n + 1), body=body, side=side,
                                 g=g, mu=mu, **grid)
-            table = evaluate(req)
+            table = evaluate(req, stability=with_stability)
             if keep:
                 mask = np.isin(table["status"], list(keep))
                 table = Table({name: col[mask] for name, col in table.columns.items()})

@@ -48,8 +48,10 @@ from deathsphere.inputs import InputError, read_table
               help="Print the orbit point by point at N azimuths phi from the top (0) to 360 deg.")
 @click.option("--input", "input_file", type=click.File("r"), default=None, metavar="FILE|-",
               help="CSV of requests (theta, v_top or phidot_top, side, a, r, k, g, mu); '-' reads stdin.")
+@click.option("--stability/--no-stability", "with_stability", default=True, show_default=True,
+              help="Exact stability by Floquet analysis over one lap (docs/stability.md).")
 @output_options()
-def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, input_file, fmt):
+def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, input_file, with_stability, fmt):
     """Vertical orbit of a wheel: contact all round (eq. 28a), forces and friction (eqs. 27-28b).
 
     Reports the least top speed for contact, the normal force and friction
@@ -102,7 +104,7 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
         table = vertical_points(req, points)
         emit([table], fmt, title="Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)")
     else:
-        table = evaluate_vertical(req)
+        table = evaluate_vertical(req, stability=with_stability)
         if fmt == "table":
             from deathsphere.render import vertical_view
 

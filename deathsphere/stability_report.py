@@ -1,0 +1,63 @@
+"""One orbit's stability: the exact answer beside each of the paper's results.
+
+Beyond the paper for the exact part (docs/stability.md sec. 1); the paper's
+results are eqs. (133)-(138) (equator), (202)-(207) (small wheels) and (208)
+(near the poles), each as printed and as corrected, with where it applies
+and how far it is from the exact value.  Physics:
+:func:`deathsphere.physics.stability.compare_with_paper`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from deathsphere.model import Setup, Table
+from deathsphere.physics import stability as exact_stability
+
+COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", "applies", "validity",
+           "paper", "corrected", "exact", "deviation", "note")
+
+_VERDICT = exact_stability.VERDICT_LABELS
+
+
+def _value(x, verdict: bool):
+    x = np.asarray(x).item()
+    if verdict:
+        return str(_VERDICT[int(x)])
+    return None if (isinstance(x, float) and math.isnan(x)) else float(x)
+
+
+def stability_report(setup: Setup, theta_deg: float, alpha_deg: float) -> Table:
+    """Rows: the exact growth rate, nutation frequencies and verdict, then
+    every paper result (``applies`` says whether its premise holds here;
+    ``validity`` is the parameter that decides it: a/r' for small wheels,
+    applying up to SMALL_WHEEL_VALIDITY, and |r'|/a near the poles, applying
+    up to 1; ``deviation`` is (paper - exact)/exact, or 1/0 for a verdict
+    that differs/agrees)."""
+    theta, alpha = math.radians(theta_deg), math.radians(alpha_deg)
+    exact, results = exact_stability.compare_with_paper(theta, alpha, setup.a, setup.r, setup.k, setup.g,
+                                                        outside=setup.side == "outside")
+    rows = []
+    for quantity, key, units in (("growth rate, max Re(eigenvalue)", "growth_rate", "1/s"),
+                                 ("slow nutation frequency", "freq_slow", "rad/s"),
+                                 ("fast nutation frequency", "freq_fast", "rad/s"),
+                                 ("verdict", "verdict", "")):
+        rows.append({"source": "exact", "equation": "2-7b linearised", "quantity": quantity, "units": units,
+                     "applies": True, "validity": None, "paper": None, "corrected": None,
+                     "exact": _value(exact[key], key == "verdict"), "deviation": None,
+                     "note": "docs/stability.md sec. 1 (frequencies in the frame turning with the orbit)"})
+    for name, res in results.items():
+        verdict = name.endswith("verdict")
+        validity = np.asarray(res["validity"]).item()
+        rows.append({"source": f"paper: {name.rsplit('_', 1)[0].replace('_', ' ')}", "equation": res["equation"],
+                     "quantity": res["quantity"], "units": res["units"], "applies": bool(res["applies"]),
+                     "validity": None if math.isnan(validity) else validity,
+                     "paper": _value(res["paper"], verdict), "corrected": _value(res["corrected"], verdict),
+                     "exact": _value(res["exact"], verdict),
+                     "deviation": _value(res["deviation"], False), "note": res["note"]})
+    table = {name: np.array([row.get(name) for row in rows], dtype=object) for name in COLUMNS}
+    table["theta_deg"] = np.full(len(rows), float(theta_deg))
+    table["alpha_deg"] = np.full(len(rows), float(alpha_deg))
+    return Table(table)
