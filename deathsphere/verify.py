@@ -349,6 +349,186 @@ def _figure():
                    f"the three curves ({unexplained} unexplained)")
 
 
+# -- sec. 2.3: stability, against the exact linearisation and the simulator ----------
+
+def _exact():
+    from deathsphere.physics import stability
+
+    return stability
+
+
+@claim("STAB-V", "2.3.1", "eqs. 100-106", "all vertical orbits for which the wheel keeps contact are stable")
+def _stab_vertical():
+    st = _exact()
+    # a/r = 0.1 grid: stable; a/r = 0.3, k = 1/2: a resonance tongue near the contact threshold
+    th = deg(np.array([30.0, 60.0, 90.0]))
+    rp = R * np.sin(th) - A
+    small = st.vertical_floquet(th, 1.5 * np.sqrt(G / rp), A, R, K, G)
+    big_a, theta_big = 0.9, deg(27.3)
+    rate = 1.2 * np.sqrt(G / (R * np.sin(theta_big) - big_a))
+    big = st.vertical_floquet(theta_big, rate, big_a, R, K, G)
+    small_ok = bool(np.all(small["verdict"] == st.Verdict.STABLE))
+    big_unstable = int(np.asarray(big["verdict"])) == st.Verdict.UNSTABLE
+    return Finding("refuted" if big_unstable or not small_ok else "confirmed", f"Floquet: a/r = 0.1 orbits stable ({small_ok}); a/r = 0.3, k = 1/2, theta = 27.3 deg, "
+                            f"top rate 1.2 sqrt(g/r'): max|multiplier| = {float(np.asarray(big['max_abs'])):.3f} "
+                            f"(a resonance tongue: unstable although in contact)")
+
+
+@claim("E103", "2.3.1", "eqs. 103, 103a", "A w^4 - B w^2 - C = 0 with real positive roots for C > -B^2/4A")
+def _eq103():
+    st = _exact()
+    v = st.vertical_paper(deg(70.0), 4.0, A, R, K, G)
+    printed_negative = bool(np.asarray(v["omega2_printed"])[1].real < 0)
+    corrected_positive = bool(np.all(np.asarray(v["omega2"]).real > 0))
+    return Finding("corrected" if printed_negative and corrected_positive else "refuted",
+                   f"the determinant of eq. 102 is -(A w^4 - B w^2 + C): with the printed sign a root w^2 is "
+                   f"negative ({printed_negative}) on an orbit in contact (theta = 70 deg, top rate 4 rad/s); "
+                   f"corrected, both are positive ({corrected_positive}) and stability needs C > 0 and B^2 >= 4AC")
+
+
+@claim("STAB-EQ", "2.3.3", "eqs. 133-138", "all steady orbits on the equator are stable")
+def _stab_equator():
+    from deathsphere import simulation
+
+    st = _exact()
+    alpha = deg(np.arange(1.0, 84.0, 0.25))
+    res = st.wheel_stability(np.pi / 2, alpha, A, R, K, G)
+    unstable = np.rad2deg(alpha[res["verdict"] == st.Verdict.UNSTABLE])
+    sim = simulation.Simulation(simulation.horizontal_starts(Setup(), 90.0, 80.0, perturb=1e-6), periods=2)
+    for _ in sim.chunks():
+        pass
+    run = sim.summary()
+    verdict = "refuted" if unstable.size else "confirmed"
+    return Finding(verdict, f"a/r = 0.1: exact linearisation unstable for alpha >= {unstable.min():.2f} deg "
+                            f"(orbits fit up to 84.3); the simulator, kicked by 1e-6 rad at alpha = 80 deg: "
+                            f"{run['status'][0]} after {float(run['periods_simulated'][0]):.2f} periods")
+
+
+@claim("E133", "2.3.3", "eqs. 133-138", "the slow and fast nutation frequencies of orbits on the equator")
+def _eq133():
+    st = _exact()
+    alpha = deg(np.arange(5.0, 70.0, 5.0))
+    exact = st.wheel_stability(np.pi / 2, alpha, A, R, K, G)
+    paper = st.equator_paper(alpha, A, R, K, G)
+    off = np.abs(np.asarray(paper["freq_slow"]) / exact["freq_slow"] - 1)
+    return Finding("refuted" if np.median(off) > 0.05 else "confirmed",
+                   f"printed slow frequencies off the exact ones by {100 * np.median(off):.0f} % (median) to "
+                   f"{100 * off.max():.0f} % for a/r = 0.1, alpha 5..65 deg: eq. 116 drops a first-order yaw "
+                   f"of axis 3 (E4)")
+
+
+@claim("STAB-SMALL", "2.3.4", "eqs. 201-207", "all orbits of small wheels (a << r') are stable")
+def _stab_small():
+    st = _exact()
+    th, al = np.meshgrid(deg(np.arange(10.0, 176.0, 5.0)), deg(np.arange(1.0, 90.0, 1.0)), indexing="ij")
+    h = wheel.horizontal_orbit(th, al, 0.01, 1.0, 0.5, G)
+    ok = (h["status"] == Status.OK) & (0.01 / np.abs(np.sin(th) - 0.01 * np.cos(al)) <= 0.05)
+    res = st.wheel_stability(th[ok], al[ok], 0.01, 1.0, 0.5, G)
+    bad = np.rad2deg(al[ok][res["verdict"] == st.Verdict.UNSTABLE])
+    below_85 = int(np.count_nonzero(bad < 85))
+    return Finding("confirmed" if below_85 == 0 else "refuted",
+                   f"a/r = 0.01, a/r' <= 0.05: {int(ok.sum()) - bad.size}/{int(ok.sum())} stable; the unstable ones "
+                   f"all have alpha >= {bad.min() if bad.size else float('nan'):.0f} deg, where Omega -> 0 "
+                   f"(eq. 201 also needs a << r' cot alpha)")
+
+
+@claim("E207", "2.3.4", "eq. 207", "small wheels nutate at w^2 = Omega^2 tan(alpha) (1 + sin 2 alpha)")
+def _eq207():
+    st = _exact()
+    th, al = np.meshgrid(deg([40.0, 60.0, 90.0, 120.0, 150.0]), deg([5.0, 20.0, 35.0]), indexing="ij")
+    exact = st.wheel_stability(th, al, 1e-4, 1.0, 0.25, G)
+    paper = st.small_wheel_paper(th, al, 1e-4, 1.0, 0.25, G)
+    corrected = st.small_wheel_corrected(th, al, 1e-4, 1.0, 0.25, G)
+    off = np.abs(paper["freq"] / exact["freq_slow"] - 1)
+    fixed = np.abs(corrected["freq_slow"] / exact["freq_slow"] - 1)
+    return Finding("refuted" if np.median(off) > 0.05 else "confirmed",
+                   f"a/r = 1e-4: eq. 207 off the exact slow frequency by {100 * np.median(off):.0f} % (median), up to "
+                   f"{100 * off.max():.0f} %; w^2 = Omega^2 [1 + 3 sin a tan a sin th / sin(th - a)] is within "
+                   f"{100 * fixed.max():.2f} % (E5)")
+
+
+@claim("STAB-LARGE", "2.3.4", "conjecture", "orbits of large wheels above the equator are stable")
+def _stab_large():
+    st = _exact()
+    th, al = np.meshgrid(deg(np.arange(20.0, 90.0, 2.0)), deg(np.arange(1.0, 89.0, 1.0)), indexing="ij")
+    h = wheel.horizontal_orbit(th, al, 0.3, 1.0, 0.5, G)
+    ok = h["status"] == Status.OK
+    res = st.wheel_stability(th[ok], al[ok], 0.3, 1.0, 0.5, G)
+    share = float(np.mean(res["verdict"] == st.Verdict.STABLE))
+    return Finding("refuted" if share < 0.99 else "confirmed",
+                   f"a/r = 0.3, k = 1/2, theta < 90 deg: {100 * share:.0f} % of {int(ok.sum())} feasible orbits "
+                   f"stable; the steeper tilts at each theta are unstable")
+
+
+@claim("E208", "2.3.4", "eq. 208", "a wheel rolling on a plane is stable for Omega^2 > g/((2k+1) a)")
+def _eq208():
+    st = _exact()
+    out = []
+    for k in (0.25, 0.5):
+        a, r, th = 1.0, 1e5, np.pi - 1e-3
+        al = deg(np.linspace(89.5, 89.95, 2001))
+        res = st.wheel_stability(th, al, a, r, k, G)
+        w1sq = ((r * np.sin(th) - a * np.cos(al)) * res["omega"]) ** 2 * a / G
+        i = np.flatnonzero((res["verdict"][:-1] == st.Verdict.STABLE) & (res["verdict"][1:] == st.Verdict.UNSTABLE))
+        out.append((k, float(w1sq[i[0]]) if i.size else float("nan")))
+    half = all(abs(x * 2 * (2 * k + 1) - 1) < 0.03 for k, x in out)
+    return Finding("corrected" if half else "refuted",
+                   "exact threshold of a disc rolling on a (locally) flat floor, w1^2 a/g: " +
+                   "; ".join(f"k = {k:g}: {x:.4f} (printed {1 / (2 * k + 1):.4f})" for k, x in out) +
+                   ": half the printed value, g/(2(2k+1)a) (E6)")
+
+
+@claim("STAB-OUT", "3", "after eq. 84", "outside, orbits with alpha near pi + theta appear to be unstable")
+def _stab_outside():
+    st = _exact()
+    th = deg(np.arange(10.0, 80.0, 5.0))[:, None]
+    al = th + np.pi - deg(np.arange(0.5, 10.0, 0.5))[None, :]
+    th, al = np.broadcast_arrays(th, al)
+    h = wheel.horizontal_orbit(th, al, A, R, K, G, outside=True)
+    ok = h["status"] == Status.OK
+    res = st.wheel_stability(th[ok], al[ok], A, R, K, G, outside=True)
+    share = float(np.mean(res["verdict"] == st.Verdict.STABLE))
+    near90 = deg(np.arange(80.0, 89.9, 0.5))
+    th2 = np.full_like(near90, deg(40.0))
+    h2 = wheel.horizontal_orbit(th2, near90, A, R, K, G, outside=True)
+    res2 = st.wheel_stability(th2[h2["status"] == Status.OK], near90[h2["status"] == Status.OK], A, R, K, G,
+                              outside=True)
+    share90 = float(np.mean(res2["verdict"] == st.Verdict.UNSTABLE)) if res2["verdict"].size else float("nan")
+    return Finding("refuted" if share > 0.5 else "confirmed",
+                   f"within 10 deg of pi + theta {100 * share:.0f} % of {int(ok.sum())} feasible orbits are stable "
+                   f"(a spinning wheel standing nearly upright on the ball); next to alpha = 90 deg "
+                   f"{100 * share90:.0f} % are unstable, as the paper says")
+
+
+@claim("STAB-SPH", "4, 5", "eqs. 46, 55", "horizontal orbits of a rolling sphere are stable (Milne)")
+def _stab_sphere():
+    st = _exact()
+    out = []
+    for outside in (False, True):
+        th = deg(np.linspace(5, 175, 35))[:, None]
+        res = sphere.sphere_orbit(th, np.linspace(-150, 150, 31)[None, :], A, R, 0.4, G, outside=outside)
+        ok = res["status"] == Status.OK
+        theta = np.broadcast_to(th[..., None], ok.shape)[ok]
+        stab = st.sphere_stability(theta, res["omega"][ok], A, R, 0.4, G, outside=outside)
+        out.append((int(ok.sum()), int(np.count_nonzero(stab["verdict"] == st.Verdict.STABLE))))
+    good = all(n == s for n, s in out)
+    return Finding("confirmed" if good else "refuted",
+                   f"exact linearisation: inside {out[0][1]}/{out[0][0]}, outside {out[1][1]}/{out[1][0]} orbits "
+                   f"in contact stable")
+
+
+@claim("T1-stable", "abstract, 2.2.2", "Table 1", "stable orbits lie wholly above the equator (e.g. Table 1)")
+def _table1_stable():
+    st = _exact()
+    theta = deg(np.array([float(r[0]) for r in PRINTED]))
+    alpha = deg(np.array([float(r[1]) for r in PRINTED]))
+    res = st.wheel_stability(theta, alpha, A, R, K, G)
+    n = int(np.count_nonzero(res["verdict"] == st.Verdict.STABLE))
+    return Finding("confirmed" if n == 10 else "refuted",
+                   f"{n}/10 Table 1 orbits stable (six of them above the equator); slow/fast nutation at "
+                   f"(60, 10): {res['freq_slow'][3]:.2f}/{res['freq_fast'][3]:.2f} rad/s")
+
+
 def run(ids: list[str] | None = None, progress: Callable[[Claim], None] | None = None) -> Table:
     """Check the selected claims (all by default), in the order of the paper;
     ``progress`` is called with each claim before it is checked."""

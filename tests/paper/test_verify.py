@@ -17,6 +17,10 @@ EXPECTED = {
     "E28a": "confirmed", "E28b": "corrected", "E28": "corrected", "E82": "confirmed",
     "E56": "confirmed", "E58": "confirmed", "E58-text": "corrected", "E57": "corrected",
     "E59": "confirmed", "S5-spin": "corrected", "S3-class": "corrected", "FIG": "confirmed",
+    # sec. 2.3 (docs/stability.md sec. 6, docs/errata.md E1-E9)
+    "STAB-V": "refuted", "E103": "corrected", "STAB-EQ": "refuted", "E133": "refuted",
+    "STAB-SMALL": "confirmed", "E207": "refuted", "STAB-LARGE": "refuted", "E208": "corrected",
+    "STAB-OUT": "refuted", "STAB-SPH": "confirmed", "T1-stable": "confirmed",
 }
 
 
