@@ -33,10 +33,8 @@ COLUMNS = (
     # extensions (appended; see CHANGELOG.md)
     "mu_available", "omega3_rad_s", "branch",
     "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s",
+    "omega3_min_real_rad_s", "omega3_min_contact_rad_s",
 )
-
-#: Columns filled by :func:`add_stability` (empty where not computed).
-STABILITY_COLUMNS = COLUMNS[COLUMNS.index("stability"):]
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
 #: float64 (input_row is int).
@@ -55,6 +53,8 @@ _PHYSICS_COLUMNS = {
     "friction": "friction_per_mass_m_s2",
     "mu_required": "mu_required",
     "omega3": "omega3_rad_s",
+    "omega3_min_real": "omega3_min_real_rad_s",        # sphere: eq. (56)
+    "omega3_min_contact": "omega3_min_contact_rad_s",  # sphere: eqs. (56), (58)/(59)
 }
 
 #: Request fields: name -> (default, unit, what it is).

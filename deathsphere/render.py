@@ -140,6 +140,8 @@ ORBIT_FIELDS = (
     ("spin_rad_s", "ω₁ = r'Ω/a wheel spin", "rad/s", "eq. 13"),
     ("omega3_rad_s", "ω₃ = -Ω sin α", "rad/s", "eq. 13"),
     ("branch", "branch of eq. 55 (0 slow, 1 fast)", "", "eq. 55"),
+    ("omega3_min_real_rad_s", "least |ω₃| for a real orbit", "rad/s", "eq. 56"),
+    ("omega3_min_contact_rad_s", "least |ω₃| for contact", "rad/s", "eq. 58/59"),
     ("accel_m_s2", "centre acceleration", "m/s²", "eq. 32"),
     ("accel_g", "centre acceleration", "g", "eq. 36"),
     ("normal_per_mass_m_s2", "normal force / m", "m/s²", "eq. 32"),
@@ -175,6 +177,10 @@ BODY_LABELS = {
     ("particle", "accel_g"): ("centre acceleration", ""),
     ("particle", "mu_required"): None,
     ("wheel", "branch"): None,
+    ("wheel", "omega3_min_real_rad_s"): None,
+    ("wheel", "omega3_min_contact_rad_s"): None,
+    ("particle", "omega3_min_real_rad_s"): None,
+    ("particle", "omega3_min_contact_rad_s"): None,
     ("particle", "branch"): None,
 }
 

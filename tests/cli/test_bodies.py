@@ -103,3 +103,13 @@ def test_wheel_speed_is_solved_for_every_alpha(run):
 def test_wheel_rate_without_root_is_one_no_orbit_row(run):
     out = rows(run("orbit", "--theta", "90", "--omega", "0.1", "--format", "csv").stdout)
     assert len(out) == 1 and out[0]["status"] == "no_orbit" and "no tilt alpha" in out[0]["reason"]
+
+
+def test_sphere_rows_report_the_least_spins(run):
+    out = rows(run("orbit", "--body", "sphere", "--theta", "30", "--omega3", "200", "--format", "csv").stdout)
+    k, a, rho, g, th = 0.4, 0.3, 2.7, 9.80665, np.deg2rad(30.0)
+    least_real = np.sqrt(4 * (k + 1) * g * rho * np.cos(th)) / (k * a)  # eq. (56) at equality
+    for r in out:
+        assert float(r["omega3_min_real_rad_s"]) == pytest.approx(least_real, rel=1e-12)
+        # above the equator and tan^2(30 deg) < k + 1: contact needs more spin (text after eq. 58)
+        assert float(r["omega3_min_contact_rad_s"]) > least_real
