@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import os
 import sys
+from contextlib import contextmanager
 
 import click
 import numpy as np
@@ -109,6 +110,55 @@ def parse_rates(texts, name: str, max_values: int | None = None):
         return parse_many(texts, f"--{name}", max_values)
     except RangeError as exc:
         raise click.BadParameter(str(exc).split(": ", 1)[-1], param_hint=f"'--{name}'") from None
+
+class _Progress:
+    """What a command reports progress to: ``advance(n)`` or ``update(done, total)``."""
+
+    def __init__(self, bar=None, task=None):
+        self.bar, self.task = bar, task
+
+    def advance(self, n: int = 1, description: str | None = None) -> None:
+        if self.bar is not None:
+            self.bar.update(self.task, advance=n, **({"description": description} if description else {}))
+
+    def update(self, done: int, total: int) -> None:
+        if self.bar is not None:
+            self.bar.update(self.task, completed=done, total=total)
+
+
+@contextmanager
+def progress(label: str, total: int):
+    """A rich progress bar on stderr when stderr is a terminal (nothing
+    otherwise, so pipes and logs stay clean); yields a :class:`_Progress`."""
+    if not sys.stderr.isatty():
+        yield _Progress()
+        return
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+    )
+
+    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                  console=stderr_console(), transient=True) as bar:
+        yield _Progress(bar, bar.add_task(label, total=total))
+
+
+def evaluate_in_chunks(req: dict, evaluate, label: str, chunk: int) -> Table:
+    """``evaluate(sub_request)`` over consecutive slices of a request batch,
+    with a progress bar on a terminal; the tables are joined in input order."""
+    n = len(req["theta"])
+    if n <= chunk:
+        return evaluate(req)
+    parts = []
+    with progress(label, n) as bar:
+        for start in range(0, n, chunk):
+            parts.append(evaluate({key: value[start:start + chunk] for key, value in req.items()}))
+            bar.advance(min(chunk, n - start))
+    return Table({name: np.concatenate([t[name] for t in parts]) for name in parts[0].names})
+
 
 def choose_format(fmt: str | None) -> str:
     if fmt:

@@ -15,10 +15,12 @@ from deathsphere.cli.base import (
     choose_format,
     cli,
     emit,
+    evaluate_in_chunks,
     make_setup,
     output_options,
     parse_angles,
     parse_rates,
+    progress,
     stderr_console,
 )
 from deathsphere.constants import (
@@ -33,12 +35,17 @@ from deathsphere.grid import RangeError, grid_chunks, grid_size, parse_many
 from deathsphere.inputs import InputError, read_requests
 from deathsphere.model import Table, evaluate, make_requests
 
+
 def stability_option(f):
     return click.option(
         "--stability/--no-stability", "with_stability", default=True, show_default=True,
         help="Fill the stability columns from the exact linearisation (docs/stability.md); "
              "--no-stability leaves them empty and runs faster.")(f)
 
+
+#: Orbits per evaluation: a cache-friendly size (docs/performance.md), and a
+#: progress bar ticks per chunk.
+CHUNK = 16384
 
 ORBIT_TITLES = {
     "wheel": "Horizontal orbits of a wheel (McDonald 1993, eqs. 0, 29-36)",
@@ -147,7 +154,7 @@ def orbit(theta, alpha, omega3, omega, speed, input_file, body, side, a, r, k, g
         _, grid = next(grid_chunks(axes, grid_size(axes)))
         defaults.update(grid)
         req = make_requests(grid_size(axes), **defaults)
-    table = evaluate(req, stability=with_stability)
+    table = evaluate_in_chunks(req, lambda sub: evaluate(sub, stability=with_stability), "orbits", CHUNK)
     emit([table], fmt, title=ORBIT_TITLES[setup.body] if input_file is None else "Horizontal orbits")
     if (table["status"] == "invalid").any():
         n_bad = int((table["status"] == "invalid").sum())
@@ -184,7 +191,7 @@ STATUSES = ("ok", "no_fit", "no_orbit", "no_contact", "slips")
 @click.option("--mu", type=float, default=math.inf, metavar="MU", help="Friction available [default: unlimited].")
 @click.option("--only", multiple=True, type=click.Choice(STATUSES, case_sensitive=False),
               help="Keep only rows with this status (repeatable), e.g. --only ok.")
-@click.option("--chunk-size", type=click.IntRange(1, 10_000_000), default=16384, show_default=True,
+@click.option("--chunk-size", type=click.IntRange(1, 10_000_000), default=CHUNK, show_default=True,
               help="Orbits evaluated per chunk; memory stays flat whatever the grid size.")
 @stability_option
 @output_options(("csv", "ndjson", "json"))
@@ -231,19 +238,5 @@ def sweep(theta, alpha, a_values, r_values, k_values, body, side, g, mu, only, c
             yield table
             advance(n)
 
-    fmt = (fmt or "csv").lower()
-    if sys.stderr.isatty():
-        from rich.progress import (
-            BarColumn,
-            MofNCompleteColumn,
-            Progress,
-            TextColumn,
-            TimeRemainingColumn,
-        )
-
-        with Progress(TextColumn("sweep"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
-                      console=stderr_console(), transient=True) as progress:
-            task = progress.add_task("sweep", total=total)
-            emit(chunks(lambda n: progress.advance(task, n)), fmt)
-    else:
-        emit(chunks(lambda n: None), fmt)
+    with progress("sweep", total) as bar:
+        emit(chunks(bar.advance), (fmt or "csv").lower())

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import sys
-
 import click
 
 from deathsphere.cli.base import (
@@ -11,7 +9,7 @@ from deathsphere.cli.base import (
     cli,
     emit,
     output_options,
-    stderr_console,
+    progress,
     stdout_console,
 )
 
@@ -66,15 +64,8 @@ def verify_command(claims, fmt):
                                      param_hint="'--claim'")
     fmt = choose_format(fmt)
     ids = list(claims) or None
-    if sys.stderr.isatty():
-        from rich.progress import Progress
-
-        total = len(ids or verify.CLAIMS)
-        with Progress(console=stderr_console(), transient=True) as progress:
-            task = progress.add_task("checking claims", total=total)
-            table = verify.run(ids, progress=lambda c: progress.update(task, advance=1, description=c.id))
-    else:
-        table = verify.run(ids)
+    with progress("checking claims", len(ids or verify.CLAIMS)) as bar:
+        table = verify.run(ids, progress=lambda claim: bar.advance(1, description=claim.id))
     if fmt == "table":
         from deathsphere.render import checklist_view
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import sys
 
 import click
 
@@ -16,6 +15,7 @@ from deathsphere.cli.base import (
     make_setup,
     one_line,
     output_options,
+    progress,
     stderr_console,
     stdout_console,
 )
@@ -121,21 +121,8 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
         else:
             emit(chunks(advance), fmt)
 
-    if sys.stderr.isatty():
-        from rich.progress import (
-            BarColumn,
-            MofNCompleteColumn,
-            Progress,
-            TextColumn,
-            TimeElapsedColumn,
-        )
-
-        with Progress(TextColumn("simulate"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                      console=stderr_console(), transient=True) as progress:
-            task = progress.add_task("simulate", total=sim.n_chunks)
-            run(lambda done, total: progress.update(task, completed=done, total=total))
-    else:
-        run(lambda done, total: None)
+    with progress("simulate", sim.n_chunks) as bar:
+        run(bar.update)
     summary = sim.summary()
     if fmt == "table":
         stdout_console().print(simulation_view(summary))

@@ -4,8 +4,16 @@ from __future__ import annotations
 
 import click
 
-from deathsphere.cli.base import angle_problem, body_options, choose_format, cli, emit, make_setup, output_options, \
-    stdout_console
+from deathsphere.cli.base import (
+    angle_problem,
+    body_options,
+    choose_format,
+    cli,
+    emit,
+    make_setup,
+    output_options,
+    stdout_console,
+)
 
 
 @cli.command("stability")

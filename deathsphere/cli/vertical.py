@@ -12,6 +12,7 @@ from deathsphere.cli.base import (
     choose_format,
     cli,
     emit,
+    evaluate_in_chunks,
     make_setup,
     output_options,
     parse_angles,
@@ -104,7 +105,9 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
         table = vertical_points(req, points)
         emit([table], fmt, title="Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)")
     else:
-        table = evaluate_vertical(req, stability=with_stability)
+        # the Floquet analysis integrates a lap per orbit: chunks of 32 keep the bar moving
+        table = evaluate_in_chunks(req, lambda sub: evaluate_vertical(sub, stability=with_stability),
+                                   "vertical orbits", 32)
         if fmt == "table":
             from deathsphere.render import vertical_view
 

@@ -94,13 +94,19 @@ def first_failure(conditions):
     later entries only apply where no earlier one failed.  Returns integer
     arrays ``(status, reason)`` broadcast to the common shape.
     """
+    # Each row is decided by at most one condition, so its codes are those of
+    # that condition added to OK = NONE = 0: sums of 0/1 bytes times the code,
+    # no masked writes (status[hit] = ...), which on an irregular mask cost
+    # ~5 ns per element in mispredicted branches.
     shape = np.broadcast_shapes(*(np.shape(c[0]) for c in conditions))
-    status = np.full(shape, Status.OK, dtype=np.int8)
-    reason = np.full(shape, Reason.NONE, dtype=np.int8)
+    status = np.zeros(shape, dtype=np.int8)
+    reason = np.zeros(shape, dtype=np.int8)
     undecided = np.ones(shape, dtype=bool)
+    hit = np.empty(shape, dtype=bool)
     for failed, st, why in conditions:
-        hit = undecided & np.broadcast_to(failed, shape)
-        status[hit] = st
-        reason[hit] = np.broadcast_to(why, shape)[hit]
-        undecided &= ~hit
+        np.logical_and(undecided, failed, out=hit)
+        np.not_equal(undecided, hit, out=undecided)      # hit is a subset of undecided
+        once = hit.view(np.int8)                         # 1 where this condition decides
+        status += once * np.int8(st)
+        reason += once * np.asarray(why, dtype=np.int8)
     return status, reason

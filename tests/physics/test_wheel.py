@@ -8,7 +8,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from deathsphere.physics import wheel
-from deathsphere.physics.geometry import fits_inside, r_prime
+from deathsphere.physics.geometry import SINGULAR, fits_inside, r_prime
 from deathsphere.physics.status import Reason, Status
 
 G = 9.80665
@@ -219,3 +219,109 @@ def test_vectorised_shapes_broadcast():
     res = wheel.horizontal_orbit(theta, alpha, 0.3, 3.0, 0.5, G)
     assert res["omega"].shape == (3, 2) and res["status"].shape == (3, 2)
     assert res["omega"].dtype == np.float64
+
+
+# --- the optimised core against a plain transcription of the equations -------
+
+def reference_orbit(theta, alpha, a, r, k, g, outside=False, mu=np.inf):
+    """horizontal_orbit written straight from the equations: every input
+    broadcast to full arrays, each trigonometric function recomputed where it
+    is used, status by np.select (first true condition wins).  Eq. (29) is
+    written as g cos(alpha) / (sin(alpha) D), the package's operation order,
+    so that the two agree to round-off even near the contact boundary."""
+    theta, alpha, a, r, k, g, mu = np.broadcast_arrays(*(np.asarray(x, dtype=float)
+                                                         for x in (theta, alpha, a, r, k, g, mu)))
+    outside = np.broadcast_to(np.asarray(outside, dtype=bool), theta.shape)
+    with np.errstate(all="ignore"):
+        rp = r * np.sin(theta) - a * np.cos(alpha)                                  # eq. (8b)
+        fits = np.where(outside, np.sin(alpha - theta) > 0.0, np.sin(theta - alpha) > a / r)  # (81), (0)
+        den = np.sin(alpha) * ((2 * k + 1) * rp + k * a * np.cos(alpha))
+        undefined = np.abs(den) <= SINGULAR * ((2 * k + 1) * r + (k + 1) * a)
+        omega2 = np.where(undefined, np.nan, g * np.cos(alpha) / den)              # eq. (29)
+        zero = ~undefined & (np.abs(omega2) <= SINGULAR * g / r)
+        real = ~undefined & ~zero & (omega2 > 0)
+        om2 = np.where(real, omega2, np.nan)
+        omega = np.sqrt(om2)
+        f_r = -(rp * om2 * np.sin(theta) - g * np.cos(theta))                      # eq. (32)
+        f_theta = -(rp * om2 * np.cos(theta) + g * np.sin(theta))
+        normal = np.where(outside, f_r, -f_r)                                       # (83), (33)
+        mu_required = np.where(normal > 0, np.abs(f_theta) / normal, np.nan)      # eq. (35)
+    failed = [~fits, undefined, zero, ~real, ~(normal > 0), mu_required > mu]
+    status = np.select(failed, [Status.NO_FIT, Status.NO_ORBIT, Status.NO_ORBIT, Status.NO_ORBIT,
+                                Status.NO_CONTACT, Status.SLIPS], Status.OK)
+    reason = np.select(failed, [
+        np.where(outside, Reason.NO_FIT_OUTSIDE, Reason.NO_FIT_INSIDE),
+        np.where(np.abs(np.sin(alpha)) <= SINGULAR, Reason.ALPHA_IN_ORBIT_PLANE, Reason.ZERO_DENOMINATOR),
+        Reason.OMEGA_ZERO, Reason.OMEGA_IMAGINARY,
+        np.where(outside, Reason.NO_CONTACT_OUTSIDE, Reason.NO_CONTACT_INSIDE),
+        Reason.SLIPS], Reason.NONE)
+    return {
+        "r_prime": rp, "omega2": omega2, "omega": omega, "period": 2 * np.pi / omega,
+        "v_cm": np.abs(rp) * omega, "spin": rp * omega / a, "omega3": -omega * np.sin(alpha),
+        "accel": np.abs(rp) * om2, "accel_g": np.abs(rp) * om2 / g,                # eq. (36)
+        "normal": normal, "friction": f_theta, "mu_required": mu_required,
+        "status": status.astype(np.int8), "reason": reason.astype(np.int8),
+    }
+
+
+def assert_same_orbits(got, want):
+    assert list(got) == list(want)
+    for key, expected in want.items():
+        value = np.asarray(got[key])
+        assert value.shape == expected.shape and value.dtype == expected.dtype, key
+        if key in ("status", "reason"):
+            np.testing.assert_array_equal(value, expected, err_msg=key)
+        else:
+            np.testing.assert_allclose(value, expected, rtol=1e-12, atol=0, equal_nan=True, err_msg=key)
+
+
+def _random_orbits(n, seed):
+    """Angles in degrees over the whole range, a fifth of them exactly 0, 90
+    or 180 deg (alpha also -90, -180): the singular cases of eqs. (29), (32)."""
+    rng = np.random.default_rng(seed)
+    theta = rng.uniform(0.0, 180.0, n)
+    alpha = rng.uniform(-180.0, 180.0, n)
+    pick = rng.random(n) < 0.2
+    theta[pick] = rng.choice([0.0, 90.0, 180.0], pick.sum())
+    pick = rng.random(n) < 0.2
+    alpha[pick] = rng.choice([-180.0, -90.0, 0.0, 90.0, 180.0], pick.sum())
+    return rng, deg(theta), deg(alpha)
+
+
+@pytest.mark.parametrize("side", ["inside", "outside", "mixed"])
+@pytest.mark.parametrize("params", ["scalars", "per_row", "varied"])
+def test_horizontal_orbit_matches_reference(side, params):
+    n = 2 * wheel.CHUNK + 1234          # several pieces, and a short last one
+    rng, theta, alpha = _random_orbits(n, seed=["inside", "outside", "mixed"].index(side))
+    outside = {"inside": False, "outside": True, "mixed": rng.random(n) < 0.5}[side]
+    if params == "scalars":
+        a, r, k, g, mu = 0.3, 3.0, 0.5, G, 1.0
+    elif params == "per_row":             # what the model passes: one value, repeated
+        a, r, k, g, mu = (np.full(n, v) for v in (0.3, 3.0, 0.5, G, 1.0))
+        outside = np.broadcast_to(outside, (n,)).copy()
+    else:
+        a = rng.uniform(0.01, 1.0, n)
+        r = a * rng.uniform(1.1, 30.0, n)
+        k, g = rng.uniform(0.0, 2.0, n), rng.uniform(1.0, 25.0, n)
+        mu = np.where(rng.random(n) < 0.3, np.inf, rng.uniform(0.0, 3.0, n))
+    got = wheel.horizontal_orbit(theta, alpha, a, r, k, g, outside=outside, mu=mu)
+    want = reference_orbit(theta, alpha, a, r, k, g, outside=outside, mu=mu)
+    assert_same_orbits(got, want)
+    # every status and reason the core can give occurs here
+    reasons = set(np.unique(want["reason"]))
+    assert {Reason.NONE, Reason.NO_FIT_INSIDE if side != "outside" else Reason.NO_FIT_OUTSIDE,
+            Reason.ALPHA_IN_ORBIT_PLANE, Reason.OMEGA_ZERO, Reason.OMEGA_IMAGINARY, Reason.SLIPS} <= reasons
+
+
+@pytest.mark.parametrize("outside", [False, True])
+def test_horizontal_orbit_matches_reference_on_a_degree_grid(outside):
+    """Every whole degree, so every exact 0, 90, 180 deg pair, broadcast from
+    (181, 1) and (1, 361) and evaluated in pieces; also one orbit at a time."""
+    theta = deg(np.arange(0.0, 181.0))[:, None]
+    alpha = deg(np.arange(-180.0, 181.0))[None, :]
+    want = reference_orbit(theta, alpha, 0.3, 3.0, 0.5, G, outside, 1.0)
+    assert_same_orbits(wheel.horizontal_orbit(theta, alpha, 0.3, 3.0, 0.5, G, outside, 1.0), want)
+    for i, j in [(0, 180), (0, 0), (90, 270), (90, 180), (180, 180), (180, 0), (60, 190), (30, 260)]:
+        one = wheel.horizontal_orbit(theta[i, 0], alpha[0, j], 0.3, 3.0, 0.5, G, outside, 1.0)
+        assert_same_orbits({key: np.asarray(v).reshape(1) for key, v in one.items()},
+                           {key: v[i, j].reshape(1) for key, v in want.items()})
