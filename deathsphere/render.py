@@ -41,10 +41,15 @@ def _column_strings(name: str, values: np.ndarray) -> list[str]:
     if n == 0:
         return []
     if name in TEXT_COLUMNS or values.dtype == object:
-        values = np.where(values == None, "", values)  # noqa: E711  (elementwise)
-        unique, inverse = np.unique(values.astype(str), return_inverse=True)
-        text = [_csv_field(u) for u in unique.tolist()]
-        return [text[i] for i in inverse.tolist()]
+        # few distinct texts per column: quote each once (None -> empty)
+        cache: dict = {}
+        text = []
+        for v in values.tolist():
+            t = cache.get(v)
+            if t is None:
+                t = cache[v] = "" if v is None else _csv_field(str(v))
+            text.append(t)
+        return text
     if values.dtype.kind in "iub":
         return list(map(str, values.tolist()))
     if (values[0] == values).all() or np.isnan(values).all():
