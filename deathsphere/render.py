@@ -190,34 +190,46 @@ BODY_LABELS = {
 }
 
 
+def _record(table: Table, row: int = 0) -> dict:
+    """One row as plain Python values."""
+    return {n: (v.item() if hasattr(v, "item") else v) for n, v in ((n, table[n][row]) for n in table.names)}
+
+
+def _setup_line(get: dict) -> str:
+    return (f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
+            f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
+
+
+def quantity_table(title: str, get: dict, rows, ok_text: str) -> RichTable:
+    """The one-result view: ``rows`` of (label, value, unit, source), then
+    the stability (if computed) and the status, the reason as caption."""
+    out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
+    for head in ("quantity", "value", "unit", "source"):
+        out.add_column(head, justify="right" if head == "value" else "left", style="dim" if head == "source" else None)
+    for label, value, unit, source in rows:
+        out.add_row(label, value, unit, source)
+    if get.get("stability"):
+        out.add_row("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "", get["stability_method"])
+    out.add_row("status", status_text(get["status"]), "", "")
+    out.caption = f"{get['status']}: {get['reason'] or ok_text}"
+    out.caption_justify = "left"
+    return out
+
+
 def one_orbit_table(table: Table, row: int = 0) -> RichTable:
-    """A two-column view of every quantity of one orbit."""
-    get = {n: table[n][row] for n in table.names}
-    get = {n: (v.item() if hasattr(v, "item") else v) for n, v in get.items()}
+    """A two-column view of every quantity of one orbit (undefined ones as —)."""
+    get = _record(table, row)
     angles = f"θ = {format_number(get['theta_deg'])}°"
     if not _isnan(get["alpha_deg"]):
         angles += f", α = {format_number(get['alpha_deg'])}°"
-    title = (f"{get['body']} {get['side']}, {angles}\n"
-             f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
-             f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
-    out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
-    out.add_column("quantity")
-    out.add_column("value", justify="right")
-    out.add_column("unit")
-    out.add_column("source", style="dim")
+    rows = []
     for col, label, unit, source in ORBIT_FIELDS:
         override = BODY_LABELS.get((get["body"], col), (label, source))
         if col in get and override is not None:
-            out.add_row(override[0], format_number(get[col], 5), unit, override[1])
+            rows.append((override[0], format_number(get[col], 5), unit, override[1]))
     mu = get.get("mu_available")
-    out.add_row("μ available", "∞" if _isnan(mu) else format_number(mu), "", "--mu")
-    if get.get("stability"):
-        out.add_row("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "",
-                    get["stability_method"])
-    out.add_row("status", status_text(get["status"]), "", "")
-    out.caption = f"{get['status']}: {get['reason'] or OK_REASON}"
-    out.caption_justify = "left"
-    return out
+    rows.append(("μ available", "∞" if _isnan(mu) else format_number(mu), "", "--mu"))
+    return quantity_table(f"{get['body']} {get['side']}, {angles}\n{_setup_line(get)}", get, rows, OK_REASON)
 
 
 def _isnan(v) -> bool:
@@ -275,8 +287,7 @@ def generic_table(table: Table, title: str | None = None) -> RichTable:
     if len(table) == 1:
         out.add_column("quantity")
         out.add_column("value", justify="right")
-        for name in table.names:
-            v = table[name][0].item() if hasattr(table[name][0], "item") else table[name][0]
+        for name, v in _record(table).items():
             out.add_row(name, str(v) if isinstance(v, (str, bool)) else format_number(v, 6))
         return out
     # columns equal in every row (the inputs) go to the caption
@@ -356,23 +367,11 @@ VERTICAL_FIELDS = (
 def vertical_view(table: Table):
     """One vertical orbit: a quantity per line; several: one line each."""
     if len(table) == 1:
-        get = {n: table[n][0].item() if hasattr(table[n][0], "item") else table[n][0] for n in table.names}
-        title = (f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n"
-                 f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
-                 f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
-        out = RichTable(title=title, box=box.SIMPLE_HEAVY, title_justify="left")
-        for head in ("quantity", "value", "unit", "source"):
-            out.add_column(head, justify="right" if head == "value" else "left")
-        for col, label, unit, source in VERTICAL_FIELDS:
-            if not _isnan(get[col]):
-                out.add_row(label, format_number(get[col], 5), unit, source)
-        if get.get("stability"):
-            out.add_row("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "",
-                        get["stability_method"])
-        out.add_row("status", status_text(get["status"]), "", "")
-        out.caption = f"{get['status']}: {get['reason'] or 'keeps contact all round with enough friction'}"
-        out.caption_justify = "left"
-        return out
+        get = _record(table)
+        rows = [(label, format_number(get[col], 5), unit, source)
+                for col, label, unit, source in VERTICAL_FIELDS if not _isnan(get[col])]
+        title = f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n{_setup_line(get)}"
+        return quantity_table(title, get, rows, "keeps contact all round with enough friction")
     out = RichTable(title="Vertical orbits (eqs. 27-28b)", box=box.SIMPLE_HEAVY, title_justify="left")
     cols = (("input_row", "#"), ("theta_deg", "θ°"), ("v_cm_m_s", "v top\nm/s"), ("status", "status"),
             ("v_top_min_m_s", "v min\nm/s"), ("period_s", "lap\ns"), ("phi_worst_deg", "worst\nφ°"),
@@ -422,7 +421,7 @@ SIMULATION_FIELDS = (
 
 def simulation_view(summary: Table):
     """The summary of one simulated body (the first row if several)."""
-    get = {n: summary[n][0].item() if hasattr(summary[n][0], "item") else summary[n][0] for n in summary.names}
+    get = _record(summary)
     what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, θ = {format_number(get['theta_deg'])}°"
             + (f", α = {format_number(get['alpha_deg'])}°" if not _isnan(get.get("alpha_deg")) else "")
             + (f", kick {format_number(get['perturb_rad'])} rad" if get.get("perturb_rad") else ""))
