@@ -12,10 +12,15 @@ allowed region is shaded:
     m  mu_required = mu        (only with a friction limit)
     g  g-load = max_g          (only with a g-load limit)
     .  allowed: a feasible orbit at the cell's centre
+    x  allowed but linearly unstable (only with ``stability=True``)
+    ?  allowed, stability unknown (only with ``stability=True``; rare)
 
 A cell is shaded when its centre is feasible (status ``ok`` of
 :func:`deathsphere.physics.wheel.horizontal_orbit`, and g-load <= max_g); a
 boundary character replaces the shading where a curve crosses the cell.
+With ``stability=True`` the feasible cells are split by the verdict of
+:func:`deathsphere.physics.stability.wheel_stability` at the cell's centre
+(exact linearisation, beyond the paper: docs/stability.md).
 """
 
 from __future__ import annotations
@@ -25,6 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from deathsphere.physics import region
+from deathsphere.physics.stability import Verdict, wheel_stability
 
 #: Character and legend text of each boundary, in drawing order (later wins).
 MARKS = {
@@ -35,11 +41,13 @@ MARKS = {
     "max_g": ("g", "g-load = max_g"),
 }
 SHADE = "."
+UNSTABLE = "x"
+UNKNOWN = "?"
 OUTSIDE_MARKS = {"eq0": "eq. (81) fit", "eq33": "eq. (83) contact"}
 
 #: rich styles for :func:`to_rich`.
 STYLES = {"=": "bold blue", "#": "bold red", "*": "bold magenta", "m": "bold green",
-          "g": "bold yellow", SHADE: "cyan"}
+          "g": "bold yellow", SHADE: "cyan", UNSTABLE: "red", UNKNOWN: "yellow"}
 
 _LEFT = 6            # "  90 |"
 _SUB = 6             # root samples per cell along each axis
@@ -71,7 +79,7 @@ def _fmt(x):
 
 
 def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665,
-             width=80, rows=None, alpha_range_deg=None):
+             width=80, rows=None, alpha_range_deg=None, stability=False):
     """Character map of the allowed (theta, alpha) region.
 
     Parameters
@@ -84,6 +92,10 @@ def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665,
     rows : int          rows of the plot grid (default: 19 inside, 28 outside)
     alpha_range_deg : (lo, hi) alpha axis [deg] (default 0..90 inside,
         0..270 outside, where the paper's allowed regions lie)
+    stability : bool    mark allowed cells whose orbit is linearly unstable
+        with ``x`` (stable ones keep the shade ``.``); one batched call of
+        :func:`deathsphere.physics.stability.wheel_stability` for all
+        allowed cell centres (beyond the paper, docs/stability.md)
 
     Returns
     -------
@@ -104,6 +116,10 @@ def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665,
     th_c, al_c = np.meshgrid(np.deg2rad(theta_c), np.deg2rad(alpha_c))
     ok = region.feasible(th_c, al_c, a, r, k, g, outside=outside, mu=mu, max_g=max_g)
     grid = np.where(ok, SHADE, " ").astype("<U1")
+    if stability:
+        verdict = wheel_stability(th_c[ok], al_c[ok], a, r, k, g, outside)["verdict"]
+        grid[ok] = np.select([verdict == Verdict.UNSTABLE, verdict == Verdict.UNKNOWN],
+                             [UNSTABLE, UNKNOWN], SHADE)
 
     # boundaries: alpha roots on sub-column lines, theta roots on sub-row lines
     a_top, a_bot = np.deg2rad(hi_d + dal / 2), np.deg2rad(lo_d - dal / 2)
@@ -133,7 +149,8 @@ def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665,
 
     # frame, labels, legend
     side = "outside" if outside else "inside"
-    title = f"Allowed horizontal orbits: wheel {side}, a/r = {_fmt(a / r)}, k = {_fmt(k)}"
+    title = (("Stability of allowed" if stability else "Allowed")
+             + f" horizontal orbits: wheel {side}, a/r = {_fmt(a / r)}, k = {_fmt(k)}")
     limits = [f"mu = {_fmt(mu)}" if np.isfinite(mu) else "", f"max g = {_fmt(max_g)}" if np.isfinite(max_g) else ""]
     limits = ", ".join(x for x in limits if x)
     if limits:
@@ -156,7 +173,14 @@ def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665,
         ticks[start:start + len(s)] = list(s)
     lines.append(" " * (_LEFT - 1) + "".join(ticks).rstrip())
     lines.append(" " * (_LEFT - 1) + "theta [deg]".center(ncol).rstrip())
-    items = [f"{ch} {text}" for ch, text in legend.items()] + [f"{SHADE} allowed"]
+    if stability:
+        cells = set(grid[ok])
+        shades = [f"{SHADE} allowed, stable", f"{UNSTABLE} allowed, unstable"]
+        if UNKNOWN in cells:
+            shades.append(f"{UNKNOWN} allowed, stability unknown")
+    else:
+        shades = [f"{SHADE} allowed"]
+    items = [f"{ch} {text}" for ch, text in legend.items()] + shades
     line = " "
     for item in items:
         if len(line) + len(item) + 3 > width:

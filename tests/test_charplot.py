@@ -92,3 +92,28 @@ def test_narrow_width_and_rich_rendering():
     assert any(span.style for span in rich_text.spans)
     with pytest.raises(ValueError, match="width"):
         char_map(A, R, K, width=20)
+
+
+def test_stability_marks_exactly_the_unstable_cells():
+    from deathsphere.charplot import UNSTABLE
+    from deathsphere.physics.stability import Verdict, wheel_stability
+
+    a, r = 0.9, 3.0                                        # a/r = 0.3: stable and unstable orbits
+    cmap = char_map(a, r, K, stability=True)
+    grid = np.array([list(row) for row in cmap.cells])
+    th, al = np.meshgrid(np.deg2rad(cmap.theta_deg), np.deg2rad(cmap.alpha_deg))
+    orb = wheel.horizontal_orbit(th, al, a, r, K, G)
+    ok = orb["status"] == Status.OK
+    verdict = wheel_stability(th, al, a, r, K, G)["verdict"]
+    unstable, stable = ok & (verdict == Verdict.UNSTABLE), ok & (verdict == Verdict.STABLE)
+    assert unstable.sum() > 100 and stable.sum() > 100 and not np.any(ok & (verdict == Verdict.UNKNOWN))
+    on_curve = np.isin(grid, list(BOUNDARY_CHARS))
+    assert np.array_equal(grid == UNSTABLE, unstable & ~on_curve)
+    assert np.array_equal(grid == SHADE, stable & ~on_curve)
+    text = str(cmap)
+    assert "x allowed, unstable" in text and ". allowed, stable" in text and text.startswith("Stability")
+    assert all(len(line) <= 80 for line in cmap.lines)
+    # without the option nothing changes: no 'x', the plain legend
+    plain = char_map(a, r, K)
+    assert UNSTABLE not in "".join(plain.cells) and "allowed, unstable" not in str(plain)
+    assert any(span.style == "red" for span in to_rich(cmap).spans)

@@ -35,15 +35,24 @@ from deathsphere.constants import SIDES, STANDARD_GRAVITY
               help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
 @click.option("--step", type=click.FloatRange(0.001, 10.0), default=0.5, show_default=True, metavar="DEG",
               help="theta step of the boundary data (--format csv/json).")
+@click.option("--stability", is_flag=True,
+              help="Also show the exact linear stability of each orbit (beyond the paper, docs/stability.md): "
+                   "stable and unstable parts of the allowed region and the boundary between them.  "
+                   "Wheel only: a rolling sphere has no tilt alpha (and all its horizontal orbits "
+                   "are stable).")
 @output_options()
-def map_command(a_over_r, k, side, mu, max_g, output, step, fmt):
+def map_command(a_over_r, k, side, mu, max_g, output, step, stability, fmt):
     """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.
 
     Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
     (contact); outside the sphere by eqs. (81), (29), (83).  With --mu or
     --max-g the friction and g-load limits are drawn too.  On a terminal a
     character plot; --format csv/json prints the boundary curves as data
-    (root-found to 1e-9 rad); --output writes a figure.
+    (root-found to 1e-9 rad); --output writes a figure.  With --stability
+    the unstable orbits are marked (x on a terminal, red in a figure) and the
+    stability boundary is drawn (exact linearisation, beyond the paper); with
+    --format csv/json it is the curve 'stability' (bisected to 1e-10 rad
+    between samples 0.25 deg apart in alpha).
 
     \b
     Examples:
@@ -51,6 +60,7 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, fmt):
       deathsphere map --mu 1 --max-g 5
       deathsphere map --format csv --step 1 | head
       deathsphere map --output map.png
+      deathsphere map --a-over-r 0.3 --stability --output map.png
     """
     side = side.lower()
     if not (math.isfinite(a_over_r) and 0 < a_over_r and (a_over_r < 1 or side == "outside")):
@@ -63,7 +73,8 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, fmt):
         from deathsphere.plot import PlotExtraMissing, plot_map
 
         try:
-            plot_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g, output=output)
+            plot_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g, output=output,
+                     stability=stability)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
         except ValueError as exc:
@@ -76,11 +87,11 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, fmt):
 
         width = max(40, min(stdout_console().width, 100))
         stdout_console().print(to_rich(char_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g,
-                                                width=width)), end="")
+                                                width=width, stability=stability)), end="")
         return
     from deathsphere.limits import boundary_table
 
-    emit([boundary_table(a_over_r, k, outside, mu, max_g, step)], fmt)
+    emit([boundary_table(a_over_r, k, outside, mu, max_g, step, stability=stability)], fmt)
 
 
 @cli.command("limits")

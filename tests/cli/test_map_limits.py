@@ -79,3 +79,34 @@ def test_alpha_intervals_at_theta(run):
 def test_limits_is_for_a_wheel(run):
     res = run("limits", "--body", "sphere", "--theta", "60")
     assert res.exit_code == 2 and "wheel" in res.stderr
+
+
+def test_map_stability_in_the_terminal(run):
+    text = run("map", "--a-over-r", "0.3", "--stability", "--format", "table", env={"COLUMNS": "80"}).stdout
+    lines = text.splitlines()
+    assert max(len(line) for line in lines) <= 80
+    assert "x allowed, unstable" in text and ". allowed, stable" in text
+    grid = "".join(line.split("|", 1)[1] for line in lines if "|" in line)
+    assert grid.count("x") > 50 and grid.count(".") > 50
+    assert "x" not in "".join(line.split("|", 1)[1] for line in
+                              run("map", "--a-over-r", "0.3", "--format", "table").stdout.splitlines() if "|" in line)
+
+
+def test_map_stability_boundary_as_data(run):
+    from deathsphere.physics.stability import Verdict, wheel_stability
+
+    out = rows(run("map", "--a-over-r", "0.3", "--stability", "--format", "csv", "--step", "5").stdout)
+    stab = [r for r in out if r["curve"] == "stability"]
+    assert {"eq0", "eq29", "eq33", "stability"} == {r["curve"] for r in out}
+    assert len(stab) > 30 and all("exact linearisation" in r["equation"] for r in stab)
+    th = np.deg2rad([float(r["theta_deg"]) for r in stab])
+    al = np.deg2rad([float(r["alpha_deg"]) for r in stab])
+    # every point lies between a stable and an unstable orbit at its theta
+    d = np.deg2rad(1e-4)
+    below = wheel_stability(th, al - d, 0.3, 1.0, 0.5, 9.80665)["verdict"]
+    above = wheel_stability(th, al + d, 0.3, 1.0, 0.5, 9.80665)["verdict"]
+    assert set(zip(below.tolist(), above.tolist())) <= {(Verdict.STABLE, Verdict.UNSTABLE),
+                                                         (Verdict.UNSTABLE, Verdict.STABLE)}
+    # e.g. at theta = 45 deg the orbits go unstable above alpha = 16.84 deg (docs/stability.md 6.4)
+    (at45,) = [float(r["alpha_deg"]) for r in stab if float(r["theta_deg"]) == 45.0]
+    assert at45 == pytest.approx(16.84, abs=0.01)
