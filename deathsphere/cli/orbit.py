@@ -73,7 +73,7 @@ def check_body_inputs(body: str, alpha, omega3, omega, speed) -> None:
         raise click.UsageError("a particle takes only --theta (no --alpha, --omega3 or --omega)")
 
 
-@cli.command()
+@cli.command(short_help="Steady horizontal orbits: rate, speed, spin, forces, friction, g-load, stability.")
 @click.option("--theta", multiple=True, metavar="DEG",
               help="Polar angle of the contact point from the upward vertical, 0..180 (90 = equator). "
                    "Repeat it or give start:stop:step.")

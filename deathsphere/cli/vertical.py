@@ -31,7 +31,7 @@ from deathsphere.grid import grid_chunks, grid_size
 from deathsphere.inputs import InputError, read_table
 
 
-@cli.command("vertical")
+@cli.command("vertical", short_help="Vertical orbit of a wheel: contact, forces, friction, worst point, lap time.")
 @click.option("--theta", multiple=True, metavar="DEG",
               help="Cone angle of the orbit about the horizontal axis, 0..180 (90 = a vertical great circle).")
 @click.option("--v-top", "v_top", multiple=True, metavar="M_S", help="Speed of the wheel's centre at the top.")
