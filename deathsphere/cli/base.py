@@ -142,7 +142,7 @@ def progress(label: str, total: int):
     )
 
     with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                  console=stderr_console(), transient=True) as bar:
+                  console=stderr_console(), transient=True, redirect_stdout=False, redirect_stderr=False) as bar:
         yield _Progress(bar, bar.add_task(label, total=total))
 
 

@@ -40,3 +40,31 @@ def test_sweep_into_head_ends_quietly():
         shell=True, capture_output=True, text=True, timeout=60)
     assert len(proc.stdout.splitlines()) == 3
     assert "Traceback" not in proc.stderr and "Error" not in proc.stderr
+
+
+def test_progress_bar_on_a_terminal_never_swallows_stdout():
+    """With stderr a terminal the progress bar shows there, and every CSV row
+    still goes to stdout (rich's Live must not redirect stdout)."""
+    import os
+    import pty
+
+    leader, follower = pty.openpty()
+    try:
+        proc = subprocess.run([sys.executable, "-m", "deathsphere", "sweep", "--theta", "0:180:1", "--alpha", "0:90:0.25",
+                               "--no-stability"], stdout=subprocess.PIPE, stderr=follower, timeout=120,
+                              env={**os.environ, "COLUMNS": "80"})
+        os.close(follower)
+        seen = b""
+        while True:
+            try:
+                data = os.read(leader, 65536)
+            except OSError:
+                break
+            if not data:
+                break
+            seen += data
+    finally:
+        os.close(leader)
+    lines = proc.stdout.decode().splitlines()
+    assert proc.returncode == 0 and len(lines) == 1 + 181 * 361
+    assert b"input_row" not in seen and b"sweep" in seen  # the bar, not the data, on the terminal
