@@ -148,6 +148,19 @@ def _wheel_linearisation(theta, alpha, a, r, k, g, outside):
     return K, scale, np.where(ok, Om, np.nan), shape, basis, X0
 
 
+def _result(shape, ev, growth, slow, fast, verdict, scale, omega):
+    """The per-orbit dict of :func:`wheel_stability` / :func:`sphere_stability`."""
+    return {
+        "growth_rate": growth.reshape(shape),
+        "freq_slow": slow.reshape(shape),
+        "freq_fast": fast.reshape(shape),
+        "verdict": verdict.reshape(shape),
+        "rate_scale": scale.reshape(shape),
+        "eigenvalues": ev.reshape(shape + ev.shape[-1:]),
+        "omega": omega.reshape(shape),
+    }
+
+
 def wheel_stability(theta, alpha, a, r, k, g, outside=False):
     """Exact linear stability of steady horizontal orbits of a wheel.
 
@@ -187,15 +200,7 @@ def wheel_stability(theta, alpha, a, r, k, g, outside=False):
         K, scale, Om, _, _, _ = _wheel_linearisation(*(x[i:i + CHUNK] for x in flat))
         parts.append((*_reduce(K, scale), scale, Om))
     ev, growth, slow, fast, verdict, scale, Om = (np.concatenate(z) for z in zip(*parts))
-    return {
-        "growth_rate": growth.reshape(shape),
-        "freq_slow": slow.reshape(shape),
-        "freq_fast": fast.reshape(shape),
-        "verdict": verdict.reshape(shape),
-        "rate_scale": scale.reshape(shape),
-        "eigenvalues": ev.reshape(shape + (4,)),
-        "omega": Om.reshape(shape),
-    }
+    return _result(shape, ev, growth, slow, fast, verdict, scale, Om)
 
 
 def _empty(shape, m):
@@ -255,15 +260,7 @@ def sphere_stability(theta, Omega, a, r, k, g, outside=False):
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)
     ev, growth, slow, fast, verdict = _reduce(K, scale)
-    return {
-        "growth_rate": growth.reshape(shape),
-        "freq_slow": slow.reshape(shape),
-        "freq_fast": fast.reshape(shape),
-        "verdict": verdict.reshape(shape),
-        "rate_scale": scale.reshape(shape),
-        "eigenvalues": ev.reshape(shape + (2,)),
-        "omega": np.where(ok, Om, np.nan).reshape(shape),
-    }
+    return _result(shape, ev, growth, slow, fast, verdict, scale, np.where(ok, Om, np.nan))
 
 
 def wheel_reduced_jacobian(theta, alpha, a, r, k, g, outside=False):
@@ -383,6 +380,18 @@ def equator_matrix(alpha, omega, a, r, k, g):
     return np.stack(rows, axis=-2)
 
 
+def equator_printed_abc(c):
+    """A, B, C of eqs. (136)-(138) as printed, from the coefficients of the
+    3x3 system (134) (``c`` as returned by :func:`_equator_coefficients`)."""
+    A = c["B13"] * c["B22"] * c["A31"]
+    B = (c["A11"] * c["B22"] * c["A33"] + c["A12"] * c["A23"] * c["A31"]
+         + c["B13"] * c["A21"] * c["A32"] - c["A13"] * c["B22"] * c["A31"]
+         - c["B13"] * c["A22"] * c["A31"] - c["A12"] * c["A21"] * c["A33"])
+    C = (c["A11"] * c["A22"] * c["A33"] + c["A13"] * c["A21"] * c["A32"]
+         - c["A13"] * c["A22"] * c["A31"] - c["A11"] * c["A23"] * c["A32"])
+    return A, B, C
+
+
 def _equator_coefficients(alpha, a, r, k, g):
     """A_ij, B_ij of eq. (134), read off eq. (133) as printed."""
     alpha, a, r, k, g = np.broadcast_arrays(*(_vec(x) for x in (alpha, a, r, k, g)))
@@ -433,12 +442,7 @@ def equator_paper(alpha, a, r, k, g):
     (:func:`equator_exact_closed_form`, :func:`wheel_stability`).
     """
     c = _equator_coefficients(alpha, a, r, k, g)
-    A = c["B13"] * c["B22"] * c["A31"]
-    B = (c["A11"] * c["B22"] * c["A33"] + c["A12"] * c["A23"] * c["A31"]
-         + c["B13"] * c["A21"] * c["A32"] - c["A13"] * c["B22"] * c["A31"]
-         - c["B13"] * c["A22"] * c["A31"] - c["A12"] * c["A21"] * c["A33"])
-    C = (c["A11"] * c["A22"] * c["A33"] + c["A13"] * c["A21"] * c["A32"]
-         - c["A13"] * c["A22"] * c["A31"] - c["A11"] * c["A23"] * c["A32"])
+    A, B, C = equator_printed_abc(c)
     x1, x2 = _quadratic_roots(A, -B, -C)
     # numerical route: q(x) = det(M(sqrt x))/x is quadratic in x = w^2
     Om2 = c["Omega"] ** 2

@@ -100,12 +100,7 @@ def test_small_wheel_limit_of_eq_133_vs_eq_207_errata_E7_E8():
     c = st._equator_coefficients(al, a, r, k, G)
 
     def slow(c):
-        A = c["B13"] * c["B22"] * c["A31"]
-        B = (c["A11"] * c["B22"] * c["A33"] + c["A12"] * c["A23"] * c["A31"]
-             + c["B13"] * c["A21"] * c["A32"] - c["A13"] * c["B22"] * c["A31"]
-             - c["B13"] * c["A22"] * c["A31"] - c["A12"] * c["A21"] * c["A33"])
-        C = (c["A11"] * c["A22"] * c["A33"] + c["A13"] * c["A21"] * c["A32"]
-             - c["A13"] * c["A22"] * c["A31"] - c["A11"] * c["A23"] * c["A32"])
+        A, B, C = st.equator_printed_abc(c)
         return st._sqrt_freq(*st._quadratic_roots(A, -B, -C))[0] / c["Omega"]
 
     np.testing.assert_allclose(slow(c), 1.0, rtol=1e-3)
