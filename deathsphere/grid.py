@@ -1,18 +1,32 @@
-"""Parsing ``start:stop:step`` ranges, cartesian grids and chunking.
+"""Parsing values and ``start:stop:step`` ranges into lazy axes, cartesian
+grids and chunks.
 
 A range includes its stop when the stop falls on the grid, as a physicist
-reads it: ``5:175:1`` is the 171 values 5, 6, ..., 175.  Values are computed
-as ``start + i * step`` (no accumulated round-off).
+reads it: ``5:175:1`` is the 171 values 5, 6, ..., 175.  Value i is
+``start + i * step`` rounded to the decimals the user wrote (so
+``0.3:180:0.1`` ends at exactly 180 and steps through 0.4, 0.5, ... rather
+than 0.30000000000000004 ...): inputs are echoed as given.
+
+An axis is never materialised: it is a list of segments, and a chunk of a
+grid computes only its own values.  A sweep over a 1e9-value axis therefore
+runs in the memory of one chunk.
 """
 
 from __future__ import annotations
 
 import math
+import re
+from dataclasses import dataclass
 
 import numpy as np
 
 #: A stop within this fraction of a step of the grid counts as on it.
 _ON_GRID = 1e-9
+#: Values one range may hold (each is computed lazily; this bounds only the
+#: index arithmetic and the time a typo such as a step of 1e-300 would take).
+MAX_RANGE_VALUES = 1_000_000_000
+#: Orbits one grid may hold (row numbers stay exact in int64 and float64).
+MAX_GRID_ROWS = 10**15
 
 
 class RangeError(ValueError):
@@ -30,20 +44,108 @@ def parse_number(text: str, what: str) -> float:
     return value
 
 
-def range_size(start: float, stop: float, step: float) -> int:
-    """Number of values in ``start:stop:step`` (stop included when on the grid)."""
-    return int(math.floor((stop - start) / step + _ON_GRID)) + 1
+_DECIMAL = re.compile(r"^\s*[+-]?(\d*)\.?(\d*)\s*$")
 
 
-def parse_values(text: str, what: str = "value", max_values: int | None = None) -> np.ndarray:
-    """One number (``60``) or a range (``5:175:1``) as a float64 array.
+def _decimals(text: str) -> int | None:
+    """Digits after the point of a plain decimal (``0.25`` -> 2), None for
+    exponent notation (then values are not rounded)."""
+    m = _DECIMAL.match(text)
+    return len(m.group(2)) if m else None
 
-    Ranges need ``start <= stop`` and ``step > 0``.  ``max_values`` bounds the
-    size of a range (for commands that hold everything in memory).
+
+@dataclass(frozen=True)
+class Segment:
+    """``n`` values ``start + i * step``, rounded to ``decimals`` (None: not rounded)."""
+
+    start: float
+    step: float
+    n: int
+    decimals: int | None
+
+    def take(self, i: np.ndarray) -> np.ndarray:
+        v = self.start + self.step * i.astype(float)
+        return v if self.decimals is None else np.round(v, self.decimals)
+
+    @property
+    def first(self) -> float:
+        return float(self.take(np.zeros(1, dtype=np.int64))[0])
+
+    @property
+    def last(self) -> float:
+        return float(self.take(np.array([self.n - 1], dtype=np.int64))[0])
+
+
+class Axis:
+    """The values of one option (repeated values and ranges, in order),
+    computed on demand: ``len(axis)``, ``axis.take(indices)``,
+    ``axis.first``/``axis.last`` per segment via :attr:`segments`."""
+
+    def __init__(self, segments: list[Segment]):
+        self.segments = list(segments)
+        self._ends = np.cumsum([s.n for s in self.segments], dtype=np.int64)
+
+    @classmethod
+    def of(cls, values) -> Axis:
+        """An axis of explicit values (e.g. a default)."""
+        return cls([Segment(float(v), 0.0, 1, None) for v in np.atleast_1d(values)])
+
+    def __len__(self) -> int:
+        return int(self._ends[-1]) if self.segments else 0
+
+    def take(self, index) -> np.ndarray:
+        index = np.asarray(index, dtype=np.int64)
+        if len(self.segments) == 1:
+            return self.segments[0].take(index)
+        seg = np.searchsorted(self._ends, index, side="right")
+        out = np.empty(index.shape)
+        starts = self._ends - np.array([s.n for s in self.segments])
+        for j in np.unique(seg):
+            m = seg == j
+            out[m] = self.segments[j].take(index[m] - starts[j])
+        return out
+
+    def values(self) -> np.ndarray:
+        """Every value (only for axes known to be small)."""
+        return self.take(np.arange(len(self)))
+
+    def extremes(self) -> np.ndarray:
+        """The first and last value of each segment: a range is monotone, so
+        an interval condition holds for every value iff it holds for these."""
+        return np.array([x for s in self.segments for x in (s.first, s.last)])
+
+    def contains_zero(self) -> bool:
+        """Whether some value is exactly 0 (for rates that must not be)."""
+        for s in self.segments:
+            if s.step == 0:
+                if s.start == 0:
+                    return True
+                continue
+            i = -s.start / s.step
+            for j in {math.floor(i), math.ceil(i)}:
+                if 0 <= j < s.n and s.take(np.array([j]))[0] == 0:
+                    return True
+        return False
+
+
+def range_size(start: float, stop: float, step: float) -> float:
+    """Number of values in ``start:stop:step`` (stop included when on the
+    grid), as a float so that a huge count is reported, not overflowed."""
+    steps = (stop - start) / step
+    if not steps < 2.0 * MAX_RANGE_VALUES:  # inf (1e308 / 1e-300) or simply too many
+        return math.inf
+    return math.floor(steps + _ON_GRID) + 1.0
+
+
+def parse_segment(text: str, what: str = "value") -> Segment:
+    """One number (``60``) or a range (``5:175:1``) as a :class:`Segment`.
+
+    Ranges need ``start <= stop`` and ``step > 0``, and hold at most
+    :data:`MAX_RANGE_VALUES` values.
     """
     text = text.strip()
     if ":" not in text:
-        return np.array([parse_number(text, what)])
+        return Segment(parse_number(text, what), 0.0, 1, None)
     parts = text.split(":")
     if len(parts) != 3:
         raise RangeError(f"{what}: range {text!r} must be start:stop:step, e.g. 5:175:1")
@@ -53,31 +155,51 @@ def parse_values(text: str, what: str = "value", max_values: int | None = None) 
     if stop < start:
         raise RangeError(f"{what}: range {text!r} is empty: stop must be >= start")
     n = range_size(start, stop, step)
-    if max_values is not None and n > max_values:
-        raise RangeError(f"{what}: range {text!r} has {n} values, more than {max_values}; use `deathsphere sweep`")
-    return start + step * np.arange(n, dtype=float)
+    if not n <= MAX_RANGE_VALUES:
+        many = "too many values" if math.isinf(n) else f"{n:.3g} values"
+        raise RangeError(f"{what}: range {text!r} has {many}; at most {MAX_RANGE_VALUES:.0e} are allowed")
+    digits = [_decimals(p) for p in parts]
+    decimals = None if None in digits else max(digits)
+    return Segment(start, step, int(n), decimals)
+
+
+def parse_axis(texts, what: str) -> Axis:
+    """Several values/ranges (a repeated option), in the order given."""
+    return Axis([parse_segment(t, what) for t in texts])
+
+
+def parse_values(text: str, what: str = "value", max_values: int | None = None) -> np.ndarray:
+    """One number or range as a float64 array (for small axes only)."""
+    seg = parse_segment(text, what)
+    if max_values is not None and seg.n > max_values:
+        raise RangeError(f"{what}: range {text!r} has {seg.n} values, more than {max_values}")
+    return Axis([seg]).values()
 
 
 def parse_many(texts, what: str, max_values: int | None = None) -> np.ndarray:
-    """Concatenate several values/ranges (a repeated option), in the order given."""
+    """Concatenate several values/ranges as one array (small axes only)."""
     arrays = [parse_values(t, what, max_values) for t in texts]
     return np.concatenate(arrays) if arrays else np.empty(0)
 
 
-def grid_size(axes: dict[str, np.ndarray]) -> int:
+def grid_size(axes: dict) -> int:
     return math.prod(len(v) for v in axes.values())
 
 
-def grid_chunks(axes: dict[str, np.ndarray], chunk: int):
+def grid_chunks(axes: dict, chunk: int):
     """Yield ``(first_row, {name: values})`` over the cartesian product of
-    ``axes`` in row-major order (last axis fastest), ``chunk`` rows at a time.
+    ``axes`` (each an :class:`Axis` or an array) in row-major order (last
+    axis fastest), ``chunk`` rows at a time.
 
     Only one chunk is in memory at once, however large the grid.
     """
     names = list(axes)
+    axes = {n: a if isinstance(a, Axis) else Axis.of(a) for n, a in axes.items()}
     shape = tuple(len(axes[n]) for n in names)
     total = math.prod(shape)
+    if total > MAX_GRID_ROWS:
+        raise RangeError(f"the grid has {total:.3g} orbits, more than {MAX_GRID_ROWS:.0e}")
     for first in range(0, total, chunk):
-        flat = np.arange(first, min(first + chunk, total))
+        flat = np.arange(first, min(first + chunk, total), dtype=np.int64)
         index = np.unravel_index(flat, shape)
-        yield first, {n: axes[n][i] for n, i in zip(names, index)}
+        yield first, {n: axes[n].take(i) for n, i in zip(names, index)}

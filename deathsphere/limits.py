@@ -39,8 +39,18 @@ def _speed(v):
     return np.where(np.abs(v) < 1e-6, 0.0, v)
 
 
+def boundary_thetas(step_deg: float) -> np.ndarray:
+    """The theta grid [deg] of the boundary data: multiples of ``step_deg``
+    strictly inside (0, 180), where every boundary is defined."""
+    return np.arange(step_deg, 180.0 - 0.5 * step_deg, step_deg)
+
+
+#: theta values per call of the stability boundary (a progress tick each).
+_STABILITY_CHUNK = 64
+
+
 def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: float, step_deg: float,
-                   stability: bool = False) -> Table:
+                   stability: bool = False, progress=None) -> Table:
     """Every boundary curve alpha(theta) of the allowed region, one row per
     point (curve, equation, theta_deg, alpha_deg), theta on a grid of
     ``step_deg`` over (0, 180) deg, each alpha root-found to 1e-9 rad or better.
@@ -48,12 +58,20 @@ def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: f
     With ``stability`` also the curve ``stability``: where feasible orbits
     change from stable to unstable (:func:`stability_boundary_alphas`,
     bisected to 1e-10 rad between samples 0.25 deg apart in alpha; beyond
-    the paper)."""
-    theta = np.arange(step_deg, 180.0 - 0.5 * step_deg, step_deg)
+    the paper).  ``progress(n)`` is told as each n theta values are done
+    (the stability boundary is the slow part: ~100x the others)."""
+    theta = boundary_thetas(step_deg)
     curves = region.boundary_alphas(np.deg2rad(theta), a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g)
     if stability:
-        curves["stability"] = stability_boundary_alphas(np.deg2rad(theta), a_over_r, 1.0, k, outside=outside,
-                                                        mu=mu, max_g=max_g)
+        parts = []
+        for start in range(0, theta.size, _STABILITY_CHUNK):
+            part = np.deg2rad(theta[start:start + _STABILITY_CHUNK])
+            parts.append(stability_boundary_alphas(part, a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g))
+            if progress is not None:
+                progress(part.size)
+        width = max(p.shape[1] for p in parts)
+        curves["stability"] = np.concatenate(
+            [np.pad(p, ((0, 0), (0, width - p.shape[1])), constant_values=np.nan) for p in parts])
     names, eqs, thetas, alphas = [], [], [], []
     for name, alpha in curves.items():
         i, j = np.nonzero(np.isfinite(alpha))
@@ -73,12 +91,17 @@ def intervals_table(setup: Setup, theta_deg: np.ndarray, max_g: float) -> Table:
     iv = region.allowed_alpha(np.deg2rad(theta_deg), setup.a, setup.r, setup.k, setup.g,
                               setup.side == "outside", setup.mu, max_g)
     count = np.asarray(iv.count).reshape(-1)
-    m = iv.lo.shape[-1]
+
+    def slots_of(field):
+        # one NaN slot when no theta has any interval (the arrays are then (n, 0))
+        x = np.asarray(getattr(iv, field)).reshape(count.size, -1)
+        return x if x.shape[1] else np.full((count.size, 1), np.nan)
+
     slots = np.maximum(count, 1)
     row = np.repeat(np.arange(theta_deg.size), slots)
     j = np.concatenate([np.arange(s) for s in slots]) if row.size else np.empty(0, int)
     present = j < count[row]
-    lo, hi, vmin, vmax = (np.where(present, getattr(iv, f).reshape(-1, m)[row, np.minimum(j, m - 1)], np.nan)
+    lo, hi, vmin, vmax = (np.where(present, slots_of(f)[row, np.minimum(j, slots_of(f).shape[1] - 1)], np.nan)
                           for f in ("lo", "hi", "speed_min", "speed_max"))
     n = row.size
     return Table({
@@ -101,6 +124,16 @@ def highest_orbit_table(setup: Setup, max_g: float) -> Table:
         "found": h.found, "theta_deg": math.degrees(h.theta), "alpha_deg": math.degrees(h.alpha),
         "alpha_min_deg": math.degrees(h.alpha_lo), "alpha_max_deg": math.degrees(h.alpha_hi),
         "v_cm_m_s": _limit(h.speed), "a_m": setup.a, "r_m": setup.r, "k": setup.k,
-        "mu_available": _limit(setup.mu), "max_g": _limit(max_g),
+        "mu_available": _limit(setup.mu), "max_g": _limit(max_g), "note": _highest_note(h),
     }
-    return Table({name: np.array([value]) for name, value in row.items()})
+    return Table({name: np.array([value], dtype=object if name == "note" else None) for name, value in row.items()})
+
+
+def _highest_note(h) -> str:
+    """What the highest-orbit row means, in words (no commas: awk -F, safe)."""
+    if not h.found:
+        return "no feasible orbit at any theta within mu and max_g"
+    if not math.isfinite(h.speed):
+        return ("a bound approached but not reached: the least speed grows without limit as theta "
+                "approaches theta_deg (v_cm_m_s empty)")
+    return "v_cm_m_s is the least speed in the limit theta -> theta_deg"

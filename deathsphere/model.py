@@ -1,5 +1,5 @@
 """The user-facing model: a validated :class:`Setup`, orbit requests, and the
-result :class:`Table` of ordered named columns (the CLI contract, design.md).
+result :class:`Table` of ordered named columns (the column contract, docs/contract.md).
 
 Data flows one way: requests (degrees, per-row parameters) are validated here,
 grouped by body, handed to the pure physics in :mod:`deathsphere.physics`
@@ -21,10 +21,11 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
+from deathsphere import params
 from deathsphere.physics import particle, region, sphere, wheel
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 
-#: The contract's columns, in order (design.md).  Add, never rename or reorder.
+#: The contract's columns, in order (docs/contract.md).  Add, never rename or reorder.
 COLUMNS = (
     "input_row", "body", "side", "theta_deg", "alpha_deg", "a_m", "r_m", "k", "g_m_s2",
     "status", "reason",
@@ -150,49 +151,30 @@ class Setup:
             object.__setattr__(self, name, float(getattr(self, name)))
 
 
-def _finite_number(value) -> bool:
-    return isinstance(value, (int, float, np.floating, np.integer)) and not isinstance(value, bool) \
-        and math.isfinite(value)
-
-
 def validate_scalars(body, side, a, r, k, g, mu=math.inf) -> str:
     """The first problem with one set of parameters, in words ('' if none)."""
     if body not in BODIES:
         return f"body must be one of {' | '.join(BODIES)} (got {body!r})"
     if side not in SIDES:
         return f"side must be one of {' | '.join(SIDES)} (got {side!r})"
-    for name, value in (("a", a), ("r", r), ("k", k), ("g", g)):
-        if not _finite_number(value):
-            return f"{name} must be a finite number (got {value!r})"
-    if isinstance(mu, bool) or not isinstance(mu, (int, float, np.floating, np.integer)) or math.isnan(mu):
-        return f"mu must be a number >= 0 or inf (got {mu!r})"
-    return _range_problem(body, side, a, r, k, g, mu)
+    for name, value in (("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+            return f"{name} must be a number (got {value!r})"
+        problem = params.first_problem(name, [value])
+        if problem:
+            return problem
+    return _combination_problem(side, a, r)
 
 
-def _range_problem(body, side, a, r, k, g, mu) -> str:
-    if a <= 0:
-        return f"a (body radius) must be > 0 m (got {a:g})"
-    if r <= 0:
-        return f"r (sphere radius) must be > 0 m (got {r:g})"
+def _combination_problem(side, a, r) -> str:
     if side == "inside" and r <= a:
         return f"r (sphere radius) must be > a = {a:g} m for a body inside (got {r:g})"
-    if k < 0:
-        return f"k (inertia factor) must be >= 0 (got {k:g})"
-    if g <= 0:
-        return f"g must be > 0 m/s^2 (got {g:g})"
-    if mu < 0:
-        return f"mu must be >= 0 (got {mu:g})"
     return ""
 
 
 def angle_problem(name: str, value: float) -> str:
     """Why an angle in degrees is not allowed ('' if it is)."""
-    lo, hi = (0.0, 180.0) if name == "theta" else (-180.0, 180.0)
-    if not math.isfinite(value):
-        return f"{name} must be a finite number of degrees (got {value!r})"
-    if not lo <= value <= hi:
-        return f"{name} must be within {lo:g}..{hi:g} deg (got {value:g})"
-    return ""
+    return params.first_problem(name, [value])
 
 
 # ---------------------------------------------------------------------------
@@ -226,7 +208,9 @@ def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **f
 def validate_requests(req: dict) -> np.ndarray:
     """Reason each row is invalid ('' for valid rows), without raising.
 
-    Vectorised masks decide which rows fail; words are built only for those.
+    Each value is checked against its domain in :mod:`deathsphere.params`
+    (vectorised), then the combinations (which inputs a body takes, r > a
+    inside).  Words are built only for the rows that fail.
     """
     body, side = req["body"], req["side"]
     k = req["k"].copy()
@@ -238,32 +222,29 @@ def validate_requests(req: dict) -> np.ndarray:
     checks = [
         (~np.isin(body, BODIES), lambda i: f"body must be one of {' | '.join(BODIES)} (got {body[i]!r})"),
         (~np.isin(side, SIDES), lambda i: f"side must be one of {' | '.join(SIDES)} (got {side[i]!r})"),
+        (np.isnan(req["theta"]), lambda i: "theta is missing (give --theta or a theta column)"),
     ]
-    for name in ("a", "r", "k", "g"):
-        v = req[name]
-        checks.append((~np.isfinite(v), lambda i, n=name, v=v: f"{n} must be a finite number (got {v[i]!r})"))
-    checks.append((np.isnan(req["mu"]), lambda i: "mu must be a number >= 0 or inf"))
+
+    def domain(name, given=None):
+        words = params.problems(name, req[name])
+        bad = words != ""
+        checks.append((bad if given is None else bad & given, lambda i, w=words: w[i]))
+
+    for name in ("theta", "a", "r", "k", "g", "mu"):
+        domain(name)
     with np.errstate(invalid="ignore"):
-        range_bad = (req["a"] <= 0) | (req["r"] <= 0) | ((side == "inside") & (req["r"] <= req["a"])) \
-            | (k < 0) | (req["g"] <= 0) | (req["mu"] < 0)
-    checks.append((range_bad, lambda i: _range_problem(
-        body[i], side[i], req["a"][i], req["r"][i], k[i], req["g"][i], req["mu"][i])))
-    theta, alpha = req["theta"], req["alpha"]
-    with np.errstate(invalid="ignore"):
-        checks.append((~(np.isfinite(theta) & (theta >= 0) & (theta <= 180)),
-                       lambda i: angle_problem("theta", theta[i]) if not np.isnan(theta[i])
-                       else "theta is missing (give --theta or a theta column)"))
-    omega3, omega, speed = req["omega3"], req["omega"], req["speed"]
+        checks.append(((side == "inside") & (req["r"] <= req["a"]),
+                       lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
+    alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
     is_wheel, is_sphere = body == "wheel", body == "sphere"
     targets = (~np.isnan(alpha)).astype(int) + (~np.isnan(omega)) + (~np.isnan(speed))
     checks.append((is_wheel & (targets != 1),
                    lambda i: "a wheel needs exactly one of alpha, speed (m/s) and omega (rad/s)"))
+    for name, v in (("alpha", alpha), ("speed", speed), ("omega", omega), ("omega3", omega3)):
+        domain(name, ~np.isnan(v))
     with np.errstate(invalid="ignore"):
-        checks.append((is_wheel & ~np.isnan(alpha) & ~((alpha >= -180) & (alpha <= 180)),
-                       lambda i: angle_problem("alpha", alpha[i])))
-        for name, v in (("speed", speed), ("omega", omega)):
-            checks.append((is_wheel & ~np.isnan(v) & ~(np.isfinite(v) & (v > 0)),
-                           lambda i, n=name, v=v: f"{n} must be a finite number > 0 (got {v[i]:g})"))
+        checks.append((is_wheel & (omega < 0),
+                       lambda i: f"a wheel's omega is its rate about the vertical, > 0 (got {omega[i]:g})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
     checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
@@ -285,7 +266,7 @@ def _wheel(req, rows):
     if tilted.size:
         sel = {key: req[key][tilted] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
         res = wheel.horizontal_orbit(
-            np.deg2rad(sel["theta"]), np.deg2rad(sel["alpha"]), sel["a"], sel["r"], sel["k"], sel["g"],
+            np.deg2rad(sel["theta"]), np.deg2rad(params.reduce_angle(sel["alpha"])), sel["a"], sel["r"], sel["k"], sel["g"],
             outside=req["side"][tilted] == "outside", mu=sel["mu"])
         parts.append((tilted, np.full(tilted.size, -1), res))
     solve = rows[np.isnan(req["alpha"][rows])]
@@ -433,6 +414,7 @@ def _no_stability(n: int) -> dict:
 
 #: ``stability_method`` values.
 EXACT_METHOD = "exact-linearisation"
+NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
 
 
 def add_stability(columns: dict) -> dict:
@@ -452,11 +434,15 @@ def add_stability(columns: dict) -> dict:
     body, outside = columns["body"], columns["side"] == "outside"
     theta = np.deg2rad(columns["theta_deg"])
     par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}
+    singular = live & (columns["k"] == 0) & (body != "particle")
+    out["stability"][singular] = "unknown"
+    out["stability_method"][singular] = NOT_ANALYSED_K0
+    live &= ~singular
     for name in ("wheel", "sphere"):
         rows = np.flatnonzero(live & (body == name))
         if not rows.size:
             continue
-        second = np.deg2rad(columns["alpha_deg"][rows]) if name == "wheel" else columns["omega_rad_s"][rows]
+        second = np.deg2rad(params.reduce_angle(columns["alpha_deg"][rows])) if name == "wheel" else columns["omega_rad_s"][rows]
         solver = exact.wheel_stability if name == "wheel" else exact.sphere_stability
         res = solver(theta[rows], second, *(par[key][rows] for key in ("a", "r", "k", "g")), outside=outside[rows])
         out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]

@@ -584,6 +584,10 @@ class Simulation:
         self.dt = self.t_ref / (self.points_per_period * self.oversample)
         self.t_end = np.where(ok, self.periods * np.where(ok, starts.period, 0.0), 0.0)
         self.j_max = int(math.ceil(float(np.max(self.t_end)) / self.dt - 1e-9)) if ok.any() else 0
+        if self.j_max:
+            # the grid ends exactly at the end time: 0.999 periods are 0.999,
+            # not the 0.99 of the sample before, and 0.001 periods are run
+            self.dt = float(np.max(self.t_end)) / self.j_max
         self.j_per_chunk = self.points_per_period * self.oversample
         self._tol = 1e-9 * self.dt
         self._frame_rate = np.where(frame == "turning", starts.turning, 0.0).astype(float)
@@ -821,7 +825,7 @@ class Simulation:
             q = self._sample(active, ys, ts, run.acc)
             within = ts[:, None] <= end[None, :]
             self._accumulate(active, q, within, run.acc)
-            keep = within & (js % self.oversample == 0)[:, None]
+            keep = within & ((js % self.oversample == 0) | (js == self.j_max))[:, None]
             if keep.any():
                 rows.append(self._rows(active, ts, q, keep))
             n_in = within.sum(axis=0)

@@ -13,7 +13,8 @@ import math
 
 import numpy as np
 
-from deathsphere.model import Setup, Table
+from deathsphere import params
+from deathsphere.model import Setup, Table, evaluate, make_requests
 from deathsphere.physics import stability as exact_stability
 
 COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", "applies", "validity",
@@ -36,18 +37,30 @@ def stability_report(setup: Setup, theta_deg: float, alpha_deg: float) -> Table:
     applying up to SMALL_WHEEL_VALIDITY, and |r'|/a near the poles, applying
     up to 1; ``deviation`` is (paper - exact)/exact, or 1/0 for a verdict
     that differs/agrees)."""
-    theta, alpha = math.radians(theta_deg), math.radians(alpha_deg)
-    exact, results = exact_stability.compare_with_paper(theta, alpha, setup.a, setup.r, setup.k, setup.g,
-                                                        outside=setup.side == "outside")
-    rows = []
+    theta, alpha = math.radians(theta_deg), math.radians(params.reduce_angle(alpha_deg))
+    orbit = evaluate(make_requests(1, body="wheel", side=setup.side, theta=theta_deg, alpha=alpha_deg, a=setup.a,
+                                   r=setup.r, k=setup.k, g=setup.g, mu=setup.mu), stability=False)
+    status, reason = str(orbit["status"][0]), str(orbit["reason"][0])
+    exists = status in ("ok", "slips")
+    # without a steady orbit with contact (or at k = 0, where the equations
+    # of motion are singular) there is nothing to linearise about
+    analysed = exists and setup.k > 0
+    why_not = (f"no steady orbit with contact here ({status}: {reason})" if not exists
+               else "not analysed: k = 0 makes the equations of motion singular")
+    exact, results = ({}, {}) if not analysed else exact_stability.compare_with_paper(
+        theta, alpha, setup.a, setup.r, setup.k, setup.g, outside=setup.side == "outside")
+    rows = [{"source": "exact", "equation": "0, 29, 33", "quantity": "orbit status", "units": "",
+             "applies": True, "validity": None, "paper": None, "corrected": None, "exact": status,
+             "deviation": None, "note": reason or "a steady orbit with contact"}]
     for quantity, key, units in (("growth rate, max Re(eigenvalue)", "growth_rate", "1/s"),
                                  ("slow nutation frequency", "freq_slow", "rad/s"),
                                  ("fast nutation frequency", "freq_fast", "rad/s"),
                                  ("verdict", "verdict", "")):
         rows.append({"source": "exact", "equation": "2-7b linearised", "quantity": quantity, "units": units,
-                     "applies": True, "validity": None, "paper": None, "corrected": None,
-                     "exact": _value(exact[key], key == "verdict"), "deviation": None,
-                     "note": "docs/stability.md sec. 1 (frequencies in the frame turning with the orbit)"})
+                     "applies": analysed, "validity": None, "paper": None, "corrected": None,
+                     "exact": _value(exact[key], key == "verdict") if analysed else None, "deviation": None,
+                     "note": "docs/stability.md sec. 1 (frequencies in the frame turning with the orbit)"
+                     if analysed else why_not})
     for name, res in results.items():
         verdict = name.endswith("verdict")
         validity = np.asarray(res["validity"]).item()

@@ -17,8 +17,9 @@ import math
 
 import numpy as np
 
+from deathsphere import params
 from deathsphere.model import COLUMNS as ORBIT_COLUMNS
-from deathsphere.model import REQUEST_FIELDS, Table, make_requests, validate_requests
+from deathsphere.model import NOT_ANALYSED_K0, REQUEST_FIELDS, Table, make_requests, validate_requests
 from deathsphere.physics import vertical
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 
@@ -40,6 +41,7 @@ COLUMNS = ORBIT_COLUMNS[: ORBIT_COLUMNS.index("mu_available") + 1] + (
 )
 
 FLOQUET_METHOD = "floquet"
+
 
 #: Point-by-point columns (``--points N``).
 POINT_COLUMNS = (
@@ -75,8 +77,10 @@ def _validate(req) -> np.ndarray:
     both_or_none = np.isnan(v) == np.isnan(w)
     for i in np.flatnonzero((reason == "") & both_or_none):
         reason[i] = "give exactly one of v_top (m/s) and phidot_top (rad/s)"
-    for i in np.flatnonzero((reason == "") & ~np.isnan(v) & ~(v >= 0)):
-        reason[i] = f"v_top must be >= 0 m/s (got {v[i]:g})"
+    for name, given in (("v_top", ~np.isnan(v)), ("phidot_top", ~np.isnan(w))):
+        words = params.problems(name, req[name])
+        hit = (reason == "") & given & (words != "")
+        reason[hit] = words[hit]
     return reason
 
 
@@ -116,6 +120,12 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     method = np.full(n, "", dtype=object)
     growth = np.full(n, np.nan)
     live = np.flatnonzero(np.isin(status, (Status.OK, Status.SLIPS)) & (req["side"] == "inside"))
+    if stability:
+        # k = 0 (no rotational inertia) makes the equations of motion singular
+        singular = live[req["k"][live] == 0]
+        verdict[singular] = "unknown"
+        method[singular] = NOT_ANALYSED_K0
+        live = live[req["k"][live] > 0]
     if stability and live.size:
         from deathsphere.physics.stability import VERDICT_LABELS, vertical_floquet
 

@@ -8,6 +8,10 @@ import math
 import click
 
 from deathsphere.cli.base import (
+    OutputPath,
+    Quantity,
+    Values,
+    axis,
     body_options,
     choose_format,
     cli,
@@ -16,25 +20,31 @@ from deathsphere.cli.base import (
     make_setup,
     one_line,
     output_options,
-    parse_angles,
+    progress,
     stderr_console,
     stdout_console,
 )
-from deathsphere.constants import SIDES, STANDARD_GRAVITY
+
+#: Figure formats of the map (matplotlib, the plot extra).
+FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
+#: theta values `limits --theta` evaluates at once (each a root search).
+MAX_LIMIT_THETAS = 100_000
+from deathsphere.constants import SIDES
 
 
 @cli.command("map")
-@click.option("--a-over-r", "a_over_r", type=float, default=0.1, show_default=True,
+@click.option("--a-over-r", "a_over_r", type=Quantity("a_over_r"), default=0.1, show_default=True,
               help="Wheel radius over sphere radius (the paper's figure: 0.1).")
-@click.option("-k", "--inertia", "k", type=float, default=0.5, show_default=True, metavar="K")
+@click.option("-k", "--inertia", "k", type=Quantity("k"), default=0.5, show_default=True, metavar="K")
 @click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside", show_default=True)
-@click.option("--mu", type=float, default=math.inf, metavar="MU", help="Also draw the friction limit mu_required = MU.")
-@click.option("--max-g", "max_g", type=float, default=math.inf, metavar="G",
+@click.option("--mu", type=Quantity("mu"), default=math.inf, metavar="MU",
+              help="Also draw the friction limit mu_required = MU.")
+@click.option("--max-g", "max_g", type=Quantity("max_g"), default=math.inf, metavar="G",
               help="Also draw the g-load limit accel_g = G.")
-@click.option("--output", type=click.Path(dir_okay=False, writable=True), default=None, metavar="FILE",
+@click.option("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
               help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
-@click.option("--step", type=click.FloatRange(0.001, 10.0), default=0.5, show_default=True, metavar="DEG",
-              help="theta step of the boundary data (--format csv/json).")
+@click.option("--step", type=Quantity("step"), default=0.5, show_default=True, metavar="DEG",
+              help="theta step of the boundary data (--format csv/json), 0.001..10.")
 @click.option("--stability", is_flag=True,
               help="Also show the exact linear stability of each orbit (beyond the paper, docs/stability.md): "
                    "stable and unstable parts of the allowed region and the boundary between them.  "
@@ -63,11 +73,8 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, stability, fmt):
       deathsphere map --a-over-r 0.3 --stability --output map.png
     """
     side = side.lower()
-    if not (math.isfinite(a_over_r) and 0 < a_over_r and (a_over_r < 1 or side == "outside")):
-        raise click.BadParameter("must be > 0 (and < 1 inside the sphere)", param_hint="'--a-over-r'")
-    make_setup("wheel", side, a_over_r, 1.0, k, STANDARD_GRAVITY, mu)
-    if not max_g > 0:
-        raise click.BadParameter("must be > 0 (inf: no limit)", param_hint="'--max-g'")
+    if side == "inside" and not a_over_r < 1:
+        raise click.BadParameter("must be < 1 inside the sphere", param_hint="'--a-over-r'")
     outside = side == "outside"
     if output is not None:
         from deathsphere.plot import PlotExtraMissing, plot_map
@@ -77,8 +84,6 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, stability, fmt):
                      stability=stability)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
-        except ValueError as exc:
-            raise click.BadParameter(str(exc), param_hint="'--output'") from None
         stderr_console().print(f"deathsphere: wrote {output}")
         return
     fmt = choose_format(fmt)
@@ -89,15 +94,18 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, stability, fmt):
         stdout_console().print(to_rich(char_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g,
                                                 width=width, stability=stability)), end="")
         return
-    from deathsphere.limits import boundary_table
+    from deathsphere.limits import boundary_table, boundary_thetas
 
-    emit([boundary_table(a_over_r, k, outside, mu, max_g, step, stability=stability)], fmt)
+    thetas = boundary_thetas(step)
+    with progress("boundaries", thetas.size) as bar:
+        table = boundary_table(a_over_r, k, outside, mu, max_g, step, stability=stability, progress=bar.advance)
+    emit([table], fmt)
 
 
 @cli.command("limits")
-@click.option("--theta", multiple=True, metavar="DEG",
+@click.option("--theta", multiple=True, type=Values("theta"), metavar="DEG",
               help="Polar angle(s) of the orbit; without it: the highest orbit possible.")
-@click.option("--max-g", "max_g", type=float, default=math.inf, metavar="G",
+@click.option("--max-g", "max_g", type=Quantity("max_g"), default=math.inf, metavar="G",
               help="Largest centre acceleration the rider takes, in g [default: unlimited].")
 @body_options
 @output_options()
@@ -119,11 +127,12 @@ def limits_command(theta, max_g, body, side, a, r, k, g, mu, fmt):
     setup = make_setup(body, side, a, r, k, g, mu)
     if setup.body != "wheel":
         raise click.UsageError("limits are computed for a wheel (--body wheel)")
-    if not max_g > 0:
-        raise click.BadParameter("must be > 0 (inf: no limit)", param_hint="'--max-g'")
     fmt = choose_format(fmt)
     if theta:
-        table = intervals_table(setup, parse_angles(theta, "theta", 100_000), max_g)
+        thetas = axis(theta)
+        if len(thetas) > MAX_LIMIT_THETAS:
+            raise click.BadParameter(f"{len(thetas)} values, more than {MAX_LIMIT_THETAS}", param_hint="'--theta'")
+        table = intervals_table(setup, thetas.values(), max_g)
         title = "Feasible tilts (fit, Omega^2 > 0, contact, mu, g-load)"
     else:
         table = highest_orbit_table(setup, max_g)

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
-import math
+from deathsphere import params
 
 import click
 
 from deathsphere.cli.base import (
+    OutputPath,
+    Quantity,
     body_options,
     choose_format,
     cli,
@@ -19,25 +21,32 @@ from deathsphere.cli.base import (
     stderr_console,
     stdout_console,
 )
-from deathsphere.model import angle_problem
+
+#: --output formats: still figures of the run (matplotlib, the plot extra).
+FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 
 
 @cli.command("simulate")
-@click.option("--theta", required=True, type=float, metavar="DEG",
+@click.option("--theta", required=True, type=Quantity("theta"), metavar="DEG",
               help="Polar angle of the contact point (vertical orbits: the cone angle, 90 = great circle).")
-@click.option("--alpha", type=float, default=None, metavar="DEG", help="Wheel: tilt of the steady orbit.")
-@click.option("--omega3", type=float, default=None, metavar="RAD_S", help="Sphere: spin about the contact normal.")
-@click.option("--omega", type=float, default=None, metavar="RAD_S", help="Sphere: the signed orbital rate instead.")
+@click.option("--alpha", type=Quantity("alpha"), default=None, metavar="DEG",
+              help="Wheel: tilt of the steady orbit, any angle (205 = -155).")
+@click.option("--omega3", type=Quantity("omega3"), default=None, metavar="RAD_S",
+              help="Sphere: spin about the contact normal.")
+@click.option("--omega", type=Quantity("omega"), default=None, metavar="RAD_S",
+              help="Sphere: the signed orbital rate instead.")
 @click.option("--branch", type=click.IntRange(0, 1), default=0, show_default=True,
               help="Sphere with --omega3: root of eq. 55 (0 slow, 1 fast).")
 @click.option("--vertical", is_flag=True, help="A vertical orbit of a wheel, started at the top with --v-top.")
-@click.option("--v-top", "v_top", type=float, default=None, metavar="M_S", help="Vertical: speed at the top.")
-@click.option("--perturb", type=float, default=0.0, show_default=True, metavar="EPS",
+@click.option("--v-top", "v_top", type=Quantity("v_top"), default=None, metavar="M_S",
+              help="Vertical: speed at the top, >= 0.")
+@click.option("--perturb", type=Quantity("perturb"), default=0.0, show_default=True, metavar="EPS",
               help="Kick off the steady orbit [rad]: the wheel tilted by EPS about its direction of travel "
                    "(a sphere: its contact point moved EPS down the meridian); rolling and contact still hold.")
-@click.option("--periods", type=click.FloatRange(0, 1e6, min_open=True), default=20.0, show_default=True,
-              help="How long: periods of the steady orbit (vertical: laps).")
-@click.option("--points-per-period", type=click.IntRange(2, 100_000), default=100, show_default=True)
+@click.option("--periods", type=Quantity("periods"), default=20.0, show_default=True,
+              help="How long: periods of the steady orbit (vertical: laps), > 0.")
+@click.option("--points-per-period", type=Quantity("points_per_period"), default=100, show_default=True,
+              help="Output rows per period, 2..100000.")
 @click.option("--method", type=click.Choice(("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")), default="DOP853",
               show_default=True, help="scipy.integrate.solve_ivp method.")
 @click.option("--rtol", type=click.FloatRange(1e-14, 1e-2), default=1e-10, show_default=True)
@@ -45,7 +54,7 @@ from deathsphere.model import angle_problem
 @click.option("--frame", type=click.Choice(("turning", "lab")), default="turning", show_default=True,
               help="Integrate in the frame turning with the steady orbit, or in the lab.")
 @click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
-@click.option("--output", type=click.Path(dir_okay=False, writable=True), default=None, metavar="FILE",
+@click.option("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
               help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra).")
 @body_options
 @output_options()
@@ -68,7 +77,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --theta 60 --alpha 10 --perturb 0.05 --format csv > run.csv
       deathsphere simulate --theta 90 --alpha 80 --perturb 1e-6    (unstable: loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
-      deathsphere simulate --body sphere --theta 60 --omega3 40
+      deathsphere simulate --body sphere --theta 60 --omega3 80
     """
     from deathsphere import simulation
     from deathsphere.render import simulation_view
@@ -79,25 +88,20 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     if vertical:
         if setup.body != "wheel" or alpha is not None or v_top is None:
             raise click.UsageError("--vertical simulates a wheel: give --theta and --v-top (no --alpha)")
-        if v_top < 0:
-            raise click.BadParameter("must be >= 0", param_hint="'--v-top'")
     elif v_top is not None:
         raise click.UsageError("--v-top is for --vertical orbits")
     elif setup.body == "wheel" and (alpha is None or omega3 is not None or omega is not None):
         raise click.UsageError("a wheel's steady orbit needs --alpha DEG")
     elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
         raise click.UsageError("a sphere's steady orbit needs exactly one of --omega3 and --omega")
-    problem = angle_problem("theta", theta) or (angle_problem("alpha", alpha) if alpha is not None else "")
-    if problem:
-        raise click.UsageError(problem)
-    for name, value in (("perturb", perturb), ("omega3", omega3), ("omega", omega), ("v-top", v_top)):
-        if value is not None and not math.isfinite(value):
-            raise click.BadParameter("must be a finite number", param_hint=f"'--{name}'")
+    if setup.k == 0:
+        raise click.UsageError("simulate needs -k > 0: at k = 0 the equations of motion are singular")
+    points_per_period = int(points_per_period)
     try:
         if vertical:
             starts = simulation.vertical_starts(setup, theta, v_top, perturb=perturb)
         elif setup.body == "wheel":
-            starts = simulation.horizontal_starts(setup, theta, alpha, perturb=perturb)
+            starts = simulation.horizontal_starts(setup, theta, params.reduce_angle(alpha), perturb=perturb)
         else:
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb=perturb)
@@ -138,6 +142,4 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
             plot_simulation(simulation.concat_tables(series), summary, output=output)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
-        except ValueError as exc:
-            raise click.BadParameter(str(exc), param_hint="'--output'") from None
         stderr_console().print(f"deathsphere: wrote {output}")

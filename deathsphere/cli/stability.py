@@ -5,7 +5,7 @@ from __future__ import annotations
 import click
 
 from deathsphere.cli.base import (
-    angle_problem,
+    Quantity,
     body_options,
     choose_format,
     cli,
@@ -17,8 +17,9 @@ from deathsphere.cli.base import (
 
 
 @cli.command("stability")
-@click.option("--theta", required=True, type=float, metavar="DEG", help="Polar angle of the orbit.")
-@click.option("--alpha", required=True, type=float, metavar="DEG", help="Tilt of the wheel.")
+@click.option("--theta", required=True, type=Quantity("theta"), metavar="DEG", help="Polar angle of the orbit, 0..180.")
+@click.option("--alpha", required=True, type=Quantity("alpha"), metavar="DEG",
+              help="Tilt of the wheel, any angle (205 = -155).")
 @body_options
 @output_options()
 def stability_command(theta, alpha, body, side, a, r, k, g, mu, fmt):
@@ -43,9 +44,6 @@ def stability_command(theta, alpha, body, side, a, r, k, g, mu, fmt):
     if setup.body != "wheel":
         raise click.UsageError("stability compares a wheel's orbit with the paper; for a sphere see the "
                                "stability columns of `deathsphere orbit --body sphere`")
-    problem = angle_problem("theta", theta) or angle_problem("alpha", alpha)
-    if problem:
-        raise click.UsageError(problem)
     table = stability_report(setup, theta, alpha)
     fmt = choose_format(fmt)
     if fmt == "table":
