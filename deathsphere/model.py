@@ -402,8 +402,29 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     # inf ("no limit") is not representable in JSON: empty/null means no --mu given
     columns["mu_available"] = np.where(np.isinf(req["mu"][pick]), np.nan, req["mu"][pick])
     columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
+    finite_or_blank(columns)
     columns.update(add_stability(columns) if stability else _no_stability(len(pick)))
     return Table({name: columns[name] for name in COLUMNS})
+
+
+#: The reason of a row whose result left float64's range (a backstop: the
+#: input domains of :mod:`deathsphere.params` are chosen so that it never fires).
+OVERFLOW_REASON = "a result overflowed float64 (inputs outside the representable range)"
+
+
+def finite_or_blank(columns: dict) -> None:
+    """No row carries inf: an infinite value becomes empty, and a row that
+    claimed an orbit (ok, slips) with one becomes ``invalid`` with the reason."""
+    hit = np.zeros(len(columns["status"]), dtype=bool)
+    for name, col in columns.items():
+        if isinstance(col, np.ndarray) and col.dtype.kind == "f":
+            inf = np.isinf(col)
+            if inf.any():
+                col[inf] = np.nan
+                hit |= inf
+    claimed = hit & np.isin(columns["status"], ("ok", "slips"))
+    columns["status"][claimed] = "invalid"
+    columns["reason"][claimed] = OVERFLOW_REASON
 
 
 def _no_stability(n: int) -> dict:

@@ -1,8 +1,8 @@
 """Table 1 of McDonald (1993): the printed values and their recomputation.
 
-Provenance: transcribed from the ``table1`` tabular of
-``shared/paper/sphere-of-death.tex`` (tests/paper/test_table1.py re-reads the
-LaTeX and checks this transcription).  Values are kept as printed strings so
+Provenance: transcribed from the ``table1`` tabular of the paper's LaTeX
+source (tests/paper/data/table1.tex holds that environment verbatim, and
+tests/paper/test_table1.py checks this transcription against it).  Values are kept as printed strings so
 that the printed precision is known: "0.96" has two decimals, "48" none.
 
 Setup of the table: wheel of radius 0.3 m, k = 1/2, inside a sphere of

@@ -19,7 +19,7 @@ import numpy as np
 
 from deathsphere import params
 from deathsphere.model import COLUMNS as ORBIT_COLUMNS
-from deathsphere.model import NOT_ANALYSED_K0, REQUEST_FIELDS, Table, make_requests, validate_requests
+from deathsphere.model import NOT_ANALYSED_K0, REQUEST_FIELDS, finite_or_blank, Table, make_requests, validate_requests
 from deathsphere.physics import vertical
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 
@@ -142,6 +142,7 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
         "mu_available": np.where(np.isinf(req["mu"]), np.nan, req["mu"]),
         **out,
     }
+    finite_or_blank(columns)
     return Table({name: columns[name] for name in COLUMNS})
 
 

@@ -77,7 +77,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --theta 60 --alpha 10 --perturb 0.05 --format csv > run.csv
       deathsphere simulate --theta 90 --alpha 80 --perturb 1e-6    (unstable: loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
-      deathsphere simulate --body sphere --theta 60 --omega3 80
+      deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
     """
     from deathsphere import simulation
     from deathsphere.render import simulation_view

@@ -1,7 +1,7 @@
 """Status and reason codes shared by every configuration.
 
 A status names the *first* condition an orbit fails, in the order of the
-contract (design.md): fit, real rotation rate, contact, friction.  Each status
+contract (docs/contract.md): fit, real rotation rate, contact, friction.  Each status
 carries a reason code whose words live in :data:`REASONS`; physics functions
 return small integer arrays, and only the model turns them into text.
 """

@@ -1,7 +1,7 @@
 """Quantitative claims of McDonald (1993), secs. 1, 2.2.1, 3, 4 and 5.
 
 Source: K. T. McDonald, "Circular Orbits Inside the Sphere of Death" (1993),
-shared/paper/sphere-of-death.tex.  Each test quotes the claim it checks; where
+the paper's LaTeX source.  Each test quotes the claim it checks; where
 the printed claim is wrong or garbled the test asserts the correct statement
 and says so (these are the errata of docs/errata.md).  The checks are made
 with means independent of the formulas under test where possible: direct
