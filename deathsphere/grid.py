@@ -134,7 +134,8 @@ def range_size(start: float, stop: float, step: float) -> float:
     steps = (stop - start) / step
     if not steps < 2.0 * MAX_RANGE_VALUES:  # inf (1e308 / 1e-300) or simply too many
         return math.inf
-    return math.floor(steps + _ON_GRID) + 1.0
+    # on the grid within 1e-9 of a step, or float64's rounding of a long quotient
+    return math.floor(steps + max(_ON_GRID, 4e-16 * steps)) + 1.0
 
 
 def parse_segment(text: str, what: str = "value") -> Segment:

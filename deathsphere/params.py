@@ -50,6 +50,10 @@ class Param:
     allow_inf: bool = False
     integer: bool = False
 
+    def label(self) -> str:
+        """``name (what)``, e.g. ``a (body radius)``."""
+        return f"{self.name} ({self.what})"
+
     def allowed(self) -> str:
         """The allowed values in words, e.g. ``1e-09..1e+09 m``."""
         unit = f" {self.unit}" if self.unit else ""
@@ -72,33 +76,33 @@ def _positive(name, unit, what):
 
 #: Every parameter, by name.  Angles are in degrees, as on the command line.
 PARAMS: dict[str, Param] = {p.name: p for p in (
-    Param("theta", "deg", "polar angle of the contact point from the upward vertical", 0.0, 180.0),
+    Param("theta", "deg", "polar angle", 0.0, 180.0),
     # any angle is accepted and reduced to (-180, 180] for the physics
-    Param("alpha", "deg", "tilt of the wheel below the orbit plane", -1e6, 1e6),
+    Param("alpha", "deg", "tilt", -1e6, 1e6),
     _positive("a", "m", "body radius"),
-    _positive("r", "m", "fixed sphere radius"),
+    _positive("r", "m", "sphere radius"),
     Param("k", "", "inertia factor", 0.0, 1e3),
-    _positive("g", "m/s^2", "gravitational acceleration"),
-    Param("mu", "", "friction coefficient available", 0.0, math.inf, allow_inf=True),
+    _positive("g", "m/s^2", "gravity"),
+    Param("mu", "", "friction coefficient", 0.0, math.inf, allow_inf=True),
     Param("max_g", "g", "largest g-load", TINY, math.inf, allow_inf=True),
-    Param("omega3", "rad/s", "sphere's spin about the contact normal", -HUGE, HUGE),
-    Param("omega", "rad/s", "orbital rate Omega", -HUGE, HUGE, nonzero=True),
-    _positive("speed", "m/s", "centre speed v_cm"),
-    Param("v_top", "m/s", "speed of the wheel's centre at the top", 0.0, HUGE),
-    Param("phidot_top", "rad/s", "orbital rate at the top", 0.0, HUGE),
+    Param("omega3", "rad/s", "spin", -HUGE, HUGE),
+    Param("omega", "rad/s", "orbital rate", -HUGE, HUGE, nonzero=True),
+    _positive("speed", "m/s", "centre speed"),
+    Param("v_top", "m/s", "top speed", 0.0, HUGE),
+    Param("phidot_top", "rad/s", "top rate", 0.0, HUGE),
     Param("a_over_r", "", "body radius over sphere radius", TINY, HUGE),
-    Param("step", "deg", "theta step of the boundary data", 0.001, 10.0),
-    Param("points", "", "points round the orbit", 2, 1_000_000, integer=True),
-    Param("periods", "", "run length in periods of the steady orbit", 0.0, 1e6, lo_open=True),
-    Param("points_per_period", "", "output rows per period", 2, 100_000, integer=True),
-    Param("perturb", "rad", "kick off the steady orbit", -1.0, 1.0),
+    Param("step", "deg", "theta step", 0.001, 10.0),
+    Param("points", "", "points per orbit", 2, 1_000_000, integer=True),
+    Param("periods", "", "run length in periods", 0.0, 1e6, lo_open=True),
+    Param("points_per_period", "", "rows per period", 2, 100_000, integer=True),
+    Param("perturb", "rad", "kick", -1.0, 1.0),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True),
 )}
 
 
 def _words(p: Param, value) -> str:
     shown = f"{value:g}" if isinstance(value, float) else repr(value)
-    return f"{p.name} must be {p.allowed()} (got {shown})"
+    return f"{p.label()} must be {p.allowed()} (got {shown})"
 
 
 def problems(name: str, values) -> np.ndarray:
@@ -120,7 +124,7 @@ def problems(name: str, values) -> np.ndarray:
         if p.integer:
             bad |= np.isfinite(v) & (v != np.round(v))
     for i in np.flatnonzero(bad):
-        out[i] = (f"{p.name} must be a finite number ({p.allowed()})" if not np.isfinite(v[i])
+        out[i] = (f"{p.label()} must be a finite number ({p.allowed()})" if not np.isfinite(v[i])
                   and not (p.allow_inf and v[i] > 0) else _words(p, float(v[i])))
     return out
 

@@ -584,10 +584,12 @@ class Simulation:
         self.dt = self.t_ref / (self.points_per_period * self.oversample)
         self.t_end = np.where(ok, self.periods * np.where(ok, starts.period, 0.0), 0.0)
         self.j_max = int(math.ceil(float(np.max(self.t_end)) / self.dt - 1e-9)) if ok.any() else 0
-        if self.j_max:
-            # the grid ends exactly at the end time: 0.999 periods are 0.999,
-            # not the 0.99 of the sample before, and 0.001 periods are run
-            self.dt = float(np.max(self.t_end)) / self.j_max
+        ends = np.unique(self.t_end[ok])
+        if self.j_max and ends.size == 1:
+            # the grid ends exactly at the (common) end time: 0.999 periods
+            # are 0.999, not the 0.99 of the sample before, and 0.001 periods
+            # are run rather than rounded to none
+            self.dt = float(ends[0]) / self.j_max
         self.j_per_chunk = self.points_per_period * self.oversample
         self._tol = 1e-9 * self.dt
         self._frame_rate = np.where(frame == "turning", starts.turning, 0.0).astype(float)

@@ -1,7 +1,7 @@
 import numpy as np
 import pytest
 
-from deathsphere.grid import RangeError, grid_chunks, parse_many, parse_values, range_size
+from deathsphere.grid import Axis, parse_segment, RangeError, grid_chunks, parse_many, parse_values, range_size
 
 
 def test_stop_included_as_a_physicist_reads_it():
@@ -26,8 +26,30 @@ def test_many_values_keep_order():
 
 
 def test_limit():
-    with pytest.raises(RangeError, match="sweep"):
+    with pytest.raises(RangeError, match="more than 1000"):
         parse_values("0:100:0.001", max_values=1000)
+
+
+@pytest.mark.parametrize("text", ["0:1e308:1e-300", "0:180:1e-9"])
+def test_huge_ranges_are_refused_without_being_built(text):
+    with pytest.raises(RangeError, match="at most 1e\\+09"):
+        parse_segment(text, "theta")
+
+
+def test_range_values_are_the_decimals_written():
+    """0.3:180:0.1 ends at exactly 180 (not 180.00000000000003), and its
+    values are the decimals a person reads."""
+    values = Axis([parse_segment("0.3:180:0.1")]).values()
+    assert values[-1] == 180.0 and values[1] == 0.4 and len(values) == 1798
+
+
+def test_axes_are_lazy():
+    """A 5e8-value axis is never built: a chunk computes only its own values."""
+    axis = Axis([parse_segment("0:1:2e-9")])
+    assert len(axis) == 5 * 10**8 + 1
+    first, grid = next(grid_chunks({"theta": axis}, 4))
+    np.testing.assert_allclose(grid["theta"], [0, 2e-9, 4e-9, 6e-9])
+    assert axis.take([5 * 10**8])[0] == 1.0
 
 
 def test_chunks_cover_the_grid_in_order():

@@ -8,16 +8,16 @@ from deathsphere.model import COLUMNS, evaluate, make_requests
 
 
 @pytest.mark.parametrize("kwargs, words", [
-    (dict(a=0), "a (body radius) must be > 0"),
-    (dict(a=-1), "a (body radius) must be > 0"),
+    (dict(a=0), "a (body radius) must be 1e-09"),
+    (dict(a=-1), "a (body radius) must be 1e-09"),
     (dict(r=0.3), "must be > a"),
     (dict(k=-0.1), "k (inertia factor)"),
-    (dict(g=0), "g must be > 0"),
+    (dict(g=0), "g (gravity) must be 1e-09"),
     (dict(a=math.nan), "finite"),
     (dict(r=math.inf), "finite"),
     (dict(body="bicycle"), "body must be one of"),
     (dict(side="above"), "side must be one of"),
-    (dict(mu=-1), "mu must be >= 0"),
+    (dict(mu=-1), "mu (friction coefficient) must be >= 0"),
 ])
 def test_setup_rejects_invalid_parameters(kwargs, words):
     with pytest.raises(ValueError, match=words.replace("(", r"\(").replace(")", r"\)")):

@@ -164,8 +164,8 @@ class OutputPath(click.ParamType):
         path = os.fspath(value)
         ext = os.path.splitext(path)[1].lower().lstrip(".")
         if ext not in self.extensions:
-            self.fail(f"{path!r}: the file name must end in one of "
-                      f"{' '.join('.' + e for e in self.extensions)}", param, ctx)
+            names = ["." + e for e in self.extensions]
+            self.fail(f"{path!r}: the file name must end in {', '.join(names[:-1])} or {names[-1]}", param, ctx)
         if os.path.isdir(path) or path.endswith(os.sep):
             self.fail(f"{path!r} is a directory, not a file name", param, ctx)
         folder = os.path.dirname(os.path.abspath(path))

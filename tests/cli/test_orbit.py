@@ -67,16 +67,16 @@ def test_mu_gives_slips(run):
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--theta", "200", "--alpha", "10"], "theta must be within 0..180"),
-    (["--theta", "-1", "--alpha", "10"], "theta must be within 0..180"),
-    (["--theta", "60", "--alpha", "10", "-a", "0"], "a (body radius) must be > 0"),
-    (["--theta", "60", "--alpha", "10", "-a", "-0.3"], "a (body radius) must be > 0"),
+    (["--theta", "200", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
+    (["--theta", "-1", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
+    (["--theta", "60", "--alpha", "10", "-a", "0"], "a (body radius) must be 1e-09..1e+09 m"),
+    (["--theta", "60", "--alpha", "10", "-a", "-0.3"], "a (body radius) must be 1e-09..1e+09 m"),
     (["--theta", "60", "--alpha", "10", "-r", "0.3"], "must be > a = 0.3 m"),
-    (["--theta", "60", "--alpha", "10", "-k", "-0.5"], "k (inertia factor) must be >= 0"),
-    (["--theta", "60", "--alpha", "10", "-g", "0"], "g must be > 0"),
+    (["--theta", "60", "--alpha", "10", "-k", "-0.5"], "k (inertia factor) must be 0..1000"),
+    (["--theta", "60", "--alpha", "10", "-g", "0"], "g (gravity) must be 1e-09"),
     (["--theta", "nan", "--alpha", "10"], "not a finite number"),
     (["--theta", "60", "--alpha", "inf"], "not a finite number"),
-    (["--theta", "60", "--alpha", "10", "-a", "nan"], "a must be a finite number"),
+    (["--theta", "60", "--alpha", "10", "-a", "nan"], "a (body radius) must be a finite number"),
     (["--theta", "sixty", "--alpha", "10"], "is not a number"),
     (["--theta", "10:5:1", "--alpha", "10"], "stop must be >= start"),
     (["--theta", "1:2:0", "--alpha", "10"], "step > 0"),

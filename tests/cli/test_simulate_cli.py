@@ -50,7 +50,7 @@ def test_simulate_table_on_a_terminal(run):
     (["--vertical", "--theta", "90"], "--v-top"),
     (["--body", "sphere", "--theta", "60"], "exactly one of --omega3"),
     (["--body", "particle", "--theta", "120"], "a wheel or a sphere"),
-    (["--theta", "260", "--alpha", "10"], "theta must be within"),
+    (["--theta", "260", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
     (["--theta", "60", "--alpha", "10", "--rtol", "0"], "--rtol"),
     (["--theta", "60", "--alpha", "10", "--perturb", "nan"], "--perturb"),
 ])
