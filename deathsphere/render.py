@@ -332,8 +332,19 @@ def spin_needed_line(get: dict) -> str:
     return f"needs |ω₃| ≥ {format_number(real)} rad/s for an orbit (eq. 56), {contact_text} at {where}"
 
 
-#: Statuses for which a rolling sphere's spin is the thing to change.
-SPIN_STATUSES = ("no_orbit", "no_contact")
+def spin_too_low(get: dict) -> bool:
+    """A rolling sphere with no orbit (or no contact) because |ω₃| is below
+    the least that gives one; not, say, the missing second branch on the
+    equator, or the slow branch of a spin that is fast enough."""
+    if get.get("body") != "sphere" or "omega3_min_real_rad_s" not in get or _isnan(get.get("omega3_rad_s")):
+        return False
+    spin = abs(get["omega3_rad_s"])
+    if get["status"] == "no_orbit":
+        return spin < get["omega3_min_real_rad_s"]
+    if get["status"] == "no_contact":
+        least = get["omega3_min_contact_rad_s"]
+        return _isnan(least) or spin < least
+    return False
 
 
 def one_orbit_table(table: Table, row: int = 0) -> FitTable:
@@ -350,7 +361,7 @@ def one_orbit_table(table: Table, row: int = 0) -> FitTable:
     mu = get.get("mu_available")
     rows.append(("μ available", "∞" if _isnan(mu) else format_number(mu), "", "--mu"))
     notes = []
-    if get["body"] == "sphere" and get["status"] in SPIN_STATUSES and "omega3_min_real_rad_s" in get:
+    if spin_too_low(get):
         notes.append(spin_needed_line(get))
     return quantity_table(f"{get['body']} {get['side']}, {angles}\n{_setup_line(get)}", get, rows, OK_REASON,
                           notes)
@@ -407,17 +418,18 @@ def _summary_cells(col: str, values: list) -> list[str]:
 
 
 def _spin_lines(table: Table) -> list[str]:
-    """For the spheres shown without an orbit or contact: the least spin
-    that would give one, once per setup and θ."""
+    """For the spheres shown whose spin is too low for an orbit or for
+    contact: the least spin that would do, once per setup and θ."""
     if "omega3_min_real_rad_s" not in table:
         return []
     rows = [i for i, (b, s) in enumerate(zip(table["body"].tolist(), table["status"].tolist()))
-            if b == "sphere" and s in SPIN_STATUSES]
+            if b == "sphere" and s != "ok"]
     setup_cols = ("a_m", "r_m", "k", "g_m_s2", "side")
     first = {}
     for i in rows:
         get = _record(table, i)
-        first.setdefault(tuple(get[c] for c in ("theta_deg", *setup_cols)), i)
+        if spin_too_low(get):
+            first.setdefault(tuple(get[c] for c in ("theta_deg", *setup_cols)), i)
     several_setups = len({key[1:] for key in first}) > 1
     lines = []
     for key, i in list(first.items())[:MAX_SPIN_LINES]:
@@ -494,7 +506,7 @@ def generic_table(table: Table, title: str | None = None, total_rows: int | None
                       "left" if head[n].dtype == object else "right") for n in names]
     keys = {names[0], *GENERIC_KEYS} if names else set()
     drop_order = [n for n in reversed(names) if n not in keys]
-    first = _record(head)
+    first = _record(head) if same else {}
     constants = ", ".join(f"{n} = {_plain_cell(first[n])}" for n in same if first[n] != "")
     footer = [row_cap_line(len(head), total)] if total > len(head) else []
     notes = [f"[dim]{constants}[/dim]"] if constants else []
