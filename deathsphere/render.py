@@ -196,9 +196,11 @@ class FitTable:
             out.add_row(*row)
         return out
 
-    def fit(self, console: Console, width: int) -> tuple[RichTable, list[str]]:
-        """The table to print at ``width`` and the keys left out of it."""
-        wide = console.options.update(width=max(width, 100_000))
+    def fit(self, console: Console, options: ConsoleOptions) -> tuple[RichTable, list[str]]:
+        """The table to print within ``options.max_width`` and the keys left out of it."""
+        width = options.max_width
+        # measured without a limit: the natural width, every cell on one line
+        wide = options.update(width=max(width, 100_000))
         shown, left_out = list(self.columns), []
         table = self.build(shown)
         for group in self.drop_order:
@@ -210,7 +212,7 @@ class FitTable:
         return table, left_out
 
     def __rich_console__(self, console: Console, options: ConsoleOptions):
-        table, left_out = self.fit(console, options.max_width)
+        table, left_out = self.fit(console, options)
         if self.title:
             yield Text(self.title, style="table.title")
         yield table
