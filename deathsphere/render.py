@@ -760,6 +760,11 @@ def stability_view(table: Table, setup) -> Group:
         lines.append("[dim]here: " + ", ".join(escape(p) for p in premises) + "[/dim]")
     lines += [f"[dim]{escape(n)}[/dim]" for n in notes]
     lines.append("[dim]errata E1-E9: docs/stability.md, docs/errata.md[/dim]")
+    orbit = next((r for r in exact_rows if r["quantity"] == "orbit status"), None)
+    if orbit is not None and orbit["exact"] not in ("ok", "slips"):
+        # nothing to linearise about: say why instead of an empty table
+        why = exact_rows[-1]["note"]
+        return Group(head, exact, f"[yellow]{escape(why)}[/yellow]")
     paper = FitTable(columns, STABILITY_DROP_ORDER,
                      title="the paper's results (printed, corrected, exact; deviation = printed vs exact)",
                      notes=lines)

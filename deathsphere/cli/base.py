@@ -33,6 +33,7 @@ from deathsphere.model import Setup, Table, angle_problem
 from deathsphere.params import PARAMS, ParameterError, check, first_problem
 from deathsphere.render import (
     FORMATS,
+    MAX_TERMINAL_ROWS,
     write_csv,
     write_json,
     write_ndjson,
@@ -254,11 +255,6 @@ def choose_format(fmt: str | None) -> str:
     return "table" if _isatty(sys.stdout) else "csv"
 
 
-#: Rows a terminal table shows; the rest are counted and named, not drawn
-#: (a person reads a screenful; CSV is the way to see them all).
-MAX_TERMINAL_ROWS = 200
-
-
 def concat(tables: list[Table]) -> Table:
     if len(tables) == 1:
         return tables[0]
@@ -336,12 +332,10 @@ def emit(chunks, fmt: str, title: str | None = None, view=None) -> int:
     if len(table) > MAX_TERMINAL_ROWS:
         table = Table({n: c[:MAX_TERMINAL_ROWS] for n, c in table.columns.items()})
     if view is not None:
-        stdout_console().print(view(table))
-        if total > len(table):
-            stdout_console().print(f"… showing the first {len(table)} of {total} rows; "
-                                   "use --format csv for all of them")
+        stdout_console().print(view(table, total_rows=total))
         return total
-    return write_rich_table(table, stdout_console(), title, total_rows=total)
+    write_rich_table(table, stdout_console(), title, total_rows=total)
+    return total
 
 
 class _OutputFailed(Exception):
