@@ -163,7 +163,8 @@ class _Lines:
 
     def _raw(self) -> bytes:
         try:
-            return self._read(READ_BYTES) or b""
+            data = self._read(READ_BYTES) or b""
+            return data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
         except UnicodeDecodeError:  # a text stream that could not decode
             raise InputError(f"{self.source} is not UTF-8 or UTF-16 CSV text") from None
         except (OSError, ValueError) as exc:  # EIO, EISDIR, a closed stream ...
@@ -262,7 +263,8 @@ class RequestReader:
     ``defaults``: field -> scalar used where a field has no column or an
     empty cell (else the field's own default; None means NaN).
     ``aliases``: other header names -> field (default :data:`ALIASES`).
-    ``ignore``: header names read and discarded (a command's output columns).
+    ``ignore``: header names read and discarded (a command's output columns);
+    a name that is a field or an alias is read as that field even if listed.
     ``source``: the input's name in messages.
 
     The constructor reads up to and including the header and raises
@@ -316,7 +318,7 @@ class RequestReader:
                 continue
             if field is None:
                 what = f"column {position} has no name" if not written else f"unknown column {written!r}"
-                also = "; output columns are ignored" if ignored else ""
+                also = " (and this command's output columns, which are ignored)" if ignored else ""
                 raise InputError(f"{self.source}: {what}; allowed: "
                                  f"{allowed_columns(self.fields, self.aliases)}{also}")
             if field in seen:
