@@ -205,6 +205,11 @@ def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **f
     return req
 
 
+def fixed_bank_angle(theta_deg, side):
+    """A sphere's bank angle [deg]: theta - 90 inside, theta + 90 outside (sec. 4)."""
+    return theta_deg + np.where(side == "outside", 90.0, -90.0)
+
+
 def validate_requests(req: dict) -> np.ndarray:
     """Reason each row is invalid ('' for valid rows), without raising.
 
@@ -249,7 +254,11 @@ def validate_requests(req: dict) -> np.ndarray:
     checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
     checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
-    checks.append((is_sphere & ~np.isnan(alpha), lambda i: "a sphere's tilt is fixed (theta - 90 deg): no alpha"))
+    # a result CSV fed back carries a sphere's fixed bank angle as alpha_deg: that one is accepted
+    with np.errstate(invalid="ignore"):
+        bank = np.abs(params.reduce_angle(alpha - fixed_bank_angle(req["theta"], side))) < 1e-9
+    checks.append((is_sphere & ~np.isnan(alpha) & ~bank,
+                   lambda i: "a sphere's tilt is fixed (theta - 90 deg inside, + 90 outside): no alpha"))
     checks.append(((body == "particle") & ~(np.isnan(alpha) & np.isnan(omega)),
                    lambda i: "a particle takes only theta (no alpha or omega)"))
     for failed, words in checks:
@@ -381,8 +390,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
 
     order = np.lexsort((branch, source))
     pick = source[order]
-    # a sphere's bank angle is fixed: theta - 90 deg inside, theta + 90 outside (sec. 4)
-    sphere_alpha = req["theta"] + np.where(req["side"] == "outside", 90.0, -90.0)
+    sphere_alpha = fixed_bank_angle(req["theta"], req["side"])
     alpha = np.where(body[source] == "sphere", sphere_alpha[source], alpha)
     columns = {
         "input_row": req["input_row"][pick].astype(np.int64),

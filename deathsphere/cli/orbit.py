@@ -90,11 +90,18 @@ def grid_batches(axes: dict, chunk: int, **fixed):
         raise click.UsageError(str(exc)) from None
 
 
-def input_batches(reader, chunk: int):
-    """``(n, request)`` per chunk of ``--input`` rows (streamed)."""
+def input_batches(reader, chunk: int, make=make_requests):
+    """``(n, request)`` per chunk of ``--input`` rows (streamed); a file with
+    a header and no rows gives one empty batch, so the output still has its
+    header."""
+    empty = True
     for part in reader.chunks(chunk):
         n = len(part.input_row)
-        yield n, make_requests(n, invalid=part.invalid, input_row=part.input_row, **part.values)
+        empty = False
+        yield n, make(n, invalid=part.invalid, input_row=part.input_row, **part.values)
+    if empty:
+        yield 0, make(0, **{name: np.empty(0, dtype=object if name in ("body", "side") else float)
+                            for name in reader.fields})
 
 
 def _total(axes: dict) -> int:

@@ -20,7 +20,7 @@ from deathsphere.cli.base import (
     output_options,
     run_batches,
 )
-from deathsphere.cli.orbit import _total
+from deathsphere.cli.orbit import _total, input_batches
 from deathsphere.grid import grid_chunks
 from deathsphere.constants import (
     SIDES,
@@ -91,12 +91,7 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
         reader = open_requests(input_path, VERTICAL_FIELDS, defaults, aliases=aliases,
                                ignore=[c for c in COLUMNS if c not in echo])
 
-        def batches():
-            for part in reader.chunks(chunk):
-                n = len(part.input_row)
-                yield n, vertical_requests(n, invalid=part.invalid, input_row=part.input_row, **part.values)
-
-        batches, total = batches(), None
+        batches, total = input_batches(reader, chunk, vertical_requests), None
     else:
         if not theta:
             raise click.UsageError("give --theta DEG (or --input FILE)")
