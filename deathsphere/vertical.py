@@ -146,15 +146,20 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     return Table({name: columns[name] for name in COLUMNS})
 
 
-def vertical_points(req: dict, points: int) -> Table:
+def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = None) -> Table:
     """The orbit point by point: ``points`` azimuths phi from the top (0 deg)
     round to 360 deg for every valid request (rows grouped by request, in
-    input order); an invalid request gives one row with its reason."""
+    input order); an invalid request gives one row with its reason.
+
+    ``start:stop`` picks a slice of the azimuths, so that a long orbit can be
+    written piece by piece in bounded memory; an invalid request's row comes
+    with the slice that starts at 0."""
     reason_words = _validate(req)
     rows = np.flatnonzero(reason_words == "")
-    phi = vertical.phi_grid(points)
-    source = np.concatenate([np.repeat(rows, points), np.flatnonzero(reason_words != "")])
-    m = rows.size * points
+    phi = vertical.phi_grid(points)[start:stop]
+    bad = np.flatnonzero(reason_words != "") if start == 0 else np.empty(0, dtype=np.int64)
+    source = np.concatenate([np.repeat(rows, phi.size), bad])
+    m = rows.size * phi.size
     cols = {c: np.full(source.size, np.nan) for c in POINT_COLUMNS[5:]}
     status = np.full(source.size, Status.INVALID, dtype=np.int8)
     reason = np.empty(source.size, dtype=object)

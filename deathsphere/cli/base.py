@@ -163,12 +163,12 @@ class OutputPath(click.ParamType):
 
     def convert(self, value, param, ctx):
         path = os.fspath(value)
+        if os.path.isdir(path) or path.endswith(os.sep):
+            self.fail(f"{path!r} is a directory, not a file name", param, ctx)
         ext = os.path.splitext(path)[1].lower().lstrip(".")
         if ext not in self.extensions:
             names = ["." + e for e in self.extensions]
             self.fail(f"{path!r}: the file name must end in {', '.join(names[:-1])} or {names[-1]}", param, ctx)
-        if os.path.isdir(path) or path.endswith(os.sep):
-            self.fail(f"{path!r} is a directory, not a file name", param, ctx)
         folder = os.path.dirname(os.path.abspath(path))
         if not os.path.isdir(folder):
             self.fail(f"{path!r}: the directory {os.path.dirname(path) or '.'!r} does not exist", param, ctx)

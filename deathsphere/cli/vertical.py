@@ -108,8 +108,15 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
 
         batches = batches()
     if points:
-        tally = run_batches(batches, lambda req: vertical_points(req, points), fmt, label="vertical orbits",
-                            total=total, title="Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)")
+        def point_batches():
+            # an orbit of more than POINT_ROWS points is written slice by slice
+            for n, req in batches:
+                for start in range(0, points, POINT_ROWS):
+                    yield (n if start + POINT_ROWS >= points else 0), (req, start)
+
+        tally = run_batches(point_batches(), lambda job: vertical_points(job[0], points, job[1], job[1] + POINT_ROWS),
+                            fmt, label="vertical orbits", total=total,
+                            title="Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)")
     else:
         tally = run_batches(batches, lambda req: evaluate_vertical(req, stability=with_stability), fmt,
                             label="vertical orbits", total=total, view=vertical_view)
