@@ -22,6 +22,29 @@ from deathsphere.cli.base import (
 from deathsphere.model import angle_problem
 
 
+def _preflight_output(output) -> bool:
+    """Before anything is integrated: refuse an --output that cannot be
+    written here (unknown extension, missing extra or encoder) with one
+    line and exit 2.  Returns True for a 3-D view, False for a figure."""
+    from deathsphere import plot
+    from deathsphere.viewer import VIEW_FORMATS, ViewerUnavailable, check_view_output, view_format
+
+    fmt = view_format(output)
+    if fmt in VIEW_FORMATS:
+        try:
+            check_view_output(output)
+        except ViewerUnavailable as exc:
+            fail(one_line(str(exc)))
+        return True
+    if fmt not in plot.FORMATS:
+        fail(f"--output must end in .png, .svg or .pdf (figure) or .html, .gif or .mp4 (3-D view), got {output!r}")
+    try:
+        plot._matplotlib()
+    except plot.PlotExtraMissing as exc:
+        fail(one_line(str(exc)))
+    return False
+
+
 @cli.command("simulate")
 @click.option("--theta", required=True, type=float, metavar="DEG",
               help="Polar angle of the contact point (vertical orbits: the cone angle, 90 = great circle).")
@@ -46,7 +69,9 @@ from deathsphere.model import angle_problem
               help="Integrate in the frame turning with the steady orbit, or in the lab.")
 @click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
 @click.option("--output", type=click.Path(dir_okay=False, writable=True), default=None, metavar="FILE",
-              help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra).")
+              help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), "
+                   "or write the 3-D view: .html (interactive, self-contained), .gif (plot extra), "
+                   ".mp4 (plot extra and ffmpeg).")
 @body_options
 @output_options()
 def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, perturb, periods, points_per_period,
@@ -69,6 +94,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --theta 90 --alpha 80 --perturb 1e-6    (unstable: loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
       deathsphere simulate --body sphere --theta 60 --omega3 40
+      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-3 --output orbit.html   (3-D view)
     """
     from deathsphere import simulation
     from deathsphere.render import simulation_view
@@ -93,6 +119,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     for name, value in (("perturb", perturb), ("omega3", omega3), ("omega", omega), ("v-top", v_top)):
         if value is not None and not math.isfinite(value):
             raise click.BadParameter("must be a finite number", param_hint=f"'--{name}'")
+    view = output is not None and _preflight_output(output)
     try:
         if vertical:
             starts = simulation.vertical_starts(setup, theta, v_top, perturb=perturb)
@@ -102,7 +129,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb=perturb)
         sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
-                                    rtol=rtol, atol=atol, frame=frame)
+                                    rtol=rtol, atol=atol, frame=frame, record_states=view)
     except ValueError as exc:
         raise click.UsageError(str(exc)) from None
     fmt = choose_format(fmt)
@@ -130,7 +157,12 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
         emit([summary], fmt)
     else:
         stderr_console().print(simulation_view(summary))
-    if output is not None:
+    if view:
+        from deathsphere.viewer import write_view
+
+        size = write_view(output, simulation.concat_tables(series), summary, sim.sample_states())
+        stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)")
+    elif output is not None:
         from deathsphere.plot import PlotExtraMissing
         from deathsphere.plot_simulation import plot_simulation
 
