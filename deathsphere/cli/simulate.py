@@ -161,7 +161,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
         from deathsphere.viewer import write_view
 
         size = write_view(output, simulation.concat_tables(series), summary, sim.sample_states())
-        stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)")
+        stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
     elif output is not None:
         from deathsphere.plot import PlotExtraMissing
         from deathsphere.plot_simulation import plot_simulation

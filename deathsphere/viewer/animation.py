@@ -39,8 +39,8 @@ def frame_times(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MA
         return np.zeros(1)
     t_end = max(ends)
     span = min(t_end, max_seconds)
-    n = max(1, int(np.floor(span * fps + 1e-9)) + 1)
-    return t_end - span + np.arange(n) / fps if n > 1 else np.array([t_end])
+    n = int(np.floor(span * fps + 1e-9)) + 1
+    return t_end - np.arange(n)[::-1] / fps
 
 
 def _index(scene, t):
