@@ -47,6 +47,31 @@ def _index(scene, t):
     return int(np.clip(np.searchsorted(scene.t, t, side="right") - 1, 0, scene.n_frames - 1))
 
 
+def _unit(v):
+    return v / np.linalg.norm(v)
+
+
+def _between(scene, t):
+    """Geometry at time t, linear between the samples around it (as the
+    HTML view does; the panel shows the earlier sample's own numbers)."""
+    i = _index(scene, t)
+    j = min(i + 1, scene.n_frames - 1)
+    f = 0.0 if j == i else float(np.clip((t - scene.t[i]) / (scene.t[j] - scene.t[i]), 0.0, 1.0))
+    geo = scene.geometry
+    out = {k: (1 - f) * geo[k][:, i] + f * geo[k][:, j]
+           for k in ("centre", "axis", "e3", "contact", "normal_force", "friction_force", "spoke")}
+    out["axis"] = _unit(out["axis"])
+    if scene.body == "wheel":
+        e3 = out["e3"] - np.dot(out["e3"], out["axis"]) * out["axis"]
+        out["e3"] = _unit(e3)
+        psi = (1 - f) * geo["spin"][i] + f * geo["spin"][j]
+        out["spoke"] = np.cos(psi) * out["e3"] + np.sin(psi) * np.cross(out["axis"], out["e3"])
+    else:
+        out["e3"] = _unit(out["e3"])
+        out["spoke"] = _unit(out["spoke"])
+    return i, out
+
+
 def _sphere_lines(ax, r):
     s = np.linspace(0, 2 * np.pi, 121)
     for ph in np.arange(0, np.pi, np.pi / 6):          # meridians (full great circles)
@@ -149,22 +174,20 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
     def draw(k):
         t = times[k]
         for s, body, spoke, trail, normal, friction in artists:
-            i = _index(s, t)
-            geo = s.geometry
-            c, e1, e3, p = geo["centre"][:, i], geo["axis"][:, i], geo["e3"][:, i], geo["contact"][:, i]
+            i, now = _between(s, t)
+            c, e1, e3, p = now["centre"], now["axis"], now["e3"], now["contact"]
             if s.body == "wheel":
                 body.set_verts([_disc(c, e1, e3, s.a)])
-                tip = c + 0.95 * s.a * geo["spoke"][:, i]
-                spoke.set_data_3d([c[0], tip[0]], [c[1], tip[1]], [c[2], tip[2]])
+                tip = c + 0.95 * s.a * now["spoke"]
             else:
                 body.set_verts(_ball(c, s.a))
-                tip = c + 1.05 * s.a * geo["spoke"][:, i]          # the body-fixed marker
-                spoke.set_data_3d([c[0], tip[0]], [c[1], tip[1]], [c[2], tip[2]])
-            tr = geo["contact"][:, : i + 1]
+                tip = c + 1.05 * s.a * now["spoke"]          # the body-fixed marker
+            spoke.set_data_3d([c[0], tip[0]], [c[1], tip[1]], [c[2], tip[2]])
+            tr = np.column_stack((s.geometry["contact"][:, : i + 1], p))
             trail.set_data_3d(tr[0], tr[1], tr[2])
             scale = FORCE_SCALE_R_PER_G * s.r / s.g
             for art, key in ((normal, "normal_force"), (friction, "friction_force")):
-                q = p + scale * geo[key][:, i]
+                q = p + scale * now[key]
                 art.set_data_3d([p[0], q[0]], [p[1], q[1]], [p[2], q[2]])
         if drawn:
             panel.set_text(_panel(drawn[0], _index(drawn[0], t)))
