@@ -540,6 +540,9 @@ class Simulation:
         (:func:`deathsphere.physics.dynamics.project`) at every chunk
         boundary; off by default, so ``constraint_residual`` shows the
         integrator's true drift
+    record_states : bool   also keep the full state (c, e1, w) at every
+        output row, for :meth:`sample_states` (off by default: the time
+        series and summary are the same either way)
 
     Iterate with :meth:`chunks` (streaming), then :meth:`summary`; or call
     :meth:`run`.
@@ -547,7 +550,8 @@ class Simulation:
 
     def __init__(self, starts: Starts, *, periods: float = 20.0, points_per_period: int = 100,
                  method: str = "DOP853", rtol: float = 1e-10, atol: float | None = None,
-                 frame: str = "turning", mu=None, project_each_period: bool = False):
+                 frame: str = "turning", mu=None, project_each_period: bool = False,
+                 record_states: bool = False):
         if not (isinstance(periods, (int, float, np.integer, np.floating)) and math.isfinite(periods)
                 and periods > 0):
             raise ValueError(f"periods must be a finite number > 0 (got {periods!r})")
@@ -594,6 +598,8 @@ class Simulation:
         self._tol = 1e-9 * self.dt
         self._frame_rate = np.where(frame == "turning", starts.turning, 0.0).astype(float)
         self._summary = None
+        self.record_states = bool(record_states)
+        self._state_parts = []
 
     @property
     def n_chunks(self) -> int:
@@ -640,11 +646,21 @@ class Simulation:
         drift = (dyn.energy(y, p) - acc["e0"][idx]) / acc["e_scale"][idx]
         res = dyn.constraint_residuals(y, p)
         resid = np.maximum(np.where(p.sphere, 0.0, np.abs(res["axis"])), np.abs(res["contact"]) / p.r)
-        return {
+        q = {
             "theta": theta, "phi": phi, "alpha": alpha, "speed": speed,
             "normal": f["normal"], "friction": f["friction_magnitude"], "mu": f["mu_required"],
             "drift": drift, "resid": resid,
         }
+        if self.record_states:
+            # the turning frame is at angle Omega t from the lab about +z
+            ang = self._frame_rate[idx][None, :] * t[:, None]
+            cos, sin = np.cos(ang), np.sin(ang)
+            lab = np.array(y, dtype=float, copy=True)
+            for rows in (dyn.C, dyn.E1, dyn.W):
+                x, yy = y[rows][0], y[rows][1]
+                lab[rows.start], lab[rows.start + 1] = cos * x - sin * yy, sin * x + cos * yy
+            q["state"] = lab
+        return q
 
     def _accumulate(self, idx, q, within, acc):
         """Fold samples ``q`` of bodies ``idx`` into the summary extrema,
@@ -664,6 +680,11 @@ class Simulation:
     def _rows(self, idx, t, q, keep):
         """Long-format rows (time-major) of the samples where keep (m, nb)."""
         rows = self.starts.input_row[idx]
+        if "state" in q:
+            self._state_parts.append({
+                "input_row": np.broadcast_to(rows[None, :], keep.shape)[keep].astype(np.int64),
+                "t_s": np.broadcast_to(t[:, None], keep.shape)[keep],
+                "state": q["state"][:, keep]})
         return {
             "input_row": np.broadcast_to(rows[None, :], keep.shape)[keep].astype(np.int64),
             "t_s": np.broadcast_to(t[:, None], keep.shape)[keep],
@@ -696,6 +717,7 @@ class Simulation:
         n = len(s)
         wall0 = time.perf_counter()
         self._summary = None
+        self._state_parts = []
         acc = {name: np.full(n, np.nan) for name in (
             "theta_drift", "alpha_drift", "min_normal", "max_mu", "max_drift", "max_resid",
             "event_t", "event_phi", "event_theta", "event_alpha", "t_done")}
@@ -910,6 +932,29 @@ class Simulation:
         if self._summary is None:
             raise RuntimeError("the simulation has not been run to the end: exhaust chunks() or call run()")
         return self._summary
+
+    def sample_states(self) -> dict:
+        """The full state at every output row (beyond the paper;
+        docs/simulation.md "3-D view"), for a run made with
+        ``record_states=True``, once :meth:`chunks` has been exhausted.
+
+        Returns a dict: ``input_row`` (N,), ``t_s`` (N,) and ``state`` (9, N),
+        the state (c, e1, w) of :mod:`deathsphere.physics.dynamics` in lab
+        components (a run in the turning frame is rotated back by Omega t),
+        the rows in the order of the time series (time-major, then
+        ``input_row``), so row j belongs to row j of the series.
+        """
+        if not self.record_states:
+            raise RuntimeError("the simulation was made without record_states=True")
+        self.summary()
+        parts = self._state_parts
+        if not parts:
+            return {"input_row": np.zeros(0, dtype=np.int64), "t_s": np.zeros(0), "state": np.zeros((9, 0))}
+        rows = np.concatenate([p["input_row"] for p in parts])
+        t = np.concatenate([p["t_s"] for p in parts])
+        state = np.concatenate([p["state"] for p in parts], axis=1)
+        order = np.lexsort((rows, t))
+        return {"input_row": rows[order], "t_s": t[order], "state": state[:, order]}
 
     def run(self, progress: Callable[[int, int], None] | None = None) -> tuple[Table, Table]:
         """Run to the end; returns ``(series, summary)``."""

@@ -30,7 +30,8 @@ def test_readme_has_commands():
 
 
 @pytest.mark.parametrize("line, stdin", commands())
-def test_readme_command_runs(run, line, stdin):
+def test_readme_command_runs(run, line, stdin, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)     # a command with --output FILE writes it here
     args = shlex.split(line)[1:]
     if "sweep" in args:  # keep the suite fast: the same command on a coarser grid
         args = [re.sub(r"^(\d+):(\d+):1$", r"\1:\2:20", a) for a in args]

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from deathsphere import params
-
 import click
+
+from deathsphere import params
 
 from deathsphere.cli.base import (
     OutputPath,
@@ -22,8 +22,25 @@ from deathsphere.cli.base import (
     stdout_console,
 )
 
-#: --output formats: still figures of the run (matplotlib, the plot extra).
-FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
+#: --output formats and the package each needs: still figures of the run,
+#: and the 3-D view (html needs nothing beyond the core).
+OUTPUTS = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib",
+           "html": None, "gif": "matplotlib", "mp4": "matplotlib"}
+
+
+def _preflight_output(output) -> bool:
+    """Before anything is integrated (the path, extension and the plot extra
+    are already checked by :class:`OutputPath`): an .mp4 also needs its
+    encoder.  Returns True for a 3-D view, False for a figure."""
+    from deathsphere.viewer import VIEW_FORMATS, ViewerUnavailable, check_view_output, view_format
+
+    if view_format(output) not in VIEW_FORMATS:
+        return False
+    try:
+        check_view_output(output)
+    except ViewerUnavailable as exc:
+        fail(one_line(str(exc)))
+    return True
 
 
 @cli.command("simulate")
@@ -54,8 +71,10 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 @click.option("--frame", type=click.Choice(("turning", "lab")), default="turning", show_default=True,
               help="Integrate in the frame turning with the steady orbit, or in the lab.")
 @click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
-@click.option("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
-              help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra).")
+@click.option("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
+              help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), "
+                   "or write the 3-D view: .html (interactive, self-contained), .gif (plot extra), "
+                   ".mp4 (plot extra and ffmpeg).")
 @body_options
 @output_options()
 def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, perturb, periods, points_per_period,
@@ -78,6 +97,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --theta 90 --alpha 80 --perturb 1e-6    (unstable: loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
+      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-3 --output orbit.html   (3-D view)
     """
     from deathsphere import simulation
     from deathsphere.render import simulation_view
@@ -97,6 +117,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     if setup.k == 0:
         raise click.UsageError("simulate needs -k > 0: at k = 0 the equations of motion are singular")
     points_per_period = int(points_per_period)
+    view = output is not None and _preflight_output(output)
     try:
         if vertical:
             starts = simulation.vertical_starts(setup, theta, v_top, perturb=perturb)
@@ -106,7 +127,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb=perturb)
         sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
-                                    rtol=rtol, atol=atol, frame=frame)
+                                    rtol=rtol, atol=atol, frame=frame, record_states=view)
     except ValueError as exc:
         raise click.UsageError(str(exc)) from None
     fmt = choose_format(fmt)
@@ -134,7 +155,12 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
         emit([summary], fmt)
     else:
         stderr_console().print(simulation_view(summary))
-    if output is not None:
+    if view:
+        from deathsphere.viewer import write_view
+
+        size = write_view(output, simulation.concat_tables(series), summary, sim.sample_states())
+        stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
+    elif output is not None:
         from deathsphere.plot import PlotExtraMissing
         from deathsphere.plot_simulation import plot_simulation
 

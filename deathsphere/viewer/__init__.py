@@ -1,0 +1,94 @@
+"""3-D view of a simulated orbit (beyond the paper; docs/simulation.md,
+"3-D view"): an interactive HTML page, or a GIF / MP4 loop.
+
+* :mod:`deathsphere.viewer.frames` -- state (c, e1, w) to frame geometry,
+  pure numpy;
+* :mod:`deathsphere.viewer.scene` -- the bodies of a run at a bounded
+  number of frames, with the panel's numbers from the time series;
+* :mod:`deathsphere.viewer.html` -- one self-contained HTML file (no
+  third-party code; the template ships as package data);
+* :mod:`deathsphere.viewer.animation` -- GIF (Pillow) or MP4 (ffmpeg)
+  through matplotlib's animation module (the ``plot`` extra).
+
+:func:`check_view_output` says, before anything is integrated, whether the
+file can be written here; :func:`write_view` writes it.
+"""
+
+from __future__ import annotations
+
+import importlib
+import shutil
+from pathlib import Path
+
+from deathsphere.model import Table
+
+__all__ = ["VIEW_FORMATS", "ViewerUnavailable", "view_format", "check_view_output", "write_view"]
+
+#: --output extensions that give the 3-D view
+VIEW_FORMATS = ("html", "gif", "mp4")
+
+
+class ViewerUnavailable(RuntimeError):
+    """The requested view cannot be written on this machine (a missing
+    extra or encoder); the message is one line saying what to install."""
+
+
+def view_format(output) -> str:
+    """The lower-case extension of ``output`` without the dot ('' if none)."""
+    return Path(output).suffix.lower().lstrip(".")
+
+
+def _has_ffmpeg() -> bool:
+    # matplotlib asks the same question (animation.writers.is_available)
+    from matplotlib import rcParams
+
+    return shutil.which(rcParams["animation.ffmpeg_path"]) is not None
+
+
+def check_view_output(output) -> str:
+    """Check that ``output`` (.html, .gif or .mp4) can be written here,
+    without computing anything; returns its format.
+
+    Raises
+    ------
+    ValueError          the extension is not one of :data:`VIEW_FORMATS`
+    ViewerUnavailable   .gif / .mp4 without matplotlib (the ``plot`` extra),
+                        or .mp4 without the ffmpeg encoder
+    """
+    fmt = view_format(output)
+    if fmt not in VIEW_FORMATS:
+        raise ValueError(f"a 3-D view is written as .html, .gif or .mp4, got {str(output)!r}")
+    if fmt == "html":
+        return fmt
+    from deathsphere.plot import EXTRA_HINT
+
+    try:
+        importlib.import_module("matplotlib")
+    except ImportError:
+        raise ViewerUnavailable(f"writing .{fmt} needs matplotlib, which is not installed; "
+                                f"install the extra: {EXTRA_HINT}") from None
+    if fmt == "mp4" and not _has_ffmpeg():
+        raise ViewerUnavailable("writing .mp4 needs the ffmpeg encoder, which is not on PATH; "
+                                "install ffmpeg, or write .gif or .html instead")
+    return fmt
+
+
+def write_view(output, series: Table, summary: Table, states: dict, *, title: str = "") -> int:
+    """Write the 3-D view of a run to ``output`` (.html, .gif or .mp4, by
+    its extension); returns the file's size in bytes.
+
+    ``series``, ``summary`` and ``states`` are the run's time series, its
+    summary and :meth:`deathsphere.simulation.Simulation.sample_states`.
+    """
+    from deathsphere.viewer.scene import build_scenes
+
+    fmt = check_view_output(output)
+    scenes = build_scenes(series, summary, states)
+    if fmt == "html":
+        from deathsphere.viewer.html import write_html
+
+        return write_html(output, scenes, title)
+    from deathsphere.viewer.animation import write_animation
+
+    write_animation(output, scenes, title=title)
+    return Path(output).stat().st_size

@@ -1,0 +1,86 @@
+"""The 3-D view as one self-contained HTML file (beyond the paper;
+docs/simulation.md, "3-D view").
+
+The page is ``template.html`` (package data: plain JavaScript drawing on a
+2-D canvas with its own perspective projection and depth-sorted drawing,
+no third-party code) with the run's frames embedded as JSON: numbers are
+little-endian float32 arrays in base64, about 5.3 characters a number.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from deathsphere.viewer.scene import BodyScene
+
+__all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "SCALAR_KEYS"]
+
+#: where the template takes the data (a JavaScript expression)
+DATA_MARK = "/*__DEATHSPHERE_DATA__*/null"
+#: frame vectors stored, (3, F) each, frame-major x, y, z
+VECTOR_KEYS = ("centre", "axis", "e3", "contact", "normal_force", "friction_force")
+#: frame scalars stored, (F,) each
+SCALAR_KEYS = ("spin",)
+PANEL_KEYS = ("theta", "alpha", "speed", "g_load", "mu", "normal", "friction")
+
+
+def _encode(x) -> str:
+    return base64.b64encode(np.ascontiguousarray(x, dtype="<f4").tobytes()).decode("ascii")
+
+
+def decode_array(text: str, rows: int = 1) -> np.ndarray:
+    """Inverse of the encoding: (F,) for rows 1, else (rows, F)."""
+    x = np.frombuffer(base64.b64decode(text), dtype="<f4").astype(np.float64)
+    return x if rows == 1 else x.reshape(-1, rows).T
+
+
+def _body(scene: BodyScene) -> dict:
+    out = {
+        "input_row": scene.input_row, "body": scene.body, "side": scene.side, "orbit": scene.orbit,
+        "a": scene.a, "r": scene.r, "g": scene.g, "theta0_deg": scene.theta0_deg,
+        "alpha0_deg": scene.alpha0_deg, "period": scene.period if np.isfinite(scene.period) else None,
+        "status": scene.status, "reason": scene.reason, "event_time": scene.event_time,
+        "n": scene.n_frames, "t": _encode(scene.t),
+    }
+    for key in VECTOR_KEYS:
+        out[key] = _encode(scene.geometry[key].T) if scene.n_frames else ""
+    for key in SCALAR_KEYS:
+        out[key] = _encode(scene.geometry[key]) if scene.n_frames else ""
+    out["panel"] = {key: (_encode(scene.panel[key]) if scene.n_frames else "") for key in PANEL_KEYS}
+    return out
+
+
+def view_data(scenes: list[BodyScene], title: str = "") -> dict:
+    """The JSON-able data the page reads: ``title``, ``t_end`` [s] (the
+    latest time of any body) and ``bodies`` (one dict per body, arrays
+    base64 float32, see :func:`decode_array`)."""
+    ends = [float(s.t[-1]) for s in scenes if s.n_frames]
+    return {"format": "deathsphere-view/1", "title": title, "t_end": max(ends) if ends else 0.0,
+            "bodies": [_body(s) for s in scenes]}
+
+
+def _template() -> str:
+    return resources.files("deathsphere.viewer").joinpath("template.html").read_text(encoding="utf-8")
+
+
+def render_html(scenes: list[BodyScene], title: str = "") -> str:
+    """The page's text (UTF-8)."""
+    text = json.dumps(view_data(scenes, title), separators=(",", ":"), allow_nan=False)
+    # nothing in the data may close the script element
+    text = text.replace("</", "<\\/")
+    page = _template()
+    if DATA_MARK not in page:
+        raise RuntimeError("the viewer template lacks its data mark")
+    return page.replace(DATA_MARK, text, 1)
+
+
+def write_html(output, scenes: list[BodyScene], title: str = "") -> int:
+    """Write the page to ``output``; returns its size in bytes."""
+    data = render_html(scenes, title).encode("utf-8")
+    Path(output).write_bytes(data)
+    return len(data)

@@ -1,0 +1,43 @@
+"""The HTML 3-D view in a real headless browser (Chromium or Chrome): it
+loads without script errors and its animation advances.
+
+The page records script errors (window "error" events) and the current
+frame index as attributes of <body>; the browser runs with a virtual time
+budget and dumps the DOM.  Skipped only where no browser binary is on PATH.
+"""
+
+import pytest
+
+from deathsphere.viewer import write_view
+from view_page import body_attributes, browser_binary, dump_dom
+from viewer_cases import run_case
+
+
+@pytest.fixture(scope="module")
+def browser():
+    binary = browser_binary()
+    if binary is None:
+        pytest.skip("no chromium/chrome binary on PATH: the real-browser check of the 3-D viewer needs one")
+    return binary
+
+
+@pytest.mark.parametrize("name", ["wheel_kicked", "sphere_inside", "vertical", "unstable"])
+def test_page_loads_without_errors_and_animates(tmp_path, browser, name):
+    series, summary, states, _ = run_case(name, periods=1)
+    out = tmp_path / "orbit.html"
+    write_view(out, series, summary, states)
+    attrs = body_attributes(dump_dom(browser, out))
+    assert attrs["errors"] == "0", dump_dom(browser, out)[-3000:]
+    assert attrs["ready"] == "1"
+    assert int(attrs["frame"]) > 0 and float(attrs["time"]) > 0
+
+
+def test_a_broken_page_is_caught(tmp_path, browser):
+    """The harness itself: a page whose script fails reports it."""
+    series, summary, states, _ = run_case("wheel_inside", periods=0.2)
+    out = tmp_path / "broken.html"
+    write_view(out, series, summary, states)
+    page = out.read_text(encoding="utf-8")
+    out.write_text(page.replace("var DATA = {", "var DATA = {bodies: null, x: {", 1), encoding="utf-8")
+    attrs = body_attributes(dump_dom(browser, out, budget_ms=500))
+    assert int(attrs["errors"]) >= 1 and attrs["ready"] == "0" and attrs["frame"] == "0"

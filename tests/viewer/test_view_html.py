@@ -1,0 +1,87 @@
+"""The HTML 3-D view: embedded data match the run, the page is
+self-contained, and a 20-period orbit stays small."""
+
+import re
+
+import numpy as np
+import pytest
+
+from deathsphere.viewer import write_view
+from deathsphere.viewer.html import decode_array
+from deathsphere.viewer.scene import build_scenes, frame_indices
+from deathsphere.viewer.frames import frame_geometry
+from view_page import page_data
+from viewer_cases import run_case
+
+
+def _page(tmp_path, name, **run):
+    series, summary, states, params = run_case(name, **run)
+    out = tmp_path / f"{name}.html"
+    size = write_view(out, series, summary, states)
+    text = out.read_text(encoding="utf-8")
+    assert size == len(text.encode("utf-8"))
+    return text, series, summary, states, params
+
+
+def assert_self_contained(page):
+    # nothing is fetched: no external src/href, no stylesheet links, no imports
+    assert not re.search(r"""(src|href)\s*=\s*["']?\s*(https?:)?//""", page, flags=re.I)
+    assert not re.search(r"<(link|iframe|img|object|embed)\b", page, flags=re.I)
+    assert not re.search(r"<script[^>]*\bsrc\s*=", page, flags=re.I)
+    assert not re.search(r"\b(import\s*\(|importScripts|fetch\s*\(|XMLHttpRequest)", page)
+    assert "http://" not in page and "https://" not in page
+
+
+@pytest.mark.parametrize("name", ["wheel_kicked", "vertical", "sphere_inside", "wheel_outside", "unstable"])
+def test_page_holds_the_run(tmp_path, name):
+    page, series, summary, states, params = _page(tmp_path, name, periods=1)
+    assert_self_contained(page)
+    data = page_data(page)
+    assert data["format"] == "deathsphere-view/1"
+    (body,) = data["bodies"]                                   # one body in, one body drawn
+    t = decode_array(body["t"])
+    assert body["n"] == t.size == len(series)                  # few rows: every one is a frame
+    assert t[0] == 0.0 and t[-1] == pytest.approx(series["t_s"][-1], rel=1e-6)
+    assert data["t_end"] == pytest.approx(series["t_s"][-1])
+    assert body["status"] == summary["status"][0] and body["body"] == summary["body"][0]
+    centre = decode_array(body["centre"], rows=3)
+    geo = frame_geometry(states["t_s"], states["state"], params)
+    assert np.allclose(centre, geo["centre"], atol=1e-6 * params.r)   # float32 storage
+    theta = decode_array(body["panel"]["theta"])
+    assert np.allclose(theta, series["theta_deg"], atol=1e-4)
+    if summary["status"][0] == "contact_lost":
+        assert body["event_time"] == pytest.approx(summary["event_time_s"][0])
+        assert t[-1] == pytest.approx(body["event_time"], rel=1e-6)
+    else:
+        assert body["event_time"] is None
+
+
+def test_twenty_table1_periods_stay_well_under_10_mb(tmp_path, run):
+    out = tmp_path / "orbit.html"
+    res = run("simulate", "--theta", "60", "--alpha", "10", "--periods", "20", "--output", str(out),
+              "--summary-only", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    size = out.stat().st_size
+    print(f"20-period Table 1 orbit: {size} bytes ({size / 1e6:.2f} MB)")
+    assert size < 10_000_000
+    data = page_data(out.read_text(encoding="utf-8"))
+    (body,) = data["bodies"]
+    assert body["n"] == 2001 and data["t_end"] == pytest.approx(20 * body["period"], rel=1e-9)
+    assert f"wrote {out}" in res.stderr
+
+
+def test_long_runs_are_downsampled_keeping_the_end():
+    idx = frame_indices(100_001, 6000)
+    assert idx.size <= 6000 + 1 and idx[0] == 0 and idx[-1] == 100_000
+    assert np.all(np.diff(idx) > 0)
+    series, summary, states, _ = run_case("unstable", points_per_period=2000)
+    (scene,) = build_scenes(series, summary, states, max_frames=50)
+    assert scene.n_frames <= 51 and scene.t[-1] == series["t_s"][-1] == scene.event_time
+
+
+def test_a_body_without_orbit_gives_a_page_saying_so(tmp_path, run):
+    out = tmp_path / "none.html"
+    res = run("simulate", "--body", "sphere", "--theta", "60", "--omega3", "40", "--output", str(out))
+    assert res.exit_code == 0
+    (body,) = page_data(out.read_text(encoding="utf-8"))["bodies"]
+    assert body["n"] == 0 and body["status"] == "no_orbit" and body["reason"]

@@ -1,0 +1,44 @@
+"""Read the data a 3-D view page embeds, and load pages in a real browser."""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+BROWSERS = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable", "chrome")
+
+
+def page_data(page: str) -> dict:
+    """The JSON the page's script reads (``var DATA = {...};``)."""
+    m = re.search(r"var DATA = (\{.*?\});\n", page, flags=re.S)
+    assert m, "no embedded data in the page"
+    return json.loads(m.group(1))
+
+
+def browser_binary():
+    for name in BROWSERS:
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def dump_dom(binary, html_path, budget_ms=3000):
+    """The page's DOM after ``budget_ms`` of virtual time in headless mode
+    (virtual time: no wall-clock waits, the same on a slow machine)."""
+    with tempfile.TemporaryDirectory() as profile:
+        res = subprocess.run(
+            [binary, "--headless", "--disable-gpu", "--no-sandbox", "--no-first-run",
+             f"--user-data-dir={profile}", f"--virtual-time-budget={budget_ms}", "--dump-dom",
+             "file://" + os.path.abspath(html_path)],
+            capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stderr[-2000:]
+    return res.stdout
+
+
+def body_attributes(dom: str) -> dict:
+    m = re.search(r"<body([^>]*)>", dom)
+    assert m, dom[:500]
+    return dict(re.findall(r'data-([a-z]+)="([^"]*)"', m.group(1)))
