@@ -1,4 +1,4 @@
-"""Simulation wall time (issue 6): 20 periods of a Table 1 orbit at rtol 1e-10,
+"""Simulation wall time: 20 periods of a Table 1 orbit at rtol 1e-10,
 and how the cost grows with the number of bodies integrated at once.
 
 Run:  python benchmarks/bench_simulation.py [--periods 20] [--rtol 1e-10]

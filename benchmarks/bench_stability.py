@@ -1,6 +1,6 @@
 """Benchmark: exact stability verdict for a 10^5-orbit grid, one core.
 
-    /work/venv/bin/python benchmarks/bench_stability.py [n_theta n_alpha]
+    python benchmarks/bench_stability.py [n_theta n_alpha]
 
 Grid: theta 1..179 deg x alpha 0.5..89.5 deg (default 317 x 317 = 100 489
 orbits), a = 0.3 m, r = 3 m, k = 1/2, wheel inside.  Every orbit goes
