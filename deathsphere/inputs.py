@@ -47,8 +47,7 @@ from typing import BinaryIO, Iterable, Iterator
 
 import numpy as np
 
-from deathsphere.model import COLUMNS as ORBIT_COLUMNS
-from deathsphere.model import REQUEST_FIELDS, make_requests
+from deathsphere.model import REQUEST_FIELDS
 
 ALIASES = {
     "theta_deg": "theta", "alpha_deg": "alpha", "a_m": "a", "r_m": "r", "g_m_s2": "g",
@@ -491,35 +490,3 @@ class RequestReader:
                     number = math.nan
             out[i] = number
         return out
-
-
-def _gather(reader: RequestReader) -> tuple[int, dict, np.ndarray]:
-    chunks = list(reader.chunks())
-    n = sum(len(c) for c in chunks)
-    if chunks:
-        values = {name: np.concatenate([c.values[name] for c in chunks]) for name in reader.fields}
-        values["input_row"] = np.concatenate([c.input_row for c in chunks])
-        invalid = np.concatenate([c.invalid for c in chunks])
-    else:
-        values = {name: np.empty(0, dtype=object if name in TEXT_FIELDS else float) for name in reader.fields}
-        values["input_row"] = np.empty(0, dtype=np.int64)
-        invalid = np.empty(0, dtype=object)
-    return n, values, invalid
-
-
-def read_table(stream, defaults: dict, source: str = "input", fields=REQUEST_FIELDS, *, ignore: Iterable[str] = ()):
-    """Whole-input form of :class:`RequestReader` (kept for existing callers).
-
-    Returns ``(n, values, invalid)``: the number of rows, one array per field
-    plus ``input_row``, and the reason each row is unreadable ('' if fine).
-    ``stream`` may be binary or text."""
-    extra = {k: v for k, v in defaults.items() if v is not None and k not in fields}
-    n, values, invalid = _gather(RequestReader(stream, fields, defaults, source=source, ignore=ignore))
-    return n, {**extra, **values}, invalid
-
-
-def read_requests(stream, defaults: dict, source: str = "input") -> dict:
-    """Parse a request CSV into an orbit request batch (see :func:`make_requests`);
-    the orbit output columns are accepted and ignored."""
-    n, values, invalid = read_table(stream, defaults, source, ignore=ORBIT_COLUMNS)
-    return make_requests(n, invalid=invalid, **values)

@@ -23,8 +23,6 @@ from deathsphere.inputs import (
     RequestReader,
     allowed_columns,
     open_input,
-    read_requests,
-    read_table,
 )
 from deathsphere.model import COLUMNS, REQUEST_FIELDS
 
@@ -448,24 +446,6 @@ def test_standard_input_is_binary(monkeypatch):
     monkeypatch.setattr(sys, "stdin", stdin)
     r = RequestReader(open_input("-"), FIELDS, {})
     assert r.encoding == "UTF-16" and [c.values["theta"].tolist() for c in r.chunks()] == [[60.0]]
-
-
-# ---------------------------------------------------------------- the whole-input wrappers
-
-def test_read_table_takes_text_and_returns_input_row():
-    n, values, invalid = read_table(io.StringIO("theta,alpha\n60,10\n\n70,abc\n"), {"a": 0.2})
-    assert n == 2 and values["input_row"].tolist() == [1, 3] and values["a"].tolist() == [0.2, 0.2]
-    assert invalid.tolist() == ["", "alpha: 'abc' is not a number"]
-
-
-def test_read_requests_keeps_file_numbering_and_accepts_output_columns():
-    req = read_requests(io.StringIO("input_row,theta_deg,alpha_deg,status\n9,60,10,ok\n\n9,70,20,ok\n"), {})
-    assert req["input_row"].tolist() == [1, 3] and req["theta"].tolist() == [60.0, 70.0]
-
-
-def test_read_table_header_only():
-    n, values, invalid = read_table(io.StringIO("theta,alpha\n"), {})
-    assert n == 0 and len(values["theta"]) == 0 and len(invalid) == 0
 
 
 # ---------------------------------------------------------------- property: lines <-> rows

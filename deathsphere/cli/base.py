@@ -29,7 +29,7 @@ from deathsphere.constants import (
 )
 from deathsphere.exitcodes import ExitCode
 from deathsphere.grid import Axis, RangeError, Segment, parse_segment
-from deathsphere.model import Setup, Table, angle_problem
+from deathsphere.model import Setup, Table
 from deathsphere.params import PARAMS, ParameterError, check, first_problem
 from deathsphere.render import (
     FORMATS,

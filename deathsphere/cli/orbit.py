@@ -4,7 +4,6 @@ batch at a time or streamed in chunks."""
 from __future__ import annotations
 
 import math
-import sys
 
 import click
 import numpy as np
