@@ -15,10 +15,12 @@ slip, as corrected (docs/stability.md, "Errata").
 
 from __future__ import annotations
 
+import cmath
 from enum import IntEnum
 
 import numpy as np
 
+from deathsphere.physics import _rk8
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside
 from deathsphere.physics.wheel import omega_squared
@@ -559,31 +561,109 @@ def near_pole_paper(theta, alpha, a, r, k, g):
 
 
 #: |multiplier| - 1 at or below which a vertical orbit is called stable, and at
-#: or above which unstable (unknown between).  The RK4 monodromy with the
-#: default step reproduces |mu| = 1 to ~1e-10 on stable orbits and the
-#: multipliers change by ~1e-8 when the step is halved (docs/stability.md).
+#: or above which unstable (unknown between).  The order-8 monodromy with the
+#: default step reproduces |mu| = 1 to ~1e-11 on stable orbits and its
+#: multipliers are within ~1e-9 of a run with a quarter of the step
+#: (docs/stability.md sec. 2).
 FLOQUET_STABLE_TOL = 1e-6
 FLOQUET_UNSTABLE_TOL = 1e-4
 
+#: orbits up to which the monodromy is integrated orbit by orbit on Python
+#: complex numbers (dynamics._equations with cmath.sqrt); more orbits go
+#: through numpy arrays, all orbits and directions at once
+_FLOQUET_SCALAR_MAX = 16
 
-def vertical_floquet(theta, phidot0, a, r, k, g, step=0.05):
+
+def _vertical_neutral_basis(X0, th, pd, a, r, p, D):
+    """Orthonormal basis (n, 9, 3) (scaled coordinates) of the complement of
+    the six neutral directions of a vertical orbit at its top: the two
+    constraint normals, phase f(X0), rotation about the vertical z x X0,
+    d/dtheta and d/dphidot0 of the family (docs/stability.md sec. 2)."""
+    n = th.size
+    c, e1 = X0[dyn.C], X0[dyn.E1]
+    fx = dyn.rhs(X0, p)
+    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(X0[dyn.W])))
+    dth = np.imag(dyn.vertical_orbit_state(th + 1j * _H, pd, a, r)) / _H
+    dpd = np.imag(dyn.vertical_orbit_state(th, pd + 1j * _H, a, r)) / _H
+    V = np.stack((fx, gen, dth, dpd), axis=-1) / D[..., None]
+    e3 = dyn._geometry(X0, p)[8]
+    pv = c + a * e3
+    n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
+    n2 = np.concatenate((pv, -a * dyn._dot(c, e1) * e3, np.zeros((3, n))))
+    Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
+    A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)
+    A = A / np.linalg.norm(A, axis=1, keepdims=True)
+    return _orthonormal_complement(A, 9)
+
+
+def _rk8_columns(x, p, dt, steps):
+    """``steps`` fixed steps dt (n,) of the order-8 Runge-Kutta method
+    (:mod:`deathsphere.physics._rk8`) of the unperturbed flow (lab frame)
+    from the complex states x (9, n, m); returns the states at the end.
+
+    Few orbits: orbit by orbit, each column's right-hand side on Python
+    complex numbers (the lines of :func:`dynamics._equations` with
+    cmath.sqrt; ~40x cheaper than numpy on 9-element arrays); stage sums by
+    numpy.  Many orbits: :func:`dynamics.rhs` on all at once.  Both run the
+    same equations; tests/physics/test_floquet.py compares them."""
+    n, m = x.shape[1], x.shape[2]
+    out = np.empty_like(x)
+    if n <= _FLOQUET_SCALAR_MAX:
+        for i in range(n):
+            coef = dyn.scalar_coefficients(dyn.BodyParams(*(f[i:i + 1] for f in p)))
+            out[:, i, :] = _rk8_scalar(x[:, i, :].T.copy(), coef, float(dt[i]), steps).T
+        return out
+    pc = dyn.BodyParams(*(f[:, None] for f in p))
+    h = np.asarray(dt, dtype=float)[:, None]
+    ks = [None] * len(_rk8.B)
+    for _ in range(steps):
+        for s, row in enumerate(_rk8.A):
+            xs = x
+            for j, a_sj in row:
+                xs = xs + (h * a_sj) * ks[j]
+            ks[s] = dyn.rhs(xs, pc)
+        x = x + h * sum(b * kj for b, kj in zip(_rk8.B, ks) if b)
+    return x
+
+
+def _rk8_scalar(X, coef, dt, steps):
+    """:func:`_rk8_columns` for one orbit: X (m, 9) complex."""
+    m = X.shape[0]
+    eq = dyn._equations
+    sqrt = cmath.sqrt
+    nst = len(_rk8.B)
+    A = [np.array([a_sj * dt for _, a_sj in row]) for row in _rk8.A]
+    J = [[j for j, _ in row] for row in _rk8.A]
+    Bw = np.array(_rk8.B) * dt
+    x = X.reshape(-1)
+    ks = np.empty((nst, m * 9), dtype=complex)
+    for _ in range(steps):
+        for s in range(nst):
+            xs = (x + A[s].dot(ks[J[s]]) if s else x).tolist()
+            ks[s] = [v for col in range(0, 9 * m, 9) for v in eq(*xs[col:col + 9], coef, sqrt)]
+        x = x + Bw.dot(ks)
+    return x.reshape(m, 9)
+
+
+def vertical_floquet(theta, phidot0, a, r, k, g, step=0.25):
     """Exact linear stability of vertical orbits by Floquet analysis.
 
     Beyond the paper (the paper's eqs. 100-106 freeze the coefficients at the
-    top of the orbit; docs/stability.md).  The variational equations of the
-    exact flow (:mod:`deathsphere.physics.dynamics`) are integrated over one
-    period T (eq. 27; :func:`dynamics.vertical_orbit_period`) by classical
-    RK4 with complex-step perturbations (the monodromy matrix is exact up to
-    the RK4 truncation, controlled by ``step`` = largest rate x time step).
-    The monodromy is restricted to the constraint manifold and to the
-    complement of the six neutral directions (phase, energy, theta family,
-    rotation about the vertical, and the two constraint normals), leaving 3
+    top of the orbit; docs/stability.md sec. 2).  The monodromy matrix over
+    one period T (eq. 27; :func:`dynamics.vertical_orbit_period`) is taken on
+    the constraint manifold modulo the six neutral directions (phase,
+    energy, theta family, rotation about the vertical, and the two
+    constraint normals): only the three directions spanning that quotient
+    are integrated, as complex-step perturbations of the state (exact
+    derivatives), with the exact equations of motion
+    (:mod:`deathsphere.physics.dynamics`) and a fixed-step order-8
+    Runge-Kutta method (``step`` = largest rate x time step).  That leaves 3
     multipliers: one is 1 (a further neutral direction, found numerically),
     the other two are the nutation pair.
 
     Inputs broadcast: theta [rad] (orbit plane at distance r cos(theta)
     from the centre), phidot0 [rad/s] rate at the top, a, r [m], k [-],
-    g [m/s^2].  Batched (one integration for all orbits).
+    g [m/s^2].  Batched.
 
     Returns dict: ``multipliers`` (..., 3) complex; ``max_abs`` max |mu|;
     ``growth_rate`` log(max |mu|)/T [1/s]; ``nu`` [rad/s] |arg mu|/T of the
@@ -609,35 +689,14 @@ def vertical_floquet(theta, phidot0, a, r, k, g, step=0.05):
     p = dyn.BodyParams(a, r, k, g, np.zeros(n, dtype=bool), np.zeros(n, dtype=bool))
     pdmax = np.sqrt(pd ** 2 + 4 * g / ((2 * k + 1) * rp))
     S = np.sqrt((rp * pdmax / a) ** 2 + pdmax ** 2 + g / a)     # fastest rate
-    N = int(np.ceil(np.max(T * S * 2.0) / step)) if n else 0
+    N = int(np.ceil(np.max(T * S) / step)) if n else 0
     D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)), np.broadcast_to(S, (3, n))))
-    pc = dyn.BodyParams(*(x[:, None] for x in p))
-    x = X0[:, :, None] + 1j * _H * (np.eye(9)[:, None, :] * D[:, :, None])   # (9, n, 9)
-    dt = (T / max(N, 1))[:, None]
-    for _ in range(N):
-        k1 = dt * dyn.rhs(x, pc)
-        k2 = dt * dyn.rhs(x + 0.5 * k1, pc)
-        k3 = dt * dyn.rhs(x + 0.5 * k2, pc)
-        k4 = dt * dyn.rhs(x + k3, pc)
-        x = x + (k1 + 2 * k2 + 2 * k3 + k4) / 6
-    M = np.moveaxis(np.imag(x) / _H / D[:, :, None], 1, 0)                 # (n, 9, 9) scaled
+    Wb = _vertical_neutral_basis(X0, th, pd, a, r, p, D)                       # (n, 9, 3)
+    x = X0[:, :, None] + 1j * _H * (np.moveaxis(Wb, 0, 1) * D[:, :, None])    # (9, n, 3)
+    x = _rk8_columns(x, p, T / max(N, 1), N)
+    MW = np.moveaxis(np.imag(x) / _H / D[:, :, None], 1, 0)                   # (n, 9, 3) scaled
     ret = np.sqrt(np.sum((np.real(x[0:3, :, 0]) - X0[0:3]) ** 2, axis=0))
-    # neutral directions (scaled)
-    c, e1, w = X0[dyn.C], X0[dyn.E1], X0[dyn.W]
-    fx = dyn.rhs(X0, p)
-    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(w)))
-    dth = np.imag(dyn.vertical_orbit_state(th + 1j * _H, pd, a, r)) / _H
-    dpd = np.imag(dyn.vertical_orbit_state(th, pd + 1j * _H, a, r)) / _H
-    V = np.stack((fx, gen, dth, dpd), axis=-1) / D[..., None]
-    e3 = dyn._geometry(X0, p)[8]
-    pv = c + a * e3
-    n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
-    n2 = np.concatenate((pv, -a * dyn._dot(c, e1) * e3, np.zeros((3, n))))
-    Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
-    A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)
-    A = A / np.linalg.norm(A, axis=1, keepdims=True)
-    Wb = _orthonormal_complement(A, 9)                                         # (n, 9, 3)
-    K = np.einsum("nji,njk,nkl->nil", Wb, M, Wb)
+    K = np.einsum("nji,njl->nil", Wb, MW)
     finite = np.all(np.isfinite(K), axis=(-2, -1)) & ok
     mu = np.linalg.eigvals(np.where(finite[:, None, None], K, np.eye(3)))
     mu = np.where(finite[:, None], mu, np.nan)
