@@ -574,17 +574,37 @@ FLOQUET_UNSTABLE_TOL = 1e-4
 _FLOQUET_SCALAR_MAX = 16
 
 
-def _vertical_neutral_basis(X0, th, pd, a, r, p, D):
+#: the reversing symmetry of a vertical orbit (orbit plane normal to y, top
+#: at x = 0): the mirror x -> -x combined with time reversal flips the x
+#: components of c, e1 and w, and G f(X) = -f(G X) for the flow f
+_REVERSAL = np.array([-1.0, 1, 1, -1, 1, 1, -1, 1, 1])
+
+
+def _vertical_state(th, pd, a, r, k, g, bottom=False):
+    """State of a vertical orbit at its top (:func:`dynamics.vertical_orbit_state`)
+    or, with ``bottom``, half a lap later at its bottom: the top state turned
+    by pi about the orbit's axis y (x, z of each vector flipped) with the
+    bottom rate phidot^2 = phidot0^2 + 4 g/((2k+1) r') (eq. 27).  Complex
+    theta / phidot0 accepted (complex step)."""
+    if not bottom:
+        return dyn.vertical_orbit_state(th, pd, a, r)
+    rp = r * np.sin(th) - a
+    X = dyn.vertical_orbit_state(th, np.sqrt(pd * pd + 4 * g / ((2 * k + 1) * rp)), a, r)
+    return X * np.array([-1.0, 1, -1, -1, 1, -1, -1, 1, -1])[:, None]
+
+
+def _vertical_neutral_basis(X0, th, pd, a, r, k, g, p, D, bottom=False):
     """Orthonormal basis (n, 9, 3) (scaled coordinates) of the complement of
-    the six neutral directions of a vertical orbit at its top: the two
-    constraint normals, phase f(X0), rotation about the vertical z x X0,
-    d/dtheta and d/dphidot0 of the family (docs/stability.md sec. 2)."""
+    the six neutral directions of a vertical orbit at the state X0 (its top,
+    or with ``bottom`` its bottom): the two constraint normals, phase f(X0),
+    rotation about the vertical z x X0, d/dtheta and d/dphidot0 of the
+    family (docs/stability.md sec. 2)."""
     n = th.size
     c, e1 = X0[dyn.C], X0[dyn.E1]
     fx = dyn.rhs(X0, p)
     gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(X0[dyn.W])))
-    dth = np.imag(dyn.vertical_orbit_state(th + 1j * _H, pd, a, r)) / _H
-    dpd = np.imag(dyn.vertical_orbit_state(th, pd + 1j * _H, a, r)) / _H
+    dth = np.imag(_vertical_state(th + 1j * _H, pd, a, r, k, g, bottom)) / _H
+    dpd = np.imag(_vertical_state(th, pd + 1j * _H, a, r, k, g, bottom)) / _H
     V = np.stack((fx, gen, dth, dpd), axis=-1) / D[..., None]
     e3 = dyn._geometry(X0, p)[8]
     pv = c + a * e3
@@ -689,15 +709,24 @@ def vertical_floquet(theta, phidot0, a, r, k, g, step=0.25):
     p = dyn.BodyParams(a, r, k, g, np.zeros(n, dtype=bool), np.zeros(n, dtype=bool))
     pdmax = np.sqrt(pd ** 2 + 4 * g / ((2 * k + 1) * rp))
     S = np.sqrt((rp * pdmax / a) ** 2 + pdmax ** 2 + g / a)     # fastest rate
-    N = int(np.ceil(np.max(T * S) / step)) if n else 0
+    N = int(np.ceil(np.max(T * S) / (2 * step))) if n else 0               # steps per half lap
     D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)), np.broadcast_to(S, (3, n))))
-    Wb = _vertical_neutral_basis(X0, th, pd, a, r, p, D)                       # (n, 9, 3)
+    Wb = _vertical_neutral_basis(X0, th, pd, a, r, k, g, p, D)                # (n, 9, 3)
     x = X0[:, :, None] + 1j * _H * (np.moveaxis(Wb, 0, 1) * D[:, :, None])    # (9, n, 3)
-    x = _rk8_columns(x, p, T / max(N, 1), N)
-    MW = np.moveaxis(np.imag(x) / _H / D[:, :, None], 1, 0)                   # (n, 9, 3) scaled
-    ret = np.sqrt(np.sum((np.real(x[0:3, :, 0]) - X0[0:3]) ** 2, axis=0))
-    K = np.einsum("nji,njl->nil", Wb, MW)
-    finite = np.all(np.isfinite(K), axis=(-2, -1)) & ok
+    x = _rk8_columns(x, p, 0.5 * T / max(N, 1), N)                            # top -> bottom
+    Xb = _vertical_state(th, pd, a, r, k, g, bottom=True)
+    ret = np.sqrt(np.sum((np.real(x[0:3, :, 0]) - Xb[0:3]) ** 2, axis=0))
+    Wh = _vertical_neutral_basis(np.real(x[:, :, 0]), th, pd, a, r, k, g, p, D, bottom=True)
+    Kh = np.einsum("nji,njl->nil", Wh, np.moveaxis(np.imag(x) / _H / D[:, :, None], 1, 0))
+    # reversibility: M = G Mh^-1 G Mh (Mh the half-lap monodromy, G
+    # _REVERSAL), taken on the quotient bases at top and bottom
+    G0 = np.einsum("nji,j,njl->nil", Wb, _REVERSAL, Wb)
+    Gh = np.einsum("nji,j,njl->nil", Wh, _REVERSAL, Wh)
+    finite = np.all(np.isfinite(Kh), axis=(-2, -1)) & ok
+    Kh = np.where(finite[:, None, None], Kh, np.eye(3))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        K = G0 @ np.linalg.solve(Kh, Gh @ Kh)
+    finite &= np.all(np.isfinite(K), axis=(-2, -1))
     mu = np.linalg.eigvals(np.where(finite[:, None, None], K, np.eye(3)))
     mu = np.where(finite[:, None], mu, np.nan)
     mabs = np.max(np.abs(mu), axis=-1)

@@ -109,6 +109,25 @@ def _orbits():
     return th, pd, np.append(a, 0.3), np.append(r, 3.0), np.append(k, 0.5)
 
 
+def test_reversing_symmetry_of_the_flow():
+    """G f(X) = -f(G X) for the mirror x -> -x with time reversal (the basis
+    of the half-lap monodromy), and the bottom state is the top state half a
+    lap on."""
+    rng = np.random.default_rng(3)
+    X = rng.normal(size=(9, 40))
+    p = dyn.body_params(np.full(40, 0.3), 3.0, 0.5, G)
+    Gm = st._REVERSAL[:, None]
+    np.testing.assert_array_equal(Gm * dyn.rhs(X, p), -dyn.rhs(Gm * X, p))
+    th, pd, a, r, k = np.radians(60.0), 3.0, 0.3, 3.0, 0.5
+    from scipy.integrate import solve_ivp
+    T = float(dyn.vertical_orbit_period(th, pd, a, r, k, G))
+    X0 = dyn.vertical_orbit_state(th, pd, a, r, k, G)
+    end = solve_ivp(dyn.ode(dyn.body_params(a, r, k, G)), (0, T / 2), X0, method="DOP853",
+                    rtol=1e-12, atol=1e-12).y[:, -1]
+    Xb = st._vertical_state(np.atleast_1d(th), pd, a, r, k, G, bottom=True)[:, 0]
+    np.testing.assert_allclose(end, Xb, atol=1e-8 * np.max(np.abs(Xb)))
+
+
 def _match(mu, ref):
     """Largest |mu - ref| over orbits, multipliers paired by the best permutation."""
     return max(min(np.max(np.abs(m[list(pm)] - q)) for pm in itertools.permutations(range(3)))
@@ -149,7 +168,8 @@ def test_monodromy_matches_finite_differences_of_the_nonlinear_flow():
     the three quotient directions, reproduce the multipliers to 1e-6."""
     from scipy.integrate import solve_ivp
 
-    th, pd, a, r, k = np.radians(75.57897221815767), 1.2 * np.sqrt(G / (np.sin(np.radians(75.57897221815767)) - 0.6)), 0.6, 1.0, 0.25
+    th, a, r, k = np.radians(75.57897221815767), 0.6, 1.0, 0.25       # the period-doubling orbit
+    pd = 1.2 * np.sqrt(G / (r * np.sin(th) - a))
     p = dyn.body_params(a, r, k, G)
     T = float(dyn.vertical_orbit_period(th, pd, a, r, k, G))
     X0 = dyn.vertical_orbit_state(th, pd, a, r, k, G)
@@ -158,8 +178,8 @@ def test_monodromy_matches_finite_differences_of_the_nonlinear_flow():
     S = np.sqrt((rp * pdmax / a) ** 2 + pdmax ** 2 + G / a)
     D = np.r_[[a] * 3, [1.0] * 3, [S] * 3]
     pn = dyn.BodyParams(*(np.atleast_1d(x) for x in p))
-    Wb = st._vertical_neutral_basis(X0[:, None], np.atleast_1d(th), np.atleast_1d(pd), np.atleast_1d(a),
-                                    np.atleast_1d(r), pn, D[:, None])[0]
+    Wb = st._vertical_neutral_basis(X0[:, None], *(np.atleast_1d(x) for x in (th, pd, a, r, k, G)),
+                                    pn, D[:, None])[0]
     eps = 1e-5
     cols = []
     for j in range(3):
