@@ -94,6 +94,47 @@ def _reduce(K, scale):
     return ev, growth, slow, fast, verdict
 
 
+def _verdict(growth, scale):
+    """Verdict codes from growth rate and rate scale (docs/stability.md sec. 1)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rel = growth / scale
+    verdict = np.full(growth.shape, Verdict.UNKNOWN, dtype=np.int8)
+    verdict[np.nan_to_num(rel, nan=np.inf) <= STABLE_TOL] = Verdict.STABLE
+    verdict[np.nan_to_num(rel, nan=-np.inf) >= UNSTABLE_TOL] = Verdict.UNSTABLE
+    return verdict
+
+
+def _reduce_invariants(K, scale):
+    """:func:`_reduce` for stacked 4x4 reduced Jacobians, from invariants
+    instead of an eigenvalue solver (beyond the paper; docs/stability.md
+    sec. 1).  The flow is reversible, so the spectrum is symmetric under
+    lambda -> -lambda: the characteristic polynomial is
+    lambda^4 + e2 lambda^2 + e4 with e2 = (tr(K)^2 - tr(K^2))/2 (the sum of
+    the principal 2x2 minors) and e4 = det K; the odd coefficients vanish up
+    to round-off and are dropped.  The roots x = lambda^2 of
+    x^2 + e2 x + e4 = 0 are taken in the cancellation-free form
+    q = -(e2 + sign(e2) sqrt(e2^2 - 4 e4))/2, x = q and e4/q; the
+    eigenvalues are +/- sqrt(x).  A stable orbit (both x real and negative)
+    gets growth rate 0 exactly."""
+    finite = np.all(np.isfinite(K), axis=(-2, -1)) & np.isfinite(scale)
+    K = np.where(finite[:, None, None], K, 0.0)
+    tr = np.trace(K, axis1=-2, axis2=-1)
+    e2 = 0.5 * (tr * tr - np.einsum("nij,nji->n", K, K))
+    e4 = np.linalg.det(K)
+    sq = np.sqrt((e2 * e2 - 4.0 * e4).astype(complex))
+    q = -0.5 * (e2 + np.where(e2 >= 0, 1.0, -1.0) * sq)
+    nz = q != 0
+    x2 = np.where(nz, e4 / np.where(nz, q, 1.0), 0.0)
+    l1, l2 = np.sqrt(q), np.sqrt(x2)
+    ev = np.stack((l1, -l1, l2, -l2), axis=-1)
+    ev = np.where(finite[:, None], ev, np.nan)
+    growth = np.where(finite, np.maximum(np.abs(l1.real), np.abs(l2.real)), np.nan)
+    f1, f2 = np.abs(l1.imag), np.abs(l2.imag)
+    slow = np.where(finite, np.minimum(f1, f2), np.nan)
+    fast = np.where(finite, np.maximum(f1, f2), np.nan)
+    return ev, growth, slow, fast, _verdict(growth, scale)
+
+
 def _orthonormal_complement(A, dim):
     """Orthonormal basis (n, dim, dim - A.shape[-1]) of the complement of the
     column span of the stacked (n, dim, q) matrices A (assumed full rank)."""
@@ -102,8 +143,47 @@ def _orthonormal_complement(A, dim):
     return Q[..., q:]
 
 
-def _wheel_linearisation(theta, alpha, a, r, k, g, outside):
-    """Reduced 4x4 Jacobians of the wheel's flow about steady orbits."""
+def _householder_complement(A):
+    """Orthonormal basis (dim, dim - q, n) of the complement of the column
+    span of the component-major stack A (dim, q, n) (assumed full rank):
+    Householder reflections H_0 ... H_{q-1} triangularise A, and the last
+    dim - q columns of Q = H_0 ... H_{q-1} span the complement (the complete
+    QR of :func:`_orthonormal_complement`, up to signs).  Every operation
+    runs on contiguous n-vectors, ~2x faster than a batched LAPACK QR for
+    9 x 5 (beyond the paper; docs/stability.md sec. 1)."""
+    dim, q, n = A.shape
+    R = A.copy()
+    vs = []
+    for j in range(q):
+        x = R[j:, j]                                             # (dim - j, n)
+        nx = np.sqrt(np.einsum("in,in->n", x, x))
+        v = x.copy()
+        v[0] += np.where(x[0] >= 0, nx, -nx)
+        vn = np.sqrt(np.einsum("in,in->n", v, v))
+        v[0] = np.where(vn > 0, v[0], 1.0)                       # a zero column: any unit v
+        v *= 1.0 / np.where(vn > 0, vn, 1.0)
+        if j + 1 < q:
+            sub = R[j:, j + 1:]
+            sub -= 2.0 * v[:, None, :] * np.einsum("in,ikn->kn", v, sub)[None]
+        vs.append(v)
+    Y = np.zeros((dim, dim - q, n))
+    for i in range(dim - q):
+        Y[q + i, i] = 1.0
+    for j in reversed(range(q)):
+        sub = Y[j:]
+        sub -= 2.0 * vs[j][:, None, :] * np.einsum("in,ikn->kn", vs[j], sub)[None]
+    return Y
+
+
+def _wheel_linearisation(theta, alpha, a, r, k, g, outside, want_basis=True):
+    """Reduced 4x4 Jacobians of the wheel's flow about steady orbits.
+
+    Component-major throughout (arrays (9, ..., n)): the five directions
+    removed (two constraint normals; rotation about the vertical; d/dtheta,
+    d/dalpha of the family, by one complex-step call) are scaled (lengths by
+    a, rates by S) and normalised, their orthonormal complement comes from
+    :func:`_householder_complement`, and the Jacobian acts on its four
+    vectors by one complex-step call of :func:`dynamics.rhs`."""
     shape = theta.shape
     n = theta.size
     th, al, a, r, k, g, out = (x.reshape(-1) for x in (theta, alpha, a, r, k, g, outside))
@@ -117,36 +197,30 @@ def _wheel_linearisation(theta, alpha, a, r, k, g, outside):
     out_s = np.where(ok, out, False)
     p = dyn.BodyParams(a, r_s, k, g, out_s, np.zeros(n, dtype=bool))
     X0, Om = dyn.wheel_orbit_state(th_s, al_s, a, r_s, k, g, out_s)
-    # neutral directions: phase, d/dtheta, d/dalpha (complex step)
-    dth = np.imag(dyn.wheel_orbit_state(th_s + 1j * _H, al_s, a, r_s, k, g, out_s)[0]) / _H
-    dal = np.imag(dyn.wheel_orbit_state(th_s, al_s + 1j * _H, a, r_s, k, g, out_s)[0]) / _H
+    # neutral directions d/dtheta, d/dalpha: one complex-step call, (9, 2, n)
+    step = 1j * _H * np.eye(2)[:, :, None]
+    dfam = np.imag(dyn.wheel_orbit_state(th_s + step[0], al_s + step[1], a, r_s, k, g, out_s)[0]) / _H
     c, e1, w = X0[dyn.C], X0[dyn.E1], X0[dyn.W]
-    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(w)))
     # scaling: lengths by a, rates by S
     S = np.sqrt(dyn._dot(w, w) + Om ** 2 + g / a)
-    D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)),
-                        np.broadcast_to(S, (3, n))))
-    V = np.stack((gen, dth, dal), axis=-1) / D[..., None]          # (9, n, 3)
-    # constraint gradients (scaled: grad_x~ = D grad_x)
+    D = np.empty((9, n))
+    D[0:3], D[3:6], D[6:9] = a, 1.0, S
     e3 = dyn._geometry(X0, p)[8]
-    pvec = c + a * e3
-    c1 = dyn._dot(c, e1)
-    n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
-    n2 = np.concatenate((pvec, -a * c1 * e3, np.zeros((3, n))))
-    Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
-    A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)          # (n, 9, 5)
-    # normalise columns for a well-conditioned QR
-    A = A / np.linalg.norm(A, axis=1, keepdims=True)
-    Wb = _orthonormal_complement(A, 9)                                 # (n, 9, 4)
+    A = np.zeros((9, 5, n))
+    A[3:6, 0] = e1 * D[3:6]                          # constraint gradients (scaled: D grad)
+    A[0:3, 1] = (c + a * e3) * D[0:3]
+    A[3:6, 1] = -a * dyn._dot(c, e1) * e3 * D[3:6]
+    for blk in (dyn.C, dyn.E1, dyn.W):               # rotation about the vertical
+        A[blk, 2] = dyn._zcross(X0[blk]) / D[blk]
+    A[:, 3:5] = dfam / D[:, None, :]
+    A *= 1.0 / np.sqrt(np.einsum("ikn,ikn->kn", A, A))[None]   # well-conditioned columns
+    Y = _householder_complement(A)                                 # (9, 4, n)
     # J~ W by complex step, all 4 directions at once
-    dX = np.moveaxis(Wb, 0, 1) * D[:, :, None]                         # (9, n, 4)
-    pc = dyn.BodyParams(*(x[:, None] for x in p))
-    JdX = _complex_step(lambda x: dyn.rhs(x, pc, Om[:, None]), X0[:, :, None], dX)
-    JW = np.moveaxis(JdX / D[:, :, None], 1, 0)                        # (n, 9, 4)
-    K = np.einsum("nij,nik->njk", Wb, JW)
+    JdX = _complex_step(lambda x: dyn.rhs(x, p, Om), X0[:, None, :], Y * D[:, None, :])
+    K = np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)
-    basis = Wb * np.moveaxis(D, 0, 1)[:, :, None]
+    basis = np.moveaxis(Y * D[:, None, :], 2, 0) if want_basis else None      # (n, 9, 4)
     return K, scale, np.where(ok, Om, np.nan), shape, basis, X0
 
 
@@ -199,8 +273,8 @@ def wheel_stability(theta, alpha, a, r, k, g, outside=False):
     flat = [x.reshape(-1) for x in (theta, alpha, a, r, k, g, outside)]
     parts = []
     for i in range(0, theta.size, CHUNK):       # bounded memory; vectorised within
-        K, scale, Om, _, _, _ = _wheel_linearisation(*(x[i:i + CHUNK] for x in flat))
-        parts.append((*_reduce(K, scale), scale, Om))
+        K, scale, Om, _, _, _ = _wheel_linearisation(*(x[i:i + CHUNK] for x in flat), want_basis=False)
+        parts.append((*_reduce_invariants(K, scale), scale, Om))
     ev, growth, slow, fast, verdict, scale, Om = (np.concatenate(z) for z in zip(*parts))
     return _result(shape, ev, growth, slow, fast, verdict, scale, Om)
 
