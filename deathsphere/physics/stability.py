@@ -183,7 +183,8 @@ def _wheel_linearisation(theta, alpha, a, r, k, g, outside, want_basis=True):
     d/dalpha of the family, by one complex-step call) are scaled (lengths by
     a, rates by S) and normalised, their orthonormal complement comes from
     :func:`_householder_complement`, and the Jacobian acts on its four
-    vectors by one complex-step call of :func:`dynamics.rhs`."""
+    vectors by forward-mode derivatives (:func:`dynamics.jvp`, exact to
+    round-off like the complex step it replaces, ~3x cheaper)."""
     shape = theta.shape
     n = theta.size
     th, al, a, r, k, g, out = (x.reshape(-1) for x in (theta, alpha, a, r, k, g, outside))
@@ -215,8 +216,8 @@ def _wheel_linearisation(theta, alpha, a, r, k, g, outside, want_basis=True):
     A[:, 3:5] = dfam / D[:, None, :]
     A *= 1.0 / np.sqrt(np.einsum("ikn,ikn->kn", A, A))[None]   # well-conditioned columns
     Y = _householder_complement(A)                                 # (9, 4, n)
-    # J~ W by complex step, all 4 directions at once
-    JdX = _complex_step(lambda x: dyn.rhs(x, p, Om), X0[:, None, :], Y * D[:, None, :])
+    # J~ W by forward-mode derivatives of the same equations, 4 directions at once
+    JdX = dyn.jvp(X0, Y * D[:, None, :], p, Om)
     K = np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)

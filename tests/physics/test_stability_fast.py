@@ -30,10 +30,18 @@ def _compare(th, al, a, r, k, outside):
     for key in ("freq_slow", "freq_fast"):
         d = np.abs(new[key][live] - ref[key][live])
         assert np.all(d <= 1e-9 * size), (key, np.max(d / size))
+    # stable orbits: 1e-9 relative; or 1e-10 of the rate scale for a slow
+    # frequency that vanishes at a boundary (e4 -> 0), where neither method
+    # is better conditioned than eps S^2 / f (~1e-9 f at f ~ 3e-4 S); or the
+    # reference's own error where it shows one: the exact spectrum of a
+    # stable orbit is imaginary, and on a few orbits whose reduced Jacobian is
+    # badly conditioned (|K| ~ 1e3 x the frequencies) eigvals leaves real
+    # parts up to ~2e-8 of the rate scale
     stable = ref["verdict"] == st.Verdict.STABLE
     for key in ("freq_slow", "freq_fast"):
         d = np.abs(new[key][stable] - ref[key][stable])
-        assert np.all(d <= 1e-9 * ref[key][stable]), key
+        tol = np.maximum(np.maximum(1e-9 * ref[key], 1e-10 * ref["rate_scale"]), ref["growth_rate"])
+        assert np.all(d <= tol[stable]), key
     # growth rates: unstable orbits to 1e-9 of the eigenvalue's size; stable
     # ones get 0 exactly (the reference's round-off real parts, up to 2e-8
     # of the rate scale, are below STABLE_TOL: the verdicts agree above)
