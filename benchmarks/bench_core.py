@@ -1,4 +1,4 @@
-"""Core throughput of the horizontal-orbit physics (issue 5, part 5).
+"""Core throughput of the horizontal-orbit physics.
 
 Measures orbits per second for the full output of
 ``deathsphere.physics.wheel.horizontal_orbit`` (r', Omega^2, Omega, period,
@@ -30,7 +30,7 @@ At the end, "where the time goes" on one chunk and the gap to the numba
 kernel split into trigonometry, the rest of the arithmetic, and writing the
 outputs.
 
-Goals (issue 5): core within 1.5x of the fused kernel, and >= 10x the loop.
+Goals: core within 1.5x of the fused kernel, and >= 10x the loop.
 
 Run:  python benchmarks/bench_core.py                 (10^7 orbits, ~1 min)
       python benchmarks/bench_core.py --old b3e6fb1   (and the core before the optimisation, ~2 min)

@@ -1,4 +1,4 @@
-"""Sweep throughput and memory (issue 5).
+"""Sweep throughput and memory.
 
 Run:  python benchmarks/bench_sweep.py [--rows 1000000] [--big 10000000]
 

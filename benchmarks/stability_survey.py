@@ -6,8 +6,8 @@ of deathsphere.physics.stability finds over grids of theta, alpha,
 a/r in {0.01, 0.1, 0.3, 0.6} and k in {1/4, 1/2}.  Every figure quoted in
 docs/stability.md comes from this script:
 
-    /work/venv/bin/python benchmarks/stability_survey.py            # all sections
-    /work/venv/bin/python benchmarks/stability_survey.py equator    # one section
+    python benchmarks/stability_survey.py            # all sections
+    python benchmarks/stability_survey.py equator    # one section
 
 Sections: table1 tolerance equator small large pole outside vertical sphere.
 Runs in about a minute on one core.

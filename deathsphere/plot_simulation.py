@@ -1,4 +1,4 @@
-"""Figures of a simulation (issue 6): theta(t), alpha(t), the normal force
+"""Figures of a simulation: theta(t), alpha(t), the normal force
 and the track of the contact point, drawn with matplotlib.
 
 Beyond the paper: the time series come from

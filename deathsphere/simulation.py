@@ -1,4 +1,4 @@
-"""Simulate wheels and spheres rolling on a fixed sphere (issue 6).
+"""Simulate wheels and spheres rolling on a fixed sphere.
 
 Beyond the paper: McDonald (1993) writes the Newton-Euler equations in
 general form, eqs. (2)-(7b), and solves them only for steady orbits.  This

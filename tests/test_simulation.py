@@ -1,4 +1,4 @@
-"""The simulator of issue 6 (deathsphere/simulation.py, docs/simulation.md).
+"""The simulator (deathsphere/simulation.py, docs/simulation.md).
 
 Reference values are the paper's steady orbits (McDonald 1993 eqs. 29-36,
 Table 1; eqs. 55-58 for a sphere), its vertical orbits (eqs. 26-28b, 82, as
