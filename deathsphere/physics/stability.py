@@ -752,9 +752,12 @@ def vertical_floquet(theta, phidot0, a, r, k, g, step=0.25):
     are integrated, as complex-step perturbations of the state (exact
     derivatives), with the exact equations of motion
     (:mod:`deathsphere.physics.dynamics`) and a fixed-step order-8
-    Runge-Kutta method (``step`` = largest rate x time step).  That leaves 3
-    multipliers: one is 1 (a further neutral direction, found numerically),
-    the other two are the nutation pair.
+    Runge-Kutta method (``step`` = largest rate x time step), over half a
+    lap only: the flow is reversible (mirror x -> -x with time reversal,
+    ``_REVERSAL``), top and bottom are symmetric points, so the monodromy is
+    M = G Mh^-1 G Mh with Mh the half-lap one, taken on the quotient bases at
+    top and bottom.  That leaves 3 multipliers: one is 1 (a further neutral
+    direction, found numerically), the other two are the nutation pair.
 
     Inputs broadcast: theta [rad] (orbit plane at distance r cos(theta)
     from the centre), phidot0 [rad/s] rate at the top, a, r [m], k [-],
@@ -765,8 +768,9 @@ def vertical_floquet(theta, phidot0, a, r, k, g, step=0.25):
     multiplier farthest from 1 (the nutation frequency modulo 2 pi/T);
     ``period`` T [s]; ``verdict`` int8 :class:`Verdict` with the tolerances
     FLOQUET_STABLE_TOL / FLOQUET_UNSTABLE_TOL on |mu| - 1; ``return_error``
-    [m] |c(T) - c(0)| of the reference orbit (integration check).
-    NaN/UNKNOWN where r sin(theta) <= a.
+    [m] |c(T/2) - c_bottom| of the integrated reference orbit against the
+    bottom of eq. (27) (integration check).  NaN/UNKNOWN where
+    r sin(theta) <= a.
     """
     theta, phidot0, a, r, k, g = np.broadcast_arrays(*(_vec(x) for x in (theta, phidot0, a, r, k, g)))
     dyn.body_params(a, r, k, g)                   # validation only
