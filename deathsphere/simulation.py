@@ -86,6 +86,9 @@ SUMMARY_COLUMNS = (
 #: natural choice (the flow is not stiff); Radau/BDF get a block-diagonal
 #: Jacobian sparsity pattern (bodies are independent).
 METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")
+#: explicit Runge-Kutta methods: they never use a vectorised right-hand side
+#: (vectorized=True only made solve_ivp pass (9 n, 1) arrays)
+_EXPLICIT = ("DOP853", "RK45", "RK23")
 #: Frames the state is integrated in: "turning" (about the vertical at the
 #: steady orbit's rate Omega, where a steady horizontal orbit is a fixed
 #: point; vertical orbits are always integrated in the lab) or "lab".
@@ -472,6 +475,11 @@ class _Group:
     mu: np.ndarray
     g: np.ndarray
     _cache: tuple = field(default=(None, None, None))
+    _scalar: tuple | None = None
+
+    def __post_init__(self):
+        if self.idx.size == 1:      # (coefficients, g) for dyn.contact_values
+            self._scalar = (dyn.scalar_coefficients(self.params), float(self.params.g[0]))
 
     def values(self, t, y):
         """(normal/g, (mu N - |F|)/g) per body at (t, y), cached for the
@@ -479,6 +487,16 @@ class _Group:
         last_t, last_y, vals = self._cache
         if last_y is not None and t == last_t and (y is last_y or np.array_equal(y, last_y)):
             return vals
+        if self._scalar is not None and y.ndim == 1:
+            try:          # one body: the same equations on Python floats
+                n, fmag = dyn.contact_values(y.tolist(), *self._scalar)
+                mu = float(self.mu[0])
+                slip = mu * n - fmag if math.isfinite(mu) else 1.0
+                vals = (np.array([n]) / self.g, np.array([slip]) / self.g)
+                self._cache = (t, y, vals)
+                return vals
+            except (ZeroDivisionError, OverflowError, ValueError):
+                pass
         state = np.asarray(y).reshape(9, -1)
         f = dyn.contact_force(state, self.params)
         n = f["normal"]
@@ -833,7 +851,8 @@ class Simulation:
         if self.method in ("Radau", "BDF") and nA > 1:
             options["jac_sparsity"] = self._jac_sparsity(nA)
         sol = solve_ivp(fun, (t_cur, t_b), y.reshape(-1), method=self.method, rtol=self.rtol, atol=atol,
-                        dense_output=True, events=group.events(), vectorized=True, **options)
+                        dense_output=True, events=group.events(), vectorized=self.method not in _EXPLICIT,
+                        **options)
         run.counters["n_steps"] += max(len(sol.t) - 1, 0)
         run.counters["n_fev"] += int(sol.nfev)
         t_stop = float(sol.t[-1])

@@ -37,6 +37,7 @@ The contact force is recovered from eq. (2), F/m = d2c/dt2 + g z.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -131,34 +132,78 @@ def _geometry(state, p: BodyParams):
     return c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s
 
 
-def _motion(state, p: BodyParams):
-    """Time derivatives in the lab frame and the acceleration of the centre.
-
-    Returns (cdot, e1dot, wdot, cddot, e3, e3dot).
-    """
-    c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s = _geometry(state, p)
+def _coefficients(p: BodyParams):
+    """Per-body constants of the equations (:func:`_equations`), computed once:
+    (a, g/a, s, wheel, k wheel, 1/(k+1), 1/k, wheel (1/(2k+1) - 1/(k+1)))
+    with wheel = 1.0 for a wheel, 0.0 for a sphere and s = -1 outside, +1
+    inside (docs/dynamics.md eq. D5)."""
     a, k, g = p.a, p.k, p.g
-    cdot = a * _cross(e3, w)                    # eq. (6)
-    e1dot = _cross(w, e1)                       # e1 is carried by the body
-    e1hdot = _cross(w, e1h)
-    # rate of the contact direction e3 (not a body vector)
-    cperp_dot = cdot - np.where(wheel, 1.0, 0.0) * (
-        (_dot(cdot, e1h) + _dot(c, e1hdot)) * e1h + c1 * e1hdot)
-    e3dot = s * (cperp_dot - n * _dot(n, cperp_dot)) / rho
-    w1 = _dot(w, e1h)
-    zhat = np.zeros_like(e3)
-    zhat[2] = 1.0
-    rhs = (_cross(e3, _cross(e3dot, w)) + (g / a) * _cross(e3, zhat)
-           - np.where(wheel, k, 0.0) * w1 * _cross(w, e1h))
-    # closed-form inverse of M (docs/dynamics.md eq. D5)
+    wheel = np.where(p.sphere, 0.0, 1.0)
+    s = np.where(p.outside, -1.0, 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         inv_k = np.where(k > 0, 1.0 / np.where(k > 0, k, 1.0), np.nan)
-    r3 = _dot(e3, rhs)
-    wdot = (rhs - e3 * r3) / (k + 1) + e3 * (r3 * inv_k)
-    r1 = _dot(e1h, rhs)
-    wdot = wdot + np.where(wheel, 1.0 / (2 * k + 1) - 1.0 / (k + 1), 0.0) * r1 * e1h
-    cddot = a * (_cross(e3dot, w) + _cross(e3, wdot))
-    return cdot, e1dot, wdot, cddot, e3, e3dot
+    return (a, g / a, s, wheel, wheel * k, 1.0 / (k + 1), inv_k,
+            wheel * (1.0 / (2 * k + 1) - 1.0 / (k + 1)))
+
+
+def _equations(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=False):
+    """The equations of motion written once, component by component.
+
+    Beyond the paper (docs/dynamics.md, eqs. D1-D5; McDonald 1993 eqs. 2, 3,
+    6, 7b in general form).  Only +, -, *, / and ``sqrt`` are used, so the
+    same lines run on Python floats (``math.sqrt``: the one-body fast path of
+    the simulator), Python complex numbers (``cmath.sqrt``: complex-step
+    derivatives of one orbit) and numpy arrays of any shape, real or complex
+    (``np.sqrt``: many bodies at once).  (c, x = e1, w) are the state's
+    components; ``coef`` is :func:`_coefficients`.  Returns the 9 rates
+    (dc/dt, de1/dt, dw/dt); with ``accel`` also d2c/dt2, e3 and de3/dt
+    (3 each).
+    """
+    a, ga, s, wheel, kw, ik1, ik, d1 = coef
+    ne = sqrt(x0 * x0 + x1 * x1 + x2 * x2)
+    h0, h1, h2 = x0 / ne, x1 / ne, x2 / ne                     # e1 unit
+    cw = (c0 * h0 + c1 * h1 + c2 * h2) * wheel                 # c.e1 (wheel only)
+    q0, q1, q2 = c0 - cw * h0, c1 - cw * h1, c2 - cw * h2      # c_perp
+    rho = sqrt(q0 * q0 + q1 * q1 + q2 * q2)
+    n0, n1, n2 = q0 / rho, q1 / rho, q2 / rho
+    u0, u1, u2 = s * n0, s * n1, s * n2                        # e3
+    # dc/dt = a e3 x w (eq. 6); de1/dt = w x e1
+    v0, v1, v2 = a * (u1 * w2 - u2 * w1), a * (u2 * w0 - u0 * w2), a * (u0 * w1 - u1 * w0)
+    f0, f1, f2 = w1 * x2 - w2 * x1, w2 * x0 - w0 * x2, w0 * x1 - w1 * x0
+    m0, m1, m2 = w1 * h2 - w2 * h1, w2 * h0 - w0 * h2, w0 * h1 - w1 * h0   # d(e1 unit)/dt
+    # rate of the contact direction e3 (not a body vector)
+    t = (v0 * h0 + v1 * h1 + v2 * h2 + c0 * m0 + c1 * m1 + c2 * m2) * wheel
+    p0, p1, p2 = v0 - (t * h0 + cw * m0), v1 - (t * h1 + cw * m1), v2 - (t * h2 + cw * m2)
+    pn = n0 * p0 + n1 * p1 + n2 * p2
+    sr = s / rho
+    d0, dd1, d2 = sr * (p0 - n0 * pn), sr * (p1 - n1 * pn), sr * (p2 - n2 * pn)   # de3/dt
+    # M dw/dt = e3 x (de3/dt x w) + (g/a) e3 x z - k w1 (w x e1)
+    y0, y1, y2 = dd1 * w2 - d2 * w1, d2 * w0 - d0 * w2, d0 * w1 - dd1 * w0
+    kw1 = kw * (w0 * h0 + w1 * h1 + w2 * h2)
+    b0 = u1 * y2 - u2 * y1 + ga * u1 - kw1 * m0
+    b1 = u2 * y0 - u0 * y2 - ga * u0 - kw1 * m1
+    b2 = u0 * y1 - u1 * y0 - kw1 * m2
+    # closed-form inverse of M (eq. D5)
+    r3 = u0 * b0 + u1 * b1 + u2 * b2
+    r1 = d1 * (h0 * b0 + h1 * b1 + h2 * b2)
+    r3k = r3 * ik
+    a0 = (b0 - u0 * r3) * ik1 + u0 * r3k + r1 * h0
+    a1 = (b1 - u1 * r3) * ik1 + u1 * r3k + r1 * h1
+    a2 = (b2 - u2 * r3) * ik1 + u2 * r3k + r1 * h2
+    if not accel:
+        return v0, v1, v2, f0, f1, f2, a0, a1, a2
+    # d2c/dt2 = a (de3/dt x w + e3 x dw/dt)
+    g0 = a * (y0 + u1 * a2 - u2 * a1)
+    g1 = a * (y1 + u2 * a0 - u0 * a2)
+    g2 = a * (y2 + u0 * a1 - u1 * a0)
+    return v0, v1, v2, f0, f1, f2, a0, a1, a2, g0, g1, g2, u0, u1, u2, d0, dd1, d2
+
+
+def _motion(state, p: BodyParams):
+    """Time derivatives in the lab frame and the acceleration of the centre
+    (numpy arrays of shape (3, ...)): (cdot, e1dot, wdot, cddot, e3, e3dot)."""
+    out = _equations(*state[:9], _coefficients(p), np.sqrt, accel=True)
+    return tuple(np.stack(np.broadcast_arrays(*out[i:i + 3])) for i in range(0, 18, 3))
 
 
 def rhs(state, params: BodyParams, frame_rate=0.0):
@@ -172,13 +217,111 @@ def rhs(state, params: BodyParams, frame_rate=0.0):
     supported (complex-step differentiation).
     """
     state = np.asarray(state)
-    cdot, e1dot, wdot, _, _, _ = _motion(state, params)
-    out = np.concatenate((cdot, e1dot, wdot))
+    out = list(_equations(*state[:9], _coefficients(params), np.sqrt))
     if np.any(np.asarray(frame_rate) != 0):
         fr = np.asarray(frame_rate)
-        out = out - fr * np.concatenate(
-            (_zcross(state[C]), _zcross(state[E1]), _zcross(state[W])))
-    return out
+        for i in (0, 3, 6):          # - Omega z x u for u = c, e1, w
+            out[i] = out[i] + fr * state[i + 1]
+            out[i + 1] = out[i + 1] - fr * state[i]
+    return np.stack(np.broadcast_arrays(*out))
+
+
+class _Dual:
+    """Forward-mode derivative (value v, directional derivatives d) for
+    :func:`_equations` (beyond the paper; docs/dynamics.md sec. 5): v has
+    the bodies' shape (..., n), d an extra leading axis of directions
+    (m, ..., n); +, -, *, / follow the product and quotient rules.  Numpy
+    defers to it (``__array_ufunc__ = None``), so coefficient arrays
+    combine from either side."""
+
+    __slots__ = ("v", "d")
+    __array_ufunc__ = None
+
+    def __init__(self, v, d):
+        self.v = v
+        self.d = d
+
+    def __add__(self, o):
+        if type(o) is _Dual:
+            return _Dual(self.v + o.v, self.d + o.d)
+        return _Dual(self.v + o, self.d)
+
+    __radd__ = __add__
+
+    def __sub__(self, o):
+        if type(o) is _Dual:
+            return _Dual(self.v - o.v, self.d - o.d)
+        return _Dual(self.v - o, self.d)
+
+    def __rsub__(self, o):
+        return _Dual(o - self.v, -self.d)
+
+    def __mul__(self, o):
+        if type(o) is _Dual:
+            return _Dual(self.v * o.v, self.d * o.v + self.v * o.d)
+        return _Dual(self.v * o, self.d * o)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        if type(o) is _Dual:
+            inv = 1.0 / o.v
+            q = self.v * inv
+            return _Dual(q, (self.d - q * o.d) * inv)
+        inv = 1.0 / o
+        return _Dual(self.v * inv, self.d * inv)
+
+    def __rtruediv__(self, o):
+        inv = 1.0 / self.v
+        q = o * inv
+        return _Dual(q, (-q * inv) * self.d)
+
+    def __neg__(self):
+        return _Dual(-self.v, -self.d)
+
+
+def _dual_sqrt(x):
+    s = np.sqrt(x.v)
+    return _Dual(s, x.d * (0.5 / s))
+
+
+def jvp(state, directions, params: BodyParams, frame_rate=0.0):
+    """Jacobian-vector products of :func:`rhs`: J(state) @ directions.
+
+    Beyond the paper (docs/dynamics.md sec. 5): forward-mode
+    differentiation of the same lines (:func:`_equations`) with value and
+    derivatives carried separately (:class:`_Dual`), exact to round-off like
+    a complex step but ~3x cheaper for several directions, since the value
+    is computed once and in real arithmetic.  ``state`` (9, ..., n) real,
+    ``directions`` (9, m, ..., n) (m directions per body); returns
+    (9, m, ..., n).  ``frame_rate`` as for :func:`rhs`.
+    """
+    state = np.asarray(state, dtype=float)
+    directions = np.asarray(directions, dtype=float)
+    out = _equations(*(_Dual(state[i], directions[i]) for i in range(9)), _coefficients(params), _dual_sqrt)
+    d = [o.d if type(o) is _Dual else np.zeros_like(directions[0]) for o in out]
+    fr = np.asarray(frame_rate)
+    if np.any(fr != 0):
+        for i in (0, 3, 6):          # - Omega z x u for u = c, e1, w
+            d[i] = d[i] + fr * directions[i + 1]
+            d[i + 1] = d[i + 1] - fr * directions[i]
+    return np.stack(np.broadcast_arrays(*d))
+
+
+def scalar_rates(y, coef, frame_rate=0.0):
+    """d(state)/dt of ONE body, its state given as 9 Python floats; returns
+    a tuple of 9 floats.  The same equations as :func:`rhs` (both run
+    :func:`_equations`), on floats: ~40x less per call than numpy on
+    9-element arrays (beyond the paper; docs/simulation.md).  ``coef`` is
+    :func:`scalar_coefficients`, ``frame_rate`` [rad/s] as for :func:`rhs`.
+    Raises ZeroDivisionError at a singular state (where :func:`rhs` warns)."""
+    out = _equations(*y, coef, math.sqrt)
+    if not frame_rate:
+        return out
+    fr = frame_rate
+    v0, v1, v2, f0, f1, f2, a0, a1, a2 = out
+    return (v0 + fr * y[1], v1 - fr * y[0], v2, f0 + fr * y[4], f1 - fr * y[3], f2,
+            a0 + fr * y[7], a1 - fr * y[6], a2)
 
 
 def ode(params: BodyParams, frame_rate=0.0):
@@ -187,7 +330,9 @@ def ode(params: BodyParams, frame_rate=0.0):
     ``y`` is the state of n bodies flattened from shape (9, n) (C order), so
     ``y.reshape(9, n)`` recovers it; with ``vectorized=True`` solve_ivp passes
     (9 n, m) arrays, which are handled too.  ``params`` fields must broadcast
-    against shape (n,).
+    against shape (n,).  For one body and a 1-D float ``y`` the equations run
+    on Python floats (:func:`scalar_rates`, the same lines as :func:`rhs`);
+    a singular state falls back to numpy.
     """
     shape = np.broadcast_shapes(*(np.shape(x) for x in params),
                                 np.shape(frame_rate))
@@ -203,7 +348,19 @@ def ode(params: BodyParams, frame_rate=0.0):
         m = y.shape[1]
         return rhs(y.reshape(9, n, m), p_col, fr[:, None]).reshape(9 * n, m)
 
-    return fun
+    if n != 1:
+        return fun
+    coef1, fr1 = scalar_coefficients(p_flat), float(fr[0])
+
+    def fun_one(t, y):
+        if type(y) is np.ndarray and y.ndim == 1 and y.dtype == np.float64:
+            try:
+                return np.array(scalar_rates(y.tolist(), coef1, fr1))
+            except (ZeroDivisionError, OverflowError, ValueError):
+                pass
+        return fun(t, y)
+
+    return fun_one
 
 
 # --------------------------------------------------------------------------
@@ -275,21 +432,48 @@ def contact_force(state, params: BodyParams):
     ``mu_required`` |friction| / normal, NaN where normal <= 0
     """
     state = np.asarray(state)
-    _, _, _, cddot, e3, _ = _motion(state, params)
-    zhat = np.zeros_like(cddot)
-    zhat[2] = 1.0
-    force = cddot + params.g * zhat
-    pvec = state[C] + params.a * e3
-    nrm = pvec / _norm(pvec)
-    fn = _dot(force, nrm)
-    normal = np.where(params.outside, fn, -fn)
-    fric = force - fn * nrm
-    fmag = _norm(fric)
+    F0, F1, F2, normal, r0, r1, r2, fmag = _contact_force(
+        *state[:9], _coefficients(params), params.g, np.sqrt)
+    force = np.stack(np.broadcast_arrays(F0, F1, F2))
+    fric = np.stack(np.broadcast_arrays(r0, r1, r2))
+    normal, fmag = np.broadcast_arrays(normal, fmag)
     ok = normal > 0
     with np.errstate(divide="ignore", invalid="ignore"):
         mu = np.where(ok, fmag / np.where(ok, normal, 1.0), np.nan)
     return {"force": force, "normal": normal, "friction": fric,
             "friction_magnitude": fmag, "mu_required": mu}
+
+
+def _contact_force(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, g, sqrt):
+    """:func:`contact_force` written once for floats, complex numbers and
+    numpy arrays (as :func:`_equations`): F/m = d2c/dt2 + g z (eq. 2), its
+    normal part -s F.n (s = +1 inside, -1 outside; n = p/|p|) and its
+    tangential part.  Returns (F (3), normal, friction (3), |friction|)."""
+    out = _equations(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=True)
+    F0, F1, F2 = out[9], out[10], out[11] + g
+    a, s = coef[0], coef[2]
+    p0, p1, p2 = c0 + a * out[12], c1 + a * out[13], c2 + a * out[14]      # contact point
+    pn = sqrt(p0 * p0 + p1 * p1 + p2 * p2)
+    n0, n1, n2 = p0 / pn, p1 / pn, p2 / pn
+    fn = F0 * n0 + F1 * n1 + F2 * n2
+    r0, r1, r2 = F0 - fn * n0, F1 - fn * n1, F2 - fn * n2
+    return F0, F1, F2, -s * fn, r0, r1, r2, sqrt(r0 * r0 + r1 * r1 + r2 * r2)
+
+
+def contact_values(y, coef, g):
+    """(normal, |friction|) per unit mass [m/s^2] of ONE body from its state
+    as 9 Python floats (the simulator's event functions; beyond the paper,
+    docs/simulation.md): :func:`_contact_force` on floats.  ``coef`` is
+    :func:`scalar_coefficients`.  Raises ZeroDivisionError at a singular
+    state (the caller then takes the numpy path)."""
+    out = _contact_force(*y, coef, g, math.sqrt)
+    return out[3], out[7]
+
+
+def scalar_coefficients(params: BodyParams):
+    """:func:`_coefficients` of ONE body as a tuple of Python floats (for the
+    scalar paths; ``params`` fields of size 1)."""
+    return tuple(float(np.reshape(x, -1)[0]) for x in _coefficients(params))
 
 
 def project(state, params: BodyParams):

@@ -15,10 +15,12 @@ slip, as corrected (docs/stability.md, "Errata").
 
 from __future__ import annotations
 
+import cmath
 from enum import IntEnum
 
 import numpy as np
 
+from deathsphere.physics import _rk8
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside
 from deathsphere.physics.wheel import omega_squared
@@ -92,6 +94,47 @@ def _reduce(K, scale):
     return ev, growth, slow, fast, verdict
 
 
+def _verdict(growth, scale):
+    """Verdict codes from growth rate and rate scale (docs/stability.md sec. 1)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rel = growth / scale
+    verdict = np.full(growth.shape, Verdict.UNKNOWN, dtype=np.int8)
+    verdict[np.nan_to_num(rel, nan=np.inf) <= STABLE_TOL] = Verdict.STABLE
+    verdict[np.nan_to_num(rel, nan=-np.inf) >= UNSTABLE_TOL] = Verdict.UNSTABLE
+    return verdict
+
+
+def _reduce_invariants(K, scale):
+    """:func:`_reduce` for stacked 4x4 reduced Jacobians, from invariants
+    instead of an eigenvalue solver (beyond the paper; docs/stability.md
+    sec. 1).  The flow is reversible, so the spectrum is symmetric under
+    lambda -> -lambda: the characteristic polynomial is
+    lambda^4 + e2 lambda^2 + e4 with e2 = (tr(K)^2 - tr(K^2))/2 (the sum of
+    the principal 2x2 minors) and e4 = det K; the odd coefficients vanish up
+    to round-off and are dropped.  The roots x = lambda^2 of
+    x^2 + e2 x + e4 = 0 are taken in the cancellation-free form
+    q = -(e2 + sign(e2) sqrt(e2^2 - 4 e4))/2, x = q and e4/q; the
+    eigenvalues are +/- sqrt(x).  A stable orbit (both x real and negative)
+    gets growth rate 0 exactly."""
+    finite = np.all(np.isfinite(K), axis=(-2, -1)) & np.isfinite(scale)
+    K = np.where(finite[:, None, None], K, 0.0)
+    tr = np.trace(K, axis1=-2, axis2=-1)
+    e2 = 0.5 * (tr * tr - np.einsum("nij,nji->n", K, K))
+    e4 = np.linalg.det(K)
+    sq = np.sqrt((e2 * e2 - 4.0 * e4).astype(complex))
+    q = -0.5 * (e2 + np.where(e2 >= 0, 1.0, -1.0) * sq)
+    nz = q != 0
+    x2 = np.where(nz, e4 / np.where(nz, q, 1.0), 0.0)
+    l1, l2 = np.sqrt(q), np.sqrt(x2)
+    ev = np.stack((l1, -l1, l2, -l2), axis=-1)
+    ev = np.where(finite[:, None], ev, np.nan)
+    growth = np.where(finite, np.maximum(np.abs(l1.real), np.abs(l2.real)), np.nan)
+    f1, f2 = np.abs(l1.imag), np.abs(l2.imag)
+    slow = np.where(finite, np.minimum(f1, f2), np.nan)
+    fast = np.where(finite, np.maximum(f1, f2), np.nan)
+    return ev, growth, slow, fast, _verdict(growth, scale)
+
+
 def _orthonormal_complement(A, dim):
     """Orthonormal basis (n, dim, dim - A.shape[-1]) of the complement of the
     column span of the stacked (n, dim, q) matrices A (assumed full rank)."""
@@ -100,8 +143,48 @@ def _orthonormal_complement(A, dim):
     return Q[..., q:]
 
 
-def _wheel_linearisation(theta, alpha, a, r, k, g, outside):
-    """Reduced 4x4 Jacobians of the wheel's flow about steady orbits."""
+def _householder_complement(A):
+    """Orthonormal basis (dim, dim - q, n) of the complement of the column
+    span of the component-major stack A (dim, q, n) (assumed full rank):
+    Householder reflections H_0 ... H_{q-1} triangularise A, and the last
+    dim - q columns of Q = H_0 ... H_{q-1} span the complement (the complete
+    QR of :func:`_orthonormal_complement`, up to signs).  Every operation
+    runs on contiguous n-vectors, ~2x faster than a batched LAPACK QR for
+    9 x 5 (beyond the paper; docs/stability.md sec. 1)."""
+    dim, q, n = A.shape
+    R = A.copy()
+    vs = []
+    for j in range(q):
+        x = R[j:, j]                                             # (dim - j, n)
+        nx = np.sqrt(np.einsum("in,in->n", x, x))
+        v = x.copy()
+        v[0] += np.where(x[0] >= 0, nx, -nx)
+        vn = np.sqrt(np.einsum("in,in->n", v, v))
+        v[0] = np.where(vn > 0, v[0], 1.0)                       # a zero column: any unit v
+        v *= 1.0 / np.where(vn > 0, vn, 1.0)
+        if j + 1 < q:
+            sub = R[j:, j + 1:]
+            sub -= 2.0 * v[:, None, :] * np.einsum("in,ikn->kn", v, sub)[None]
+        vs.append(v)
+    Y = np.zeros((dim, dim - q, n))
+    for i in range(dim - q):
+        Y[q + i, i] = 1.0
+    for j in reversed(range(q)):
+        sub = Y[j:]
+        sub -= 2.0 * vs[j][:, None, :] * np.einsum("in,ikn->kn", vs[j], sub)[None]
+    return Y
+
+
+def _wheel_linearisation(theta, alpha, a, r, k, g, outside, want_basis=True):
+    """Reduced 4x4 Jacobians of the wheel's flow about steady orbits.
+
+    Component-major throughout (arrays (9, ..., n)): the five directions
+    removed (two constraint normals; rotation about the vertical; d/dtheta,
+    d/dalpha of the family, by one complex-step call) are scaled (lengths by
+    a, rates by S) and normalised, their orthonormal complement comes from
+    :func:`_householder_complement`, and the Jacobian acts on its four
+    vectors by forward-mode derivatives (:func:`dynamics.jvp`, exact to
+    round-off like the complex step it replaces, ~3x cheaper)."""
     shape = theta.shape
     n = theta.size
     th, al, a, r, k, g, out = (x.reshape(-1) for x in (theta, alpha, a, r, k, g, outside))
@@ -115,36 +198,30 @@ def _wheel_linearisation(theta, alpha, a, r, k, g, outside):
     out_s = np.where(ok, out, False)
     p = dyn.BodyParams(a, r_s, k, g, out_s, np.zeros(n, dtype=bool))
     X0, Om = dyn.wheel_orbit_state(th_s, al_s, a, r_s, k, g, out_s)
-    # neutral directions: phase, d/dtheta, d/dalpha (complex step)
-    dth = np.imag(dyn.wheel_orbit_state(th_s + 1j * _H, al_s, a, r_s, k, g, out_s)[0]) / _H
-    dal = np.imag(dyn.wheel_orbit_state(th_s, al_s + 1j * _H, a, r_s, k, g, out_s)[0]) / _H
+    # neutral directions d/dtheta, d/dalpha: one complex-step call, (9, 2, n)
+    step = 1j * _H * np.eye(2)[:, :, None]
+    dfam = np.imag(dyn.wheel_orbit_state(th_s + step[0], al_s + step[1], a, r_s, k, g, out_s)[0]) / _H
     c, e1, w = X0[dyn.C], X0[dyn.E1], X0[dyn.W]
-    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(w)))
     # scaling: lengths by a, rates by S
     S = np.sqrt(dyn._dot(w, w) + Om ** 2 + g / a)
-    D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)),
-                        np.broadcast_to(S, (3, n))))
-    V = np.stack((gen, dth, dal), axis=-1) / D[..., None]          # (9, n, 3)
-    # constraint gradients (scaled: grad_x~ = D grad_x)
+    D = np.empty((9, n))
+    D[0:3], D[3:6], D[6:9] = a, 1.0, S
     e3 = dyn._geometry(X0, p)[8]
-    pvec = c + a * e3
-    c1 = dyn._dot(c, e1)
-    n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
-    n2 = np.concatenate((pvec, -a * c1 * e3, np.zeros((3, n))))
-    Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
-    A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)          # (n, 9, 5)
-    # normalise columns for a well-conditioned QR
-    A = A / np.linalg.norm(A, axis=1, keepdims=True)
-    Wb = _orthonormal_complement(A, 9)                                 # (n, 9, 4)
-    # J~ W by complex step, all 4 directions at once
-    dX = np.moveaxis(Wb, 0, 1) * D[:, :, None]                         # (9, n, 4)
-    pc = dyn.BodyParams(*(x[:, None] for x in p))
-    JdX = _complex_step(lambda x: dyn.rhs(x, pc, Om[:, None]), X0[:, :, None], dX)
-    JW = np.moveaxis(JdX / D[:, :, None], 1, 0)                        # (n, 9, 4)
-    K = np.einsum("nij,nik->njk", Wb, JW)
+    A = np.zeros((9, 5, n))
+    A[3:6, 0] = e1 * D[3:6]                          # constraint gradients (scaled: D grad)
+    A[0:3, 1] = (c + a * e3) * D[0:3]
+    A[3:6, 1] = -a * dyn._dot(c, e1) * e3 * D[3:6]
+    for blk in (dyn.C, dyn.E1, dyn.W):               # rotation about the vertical
+        A[blk, 2] = dyn._zcross(X0[blk]) / D[blk]
+    A[:, 3:5] = dfam / D[:, None, :]
+    A *= 1.0 / np.sqrt(np.einsum("ikn,ikn->kn", A, A))[None]   # well-conditioned columns
+    Y = _householder_complement(A)                                 # (9, 4, n)
+    # J~ W by forward-mode derivatives of the same equations, 4 directions at once
+    JdX = dyn.jvp(X0, Y * D[:, None, :], p, Om)
+    K = np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)
-    basis = Wb * np.moveaxis(D, 0, 1)[:, :, None]
+    basis = np.moveaxis(Y * D[:, None, :], 2, 0) if want_basis else None      # (n, 9, 4)
     return K, scale, np.where(ok, Om, np.nan), shape, basis, X0
 
 
@@ -197,8 +274,8 @@ def wheel_stability(theta, alpha, a, r, k, g, outside=False):
     flat = [x.reshape(-1) for x in (theta, alpha, a, r, k, g, outside)]
     parts = []
     for i in range(0, theta.size, CHUNK):       # bounded memory; vectorised within
-        K, scale, Om, _, _, _ = _wheel_linearisation(*(x[i:i + CHUNK] for x in flat))
-        parts.append((*_reduce(K, scale), scale, Om))
+        K, scale, Om, _, _, _ = _wheel_linearisation(*(x[i:i + CHUNK] for x in flat), want_basis=False)
+        parts.append((*_reduce_invariants(K, scale), scale, Om))
     ev, growth, slow, fast, verdict, scale, Om = (np.concatenate(z) for z in zip(*parts))
     return _result(shape, ev, growth, slow, fast, verdict, scale, Om)
 
@@ -559,39 +636,141 @@ def near_pole_paper(theta, alpha, a, r, k, g):
 
 
 #: |multiplier| - 1 at or below which a vertical orbit is called stable, and at
-#: or above which unstable (unknown between).  The RK4 monodromy with the
-#: default step reproduces |mu| = 1 to ~1e-10 on stable orbits and the
-#: multipliers change by ~1e-8 when the step is halved (docs/stability.md).
+#: or above which unstable (unknown between).  The order-8 monodromy with the
+#: default step reproduces |mu| = 1 to ~1e-11 on stable orbits and its
+#: multipliers are within ~1e-9 of a run with a quarter of the step
+#: (docs/stability.md sec. 2).
 FLOQUET_STABLE_TOL = 1e-6
 FLOQUET_UNSTABLE_TOL = 1e-4
 
+#: orbits up to which the monodromy is integrated orbit by orbit on Python
+#: complex numbers (dynamics._equations with cmath.sqrt); more orbits go
+#: through numpy arrays, all orbits and directions at once
+_FLOQUET_SCALAR_MAX = 16
 
-def vertical_floquet(theta, phidot0, a, r, k, g, step=0.05):
+
+#: the reversing symmetry of a vertical orbit (orbit plane normal to y, top
+#: at x = 0): the mirror x -> -x combined with time reversal flips the x
+#: components of c, e1 and w, and G f(X) = -f(G X) for the flow f
+_REVERSAL = np.array([-1.0, 1, 1, -1, 1, 1, -1, 1, 1])
+
+
+def _vertical_state(th, pd, a, r, k, g, bottom=False):
+    """State of a vertical orbit at its top (:func:`dynamics.vertical_orbit_state`)
+    or, with ``bottom``, half a lap later at its bottom: the top state turned
+    by pi about the orbit's axis y (x, z of each vector flipped) with the
+    bottom rate phidot^2 = phidot0^2 + 4 g/((2k+1) r') (eq. 27).  Complex
+    theta / phidot0 accepted (complex step)."""
+    if not bottom:
+        return dyn.vertical_orbit_state(th, pd, a, r)
+    rp = r * np.sin(th) - a
+    X = dyn.vertical_orbit_state(th, np.sqrt(pd * pd + 4 * g / ((2 * k + 1) * rp)), a, r)
+    return X * np.array([-1.0, 1, -1, -1, 1, -1, -1, 1, -1])[:, None]
+
+
+def _vertical_neutral_basis(X0, th, pd, a, r, k, g, p, D, bottom=False):
+    """Orthonormal basis (n, 9, 3) (scaled coordinates) of the complement of
+    the six neutral directions of a vertical orbit at the state X0 (its top,
+    or with ``bottom`` its bottom): the two constraint normals, phase f(X0),
+    rotation about the vertical z x X0, d/dtheta and d/dphidot0 of the
+    family (docs/stability.md sec. 2)."""
+    n = th.size
+    c, e1 = X0[dyn.C], X0[dyn.E1]
+    fx = dyn.rhs(X0, p)
+    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(X0[dyn.W])))
+    dth = np.imag(_vertical_state(th + 1j * _H, pd, a, r, k, g, bottom)) / _H
+    dpd = np.imag(_vertical_state(th, pd + 1j * _H, a, r, k, g, bottom)) / _H
+    V = np.stack((fx, gen, dth, dpd), axis=-1) / D[..., None]
+    e3 = dyn._geometry(X0, p)[8]
+    pv = c + a * e3
+    n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
+    n2 = np.concatenate((pv, -a * dyn._dot(c, e1) * e3, np.zeros((3, n))))
+    Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
+    A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)
+    A = A / np.linalg.norm(A, axis=1, keepdims=True)
+    return _orthonormal_complement(A, 9)
+
+
+def _rk8_columns(x, p, dt, steps):
+    """``steps`` fixed steps dt (n,) of the order-8 Runge-Kutta method
+    (:mod:`deathsphere.physics._rk8`) of the unperturbed flow (lab frame)
+    from the complex states x (9, n, m); returns the states at the end.
+
+    Few orbits: orbit by orbit, each column's right-hand side on Python
+    complex numbers (the lines of :func:`dynamics._equations` with
+    cmath.sqrt; ~40x cheaper than numpy on 9-element arrays); stage sums by
+    numpy.  Many orbits: :func:`dynamics.rhs` on all at once.  Both run the
+    same equations; tests/physics/test_floquet.py compares them."""
+    n, m = x.shape[1], x.shape[2]
+    out = np.empty_like(x)
+    if n <= _FLOQUET_SCALAR_MAX:
+        for i in range(n):
+            coef = dyn.scalar_coefficients(dyn.BodyParams(*(f[i:i + 1] for f in p)))
+            out[:, i, :] = _rk8_scalar(x[:, i, :].T.copy(), coef, float(dt[i]), steps).T
+        return out
+    pc = dyn.BodyParams(*(f[:, None] for f in p))
+    h = np.asarray(dt, dtype=float)[:, None]
+    ks = [None] * len(_rk8.B)
+    for _ in range(steps):
+        for s, row in enumerate(_rk8.A):
+            xs = x
+            for j, a_sj in row:
+                xs = xs + (h * a_sj) * ks[j]
+            ks[s] = dyn.rhs(xs, pc)
+        x = x + h * sum(b * kj for b, kj in zip(_rk8.B, ks) if b)
+    return x
+
+
+def _rk8_scalar(X, coef, dt, steps):
+    """:func:`_rk8_columns` for one orbit: X (m, 9) complex."""
+    m = X.shape[0]
+    eq = dyn._equations
+    sqrt = cmath.sqrt
+    nst = len(_rk8.B)
+    A = [np.array([a_sj * dt for _, a_sj in row]) for row in _rk8.A]
+    J = [[j for j, _ in row] for row in _rk8.A]
+    Bw = np.array(_rk8.B) * dt
+    x = X.reshape(-1)
+    ks = np.empty((nst, m * 9), dtype=complex)
+    for _ in range(steps):
+        for s in range(nst):
+            xs = (x + A[s].dot(ks[J[s]]) if s else x).tolist()
+            ks[s] = [v for col in range(0, 9 * m, 9) for v in eq(*xs[col:col + 9], coef, sqrt)]
+        x = x + Bw.dot(ks)
+    return x.reshape(m, 9)
+
+
+def vertical_floquet(theta, phidot0, a, r, k, g, step=0.25):
     """Exact linear stability of vertical orbits by Floquet analysis.
 
     Beyond the paper (the paper's eqs. 100-106 freeze the coefficients at the
-    top of the orbit; docs/stability.md).  The variational equations of the
-    exact flow (:mod:`deathsphere.physics.dynamics`) are integrated over one
-    period T (eq. 27; :func:`dynamics.vertical_orbit_period`) by classical
-    RK4 with complex-step perturbations (the monodromy matrix is exact up to
-    the RK4 truncation, controlled by ``step`` = largest rate x time step).
-    The monodromy is restricted to the constraint manifold and to the
-    complement of the six neutral directions (phase, energy, theta family,
-    rotation about the vertical, and the two constraint normals), leaving 3
-    multipliers: one is 1 (a further neutral direction, found numerically),
-    the other two are the nutation pair.
+    top of the orbit; docs/stability.md sec. 2).  The monodromy matrix over
+    one period T (eq. 27; :func:`dynamics.vertical_orbit_period`) is taken on
+    the constraint manifold modulo the six neutral directions (phase,
+    energy, theta family, rotation about the vertical, and the two
+    constraint normals): only the three directions spanning that quotient
+    are integrated, as complex-step perturbations of the state (exact
+    derivatives), with the exact equations of motion
+    (:mod:`deathsphere.physics.dynamics`) and a fixed-step order-8
+    Runge-Kutta method (``step`` = largest rate x time step), over half a
+    lap only: the flow is reversible (mirror x -> -x with time reversal,
+    ``_REVERSAL``), top and bottom are symmetric points, so the monodromy is
+    M = G Mh^-1 G Mh with Mh the half-lap one, taken on the quotient bases at
+    top and bottom.  That leaves 3 multipliers: one is 1 (a further neutral
+    direction, found numerically), the other two are the nutation pair.
 
     Inputs broadcast: theta [rad] (orbit plane at distance r cos(theta)
     from the centre), phidot0 [rad/s] rate at the top, a, r [m], k [-],
-    g [m/s^2].  Batched (one integration for all orbits).
+    g [m/s^2].  Batched.
 
     Returns dict: ``multipliers`` (..., 3) complex; ``max_abs`` max |mu|;
     ``growth_rate`` log(max |mu|)/T [1/s]; ``nu`` [rad/s] |arg mu|/T of the
     multiplier farthest from 1 (the nutation frequency modulo 2 pi/T);
     ``period`` T [s]; ``verdict`` int8 :class:`Verdict` with the tolerances
     FLOQUET_STABLE_TOL / FLOQUET_UNSTABLE_TOL on |mu| - 1; ``return_error``
-    [m] |c(T) - c(0)| of the reference orbit (integration check).
-    NaN/UNKNOWN where r sin(theta) <= a.
+    [m] |c(T/2) - c_bottom| of the integrated reference orbit against the
+    bottom of eq. (27) (integration check).  NaN/UNKNOWN where
+    r sin(theta) <= a.
     """
     theta, phidot0, a, r, k, g = np.broadcast_arrays(*(_vec(x) for x in (theta, phidot0, a, r, k, g)))
     dyn.body_params(a, r, k, g)                   # validation only
@@ -609,36 +788,24 @@ def vertical_floquet(theta, phidot0, a, r, k, g, step=0.05):
     p = dyn.BodyParams(a, r, k, g, np.zeros(n, dtype=bool), np.zeros(n, dtype=bool))
     pdmax = np.sqrt(pd ** 2 + 4 * g / ((2 * k + 1) * rp))
     S = np.sqrt((rp * pdmax / a) ** 2 + pdmax ** 2 + g / a)     # fastest rate
-    N = int(np.ceil(np.max(T * S * 2.0) / step)) if n else 0
+    N = int(np.ceil(np.max(T * S) / (2 * step))) if n else 0               # steps per half lap
     D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)), np.broadcast_to(S, (3, n))))
-    pc = dyn.BodyParams(*(x[:, None] for x in p))
-    x = X0[:, :, None] + 1j * _H * (np.eye(9)[:, None, :] * D[:, :, None])   # (9, n, 9)
-    dt = (T / max(N, 1))[:, None]
-    for _ in range(N):
-        k1 = dt * dyn.rhs(x, pc)
-        k2 = dt * dyn.rhs(x + 0.5 * k1, pc)
-        k3 = dt * dyn.rhs(x + 0.5 * k2, pc)
-        k4 = dt * dyn.rhs(x + k3, pc)
-        x = x + (k1 + 2 * k2 + 2 * k3 + k4) / 6
-    M = np.moveaxis(np.imag(x) / _H / D[:, :, None], 1, 0)                 # (n, 9, 9) scaled
-    ret = np.sqrt(np.sum((np.real(x[0:3, :, 0]) - X0[0:3]) ** 2, axis=0))
-    # neutral directions (scaled)
-    c, e1, w = X0[dyn.C], X0[dyn.E1], X0[dyn.W]
-    fx = dyn.rhs(X0, p)
-    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(w)))
-    dth = np.imag(dyn.vertical_orbit_state(th + 1j * _H, pd, a, r)) / _H
-    dpd = np.imag(dyn.vertical_orbit_state(th, pd + 1j * _H, a, r)) / _H
-    V = np.stack((fx, gen, dth, dpd), axis=-1) / D[..., None]
-    e3 = dyn._geometry(X0, p)[8]
-    pv = c + a * e3
-    n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
-    n2 = np.concatenate((pv, -a * dyn._dot(c, e1) * e3, np.zeros((3, n))))
-    Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
-    A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)
-    A = A / np.linalg.norm(A, axis=1, keepdims=True)
-    Wb = _orthonormal_complement(A, 9)                                         # (n, 9, 3)
-    K = np.einsum("nji,njk,nkl->nil", Wb, M, Wb)
-    finite = np.all(np.isfinite(K), axis=(-2, -1)) & ok
+    Wb = _vertical_neutral_basis(X0, th, pd, a, r, k, g, p, D)                # (n, 9, 3)
+    x = X0[:, :, None] + 1j * _H * (np.moveaxis(Wb, 0, 1) * D[:, :, None])    # (9, n, 3)
+    x = _rk8_columns(x, p, 0.5 * T / max(N, 1), N)                            # top -> bottom
+    Xb = _vertical_state(th, pd, a, r, k, g, bottom=True)
+    ret = np.sqrt(np.sum((np.real(x[0:3, :, 0]) - Xb[0:3]) ** 2, axis=0))
+    Wh = _vertical_neutral_basis(np.real(x[:, :, 0]), th, pd, a, r, k, g, p, D, bottom=True)
+    Kh = np.einsum("nji,njl->nil", Wh, np.moveaxis(np.imag(x) / _H / D[:, :, None], 1, 0))
+    # reversibility: M = G Mh^-1 G Mh (Mh the half-lap monodromy, G
+    # _REVERSAL), taken on the quotient bases at top and bottom
+    G0 = np.einsum("nji,j,njl->nil", Wb, _REVERSAL, Wb)
+    Gh = np.einsum("nji,j,njl->nil", Wh, _REVERSAL, Wh)
+    finite = np.all(np.isfinite(Kh), axis=(-2, -1)) & ok
+    Kh = np.where(finite[:, None, None], Kh, np.eye(3))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        K = G0 @ np.linalg.solve(Kh, Gh @ Kh)
+    finite &= np.all(np.isfinite(K), axis=(-2, -1))
     mu = np.linalg.eigvals(np.where(finite[:, None, None], K, np.eye(3)))
     mu = np.where(finite[:, None], mu, np.nan)
     mabs = np.max(np.abs(mu), axis=-1)
