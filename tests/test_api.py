@@ -410,3 +410,14 @@ def test_everything_is_exported():
     for name in ("orbit", "vertical", "sweep", "region", "limits", "stability", "simulate", "table1", "verify",
                  "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"):
         assert name in deathsphere.__all__ and getattr(deathsphere, name) is not None
+
+
+def test_the_readme_python_example_runs(tmp_path, monkeypatch):
+    import re
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    (block,) = re.findall(r"## Python API\n.*?```python\n(.*?)```", readme, flags=re.S)
+    monkeypatch.chdir(tmp_path)      # it writes orbits.csv
+    exec(compile(block, "README.md", "exec"), {})
+    assert (tmp_path / "orbits.csv").read_text().startswith("input_row,body,side,")
