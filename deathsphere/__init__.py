@@ -1,9 +1,17 @@
 """deathsphere: orbits of bodies rolling without slipping on a fixed sphere.
 
 Implements and checks K. T. McDonald, *Circular Orbits Inside the Sphere of
-Death* (1993).  The pure-numpy physics lives in :mod:`deathsphere.physics`;
-:mod:`deathsphere.model` wraps it in a validated :class:`Setup` and named
-result columns; :mod:`deathsphere.cli` is the command line.
+Death* (1993).  The Python API mirrors the command line, one function per
+command with the same parameters (:mod:`deathsphere.api`, docs/api.md)::
+
+    >>> import deathsphere
+    >>> t = deathsphere.orbit(60, 10)
+    >>> round(float(t["v_cm_m_s"][0]), 2)
+    7.88
+
+The pure-numpy physics lives in :mod:`deathsphere.physics`;
+:mod:`deathsphere.model` wraps it in a validated :class:`Setup` and the
+result :class:`Table`; :mod:`deathsphere.cli` is the command line.
 """
 
 #: The one place the version is written (pyproject.toml reads it from here):
@@ -11,6 +19,19 @@ result columns; :mod:`deathsphere.cli` is the command line.
 #: every start of the command.
 __version__ = "0.1.0"
 
+from deathsphere.api import (  # noqa: E402
+    limits,
+    orbit,
+    region,
+    simulate,
+    stability,
+    sweep,
+    table1,
+    verify,
+    vertical,
+)
 from deathsphere.model import Setup, Table, horizontal_orbit  # noqa: E402
+from deathsphere.params import ParameterError  # noqa: E402
 
-__all__ = ["Setup", "Table", "horizontal_orbit", "__version__"]
+__all__ = ["orbit", "vertical", "sweep", "region", "limits", "stability", "simulate", "table1", "verify",
+           "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"]

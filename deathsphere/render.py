@@ -22,7 +22,7 @@ from rich.table import Table as RichTable
 from rich.text import Text
 
 from deathsphere.model import TEXT_COLUMNS, Table
-from deathsphere.table1 import decimals
+from deathsphere.results.table1 import decimals
 
 FORMATS = ("table", "csv", "json", "ndjson")
 

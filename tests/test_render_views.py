@@ -144,7 +144,7 @@ def test_one_orbit_leaves_out_only_the_source(width):
 @pytest.mark.parametrize("width", (60, 80))
 @pytest.mark.parametrize("theta, alpha", [(90.0, 45.0), (170.0, 30.0)])
 def test_stability_labels_stay_on_one_line(width, theta, alpha):
-    from deathsphere.stability_report import stability_report
+    from deathsphere.results.stability_report import stability_report
 
     setup = Setup()
     text = show(stability_view(stability_report(setup, theta, alpha), setup), width)
@@ -211,7 +211,7 @@ def test_only_the_rows_shown_are_formatted(monkeypatch):
 
 @pytest.mark.parametrize("width", WIDTHS)
 def test_vertical_orbits_fit(width):
-    from deathsphere.vertical import evaluate_vertical, vertical_requests
+    from deathsphere.results.vertical import evaluate_vertical, vertical_requests
 
     n = 6
     req = vertical_requests(n, theta=np.full(n, 60.0), v_top=np.linspace(3.0, 8.0, n),
@@ -231,7 +231,7 @@ def test_vertical_orbits_fit(width):
 
 @pytest.mark.parametrize("width", WIDTHS)
 def test_generic_table_keeps_keys_units_and_names_what_it_leaves_out(width):
-    from deathsphere.vertical import vertical_points, vertical_requests
+    from deathsphere.results.vertical import vertical_points, vertical_requests
 
     req = vertical_requests(1, theta=np.array([60.0]), v_top=np.array([6.0]), side="inside",
                             a=0.3, r=3.0, k=0.5, g=9.80665, mu=np.inf)
@@ -255,7 +255,7 @@ def test_generic_table_keeps_keys_units_and_names_what_it_leaves_out(width):
 
 @pytest.mark.parametrize("width", (60, 80))
 def test_limits_table_fits(width):
-    from deathsphere.limits import intervals_table
+    from deathsphere.results.limits import intervals_table
 
     table = intervals_table(Setup(), np.arange(30.0, 61.0, 10.0), np.inf)
     text = show(generic_table(table, "limits"), width)
@@ -265,7 +265,7 @@ def test_limits_table_fits(width):
 
 @pytest.mark.parametrize("width", WIDTHS)
 def test_table1_leaves_out_the_acceleration_block_whole(width):
-    from deathsphere.table1 import PRINTED, table1
+    from deathsphere.results.table1 import PRINTED, table1
 
     text = show(table1_view(table1(), PRINTED), width)
     assert_fits(text, width)

@@ -28,7 +28,7 @@ def table1_command(fmt):
       deathsphere table1 --format csv
     """
     from deathsphere.render import table1_view
-    from deathsphere.table1 import PRINTED, table1
+    from deathsphere.results.table1 import PRINTED, table1
 
     table = table1()
     fmt = choose_format(fmt)
@@ -55,7 +55,7 @@ def verify_command(claims, fmt):
       deathsphere verify --claim T1-g --claim E28
       deathsphere verify --format csv
     """
-    from deathsphere import verify
+    from deathsphere.results import verify
 
     known = {c.id for c in verify.CLAIMS}
     for c in claims:

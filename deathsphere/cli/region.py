@@ -94,7 +94,7 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, stability, fmt):
         stdout_console().print(to_rich(char_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g,
                                                 width=width, stability=stability)), end="")
         return
-    from deathsphere.limits import boundary_table, boundary_thetas
+    from deathsphere.results.limits import boundary_table, boundary_thetas
 
     thetas = boundary_thetas(step)
     with progress("boundaries", thetas.size) as bar:
@@ -122,7 +122,7 @@ def limits_command(theta, max_g, body, side, a, r, k, g, mu, fmt):
       deathsphere limits --theta 60 --mu 1.2
       deathsphere limits --mu 1 --max-g 5
     """
-    from deathsphere.limits import highest_orbit_table, intervals_table
+    from deathsphere.results.limits import highest_orbit_table, intervals_table
 
     setup = make_setup(body, side, a, r, k, g, mu)
     if setup.body != "wheel":

@@ -38,7 +38,7 @@ def stability_command(theta, alpha, body, side, a, r, k, g, mu, fmt):
       deathsphere stability --theta 90 --alpha 80      (unstable: the equator claim fails)
       deathsphere stability --theta 60 --alpha 10 -a 0.03 --format csv
     """
-    from deathsphere.stability_report import stability_report
+    from deathsphere.results.stability_report import stability_report
 
     setup = make_setup(body, side, a, r, k, g, mu)
     if setup.body != "wheel":

@@ -701,7 +701,7 @@ def _rk8_columns(x, p, dt, steps):
     cmath.sqrt; ~40x cheaper than numpy on 9-element arrays); stage sums by
     numpy.  Many orbits: :func:`dynamics.rhs` on all at once.  Both run the
     same equations; tests/physics/test_floquet.py compares them."""
-    n, m = x.shape[1], x.shape[2]
+    n = x.shape[1]
     out = np.empty_like(x)
     if n <= _FLOQUET_SCALAR_MAX:
         for i in range(n):

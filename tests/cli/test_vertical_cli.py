@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from deathsphere.physics import vertical
-from deathsphere.vertical import COLUMNS, POINT_COLUMNS
+from deathsphere.results.vertical import COLUMNS, POINT_COLUMNS
 
 
 def rows(text):

@@ -8,7 +8,7 @@ import json
 
 import pytest
 
-from deathsphere import verify
+from deathsphere.results import verify
 
 EXPECTED = {
     "T1-v": "confirmed", "T1-mu": "corrected", "T1-g": "corrected",

@@ -24,7 +24,7 @@ from deathsphere.model import Setup, Table, horizontal_orbit
 from deathsphere.physics import particle, sphere, vertical, wheel
 from deathsphere.physics.geometry import fits_inside
 from deathsphere.physics.status import Status
-from deathsphere.table1 import PRINTED, table1
+from deathsphere.results.table1 import PRINTED, table1
 
 VERDICTS = ("confirmed", "corrected", "refuted")
 A, R, K = 0.3, 3.0, 0.5
