@@ -592,6 +592,29 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
     >>> len(series), str(summary["status"][0])
     (3, 'completed')
     """
+    return prepare_simulation(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3,
+                              omega=omega, branch=branch, vertical=vertical, v_top=v_top, perturb=perturb,
+                              periods=periods, points_per_period=points_per_period, method=method, rtol=rtol,
+                              atol=atol, frame=frame).run()
+
+
+def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
+                       mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
+                       perturb=0.0, periods=20.0, points_per_period=100, method: str = "DOP853",
+                       rtol: float = 1e-10, atol: float | None = None, frame: str = "turning",
+                       record_states: bool = False):
+    """The validated :class:`deathsphere.simulation.Simulation` behind
+    :func:`simulate` (same parameters), not yet run: for streaming the time
+    series chunk by chunk (``sim.chunks()``, then ``sim.summary()``), as the
+    command line does; ``record_states`` keeps the full states for the 3-D
+    view.  Bad input raises :class:`ParameterError`.
+
+    Examples
+    --------
+    >>> sim = prepare_simulation(60, 10, periods=0.1, points_per_period=20)
+    >>> sum(len(chunk) for chunk in sim.chunks()), str(sim.summary()["status"][0])
+    (3, 'completed')
+    """
     from deathsphere import simulation
 
     setup = _setup(body, side, a, r, k, g, mu)
@@ -626,10 +649,10 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb=perturb)
         sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
-                                    rtol=rtol, atol=atol, frame=frame)
+                                    rtol=rtol, atol=atol, frame=frame, record_states=record_states)
     except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
         raise ParameterError(str(exc)) from None
-    return sim.run()
+    return sim
 
 
 def table1() -> Table:

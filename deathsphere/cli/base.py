@@ -376,6 +376,8 @@ class DeathsphereGroup(click.Group):
         except click.exceptions.UsageError as exc:
             command = exc.ctx.command_path if exc.ctx is not None else "deathsphere"
             fail(f"{one_line(exc.format_message())} (see '{command} --help')")
+        except ParameterError as exc:  # the API's validation, reached through a command
+            fail(f"{one_line(str(exc))} (see 'deathsphere {_command_name(args)} --help')")
         except click.exceptions.ClickException as exc:
             fail(one_line(exc.format_message()))
         except (click.exceptions.Abort, KeyboardInterrupt):
@@ -389,6 +391,10 @@ class DeathsphereGroup(click.Group):
             click.echo(f"deathsphere: error: cannot write the results: {exc.strerror or exc}", err=True)
             sys.exit(ExitCode.OUTPUT)
         sys.exit(code or 0)
+
+
+def _command_name(args) -> str:
+    return next((a for a in args if not a.startswith("-")), "")
 
 
 def _silence_stdout() -> None:

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import click
 
-from deathsphere import params
 
 from deathsphere.cli.base import (
     OutputPath,
@@ -14,7 +13,6 @@ from deathsphere.cli.base import (
     cli,
     emit,
     fail,
-    make_setup,
     one_line,
     output_options,
     progress,
@@ -100,36 +98,14 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --theta 90 --alpha 80 --perturb 1e-3 --output orbit.html   (3-D view)
     """
     from deathsphere import simulation
+    from deathsphere.api import prepare_simulation
     from deathsphere.render import simulation_view
 
-    setup = make_setup(body, side, a, r, k, g, mu)
-    if setup.body == "particle":
-        raise click.UsageError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)")
-    if vertical:
-        if setup.body != "wheel" or alpha is not None or v_top is None:
-            raise click.UsageError("--vertical simulates a wheel: give --theta and --v-top (no --alpha)")
-    elif v_top is not None:
-        raise click.UsageError("--v-top is for --vertical orbits")
-    elif setup.body == "wheel" and (alpha is None or omega3 is not None or omega is not None):
-        raise click.UsageError("a wheel's steady orbit needs --alpha DEG")
-    elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
-        raise click.UsageError("a sphere's steady orbit needs exactly one of --omega3 and --omega")
-    if setup.k == 0:
-        raise click.UsageError("simulate needs -k > 0: at k = 0 the equations of motion are singular")
-    points_per_period = int(points_per_period)
     view = output is not None and _preflight_output(output)
-    try:
-        if vertical:
-            starts = simulation.vertical_starts(setup, theta, v_top, perturb=perturb)
-        elif setup.body == "wheel":
-            starts = simulation.horizontal_starts(setup, theta, params.reduce_angle(alpha), perturb=perturb)
-        else:
-            starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
-                                                  perturb=perturb)
-        sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
-                                    rtol=rtol, atol=atol, frame=frame, record_states=view)
-    except ValueError as exc:
-        raise click.UsageError(str(exc)) from None
+    sim = prepare_simulation(theta, alpha, body=body.lower(), side=side.lower(), a=a, r=r, k=k, g=g, mu=mu,
+                             omega3=omega3, omega=omega, branch=branch, vertical=vertical, v_top=v_top,
+                             perturb=perturb, periods=periods, points_per_period=points_per_period,
+                             method=method, rtol=rtol, atol=atol, frame=frame, record_states=view)
     fmt = choose_format(fmt)
     series = []
 

@@ -45,10 +45,10 @@ def test_simulate_table_on_a_terminal(run):
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--theta", "60"], "needs --alpha"),
-    (["--theta", "60", "--alpha", "10", "--v-top", "3"], "--v-top is for --vertical"),
-    (["--vertical", "--theta", "90"], "--v-top"),
-    (["--body", "sphere", "--theta", "60"], "exactly one of --omega3"),
+    (["--theta", "60"], "needs alpha"),
+    (["--theta", "60", "--alpha", "10", "--v-top", "3"], "v_top is for vertical orbits"),
+    (["--vertical", "--theta", "90"], "v_top"),
+    (["--body", "sphere", "--theta", "60"], "exactly one of omega3"),
     (["--body", "particle", "--theta", "120"], "a wheel or a sphere"),
     (["--theta", "260", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
     (["--theta", "60", "--alpha", "10", "--rtol", "0"], "--rtol"),
