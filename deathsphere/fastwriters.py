@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
-from typing import IO, Iterable
+from typing import Iterable
 
 import numpy as np
 

@@ -84,24 +84,35 @@ def csv_text(table: Table, header: bool) -> str:
     return "\n".join(lines) + "\n" if lines else ""
 
 
-#: Use the compiled CSV writer (:mod:`deathsphere.fastwriters`) when the
-#: ``fast`` extra is installed and passes its check against ``repr``.  Set
-#: to False to force the pure-Python writer (same bytes, ~4x slower).
-COMPILED_CSV = True
+#: Which CSV writer formats a chunk: None picks per chunk (below), True
+#: the compiled one (:mod:`deathsphere.fastwriters`, the ``fast`` extra)
+#: for every chunk, False the pure-Python one.  The bytes are the same
+#: (tests/test_writers.py compares them), so chunks may mix.
+COMPILED_CSV: bool | None = None
+
+#: With COMPILED_CSV None the compiled writer takes over once an output is
+#: this long, and only for chunks of COMPILED_MIN_CHUNK rows or more:
+#: importing polars costs ~0.2 s, which a short output (`orbit`, a small
+#: sweep) would pay in latency, and polars' per-call cost (~1 ms) is more
+#: than the pure-Python writer spends on a few hundred rows.
+COMPILED_AFTER_ROWS = 20_000
+COMPILED_MIN_CHUNK = 1024
 
 
 def write_csv(chunks: Iterable[Table], out: IO[str], compiled: bool | None = None) -> int:
     """Stream tables as CSV: the header once, then every chunk's rows.
-    ``compiled`` None takes :data:`COMPILED_CSV`; either way the bytes are
-    the same (tests/test_writers.py compares them)."""
-    text = csv_text
-    if COMPILED_CSV if compiled is None else compiled:
-        from deathsphere import fastwriters
-
-        if fastwriters.csv_available():
-            text = fastwriters.csv_text
+    ``compiled`` None takes :data:`COMPILED_CSV`."""
+    mode = COMPILED_CSV if compiled is None else compiled
+    fast = None
     rows = 0
     for i, table in enumerate(chunks):
+        text = csv_text
+        if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
+            if fast is None:
+                from deathsphere import fastwriters
+
+                fast = fastwriters.csv_text if fastwriters.csv_available() else False
+            text = fast or csv_text
         out.write(text(table, header=i == 0))
         rows += len(table)
     return rows

@@ -87,6 +87,23 @@ def test_pure_writer_is_used_when_asked_or_when_the_extra_is_missing(pure_output
     assert not calls
 
 
+@needs_polars
+def test_long_outputs_switch_writers_midway_without_a_seam(pure_outputs, monkeypatch):
+    """By default short outputs stay pure-Python (no polars import) and long
+    ones switch to the compiled writer after some rows."""
+    monkeypatch.setattr(render, "COMPILED_AFTER_ROWS", 2500)
+    monkeypatch.setattr(render, "COMPILED_MIN_CHUNK", 600)
+    used = []
+    real = fastwriters.csv_text
+    monkeypatch.setattr(fastwriters, "csv_text", lambda table, header: used.append(len(table)) or real(table, header))
+    res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=None, monkeypatch=monkeypatch)
+    assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
+    assert used and sum(used) < res.stdout.count("\n") - 2500
+    used.clear()
+    res = sweep("--theta", "0:180:10", "--alpha", "0:90:10", compiled=None, monkeypatch=monkeypatch)
+    assert res.exit_code == 0 and not used
+
+
 def test_a_polars_that_formats_unlike_repr_is_not_used(monkeypatch):
     monkeypatch.setattr(fastwriters, "_csv_ok", None)
     monkeypatch.setattr(fastwriters, "_polars_matches_repr", lambda: False)
@@ -205,8 +222,8 @@ def test_parquet_without_the_extra_is_refused_before_any_work(tmp_path, monkeypa
     (["--format", "csv", "--output", "x.parquet"], "does not match"),
     (["--output", "x.txt"], "must end in"),
 ])
-def test_sweep_output_usage_errors(args, message, tmp_path):
-    os.chdir(tmp_path)
+def test_sweep_output_usage_errors(args, message, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     res = CliRunner().invoke(cli, ["sweep", "--theta", "60", "--alpha", "10", *args])
     assert res.exit_code == 2 and message in res.stderr and not os.listdir(tmp_path)
 
