@@ -3,11 +3,14 @@
 Run:  python benchmarks/bench_sweep.py [--rows 1000000] [--big 10000000]
 
 Prints
-1. CSV rows/s of deathsphere's writer against numpy.savetxt of the same
-   float columns (savetxt gets the easier job: no text columns, no empty
-   cells), both to /dev/null, in one process;
+1. rows/s of deathsphere's writers -- the pure-Python CSV writer, the
+   compiled one (polars, the fast extra) and Parquet (pyarrow) -- against
+   numpy.savetxt of the same float columns (savetxt gets the easier job:
+   no text columns, no empty cells), all to /dev/null (Parquet to a
+   temporary file), in one process, interleaved, best of --repeat;
 2. peak resident memory of `deathsphere sweep` processes of 1e5 and --big
-   orbits to /dev/null (each in its own child, so ru_maxrss is its own).
+   orbits to /dev/null, and of --big orbits to Parquet (each in its own
+   child, so ru_maxrss is its own).
 """
 
 from __future__ import annotations
@@ -16,12 +19,14 @@ import argparse
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
 
 from deathsphere.grid import grid_chunks
 from deathsphere.model import TEXT_COLUMNS, evaluate, make_requests
+from deathsphere import fastwriters
 from deathsphere.render import write_csv
 
 CHUNK = 16384
@@ -40,13 +45,14 @@ def tables(rows: int):
         produced += n
 
 
-def peak_rss_mb(n_theta: int, n_alpha: int) -> tuple[float, float]:
-    """Peak RSS [MB] and wall time [s] of one sweep process to /dev/null."""
+def peak_rss_mb(n_theta: int, n_alpha: int, *extra: str) -> tuple[float, float]:
+    """Peak RSS [MB] and wall time [s] of one sweep process to /dev/null
+    (or where ``extra`` says, e.g. --output FILE.parquet)."""
     code = (
         "import resource, subprocess, sys, time\n"
         "t = time.perf_counter()\n"
         f"subprocess.run([sys.executable, '-m', 'deathsphere', 'sweep', '--theta', '0:180:{180 / (n_theta - 1)!r}',"
-        f" '--alpha', '-90:90:{180 / (n_alpha - 1)!r}'], stdout=subprocess.DEVNULL, check=True)\n"
+        f" '--alpha', '-90:90:{180 / (n_alpha - 1)!r}', *{list(extra)!r}], stdout=subprocess.DEVNULL, check=True)\n"
         "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024, time.perf_counter() - t)\n"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
@@ -58,21 +64,39 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--rows", type=int, default=1_000_000)
     p.add_argument("--big", type=int, default=10_000_000)
+    p.add_argument("--repeat", type=int, default=3)
     args = p.parse_args()
 
     chunks = list(tables(args.rows))
-    with open(os.devnull, "w") as devnull:
-        t = time.perf_counter()
-        write_csv(iter(chunks), devnull)
-        ours = time.perf_counter() - t
-        floats = [n for n in chunks[0].names if n not in TEXT_COLUMNS]
-        t = time.perf_counter()
+    floats = [n for n in chunks[0].names if n not in TEXT_COLUMNS]
+
+    def savetxt(out):
         for c in chunks:
-            np.savetxt(devnull, np.column_stack([c[n].astype(float) for n in floats]), fmt="%.17g", delimiter=",")
-        theirs = time.perf_counter() - t
-    print(f"CSV writer   : {args.rows / ours:12,.0f} rows/s  ({len(chunks[0].names)} columns, {ours:.2f} s)")
-    print(f"numpy.savetxt: {args.rows / theirs:12,.0f} rows/s  ({len(floats)} float columns, {theirs:.2f} s)")
-    print(f"ratio writer/savetxt speed: {theirs / ours:.2f}x")
+            np.savetxt(out, np.column_stack([c[n].astype(float) for n in floats]), fmt="%.17g", delimiter=",")
+
+    runs = {"savetxt": lambda out: savetxt(out),
+            "pure-Python CSV": lambda out: write_csv(iter(chunks), out, compiled=False)}
+    if fastwriters.csv_available():
+        runs["compiled CSV"] = lambda out: write_csv(iter(chunks), out, compiled=True)
+    folder = tempfile.mkdtemp()
+    if fastwriters.parquet_available():
+        runs["Parquet"] = lambda out: fastwriters.write_parquet(iter(chunks), os.path.join(folder, "b.parquet"))
+    best = dict.fromkeys(runs, float("inf"))
+    with open(os.devnull, "w") as devnull:
+        for _ in range(args.repeat):  # interleaved: a busy moment of the machine hits all of them
+            for name, run in runs.items():
+                t = time.perf_counter()
+                run(devnull)
+                best[name] = min(best[name], time.perf_counter() - t)
+    print(f"{args.rows:,} rows, {len(chunks[0].names)} columns ({len(floats)} for savetxt), best of {args.repeat}:")
+    for name, seconds in best.items():
+        print(f"  {name:16s}: {args.rows / seconds:12,.0f} rows/s ({seconds:.2f} s)  "
+              f"{best['savetxt'] / seconds:5.2f}x savetxt")
+    if "compiled CSV" in best:
+        print(f"compiled / pure-Python CSV: {best['pure-Python CSV'] / best['compiled CSV']:.2f}x")
+        print(f"goal compiled CSV >= 4x savetxt: {'met' if best['savetxt'] / best['compiled CSV'] >= 4 else 'NOT met'}")
+    else:
+        print("compiled CSV: not measured (pip install 'deathsphere[fast]')")
 
     small = peak_rss_mb(317, 316)                     # ~1e5 orbits
     side = int(np.ceil(np.sqrt(args.big)))
@@ -81,6 +105,14 @@ def main():
     print(f"peak RSS, sweep of {side * side:>12,} orbits: {big[0]:7.1f} MB  ({big[1]:.1f} s, "
           f"{side * side / big[1]:,.0f} rows/s end to end)")
     print(f"memory growth: {big[0] - small[0]:+.1f} MB (goal: within 20 MB)")
+    if fastwriters.parquet_available():
+        parquet = peak_rss_mb(side, side, "--no-stability", "--output", os.path.join(folder, "big.parquet"))
+        size = os.path.getsize(os.path.join(folder, "big.parquet")) / 1e6
+        print(f"peak RSS, sweep of {side * side:>12,} orbits to Parquet (--no-stability): {parquet[0]:7.1f} MB "
+              f"({parquet[1]:.1f} s, file {size:.0f} MB)")
+    for name in os.listdir(folder):
+        os.remove(os.path.join(folder, name))
+    os.rmdir(folder)
 
 
 if __name__ == "__main__":

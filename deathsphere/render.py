@@ -56,11 +56,14 @@ def _column_strings(name: str, values: np.ndarray) -> list[str]:
         return text
     if values.dtype.kind in "iub":
         return list(map(str, values.tolist()))
-    if (values[0] == values).all() or np.isnan(values).all():
+    values = values.astype(np.float64, copy=False)
+    # values compared by their bits: -0.0 == 0.0, yet repr tells them apart
+    bits = values.view(np.int64)
+    if (bits[0] == bits).all() or np.isnan(values).all():
         return [_float_text(float(values[0]))] * n
     if name in REPEATING_COLUMNS:
-        unique, inverse = np.unique(values, return_inverse=True)
-        text = list(map(_float_text, unique.tolist()))
+        unique, inverse = np.unique(bits, return_inverse=True)
+        text = list(map(_float_text, unique.view(np.float64).tolist()))
         return [text[i] for i in inverse.tolist()]
     text = list(map(repr, values.tolist()))
     for i in np.flatnonzero(np.isnan(values)).tolist():
@@ -81,10 +84,36 @@ def csv_text(table: Table, header: bool) -> str:
     return "\n".join(lines) + "\n" if lines else ""
 
 
-def write_csv(chunks: Iterable[Table], out: IO[str]) -> int:
+#: Which CSV writer formats a chunk: None picks per chunk (below), True
+#: the compiled one (:mod:`deathsphere.fastwriters`, the ``fast`` extra)
+#: for every chunk, False the pure-Python one.  The bytes are the same
+#: (tests/test_writers.py compares them), so chunks may mix.
+COMPILED_CSV: bool | None = None
+
+#: With COMPILED_CSV None the compiled writer takes over once an output is
+#: this long, and only for chunks of COMPILED_MIN_CHUNK rows or more:
+#: importing polars costs ~0.2 s, which a short output (`orbit`, a small
+#: sweep) would pay in latency, and polars' per-call cost (~1 ms) is more
+#: than the pure-Python writer spends on a few hundred rows.
+COMPILED_AFTER_ROWS = 20_000
+COMPILED_MIN_CHUNK = 1024
+
+
+def write_csv(chunks: Iterable[Table], out: IO[str], compiled: bool | None = None) -> int:
+    """Stream tables as CSV: the header once, then every chunk's rows.
+    ``compiled`` None takes :data:`COMPILED_CSV`."""
+    mode = COMPILED_CSV if compiled is None else compiled
+    fast = None
     rows = 0
     for i, table in enumerate(chunks):
-        out.write(csv_text(table, header=i == 0))
+        text = csv_text
+        if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
+            if fast is None:
+                from deathsphere import fastwriters
+
+                fast = fastwriters.csv_text if fastwriters.csv_available() else False
+            text = fast or csv_text
+        out.write(text(table, header=i == 0))
         rows += len(table)
     return rows
 

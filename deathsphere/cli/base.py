@@ -276,16 +276,18 @@ class Tally:
 
 
 def run_batches(batches, evaluate, fmt: str, *, label: str, total: int | None = None,
-                title: str | None = None, view=None, keep=None) -> Tally:
+                title: str | None = None, view=None, keep=None, output: str | None = None) -> Tally:
     """Evaluate request batches one by one and write each result as it
     comes (CSV/JSON/NDJSON stream with flat memory; the terminal table keeps
     the first rows and counts the rest), with a progress bar on a terminal.
 
     ``batches`` yields ``(n_requests, request)``; ``keep`` filters rows of
-    each result (``--only``).  Returns the :class:`Tally`.
+    each result (``--only``); ``output`` is a file to write instead of
+    stdout (see :func:`emit`).  Returns the :class:`Tally`.
     """
     tally = Tally()
-    streaming = fmt != "table"
+    # rows going to a file leave the terminal to the progress bar
+    streaming = fmt != "table" and output is None
 
     def results(bar):
         for n, req in batches:
@@ -296,7 +298,7 @@ def run_batches(batches, evaluate, fmt: str, *, label: str, total: int | None = 
             bar.advance(n)
 
     with progress(label, total, streaming=streaming) as bar:
-        emit(tally.count(results(bar)), fmt, title, view)
+        emit(tally.count(results(bar)), fmt, title, view, output=output)
     return tally
 
 
@@ -308,19 +310,24 @@ def finish(tally: Tally) -> None:
         sys.exit(ExitCode.INVALID_ROWS)
 
 
-def emit(chunks, fmt: str, title: str | None = None, view=None) -> int:
-    """Write tables in the chosen format to stdout; returns the row count.
+def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | None = None) -> int:
+    """Write tables in the chosen format to stdout (or to the file
+    ``output``, already checked by :class:`OutputPath`); returns the row count.
 
     The terminal view draws at most :data:`MAX_TERMINAL_ROWS` rows (it
     still consumes every chunk, so the count and the exit status are those
-    of the whole result) and says how many it left out."""
-    out = sys.stdout
-    if fmt == "csv":
-        return write_csv(chunks, out)
-    if fmt == "json":
-        return write_json(chunks, out)
-    if fmt == "ndjson":
-        return write_ndjson(chunks, out)
+    of the whole result) and says how many it left out.  ``parquet`` needs
+    ``output`` (a binary file with its own row groups, never a terminal)."""
+    if fmt == "parquet":
+        from deathsphere.fastwriters import write_parquet
+
+        return write_parquet(chunks, output)
+    writer = {"csv": write_csv, "json": write_json, "ndjson": write_ndjson}.get(fmt)
+    if writer is not None and output is not None:
+        with open(output, "w", encoding="utf-8", newline="") as out:
+            return writer(chunks, out)
+    if writer is not None:
+        return writer(chunks, sys.stdout)
     head, total = [], 0
     for table in chunks:
         if total < MAX_TERMINAL_ROWS:

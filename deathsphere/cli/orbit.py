@@ -4,11 +4,14 @@ batch at a time or streamed in chunks."""
 from __future__ import annotations
 
 import math
+from collections import deque
+from functools import partial
 
 import click
 import numpy as np
 
 from deathsphere.cli.base import (
+    OutputPath,
     Quantity,
     Values,
     axis,
@@ -29,6 +32,7 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
+from deathsphere import fastwriters
 from deathsphere.grid import MAX_GRID_ROWS, RangeError, grid_chunks, grid_size
 from deathsphere.model import COLUMNS, REQUEST_FIELDS, Table, evaluate, make_requests
 
@@ -187,6 +191,61 @@ def orbit(theta, alpha, omega3, omega, speed, input_path, body, side, a, r, k, g
 
 STATUSES = ("ok", "no_fit", "no_orbit", "no_contact", "slips", "invalid")
 
+#: What ``sweep --output`` writes, by extension.
+SWEEP_FORMATS = ("csv", "ndjson", "json", "parquet")
+
+
+class SweepOutput(OutputPath):
+    """``sweep --output``: a .csv, .ndjson, .json or .parquet file; Parquet
+    needs pyarrow, from the ``fast`` extra (refused before any work)."""
+
+    def __init__(self):
+        super().__init__({ext: None for ext in SWEEP_FORMATS})
+
+    def convert(self, value, param, ctx):
+        path = super().convert(value, param, ctx)
+        if path.lower().endswith(".parquet") and not fastwriters.parquet_available():
+            raise click.UsageError("writing .parquet needs pyarrow: pip install 'deathsphere[fast]'")
+        return path
+
+
+def sweep_format(fmt: str | None, output: str | None) -> str:
+    """The format of a sweep: as given, else the --output file's extension, else CSV."""
+    ext = output.rsplit(".", 1)[-1].lower() if output else None
+    fmt = (fmt or ext or "csv").lower()
+    if fmt == "parquet" and output is None:
+        raise click.UsageError("--format parquet writes a file: give --output FILE.parquet")
+    if ext is not None and ext != fmt:
+        raise click.UsageError(f"--format {fmt} does not match the --output file {output!r} (.{ext})")
+    return fmt
+
+
+def _evaluate_chunk(req: dict, stability: bool) -> Table:
+    return evaluate(req, stability=stability)
+
+
+def parallel_results(batches, work, jobs: int):
+    """``(n, result)`` per batch, ``work(request)`` evaluated on ``jobs``
+    processes and handed back in input order, so the output is that of one
+    process.  At most two chunks per process are in flight: enough to keep
+    every process busy while the writer catches up, and memory stays flat."""
+    from concurrent.futures import ProcessPoolExecutor
+
+    pending = deque()
+    pool = ProcessPoolExecutor(jobs)
+    try:
+        for n, req in batches:
+            pending.append((n, pool.submit(work, req)))
+            if len(pending) >= 2 * jobs:
+                n, done = pending.popleft()
+                yield n, done.result()
+        while pending:
+            n, done = pending.popleft()
+            yield n, done.result()
+    finally:
+        # a reader gone (`| head`), a failed write or Ctrl-C: drop queued chunks
+        pool.shutdown(wait=True, cancel_futures=True)
+
 
 @cli.command()
 @click.option("--theta", multiple=True, required=True, type=Values("theta"), metavar="DEG",
@@ -212,11 +271,16 @@ STATUSES = ("ok", "no_fit", "no_orbit", "no_contact", "slips", "invalid")
               help="Keep only rows with this status (repeatable), e.g. --only ok.")
 @click.option("--chunk-size", type=click.IntRange(1, 10_000_000), default=CHUNK, show_default=True,
               help="Orbits evaluated per chunk; memory stays flat whatever the grid size.")
+@click.option("--jobs", type=click.IntRange(1, 256), default=1, show_default=True,
+              help="Processes evaluating chunks; the output is the same as with one.")
+@click.option("--output", type=SweepOutput(), default=None, metavar="FILE",
+              help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the "
+                   "extension) instead of stdout.  Parquet needs the fast extra.")
 @stability_option
-@output_options(("csv", "ndjson", "json"))
+@output_options(SWEEP_FORMATS)
 def sweep(theta, alpha, omega3, omega, a_values, r_values, k_values, body, side, g, mu, only, chunk_size,
-          with_stability, fmt):
-    """Stream a grid of orbits (all combinations) as CSV or NDJSON.
+          jobs, output, with_stability, fmt):
+    """Stream a grid of orbits (all combinations) as CSV, NDJSON, JSON or Parquet.
 
     Rows come out in grid order (a, r, k, theta, then alpha, omega3 or
     omega fastest) as they are computed, chunk by chunk, so output starts
@@ -229,7 +293,9 @@ def sweep(theta, alpha, omega3, omega, a_values, r_values, k_values, body, side,
       deathsphere sweep --theta 5:175:1 --alpha 1:89:1 --only ok | sort -t, -k21,21g | head
       deathsphere sweep --theta 60 --alpha 1:50:1 -a 0.1 -a 0.3 -a 0.6 --format ndjson
       deathsphere sweep --body sphere --theta 30:150:10 --omega3 60:120:20
+      deathsphere sweep --theta 0:180:0.25 --alpha 0:90:0.25 --jobs 2 --output grid.parquet
     """
+    fmt = sweep_format(fmt, output)
     body, side = body.lower(), side.lower()
     if body == "wheel" and not alpha:
         raise click.UsageError("give --alpha DEG (values or start:stop:step) for a wheel")
@@ -243,7 +309,11 @@ def sweep(theta, alpha, omega3, omega, a_values, r_values, k_values, body, side,
         mask = np.isin(table["status"], list(keep))
         return Table({name: col[mask] for name, col in table.columns.items()})
 
-    tally = run_batches(grid_batches(axes, chunk_size, body=body, side=side, g=g, mu=mu),
-                        lambda req: evaluate(req, stability=with_stability), (fmt or "csv").lower(),
-                        label="sweep", total=_total(axes), keep=keep_rows if keep else None)
+    total = _total(axes)
+    batches = grid_batches(axes, chunk_size, body=body, side=side, g=g, mu=mu)
+    work = partial(_evaluate_chunk, stability=with_stability)
+    if jobs > 1:
+        batches, work = parallel_results(batches, work, jobs), None
+    tally = run_batches(batches, work or (lambda table: table), fmt, label="sweep", total=total,
+                        keep=keep_rows if keep else None, output=output)
     finish(tally)

@@ -1,0 +1,185 @@
+"""Compiled writers for result tables: CSV through polars, Parquet through
+pyarrow (the optional ``fast`` extra: ``pip install 'deathsphere[fast]'``).
+
+The CSV they write is byte for byte the pure-Python writer's
+(:func:`deathsphere.render.csv_text`); only the speed differs.  How that
+is kept exact:
+
+* **Floats.**  polars writes the shortest digit string that round-trips,
+  as Python's ``repr`` does, and in the same form (``60.0``,
+  ``1.5e+20``, ``1e+16``, ``123456789012345.0``, ``-0.0``, ``5e-324``) for
+  every value except those in 1e-10 <= |x| < 1e-4, where it writes
+  ``1e-9`` and ``0.000025`` for repr's ``1e-09`` and ``2.5e-05``.  Those
+  values (rare in results) are formatted by ``repr`` itself and spliced in.
+  Because a future polars could format differently, :func:`csv_available`
+  first checks polars against ``repr`` on :data:`PROBES` (every form and
+  boundary) and declines if any differs; the writer then falls back to
+  the pure-Python one.
+* **NaN** becomes null, written as an empty cell.
+* **Text** is quoted here with the contract's rule (only a cell holding a
+  comma, quote, CR or LF; quotes doubled), and polars is told never to
+  quote, so its own quoting rules (it quotes an empty string) never apply.
+* **The header** is the column names joined by commas, as in the
+  pure-Python writer.
+
+Nothing here is imported until a compiled writer is asked for: polars and
+pyarrow take a noticeable time to import.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+from typing import Iterable
+
+import numpy as np
+
+from deathsphere.model import TEXT_COLUMNS, Table
+
+#: polars writes |x| in this range differently from repr (exponent
+#: 'e-9' for 'e-09'; positional below 1e-4 where repr switches to an exponent).
+_REPR_LOW, _REPR_HIGH = 1e-10, 1e-4
+
+#: Values whose polars text must equal repr, checked once before polars is
+#: trusted: each form repr uses and each of its boundaries, both signs.
+PROBES = (
+    0.0, -0.0, 1.0, 60.0, 0.1, 0.3, 2.3026338854496538, 1.0 / 3.0, 100.0, 0.0001, 0.00012345678901234567,
+    0.00030000000000000003, 123456789012345.0, 999999999999999.9, 1e15, 1234567890123456.0,
+    9999999999999998.0, 1e16, 1.2345678901234568e+16, 1.5e20, 1e21, 1e22, 1e100, 1.7976931348623157e308,
+    1e-10 * 0.999, 9.999e-11, 1e-11, 1.5e-100, 5e-324, 2.2250738585072014e-308, 2.225073858507201e-308,
+    math.pi * 1e5, 4.35, 0.5, 2.5, 1e23, 9007199254740993.0, 12345.678,
+)
+
+
+def _module(name: str) -> bool:
+    return importlib.util.find_spec(name) is not None
+
+
+def parquet_available() -> bool:
+    return _module("pyarrow")
+
+
+_csv_ok: bool | None = None
+
+
+def csv_available() -> bool:
+    """polars is installed and formats floats as repr does (checked once)."""
+    global _csv_ok
+    if _csv_ok is None:
+        _csv_ok = _module("polars") and _polars_matches_repr()
+    return _csv_ok
+
+
+def _polars_matches_repr() -> bool:
+    import polars as pl
+
+    probes = [s * x for x in PROBES for s in (1.0, -1.0)]
+    probes = [x for x in probes if not (_REPR_LOW <= abs(x) < _REPR_HIGH)]
+    try:
+        text = pl.DataFrame({"x": probes}).write_csv(include_header=False, quote_style="never")
+    except Exception:  # an incompatible polars: the pure-Python writer is always right
+        return False
+    return text.split("\n")[:-1] == [repr(x) for x in probes]
+
+
+def _quote(pl, s):
+    """The contract's CSV quoting on a polars String series (nulls stay null)."""
+    needs = s.str.contains(r'[,"\r\n]').fill_null(False)
+    if not needs.any():
+        return s
+    quoted = '"' + s.str.replace_all('"', '""', literal=True) + '"'
+    return pl.select(pl.when(needs).then(quoted).otherwise(s)).to_series().alias(s.name)
+
+
+def _series(pl, name: str, values: np.ndarray):
+    """One column as a polars series that writes the pure-Python writer's text."""
+    from deathsphere.render import _column_strings
+
+    kind = values.dtype.kind
+    if kind == "f":
+        values = values.astype(np.float64, copy=False)
+        s = pl.Series(name, values, nan_to_null=True)
+        size = np.abs(values)
+        odd = np.flatnonzero((size >= _REPR_LOW) & (size < _REPR_HIGH))
+        if len(odd):
+            s = s.cast(pl.String).scatter(odd, [repr(x) for x in values[odd].tolist()])
+        return s
+    if kind in "iu":
+        return pl.Series(name, values)
+    if kind == "O" or kind in "US":
+        items = values.tolist()
+        try:
+            s = pl.Series(name, items, strict=True)
+        except Exception:
+            s = None
+        if s is not None and s.dtype == pl.String:
+            return _quote(pl, s)
+        if s is not None and s.dtype == pl.Int64 and name not in TEXT_COLUMNS:
+            return s
+    # anything else (bools, mixed objects): the pure-Python text, already quoted
+    return pl.Series(name, _column_strings(name, values), dtype=pl.String)
+
+
+def csv_text(table: Table, header: bool) -> str:
+    """One chunk as CSV text, equal to :func:`deathsphere.render.csv_text`."""
+    import polars as pl
+
+    names = table.names
+    head = ",".join(names) + "\n" if header and names else ""
+    if len(table) == 0:
+        return head
+    frame = pl.DataFrame([_series(pl, n, table[n]) for n in names])
+    return head + frame.write_csv(include_header=False, quote_style="never", null_value="", line_terminator="\n")
+
+
+# ---------------------------------------------------------------------------
+# Parquet
+
+
+def _arrow_type(pa, name: str, values: np.ndarray):
+    kind = values.dtype.kind
+    if name in TEXT_COLUMNS or kind in "US":
+        return pa.string()
+    if kind == "f":
+        return pa.float64()
+    if kind in "iu" or kind == "O":  # object non-text columns hold ints or None (branch)
+        return pa.int64()
+    if kind == "b":
+        return pa.bool_()
+    raise TypeError(f"column {name!r}: no Parquet type for {values.dtype}")
+
+
+def _arrow_column(pa, values: np.ndarray, kind):
+    if pa.types.is_floating(kind):
+        return pa.array(values, type=kind, from_pandas=True)  # NaN -> null, as CSV's empty cell
+    if values.dtype.kind == "O":
+        return pa.array(values.tolist(), type=kind)
+    return pa.array(values, type=kind)
+
+
+def write_parquet(chunks: Iterable[Table], path: str) -> int:
+    """Stream tables into one Parquet file, one row group per chunk, so
+    memory stays that of a chunk.  Undefined values are nulls; text columns
+    are strings, ``input_row`` and ``branch`` int64, the rest float64."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    rows = 0
+    writer = schema = None
+    try:
+        for table in chunks:
+            if schema is None:
+                schema = pa.schema([(n, _arrow_type(pa, n, table[n])) for n in table.names])
+                writer = pq.ParquetWriter(path, schema)
+            if len(table) == 0:
+                continue
+            batch = pa.table([_arrow_column(pa, table[f.name], f.type) for f in schema], schema=schema)
+            writer.write_table(batch, row_group_size=len(table))
+            rows += len(table)
+    finally:
+        if writer is not None:
+            writer.close()
+    if writer is None:  # no chunk at all: still a valid, empty file
+        pq.write_table(pa.table({}), path)
+    return rows
+
