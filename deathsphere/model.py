@@ -370,9 +370,12 @@ def validate_requests(req: dict) -> np.ndarray:
     ]
 
     def domain(name, given=None):
-        words = params.problems(name, req[name])
-        bad = words != ""
-        checks.append((bad if given is None else bad & given, lambda i, w=words: w[i]))
+        # only the values given are checked (an optional input left empty is
+        # NaN in every row, and would otherwise cost a message per row)
+        rows = np.arange(len(body)) if given is None else np.flatnonzero(given)
+        words = np.full(len(body), "", dtype=object)
+        words[rows] = params.problems(name, req[name][rows])
+        checks.append((words != "", lambda i, w=words: w[i]))
 
     for name in ("theta", "a", "r", "k", "g", "mu"):
         domain(name)

@@ -78,9 +78,8 @@ def _validate(req) -> np.ndarray:
     for i in np.flatnonzero((reason == "") & both_or_none):
         reason[i] = "give exactly one of v_top (m/s) and phidot_top (rad/s)"
     for name, given in (("v_top", ~np.isnan(v)), ("phidot_top", ~np.isnan(w))):
-        words = params.problems(name, req[name])
-        hit = (reason == "") & given & (words != "")
-        reason[hit] = words[hit]
+        rows = np.flatnonzero((reason == "") & given)
+        reason[rows] = params.problems(name, req[name][rows])
     return reason
 
 
