@@ -78,8 +78,8 @@ class Segment:
 
 class Axis:
     """The values of one option (repeated values and ranges, in order),
-    computed on demand: ``len(axis)``, ``axis.take(indices)``,
-    ``axis.first``/``axis.last`` per segment via :attr:`segments`."""
+    computed on demand: ``len(axis)``, ``axis.take(indices)``; each
+    segment's ``first``/``last`` via :attr:`segments`."""
 
     def __init__(self, segments: list[Segment]):
         self.segments = list(segments)
@@ -108,11 +108,6 @@ class Axis:
     def values(self) -> np.ndarray:
         """Every value (only for axes known to be small)."""
         return self.take(np.arange(len(self)))
-
-    def extremes(self) -> np.ndarray:
-        """The first and last value of each segment: a range is monotone, so
-        an interval condition holds for every value iff it holds for these."""
-        return np.array([x for s in self.segments for x in (s.first, s.last)])
 
     def contains_zero(self) -> bool:
         """Whether some value is exactly 0 (for rates that must not be)."""
@@ -184,7 +179,12 @@ def parse_many(texts, what: str, max_values: int | None = None) -> np.ndarray:
 
 
 def grid_size(axes: dict) -> int:
-    return math.prod(len(v) for v in axes.values())
+    """Rows of the cartesian grid of ``axes``; :class:`RangeError` beyond
+    :data:`MAX_GRID_ROWS` (the one place that limit is checked)."""
+    total = math.prod(len(v) for v in axes.values())
+    if total > MAX_GRID_ROWS:
+        raise RangeError(f"the grid has {total:.3g} orbits, more than {MAX_GRID_ROWS:.0e}")
+    return total
 
 
 def grid_chunks(axes: dict, chunk: int):
@@ -197,9 +197,7 @@ def grid_chunks(axes: dict, chunk: int):
     names = list(axes)
     axes = {n: a if isinstance(a, Axis) else Axis.of(a) for n, a in axes.items()}
     shape = tuple(len(axes[n]) for n in names)
-    total = math.prod(shape)
-    if total > MAX_GRID_ROWS:
-        raise RangeError(f"the grid has {total:.3g} orbits, more than {MAX_GRID_ROWS:.0e}")
+    total = grid_size(axes)
     for first in range(0, total, chunk):
         flat = np.arange(first, min(first + chunk, total), dtype=np.int64)
         index = np.unravel_index(flat, shape)

@@ -311,11 +311,6 @@ def _combination_problem(side, a, r) -> str:
     return ""
 
 
-def angle_problem(name: str, value: float) -> str:
-    """Why an angle in degrees is not allowed ('' if it is)."""
-    return params.first_problem(name, [value])
-
-
 # ---------------------------------------------------------------------------
 # requests: per-row parameters, vectorised validation, evaluation
 

@@ -60,3 +60,19 @@ def test_records_for_notebooks():
     rec = horizontal_orbit(Setup(), 60, 10).records()[0]
     assert rec["status"] == "ok" and rec["mu_available"] is None
     assert rec["v_cm_m_s"] == pytest.approx(7.8767, rel=1e-4)
+
+
+def test_no_row_keeps_an_infinite_value():
+    """The backstop behind the input bounds: an infinite result is blanked,
+    and a row that claimed an orbit with one becomes invalid with the reason."""
+    import numpy as np
+
+    from deathsphere.model import OVERFLOW_REASON, finite_or_blank
+
+    columns = {"status": np.array(["ok", "no_fit", "slips"], dtype=object),
+               "reason": np.array(["", "does not fit", ""], dtype=object),
+               "v_cm_m_s": np.array([np.inf, -np.inf, 3.0]), "input_row": np.array([1, 2, 3])}
+    finite_or_blank(columns)
+    assert np.isnan(columns["v_cm_m_s"][:2]).all() and columns["v_cm_m_s"][2] == 3.0
+    assert columns["status"].tolist() == ["invalid", "no_fit", "slips"]
+    assert columns["reason"].tolist() == [OVERFLOW_REASON, "does not fit", ""]

@@ -33,7 +33,7 @@ from deathsphere.constants import (
     TABLE1_WHEEL_RADIUS,
 )
 from deathsphere import fastwriters
-from deathsphere.grid import MAX_GRID_ROWS, RangeError, grid_chunks, grid_size
+from deathsphere.grid import RangeError, grid_chunks, grid_size
 from deathsphere.model import COLUMNS, REQUEST_FIELDS, Table, evaluate, make_requests
 
 #: Output columns that echo an input (read back under these names); every
@@ -83,14 +83,11 @@ def check_body_inputs(body: str, alpha, omega3, omega, speed) -> None:
 
 def grid_batches(axes: dict, chunk: int, **fixed):
     """``(n, request)`` per chunk of the cartesian grid of ``axes`` (lazy),
-    rows numbered from 1 in grid order."""
-    try:
-        chunks = grid_chunks(axes, chunk)
-        for first, grid in chunks:
-            n = len(grid["theta"])
-            yield n, make_requests(n, input_row=np.arange(first + 1, first + n + 1), **fixed, **grid)
-    except RangeError as exc:
-        raise click.UsageError(str(exc)) from None
+    rows numbered from 1 in grid order (its size is checked by :func:`_total`
+    before any work)."""
+    for first, grid in grid_chunks(axes, chunk):
+        n = len(grid["theta"])
+        yield n, make_requests(n, input_row=np.arange(first + 1, first + n + 1), **fixed, **grid)
 
 
 def input_batches(reader, chunk: int, make=make_requests):
@@ -108,10 +105,10 @@ def input_batches(reader, chunk: int, make=make_requests):
 
 
 def _total(axes: dict) -> int:
-    total = grid_size(axes)
-    if total > MAX_GRID_ROWS:
-        raise click.UsageError(f"the grid has {total:.3g} orbits, more than {MAX_GRID_ROWS:.0e}")
-    return total
+    try:
+        return grid_size(axes)
+    except RangeError as exc:
+        raise click.UsageError(str(exc)) from None
 
 
 def _one_default(name: str, segments) -> float | None:
