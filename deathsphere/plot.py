@@ -16,7 +16,7 @@ region is filled between the root-found interval ends of
 With ``stability=True`` (beyond the paper, docs/stability.md "Stability
 maps") the allowed region is split into its stable and unstable parts by
 the exact linear stability of each orbit: the signed margin of
-:func:`deathsphere.physics.stability_map.stability_margin` (> 0 stable, < 0 unstable) is
+:func:`deathsphere.physics.stability.margin.stability_margin` (> 0 stable, < 0 unstable) is
 computed on a grid of ``stability_resolution_deg`` (0.25 deg), its zero
 contour is drawn (each vertex bisected onto the zero along its grid edge,
 so the curve is exact at the vertices; features thinner than a cell, e.g.
@@ -161,10 +161,10 @@ def stability_grid(a, r, k, *, g=9.80665, outside=False, mu=np.inf, max_g=np.inf
     """The stability margin on a (theta, alpha) grid (beyond the paper,
     docs/stability.md): returns ``(theta_deg, alpha_deg, margin, allowed)``,
     margin (len(alpha_deg), len(theta_deg)) from
-    :func:`deathsphere.physics.stability_map.stability_margin` (> 0 stable, < 0 unstable),
+    :func:`deathsphere.physics.stability.margin.stability_margin` (> 0 stable, < 0 unstable),
     computed at the feasible nodes and two cells around them (NaN
     elsewhere and where no orbit exists); ``allowed`` the feasible nodes."""
-    from deathsphere.physics.stability_map import stability_margin
+    from deathsphere.physics.stability import stability_margin
 
     lo_d, hi_d = alpha_range_deg
     th_d = np.arange(0.5 * resolution_deg, 180.0, resolution_deg)
@@ -213,7 +213,7 @@ def _stability_lines(th_d, al_d, margin, a, r, k, g, outside, mu, max_g, resolut
     times before the cut, so that a piece ends within 1/densify of a cell of
     the region's edge; pieces shorter than two cells (the unresolved tips of
     tongues thinner than a cell) are not drawn."""
-    from deathsphere.physics.stability_map import stability_margin
+    from deathsphere.physics.stability import stability_margin
 
     pieces = []
     for seg in _contours(np.ma.masked_invalid(margin), th_d, al_d):

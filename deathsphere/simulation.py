@@ -53,7 +53,7 @@ from scipy.integrate import solve_ivp
 from deathsphere.model import Setup, Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import sphere as sph
-from deathsphere.physics import vertical as vert
+from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
 from deathsphere.physics.status import REASON_TEXT, Status
 
@@ -403,7 +403,7 @@ def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, pertur
     perturb_theta : [rad]  contact point moved by this in cone angle
 
     The "period" of the run is the lap time (elliptic integral,
-    :func:`deathsphere.physics.vertical.lap_time`) when the wheel inside
+    :func:`deathsphere.physics.vertical_orbit.lap_time`) when the wheel inside
     keeps contact all the way round by eq. (28a), otherwise the fixed
     duration 2 pi sqrt(r'/g) (the lap time of a wheel at the contact limit
     speed sqrt(g r'), as if the speed were constant).  Status no_fit where

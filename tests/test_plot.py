@@ -54,7 +54,7 @@ def test_drawn_curves_lie_on_the_boundaries():
 
 
 def test_stability_margin_sign_is_the_verdict():
-    from deathsphere.physics.stability_map import stability_margin
+    from deathsphere.physics.stability import stability_margin
     from deathsphere.physics import region
     from deathsphere.physics.stability import Verdict, wheel_stability
 

@@ -2,7 +2,7 @@
 
 Reference values are the paper's steady orbits (McDonald 1993 eqs. 29-36,
 Table 1; eqs. 55-58 for a sphere), its vertical orbits (eqs. 26-28b, 82, as
-generalised in deathsphere.physics.vertical), and the exact linear stability
+generalised in deathsphere.physics.vertical_orbit), and the exact linear stability
 of deathsphere.physics.stability.  The whole file runs in ~30 s on 2 cores.
 """
 
@@ -18,7 +18,7 @@ from deathsphere import simulation as sim
 from deathsphere.model import Setup
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import sphere as sph
-from deathsphere.physics import vertical as vert
+from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
 from deathsphere.physics.stability import wheel_stability
 
@@ -242,7 +242,7 @@ def test_inside_vertical_orbit_below_the_contact_limit_stops_at_once():
 
 def test_slips_event_fires_where_the_friction_runs_out():
     """Inside vertical orbit with cot(theta) < mu < mu_max: slips at the
-    analytic slip angle (physics.vertical.slip_angle, from eqs. 27-28b)."""
+    analytic slip angle (physics.vertical_orbit.slip_angle, from eqs. 27-28b)."""
     theta = 60 * DEG
     rp = TABLE1.r * np.sin(theta) - TABLE1.a
     v = 1.2 * np.sqrt(TABLE1.g * rp)

@@ -42,7 +42,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from deathsphere.physics.geometry import SINGULAR
+from deathsphere.physics.geometry import SINGULAR, r_prime
+from deathsphere.physics.sphere import centre_distance
+from deathsphere.physics.vectors import cross, dot, norm, zcross
 from deathsphere.physics.wheel import omega_squared
 
 N_STATE = 9
@@ -95,45 +97,48 @@ def body_params(a, r, k, g, outside=False, sphere=False) -> BodyParams:
     return BodyParams(a, r, k, g, outside, sphere)
 
 
-# --------------------------------------------------------------------------
-# small vector helpers on axis 0 (bilinear: no conjugation, complex-step safe)
+class ContactGeometry(NamedTuple):
+    """Where the body touches the sphere, from a state (docs/dynamics.md
+    sec. 2).  Vectors are (3, ...) arrays.
 
-def _dot(u, v):
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+    ``c``, ``e1``, ``w`` the state's rows; ``e1_unit`` e1/|e1|; ``c_axial``
+    c.e1_unit [m]; ``c_perp`` c - c_axial e1_unit for a wheel (c for a
+    sphere) [m]; ``rho`` |c_perp| [m]; ``n`` c_perp/rho; ``e3`` s n, the unit
+    vector from the centre to the contact point [-]; ``wheel`` (bool) the
+    body is a wheel; ``s`` +1 inside, -1 outside.
+    """
+
+    c: np.ndarray
+    e1: np.ndarray
+    w: np.ndarray
+    e1_unit: np.ndarray
+    c_axial: np.ndarray
+    c_perp: np.ndarray
+    rho: np.ndarray
+    n: np.ndarray
+    e3: np.ndarray
+    wheel: np.ndarray
+    s: np.ndarray
 
 
-def _cross(u, v):
-    return np.stack((u[1] * v[2] - u[2] * v[1],
-                     u[2] * v[0] - u[0] * v[2],
-                     u[0] * v[1] - u[1] * v[0]))
-
-
-def _zcross(u):
-    """z x u."""
-    return np.stack((-u[1], u[0], np.zeros_like(u[2])))
-
-
-def _norm(u):
-    # sqrt of the bilinear square: analytic, so complex-step derivatives work
-    return np.sqrt(_dot(u, u))
-
-
-def _geometry(state, p: BodyParams):
-    """Contact direction e3 and auxiliary quantities (docs/dynamics.md sec. 2)."""
+def contact_geometry(state, p: BodyParams) -> ContactGeometry:
+    """Contact direction e3 and the quantities it is built from, for states
+    (9, ...) (beyond the paper; docs/dynamics.md sec. 2): for a wheel e3 is
+    the unit projection of c on the wheel plane, times s; for a sphere s c/|c|."""
+    state = np.asarray(state)
     c, e1, w = state[C], state[E1], state[W]
     wheel = ~p.sphere
-    e1h = e1 / _norm(e1)
-    c1 = _dot(c, e1h)
+    e1h = e1 / norm(e1)
+    c1 = dot(c, e1h)
     cperp = c - np.where(wheel, c1, 0.0) * e1h
-    rho = _norm(cperp)
+    rho = norm(cperp)
     s = np.where(p.outside, -1.0, 1.0)
     n = cperp / rho
-    e3 = s * n
-    return c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s
+    return ContactGeometry(c, e1, w, e1h, c1, cperp, rho, n, s * n, wheel, s)
 
 
 def _coefficients(p: BodyParams):
-    """Per-body constants of the equations (:func:`_equations`), computed once:
+    """Per-body constants of the equations (:func:`equations_by_component`), computed once:
     (a, g/a, s, wheel, k wheel, 1/(k+1), 1/k, wheel (1/(2k+1) - 1/(k+1)))
     with wheel = 1.0 for a wheel, 0.0 for a sphere and s = -1 outside, +1
     inside (docs/dynamics.md eq. D5)."""
@@ -146,7 +151,7 @@ def _coefficients(p: BodyParams):
             wheel * (1.0 / (2 * k + 1) - 1.0 / (k + 1)))
 
 
-def _equations(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=False):
+def equations_by_component(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=False):
     """The equations of motion written once, component by component.
 
     Beyond the paper (docs/dynamics.md, eqs. D1-D5; McDonald 1993 eqs. 2, 3,
@@ -202,7 +207,7 @@ def _equations(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=False):
 def _motion(state, p: BodyParams):
     """Time derivatives in the lab frame and the acceleration of the centre
     (numpy arrays of shape (3, ...)): (cdot, e1dot, wdot, cddot, e3, e3dot)."""
-    out = _equations(*state[:9], _coefficients(p), np.sqrt, accel=True)
+    out = equations_by_component(*state[:9], _coefficients(p), np.sqrt, accel=True)
     return tuple(np.stack(np.broadcast_arrays(*out[i:i + 3])) for i in range(0, 18, 3))
 
 
@@ -217,7 +222,7 @@ def rhs(state, params: BodyParams, frame_rate=0.0):
     supported (complex-step differentiation).
     """
     state = np.asarray(state)
-    out = list(_equations(*state[:9], _coefficients(params), np.sqrt))
+    out = list(equations_by_component(*state[:9], _coefficients(params), np.sqrt))
     if np.any(np.asarray(frame_rate) != 0):
         fr = np.asarray(frame_rate)
         for i in (0, 3, 6):          # - Omega z x u for u = c, e1, w
@@ -228,7 +233,7 @@ def rhs(state, params: BodyParams, frame_rate=0.0):
 
 class _Dual:
     """Forward-mode derivative (value v, directional derivatives d) for
-    :func:`_equations` (beyond the paper; docs/dynamics.md sec. 5): v has
+    :func:`equations_by_component` (beyond the paper; docs/dynamics.md sec. 5): v has
     the bodies' shape (..., n), d an extra leading axis of directions
     (m, ..., n); +, -, *, / follow the product and quotient rules.  Numpy
     defers to it (``__array_ufunc__ = None``), so coefficient arrays
@@ -289,7 +294,7 @@ def jvp(state, directions, params: BodyParams, frame_rate=0.0):
     """Jacobian-vector products of :func:`rhs`: J(state) @ directions.
 
     Beyond the paper (docs/dynamics.md sec. 5): forward-mode
-    differentiation of the same lines (:func:`_equations`) with value and
+    differentiation of the same lines (:func:`equations_by_component`) with value and
     derivatives carried separately (:class:`_Dual`), exact to round-off like
     a complex step but ~3x cheaper for several directions, since the value
     is computed once and in real arithmetic.  ``state`` (9, ..., n) real,
@@ -298,7 +303,7 @@ def jvp(state, directions, params: BodyParams, frame_rate=0.0):
     """
     state = np.asarray(state, dtype=float)
     directions = np.asarray(directions, dtype=float)
-    out = _equations(*(_Dual(state[i], directions[i]) for i in range(9)), _coefficients(params), _dual_sqrt)
+    out = equations_by_component(*(_Dual(state[i], directions[i]) for i in range(9)), _coefficients(params), _dual_sqrt)
     d = [o.d if type(o) is _Dual else np.zeros_like(directions[0]) for o in out]
     fr = np.asarray(frame_rate)
     if np.any(fr != 0):
@@ -311,11 +316,11 @@ def jvp(state, directions, params: BodyParams, frame_rate=0.0):
 def scalar_rates(y, coef, frame_rate=0.0):
     """d(state)/dt of ONE body, its state given as 9 Python floats; returns
     a tuple of 9 floats.  The same equations as :func:`rhs` (both run
-    :func:`_equations`), on floats: ~40x less per call than numpy on
+    :func:`equations_by_component`), on floats: ~40x less per call than numpy on
     9-element arrays (beyond the paper; docs/simulation.md).  ``coef`` is
     :func:`scalar_coefficients`, ``frame_rate`` [rad/s] as for :func:`rhs`.
     Raises ZeroDivisionError at a singular state (where :func:`rhs` warns)."""
-    out = _equations(*y, coef, math.sqrt)
+    out = equations_by_component(*y, coef, math.sqrt)
     if not frame_rate:
         return out
     fr = frame_rate
@@ -369,7 +374,7 @@ def ode(params: BodyParams, frame_rate=0.0):
 def contact_point(state, params: BodyParams):
     """Contact point p = c + a e3 [m], shape (3, ...) (eq. 00 with e3 of
     docs/dynamics.md sec. 2)."""
-    e3 = _geometry(np.asarray(state), params)[8]
+    e3 = contact_geometry(state, params).e3
     return np.asarray(state)[C] + params.a * e3
 
 
@@ -380,11 +385,11 @@ def energy(state, params: BodyParams):
     Conserved by the exact flow (the rolling contact force does no work).
     """
     state = np.asarray(state)
-    c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s = _geometry(state, params)
-    v = params.a * _cross(e3, w)
-    w1 = _dot(w, e1h)
-    rot = _dot(w, w) + np.where(wheel, w1 * w1, 0.0)
-    return 0.5 * _dot(v, v) + 0.5 * params.k * params.a ** 2 * rot + params.g * c[2]
+    c, e1, w, e1h, c1, cperp, rho, n, e3, wheel, s = contact_geometry(state, params)
+    v = params.a * cross(e3, w)
+    w1 = dot(w, e1h)
+    rot = dot(w, w) + np.where(wheel, w1 * w1, 0.0)
+    return 0.5 * dot(v, v) + 0.5 * params.k * params.a ** 2 * rot + params.g * c[2]
 
 
 def constraint_residuals(state, params: BodyParams):
@@ -405,14 +410,14 @@ def constraint_residuals(state, params: BodyParams):
     cdot, _, _, _, e3, e3dot = _motion(state, params)
     c, e1, w = state[C], state[E1], state[W]
     pvec = c + params.a * e3
-    pn = _norm(pvec)
+    pn = norm(pvec)
     pdot = cdot + params.a * e3dot
-    slip = cdot - params.a * _cross(e3, w)
+    slip = cdot - params.a * cross(e3, w)
     return {
-        "axis": _norm(e1) - 1.0,
+        "axis": norm(e1) - 1.0,
         "contact": pn - params.r,
-        "contact_rate": _dot(pvec, pdot) / pn,
-        "slip": _norm(slip),
+        "contact_rate": dot(pvec, pdot) / pn,
+        "slip": norm(slip),
     }
 
 
@@ -446,10 +451,10 @@ def contact_force(state, params: BodyParams):
 
 def _contact_force(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, g, sqrt):
     """:func:`contact_force` written once for floats, complex numbers and
-    numpy arrays (as :func:`_equations`): F/m = d2c/dt2 + g z (eq. 2), its
+    numpy arrays (as :func:`equations_by_component`): F/m = d2c/dt2 + g z (eq. 2), its
     normal part -s F.n (s = +1 inside, -1 outside; n = p/|p|) and its
     tangential part.  Returns (F (3), normal, friction (3), |friction|)."""
-    out = _equations(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=True)
+    out = equations_by_component(c0, c1, c2, x0, x1, x2, w0, w1, w2, coef, sqrt, accel=True)
     F0, F1, F2 = out[9], out[10], out[11] + g
     a, s = coef[0], coef[2]
     p0, p1, p2 = c0 + a * out[12], c1 + a * out[13], c2 + a * out[14]      # contact point
@@ -483,9 +488,9 @@ def project(state, params: BodyParams):
     shift).  For a simulator that wants to remove integration drift."""
     state = np.array(state, dtype=np.result_type(state, float), copy=True)
     e1 = state[E1]
-    state[E1] = e1 / _norm(e1)
+    state[E1] = e1 / norm(e1)
     pvec = contact_point(state, params)
-    pn = _norm(pvec)
+    pn = norm(pvec)
     state[C] = state[C] + (params.r - pn) * pvec / pn
     return state
 
@@ -502,11 +507,11 @@ def state_from_contact(p_hat, e1, w, params: BodyParams):
     """
     p_hat = np.asarray(p_hat)
     e1 = np.asarray(e1)
-    p_hat = p_hat / _norm(p_hat)
-    e1 = e1 / _norm(e1)
+    p_hat = p_hat / norm(p_hat)
+    e1 = e1 / norm(e1)
     pvec = params.r * p_hat
-    pperp = pvec - _dot(pvec, e1) * e1
-    e3_wheel = np.where(params.outside, -1.0, 1.0) * pperp / _norm(pperp)
+    pperp = pvec - dot(pvec, e1) * e1
+    e3_wheel = np.where(params.outside, -1.0, 1.0) * pperp / norm(pperp)
     e3_sphere = np.where(params.outside, -1.0, 1.0) * p_hat
     e3 = np.where(params.sphere, e3_sphere, e3_wheel)
     c = pvec - params.a * e3
@@ -551,67 +556,48 @@ def wheel_orbit_state(theta, alpha, a, r, k, g, outside=False, phi=0.0):
     e1 = -sa * rhat - ca * zhat
     e3 = ca * rhat - sa * zhat
     c = pvec - a * e3
-    rp = r * st - a * ca
+    rp = r_prime(theta, alpha, a, r)
     w = (rp / a) * omega * e1 - omega * sa * e3
     return np.concatenate((c, e1, w)), omega
 
 
-def sphere_orbit_rates(theta, omega3, a, r, k, g, outside=False):
-    """The two rates Omega of steady horizontal orbits of a rolling sphere
-    with spin omega3, eq. (55): (k+1) r' Omega^2 cos(theta) + k a omega3 Omega
-    + g = 0, r' = r - a inside, r + a outside (sec. 5).
+def sphere_spin(theta, omega, a, r, k, g, outside=False):
+    """Spin omega3 = w.e3 [rad/s] of a sphere on the steady horizontal orbit
+    of polar angle theta [rad] and rate omega = Omega [rad/s]: eq. (55)
+    solved for it,
 
-    omega3 [rad/s] is w.e3 with e3 from the sphere's centre to the contact
-    point.  Returns ``(slow, fast)`` [rad/s]: the root of smaller and larger
-    |Omega|; NaN where eq. (56) fails (no real root).  On the equator only
-    ``slow`` = -g/(k a omega3) exists (``fast`` is NaN).
+        omega3 = -((k+1) r' Omega^2 cos(theta) + g) / (k a Omega),
+
+    r' = r - a inside (eq. 42), r + a outside (sec. 5).  NaN where Omega = 0.
+    Complex theta / omega accepted (complex step); for float inputs with
+    cos(theta) snapped at the equator see
+    :func:`deathsphere.physics.sphere.omega3_from_rate`.
     """
-    theta, omega3, a, r, k, g, outside = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float) for x in (theta, omega3, a, r, k, g)),
-        np.asarray(outside, dtype=bool))
-    rp = np.where(outside, r + a, r - a)
-    A = (k + 1) * rp * np.cos(theta)
-    B = k * a * omega3
-    disc = B * B - 4 * A * g
-    real = disc >= 0
-    sq = np.sqrt(np.where(real, disc, 0.0))
-    # numerically stable pair of roots: q = -(B + sign(B) sq)/2
-    sgn = np.where(B >= 0, 1.0, -1.0)
-    q = -0.5 * (B + sgn * sq)
+    rp = centre_distance(a, r, outside)
+    nz = omega != 0
     with np.errstate(divide="ignore", invalid="ignore"):
-        r1 = np.where(q != 0, g / np.where(q != 0, q, 1.0), np.nan)       # C/q
-        r2 = np.where(A != 0, q / np.where(A != 0, A, 1.0), np.nan)       # q/A
-    tiny = np.abs(A) <= 1e-12 * (np.abs(r) + a)
-    r2 = np.where(tiny, np.nan, r2)
-    slow = np.where(np.abs(r1) <= np.abs(np.nan_to_num(r2, nan=np.inf)), r1, r2)
-    fast = np.where(np.abs(r1) <= np.abs(np.nan_to_num(r2, nan=np.inf)), r2, r1)
-    slow = np.where(real, slow, np.nan)
-    fast = np.where(real & ~tiny, fast, np.nan)
-    return slow, fast
+        return np.where(nz, -((k + 1) * rp * omega ** 2 * np.cos(theta) + g)
+                        / (k * a * np.where(nz, omega, 1.0)), np.nan)
 
 
-def sphere_orbit_state(theta, Omega, a, r, k, g, outside=False, phi=0.0):
+def sphere_orbit_state(theta, omega, a, r, k, g, outside=False, phi=0.0):
     """State of a sphere on the steady horizontal orbit of polar angle theta
-    and rate Omega, and its spin omega3.
+    and rate omega = Omega, and its spin omega3.
 
     McDonald (1993) eqs. (42), (44), (55): the centre at distance
     r' = r - a (inside) or r + a (outside) from the origin on the ray of polar
     angle theta and azimuth phi; e3 (centre to contact) = +/- that ray;
     w = -(1/a) e3 x v_cm + omega3 e3 (eq. 6a) with v_cm = Omega z x c and
-    omega3 from eq. (55) solved for it:
-    omega3 = -((k+1) r' Omega^2 cos(theta) + g) / (k a Omega).
+    omega3 from eq. (55) (:func:`sphere_spin`).
     The e1 rows hold a body-fixed marker (the paper's axis 1 at t = 0).
 
     Returns ``(state, omega3)``; NaN where Omega = 0.
     """
-    theta, Omega, a, r, k, g, outside, phi = np.broadcast_arrays(
-        *(np.asarray(x) for x in (theta, Omega, a, r, k, g)),
+    theta, omega, a, r, k, g, outside, phi = np.broadcast_arrays(
+        *(np.asarray(x) for x in (theta, omega, a, r, k, g)),
         np.asarray(outside, dtype=bool), np.asarray(phi))
-    rp = np.where(outside, r + a, r - a)
-    nz = Omega != 0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        omega3 = np.where(nz, -((k + 1) * rp * Omega ** 2 * np.cos(theta) + g)
-                          / (k * a * np.where(nz, Omega, 1.0)), np.nan)
+    rp = centre_distance(a, r, outside)
+    omega3 = sphere_spin(theta, omega, a, r, k, g, outside)
     cp, sp = np.cos(phi), np.sin(phi)
     zero = np.zeros_like(cp)
     rhat = np.stack((cp, sp, zero))
@@ -620,52 +606,33 @@ def sphere_orbit_state(theta, Omega, a, r, k, g, outside=False, phi=0.0):
     c = rp * chat
     s = np.where(outside, -1.0, 1.0)
     e3 = s * chat
-    v = Omega * _zcross(c)
-    w = -_cross(e3, v) / a + omega3 * e3
+    v = omega * zcross(c)
+    w = -cross(e3, v) / a + omega3 * e3
     e2 = np.stack((-sp, cp, zero))
-    e1 = _cross(e2, e3)
+    e1 = cross(e2, e3)
     return np.concatenate((c, e1, w)), omega3
 
 
 # --------------------------------------------------------------------------
 # vertical orbits
 
-def vertical_orbit_state(theta, phidot0, a, r, k=0.5, g=9.80665):
+def vertical_orbit_state(theta, phidot_top, a, r):
     """State of a wheel at the top of a vertical orbit (sec. 2.2.1).
 
     McDonald (1993) eqs. (26)-(27), alpha = 0, beta = pi/2: the orbit lies in
     the vertical plane y = r cos(theta); at the top (phi = 0) the contact
     point is p = (0, r cos(theta), r sin(theta)), e1 = y_hat (the wheel in the
     orbit plane), e3 = z_hat, c = p - a z_hat (distance r' = r sin(theta) - a
-    from the orbit's centre) and w = (r'/a) phidot0 e1 (rolling, eq. 13 with
-    alpha = 0); the centre moves towards -x.  k and g do not enter the state
-    (kept for a uniform signature).  Complex theta/phidot0 accepted.
-    Returns shape (9, ...).
+    from the orbit's centre, eq. 8b with alpha = 0) and
+    w = (r'/a) phidot_top e1 (rolling, eq. 13 with alpha = 0); the centre
+    moves towards -x.  Complex theta / phidot_top accepted (complex step).
+    Returns shape (9, ...).  The lap time is
+    :func:`deathsphere.physics.vertical_orbit.lap_time`.
     """
-    theta, phidot0, a, r = np.broadcast_arrays(*(np.asarray(x) for x in (theta, phidot0, a, r)))
-    rp = r * np.sin(theta) - a
+    theta, phidot_top, a, r = np.broadcast_arrays(*(np.asarray(x) for x in (theta, phidot_top, a, r)))
+    rp = r_prime(theta, 0.0, a, r)
     zero = np.zeros_like(rp)
     c = np.stack((zero, r * np.cos(theta), rp))
     e1 = np.stack((zero, zero + 1.0, zero))
-    w = np.stack((zero, rp * phidot0 / a, zero))
+    w = np.stack((zero, rp * phidot_top / a, zero))
     return np.concatenate((c, e1, w))
-
-
-def vertical_orbit_period(theta, phidot0, a, r, k, g, n=256):
-    """Period [s] of the vertical orbit with rate phidot0 [rad/s] at the top.
-
-    From energy conservation, eq. (27):
-    phidot^2 = phidot0^2 + 2 g (1 - cos(phi)) / ((2k+1) r'),
-    T = integral_0^2pi dphi / phidot (trapezoid rule on the periodic
-    integrand: spectrally accurate).  NaN where r' <= 0 or phidot0 == 0.
-    """
-    theta, phidot0, a, r, k, g = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float) for x in (theta, phidot0, a, r, k, g)))
-    rp = r * np.sin(theta) - a
-    ok = (rp > 0) & (phidot0 != 0)
-    rp_s = np.where(ok, rp, 1.0)
-    pd0 = np.where(ok, phidot0, 1.0)
-    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False).reshape((n,) + (1,) * rp.ndim)
-    rate = np.sqrt(pd0 ** 2 + 2 * g * (1 - np.cos(phi)) / ((2 * k + 1) * rp_s))
-    T = 2 * np.pi * np.mean(1.0 / rate, axis=0)
-    return np.where(ok, T, np.nan)

@@ -47,7 +47,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import Status
+from deathsphere.physics.trig_roots import MERGE_TOL, TWO_PI, TrigPoly2, sorted_union
+from deathsphere.physics.trig_roots import roots_in as _roots_in
 from deathsphere.physics.wheel import horizontal_orbit
 
 __all__ = [
@@ -66,21 +69,6 @@ __all__ = [
     "solve_alpha",
 ]
 
-TWO_PI = 2.0 * np.pi
-
-#: Refined roots are bisected to this bracket width [rad].
-ROOT_XTOL = 1e-14
-
-#: A root z of the companion polynomial counts as real (|z| = 1) within this.
-_UNIT_CIRCLE_TOL = 1e-6
-
-#: Coefficients below this fraction of the largest are treated as zero when
-#: deciding the degree of a trigonometric polynomial for one theta.
-_DEGREE_TOL = 1e-13
-
-#: Breakpoints closer than this [rad] are merged (zero-width cells).
-_MERGE_TOL = 1e-13
-
 #: Names and labels of the boundaries, in drawing order.
 BOUNDARY_LABELS = {
     "eq0": "eq. (0): wheel fits",
@@ -91,107 +79,12 @@ BOUNDARY_LABELS = {
 }
 
 
-# ---------------------------------------------------------------------------
-# bivariate trigonometric polynomials
-# ---------------------------------------------------------------------------
-
-class _Trig2:
-    """f(theta, alpha) = sum h[p, q] exp(i (p - P) theta) exp(i (q - Q) alpha),
-    a real trigonometric polynomial of degree P in theta and Q in alpha.
-    Products are 2-D convolutions of the coefficient arrays."""
-
-    __slots__ = ("h",)
-
-    def __init__(self, h):
-        self.h = np.atleast_2d(np.asarray(h, dtype=complex))
-
-    @property
-    def deg(self):
-        return (self.h.shape[0] - 1) // 2, (self.h.shape[1] - 1) // 2
-
-    def _padded(self, p, q):
-        dp, dq = p - self.deg[0], q - self.deg[1]
-        return np.pad(self.h, ((dp, dp), (dq, dq)))
-
-    @staticmethod
-    def _lift(x):
-        return x if isinstance(x, _Trig2) else _Trig2([[complex(x)]])
-
-    def __add__(self, other):
-        other = self._lift(other)
-        p, q = max(self.deg[0], other.deg[0]), max(self.deg[1], other.deg[1])
-        return _Trig2(self._padded(p, q) + other._padded(p, q))
-
-    __radd__ = __add__
-
-    def __neg__(self):
-        return _Trig2(-self.h)
-
-    def __sub__(self, other):
-        return self + (-self._lift(other))
-
-    def __rsub__(self, other):
-        return self._lift(other) - self
-
-    def __mul__(self, other):
-        if not isinstance(other, _Trig2):
-            return _Trig2(self.h * complex(other))
-        a, b = self.h, other.h
-        out = np.zeros((a.shape[0] + b.shape[0] - 1, a.shape[1] + b.shape[1] - 1), dtype=complex)
-        for i in range(b.shape[0]):
-            for j in range(b.shape[1]):
-                if b[i, j] != 0:
-                    out[i:i + a.shape[0], j:j + a.shape[1]] += a * b[i, j]
-        return _Trig2(out)
-
-    __rmul__ = __mul__
-
-    def d_alpha(self):
-        """Partial derivative with respect to alpha."""
-        q = np.arange(-self.deg[1], self.deg[1] + 1)
-        return _Trig2(self.h * (1j * q)[None, :])
-
-    def d_theta(self):
-        """Partial derivative with respect to theta."""
-        p = np.arange(-self.deg[0], self.deg[0] + 1)
-        return _Trig2(self.h * (1j * p)[:, None])
-
-    def in_alpha(self, theta):
-        """Coefficients (n, 2Q+1) of the polynomial in alpha at each theta."""
-        theta = np.asarray(theta, dtype=float).reshape(-1)
-        return _unit_powers(theta, self.deg[0]) @ self.h
-
-    def in_theta(self, alpha):
-        """Coefficients (n, 2P+1) of the polynomial in theta at each alpha."""
-        alpha = np.asarray(alpha, dtype=float).reshape(-1)
-        return _unit_powers(alpha, self.deg[1]) @ self.h.T
-
-    def __call__(self, theta, alpha):
-        """Values at (theta, alpha), broadcast."""
-        th, al = np.broadcast_arrays(np.asarray(theta, dtype=float), np.asarray(alpha, dtype=float))
-        rows = self.in_alpha(th.reshape(-1))
-        val = np.sum(rows * _unit_powers(al.reshape(-1), self.deg[1]), axis=1).real
-        return val.reshape(th.shape)
-
-
-def _unit_powers(x, n):
-    """exp(i j x) for j = -n .. n, shape (x.size, 2n + 1), by repeated
-    multiplication (cheaper than exp of the outer product)."""
-    z = np.exp(1j * x)
-    out = np.empty((x.size, 2 * n + 1), dtype=complex)
-    out[:, n] = 1.0
-    for j in range(1, n + 1):
-        out[:, n + j] = out[:, n + j - 1] * z
-        out[:, n - j] = np.conj(out[:, n + j])
-    return out
-
-
 def _basis(a, r, k):
     """The building blocks C, S, s, c, r', D, S D of the module docstring."""
-    C = _Trig2([[0.5, 0.0, 0.5]])
-    S = _Trig2([[0.5j, 0.0, -0.5j]])
-    s = _Trig2([[0.5j], [0.0], [-0.5j]])
-    c = _Trig2([[0.5], [0.0], [0.5]])
+    C = TrigPoly2([[0.5, 0.0, 0.5]])
+    S = TrigPoly2([[0.5j, 0.0, -0.5j]])
+    s = TrigPoly2([[0.5j], [0.0], [-0.5j]])
+    c = TrigPoly2([[0.5], [0.0], [0.5]])
     rp = r * s - a * C
     D = (2 * k + 1) * rp + k * a * C
     return C, S, s, c, rp, D, S * D
@@ -210,127 +103,6 @@ def _functions(a, r, k, g, mu=np.inf, max_g=np.inf, outside=False):
         RC = rp * C
         out["max_g"] = [RC - max_g * SD, RC + max_g * SD]
     return out
-
-
-# ---------------------------------------------------------------------------
-# univariate evaluation and root finding, batched over rows
-# ---------------------------------------------------------------------------
-
-def _eval_rows(h, x):
-    """Real trigonometric polynomial with coefficient rows h (n, 2N+1) at
-    x (n, m): sum_j h_j exp(i (j - N) x), taken real."""
-    n2 = h.shape[1]
-    N = (n2 - 1) // 2
-    out = np.broadcast_to(h[:, N:N + 1].real, x.shape).copy()
-    for j in range(1, N + 1):
-        hj = h[:, N + j:N + j + 1]                     # exp(+i j x) coefficient
-        out += 2.0 * (hj.real * np.cos(j * x) - hj.imag * np.sin(j * x))
-    return out
-
-
-def _candidate_roots(h):
-    """Angles of the unimodular roots of z^N f(z), rows of h (n, 2N+1).
-    Returns (n, 2N) with NaN where a root is not on the unit circle."""
-    n, n2 = h.shape
-    N = (n2 - 1) // 2
-    out = np.full((n, 2 * N), np.nan)
-    if N == 0 or n == 0:
-        return out
-    scale = np.max(np.abs(h), axis=1)
-    safe = np.where(scale > 0, scale, 1.0)
-    hn = h / safe[:, None]
-    # effective degree: the outermost harmonic that is not negligible
-    big = np.abs(hn) > _DEGREE_TOL
-    idx = np.arange(n2)
-    eff = np.max(np.where(big, np.abs(idx - N), -1), axis=1)   # -1: f == 0
-    for m in range(1, N + 1):
-        rows = np.nonzero(eff == m)[0]
-        if rows.size == 0:
-            continue
-        coef = hn[rows, N - m:N + m + 1]               # ascending powers z^0 .. z^2m
-        lead = coef[:, -1]
-        monic = coef[:, :-1] / lead[:, None]
-        comp = np.zeros((rows.size, 2 * m, 2 * m), dtype=complex)
-        if m * 2 > 1:
-            comp[:, np.arange(1, 2 * m), np.arange(0, 2 * m - 1)] = 1.0
-        comp[:, :, -1] = -monic
-        z = np.linalg.eigvals(comp)
-        on = np.abs(np.abs(z) - 1.0) < _UNIT_CIRCLE_TOL
-        out[rows, :2 * m] = np.where(on, np.angle(z), np.nan)
-    return out
-
-
-def _refine(h, left, right, fl, fr):
-    """Bisection on brackets (n, m) with f(left) f(right) < 0."""
-    for _ in range(80):
-        width = right - left
-        if not np.any(width > ROOT_XTOL * np.maximum(1.0, np.abs(left))):
-            break
-        mid = 0.5 * (left + right)
-        fm = _eval_rows(h, mid)
-        same = np.sign(fm) == np.sign(fl)
-        exact = fm == 0
-        left = np.where(same | exact, mid, left)
-        fl = np.where(same, fm, fl)
-        right = np.where(same & ~exact, right, mid)
-    return 0.5 * (left + right)
-
-
-def _roots_in(h, lo, hi):
-    """All zeros of odd multiplicity of the real trigonometric polynomials
-    with coefficient rows h (n, 2N+1) in the windows [lo, hi] (arrays (n,),
-    hi - lo <= 2 pi).  Returns (n, m) sorted, NaN-padded."""
-    h = np.asarray(h, dtype=complex)
-    n = h.shape[0]
-    lo = np.broadcast_to(np.asarray(lo, dtype=float), (n,))
-    hi = np.broadcast_to(np.asarray(hi, dtype=float), (n,))
-    ang = _candidate_roots(h)
-    if ang.shape[1] == 0:
-        return np.full((n, 0), np.nan)
-    pad = 1e-7
-    d = np.mod(ang - lo[:, None] + pad, TWO_PI) - pad
-    cand = lo[:, None] + d
-    cand = np.where(np.isfinite(cand) & (cand <= hi[:, None] + pad), cand, np.nan)
-    cand = np.sort(cand, axis=1)
-    m = cand.shape[1]
-    # brackets: from the midpoint to the previous candidate to the midpoint
-    # to the next one (window ends at the extremes)
-    mids = 0.5 * (cand[:, :-1] + cand[:, 1:])
-    left = np.concatenate([lo[:, None], mids], axis=1)
-    right = np.concatenate([mids, np.full((n, 1), np.nan)], axis=1)
-    right = np.where(np.isnan(right), hi[:, None], right)
-    left = np.clip(left, lo[:, None], hi[:, None])
-    right = np.clip(right, lo[:, None], hi[:, None])
-    valid = np.isfinite(cand)
-    left = np.where(valid, left, lo[:, None])
-    right = np.where(valid, right, lo[:, None])
-    fl = _eval_rows(h, left)
-    fr = _eval_rows(h, right)
-    zero_l = valid & (fl == 0)
-    zero_r = valid & (fr == 0) & ~zero_l
-    bracket = valid & (fl * fr < 0)
-    root = _refine(h, np.where(bracket, left, 0.0), np.where(bracket, right, 0.0),
-                   np.where(bracket, fl, 1.0), np.where(bracket, fr, -1.0))
-    root = np.where(bracket, root, np.nan)
-    root = np.where(zero_l, left, root)
-    root = np.where(zero_r, right, root)
-    root = np.sort(root, axis=1)
-    # a root at a bracket end may have been found twice
-    dup = np.zeros_like(root, dtype=bool)
-    dup[:, 1:] = np.abs(np.diff(root, axis=1)) <= _MERGE_TOL
-    root = np.sort(np.where(dup, np.nan, root), axis=1)
-    keep = max(1, int(np.max(np.sum(np.isfinite(root), axis=1), initial=0)))
-    return root[:, :min(keep, m)]
-
-
-def _cat_sorted(arrays, n):
-    """Concatenate NaN-padded (n, m_i) arrays and sort each row (NaN last)."""
-    arrays = [np.asarray(x, dtype=float).reshape(n, -1) for x in arrays]
-    if not arrays:
-        return np.full((n, 0), np.nan)
-    out = np.sort(np.concatenate(arrays, axis=1), axis=1)
-    width = int(np.max(np.sum(np.isfinite(out), axis=1), initial=0))
-    return out[:, :width]
 
 
 # ---------------------------------------------------------------------------
@@ -430,12 +202,12 @@ def boundary_alphas(theta, a, r, k, outside=False, mu=np.inf, max_g=np.inf, wind
     n = t1.size
     out = {}
     for name, funcs in _functions(a, r, k, 1.0, mu, max_g, outside).items():
-        roots = _cat_sorted([_roots_in(f.in_alpha(t1), lo, hi) for f in funcs], n)
+        roots = sorted_union([_roots_in(f.in_alpha(t1), lo, hi) for f in funcs], n)
         if name in ("mu", "max_g") and roots.size:
             orb = horizontal_orbit(t1[:, None], np.where(np.isfinite(roots), roots, 0.0),
                                    a, r, k, 1.0, outside)
             physical = np.isfinite(orb["normal"]) & (orb["normal"] > 0)
-            roots = _cat_sorted([np.where(physical, roots, np.nan)], n)
+            roots = sorted_union([np.where(physical, roots, np.nan)], n)
         out[name] = roots.reshape(t.shape + (roots.shape[1],))
     return out
 
@@ -454,12 +226,12 @@ def boundary_thetas(alpha, a, r, k, outside=False, mu=np.inf, max_g=np.inf, wind
     hi = np.broadcast_to(np.asarray(window[1], dtype=float), al.shape).reshape(-1)
     out = {}
     for name, funcs in _functions(a, r, k, 1.0, mu, max_g, outside).items():
-        roots = _cat_sorted([_roots_in(f.in_theta(a1), lo, hi) for f in funcs], n)
+        roots = sorted_union([_roots_in(f.in_theta(a1), lo, hi) for f in funcs], n)
         if name in ("mu", "max_g") and roots.size:
             orb = horizontal_orbit(np.where(np.isfinite(roots), roots, 1.0), a1[:, None],
                                    a, r, k, 1.0, outside)
             physical = np.isfinite(orb["normal"]) & (orb["normal"] > 0)
-            roots = _cat_sorted([np.where(physical, roots, np.nan)], n)
+            roots = sorted_union([np.where(physical, roots, np.nan)], n)
         out[name] = roots.reshape(al.shape + (roots.shape[1],))
     return out
 
@@ -570,7 +342,7 @@ def feasible(theta, alpha, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=n
 def _speed_sq(t, alpha, a, r, k, g):
     """v_cm^2 = g r'^2 cos(alpha) / (sin(alpha) D) (eq. 29), inf at a pole,
     clipped at 0."""
-    rp = r * np.sin(t) - a * np.cos(alpha)
+    rp = r_prime(t, alpha, a, r)
     den = np.sin(alpha) * ((2 * k + 1) * rp + k * a * np.cos(alpha))
     num = g * rp * rp * np.cos(alpha)
     pole = np.abs(den) <= 1e-12 * ((2 * k + 1) * r + (k + 1) * a)
@@ -613,11 +385,11 @@ def allowed_alpha(theta, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.
     funcs = _functions(a, r, k, g, mu, max_g, outside)
     cuts = [_roots_in(f.in_alpha(t1), lo, hi)
             for name, fs in funcs.items() if name != "eq0" for f in fs]
-    b = _cat_sorted([lo[:, None], hi[:, None]] + cuts, n)
+    b = sorted_union([lo[:, None], hi[:, None]] + cuts, n)
     # merge coincident cuts, so that no zero-width piece splits an interval
     dup = np.zeros(b.shape, dtype=bool)
-    dup[:, 1:] = np.diff(b, axis=1) <= _MERGE_TOL
-    b = _cat_sorted([np.where(dup, np.nan, b)], n)
+    dup[:, 1:] = np.diff(b, axis=1) <= MERGE_TOL
+    b = sorted_union([np.where(dup, np.nan, b)], n)
     cell_lo, cell_hi = b[:, :-1], b[:, 1:]
     valid = np.isfinite(cell_lo) & np.isfinite(cell_hi)
     mid = np.where(valid, 0.5 * (cell_lo + cell_hi), 0.0)

@@ -9,7 +9,7 @@ import numpy as np
 
 from deathsphere.model import Setup, Table
 from deathsphere.physics import region
-from deathsphere.physics.stability_map import stability_boundary_alphas
+from deathsphere.physics.stability import stability_boundary_alphas
 
 #: Boundary name -> the equation it comes from (inside, outside).
 EQUATIONS = {

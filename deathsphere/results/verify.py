@@ -21,7 +21,8 @@ import numpy as np
 
 from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.model import Setup, Table, horizontal_orbit
-from deathsphere.physics import particle, sphere, vertical, wheel
+from deathsphere.physics import particle, sphere, wheel
+from deathsphere.physics import vertical_orbit as vertical
 from deathsphere.physics.geometry import fits_inside
 from deathsphere.physics.status import Status
 from deathsphere.results.table1 import PRINTED, table1

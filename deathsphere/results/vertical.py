@@ -8,7 +8,7 @@ summary row per request; :func:`vertical_points` the orbit point by point.
 The summary shares the orbit contract's columns where the meaning carries
 over (rates and speeds are taken at the top, accelerations at the bottom where
 they peak, forces and mu at the worst point, where mu peaks), then adds its
-own.  Physics: :mod:`deathsphere.physics.vertical`.
+own.  Physics: :mod:`deathsphere.physics.vertical_orbit`.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import numpy as np
 from deathsphere import params
 from deathsphere.model import COLUMNS as ORBIT_COLUMNS
 from deathsphere.model import NOT_ANALYSED_K0, REQUEST_FIELDS, finite_or_blank, Table, make_requests, validate_requests
-from deathsphere.physics import vertical
+from deathsphere.physics import vertical_orbit
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 
 #: Request fields of a vertical orbit (CSV header names for --input).
@@ -86,7 +86,7 @@ def _validate(req) -> np.ndarray:
 def _top_rate(req, rows):
     theta = np.deg2rad(req["theta"][rows])
     outside = req["side"][rows] == "outside"
-    from_speed = vertical.top_rate_from_speed(req["v_top"][rows], theta, req["a"][rows], req["r"][rows], outside)
+    from_speed = vertical_orbit.top_rate_from_speed(req["v_top"][rows], theta, req["a"][rows], req["r"][rows], outside)
     with np.errstate(invalid="ignore"):
         return theta, outside, np.where(np.isnan(req["v_top"][rows]), np.abs(req["phidot_top"][rows]), from_speed)
 
@@ -107,7 +107,7 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     reason = reason_words.astype(object)
     if rows.size:
         theta, outside, rate = _top_rate(req, rows)
-        res = vertical.vertical_orbit(theta, rate, req["a"][rows], req["r"][rows], req["k"][rows],
+        res = vertical_orbit.vertical_orbit(theta, rate, req["a"][rows], req["r"][rows], req["k"][rows],
                                       req["g"][rows], outside, req["mu"][rows])
         for key, col in _SUMMARY_KEYS.items():
             out[col][rows] = res[key]
@@ -155,7 +155,7 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
     with the slice that starts at 0."""
     reason_words = _validate(req)
     rows = np.flatnonzero(reason_words == "")
-    phi = vertical.phi_grid(points)[start:stop]
+    phi = vertical_orbit.phi_grid(points)[start:stop]
     bad = np.flatnonzero(reason_words != "") if start == 0 else np.empty(0, dtype=np.int64)
     source = np.concatenate([np.repeat(rows, phi.size), bad])
     m = rows.size * phi.size
@@ -166,7 +166,7 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
     phi_col = np.full(source.size, np.nan)
     if rows.size:
         theta, outside, rate = _top_rate(req, rows)
-        res = vertical.vertical_profile(phi[None, :], theta[:, None], rate[:, None], req["a"][rows, None],
+        res = vertical_orbit.vertical_profile(phi[None, :], theta[:, None], rate[:, None], req["a"][rows, None],
                                         req["r"][rows, None], req["k"][rows, None], req["g"][rows, None],
                                         outside[:, None], req["mu"][rows, None])
         for key, col in (("omega", "omega_rad_s"), ("v_cm", "v_cm_m_s"), ("accel", "accel_m_s2"),

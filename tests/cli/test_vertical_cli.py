@@ -4,7 +4,7 @@ import io
 import numpy as np
 import pytest
 
-from deathsphere.physics import vertical
+from deathsphere.physics import vertical_orbit
 from deathsphere.results.vertical import COLUMNS, POINT_COLUMNS
 
 
@@ -80,6 +80,6 @@ def test_lap_time_matches_direct_quadrature():
     theta, v_top, a, r, k, g = np.deg2rad(70.0), 5.5, 0.3, 3.0, 0.5, 9.80665
     rp = r * np.sin(theta) - a
     w0 = v_top / rp
-    res = vertical.vertical_orbit(theta, w0, a, r, k, g)
+    res = vertical_orbit.vertical_orbit(theta, w0, a, r, k, g)
     lap, _ = quad(lambda phi: 1 / np.sqrt(w0**2 + 2 * g * (1 - np.cos(phi)) / ((2 * k + 1) * rp)), 0, 2 * np.pi)
     assert float(res["period"]) == pytest.approx(lap, rel=1e-10)

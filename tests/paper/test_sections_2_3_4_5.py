@@ -13,7 +13,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from deathsphere.physics import sphere as S
-from deathsphere.physics import vertical as V
+from deathsphere.physics import vertical_orbit as V
 from deathsphere.physics.particle import particle_orbit
 from deathsphere.physics.status import Status
 from deathsphere.physics.wheel import horizontal_orbit

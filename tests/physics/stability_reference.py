@@ -1,5 +1,5 @@
 """Reference implementation of the exact stability of horizontal wheel
-orbits (deathsphere.physics.stability.wheel_stability) as first written:
+orbits (deathsphere.physics.stability.horizontal.wheel_stability) as first written:
 complex-step Jacobian on four directions, complement of the neutral
 directions by a complete QR, eigenvalues by ``np.linalg.eigvals`` of the
 reduced 4x4 Jacobian.  The fast path must reproduce its verdicts and
@@ -11,12 +11,14 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside
-from deathsphere.physics.stability import (
-    CHUNK, STABLE_TOL, UNSTABLE_TOL, Verdict, _H, _empty, _result, _vec)
+from deathsphere.physics.stability.horizontal import CHUNK, empty_result, stability_result
+from deathsphere.physics.stability.reduction import COMPLEX_STEP
+from deathsphere.physics.stability.verdict import STABLE_TOL, UNSTABLE_TOL, Verdict
+from deathsphere.physics.vectors import dot, zcross
 from deathsphere.physics.wheel import omega_squared
 
 
-def _complex_step_ref(fun, x0, dx, h=_H):
+def _complex_step_ref(fun, x0, dx, h=COMPLEX_STEP):
     """Directional derivative of ``fun`` at x0 along dx by complex step."""
     return np.imag(fun(x0 + 1j * h * dx)) / h
 
@@ -69,19 +71,19 @@ def _wheel_linearisation_ref(theta, alpha, a, r, k, g, outside):
     p = dyn.BodyParams(a, r_s, k, g, out_s, np.zeros(n, dtype=bool))
     X0, Om = dyn.wheel_orbit_state(th_s, al_s, a, r_s, k, g, out_s)
     # neutral directions: phase, d/dtheta, d/dalpha (complex step)
-    dth = np.imag(dyn.wheel_orbit_state(th_s + 1j * _H, al_s, a, r_s, k, g, out_s)[0]) / _H
-    dal = np.imag(dyn.wheel_orbit_state(th_s, al_s + 1j * _H, a, r_s, k, g, out_s)[0]) / _H
+    dth = np.imag(dyn.wheel_orbit_state(th_s + 1j * COMPLEX_STEP, al_s, a, r_s, k, g, out_s)[0]) / COMPLEX_STEP
+    dal = np.imag(dyn.wheel_orbit_state(th_s, al_s + 1j * COMPLEX_STEP, a, r_s, k, g, out_s)[0]) / COMPLEX_STEP
     c, e1, w = X0[dyn.C], X0[dyn.E1], X0[dyn.W]
-    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(w)))
+    gen = np.concatenate((zcross(c), zcross(e1), zcross(w)))
     # scaling: lengths by a, rates by S
-    S = np.sqrt(dyn._dot(w, w) + Om ** 2 + g / a)
+    S = np.sqrt(dot(w, w) + Om ** 2 + g / a)
     D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)),
                         np.broadcast_to(S, (3, n))))
     V = np.stack((gen, dth, dal), axis=-1) / D[..., None]          # (9, n, 3)
     # constraint gradients (scaled: grad_x~ = D grad_x)
-    e3 = dyn._geometry(X0, p)[8]
+    e3 = dyn.contact_geometry(X0, p).e3
     pvec = c + a * e3
-    c1 = dyn._dot(c, e1)
+    c1 = dot(c, e1)
     n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
     n2 = np.concatenate((pvec, -a * c1 * e3, np.zeros((3, n))))
     Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
@@ -106,11 +108,11 @@ def wheel_stability_ref(theta, alpha, a, r, k, g, outside=False):
     """The exact stability of wheel orbits as first written (eigvals of the
     reduced 4x4 Jacobian, complete QR for the complement), kept as the
     reference for the fast path."""
-    theta, alpha, a, r, k, g = np.broadcast_arrays(*(_vec(x) for x in (theta, alpha, a, r, k, g)))
+    theta, alpha, a, r, k, g = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (theta, alpha, a, r, k, g)))
     outside = np.broadcast_to(np.asarray(outside, dtype=bool), theta.shape)
     dyn.body_params(a, r, k, g, outside)          # validation only
     if theta.size == 0:
-        return _empty(theta.shape, 4)
+        return empty_result(theta.shape, 4)
     shape = theta.shape
     flat = [x.reshape(-1) for x in (theta, alpha, a, r, k, g, outside)]
     parts = []
@@ -118,4 +120,4 @@ def wheel_stability_ref(theta, alpha, a, r, k, g, outside=False):
         K, scale, Om, _, _, _ = _wheel_linearisation_ref(*(x[i:i + CHUNK] for x in flat))
         parts.append((*_reduce_ref(K, scale), scale, Om))
     ev, growth, slow, fast, verdict, scale, Om = (np.concatenate(z) for z in zip(*parts))
-    return _result(shape, ev, growth, slow, fast, verdict, scale, Om)
+    return stability_result(shape, ev, growth, slow, fast, verdict, scale, Om)

@@ -12,6 +12,10 @@ import pytest
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import stability as st
+from deathsphere.physics.stability import floquet
+from deathsphere.physics.stability.reduction import COMPLEX_STEP, orthonormal_complement
+from deathsphere.physics.vectors import dot, zcross
+from deathsphere.physics.vertical_orbit import lap_time
 
 G = 9.80665
 
@@ -19,7 +23,7 @@ G = 9.80665
 def floquet_reference(theta, phidot0, a, r, k, g, step=0.05):
     """The Floquet analysis as first written (RK4 on complex-step copies of all
     nine state directions, step 0.05), kept as the reference."""
-    theta, phidot0, a, r, k, g = np.broadcast_arrays(*(st._vec(x) for x in (theta, phidot0, a, r, k, g)))
+    theta, phidot0, a, r, k, g = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (theta, phidot0, a, r, k, g)))
     dyn.body_params(a, r, k, g)                   # validation only
     shape = theta.shape
     th, pd, a, r, k, g = (x.reshape(-1) for x in (theta, phidot0, a, r, k, g))
@@ -30,15 +34,15 @@ def floquet_reference(theta, phidot0, a, r, k, g, step=0.05):
     r = np.where(ok, r, 10 * a)
     pd = np.where(ok, pd, np.sqrt(g / a))
     rp = r * np.sin(th) - a
-    T = dyn.vertical_orbit_period(th, pd, a, r, k, g)
-    X0 = dyn.vertical_orbit_state(th, pd, a, r, k, g)
+    T = lap_time(th, pd, a, r, k, g)
+    X0 = dyn.vertical_orbit_state(th, pd, a, r)
     p = dyn.BodyParams(a, r, k, g, np.zeros(n, dtype=bool), np.zeros(n, dtype=bool))
     pdmax = np.sqrt(pd ** 2 + 4 * g / ((2 * k + 1) * rp))
     S = np.sqrt((rp * pdmax / a) ** 2 + pdmax ** 2 + g / a)     # fastest rate
     N = int(np.ceil(np.max(T * S * 2.0) / step)) if n else 0
     D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)), np.broadcast_to(S, (3, n))))
     pc = dyn.BodyParams(*(x[:, None] for x in p))
-    x = X0[:, :, None] + 1j * st._H * (np.eye(9)[:, None, :] * D[:, :, None])   # (9, n, 9)
+    x = X0[:, :, None] + 1j * COMPLEX_STEP * (np.eye(9)[:, None, :] * D[:, :, None])   # (9, n, 9)
     dt = (T / max(N, 1))[:, None]
     for _ in range(N):
         k1 = dt * dyn.rhs(x, pc)
@@ -46,23 +50,23 @@ def floquet_reference(theta, phidot0, a, r, k, g, step=0.05):
         k3 = dt * dyn.rhs(x + 0.5 * k2, pc)
         k4 = dt * dyn.rhs(x + k3, pc)
         x = x + (k1 + 2 * k2 + 2 * k3 + k4) / 6
-    M = np.moveaxis(np.imag(x) / st._H / D[:, :, None], 1, 0)                 # (n, 9, 9) scaled
+    M = np.moveaxis(np.imag(x) / COMPLEX_STEP / D[:, :, None], 1, 0)                 # (n, 9, 9) scaled
     ret = np.sqrt(np.sum((np.real(x[0:3, :, 0]) - X0[0:3]) ** 2, axis=0))
     # neutral directions (scaled)
     c, e1, w = X0[dyn.C], X0[dyn.E1], X0[dyn.W]
     fx = dyn.rhs(X0, p)
-    gen = np.concatenate((dyn._zcross(c), dyn._zcross(e1), dyn._zcross(w)))
-    dth = np.imag(dyn.vertical_orbit_state(th + 1j * st._H, pd, a, r)) / st._H
-    dpd = np.imag(dyn.vertical_orbit_state(th, pd + 1j * st._H, a, r)) / st._H
+    gen = np.concatenate((zcross(c), zcross(e1), zcross(w)))
+    dth = np.imag(dyn.vertical_orbit_state(th + 1j * COMPLEX_STEP, pd, a, r)) / COMPLEX_STEP
+    dpd = np.imag(dyn.vertical_orbit_state(th, pd + 1j * COMPLEX_STEP, a, r)) / COMPLEX_STEP
     V = np.stack((fx, gen, dth, dpd), axis=-1) / D[..., None]
-    e3 = dyn._geometry(X0, p)[8]
+    e3 = dyn.contact_geometry(X0, p).e3
     pv = c + a * e3
     n1 = np.concatenate((np.zeros((3, n)), e1, np.zeros((3, n))))
-    n2 = np.concatenate((pv, -a * dyn._dot(c, e1) * e3, np.zeros((3, n))))
+    n2 = np.concatenate((pv, -a * dot(c, e1) * e3, np.zeros((3, n))))
     Nrm = np.stack((n1, n2), axis=-1) * D[..., None]
     A = np.moveaxis(np.concatenate((Nrm, V), axis=-1), 0, 1)
     A = A / np.linalg.norm(A, axis=1, keepdims=True)
-    Wb = st._orthonormal_complement(A, 9)                                         # (n, 9, 3)
+    Wb = orthonormal_complement(A, 9)                                         # (n, 9, 3)
     K = np.einsum("nji,njk,nkl->nil", Wb, M, Wb)
     finite = np.all(np.isfinite(K), axis=(-2, -1)) & ok
     mu = np.linalg.eigvals(np.where(finite[:, None, None], K, np.eye(3)))
@@ -116,15 +120,15 @@ def test_reversing_symmetry_of_the_flow():
     rng = np.random.default_rng(3)
     X = rng.normal(size=(9, 40))
     p = dyn.body_params(np.full(40, 0.3), 3.0, 0.5, G)
-    Gm = st._REVERSAL[:, None]
+    Gm = floquet.REVERSAL[:, None]
     np.testing.assert_array_equal(Gm * dyn.rhs(X, p), -dyn.rhs(Gm * X, p))
     th, pd, a, r, k = np.radians(60.0), 3.0, 0.3, 3.0, 0.5
     from scipy.integrate import solve_ivp
-    T = float(dyn.vertical_orbit_period(th, pd, a, r, k, G))
-    X0 = dyn.vertical_orbit_state(th, pd, a, r, k, G)
+    T = float(lap_time(th, pd, a, r, k, G))
+    X0 = dyn.vertical_orbit_state(th, pd, a, r)
     end = solve_ivp(dyn.ode(dyn.body_params(a, r, k, G)), (0, T / 2), X0, method="DOP853",
                     rtol=1e-12, atol=1e-12).y[:, -1]
-    Xb = st._vertical_state(np.atleast_1d(th), pd, a, r, k, G, bottom=True)[:, 0]
+    Xb = floquet.vertical_state(np.atleast_1d(th), pd, a, r, k, G, bottom=True)[:, 0]
     np.testing.assert_allclose(end, Xb, atol=1e-8 * np.max(np.abs(Xb)))
 
 
@@ -155,7 +159,7 @@ def test_scalar_and_numpy_paths_agree():
     """Few orbits run on Python complex numbers, many through numpy: the same
     equations, the same multipliers (to round-off)."""
     th, pd, a, r, k = _orbits()
-    n = st._FLOQUET_SCALAR_MAX + 1
+    n = floquet.FLOQUET_SCALAR_MAX + 1
     rep = lambda x: np.resize(x, n)
     many = st.vertical_floquet(rep(th), rep(pd), rep(a), rep(r), rep(k), G)
     few = st.vertical_floquet(th[:4], pd[:4], a[:4], r[:4], k[:4], G)
@@ -171,14 +175,14 @@ def test_monodromy_matches_finite_differences_of_the_nonlinear_flow():
     th, a, r, k = np.radians(75.57897221815767), 0.6, 1.0, 0.25       # the period-doubling orbit
     pd = 1.2 * np.sqrt(G / (r * np.sin(th) - a))
     p = dyn.body_params(a, r, k, G)
-    T = float(dyn.vertical_orbit_period(th, pd, a, r, k, G))
-    X0 = dyn.vertical_orbit_state(th, pd, a, r, k, G)
+    T = float(lap_time(th, pd, a, r, k, G))
+    X0 = dyn.vertical_orbit_state(th, pd, a, r)
     rp = r * np.sin(th) - a
     pdmax = np.sqrt(pd ** 2 + 4 * G / ((2 * k + 1) * rp))
     S = np.sqrt((rp * pdmax / a) ** 2 + pdmax ** 2 + G / a)
     D = np.r_[[a] * 3, [1.0] * 3, [S] * 3]
     pn = dyn.BodyParams(*(np.atleast_1d(x) for x in p))
-    Wb = st._vertical_neutral_basis(X0[:, None], *(np.atleast_1d(x) for x in (th, pd, a, r, k, G)),
+    Wb = floquet.vertical_neutral_basis(X0[:, None], *(np.atleast_1d(x) for x in (th, pd, a, r, k, G)),
                                     pn, D[:, None])[0]
     eps = 1e-5
     cols = []

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from deathsphere.physics import stability as st
-from deathsphere.physics.stability_map import stability_boundary_alphas
+from deathsphere.physics.stability import stability_boundary_alphas
 
 from stability_reference import wheel_stability_ref
 

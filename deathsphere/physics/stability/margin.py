@@ -8,21 +8,25 @@ from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics import region
-from deathsphere.physics.stability import wheel_reduced_jacobian
+from deathsphere.physics.stability.horizontal import wheel_reduced_jacobian
+from deathsphere.physics.stability.reduction import characteristic_invariants
+
+__all__ = ["STABILITY_ALPHA_STEP_DEG", "stability_margin", "stability_boundary_alphas"]
 
 #: alpha step [deg] of the samples between which the stability boundary is
 #: bisected (:func:`stability_boundary_alphas`).
 STABILITY_ALPHA_STEP_DEG = 0.25
 
 
-def stability_margin(theta, alpha, a, r, k, g=9.80665, outside=False):
+def stability_margin(theta, alpha, a, r, k, g=STANDARD_GRAVITY, outside=False):
     """Signed stability margin of steady horizontal wheel orbits: > 0 where
     the orbit is linearly stable, < 0 where it is unstable, NaN where no
     orbit exists (beyond the paper; docs/stability.md sec. 1).
 
     The 4 nutation eigenvalues lambda of the exact reduced Jacobian K
-    (:func:`deathsphere.physics.stability.wheel_reduced_jacobian`) solve
+    (:func:`deathsphere.physics.stability.horizontal.wheel_reduced_jacobian`) solve
     lambda^4 + e2 lambda^2 + e4 = 0; the orbit is stable iff both roots
     mu = lambda^2 are real and negative: e2 > 0, e4 > 0 and
     e2^2 - 4 e4 >= 0.  With the similarity-invariant scale
@@ -32,7 +36,7 @@ def stability_margin(theta, alpha, a, r, k, g=9.80665, outside=False):
     boundary (where the growth rate rises only like the square root of the
     distance), so its zero set can be contoured and bisected.  Its sign
     agrees with the ``verdict`` of
-    :func:`deathsphere.physics.stability.wheel_stability` on all 448 999
+    :func:`deathsphere.physics.stability.horizontal.wheel_stability` on all 448 999
     status-ok orbits of 0.5 deg grids (a/r = 0.01, 0.1, 0.3, 0.6; k = 1/4,
     1/2; inside and outside; tests check a coarser grid).  Parameters broadcast; angles [rad].  Contact is not
     checked (as in ``wheel_stability``).
@@ -43,9 +47,7 @@ def stability_margin(theta, alpha, a, r, k, g=9.80665, outside=False):
     K = wheel_reduced_jacobian(theta, alpha, a, r, k, g, outside)["K"]
     finite = np.all(np.isfinite(K), axis=(-2, -1))
     K = np.where(finite[:, None, None], K, 0.0)
-    tr = np.trace(K, axis1=-2, axis2=-1)
-    e2 = 0.5 * (tr ** 2 - np.einsum("nij,nji->n", K, K))
-    e4 = np.linalg.det(K)
+    e2, e4 = characteristic_invariants(K)
     n2 = np.abs(e2) + 2.0 * np.sqrt(np.abs(e4))
     ok = finite & (n2 > 0)
     n2 = np.where(ok, n2, 1.0)
@@ -53,7 +55,7 @@ def stability_margin(theta, alpha, a, r, k, g=9.80665, outside=False):
     return np.where(ok, margin, np.nan).reshape(theta.shape)
 
 
-def stability_boundary_alphas(theta, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf,
+def stability_boundary_alphas(theta, a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf,
                               alpha_step_deg=STABILITY_ALPHA_STEP_DEG, xtol=1e-10):
     """Tilts alpha [rad] where the stability of feasible orbits changes, at
     each theta [rad] (beyond the paper; docs/stability.md sec. 1 and

@@ -1,6 +1,6 @@
 """Vertical orbits of a wheel: McDonald (1993) eqs. (26)-(28b), (82).
 
-Every formula of deathsphere.physics.vertical is checked against something
+Every formula of deathsphere.physics.vertical_orbit is checked against something
 computed another way: Newton's and Euler's equations written with explicit
 3-d vectors, direct integration of the equation of motion, quadrature, root
 finding and bounded scalar maximisation.
@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from deathsphere.physics import vertical as V
+from deathsphere.physics import vertical_orbit as V
 from deathsphere.physics.status import Reason, Status
 
 G = 9.80665

@@ -10,7 +10,7 @@ a circle of radius
     r' = r sin(theta) - a   inside,    r' = r sin(theta) + a   outside
 
 (eq. 8b with alpha = 0 or pi).  phi is the azimuth of the centre from the top
-(phi = 0 at the top, phi = pi at the bottom), phidot0 the rate at the top.
+(phi = 0 at the top, phi = pi at the bottom), phidot_top the rate at the top.
 theta = 90 deg is a vertical great circle; theta and 180 deg - theta are
 mirror images.
 
@@ -30,7 +30,7 @@ slip angle) are in docs/derivations-configurations.md.
 
 import numpy as np
 
-from deathsphere.physics.geometry import SINGULAR
+from deathsphere.physics.geometry import SINGULAR, r_prime
 from deathsphere.physics.status import Reason, Status, first_failure
 
 __all__ = [
@@ -78,7 +78,7 @@ def vertical_r_prime(theta, a, r, outside=False):
     [m].  Inside, r' <= 0 means the wheel does not fit on the circle.
     """
     theta, a, r = _arrays(theta, a, r)
-    return np.where(outside, r * np.sin(theta) + a, r * np.sin(theta) - a)
+    return r_prime(theta, np.where(outside, np.pi, 0.0), a, r)
 
 
 def vertical_fits(theta, a, r, outside=False):
@@ -95,7 +95,7 @@ def vertical_fits(theta, a, r, outside=False):
 
 
 def top_rate_from_speed(v_top, theta, a, r, outside=False):
-    """Top rate phidot0 = v_top / r' [rad/s] from the top speed of the centre
+    """Top rate phidot_top = v_top / r' [rad/s] from the top speed of the centre
     v_top [m/s] (eq. 8: v_cm = r' phidot).  NaN where the wheel does not fit."""
     v_top, theta, a, r = _arrays(v_top, theta, a, r)
     rp = vertical_r_prime(theta, a, r, outside)
@@ -103,16 +103,16 @@ def top_rate_from_speed(v_top, theta, a, r, outside=False):
     return np.where(ok, v_top / np.where(ok, rp, 1.0), np.nan)
 
 
-def top_speed_from_rate(phidot0, theta, a, r, outside=False):
-    """Top speed of the centre v_top = r' phidot0 [m/s] (eq. 8).  NaN where
+def top_speed_from_rate(phidot_top, theta, a, r, outside=False):
+    """Top speed of the centre v_top = r' phidot_top [m/s] (eq. 8).  NaN where
     the wheel does not fit."""
-    phidot0, theta, a, r = _arrays(phidot0, theta, a, r)
+    phidot_top, theta, a, r = _arrays(phidot_top, theta, a, r)
     rp = vertical_r_prime(theta, a, r, outside)
-    return np.where(vertical_fits(theta, a, r, outside), rp * phidot0, np.nan)
+    return np.where(vertical_fits(theta, a, r, outside), rp * phidot_top, np.nan)
 
 
 def min_top_rate(theta, a, r, g, outside=False):
-    """Least top rate that keeps the wheel on the wall, eq. (28a): phidot0^2 > g/r'.
+    """Least top rate that keeps the wheel on the wall, eq. (28a): phidot_top^2 > g/r'.
 
     Returns sqrt(g / r') [rad/s] inside (the bound itself is excluded).  NaN
     outside the sphere, where no top rate keeps contact all the way round
@@ -133,22 +133,22 @@ def min_top_speed(theta, a, r, g, outside=False):
     return np.where(ok, np.sqrt(g * np.where(ok, rp, 1.0)), np.nan)
 
 
-def _coefficients(theta, phidot0, a, r, k, g, outside):
-    """r', V = r' phidot0^2, D = V + 2g/(2k+1), B = (2k+3) g/(2k+1), c = 2k/(2k+1).
+def _coefficients(theta, phidot_top, a, r, k, g, outside):
+    """r', V = r' phidot_top^2, D = V + 2g/(2k+1), B = (2k+3) g/(2k+1), c = 2k/(2k+1).
 
     With these, eqs. (27)-(28) read  r' phidot^2 - g cos(phi) = D - B cos(phi)
     (the inward push inside, minus the outward push outside)."""
     rp = vertical_r_prime(theta, a, r, outside)
     fits = vertical_fits(theta, a, r, outside)
     rp_safe = np.where(fits, rp, 1.0)
-    v = rp_safe * phidot0 ** 2
+    v = rp_safe * phidot_top ** 2
     d = v + 2 * g / (2 * k + 1)
     b = (2 * k + 3) * g / (2 * k + 1)
     c = 2 * k / (2 * k + 1)
     return rp, rp_safe, fits, v, d, b, c
 
 
-def rate_squared(phi, theta, phidot0, a, r, k, g, outside=False):
+def rate_squared(phi, theta, phidot_top, a, r, k, g, outside=False):
     """phidot^2 at azimuth phi from energy conservation, eq. (27).
 
     .. math:: \\dot\\phi^2 = \\dot\\phi_0^2 + \\frac{2 g (1 - \\cos\\phi)}{(2k+1) r'}
@@ -158,13 +158,13 @@ def rate_squared(phi, theta, phidot0, a, r, k, g, outside=False):
     not fit.  Note that this is the rolling solution: outside it is physical
     only up to the release angle.
     """
-    phi, theta, phidot0, a, r, k, g = _arrays(phi, theta, phidot0, a, r, k, g)
-    rp, rp_safe, fits, *_ = _coefficients(theta, phidot0, a, r, k, g, outside)
-    out = phidot0 ** 2 + 4 * g * np.sin(phi / 2) ** 2 / ((2 * k + 1) * rp_safe)
+    phi, theta, phidot_top, a, r, k, g = _arrays(phi, theta, phidot_top, a, r, k, g)
+    rp, rp_safe, fits, *_ = _coefficients(theta, phidot_top, a, r, k, g, outside)
+    out = phidot_top ** 2 + 4 * g * np.sin(phi / 2) ** 2 / ((2 * k + 1) * rp_safe)
     return np.where(fits, out, np.nan)
 
 
-def contact_force(phi, theta, phidot0, a, r, k, g, outside=False):
+def contact_force(phi, theta, phidot_top, a, r, k, g, outside=False):
     """Contact force per unit mass on a vertical orbit, eq. (28) corrected.
 
     .. math:: \\mathbf F/m = -\\frac{2k}{2k+1} g\\sin\\phi\\,\\hat{\\mathbf 2}
@@ -188,8 +188,8 @@ def contact_force(phi, theta, phidot0, a, r, k, g, outside=False):
                     cos^2(theta) (the paper's ``cos theta^2``)
     ``mu_required`` eq. (28b): friction / normal, NaN where normal <= 0
     """
-    phi, theta, phidot0, a, r, k, g = _arrays(phi, theta, phidot0, a, r, k, g)
-    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot0, a, r, k, g, outside)
+    phi, theta, phidot_top, a, r, k, g = _arrays(phi, theta, phidot_top, a, r, k, g)
+    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot_top, a, r, k, g, outside)
     along = -c * g * np.sin(phi)
     # g cos(phi) - r' phidot^2 = -(D - B cos(phi)), by eq. (27)
     radial = -(d - b * np.cos(phi))
@@ -209,27 +209,27 @@ def contact_force(phi, theta, phidot0, a, r, k, g, outside=False):
     }
 
 
-def release_angle(theta, phidot0, a, r, k, g):
+def release_angle(theta, phidot_top, a, r, k, g):
     """Where a wheel rolling down the OUTSIDE of the sphere from the top leaves it.
 
-    Generalises eq. (82) to a top rate phidot0 (beyond the paper; derivation
+    Generalises eq. (82) to a top rate phidot_top (beyond the paper; derivation
     in docs/derivations-configurations.md):
 
     .. math:: \\cos\\phi_{\\rm leave} = \\frac{2 + (2k+1)\\, r'\\dot\\phi_0^2/g}{3 + 2k},
               \\qquad r' = r\\sin\\theta + a,
 
-    which is eq. (82), cos(phi) = 2/(3+2k), for phidot0 = 0.  Returns
-    phi_leave [rad] in [0, pi/2); 0 when r' phidot0^2 >= g (the wheel leaves
+    which is eq. (82), cos(phi) = 2/(3+2k), for phidot_top = 0.  Returns
+    phi_leave [rad] in [0, pi/2); 0 when r' phidot_top^2 >= g (the wheel leaves
     at once).  Assumes enough friction to roll until then (see
     :func:`slip_angle`).  NaN where the wheel does not fit.
     """
-    theta, phidot0, a, r, k, g = _arrays(theta, phidot0, a, r, k, g)
-    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot0, a, r, k, g, True)
+    theta, phidot_top, a, r, k, g = _arrays(theta, phidot_top, a, r, k, g)
+    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot_top, a, r, k, g, True)
     cos_leave = np.minimum(d / b, 1.0)
     return np.where(fits, np.arccos(cos_leave), np.nan)
 
 
-def slip_angle(theta, phidot0, a, r, k, g, mu, outside=False):
+def slip_angle(theta, phidot_top, a, r, k, g, mu, outside=False):
     """First phi >= 0 (going round from the top) where rolling needs more
     friction than ``mu`` (beyond the paper; derivation in
     docs/derivations-configurations.md).
@@ -246,9 +246,9 @@ def slip_angle(theta, phidot0, a, r, k, g, mu, outside=False):
     never slips (inside) or does not slip before it leaves (outside), and
     where the wheel has no contact at the top or does not fit.
     """
-    theta, phidot0, a, r, k, g, mu = _arrays(theta, phidot0, a, r, k, g, mu)
+    theta, phidot_top, a, r, k, g, mu = _arrays(theta, phidot_top, a, r, k, g, mu)
     outside = np.asarray(outside, dtype=bool)
-    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot0, a, r, k, g, outside)
+    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot_top, a, r, k, g, outside)
     contact_top = np.where(outside, b > d, d > b) & fits
     finite = np.isfinite(mu)
     mu_s = np.where(finite, mu, 0.0)
@@ -273,26 +273,26 @@ def slip_angle(theta, phidot0, a, r, k, g, mu, outside=False):
     return np.where(finite & contact_top, phi, np.nan)
 
 
-def worst_point(theta, phidot0, a, r, k, g):
+def worst_point(theta, phidot_top, a, r, k, g):
     """Where the friction needed on an INSIDE vertical orbit peaks, and its value.
 
     Beyond the paper (derivation in docs/derivations-configurations.md): by
     eqs. (27), (28), (28b), mu(phi)^2 sin^2(theta) = cos^2(theta) +
     (c g sin(phi) / (D - B cos(phi)))^2 with c = 2k/(2k+1),
-    D = r' phidot0^2 + 2g/(2k+1), B = (2k+3) g/(2k+1), whose maximum is at
+    D = r' phidot_top^2 + 2g/(2k+1), B = (2k+3) g/(2k+1), whose maximum is at
 
     .. math:: \\cos\\phi^* = B/D, \\qquad
               \\mu_{\\max} = \\frac{\\sqrt{\\cos^2\\theta + c^2 g^2/(D^2 - B^2)}}{\\sin\\theta}
 
     (and at -phi*).  phi* lies in the upper half of the orbit and tends to the
-    top as phidot0 falls to the contact limit (28a), where mu_max diverges.
+    top as phidot_top falls to the contact limit (28a), where mu_max diverges.
     For k = 0 mu is constant (= |cot(theta)|) and phi* is just one of the
     maxima.  The least mu round the orbit is |cot(theta)| (eq. 28b), at top
     and bottom.  Returns ``(phi_worst, mu_max)`` [rad, -]; NaN where the wheel
-    does not fit or loses contact (r' phidot0^2 <= g).
+    does not fit or loses contact (r' phidot_top^2 <= g).
     """
-    theta, phidot0, a, r, k, g = _arrays(theta, phidot0, a, r, k, g)
-    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot0, a, r, k, g, False)
+    theta, phidot_top, a, r, k, g = _arrays(theta, phidot_top, a, r, k, g)
+    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot_top, a, r, k, g, False)
     ok = fits & (d > b)
     d_s = np.where(ok, d, 2.0 * b)
     phi_w = np.arccos(b / d_s)
@@ -301,26 +301,31 @@ def worst_point(theta, phidot0, a, r, k, g):
     return np.where(ok, phi_w, np.nan), np.where(ok, mu_max, np.nan)
 
 
-def lap_time(theta, phidot0, a, r, k, g):
-    """Time for one lap of an INSIDE vertical orbit, with a complete elliptic integral.
+def lap_time(theta, phidot_top, a, r, k, g):
+    """Time for one lap of a vertical orbit, with a complete elliptic integral.
 
     Beyond the paper (derivation in docs/derivations-configurations.md): from
-    eq. (27), phidot^2 = phidot0^2 + kappa sin^2(phi/2), kappa = 4g/((2k+1) r'),
+    eq. (27), phidot^2 = phidot_top^2 + kappa sin^2(phi/2), kappa = 4g/((2k+1) r'),
 
     .. math:: T = \\int_0^{2\\pi}\\frac{d\\phi}{\\dot\\phi}
                 = \\frac{4 K(m)}{\\dot\\phi_{\\rm bottom}}, \\qquad
-              \\dot\\phi_{\\rm bottom}^2 = \\dot\\phi_0^2 + \\kappa, \\quad
+              \\dot\\phi_{\\rm bottom}^2 = \\dot\\phi_{\\rm top}^2 + \\kappa, \\quad
               m = \\kappa / \\dot\\phi_{\\rm bottom}^2,
 
     K the complete elliptic integral of the first kind with parameter m
-    (by the arithmetic-geometric mean, :func:`_ellipk`).  Returns T [s]; NaN where the wheel does not fit
-    or loses contact (eq. 28a).
+    (by the arithmetic-geometric mean, :func:`_ellipk`).  The period of the
+    rolling solution of eq. (27) for the wheel inside, whether or not the
+    wall holds it there (eq. 28a): :func:`vertical_orbit` reports it only
+    where it does, the Floquet analysis
+    (:func:`deathsphere.physics.stability.floquet.vertical_floquet`) of
+    every rolling orbit.  Returns T [s]; NaN where the wheel does not fit or
+    phidot_top = 0.
     """
-    theta, phidot0, a, r, k, g = _arrays(theta, phidot0, a, r, k, g)
-    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot0, a, r, k, g, False)
-    ok = fits & (d > b)
+    theta, phidot_top, a, r, k, g = _arrays(theta, phidot_top, a, r, k, g)
+    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot_top, a, r, k, g, False)
+    ok = fits & (phidot_top != 0)
     kappa = 4 * g / ((2 * k + 1) * rp_safe)
-    bottom2 = np.where(ok, phidot0 ** 2 + kappa, 2.0 * kappa)
+    bottom2 = np.where(ok, phidot_top ** 2 + kappa, 2.0 * kappa)
     m = np.where(ok, kappa / bottom2, 0.5)
     return np.where(ok, 4 * _ellipk(m) / np.sqrt(bottom2), np.nan)
 
@@ -332,7 +337,7 @@ def phi_grid(n, endpoint=True):
     return np.linspace(0.0, 2 * np.pi, int(n), endpoint=endpoint)
 
 
-def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
+def vertical_orbit(theta, phidot_top, a, r, k, g, outside=False, mu=np.inf):
     """Everything about one vertical orbit of a wheel per request, vectorised.
 
     McDonald (1993) sec. 2.2.1 eqs. (26)-(28b) inside, sec. 3 eq. (82) outside.
@@ -341,7 +346,7 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
     ----------
     theta : array_like, [rad]   cone angle of the contact circle about the
                                 horizontal z' axis (90 deg: great circle)
-    phidot0 : array_like, [rad/s]  rate at the top; only its size matters
+    phidot_top : array_like, [rad/s]  rate at the top; only its size matters
                                 (the orbit's sense is a mirror image).  Use
                                 :func:`top_rate_from_speed` for a top speed.
     a, r : [m];  k : [-] (I11 = 2 k m a^2);  g : [m/s^2]
@@ -353,13 +358,13 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
     dict of arrays broadcast to one shape:
 
     ``r_prime``      radius of the centre's circle, r sin(theta) -+ a [m]
-    ``omega``        top rate |phidot0| [rad/s]
+    ``omega``        top rate |phidot_top| [rad/s]
     ``omega_bottom`` rate at the bottom (inside; eq. 27) [rad/s]
     ``omega_min``    least top rate for contact, sqrt(g/r') (eq. 28a; NaN outside)
     ``period``       lap time (elliptic integral) [s]
-    ``v_cm``         top speed r' |phidot0| [m/s];  ``v_bottom`` [m/s]
+    ``v_cm``         top speed r' |phidot_top| [m/s];  ``v_bottom`` [m/s]
     ``v_min``        least top speed for contact, sqrt(g r') [m/s]
-    ``spin``         wheel spin at the top, omega_1 = r' phidot0 / a (eq. 13) [rad/s]
+    ``spin``         wheel spin at the top, omega_1 = r' phidot_top / a (eq. 13) [rad/s]
     ``accel``        largest centre acceleration of the lap, r' phidot_bottom^2
                      (at the bottom) [m/s^2];  ``accel_g`` the same in g
     ``normal``, ``friction``, ``mu_required``
@@ -385,21 +390,21 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
     Lap quantities (period, accel, omega_bottom, v_bottom, worst point) are NaN
     unless the wheel keeps contact all the way round (status ok or slips).
     """
-    theta, phidot0, a, r, k, g, mu = _arrays(theta, phidot0, a, r, k, g, mu)
+    theta, phidot_top, a, r, k, g, mu = _arrays(theta, phidot_top, a, r, k, g, mu)
     outside = np.asarray(outside, dtype=bool)
-    theta, phidot0, a, r, k, g, mu, outside = np.broadcast_arrays(theta, phidot0, a, r, k, g, mu, outside)
-    phidot0 = np.abs(phidot0)
-    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot0, a, r, k, g, outside)
+    theta, phidot_top, a, r, k, g, mu, outside = np.broadcast_arrays(theta, phidot_top, a, r, k, g, mu, outside)
+    phidot_top = np.abs(phidot_top)
+    rp, rp_safe, fits, v, d, b, c = _coefficients(theta, phidot_top, a, r, k, g, outside)
     contact = fits & ~outside & (d > b)
 
-    top = contact_force(0.0, theta, phidot0, a, r, k, g, outside)
-    bottom = contact_force(np.pi, theta, phidot0, a, r, k, g, outside)
-    phi_w, mu_max = worst_point(theta, phidot0, a, r, k, g)
+    top = contact_force(0.0, theta, phidot_top, a, r, k, g, outside)
+    bottom = contact_force(np.pi, theta, phidot_top, a, r, k, g, outside)
+    phi_w, mu_max = worst_point(theta, phidot_top, a, r, k, g)
     phi_w = np.where(contact, phi_w, np.nan)
     mu_max = np.where(contact, mu_max, np.nan)
-    worst = contact_force(phi_w, theta, phidot0, a, r, k, g, outside)
-    period = np.where(contact, lap_time(theta, phidot0, a, r, k, g), np.nan)
-    bottom2 = np.where(contact, rate_squared(np.pi, theta, phidot0, a, r, k, g, outside), np.nan)
+    worst = contact_force(phi_w, theta, phidot_top, a, r, k, g, outside)
+    period = np.where(contact, lap_time(theta, phidot_top, a, r, k, g), np.nan)
+    bottom2 = np.where(contact, rate_squared(np.pi, theta, phidot_top, a, r, k, g, outside), np.nan)
     omega_bottom = np.sqrt(np.where(contact, bottom2, 0.0))
     omega_bottom = np.where(contact, omega_bottom, np.nan)
     accel = rp_safe * bottom2
@@ -412,17 +417,17 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
     ])
     sin_s = np.where(fits, np.sin(theta), 1.0)
     mu_top = np.where(fits, np.abs(_cos(theta)) / sin_s, np.nan)
-    leave = np.where(outside, release_angle(theta, phidot0, a, r, k, g), np.nan)
+    leave = np.where(outside, release_angle(theta, phidot_top, a, r, k, g), np.nan)
     return {
         "r_prime": rp,
-        "omega": phidot0,
+        "omega": phidot_top,
         "omega_bottom": omega_bottom,
         "omega_min": min_top_rate(theta, a, r, g, outside),
         "period": period,
-        "v_cm": np.where(fits, rp_safe * phidot0, np.nan),
+        "v_cm": np.where(fits, rp_safe * phidot_top, np.nan),
         "v_bottom": rp_safe * omega_bottom,
         "v_min": min_top_speed(theta, a, r, g, outside),
-        "spin": np.where(fits, rp_safe * phidot0 / a, np.nan),
+        "spin": np.where(fits, rp_safe * phidot_top / a, np.nan),
         "accel": accel,
         "accel_g": accel / g,
         "normal": worst["normal"],
@@ -433,14 +438,14 @@ def vertical_orbit(theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
         "normal_top": top["normal"],
         "normal_bottom": np.where(outside, np.nan, bottom["normal"]),
         "phi_leave": leave,
-        "phi_slip": slip_angle(theta, phidot0, a, r, k, g, mu, outside),
+        "phi_slip": slip_angle(theta, phidot_top, a, r, k, g, mu, outside),
         "contact": contact,
         "status": status,
         "reason": reason,
     }
 
 
-def vertical_profile(phi, theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
+def vertical_profile(phi, theta, phidot_top, a, r, k, g, outside=False, mu=np.inf):
     """Point-by-point view of a vertical orbit: every input broadcasts, so
     ``phi[:, None]`` against requests of shape (n,) gives an (N, n) table.
 
@@ -456,14 +461,14 @@ def vertical_profile(phi, theta, phidot0, a, r, k, g, outside=False, mu=np.inf):
     phi_leave on; the rolling values there are not physical), slips where
     mu_required > mu.
     """
-    phi, theta, phidot0, a, r, k, g, mu = _arrays(phi, theta, phidot0, a, r, k, g, mu)
+    phi, theta, phidot_top, a, r, k, g, mu = _arrays(phi, theta, phidot_top, a, r, k, g, mu)
     outside = np.asarray(outside, dtype=bool)
-    phi, theta, phidot0, a, r, k, g, mu, outside = np.broadcast_arrays(
-        phi, theta, phidot0, a, r, k, g, mu, outside)
-    rp, rp_safe, fits, *_ = _coefficients(theta, phidot0, a, r, k, g, outside)
-    w2 = rate_squared(phi, theta, phidot0, a, r, k, g, outside)
+    phi, theta, phidot_top, a, r, k, g, mu, outside = np.broadcast_arrays(
+        phi, theta, phidot_top, a, r, k, g, mu, outside)
+    rp, rp_safe, fits, *_ = _coefficients(theta, phidot_top, a, r, k, g, outside)
+    w2 = rate_squared(phi, theta, phidot_top, a, r, k, g, outside)
     w = np.sqrt(np.where(fits, w2, 0.0))
-    f = contact_force(phi, theta, phidot0, a, r, k, g, outside)
+    f = contact_force(phi, theta, phidot_top, a, r, k, g, outside)
     tangential = g * np.sin(phi) / (2 * k + 1)            # r' phiddot, eq. (26)
     accel = np.hypot(rp_safe * np.where(fits, w2, 0.0), tangential)
     status, reason = first_failure([

@@ -1,0 +1,34 @@
+"""3-vectors stored along axis 0 of an array, (3, ...): the small vector
+algebra of the equations of motion and their linearisation (beyond the
+paper; docs/dynamics.md sec. 2).
+
+Every product is bilinear (no complex conjugation), so complex-step
+derivatives pass through unchanged, and :func:`norm` is the square root of
+the bilinear square for the same reason.
+"""
+
+import numpy as np
+
+__all__ = ["dot", "cross", "zcross", "norm"]
+
+
+def dot(u, v):
+    """u . v over axis 0 (bilinear)."""
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+
+
+def cross(u, v):
+    """u x v over axis 0."""
+    return np.stack((u[1] * v[2] - u[2] * v[1],
+                     u[2] * v[0] - u[0] * v[2],
+                     u[0] * v[1] - u[1] * v[0]))
+
+
+def zcross(u):
+    """z x u: the generator of rotations about the vertical."""
+    return np.stack((-u[1], u[0], np.zeros_like(u[2])))
+
+
+def norm(u):
+    """sqrt(u . u): analytic, so complex-step derivatives work."""
+    return np.sqrt(dot(u, u))
