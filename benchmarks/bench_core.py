@@ -49,11 +49,12 @@ from pathlib import Path
 
 import numpy as np
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.status import Reason, Status, first_failure
 
-A, R, K, G = 0.3, 3.0, 0.5, 9.80665   # Table 1's wheel and sphere
+A, R, K, G = 0.3, 3.0, 0.5, STANDARD_GRAVITY   # Table 1's wheel and sphere
 KEYS = ("r_prime", "omega2", "omega", "period", "v_cm", "spin", "accel", "accel_g",
         "normal", "friction", "mu_required", "omega3")
 

@@ -64,12 +64,13 @@ def main():
 
     import numpy as np
 
+    from deathsphere.constants import STANDARD_GRAVITY
     from deathsphere.physics import stability as st
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "physics"))
     from test_floquet import _match, floquet_reference
 
-    orbit = (np.pi / 2, 6.0 / 2.7, 0.3, 3.0, 0.5, 9.80665)
+    orbit = (np.pi / 2, 6.0 / 2.7, 0.3, 3.0, 0.5, STANDARD_GRAVITY)
     runs = []
     for _ in range(args.repeat):
         t0 = time.perf_counter()

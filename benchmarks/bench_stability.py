@@ -24,13 +24,14 @@ for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import numpy as np  # noqa: E402
 
+from deathsphere.constants import STANDARD_GRAVITY  # noqa: E402
 from deathsphere.physics import stability as st  # noqa: E402
 from deathsphere.physics.wheel import horizontal_orbit  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "physics"))
 from stability_reference import wheel_stability_ref  # noqa: E402
 
-G = 9.80665
+G = STANDARD_GRAVITY
 
 
 def best_of(f, args, reps=3):

@@ -18,11 +18,12 @@ import time
 
 import numpy as np
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import stability as st
 from deathsphere.physics.wheel import horizontal_orbit
 
-G = 9.80665
+G = STANDARD_GRAVITY
 A_OVER_R = (0.01, 0.1, 0.3, 0.6)
 KS = (0.25, 0.5)
 S, U, N = st.Verdict.STABLE, st.Verdict.UNSTABLE, st.Verdict.UNKNOWN

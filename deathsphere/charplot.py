@@ -29,21 +29,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics import region
 from deathsphere.physics.stability import Verdict, wheel_stability
 
 #: Character and legend text of each boundary, in drawing order (later wins).
-MARKS = {
-    "eq29": ("=", "eq. (29) Omega^2 = 0 or pole"),
-    "eq0": ("#", "eq. (0) fit"),
-    "eq33": ("*", "eq. (33) contact"),
-    "mu": ("m", "mu_required = mu"),
-    "max_g": ("g", "g-load = max_g"),
-}
+MARKS = {name: (ch, region.BOUNDARY_LABELS[name][0])
+         for name, ch in (("eq29", "="), ("eq0", "#"), ("eq33", "*"), ("mu", "m"), ("max_g", "g"))}
 SHADE = "."
 UNSTABLE = "x"
 UNKNOWN = "?"
-OUTSIDE_MARKS = {"eq0": "eq. (81) fit", "eq33": "eq. (83) contact"}
+OUTSIDE_MARKS = {name: region.BOUNDARY_LABELS[name][1] for name in ("eq0", "eq33")}
 
 #: rich styles for :func:`to_rich`.
 STYLES = {"=": "bold blue", "#": "bold red", "*": "bold magenta", "m": "bold green",
@@ -78,7 +74,7 @@ def _fmt(x):
     return f"{x:g}"
 
 
-def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665,
+def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=STANDARD_GRAVITY,
              width=80, rows=None, alpha_range_deg=None, stability=False):
     """Character map of the allowed (theta, alpha) region.
 

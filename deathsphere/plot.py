@@ -31,6 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics import region
 
 EXTRA_HINT = "pip install 'deathsphere[plot]'"
@@ -38,14 +39,12 @@ FORMATS = ("png", "svg", "pdf")
 
 #: name -> (legend label inside, legend label outside, matplotlib style)
 CURVES = {
-    "eq0": ("eq. (0): wheel fits", "eq. (81): wheel fits",
-            dict(color="#c0392b", lw=1.6, ls="-")),
-    "eq29": (r"eq. (29): $\Omega^2 = 0$ or $\Omega^2 \to \infty$", None,
-             dict(color="#1f4e9c", lw=1.6, ls="--")),
-    "eq33": ("eq. (33): normal force = 0", "eq. (83): normal force = 0",
-             dict(color="#7b2d8e", lw=1.6, ls="-.")),
-    "mu": (r"eq. (35): $\mu_{{\rm required}}$ = {mu:g}", None, dict(color="#1e8449", lw=1.4, ls=":")),
-    "max_g": ("eq. (36): g-load = {max_g:g}", None, dict(color="#d35400", lw=1.4, ls=(0, (5, 2, 1, 2)))),
+    "eq0": (*region.BOUNDARY_LABELS["eq0"], dict(color="#c0392b", lw=1.6, ls="-")),
+    "eq29": (*region.BOUNDARY_LABELS["eq29"], dict(color="#1f4e9c", lw=1.6, ls="--")),
+    "eq33": (*region.BOUNDARY_LABELS["eq33"], dict(color="#7b2d8e", lw=1.6, ls="-.")),
+    "mu": (region.BOUNDARY_LABELS["mu"][0] + " ({mu:g})", None, dict(color="#1e8449", lw=1.4, ls=":")),
+    "max_g": (region.BOUNDARY_LABELS["max_g"][0] + " ({max_g:g})", None,
+              dict(color="#d35400", lw=1.4, ls=(0, (5, 2, 1, 2)))),
 }
 FILL = "#d6e4f0"
 #: with ``stability``: the allowed region's stable part keeps FILL, the
@@ -156,7 +155,7 @@ def _extend(values, cells):
     return values
 
 
-def stability_grid(a, r, k, *, g=9.80665, outside=False, mu=np.inf, max_g=np.inf,
+def stability_grid(a, r, k, *, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf,
                    alpha_range_deg=(-5.0, 95.0), resolution_deg=0.25):
     """The stability margin on a (theta, alpha) grid (beyond the paper,
     docs/stability.md): returns ``(theta_deg, alpha_deg, margin, allowed)``,
@@ -231,7 +230,7 @@ def _stability_lines(th_d, al_d, margin, a, r, k, g, outside, mu, max_g, resolut
     return pieces
 
 
-def plot_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=9.80665, output=None,
+def plot_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=STANDARD_GRAVITY, output=None,
              alpha_range_deg=None, points=None, points_label="orbits", title=None, dpi=200,
              stability=False, stability_resolution_deg=0.25):
     """Figure of the allowed (theta, alpha) region, McDonald (1993) figure

@@ -47,6 +47,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import Status
 from deathsphere.physics.trig_roots import MERGE_TOL, TWO_PI, TrigPoly2, sorted_union
@@ -69,13 +70,14 @@ __all__ = [
     "solve_alpha",
 ]
 
-#: Names and labels of the boundaries, in drawing order.
+#: Boundary name -> its label (inside, outside): the equation it comes from
+#: and what holds on it.  The one text every table, map and plot uses.
 BOUNDARY_LABELS = {
-    "eq0": "eq. (0): wheel fits",
-    "eq29": "eq. (29): Omega^2 = 0 or pole",
-    "eq33": "eq. (33): contact force = 0",
-    "mu": "eq. (35): mu_required = mu",
-    "max_g": "eq. (36): g-load = max_g",
+    "eq0": ("eq. (0): the wheel fits", "eq. (81): the wheel fits"),
+    "eq29": ("eq. (29): Omega^2 = 0 or diverges", "eq. (29): Omega^2 = 0 or diverges"),
+    "eq33": ("eq. (33): normal force = 0", "eq. (83): normal force = 0"),
+    "mu": ("eq. (35): mu_required = mu", "eq. (35): mu_required = mu"),
+    "max_g": ("eq. (36): g-load = max_g", "eq. (36): g-load = max_g"),
 }
 
 
@@ -331,7 +333,7 @@ def _feasible_at(t, alpha, a, r, k, g, outside, mu, max_g):
     return ok
 
 
-def feasible(theta, alpha, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf):
+def feasible(theta, alpha, a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf):
     """True where (theta, alpha) is a feasible orbit: status ``ok`` of
     :func:`deathsphere.physics.wheel.horizontal_orbit` (eqs. (0)/(81), (29),
     (33)/(83), (35) with mu) and g-load of eq. (36) <= max_g."""
@@ -352,7 +354,7 @@ def _speed_sq(t, alpha, a, r, k, g):
     return np.maximum(v2, 0.0)
 
 
-def allowed_alpha(theta, a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf):
+def allowed_alpha(theta, a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf):
     """Intervals of alpha where a steady horizontal orbit is feasible.
 
     Feasible means: the wheel fits (eq. (0); eq. (81) outside), Omega^2 of
@@ -477,7 +479,7 @@ class HighestOrbit:
     theta_bracket: tuple
 
 
-def highest_orbit(a, r, k, g=9.80665, outside=False, mu=np.inf, max_g=np.inf,
+def highest_orbit(a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf,
                   n_theta=2048, xtol=1e-11):
     """The highest orbit possible: the smallest theta with a feasible alpha.
 
@@ -547,7 +549,7 @@ def _limit_speed(lo, hi, vmin_near, a, r, k, g, outside, mu, max_g):
 # tilt for a given speed or rotation rate
 # ---------------------------------------------------------------------------
 
-def solve_alpha(theta, a, r, k, g=9.80665, speed=None, omega=None, outside=False,
+def solve_alpha(theta, a, r, k, g=STANDARD_GRAVITY, speed=None, omega=None, outside=False,
                 mu=np.inf, alpha_range=None):
     """Every tilt alpha at which eq. (29) gives the centre speed
     v_cm = |r'| Omega = ``speed`` [m/s], or the rotation rate ``omega``

@@ -13,11 +13,7 @@ from deathsphere.physics.stability import stability_boundary_alphas
 
 #: Boundary name -> the equation it comes from (inside, outside).
 EQUATIONS = {
-    "eq0": ("eq. 0: the wheel fits", "eq. 81: the wheel fits"),
-    "eq29": ("eq. 29: Omega^2 = 0 or diverges", "eq. 29: Omega^2 = 0 or diverges"),
-    "eq33": ("eq. 33: normal force = 0", "eq. 83: normal force = 0"),
-    "mu": ("mu_required = mu", "mu_required = mu"),
-    "max_g": ("g-load = max_g", "g-load = max_g"),
+    **region.BOUNDARY_LABELS,
     "stability": ("stability boundary (exact linearisation)", "stability boundary (exact linearisation)"),
 }
 
