@@ -21,6 +21,7 @@ import numpy as np
 from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import stability as st
+from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.wheel import horizontal_orbit
 
 G = STANDARD_GRAVITY
@@ -180,7 +181,7 @@ def section_pole():
         th = np.pi - 1e-3
         al = np.radians(np.linspace(89.0, 89.999, 40001))
         ex = st.wheel_stability(th, al, a, r, k, G)
-        rp = r * np.sin(th) - a * np.cos(al)
+        rp = r_prime(th, al, a, r)
         w1sq = (rp * ex["omega"]) ** 2 * a / G
         i = np.nonzero((ex["verdict"][:-1] == S) & (ex["verdict"][1:] == U))[0][0]
         print(f"     k = {k:4.2f}: exact {w1sq[i]:.4f}   paper 1/(2k+1) = {1 / (2 * k + 1):.4f}"

@@ -55,6 +55,7 @@ from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import sphere as sph
 from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
+from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import REASON_TEXT, Status
 
 __all__ = [
@@ -250,7 +251,7 @@ def _wheel_start(theta, alpha, phi, rate, d_theta, d_alpha, a, r):
     and contact hold exactly (docs/simulation.md, "Perturbation").
     """
     _, e1_0, e3_0 = _wheel_geometry(theta, alpha, phi, a, r)
-    rp = r * np.sin(theta) - a * np.cos(alpha)
+    rp = r_prime(theta, alpha, a, r)
     w = (rp / a) * rate * e1_0 - rate * np.sin(alpha) * e3_0
     c, e1, _ = _wheel_geometry(theta + d_theta, alpha + d_alpha, phi, a, r)
     return np.concatenate((c, e1, w))

@@ -21,9 +21,17 @@ def r_prime(theta, alpha, a, r):
     .. math:: r' = r \\sin\\theta - a \\cos\\alpha
 
     Holds inside and outside (sec. 3).  r' < 0 means the centre is across the
-    axis from the contact point (possible near the poles).
+    axis from the contact point (possible near the poles).  A vertical orbit
+    is alpha = 0 inside, alpha = pi outside: r' = r sin(theta) -/+ a.
+    Complex theta / alpha accepted (complex step).
     """
-    return r * np.sin(theta) - a * np.cos(alpha)
+    return r_prime_from_trig(np.sin(theta), np.cos(alpha), a, r)
+
+
+def r_prime_from_trig(sin_theta, cos_alpha, a, r):
+    """:func:`r_prime`, eq. (8b), from sin(theta) and cos(alpha) already
+    computed (the steady-orbit kernels evaluate each once per orbit)."""
+    return r * sin_theta - a * cos_alpha
 
 
 def fits_inside(theta, alpha, a, r):

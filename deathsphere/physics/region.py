@@ -52,7 +52,7 @@ from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import Status
 from deathsphere.physics.trig_roots import MERGE_TOL, TWO_PI, TrigPoly2, sorted_union
 from deathsphere.physics.trig_roots import roots_in as _roots_in
-from deathsphere.physics.wheel import horizontal_orbit
+from deathsphere.physics.wheel import horizontal_orbit, omega_squared_denominator
 
 __all__ = [
     "AlphaIntervals",
@@ -345,7 +345,7 @@ def _speed_sq(t, alpha, a, r, k, g):
     """v_cm^2 = g r'^2 cos(alpha) / (sin(alpha) D) (eq. 29), inf at a pole,
     clipped at 0."""
     rp = r_prime(t, alpha, a, r)
-    den = np.sin(alpha) * ((2 * k + 1) * rp + k * a * np.cos(alpha))
+    den = omega_squared_denominator(t, alpha, a, r, k)
     num = g * rp * rp * np.cos(alpha)
     pole = np.abs(den) <= 1e-12 * ((2 * k + 1) * r + (k + 1) * a)
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -91,7 +91,7 @@ def vertical_fits(theta, a, r, outside=False):
     """
     theta, a, r = _arrays(theta, a, r)
     s = np.sin(theta)
-    return np.where(outside, s > SINGULAR, r * s - a > SINGULAR * r)
+    return np.where(outside, s > SINGULAR, r_prime(theta, 0.0, a, r) > SINGULAR * r)
 
 
 def top_rate_from_speed(v_top, theta, a, r, outside=False):

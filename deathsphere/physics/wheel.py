@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside, r_prime  # noqa: F401 (wheel.r_prime)
+from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside, r_prime_from_trig
 from deathsphere.physics.status import Reason, Status, first_failure
 
 #: horizontal_orbit evaluates larger inputs in pieces of this many orbits:
@@ -23,11 +23,6 @@ from deathsphere.physics.status import Reason, Status, first_failure
 #: large enough that its ~100 numpy calls per piece cost little per orbit
 #: (docs/performance.md).  Also the chunk size of ``deathsphere sweep``.
 CHUNK = 1 << 14
-
-
-def _r_prime(sin_theta, cos_alpha, a, r):
-    """Eq. (8b) from sin(theta) and cos(alpha): geometry.r_prime, same operations."""
-    return r * sin_theta - a * cos_alpha
 
 
 def _denominator(rp, sin_alpha, cos_alpha, a, k):
@@ -75,7 +70,7 @@ def omega_squared_denominator(theta, alpha, a, r, k):
     """sin(alpha) [(2k+1) r' + k a cos(alpha)], the denominator of eq. (29)
     written with cot(alpha) = cos(alpha)/sin(alpha)."""
     cos_alpha = np.cos(alpha)
-    return _denominator(_r_prime(np.sin(theta), cos_alpha, a, r), np.sin(alpha), cos_alpha, a, k)
+    return _denominator(r_prime_from_trig(np.sin(theta), cos_alpha, a, r), np.sin(alpha), cos_alpha, a, k)
 
 
 def omega_squared(theta, alpha, a, r, k, g):
@@ -91,7 +86,7 @@ def omega_squared(theta, alpha, a, r, k, g):
     angular-momentum balance eq. (24) with beta = 0 in tests/physics.
     """
     cos_alpha = np.cos(alpha)
-    rp = _r_prime(np.sin(theta), cos_alpha, a, r)
+    rp = r_prime_from_trig(np.sin(theta), cos_alpha, a, r)
     return _omega_squared(rp, np.sin(alpha), cos_alpha, a, r, k, g)
 
 
@@ -136,7 +131,7 @@ def _orbit(theta, alpha, a, r, k, g, outside, mu):
     arrays broadcasting to it; ``outside`` is a bool when the side is common."""
     sin_theta, cos_theta = np.sin(theta), np.cos(theta)
     sin_alpha, cos_alpha = np.sin(alpha), np.cos(alpha)
-    rp = _r_prime(sin_theta, cos_alpha, a, r)                               # eq. (8b)
+    rp = r_prime_from_trig(sin_theta, cos_alpha, a, r)                               # eq. (8b)
     if isinstance(outside, bool):                                           # eq. (81) / (0)
         fits = fits_outside(theta, alpha) if outside else fits_inside(theta, alpha, a, r)
     else:
@@ -255,7 +250,7 @@ def g_load(theta, alpha, a, r, k):
     ``ok`` orbit.  NaN where r' = 0 or the denominator vanishes.
     """
     cos_alpha = np.cos(alpha)
-    rp = _r_prime(np.sin(theta), cos_alpha, a, r)
+    rp = r_prime_from_trig(np.sin(theta), cos_alpha, a, r)
     with np.errstate(divide="ignore", invalid="ignore"):
         den = (2 * k + 1) + k * (a / rp) * cos_alpha
         out = cos_alpha / (np.sin(alpha) * den)

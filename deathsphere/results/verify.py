@@ -23,7 +23,7 @@ from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.model import Setup, Table, horizontal_orbit
 from deathsphere.physics import particle, sphere, wheel
 from deathsphere.physics import vertical_orbit as vertical
-from deathsphere.physics.geometry import fits_inside
+from deathsphere.physics.geometry import fits_inside, r_prime
 from deathsphere.physics.status import Status
 from deathsphere.results.table1 import PRINTED, table1
 
@@ -467,7 +467,7 @@ def _eq208():
         a, r, th = 1.0, 1e5, np.pi - 1e-3
         al = deg(np.linspace(89.5, 89.95, 2001))
         res = st.wheel_stability(th, al, a, r, k, G)
-        w1sq = ((r * np.sin(th) - a * np.cos(al)) * res["omega"]) ** 2 * a / G
+        w1sq = (r_prime(th, al, a, r) * res["omega"]) ** 2 * a / G
         i = np.flatnonzero((res["verdict"][:-1] == st.Verdict.STABLE) & (res["verdict"][1:] == st.Verdict.UNSTABLE))
         out.append((k, float(w1sq[i[0]]) if i.size else float("nan")))
     half = all(abs(x * 2 * (2 * k + 1) - 1) < 0.03 for k, x in out)
