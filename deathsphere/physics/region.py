@@ -28,14 +28,9 @@ speed v_cm, eq. (29)       g r'^2 C - v^2 S D               3
 =========================  ===============================  ==========
 
 since Omega^2 = g C / (S D), normal force per mass = +-g P_N / (S D) and
-F_theta / m = -g P_F / (S D) (eq. 32).  A trigonometric polynomial of degree
-N has at most 2N zeros per period; they are the unimodular roots
-z = exp(i alpha) of a polynomial of degree 2N, found all at once as the
-eigenvalues of its companion matrix (batched over theta), then each one
-refined by bisection inside a bracket whose ends are the midpoints to its
-neighbours, so that a sign change is required and the refined root satisfies
-the physical equation to about 1e-15 rad.  No zero of odd multiplicity can be
-missed: the polynomial has no others.
+F_theta / m = -g P_F / (S D) (eq. 32).  All their zeros are found by
+:mod:`deathsphere.physics.trig_roots` (companion-matrix eigenvalues, then
+bisection on sign changes: none of odd multiplicity can be missed).
 
 Angles are in radians, lengths in metres, g in m/s^2, speeds in m/s.
 """
