@@ -198,6 +198,23 @@ def test_lap_time_against_quadrature():
     assert orbit["period"] == pytest.approx(T)
 
 
+def test_lap_time_of_a_rolling_orbit_the_wall_does_not_hold():
+    """Below the contact limit (eq. 28a) the rolling solution of eq. (27)
+    still has a period (the Floquet analysis integrates over it); the
+    orbit's summary reports none, and a wheel that does not fit has none."""
+    theta = np.radians([40.0, 90.0, 135.0])
+    w0 = top_rate(theta, np.array([-0.5, -0.9, -0.2]))
+    T = V.lap_time(theta, w0, A, R, 0.5, G)
+    for i in range(len(theta)):
+        def inv_rate(p):
+            return 1 / np.sqrt(float(V.rate_squared(p, theta[i], w0[i], A, R, 0.5, G)))
+        ref, _ = quad(inv_rate, 0, 2 * np.pi, epsabs=1e-13, epsrel=1e-12, limit=200)
+        assert T[i] == pytest.approx(ref, rel=1e-9)
+    assert np.all(np.isnan(V.vertical_orbit(theta, w0, A, R, 0.5, G)["period"]))
+    assert np.isnan(V.lap_time(np.radians(5.0), 1.0, A, R, 0.5, G))
+    assert np.isnan(V.lap_time(np.radians(60.0), 0.0, A, R, 0.5, G))
+
+
 def test_lap_time_by_integrating_the_motion():
     theta, k = np.radians(50.0), 0.5
     w0 = top_rate(theta, 0.2)
