@@ -322,6 +322,34 @@ def test_orbits_that_do_not_exist_get_a_status_and_no_rows():
     assert set(series["input_row"]) == {3}
 
 
+
+def test_statuses_are_the_run_status_labels_with_their_reasons():
+    """The summary's status texts are the RunStatus labels; every status a
+    run can end in is one of STATUSES, with the status's own reason words."""
+    assert sim.STATUSES == ("completed", "contact_lost", "slips", "no_fit", "no_orbit", "failed")
+    assert [sim.RunStatus[name.upper()].label for name in sim.STATUSES] == list(sim.STATUSES)
+    starts = sim.Starts.concat([
+        sim.horizontal_starts(TABLE1, np.array([60.0, 30.0]), np.array([10.0, 60.0])),
+        sim.horizontal_starts(Setup(mu=0.5), 60.0, 10.0, input_row=3),
+        sim.vertical_starts(TABLE1, 90.0, 1.0, input_row=4),
+    ])
+    _, summary = run(starts, periods=0.1, points_per_period=10)
+    assert list(summary["status"]) == ["completed", "no_fit", "slips", "contact_lost"]
+    for status, reason in zip(summary["status"], summary["reason"]):
+        assert isinstance(status, str) and status in sim.STATUSES
+        if status in ("completed", "slips", "contact_lost"):
+            assert reason == sim.RunStatus[status.upper()].reason != ""
+
+
+def test_kicks_are_radians_under_their_former_name_too():
+    kicked = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=1e-3)
+    np.testing.assert_array_equal(sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb=1e-3).state, kicked.state)
+    assert kicked.perturb_rad[0] == 1e-3
+    with pytest.raises(TypeError, match="perturb_rad"):
+        sim.vertical_starts(TABLE1, 90.0, 6.0, perturb_rad=1e-3, perturb=1e-3)
+    with pytest.raises(ValueError, match="perturb_rad"):
+        sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=np.nan)
+
 def test_invalid_parameters_raise():
     with pytest.raises(ValueError, match="wheel or sphere"):
         sim.horizontal_starts(Setup(body="particle"), 120.0, 10.0)
