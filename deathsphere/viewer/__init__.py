@@ -22,7 +22,7 @@ from pathlib import Path
 
 from deathsphere.model import Table
 
-__all__ = ["VIEW_FORMATS", "ViewerUnavailable", "view_format", "check_view_output", "write_view"]
+__all__ = ["VIEW_FORMATS", "ViewerUnavailable", "view_format", "check_view_output", "write_view", "has_ffmpeg"]
 
 #: --output extensions that give the 3-D view
 VIEW_FORMATS = ("html", "gif", "mp4")
@@ -38,7 +38,9 @@ def view_format(output) -> str:
     return Path(output).suffix.lower().lstrip(".")
 
 
-def _has_ffmpeg() -> bool:
+def has_ffmpeg() -> bool:
+    """Whether the ffmpeg encoder that a .mp4 view needs is on this
+    machine (where matplotlib's ``animation.ffmpeg_path`` points)."""
     # matplotlib asks the same question (animation.writers.is_available)
     from matplotlib import rcParams
 
@@ -67,7 +69,7 @@ def check_view_output(output) -> str:
     except ImportError:
         raise ViewerUnavailable(f"writing .{fmt} needs matplotlib, which is not installed; "
                                 f"install the extra: {EXTRA_HINT}") from None
-    if fmt == "mp4" and not _has_ffmpeg():
+    if fmt == "mp4" and not has_ffmpeg():
         raise ViewerUnavailable("writing .mp4 needs the ffmpeg encoder, which is not on PATH; "
                                 "install ffmpeg, or write .gif or .html instead")
     return fmt

@@ -23,7 +23,7 @@ MAX_FRAMES = 6000
 #: panel quantity -> time-series column it is read from
 PANEL_COLUMNS = {
     "theta": "theta_deg", "alpha": "alpha_deg", "speed": "speed_m_s",
-    "normal": "normal_per_mass_m_s2", "friction": "friction_per_mass_m_s2", "mu": "mu_required",
+    "normal": "normal_per_mass_m_s2", "friction": "friction_magnitude_per_mass_m_s2", "mu": "mu_required",
 }
 
 

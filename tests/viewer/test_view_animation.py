@@ -36,9 +36,9 @@ def test_panel_numbers():
 
 
 def test_mp4_where_ffmpeg_is(tmp_path):
-    from deathsphere.viewer import _has_ffmpeg
+    from deathsphere.viewer import has_ffmpeg
 
-    if not _has_ffmpeg():
+    if not has_ffmpeg():
         pytest.skip("no ffmpeg on PATH: .mp4 is refused (tested in test_view_preflight.py)")
     series, summary, states, _ = run_case("wheel_inside", periods=0.15)
     out = tmp_path / "orbit.mp4"

@@ -80,13 +80,13 @@ def test_force_arrows_add_up_to_the_simulated_contact_force(name):
     side = -1.0 if not p.outside else 1.0
     assert np.allclose(side * np.sum(geo["normal_force"] * n_hat, axis=0), series["normal_per_mass_m_s2"],
                        rtol=1e-9, atol=1e-9)
-    assert np.allclose(norm(geo["friction_force"]), series["friction_per_mass_m_s2"], rtol=1e-9, atol=1e-9)
+    assert np.allclose(norm(geo["friction_force"]), series["friction_magnitude_per_mass_m_s2"], rtol=1e-9, atol=1e-9)
     # F/m = d2c/dt2 + g z (eq. 2)
     assert np.allclose(geo["acceleration"] + p.g * np.array([0, 0, 1.0])[:, None], geo["force"])
 
 
 def test_recorded_states_are_lab_states_and_change_nothing_else():
-    starts = sim.horizontal_starts(Setup(), 60, 10, perturb=0.05)
+    starts = sim.horizontal_starts(Setup(), 60, 10, perturb_rad=0.05)
     plain, plain_summary = sim.Simulation(starts, periods=0.5, points_per_period=20).run()
     runs = {}
     for frame in ("turning", "lab"):

@@ -43,7 +43,7 @@ def test_missing_plot_extra(run, no_integration, tmp_path, monkeypatch, name):
 
 def test_mp4_without_an_encoder(run, no_integration, tmp_path, monkeypatch):
     pytest.importorskip("matplotlib")
-    monkeypatch.setattr(viewer, "_has_ffmpeg", lambda: False)
+    monkeypatch.setattr(viewer, "has_ffmpeg", lambda: False)
     res = run(*ARGS, "--output", str(tmp_path / "x.mp4"))
     _one_error_line(res, "ffmpeg")
 

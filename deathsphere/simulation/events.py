@@ -1,0 +1,97 @@
+"""The terminal events of a run: contact lost and slipping (beyond the paper;
+docs/simulation.md, "Events").
+
+Both are functions of the state through the contact force of
+:func:`deathsphere.physics.dynamics.contact_force`: the normal force N / g
+(``contact_lost`` where it falls to zero) and (mu N - |F_friction|) / g
+(``slips`` where it does, only for a finite mu).  The bodies integrated
+together share one solve_ivp call, so each event is the least value over
+them; :data:`EVENT_TOL` decides which others reached zero at the same time.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from deathsphere.physics import dynamics as dyn
+from deathsphere.simulation.status import RunStatus
+
+__all__ = ["ContactEvents", "EVENT_STATUSES", "EVENT_TOL", "stopped_at_start"]
+
+#: the status each event ends a body with, in the order of
+#: :meth:`ContactEvents.events` and :meth:`ContactEvents.values`
+EVENT_STATUSES = (RunStatus.CONTACT_LOST, RunStatus.SLIPS)
+
+#: event values (force / g) at or below this count as "reached zero" for
+#: every body at an event (identical bodies reach zero together).
+EVENT_TOL = 1e-9
+
+
+@dataclass
+class ContactEvents:
+    """The event functions of the bodies integrated together right now (a
+    subset of the run), for :func:`scipy.integrate.solve_ivp`."""
+
+    idx: np.ndarray            # indices into the run's bodies
+    params: dyn.BodyParams
+    turning: np.ndarray
+    mu: np.ndarray
+    g: np.ndarray
+    _cache: tuple = field(default=(None, None, None))
+    _scalar: tuple | None = None
+
+    def __post_init__(self):
+        if self.idx.size == 1:      # (coefficients, g) for dyn.contact_values
+            self._scalar = (dyn.scalar_coefficients(self.params), float(self.params.g[0]))
+
+    def values(self, t, y):
+        """(normal/g, (mu N - |F|)/g) per body at (t, y), cached for the
+        repeated calls solve_ivp makes with one (t, y)."""
+        last_t, last_y, vals = self._cache
+        if last_y is not None and t == last_t and (y is last_y or np.array_equal(y, last_y)):
+            return vals
+        if self._scalar is not None and y.ndim == 1:
+            try:          # one body: the same equations on Python floats
+                n, fmag = dyn.contact_values(y.tolist(), *self._scalar)
+                mu = float(self.mu[0])
+                slip = mu * n - fmag if math.isfinite(mu) else 1.0
+                vals = (np.array([n]) / self.g, np.array([slip]) / self.g)
+                self._cache = (t, y, vals)
+                return vals
+            except (ZeroDivisionError, OverflowError, ValueError):
+                pass
+        state = np.asarray(y).reshape(9, -1)
+        f = dyn.contact_force(state, self.params)
+        n = f["normal"]
+        finite = np.isfinite(self.mu)
+        slip = np.where(finite, np.where(finite, self.mu, 0.0) * n - f["friction_magnitude"], 1.0)
+        vals = (n / self.g, slip / self.g)
+        self._cache = (t, y, vals)
+        return vals
+
+    def events(self):
+        """The terminal event functions (least value over the bodies), in
+        the order of :data:`EVENT_STATUSES`."""
+        def contact_lost(t, y):
+            return float(np.min(self.values(t, y)[0]))
+
+        def slips(t, y):
+            return float(np.min(self.values(t, y)[1]))
+
+        for ev in (contact_lost, slips):
+            ev.terminal = True
+            ev.direction = -1
+        return [contact_lost, slips]
+
+
+def stopped_at_start(normal, friction, mu):
+    """Masks (lost, slip) of bodies with no contact (N <= 0) or slipping
+    (mu N <= |F|) at the start, where no event can fire: from the normal
+    force and the friction magnitude per unit mass and the mu available."""
+    finite = np.isfinite(mu)
+    lost = ~(normal > 0)
+    slip = ~lost & finite & ~(np.where(finite, mu, 0.0) * normal - friction > 0)
+    return lost, slip
