@@ -1,4 +1,5 @@
-"""The terminal map of the allowed (theta, alpha) region (deathsphere.charplot):
+"""The terminal map of the allowed (theta, alpha) region
+(deathsphere.results.region_map.cell_map drawn by deathsphere.render.charplot):
 layout, labels, and that the shading and the curves are where the physics
 (deathsphere.physics.wheel, point by point) puts them."""
 
@@ -6,13 +7,21 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from deathsphere.charplot import MARKS, SHADE, char_map, to_rich
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import Status
+from deathsphere.render import charplot
+from deathsphere.render.charplot import MARKS, SHADE, to_rich
+from deathsphere.results.region_map import cell_map
 
 A, R, K, G = 0.3, 3.0, 0.5, 9.80665
 BOUNDARY_CHARS = "".join(ch for ch, _ in MARKS.values())
+
+
+def char_map(a, r, k, *, width=80, rows=None, **options):
+    """The map as the map command draws it: the cells for a terminal
+    ``width`` characters wide, then the characters."""
+    return charplot.char_map(cell_map(a, r, k, resolution=(charplot.columns_for_width(width), rows), **options))
 
 
 def _feasible(cmap, outside=False, mu=np.inf, max_g=np.inf):
@@ -95,7 +104,7 @@ def test_narrow_width_and_rich_rendering():
 
 
 def test_stability_marks_exactly_the_unstable_cells():
-    from deathsphere.charplot import UNSTABLE
+    from deathsphere.render.charplot import UNSTABLE
     from deathsphere.physics.stability import Verdict, wheel_stability
 
     a, r = 0.9, 3.0                                        # a/r = 0.3: stable and unstable orbits
