@@ -157,3 +157,14 @@ def test_the_map_draws_what_the_cells_hold_and_nothing_else():
     assert cmap.lines[0] == "Stability of allowed horizontal orbits: "   # the title, cut at the width
     assert "eq. (0) fit" in str(cmap) and "x allowed, unstable" in str(cmap) and "eq. (29)" not in str(cmap)
     assert all(len(line) <= 40 for line in cmap.lines)
+
+
+def test_cell_map_grid_and_its_limits():
+    cells = cell_map(A, R, K, resolution=(30, 7), alpha_range_deg=(10.0, 70.0))
+    assert cells.feasible.shape == (7, 30) and cells.unstable is None and cells.unknown is None
+    assert np.allclose(cells.alpha_deg, [70, 60, 50, 40, 30, 20, 10]) and np.isclose(cells.theta_deg[0], 3.0)
+    assert cells.sample_theta_deg.size == 30 * cells.samples and cells.sample_alpha_deg.size == 7 * cells.samples
+    assert set(cells.alpha_roots_deg) == set(cells.theta_roots_deg) == {"eq0", "eq29", "eq33"}
+    for bad in ((0, 10), (10, 1)):
+        with pytest.raises(ValueError, match="column"):
+            cell_map(A, R, K, resolution=bad)

@@ -260,3 +260,14 @@ def test_sweep_jobs_to_parquet_equals_one_process(tmp_path):
         CliRunner().invoke(cli, [*args, "--jobs", jobs, "--output", str(tmp_path / f"{jobs}.parquet")],
                            catch_exceptions=False)
     assert pq.read_table(tmp_path / "1.parquet").equals(pq.read_table(tmp_path / "2.parquet"))
+
+
+def test_the_file_writers_do_not_import_rich():
+    """CSV and JSON output does not pay for the terminal views' rich."""
+    import subprocess
+    import sys
+
+    code = ("import sys, deathsphere.render.formats, deathsphere.render.compiled; "
+            "print(sorted(m for m in sys.modules if m == 'rich' or m.startswith('rich.')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
