@@ -175,7 +175,7 @@ class Table:
         writes it to that path or open text file and returns None."""
         import io
 
-        from deathsphere.render import write_csv
+        from deathsphere.render.formats import write_csv
 
         buf = io.StringIO()
         write_csv([self], buf)

@@ -15,7 +15,7 @@ import deathsphere
 from deathsphere import ParameterError, Setup, Table, horizontal_orbit
 from deathsphere.cli import cli
 from deathsphere.model import COLUMNS
-from deathsphere.render import write_csv
+from deathsphere.render.formats import write_csv
 
 
 def cli_csv(*args, code=0):

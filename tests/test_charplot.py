@@ -1,4 +1,5 @@
-"""The terminal map of the allowed (theta, alpha) region (deathsphere.charplot):
+"""The terminal map of the allowed (theta, alpha) region
+(deathsphere.results.region_map.cell_map drawn by deathsphere.render.charplot):
 layout, labels, and that the shading and the curves are where the physics
 (deathsphere.physics.wheel, point by point) puts them."""
 
@@ -6,13 +7,21 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from deathsphere.charplot import MARKS, SHADE, char_map, to_rich
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import Status
+from deathsphere.render import charplot
+from deathsphere.render.charplot import MARKS, SHADE, to_rich
+from deathsphere.results.region_map import cell_map
 
 A, R, K, G = 0.3, 3.0, 0.5, 9.80665
 BOUNDARY_CHARS = "".join(ch for ch, _ in MARKS.values())
+
+
+def char_map(a, r, k, *, width=80, rows=None, **options):
+    """The map as the map command draws it: the cells for a terminal
+    ``width`` characters wide, then the characters."""
+    return charplot.char_map(cell_map(a, r, k, resolution=(charplot.columns_for_width(width), rows), **options))
 
 
 def _feasible(cmap, outside=False, mu=np.inf, max_g=np.inf):
@@ -95,7 +104,7 @@ def test_narrow_width_and_rich_rendering():
 
 
 def test_stability_marks_exactly_the_unstable_cells():
-    from deathsphere.charplot import UNSTABLE
+    from deathsphere.render.charplot import UNSTABLE
     from deathsphere.physics.stability import Verdict, wheel_stability
 
     a, r = 0.9, 3.0                                        # a/r = 0.3: stable and unstable orbits
@@ -117,3 +126,45 @@ def test_stability_marks_exactly_the_unstable_cells():
     plain = char_map(a, r, K)
     assert UNSTABLE not in "".join(plain.cells) and "allowed, unstable" not in str(plain)
     assert any(span.style == "red" for span in to_rich(cmap).spans)
+
+
+def test_the_map_draws_what_the_cells_hold_and_nothing_else():
+    """charplot computes nothing: a hand-made CellMap is drawn cell for cell."""
+    from deathsphere.results.region_map import CellMap
+
+    ncol, nrow, sub = charplot.columns_for_width(40), 4, 2
+    feasible = np.zeros((nrow, ncol), dtype=bool)
+    feasible[1:3, 10:20] = True
+    unstable = np.zeros_like(feasible)
+    unstable[2, 12] = True
+    nan = np.full((ncol * sub, 1), np.nan)
+    alpha_roots = nan.copy()
+    alpha_roots[1, 0] = 89.0                  # a crossing in the top row, first column
+    theta_roots = np.full((nrow * sub, 1), np.nan)
+    theta_roots[7, 0] = 100.0                 # a crossing in the bottom row at theta = 100 deg
+    cells = CellMap(a=0.2, r=1.0, k=0.5, outside=False, mu=np.inf, max_g=np.inf, g=G, stability=True,
+                    alpha_range_deg=(0.0, 90.0), theta_deg=(np.arange(ncol) + 0.5) * 180.0 / ncol,
+                    alpha_deg=np.linspace(90.0, 0.0, nrow), feasible=feasible, unstable=unstable,
+                    unknown=np.zeros_like(feasible), samples=sub,
+                    sample_theta_deg=np.zeros(ncol * sub), sample_alpha_deg=np.zeros(nrow * sub),
+                    alpha_roots_deg={"eq0": alpha_roots}, theta_roots_deg={"eq0": theta_roots})
+    cmap = charplot.char_map(cells)
+    grid = np.array([list(row) for row in cmap.cells])
+    fit = MARKS["eq0"][0]
+    assert set(map(tuple, np.argwhere(grid == fit))) == {(0, 0), (3, int(100.0 // (180.0 / ncol)))}
+    assert np.array_equal(grid == SHADE, feasible & ~unstable) and grid[2, 12] == charplot.UNSTABLE
+    assert np.sum(grid == " ") == grid.size - feasible.sum() - 2
+    assert cmap.lines[0] == "Stability of allowed horizontal orbits: "   # the title, cut at the width
+    assert "eq. (0) fit" in str(cmap) and "x allowed, unstable" in str(cmap) and "eq. (29)" not in str(cmap)
+    assert all(len(line) <= 40 for line in cmap.lines)
+
+
+def test_cell_map_grid_and_its_limits():
+    cells = cell_map(A, R, K, resolution=(30, 7), alpha_range_deg=(10.0, 70.0))
+    assert cells.feasible.shape == (7, 30) and cells.unstable is None and cells.unknown is None
+    assert np.allclose(cells.alpha_deg, [70, 60, 50, 40, 30, 20, 10]) and np.isclose(cells.theta_deg[0], 3.0)
+    assert cells.sample_theta_deg.size == 30 * cells.samples and cells.sample_alpha_deg.size == 7 * cells.samples
+    assert set(cells.alpha_roots_deg) == set(cells.theta_roots_deg) == {"eq0", "eq29", "eq33"}
+    for bad in ((0, 10), (10, 1)):
+        with pytest.raises(ValueError, match="column"):
+            cell_map(A, R, K, resolution=bad)

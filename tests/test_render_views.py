@@ -8,19 +8,17 @@ import numpy as np
 import pytest
 from rich.console import Console
 
-from deathsphere import render
 from deathsphere.model import Setup, Table, evaluate, horizontal_orbit, make_requests
-from deathsphere.render import (
-    MAX_TERMINAL_ROWS,
-    format_number,
+from deathsphere.render import orbit_views
+from deathsphere.render.fit_table import MAX_TERMINAL_ROWS, format_number
+from deathsphere.render.orbit_views import (
     generic_table,
     many_orbits_table,
     one_orbit_table,
-    stability_view,
-    table1_view,
     vertical_view,
     write_rich_table,
 )
+from deathsphere.render.paper_views import stability_view, table1_view
 
 WIDTHS = (60, 80, 120)
 
@@ -97,7 +95,7 @@ def test_many_wheels_keep_identifying_columns_and_whole_numbers(wheels, width):
         if "omega_rad_s" not in dropped:
             assert format_number(wheels["omega_rad_s"][i].item()) in cells
     # shown columns keep their units; the left-out ones are named, in priority order
-    expected = render.SUMMARY_DROP_ORDER["wheel"][:len(dropped)]
+    expected = orbit_views.SUMMARY_DROP_ORDER["wheel"][:len(dropped)]
     assert tuple(dropped) == expected
     if "omega_rad_s" not in dropped:
         assert "rad/s" in heads
@@ -118,7 +116,7 @@ def test_many_spheres_show_the_least_spin(spheres, width):
     flat = " ".join(text.split())
     assert f"needs |ω₃| ≥ {least} rad/s for an orbit" in flat and "θ = 60°" in flat
     dropped = left_out(text)
-    assert tuple(dropped) == render.SUMMARY_DROP_ORDER["sphere"][:len(dropped)]
+    assert tuple(dropped) == orbit_views.SUMMARY_DROP_ORDER["sphere"][:len(dropped)]
     if "omega3_min_real_rad_s" not in dropped:
         assert "|ω₃| min" in heads and all(least in line for line in table_blocks(text)[0])
 
@@ -202,10 +200,10 @@ def test_only_the_rows_shown_are_formatted(monkeypatch):
     table = evaluate(make_requests(n, body="wheel", theta=np.linspace(5.0, 175.0, n), alpha=np.full(n, 20.0)),
                      stability=False)
     calls = []
-    real = render.format_number
-    monkeypatch.setattr(render, "format_number", lambda *a, **k: calls.append(1) or real(*a, **k))
+    real = orbit_views.format_number
+    monkeypatch.setattr(orbit_views, "format_number", lambda *a, **k: calls.append(1) or real(*a, **k))
     show(many_orbits_table(table), 120)
-    columns = len(render.SUMMARY_COLUMNS["wheel"])
+    columns = len(orbit_views.SUMMARY_COLUMNS["wheel"])
     assert 0 < len(calls) <= 2 * columns * MAX_TERMINAL_ROWS
 
 
@@ -223,7 +221,7 @@ def test_vertical_orbits_fit(width):
     for head in ("#", "θ°", "v top", "status"):
         assert head in heads
     dropped = left_out(text)
-    assert tuple(dropped) == render.VERTICAL_DROP_ORDER[:len(dropped)]
+    assert tuple(dropped) == orbit_views.VERTICAL_DROP_ORDER[:len(dropped)]
     assert (width <= 60) == bool(dropped)
     for i, line in enumerate(table_blocks(text)[0]):
         assert line.split()[:3] == [str(table["input_row"][i]), "60", format_number(table["v_cm_m_s"][i].item())]

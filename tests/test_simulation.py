@@ -13,7 +13,7 @@ import sys
 import numpy as np
 import pytest
 
-from deathsphere import plot as plot_module
+from deathsphere.render import figures as plot_module
 from deathsphere import simulation as sim
 from deathsphere.model import Setup
 from deathsphere.physics import dynamics as dyn
@@ -392,7 +392,7 @@ def short_run():
 
 @pytest.mark.parametrize("suffix", ["png", "svg", "pdf"])
 def test_plot_writes_files(short_run, tmp_path, suffix):
-    from deathsphere.plot_simulation import plot_simulation
+    from deathsphere.render.simulation_figure import plot_simulation
 
     series, summary = short_run
     out = tmp_path / f"sim.{suffix}"
@@ -404,7 +404,7 @@ def test_plot_writes_files(short_run, tmp_path, suffix):
 
 
 def test_plot_needs_matplotlib(short_run, monkeypatch, tmp_path):
-    from deathsphere.plot_simulation import plot_simulation
+    from deathsphere.render.simulation_figure import plot_simulation
 
     series, summary = short_run
     monkeypatch.setitem(sys.modules, "matplotlib", None)

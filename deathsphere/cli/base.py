@@ -31,14 +31,9 @@ from deathsphere.exitcodes import ExitCode
 from deathsphere.grid import Axis, RangeError, Segment, parse_segment
 from deathsphere.model import Setup, Table
 from deathsphere.params import PARAMS, ParameterError, check, first_problem
-from deathsphere.render import (
-    FORMATS,
-    MAX_TERMINAL_ROWS,
-    write_csv,
-    write_json,
-    write_ndjson,
-    write_rich_table,
-)
+from deathsphere.render.fit_table import MAX_TERMINAL_ROWS
+from deathsphere.render.formats import FORMATS, write_csv, write_json, write_ndjson
+from deathsphere.render.orbit_views import write_rich_table
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
@@ -319,7 +314,7 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
     of the whole result) and says how many it left out.  ``parquet`` needs
     ``output`` (a binary file with its own row groups, never a terminal)."""
     if fmt == "parquet":
-        from deathsphere.fastwriters import write_parquet
+        from deathsphere.render.compiled import write_parquet
 
         return write_parquet(chunks, output)
     writer = {"csv": write_csv, "json": write_json, "ndjson": write_ndjson}.get(fmt)

@@ -32,7 +32,7 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
-from deathsphere import fastwriters
+from deathsphere.render import compiled
 from deathsphere.grid import RangeError, grid_chunks, grid_size
 from deathsphere.model import COLUMNS, REQUEST_FIELDS, Table, evaluate, make_requests
 
@@ -201,7 +201,7 @@ class SweepOutput(OutputPath):
 
     def convert(self, value, param, ctx):
         path = super().convert(value, param, ctx)
-        if path.lower().endswith(".parquet") and not fastwriters.parquet_available():
+        if path.lower().endswith(".parquet") and not compiled.parquet_available():
             raise click.UsageError("writing .parquet needs pyarrow: pip install 'deathsphere[fast]'")
         return path
 

@@ -27,7 +27,7 @@ def table1_command(fmt):
       deathsphere table1
       deathsphere table1 --format csv
     """
-    from deathsphere.render import table1_view
+    from deathsphere.render.paper_views import table1_view
     from deathsphere.results.table1 import PRINTED, table1
 
     table = table1()
@@ -67,7 +67,7 @@ def verify_command(claims, fmt):
     with progress("checking claims", len(ids or verify.CLAIMS)) as bar:
         table = verify.run(ids, progress=lambda claim: bar.advance(1, description=claim.id))
     if fmt == "table":
-        from deathsphere.render import checklist_view
+        from deathsphere.render.paper_views import checklist_view
 
         stdout_console().print(checklist_view(table, verify.counts(table)))
     else:

@@ -77,22 +77,27 @@ def map_command(a_over_r, k, side, mu, max_g, output, step, stability, fmt):
         raise click.BadParameter("must be < 1 inside the sphere", param_hint="'--a-over-r'")
     outside = side == "outside"
     if output is not None:
-        from deathsphere.plot import PlotExtraMissing, plot_map
+        from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
+        from deathsphere.render.map_figure import plot_map
+        from deathsphere.results import region_map
 
         try:
-            plot_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g, output=output,
-                     stability=stability)
+            import_matplotlib()  # before the work: a missing extra is one line, at once
+            plot_map(region_map.curve_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g,
+                                          stability=stability), output=output)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
         stderr_console().print(f"deathsphere: wrote {output}")
         return
     fmt = choose_format(fmt)
     if fmt == "table":
-        from deathsphere.charplot import char_map, to_rich
+        from deathsphere.render.charplot import char_map, columns_for_width, to_rich
+        from deathsphere.results import region_map
 
         width = max(40, min(stdout_console().width, 100))
-        stdout_console().print(to_rich(char_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g,
-                                                width=width, stability=stability)), end="")
+        cells = region_map.cell_map(a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g, stability=stability,
+                                    resolution=(columns_for_width(width), None))
+        stdout_console().print(to_rich(char_map(cells)), end="")
         return
     from deathsphere.results.limits import boundary_table, boundary_thetas
 

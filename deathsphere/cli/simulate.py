@@ -99,7 +99,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     """
     from deathsphere import simulation
     from deathsphere.api import prepare_simulation
-    from deathsphere.render import simulation_view
+    from deathsphere.render.simulation_view import simulation_view
 
     view = output is not None and _preflight_output(output)
     sim = prepare_simulation(theta, alpha, body=body.lower(), side=side.lower(), a=a, r=r, k=k, g=g, mu=mu,
@@ -137,8 +137,8 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
         size = write_view(output, simulation.concat_tables(series), summary, sim.sample_states())
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
     elif output is not None:
-        from deathsphere.plot import PlotExtraMissing
-        from deathsphere.plot_simulation import plot_simulation
+        from deathsphere.render.figures import PlotExtraMissing
+        from deathsphere.render.simulation_figure import plot_simulation
 
         try:
             plot_simulation(simulation.concat_tables(series), summary, output=output)

@@ -47,7 +47,7 @@ def stability_command(theta, alpha, body, side, a, r, k, g, mu, fmt):
     table = stability_report(setup, theta, alpha)
     fmt = choose_format(fmt)
     if fmt == "table":
-        from deathsphere.render import stability_view
+        from deathsphere.render.paper_views import stability_view
 
         stdout_console().print(stability_view(table, setup))
     else:

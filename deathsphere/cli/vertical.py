@@ -74,7 +74,7 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
       deathsphere vertical --theta 90 --v-top 6 --points 13 --format csv
       deathsphere vertical --side outside --theta 90 --v-top 0
     """
-    from deathsphere.render import vertical_view
+    from deathsphere.render.orbit_views import vertical_view
     from deathsphere.results.vertical import COLUMNS, VERTICAL_FIELDS, evaluate_vertical, vertical_points, vertical_requests
 
     setup = make_setup("wheel", side, a, r, k, g, mu)

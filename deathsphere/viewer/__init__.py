@@ -62,7 +62,7 @@ def check_view_output(output) -> str:
         raise ValueError(f"a 3-D view is written as .html, .gif or .mp4, got {str(output)!r}")
     if fmt == "html":
         return fmt
-    from deathsphere.plot import EXTRA_HINT
+    from deathsphere.render.figures import EXTRA_HINT
 
     try:
         importlib.import_module("matplotlib")

@@ -135,9 +135,9 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
                     max_seconds: float = MAX_SECONDS, size_px=SIZE_PX, dpi: int = 90) -> int:
     """Write the loop to ``output`` (.gif with Pillow, .mp4 with ffmpeg);
     returns the number of frames.  Needs matplotlib (the ``plot`` extra)."""
-    from deathsphere.plot import _matplotlib
+    from deathsphere.render.figures import import_matplotlib
 
-    _matplotlib()
+    import_matplotlib()
     from matplotlib import animation
     from matplotlib.figure import Figure
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection

@@ -1,10 +1,10 @@
 """Terminal character plot of the allowed (theta, alpha) region of horizontal
-wheel orbits -- McDonald (1993) figure "alpha_wh" in 80 columns.
+wheel orbits -- McDonald (1993) figure "alpha_wh" in 80 columns -- drawn
+from a :class:`deathsphere.results.region_map.CellMap` (this module computes
+nothing: the cells' verdicts and the boundary crossings come with the map).
 
-theta runs along x from 0 to 180 deg, alpha up y.  The boundary curves
-(root-found by :mod:`deathsphere.physics.region`, along columns *and* rows so
-that steep stretches have no gaps) are drawn with one character each and the
-allowed region is shaded:
+theta runs along x from 0 to 180 deg, alpha up y.  The boundary curves are
+drawn with one character each and the allowed region is shaded:
 
     #  eq. (0)   the wheel fits (eq. (81) outside)
     =  eq. (29)  Omega^2 = 0 (alpha = 90 deg) or a pole (alpha = 0, r' = -k a cos(alpha)/(2k+1))
@@ -12,41 +12,41 @@ allowed region is shaded:
     m  mu_required = mu        (only with a friction limit)
     g  g-load = max_g          (only with a g-load limit)
     .  allowed: a feasible orbit at the cell's centre
-    x  allowed but linearly unstable (only with ``stability=True``)
-    ?  allowed, stability unknown (only with ``stability=True``; rare)
+    x  allowed but linearly unstable (only with stability)
+    ?  allowed, stability unknown (only with stability; rare)
 
-A cell is shaded when its centre is feasible (status ``ok`` of
-:func:`deathsphere.physics.wheel.horizontal_orbit`, and g-load <= max_g); a
-boundary character replaces the shading where a curve crosses the cell.
-With ``stability=True`` the feasible cells are split by the verdict of
-:func:`deathsphere.physics.stability.wheel_stability` at the cell's centre
-(exact linearisation, beyond the paper: docs/stability.md).
+A cell is shaded when its centre is feasible; a boundary character
+replaces the shading where a curve crosses the cell (a root on one of the
+map's sample lines through it).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from deathsphere.constants import STANDARD_GRAVITY
-from deathsphere.physics import region
-from deathsphere.physics.stability import Verdict, wheel_stability
+from deathsphere.physics.region import BOUNDARY_LABELS
+
+if TYPE_CHECKING:
+    from deathsphere.results.region_map import CellMap
 
 #: Character and legend text of each boundary, in drawing order (later wins).
-MARKS = {name: (ch, region.BOUNDARY_LABELS[name][0])
+MARKS = {name: (ch, BOUNDARY_LABELS[name][0])
          for name, ch in (("eq29", "="), ("eq0", "#"), ("eq33", "*"), ("mu", "m"), ("max_g", "g"))}
 SHADE = "."
 UNSTABLE = "x"
 UNKNOWN = "?"
-OUTSIDE_MARKS = {name: region.BOUNDARY_LABELS[name][1] for name in ("eq0", "eq33")}
+OUTSIDE_MARKS = {name: BOUNDARY_LABELS[name][1] for name in ("eq0", "eq33")}
 
 #: rich styles for :func:`to_rich`.
 STYLES = {"=": "bold blue", "#": "bold red", "*": "bold magenta", "m": "bold green",
           "g": "bold yellow", SHADE: "cyan", UNSTABLE: "red", UNKNOWN: "yellow"}
 
 _LEFT = 6            # "  90 |"
-_SUB = 6             # root samples per cell along each axis
+#: Narrowest map drawn [characters].
+MIN_WIDTH = 40
 
 
 @dataclass
@@ -74,68 +74,55 @@ def _fmt(x):
     return f"{x:g}"
 
 
-def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=STANDARD_GRAVITY,
-             width=80, rows=None, alpha_range_deg=None, stability=False):
-    """Character map of the allowed (theta, alpha) region.
+def columns_for_width(width: int) -> int:
+    """Theta columns of a map ``width`` characters wide (>= MIN_WIDTH):
+    the cell grid to ask :func:`deathsphere.results.region_map.cell_map` for."""
+    if width < MIN_WIDTH:
+        raise ValueError(f"width must be >= {MIN_WIDTH} characters, got {width}")
+    return width - _LEFT - 2
 
-    Parameters
-    ----------
-    a, r : float, [m]   wheel and sphere radii (only a/r matters)
-    k : float, [-]      inertia factor
-    outside : bool      wheel outside the sphere (sec. 3)
-    mu, max_g : float   friction coefficient and g-load limits (inf: none)
-    width : int         total width in characters (>= 40)
-    rows : int          rows of the plot grid (default: 19 inside, 28 outside)
-    alpha_range_deg : (lo, hi) alpha axis [deg] (default 0..90 inside,
-        0..270 outside, where the paper's allowed regions lie)
-    stability : bool    mark allowed cells whose orbit is linearly unstable
-        with ``x`` (stable ones keep the shade ``.``); one batched call of
-        :func:`deathsphere.physics.stability.wheel_stability` for all
-        allowed cell centres (beyond the paper, docs/stability.md)
+
+def char_map(cells: CellMap) -> CharMap:
+    """Character map of the allowed (theta, alpha) region in ``cells``:
+    one character per cell, the frame, axis labels and a legend, in
+    ``len(cells.theta_deg) + 8`` columns (see :func:`columns_for_width`).
+    With ``cells.stability`` the allowed cells whose orbit is linearly
+    unstable are marked ``x`` (stable ones keep the shade ``.``).
 
     Returns
     -------
     CharMap (``str(result)`` or ``result.lines`` to print).
     """
-    if width < 40:
-        raise ValueError(f"width must be >= 40 characters, got {width}")
-    lo_d, hi_d = alpha_range_deg or ((0.0, 270.0) if outside else (0.0, 90.0))
-    nrow = rows or (28 if outside else 19)
-    ncol = width - _LEFT - 2
-    # rows are centred on lo_d .. hi_d inclusive, so alpha = lo_d and hi_d
-    # (eq. 29's alpha = 0 and 90 deg inside) fall on rows
-    alpha_c = np.linspace(hi_d, lo_d, nrow)
+    alpha_c, theta_c = cells.alpha_deg, cells.theta_deg
+    nrow, ncol = alpha_c.size, theta_c.size
+    width = ncol + _LEFT + 2
+    lo_d, hi_d = cells.alpha_range_deg
     dal = (hi_d - lo_d) / (nrow - 1)
     dth = 180.0 / ncol
-    theta_c = (np.arange(ncol) + 0.5) * dth
+    a, r, k, mu, max_g = cells.a, cells.r, cells.k, cells.mu, cells.max_g
+    outside, stability = cells.outside, cells.stability
 
-    th_c, al_c = np.meshgrid(np.deg2rad(theta_c), np.deg2rad(alpha_c))
-    ok = region.feasible(th_c, al_c, a, r, k, g, outside=outside, mu=mu, max_g=max_g)
+    ok = cells.feasible
     grid = np.where(ok, SHADE, " ").astype("<U1")
     if stability:
-        verdict = wheel_stability(th_c[ok], al_c[ok], a, r, k, g, outside)["verdict"]
-        grid[ok] = np.select([verdict == Verdict.UNSTABLE, verdict == Verdict.UNKNOWN],
-                             [UNSTABLE, UNKNOWN], SHADE)
+        grid[cells.unstable] = UNSTABLE
+        grid[cells.unknown] = UNKNOWN
 
     # boundaries: alpha roots on sub-column lines, theta roots on sub-row lines
-    a_top, a_bot = np.deg2rad(hi_d + dal / 2), np.deg2rad(lo_d - dal / 2)
-    th_s = np.deg2rad((np.arange(ncol * _SUB) + 0.5) * dth / _SUB)
-    al_s = np.linspace(a_top, a_bot, nrow * _SUB + 1)[:-1] - np.deg2rad(dal) / (2 * _SUB)
-    win = (np.full(th_s.shape, a_bot), np.full(th_s.shape, a_top))
-    by_col = region.boundary_alphas(th_s, a, r, k, outside=outside, mu=mu, max_g=max_g, window=win)
-    by_row = region.boundary_thetas(al_s, a, r, k, outside=outside, mu=mu, max_g=max_g)
+    # (the k-th sample line lies in cell k // samples)
+    sub = cells.samples
     legend = {}
     for name, (ch, text) in MARKS.items():
-        if name not in by_col:
+        if name not in cells.alpha_roots_deg:
             continue
         marked = np.zeros(grid.shape, dtype=bool)
-        al_roots = np.rad2deg(by_col[name])
-        j = np.broadcast_to((np.arange(th_s.size) // _SUB)[:, None], al_roots.shape)
+        al_roots = cells.alpha_roots_deg[name]
+        j = np.broadcast_to((np.arange(cells.sample_theta_deg.size) // sub)[:, None], al_roots.shape)
         i = np.floor((hi_d + dal / 2 - al_roots) / dal)
         f = np.isfinite(i) & (i >= 0) & (i < nrow)
         marked[i[f].astype(int), j[f]] = True
-        th_roots = np.rad2deg(by_row[name])
-        i = np.broadcast_to((np.arange(al_s.size) // _SUB)[:, None], th_roots.shape)
+        th_roots = cells.theta_roots_deg[name]
+        i = np.broadcast_to((np.arange(cells.sample_alpha_deg.size) // sub)[:, None], th_roots.shape)
         j = np.floor(th_roots / dth)
         f = np.isfinite(j) & (j >= 0) & (j < ncol)
         marked[i[f], j[f].astype(int)] = True
@@ -170,9 +157,8 @@ def char_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=STANDARD_GRAV
     lines.append(" " * (_LEFT - 1) + "".join(ticks).rstrip())
     lines.append(" " * (_LEFT - 1) + "theta [deg]".center(ncol).rstrip())
     if stability:
-        cells = set(grid[ok])
         shades = [f"{SHADE} allowed, stable", f"{UNSTABLE} allowed, unstable"]
-        if UNKNOWN in cells:
+        if UNKNOWN in set(grid[ok]):
             shades.append(f"{UNKNOWN} allowed, stability unknown")
     else:
         shades = [f"{SHADE} allowed"]

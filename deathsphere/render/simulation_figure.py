@@ -5,7 +5,7 @@ Beyond the paper: the time series come from
 :mod:`deathsphere.simulation` (exact equations of motion, docs/simulation.md).
 matplotlib is optional (``pip install 'deathsphere[plot]'``) and imported
 only when a figure is made; without it :func:`plot_simulation` raises
-:class:`deathsphere.plot.PlotExtraMissing`.
+:class:`deathsphere.render.figures.PlotExtraMissing`.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.model import Table
-from deathsphere.plot import FORMATS, PlotExtraMissing, _format, _matplotlib
+from deathsphere.render.figures import FORMATS, PlotExtraMissing, figure_format, import_matplotlib
 
 __all__ = ["plot_simulation", "PlotExtraMissing", "FORMATS", "MAX_LEGEND"]
 
@@ -55,12 +55,12 @@ def plot_simulation(series: Table, summary: Table | None = None, *, output=None,
     ValueError        for an output name that is not .png/.svg/.pdf, or a
                       series without the needed columns
     """
-    fmt = _format(output) if output is not None else None
+    fmt = figure_format(output) if output is not None else None
     needed = ("input_row", "t_s", "phi_deg", "theta_deg", "alpha_deg", "normal_per_mass_m_s2")
     missing = [c for c in needed if c not in series]
     if missing:
         raise ValueError(f"series lacks columns: {', '.join(missing)}")
-    _matplotlib()
+    import_matplotlib()
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 

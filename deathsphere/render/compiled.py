@@ -2,7 +2,7 @@
 pyarrow (the optional ``fast`` extra: ``pip install 'deathsphere[fast]'``).
 
 The CSV they write is byte for byte the pure-Python writer's
-(:func:`deathsphere.render.csv_text`); only the speed differs.  How that
+(:func:`deathsphere.render.formats.csv_text`); only the speed differs.  How that
 is kept exact:
 
 * **Floats.**  polars writes the shortest digit string that round-trips,
@@ -35,6 +35,7 @@ from typing import Iterable
 import numpy as np
 
 from deathsphere.model import TEXT_COLUMNS, Table
+from deathsphere.render.formats import column_strings
 
 #: polars writes |x| in this range differently from repr (exponent
 #: 'e-9' for 'e-09'; positional below 1e-4 where repr switches to an exponent).
@@ -93,8 +94,6 @@ def _quote(pl, s):
 
 def _series(pl, name: str, values: np.ndarray):
     """One column as a polars series that writes the pure-Python writer's text."""
-    from deathsphere.render import _column_strings
-
     kind = values.dtype.kind
     if kind == "f":
         values = values.astype(np.float64, copy=False)
@@ -117,11 +116,11 @@ def _series(pl, name: str, values: np.ndarray):
         if s is not None and s.dtype == pl.Int64 and name not in TEXT_COLUMNS:
             return s
     # anything else (bools, mixed objects): the pure-Python text, already quoted
-    return pl.Series(name, _column_strings(name, values), dtype=pl.String)
+    return pl.Series(name, column_strings(name, values), dtype=pl.String)
 
 
 def csv_text(table: Table, header: bool) -> str:
-    """One chunk as CSV text, equal to :func:`deathsphere.render.csv_text`."""
+    """One chunk as CSV text, equal to :func:`deathsphere.render.formats.csv_text`."""
     import polars as pl
 
     names = table.names

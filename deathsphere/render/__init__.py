@@ -1,0 +1,22 @@
+"""The output side: result tables (and the map and simulation data) as
+text, files and figures.  Nothing here computes physics; every module takes
+tables or data objects made by :mod:`deathsphere.model` and
+:mod:`deathsphere.results`.
+
+* :mod:`~deathsphere.render.formats`: CSV, JSON and NDJSON writers (no rich,
+  so that file output starts fast); :mod:`~deathsphere.render.compiled`: the
+  same CSV through polars, and Parquet through pyarrow (the ``fast`` extra).
+* :mod:`~deathsphere.render.fit_table`: the pieces of every terminal view
+  (:class:`~deathsphere.render.fit_table.FitTable`, number text, the row cap);
+  the views: :mod:`~deathsphere.render.orbit_views` (orbits, vertical orbits,
+  any table), :mod:`~deathsphere.render.paper_views` (Table 1, the checklist,
+  stability), :mod:`~deathsphere.render.simulation_view`.
+* :mod:`~deathsphere.render.charplot`: the terminal character map of the
+  allowed region.
+* :mod:`~deathsphere.render.figures` (the optional matplotlib),
+  :mod:`~deathsphere.render.map_figure`,
+  :mod:`~deathsphere.render.simulation_figure`: figures.
+
+This package imports nothing itself: importing a submodule pays only for
+what that submodule needs.
+"""

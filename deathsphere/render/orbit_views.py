@@ -1,0 +1,358 @@
+"""Terminal views of orbits: every quantity of one orbit, a summary row
+per orbit for many, the vertical orbits, and any other result table column
+by column (:func:`write_rich_table` picks)."""
+
+from __future__ import annotations
+
+import numpy as np
+from rich.console import Console
+from rich.markup import escape
+
+from deathsphere.model import TEXT_COLUMNS, Table
+from deathsphere.render.fit_table import (
+    MAX_TERMINAL_ROWS,
+    STABILITY_STYLE,
+    Column,
+    FitTable,
+    first_rows,
+    format_number,
+    is_undefined,
+    row_cap_line,
+    row_record,
+    row_total,
+    status_legend,
+    status_text,
+)
+
+
+#: (column, label, unit, source) for the one-orbit view.
+ORBIT_FIELDS = (
+    ("r_prime_m", "r' centre to axis", "m", "eq. 8b"),
+    ("omega_rad_s", "Ω orbital rate", "rad/s", "eq. 29"),
+    ("period_s", "period 2π/Ω", "s", ""),
+    ("v_cm_m_s", "v_cm = |r'|Ω centre speed", "m/s", ""),
+    ("spin_rad_s", "ω₁ = r'Ω/a wheel spin", "rad/s", "eq. 13"),
+    ("omega3_rad_s", "ω₃ = -Ω sin α", "rad/s", "eq. 13"),
+    ("branch", "branch of eq. 55 (0 slow, 1 fast)", "", "eq. 55"),
+    ("omega3_min_real_rad_s", "least |ω₃| for a real orbit", "rad/s", "eq. 56"),
+    ("omega3_min_contact_rad_s", "least |ω₃| for contact", "rad/s", "eq. 58/59"),
+    ("accel_m_s2", "centre acceleration", "m/s²", "eq. 32"),
+    ("accel_g", "centre acceleration", "g", "eq. 36"),
+    ("normal_per_mass_m_s2", "normal force / m", "m/s²", "eq. 32"),
+    ("friction_per_mass_m_s2", "friction / m (+ down)", "m/s²", "eq. 32"),
+    ("mu_required", "μ required", "", "eq. 35"),
+    ("growth_rate_1_s", "growth rate (max Re λ)", "1/s", "exact"),
+    ("freq_slow_rad_s", "nutation, slow (turning frame)", "rad/s", "exact"),
+    ("freq_fast_rad_s", "nutation, fast (turning frame)", "rad/s", "exact"),
+)
+
+OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
+
+#: Labels that differ by body: (body, column) -> (label, source); None hides the row.
+BODY_LABELS = {
+    ("sphere", "r_prime_m"): ("r' centre to axis, (r ∓ a) sin θ", "eq. 42"),
+    ("sphere", "accel_m_s2"): ("centre acceleration", ""),
+    ("sphere", "spin_rad_s"): ("rolling rate v_cm/a", ""),
+    ("sphere", "omega3_rad_s"): ("ω₃ spin about contact normal", "eq. 55"),
+    ("sphere", "omega_rad_s"): ("Ω orbital rate (signed)", "eq. 55"),
+    ("sphere", "accel_g"): ("centre acceleration", ""),
+    ("sphere", "normal_per_mass_m_s2"): ("normal force / m", "eq. 57"),
+    ("sphere", "friction_per_mass_m_s2"): ("friction / m (+ down)", "eq. 57"),
+    ("particle", "omega_rad_s"): ("Ω orbital rate", "Ω² = -g/(r cos θ)"),
+    ("particle", "r_prime_m"): ("r' = r sin θ", ""),
+    ("particle", "accel_m_s2"): ("centre acceleration", ""),
+    ("particle", "normal_per_mass_m_s2"): ("normal force / m", ""),
+    ("particle", "friction_per_mass_m_s2"): None,
+    ("particle", "spin_rad_s"): None,
+    ("particle", "omega3_rad_s"): None,
+    ("particle", "accel_g"): ("centre acceleration", ""),
+    ("particle", "mu_required"): None,
+    ("wheel", "branch"): None,
+    ("wheel", "omega3_min_real_rad_s"): None,
+    ("wheel", "omega3_min_contact_rad_s"): None,
+    ("particle", "omega3_min_real_rad_s"): None,
+    ("particle", "omega3_min_contact_rad_s"): None,
+    ("particle", "branch"): None,
+}
+
+
+def _setup_line(get: dict) -> str:
+    return (f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
+            f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
+
+
+def quantity_table(title: str, get: dict, rows, ok_text: str, notes=()) -> FitTable:
+    """The one-result view: ``rows`` of (label, value, unit, source), then
+    the stability (if computed) and the status; the reason under it.  On a
+    narrow console the source column goes first."""
+    rows = list(rows)
+    if get.get("stability"):
+        rows.append(("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "",
+                     get["stability_method"]))
+    rows.append(("status", status_text(get["status"]), "", ""))
+    labels, values, units, sources = (list(c) for c in zip(*rows))
+    columns = [Column("quantity", "quantity", labels, "left"), Column("value", "value", values),
+               Column("unit", "unit", units, "left"), Column("source", "source", sources, "left", "dim")]
+    reason = f"[dim italic]{get['status']}: {escape(get['reason'] or ok_text)}[/dim italic]"
+    return FitTable(columns, drop_order=("source",), title=title, footer=[reason, *notes])
+
+
+def spin_needed_line(get: dict) -> str:
+    """Sphere: the least |ω₃| for an orbit and for contact, as a sentence."""
+    real, contact = get["omega3_min_real_rad_s"], get["omega3_min_contact_rad_s"]
+    where = f"θ = {format_number(get['theta_deg'])}°"
+    contact_text = ("no spin keeps contact" if is_undefined(contact)
+                    else f"≥ {format_number(contact)} rad/s for contact (eqs. 58/59)")
+    return f"needs |ω₃| ≥ {format_number(real)} rad/s for an orbit (eq. 56), {contact_text} at {where}"
+
+
+def spin_too_low(get: dict) -> bool:
+    """A rolling sphere with no orbit (or no contact) because |ω₃| is below
+    the least that gives one; not, say, the missing second branch on the
+    equator, or the slow branch of a spin that is fast enough."""
+    if get.get("body") != "sphere" or "omega3_min_real_rad_s" not in get or is_undefined(get.get("omega3_rad_s")):
+        return False
+    spin = abs(get["omega3_rad_s"])
+    if get["status"] == "no_orbit":
+        return spin < get["omega3_min_real_rad_s"]
+    if get["status"] == "no_contact":
+        least = get["omega3_min_contact_rad_s"]
+        return is_undefined(least) or spin < least
+    return False
+
+
+def one_orbit_table(table: Table, row: int = 0) -> FitTable:
+    """A two-column view of every quantity of one orbit (undefined ones as —)."""
+    get = row_record(table, row)
+    angles = f"θ = {format_number(get['theta_deg'])}°"
+    if not is_undefined(get["alpha_deg"]):
+        angles += f", α = {format_number(get['alpha_deg'])}°"
+    rows = []
+    for col, label, unit, source in ORBIT_FIELDS:
+        override = BODY_LABELS.get((get["body"], col), (label, source))
+        if col in get and override is not None:
+            rows.append((override[0], format_number(get[col], 5), unit, override[1]))
+    mu = get.get("mu_available")
+    rows.append(("μ available", "∞" if is_undefined(mu) else format_number(mu), "", "--mu"))
+    notes = []
+    if spin_too_low(get):
+        notes.append(spin_needed_line(get))
+    return quantity_table(f"{get['body']} {get['side']}, {angles}\n{_setup_line(get)}", get, rows, OK_REASON,
+                          notes)
+
+
+#: Headers of the many-orbit terminal view (units on the last line).
+SUMMARY_HEADERS = {
+    "input_row": "#", "theta_deg": "θ°", "alpha_deg": "α°", "branch": "br", "omega3_rad_s": "ω₃\nrad/s",
+    "status": "status", "omega_rad_s": "Ω\nrad/s", "v_cm_m_s": "v_cm\nm/s", "spin_rad_s": "ω₁\nrad/s",
+    "accel_g": "accel\ng", "mu_required": "μ\nrequired", "stability": "stability",
+    "omega3_min_real_rad_s": "|ω₃| min\norbit\nrad/s", "omega3_min_contact_rad_s": "|ω₃| min\ncontact\nrad/s",
+}
+#: Columns of the many-orbit view per body, in display order.  The ones not
+#: in SUMMARY_DROP_ORDER identify the row (#, θ, α or branch, status) and are
+#: always shown.
+SUMMARY_COLUMNS = {
+    "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s",
+              "accel_g", "mu_required", "stability"),
+    "sphere": ("input_row", "theta_deg", "branch", "omega3_rad_s", "status", "omega_rad_s", "v_cm_m_s",
+               "omega3_min_real_rad_s", "omega3_min_contact_rad_s", "mu_required", "stability"),
+    "particle": ("input_row", "theta_deg", "status", "omega_rad_s", "v_cm_m_s", "accel_g"),
+    "mixed": ("input_row", "theta_deg", "alpha_deg", "branch", "status", "omega_rad_s", "v_cm_m_s",
+              "mu_required", "stability"),
+}
+#: What a narrow console leaves out first, per body.  Stability and μ are
+#: verdicts on an orbit that exists, so they go before the orbit itself
+#: (Ω, v_cm).  For a sphere the least spins go first: they depend on θ
+#: alone, not on the row, and for the rows that need them (no orbit, no
+#: contact) a line under the table gives them anyway; its own ω₃ is an
+#: input and goes last.
+SUMMARY_DROP_ORDER = {
+    "wheel": ("stability", "mu_required", "accel_g", "v_cm_m_s", "omega_rad_s"),
+    "sphere": ("omega3_min_contact_rad_s", "omega3_min_real_rad_s", "stability", "mu_required", "v_cm_m_s",
+               "omega_rad_s", "omega3_rad_s"),
+    "particle": ("accel_g", "v_cm_m_s", "omega_rad_s"),
+    "mixed": ("stability", "mu_required", "v_cm_m_s", "omega_rad_s"),
+}
+#: Lines of "needs |ω₃| ≥ ..." under a many-sphere table; the columns carry the rest.
+MAX_SPIN_LINES = 3
+
+
+def _summary_cells(col: str, values: list) -> list[str]:
+    if col == "status":
+        return [status_text(v) for v in values]
+    if col == "stability":
+        return [STABILITY_STYLE.get(v, v) for v in values]
+    if col in TEXT_COLUMNS:
+        return [escape(str(v)) for v in values]
+    return [format_number(v) for v in values]
+
+
+def _spin_lines(table: Table) -> list[str]:
+    """For the spheres shown whose spin is too low for an orbit or for
+    contact: the least spin that would do, once per setup and θ."""
+    if "omega3_min_real_rad_s" not in table:
+        return []
+    rows = [i for i, (b, s) in enumerate(zip(table["body"].tolist(), table["status"].tolist()))
+            if b == "sphere" and s != "ok"]
+    setup_cols = ("a_m", "r_m", "k", "g_m_s2", "side")
+    first = {}
+    for i in rows:
+        get = row_record(table, i)
+        if spin_too_low(get):
+            first.setdefault(tuple(get[c] for c in ("theta_deg", *setup_cols)), i)
+    several_setups = len({key[1:] for key in first}) > 1
+    lines = []
+    for key, i in list(first.items())[:MAX_SPIN_LINES]:
+        get = row_record(table, i)
+        line = spin_needed_line(get)
+        if several_setups:
+            line += f" ({get['side']}, {_setup_line(get)})"
+        lines.append(line)
+    if len(first) > MAX_SPIN_LINES:
+        lines.append(f"… and at {len(first) - MAX_SPIN_LINES} more θ: see the |ω₃| min columns "
+                     f"(omega3_min_real_rad_s, omega3_min_contact_rad_s)")
+    return lines
+
+
+def many_orbits_table(table: Table, title: str | None = None, total_rows: int | None = None) -> FitTable:
+    """One summary row per orbit (the first MAX_TERMINAL_ROWS of
+    ``total_rows``), then each distinct reason once."""
+    total = row_total(table, total_rows)
+    head = first_rows(table, MAX_TERMINAL_ROWS)
+    bodies = set(head["body"].tolist())
+    kind = bodies.pop() if len(bodies) == 1 else "mixed"
+    columns = [Column(col, SUMMARY_HEADERS[col], _summary_cells(col, head[col].tolist()),
+                      "left" if col in TEXT_COLUMNS else "right")
+               for col in SUMMARY_COLUMNS[kind] if col in head]
+    footer = [row_cap_line(len(head), total)] if total > len(head) else []
+    return FitTable(columns, SUMMARY_DROP_ORDER[kind], title=title, footer=footer,
+                    notes=[*status_legend(head), *_spin_lines(head)])
+
+
+#: Column-name endings that are units, longest first.
+UNIT_SUFFIXES = (("_m_s2", "m/s²"), ("_rad_s", "rad/s"), ("_m_s", "m/s"), ("_1_s", "1/s"), ("_deg", "deg"),
+                 ("_s", "s"), ("_m", "m"), ("_g", "g"))
+#: Columns of any table that say which row it is: never left out.
+GENERIC_KEYS = frozenset({"input_row", "curve", "theta_deg", "phi_deg", "interval", "status", "found"})
+
+
+def column_header(name: str) -> str:
+    """``v_min_m_s`` -> ``v min`` over ``m/s``: the unit stays in the header."""
+    for suffix, unit in UNIT_SUFFIXES:
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return f"{_words(name[:-len(suffix)])}\n{unit}"
+    return _words(name)
+
+
+def _words(stem: str) -> str:
+    # v_cm is a symbol, not two words; "per mass" is the "/ m" of the orbit views
+    return stem.replace("v_cm", "\0").replace("_per_mass", " / m").replace("_", " ").replace("\0", "v_cm")
+
+
+def _plain_cell(v, digits: int = 4) -> str:
+    if isinstance(v, (str, bool, np.bool_)):
+        return escape(str(v))
+    return format_number(v, digits)
+
+
+def generic_table(table: Table, title: str | None = None, total_rows: int | None = None) -> FitTable:
+    """Any table: one column per field (for results that are not orbits).
+
+    Columns equal in every row (the inputs) go to a line under it, and a
+    status's reason to a legend.  On a narrow console the columns are left
+    out from the right (these tables put their inputs first), keeping the
+    first column and any of GENERIC_KEYS."""
+    if len(table) == 1 and not (total_rows or 0) > 1:
+        names = [(n, v) for n, v in row_record(table).items()]
+        return FitTable([Column("quantity", "quantity", [n for n, _ in names], "left"),
+                         Column("value", "value", [_plain_cell(v, 6) for _, v in names])], title=title)
+    total = row_total(table, total_rows)
+    head = first_rows(table, MAX_TERMINAL_ROWS)
+    same = [n for n in table.names if _constant(table[n])]
+    legend = status_legend(head) if "status" in table and "reason" in table else []
+    hidden = set(same) | ({"reason"} if legend or "status" in table else set())
+    names = [n for n in table.names if n not in hidden]
+    columns = [Column(n, column_header(n), [_plain_cell(v) for v in head[n].tolist()],
+                      "left" if head[n].dtype == object else "right") for n in names]
+    keys = {names[0], *GENERIC_KEYS} if names else set()
+    drop_order = [n for n in reversed(names) if n not in keys]
+    first = row_record(head) if same else {}
+    constants = ", ".join(f"{n} = {_plain_cell(first[n])}" for n in same if first[n] != "")
+    footer = [row_cap_line(len(head), total)] if total > len(head) else []
+    notes = [f"[dim]{constants}[/dim]"] if constants else []
+    return FitTable(columns, drop_order, title=title, footer=footer, notes=[*notes, *legend])
+
+
+def _constant(values: np.ndarray) -> bool:
+    if len(values) == 0:
+        return False
+    if values.dtype.kind == "f":
+        return bool((values == values[0]).all() or np.isnan(values).all())
+    if values.dtype.kind in "iub":
+        return bool((values == values[0]).all())
+    first = str(values[0])
+    return all(str(v) == first for v in values.tolist())
+
+
+def write_rich_table(table: Table, console: Console, title: str | None = None,
+                     total_rows: int | None = None) -> int:
+    """Terminal view: every quantity for one orbit, a summary row per orbit
+    for many; any other table column by column.  At most MAX_TERMINAL_ROWS
+    rows are formatted and printed, with a line saying how many there are
+    (``total_rows`` when the caller hands over only the first rows of a
+    longer result).  Returns the number of rows given."""
+    total = row_total(table, total_rows)
+    if "body" not in table or "status" not in table:
+        console.print(generic_table(table, title, total))
+    elif len(table) == 1 and total == 1:
+        console.print(one_orbit_table(table))
+    else:
+        console.print(many_orbits_table(table, title, total))
+    return len(table)
+
+
+#: (column, label, unit, source) for the vertical-orbit view.
+VERTICAL_FIELDS = (
+    ("r_prime_m", "r' radius of the centre's circle", "m", "eq. 8b"),
+    ("v_cm_m_s", "speed at the top", "m/s", ""),
+    ("v_top_min_m_s", "least top speed for contact", "m/s", "eq. 28a"),
+    ("omega_rad_s", "rate at the top", "rad/s", ""),
+    ("v_bottom_m_s", "speed at the bottom", "m/s", "eq. 27"),
+    ("period_s", "lap time", "s", "eq. 27"),
+    ("accel_g", "largest acceleration (bottom)", "g", ""),
+    ("normal_top_per_mass_m_s2", "normal force / m at the top", "m/s²", "eq. 28"),
+    ("normal_bottom_per_mass_m_s2", "normal force / m at the bottom", "m/s²", "eq. 28"),
+    ("mu_top", "μ at top and bottom, |cot θ|", "", "eq. 28b"),
+    ("phi_worst_deg", "worst point φ (μ peaks)", "deg", ""),
+    ("mu_required", "μ required (at the worst point)", "", "eq. 28b"),
+    ("phi_slip_deg", "first slip at φ (with --mu)", "deg", ""),
+    ("phi_leave_deg", "leaves the surface at φ", "deg", "eq. 82"),
+    ("growth_rate_1_s", "growth rate of a perturbation", "1/s", "floquet"),
+)
+
+#: Columns of the many-vertical-orbit view: (column, header).
+VERTICAL_COLUMNS = (("input_row", "#"), ("theta_deg", "θ°"), ("v_cm_m_s", "v top\nm/s"), ("status", "status"),
+                    ("v_top_min_m_s", "v min\nm/s"), ("period_s", "lap\ns"), ("phi_worst_deg", "worst\nφ°"),
+                    ("mu_required", "μ\nrequired"), ("phi_leave_deg", "leaves\nφ°"))
+#: Left out first on a narrow console: where μ peaks and the lap time
+#: describe an orbit that works; where it leaves the wall, the μ it needs
+#: and the least top speed say whether it works at all.
+VERTICAL_DROP_ORDER = ("phi_worst_deg", "period_s", "phi_leave_deg", "mu_required", "v_top_min_m_s")
+
+
+def vertical_view(table: Table, total_rows: int | None = None):
+    """One vertical orbit: a quantity per line; several: one line each
+    (the first MAX_TERMINAL_ROWS of them)."""
+    if len(table) == 1 and not (total_rows or 0) > 1:
+        get = row_record(table)
+        rows = [(label, format_number(get[col], 5), unit, source)
+                for col, label, unit, source in VERTICAL_FIELDS if not is_undefined(get[col])]
+        title = f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n{_setup_line(get)}"
+        return quantity_table(title, get, rows, "keeps contact all round with enough friction")
+    total = row_total(table, total_rows)
+    head = first_rows(table, MAX_TERMINAL_ROWS)
+    columns = [Column(col, header, _summary_cells(col, head[col].tolist()), "left" if col == "status" else "right")
+               for col, header in VERTICAL_COLUMNS]
+    footer = [row_cap_line(len(head), total)] if total > len(head) else []
+    return FitTable(columns, VERTICAL_DROP_ORDER, title="Vertical orbits (eqs. 27-28b)", footer=footer,
+                    notes=status_legend(head))

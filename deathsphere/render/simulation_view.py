@@ -1,0 +1,47 @@
+"""Terminal view of a simulation: the summary of one simulated body."""
+
+from __future__ import annotations
+
+from rich import box
+from rich.table import Table as RichTable
+
+from deathsphere.model import Table
+from deathsphere.render.fit_table import format_number, is_undefined, row_record
+
+
+#: (column, label, unit) of the simulation summary view.
+SIMULATION_FIELDS = (
+    ("periods_simulated", "periods simulated", ""),
+    ("event_time_s", "event at t", "s"),
+    ("event_phi_deg", "event at phi", "deg"),
+    ("max_theta_drift_deg", "max drift of theta", "deg"),
+    ("max_alpha_drift_deg", "max drift of alpha", "deg"),
+    ("min_normal_per_mass_m_s2", "least normal force / m", "m/s²"),
+    ("max_mu_required", "most friction needed μ", ""),
+    ("max_abs_energy_drift", "max |energy drift| (relative)", ""),
+    ("max_constraint_residual", "max constraint residual", ""),
+    ("n_steps", "steps", ""),
+    ("wall_time_s", "wall time", "s"),
+)
+
+
+def simulation_view(summary: Table):
+    """The summary of one simulated body (the first row if several)."""
+    get = row_record(summary)
+    what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, θ = {format_number(get['theta_deg'])}°"
+            + (f", α = {format_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
+            + (f", kick {format_number(get['perturb_rad'])} rad" if get.get("perturb_rad") else ""))
+    out = RichTable(title=f"simulation: {what}\nsolve_ivp {get['method']}, rtol {get['rtol']:g}, "
+                          f"atol {get['atol']:g}, {get['frame']} frame",
+                    box=box.SIMPLE_HEAVY, title_justify="left")
+    for head in ("quantity", "value", "unit"):
+        out.add_column(head, justify="right" if head == "value" else "left", no_wrap=True)
+    for col, label, unit in SIMULATION_FIELDS:
+        if col in get and not is_undefined(get[col]):
+            out.add_row(label, format_number(get[col], 4), unit)
+    status = get["status"]
+    style = {"completed": "green", "contact_lost": "red", "slips": "yellow"}.get(status, "magenta")
+    out.add_row("status", f"[{style}]{status}[/{style}]", "")
+    out.caption = f"{status}: {get['reason']}" if get.get("reason") else None
+    out.caption_justify = "left"
+    return out
