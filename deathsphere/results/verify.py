@@ -583,23 +583,29 @@ def run(ids: list[str] | None = None, progress: Callable[[Claim], None] | None =
     """Check the selected claims (all by default), in the order of the paper.
 
     ``progress`` is called with each claim before it is checked (with
-    ``jobs`` > 1: as its finding arrives, in order).  ``jobs`` > 1 checks the
-    claims on that many processes (:func:`deathsphere.parallel.ordered_map`);
-    each claim is computed exactly as in one process, so the table is the
-    same."""
+    ``jobs`` > 1: as its finding arrives).  ``jobs`` > 1 checks the claims
+    on that many processes (:func:`deathsphere.parallel.ordered_map`), the
+    slow ones first so that no process is left with one at the end, and
+    the claims that share cached work in one process; each claim is
+    computed exactly as in one process, so the table is the same."""
     chosen = [c for c in CLAIMS if ids is None or c.id in ids]
     unknown = sorted(set(ids or []) - {c.id for c in CLAIMS})
     if unknown:
         raise ValueError(f"unknown claim {unknown[0]!r}; known: {', '.join(c.id for c in CLAIMS)}")
-    found = []
     if jobs > 1 and len(chosen) > 1:
         from deathsphere.parallel import ordered_map
 
-        for c, finding in zip(chosen, ordered_map(check, [c.id for c in chosen], jobs)):
-            if progress:
-                progress(c)
-            found.append(finding)
+        by_id = {c.id: c for c in chosen}
+        done = {}
+        units = _work_units([c.id for c in chosen])
+        for unit, findings in zip(units, ordered_map(check_claims, units, jobs)):
+            for claim_id, finding in zip(unit, findings):
+                if progress:
+                    progress(by_id[claim_id])
+                done[claim_id] = finding
+        found = [done[c.id] for c in chosen]
     else:
+        found = []
         for c in chosen:
             if progress:
                 progress(c)
@@ -614,13 +620,32 @@ def run(ids: list[str] | None = None, progress: Callable[[Claim], None] | None =
     })
 
 
-def check(claim_id: str) -> Finding:
-    """The finding of one claim, by id (a picklable unit of work for
-    :func:`run` with several processes)."""
-    for c in CLAIMS:
-        if c.id == claim_id:
-            return c.check()
-    raise ValueError(f"unknown claim {claim_id!r}")
+#: claims that share cached work (the survey inside), checked by one process
+_SHARED = (("Q", "UP"),)
+#: the slowest claims (CPU time, slowest first), started first with jobs > 1
+_SLOW_FIRST = ("STAB-EQ", "FIG", "STAB-V", "Q", "S3-class")
+
+
+def _work_units(ids: list[str]) -> list[tuple[str, ...]]:
+    """``ids`` as units of work for several processes: groups of
+    :data:`_SHARED` together, the slow ones first, else in given order."""
+    grouped = [tuple(i for i in ids if i in group) for group in _SHARED]
+    units = [u for u in grouped if u] + [(i,) for i in ids if not any(i in g for g in _SHARED)]
+
+    def rank(unit):
+        return min((_SLOW_FIRST.index(i) for i in unit if i in _SLOW_FIRST), default=len(_SLOW_FIRST))
+
+    return sorted(units, key=rank)
+
+
+def check_claims(ids: tuple[str, ...]) -> list[Finding]:
+    """The findings of the claims ``ids``, in that order (a picklable unit
+    of work for :func:`run` with several processes)."""
+    by_id = {c.id: c for c in CLAIMS}
+    unknown = [i for i in ids if i not in by_id]
+    if unknown:
+        raise ValueError(f"unknown claim {unknown[0]!r}")
+    return [by_id[i].check() for i in ids]
 
 
 def counts(table: Table) -> dict[str, int]:

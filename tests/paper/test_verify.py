@@ -59,7 +59,9 @@ def test_several_processes_give_the_same_table(checklist):
     # the survey claims (Q, UP share a cached survey; S3-class the outside
     # one), a root-finding one and a cheap one, on two processes
     ids = ["T1-v", "Q", "UP", "E82", "S3-class", "E28"]
-    table = verify.run(ids, jobs=2)
+    told = []
+    table = verify.run(ids, jobs=2, progress=lambda claim: told.append(claim.id))
+    assert sorted(told) == sorted(ids)
     rows = [i for i, c in enumerate(checklist["id"]) if c in ids]       # the order of the paper
     for column in ("id", "verdict", "evidence"):
         assert list(table[column]) == [checklist[column][i] for i in rows]
