@@ -1,27 +1,39 @@
-"""Latency of two commands end to end, as a user sees it.
+"""Latency of every command end to end, as a user runs it, against its goal.
 
-    python benchmarks/bench_latency.py [--repeat 5]
+    python benchmarks/bench_latency.py [--repeat 5] [--slow-repeat 3] [--floquet]
 
-Runs as subprocesses (the interpreter of this run, ``-m deathsphere``),
-each ``--repeat`` times in turn, and prints the median wall time of
+Each command runs as a subprocess (the interpreter of this run,
+``-m deathsphere``) with its defaults and ``--format csv``, output to
+/dev/null, the commands interleaved round by round (a change of load hits
+all alike).  Printed per command: the median and least wall time, the
+median as a ratio to ``python -c "import numpy"`` measured in the same run
+(so that figures from a loaded machine can be compared), the peak resident
+memory of the command (its process and the worker processes it waited
+for), the goal and whether the median meets it.  ``--repeat`` runs each
+(default 5); ``verify`` and the two ``verify.run`` rows, the slow ones,
+run ``--slow-repeat`` times (default 3).
 
-  numpy       python -c "import numpy"          (the floor: interpreter + numpy)
-  vertical    deathsphere vertical --theta 90 --v-top 6   (with its Floquet stability)
-  vertical-   the same with --no-stability
-  simulate    deathsphere simulate --theta 60 --alpha 10 --periods 20
+Goals: orbit, table1, stability and map within 2.0x ``import numpy``;
+vertical within 0.5 s; simulate (20 periods of a Table 1 orbit) within
+0.5 s of integration (``wall_time_s`` of its summary, median of
+``--repeat`` runs with ``--summary-only``); verify within 5 s and 200 MB;
+limits within 1 s.  The sweep of a small grid and ``verify.run(jobs=1)``
+against ``verify.run(jobs=2)`` (the checklist on one and on two
+processes, through the Python API) are timed without a goal.
 
-and each median as a ratio to ``import numpy`` measured in the same run, so
-that figures from a loaded machine can be compared.  Then, in-process, the
-vertical orbit's Floquet analysis alone (stability.vertical_floquet, median
-of --repeat) against the method as first written (tests/physics/
-test_floquet.py: RK4 on all nine directions, one run), with the largest
-multiplier deviation between the two.  docs/performance.md quotes this
-script.
+``--floquet`` adds, in-process, the vertical orbit's Floquet analysis
+(stability.vertical_floquet, median of --repeat) against the method as
+first written (tests/physics/test_floquet.py: RK4 on all nine directions,
+one run), with the largest multiplier deviation between the two.
+docs/performance.md quotes this script.
 """
 
 from __future__ import annotations
 
 import argparse
+import csv
+import datetime
+import io
 import os
 import platform
 import statistics
@@ -30,38 +42,119 @@ import sys
 import time
 from pathlib import Path
 
+DS = [sys.executable, "-m", "deathsphere"]
+API_VERIFY = "from deathsphere.results import verify; verify.run(jobs={})"
+
+#: name -> (command, slow, goal); goal is ("x numpy", limit), ("s", limit) or None
 COMMANDS = {
-    "numpy": [sys.executable, "-c", "import numpy"],
-    "vertical": [sys.executable, "-m", "deathsphere", "vertical", "--theta", "90", "--v-top", "6"],
-    "vertical-": [sys.executable, "-m", "deathsphere", "vertical", "--theta", "90", "--v-top", "6",
-                  "--no-stability"],
-    "simulate": [sys.executable, "-m", "deathsphere", "simulate", "--theta", "60", "--alpha", "10",
-                 "--periods", "20"],
+    "import numpy": ([sys.executable, "-c", "import numpy"], False, None),
+    "orbit": (DS + ["orbit", "--theta", "60", "--alpha", "10", "--format", "csv"], False, ("x numpy", 2.0)),
+    "table1": (DS + ["table1", "--format", "csv"], False, ("x numpy", 2.0)),
+    "stability": (DS + ["stability", "--theta", "90", "--alpha", "45", "--format", "csv"], False,
+                  ("x numpy", 2.0)),
+    "map": (DS + ["map", "--format", "csv"], False, ("x numpy", 2.0)),
+    "vertical": (DS + ["vertical", "--theta", "90", "--v-top", "6", "--format", "csv"], False, ("s", 0.5)),
+    "simulate": (DS + ["simulate", "--theta", "60", "--alpha", "10", "--periods", "20", "--format", "csv"],
+                 False, None),
+    "limits": (DS + ["limits", "--mu", "1", "--max-g", "5", "--format", "csv"], False, ("s", 1.0)),
+    "sweep": (DS + ["sweep", "--theta", "0:180:1", "--alpha", "0:90:1", "--format", "csv"], False, None),
+    "verify": (DS + ["verify", "--format", "csv"], True, ("s", 5.0)),
+    "verify.run(jobs=1)": ([sys.executable, "-c", API_VERIFY.format(1)], True, None),
+    "verify.run(jobs=2)": ([sys.executable, "-c", API_VERIFY.format(2)], True, None),
 }
+#: the summary of the simulate run, for the integrator's own time
+SIMULATE_SUMMARY = DS + ["simulate", "--theta", "60", "--alpha", "10", "--periods", "20", "--summary-only",
+                         "--format", "csv"]
+SIMULATE_GOAL_S = 0.5
+VERIFY_GOAL_MB = 200.0
 
 
-def wall(cmd) -> float:
+def run(cmd, stdout=subprocess.DEVNULL) -> tuple[float, float]:
+    """Wall time [s] and peak resident memory [MB] of one run of ``cmd``
+    (the process and the children it waited for: os.wait4's rusage)."""
     t0 = time.perf_counter()
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return time.perf_counter() - t0
+    proc = subprocess.Popen(cmd, stdout=stdout, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    err = proc.stderr.read().decode(errors="replace")
+    proc.stderr.close()
+    if proc.returncode:
+        raise SystemExit(f"{' '.join(cmd)} failed ({proc.returncode}):\n{err}")
+    # ru_maxrss is in kB on Linux, in bytes on macOS
+    mb = usage.ru_maxrss / (1024 * 1024 if sys.platform == "darwin" else 1024)
+    return wall, mb
+
+
+def integration_time() -> float:
+    """The integrator's wall time [s] of the simulate command, from its summary."""
+    out = subprocess.run(SIMULATE_SUMMARY, check=True, capture_output=True, text=True).stdout
+    (row,) = csv.DictReader(io.StringIO(out))
+    return float(row["wall_time_s"])
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--repeat", type=int, default=5)
+    p.add_argument("--slow-repeat", type=int, default=3)
+    p.add_argument("--floquet", action="store_true", help="also the in-process Floquet comparison")
     args = p.parse_args()
-    print(f"python {platform.python_version()}, {platform.machine()}, {os.cpu_count()} CPUs, "
-          f"load average {os.getloadavg()[0]:.2f} at start")
-    times = {name: [] for name in COMMANDS}
-    for _ in range(args.repeat):                 # interleaved: load changes hit all alike
-        for name, cmd in COMMANDS.items():
-            times[name].append(wall(cmd))
-    med = {name: statistics.median(v) for name, v in times.items()}
-    print(f"\n{'command':>10} {'median s':>9} {'min s':>7} {'x import numpy':>15}")
-    for name in COMMANDS:
-        print(f"{name:>10} {med[name]:9.3f} {min(times[name]):7.3f} {med[name] / med['numpy']:15.2f}")
-    print(f"load average {os.getloadavg()[0]:.2f} at the end")
+    print(f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC, python {platform.python_version()}, "
+          f"{platform.machine()}, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.2f} at start")
+    walls = {name: [] for name in COMMANDS}
+    peaks = {name: [] for name in COMMANDS}
+    integration = []
+    for i in range(max(args.repeat, args.slow_repeat)):     # interleaved rounds
+        for name, (cmd, slow, _) in COMMANDS.items():
+            if i < (args.slow_repeat if slow else args.repeat):
+                wall, mb = run(cmd)
+                walls[name].append(wall)
+                peaks[name].append(mb)
+        if i < args.repeat:
+            integration.append(integration_time())
+    load_end = os.getloadavg()[0]
 
+    numpy_s = statistics.median(walls["import numpy"])
+    sim_s = statistics.median(integration)
+    print(f"\n{'command':<20} {'runs':>4} {'median s':>9} {'min s':>7} {'x numpy':>8} {'peak MB':>8}  "
+          f"{'goal':<28} met")
+    verdicts = {}
+    for name, (cmd, _, goal) in COMMANDS.items():
+        med = statistics.median(walls[name])
+        ratio = med / numpy_s
+        peak = max(peaks[name])
+        if goal is None:
+            text, met = "-", None
+        elif goal[0] == "x numpy":
+            text, met = f"<= {goal[1]:.1f}x import numpy", ratio <= goal[1]
+        else:
+            text, met = f"<= {goal[1]:g} s", med <= goal[1]
+        if name == "verify":
+            text += f", <= {VERIFY_GOAL_MB:.0f} MB"
+            met = met and peak <= VERIFY_GOAL_MB
+        if name == "simulate":
+            text, met = f"integration <= {SIMULATE_GOAL_S:g} s", sim_s <= SIMULATE_GOAL_S
+        verdicts[name] = met
+        print(f"{name:<20} {len(walls[name]):4d} {med:9.3f} {min(walls[name]):7.3f} {ratio:8.2f} {peak:8.1f}  "
+              f"{text:<28} {'-' if met is None else ('yes' if met else 'NO')}")
+    print(f"\nsimulate: the integrator's own wall time (summary wall_time_s), median of {len(integration)}: "
+          f"{sim_s:.3f} s (least {min(integration):.3f} s)")
+    one, two = (statistics.median(walls[f"verify.run(jobs={j})"]) for j in (1, 2))
+    print(f"verify.run: jobs=2 takes {two / one:.2f}x the wall time of jobs=1")
+    met = [n for n, v in verdicts.items() if v]
+    missed = [n for n, v in verdicts.items() if v is False]
+    print(f"goals met: {', '.join(met) or 'none'}; not met: {', '.join(missed) or 'none'}")
+    print(f"load average {load_end:.2f} at the end")
+    print("\ncommands:")
+    for name, (cmd, _, _) in COMMANDS.items():
+        shown = ["deathsphere"] + cmd[3:] if cmd[:3] == DS else ["python"] + cmd[1:]
+        print(f"  {name:<20} {' '.join(shown)}")
+
+    if args.floquet:
+        floquet(args.repeat)
+
+
+def floquet(repeat: int):
     import numpy as np
 
     from deathsphere.constants import STANDARD_GRAVITY
@@ -72,7 +165,7 @@ def main():
 
     orbit = (np.pi / 2, 6.0 / 2.7, 0.3, 3.0, 0.5, STANDARD_GRAVITY)
     runs = []
-    for _ in range(args.repeat):
+    for _ in range(repeat):
         t0 = time.perf_counter()
         new = st.vertical_floquet(*orbit)
         runs.append(time.perf_counter() - t0)

@@ -479,12 +479,16 @@ def highest_orbit(a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=n
     """The highest orbit possible: the smallest theta with a feasible alpha.
 
     Beyond the paper (docs/limits.md).  Feasibility at one theta is decided
-    exactly by :func:`allowed_alpha` (all alpha boundaries found); in theta
-    the feasible set is scanned on ``n_theta`` midpoints of (0, pi), and the
-    first change infeasible -> feasible is refined by bisection to ``xtol``
-    rad.  A feasible island narrower than pi/n_theta in theta lying below the
-    first feasible scan point could be missed (none exists for the equations
-    here; the docs give the closed form that the tests check).
+    exactly by :func:`allowed_alpha` (all alpha boundaries found).  In theta
+    the first feasible point of ``n_theta`` midpoints of (0, pi) is found
+    by a scan of every :data:`_SCAN_STRIDE`-th of them and then of the ones
+    just before the first feasible scan point; the change infeasible ->
+    feasible is then bisected to ``xtol`` rad, :data:`_BISECTION_LEVELS`
+    levels per vectorised call (every point those levels can visit).  A
+    feasible island narrower than _SCAN_STRIDE pi/n_theta (0.7 deg) in theta
+    lying below the first feasible scan point could be missed (none exists
+    for the equations here; the docs give the closed form that the tests
+    check).
 
     Parameters
     ----------
@@ -497,21 +501,30 @@ def highest_orbit(a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=n
     HighestOrbit
     """
     a, r, k, g, outside, mu, max_g = _check(a, r, k, g, outside, mu, max_g)
+
+    def feasible_at(theta):
+        return np.asarray(allowed_alpha(theta, a, r, k, g, outside, mu, max_g).count).reshape(-1) > 0
+
     grid = (np.arange(n_theta) + 0.5) * (np.pi / n_theta)
-    iv = allowed_alpha(grid, a, r, k, g, outside, mu, max_g)
-    hit = np.nonzero(iv.count > 0)[0]
-    if hit.size == 0:
+    j = _first_feasible(grid, feasible_at)
+    if j is None:
         nan = float("nan")
         return HighestOrbit(False, nan, nan, nan, nan, nan, nan, nan, (nan, nan))
-    j = int(hit[0])
     lo = 0.0 if j == 0 else float(grid[j - 1])
     hi = float(grid[j])
     while hi - lo > xtol:
-        mid = 0.5 * (lo + hi)
-        if allowed_alpha(mid, a, r, k, g, outside, mu, max_g).count > 0:
-            hi = mid
-        else:
-            lo = mid
+        # the next _BISECTION_LEVELS levels of bisection decided at once:
+        # one call on 2^levels - 1 points costs little more than on one
+        points = _bisection_points(lo, hi, _BISECTION_LEVELS)
+        ok = dict(zip(points, feasible_at(np.array(points))))
+        for _ in range(_BISECTION_LEVELS):
+            if hi - lo <= xtol:
+                break
+            mid = 0.5 * (lo + hi)
+            if ok[mid]:
+                hi = mid
+            else:
+                lo = mid
     at = allowed_alpha(hi, a, r, k, g, outside, mu, max_g)
     alo, ahi, vmin, vmax = at.intervals()[0]
     alpha = 0.5 * (alo + ahi)
@@ -519,6 +532,36 @@ def highest_orbit(a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=n
     if np.isfinite(speed) and np.isfinite(vmax) and (ahi - alo) < 1e-6:
         speed = float(np.sqrt(_speed_sq(hi, alpha, a, r, k, g)))
     return HighestOrbit(True, 0.5 * (lo + hi), alpha, alo, ahi, speed, vmin, vmax, (lo, hi))
+
+
+#: highest_orbit scans every _SCAN_STRIDE-th theta of its grid first.
+_SCAN_STRIDE = 8
+#: levels of the bisection of highest_orbit evaluated per call.
+_BISECTION_LEVELS = 5
+
+
+def _bisection_points(lo, hi, levels):
+    """Every midpoint bisection of (lo, hi) can visit in ``levels`` steps,
+    computed as bisection computes them (so the results match exactly)."""
+    if levels == 0:
+        return []
+    mid = 0.5 * (lo + hi)
+    return _bisection_points(lo, mid, levels - 1) + [mid] + _bisection_points(mid, hi, levels - 1)
+
+
+def _first_feasible(grid, feasible_at):
+    """Index of the first point of ``grid`` where ``feasible_at`` holds,
+    from a scan of every _SCAN_STRIDE-th point and of the points before
+    the first feasible one found; None when no scanned point is feasible."""
+    coarse = np.arange(_SCAN_STRIDE - 1, grid.size + _SCAN_STRIDE - 1, _SCAN_STRIDE).clip(max=grid.size - 1)
+    coarse = np.unique(coarse)
+    hit = np.nonzero(feasible_at(grid[coarse]))[0]
+    if hit.size == 0:
+        return None
+    end = int(coarse[hit[0]])
+    start = 0 if hit[0] == 0 else int(coarse[hit[0] - 1]) + 1
+    fine = np.nonzero(feasible_at(grid[start:end]))[0] if end > start else np.empty(0, int)
+    return start + int(fine[0]) if fine.size else end
 
 
 def _limit_speed(lo, hi, vmin_near, a, r, k, g, outside, mu, max_g):

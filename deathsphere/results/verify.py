@@ -15,6 +15,7 @@ tests/paper/test_verify.py.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Callable
 
 import numpy as np
@@ -23,7 +24,7 @@ from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.model import Setup, Table, horizontal_orbit
 from deathsphere.physics import particle, sphere, wheel
 from deathsphere.physics import vertical_orbit as vertical
-from deathsphere.physics.geometry import fits_inside, r_prime
+from deathsphere.physics.geometry import fits_inside, fits_outside, r_prime
 from deathsphere.physics.status import Status
 from deathsphere.results.table1 import PRINTED, table1
 
@@ -123,16 +124,28 @@ def _eq0():
                    f"{4 * theta.size * alpha.size} grid points for a/r = 0.01..0.6 ({disagree} disagree)")
 
 
+@lru_cache(maxsize=2)
 def _survey(outside=False):
+    """Feasible (theta, alpha, r') of the grids of :func:`_grid` for a/r =
+    0.01..0.6 and k = 1/4, 1/2, in grid order.  Only the points where the
+    wheel fits (eq. 0; eq. 81 outside) are evaluated: elsewhere the status
+    is ``no_fit`` whatever the rest, so the feasible set is the same as over
+    the whole grid, at half the work.  Cached (read-only): claims Q and UP
+    share the survey inside."""
     theta, alpha = _grid()
+    every_theta, every_alpha = np.broadcast_arrays(theta, alpha)
     out = []
     for a_over_r in (0.01, 0.1, 0.3, 0.6):
+        fits = fits_outside(theta, alpha) if outside else fits_inside(theta, alpha, a_over_r, 1.0)
+        th, al = every_theta[fits], every_alpha[fits]
         for k in (0.25, 0.5):
-            res = wheel.horizontal_orbit(theta, alpha, a_over_r, 1.0, k, G, outside=outside)
+            res = wheel.horizontal_orbit(th, al, a_over_r, 1.0, k, G, outside=outside)
             ok = res["status"] == Status.OK
-            out.append((np.broadcast_to(theta, ok.shape)[ok], np.broadcast_to(alpha, ok.shape)[ok],
-                        res["r_prime"][ok]))
-    return [np.concatenate(x) for x in zip(*out)]
+            out.append((th[ok], al[ok], res["r_prime"][ok]))
+    found = [np.concatenate(x) for x in zip(*out)]
+    for x in found:
+        x.setflags(write=False)
+    return found
 
 
 @claim("Q", "2.2.2", "eqs. 29, 33, 34b", "steady horizontal orbits (inside) are possible only for 0 < alpha < pi/2")
@@ -214,13 +227,21 @@ def _eq28():
 
 @claim("E82", "3", "eq. 82", "a wheel outside released from rest at the top leaves at cos(phi) = 2/(3+2k)")
 def _eq82():
-    from scipy.optimize import brentq
+    k = np.array([0.0, 0.25, 0.5])
 
-    rows = []
-    for k in (0.0, 0.25, 0.5):
-        normal = lambda phi: float(vertical.contact_force(phi, deg(90.0), 0.0, A, R, k, G, outside=True)["normal"])
-        phi = brentq(normal, 1e-6, np.pi / 2, xtol=1e-14)
-        rows.append((k, np.cos(phi), 2 / (3 + 2 * k)))
+    def normal(phi):
+        return vertical.contact_force(phi, deg(90.0), 0.0, A, R, k, G, outside=True)["normal"]
+
+    # the three roots bisected side by side to 1e-14 rad: positive at
+    # the top, negative at the side (scipy.optimize is not needed here,
+    # which keeps its import out of a worker that checks only this claim)
+    lo, hi = np.full(3, 1e-6), np.full(3, np.pi / 2)
+    at_lo = normal(lo) > 0
+    while np.any(hi - lo > 1e-14):
+        mid = 0.5 * (lo + hi)
+        same = (normal(mid) > 0) == at_lo
+        lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+    rows = list(zip(k, np.cos(0.5 * (lo + hi)), 2 / (3 + 2 * k)))
     err = max(abs(c - e) for _, c, e in rows)
     return Finding("confirmed" if err < 1e-9 else "refuted",
                    "normal force of eqs. 27-28 root-found: " +
@@ -330,24 +351,54 @@ def _outside_class():
 def _figure():
     theta = deg(np.linspace(0.05, 179.95, 1200))[:, None]
     alpha = deg(np.linspace(-179.95, 179.95, 2400))[None, :]
-    a_over_r, k = 0.1, 0.5
-    res = wheel.horizontal_orbit(theta, alpha, a_over_r, 1.0, k, G)
-    ok = res["status"] == Status.OK
-    margins = [np.sin(theta - alpha) - a_over_r,                                   # eq. 0
-               np.cos(alpha) / wheel.omega_squared_denominator(theta, alpha, a_over_r, 1.0, k),  # eq. 29 sign
-               np.where(np.isfinite(res["normal"]), res["normal"], -1.0)]          # eq. 33
-    with np.errstate(invalid="ignore"):
-        signs = [np.sign(np.broadcast_to(m, ok.shape)) for m in margins]
+    # blocks of rows, each with the first row of the next, so that every
+    # pair of neighbours (along theta too) is compared exactly once: the
+    # count of the whole grid, with memory for one block only
     unexplained = 0
-    for axis in (0, 1):
-        change = np.diff(ok, axis=axis)
-        crossed = np.zeros_like(change)
-        for s in signs:
-            crossed |= np.diff(s, axis=axis) != 0
-        unexplained += int(np.count_nonzero(change & ~crossed))
+    for start in range(0, theta.shape[0], _FIGURE_ROWS):
+        stop = min(start + _FIGURE_ROWS + 1, theta.shape[0])
+        unexplained += _figure_unexplained(theta[start:stop], alpha, last=stop == theta.shape[0])
     return Finding("confirmed" if unexplained == 0 else "refuted",
                    f"every change of feasibility between neighbouring points of a 1200 x 2400 grid crosses one of "
                    f"the three curves ({unexplained} unexplained)")
+
+
+#: rows of theta per block of the FIG check (240k points, about half evaluated).
+_FIGURE_ROWS = 100
+
+
+def _figure_unexplained(theta, alpha, last):
+    """Changes of feasibility between neighbours of the block theta x alpha
+    that cross none of the curves of eqs. 0, 29, 33; the changes within
+    the block's last row are left to the next block unless ``last``."""
+    a_over_r, k = 0.1, 0.5
+    theta, alpha = np.broadcast_arrays(theta, alpha)
+    # Only where the wheel fits (eq. 0) is the orbit evaluated: elsewhere it
+    # is infeasible, and a neighbour pair with one point on each side of
+    # eq. (0) always crosses that curve (the eq. 0 margin is > 0 exactly
+    # where it fits), so the other margins there cannot change the count.
+    fit_margin = np.sin(theta - alpha) - a_over_r                               # eq. 0
+    fits = fit_margin > 0
+    th, al = theta[fits], alpha[fits]
+    res = wheel.horizontal_orbit(th, al, a_over_r, 1.0, k, G)
+    ok = np.zeros(fits.shape, dtype=bool)
+    ok[fits] = res["status"] == Status.OK
+    sign29 = np.ones(fits.shape)
+    sign33 = np.ones(fits.shape)
+    with np.errstate(invalid="ignore"):
+        sign29[fits] = np.sign(np.cos(al) / wheel.omega_squared_denominator(th, al, a_over_r, 1.0, k))  # eq. 29
+        sign33[fits] = np.sign(np.where(np.isfinite(res["normal"]), res["normal"], -1.0))            # eq. 33
+        signs = [np.sign(fit_margin), sign29, sign33]
+    del res
+    rows = slice(None) if last else slice(None, -1)      # along alpha: rows of this block only
+    unexplained = 0
+    for axis, part in ((0, slice(None)), (1, rows)):
+        change = np.diff(ok[part], axis=axis)
+        crossed = np.zeros_like(change)
+        for sg in signs:
+            crossed |= np.diff(sg[part], axis=axis) != 0
+        unexplained += int(np.count_nonzero(change & ~crossed))
+    return unexplained
 
 
 # -- sec. 2.3: stability, against the exact linearisation and the simulator ----------
@@ -396,7 +447,7 @@ def _stab_equator():
     alpha = deg(np.arange(1.0, 84.0, 0.25))
     res = st.wheel_stability(np.pi / 2, alpha, A, R, K, G)
     unstable = np.rad2deg(alpha[res["verdict"] == st.Verdict.UNSTABLE])
-    _, run = simulation.simulate(simulation.horizontal_starts(Setup(), 90.0, 80.0, perturb=1e-6), periods=2)
+    _, run = simulation.simulate(simulation.horizontal_starts(Setup(), 90.0, 80.0, perturb_rad=1e-6), periods=2)
     verdict = "refuted" if unstable.size else "confirmed"
     return Finding(verdict, f"a/r = 0.1: exact linearisation unstable for alpha >= {unstable.min():.2f} deg "
                             f"(orbits fit up to 84.3); the simulator, kicked by 1e-6 rad at alpha = 80 deg: "
@@ -528,18 +579,38 @@ def _table1_stable():
                    f"(60, 10): {res['freq_slow'][3]:.2f}/{res['freq_fast'][3]:.2f} rad/s")
 
 
-def run(ids: list[str] | None = None, progress: Callable[[Claim], None] | None = None) -> Table:
-    """Check the selected claims (all by default), in the order of the paper;
-    ``progress`` is called with each claim before it is checked."""
+def run(ids: list[str] | None = None, progress: Callable[[Claim], None] | None = None,
+        jobs: int = 1) -> Table:
+    """Check the selected claims (all by default), in the order of the paper.
+
+    ``progress`` is called with each claim before it is checked (with
+    ``jobs`` > 1: as its finding arrives).  ``jobs`` > 1 checks the claims
+    on that many processes (:func:`deathsphere.parallel.ordered_map`), the
+    slow ones first so that no process is left with one at the end, and
+    the claims that share cached work in one process; each claim is
+    computed exactly as in one process, so the table is the same."""
     chosen = [c for c in CLAIMS if ids is None or c.id in ids]
     unknown = sorted(set(ids or []) - {c.id for c in CLAIMS})
     if unknown:
         raise ValueError(f"unknown claim {unknown[0]!r}; known: {', '.join(c.id for c in CLAIMS)}")
-    found = []
-    for c in chosen:
-        if progress:
-            progress(c)
-        found.append(c.check())
+    if jobs > 1 and len(chosen) > 1:
+        from deathsphere.parallel import ordered_map
+
+        by_id = {c.id: c for c in chosen}
+        done = {}
+        units = _work_units([c.id for c in chosen])
+        for unit, findings in zip(units, ordered_map(check_claims, units, jobs)):
+            for claim_id, finding in zip(unit, findings):
+                if progress:
+                    progress(by_id[claim_id])
+                done[claim_id] = finding
+        found = [done[c.id] for c in chosen]
+    else:
+        found = []
+        for c in chosen:
+            if progress:
+                progress(c)
+            found.append(c.check())
     return Table({
         "id": np.array([c.id for c in chosen], dtype=object),
         "section": np.array([c.section for c in chosen], dtype=object),
@@ -548,6 +619,34 @@ def run(ids: list[str] | None = None, progress: Callable[[Claim], None] | None =
         "verdict": np.array([f.verdict for f in found], dtype=object),
         "evidence": np.array([f.evidence for f in found], dtype=object),
     })
+
+
+#: claims that share cached work (the survey inside), checked by one process
+_SHARED = (("Q", "UP"),)
+#: the slowest claims (CPU time, slowest first), started first with jobs > 1
+_SLOW_FIRST = ("STAB-EQ", "FIG", "STAB-V", "Q", "S3-class")
+
+
+def _work_units(ids: list[str]) -> list[tuple[str, ...]]:
+    """``ids`` as units of work for several processes: groups of
+    :data:`_SHARED` together, the slow ones first, else in given order."""
+    grouped = [tuple(i for i in ids if i in group) for group in _SHARED]
+    units = [u for u in grouped if u] + [(i,) for i in ids if not any(i in g for g in _SHARED)]
+
+    def rank(unit):
+        return min((_SLOW_FIRST.index(i) for i in unit if i in _SLOW_FIRST), default=len(_SLOW_FIRST))
+
+    return sorted(units, key=rank)
+
+
+def check_claims(ids: tuple[str, ...]) -> list[Finding]:
+    """The findings of the claims ``ids``, in that order (a picklable unit
+    of work for :func:`run` with several processes)."""
+    by_id = {c.id: c for c in CLAIMS}
+    unknown = [i for i in ids if i not in by_id]
+    if unknown:
+        raise ValueError(f"unknown claim {unknown[0]!r}")
+    return [by_id[i].check() for i in ids]
 
 
 def counts(table: Table) -> dict[str, int]:

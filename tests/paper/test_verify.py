@@ -6,8 +6,10 @@ the derivations and tests cited there), not read back from the checker.
 
 import json
 
+import numpy as np
 import pytest
 
+from deathsphere.physics.status import Status
 from deathsphere.results import verify
 
 EXPECTED = {
@@ -51,3 +53,40 @@ def test_cli_checklist_and_counts(run):
 def test_cli_unknown_claim(run):
     res = run("verify", "--claim", "nope")
     assert res.exit_code == 2 and "unknown claim" in res.stderr
+
+
+def test_several_processes_give_the_same_table(checklist):
+    # the survey claims (Q, UP share a cached survey; S3-class the outside
+    # one), a root-finding one and a cheap one, on two processes
+    ids = ["T1-v", "Q", "UP", "E82", "S3-class", "E28"]
+    told = []
+    table = verify.run(ids, jobs=2, progress=lambda claim: told.append(claim.id))
+    assert sorted(told) == sorted(ids)
+    rows = [i for i, c in enumerate(checklist["id"]) if c in ids]       # the order of the paper
+    for column in ("id", "verdict", "evidence"):
+        assert list(table[column]) == [checklist[column][i] for i in rows]
+
+
+def test_figure_check_in_blocks_counts_every_neighbour_pair_once(monkeypatch):
+    # Orbits made infeasible beyond a slanted line theta + alpha = 2 rad,
+    # which none of the three curves follows: the changes of feasibility
+    # there (along theta and along alpha) go unexplained, and their count
+    # must not depend on how the grid is cut into blocks of rows.
+    exact = verify.wheel.horizontal_orbit
+
+    def cut(theta, alpha, *args, **kwargs):
+        res = exact(theta, alpha, *args, **kwargs)
+        res["status"] = np.where(theta + alpha > 2.0, Status.SLIPS, res["status"])
+        return res
+
+    monkeypatch.setattr(verify.wheel, "horizontal_orbit", cut)
+
+    def unexplained(rows):
+        monkeypatch.setattr(verify, "_FIGURE_ROWS", rows)
+        evidence = verify.run(["FIG"])["evidence"][0]
+        return int(evidence.rsplit("(", 1)[1].split()[0])
+
+    whole = unexplained(1200)
+    assert whole > 0
+    assert unexplained(7) == whole
+    assert unexplained(1199) == whole

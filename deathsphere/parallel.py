@@ -1,0 +1,49 @@
+"""Ordered parallel map over processes, with bounded memory.
+
+:func:`ordered_map` evaluates ``work(item)`` for a stream of items on a pool
+of processes and hands the results back in input order, so that a caller's
+output is the same as with one process.  The items are drawn lazily and at
+most two per process are in flight: enough to keep every process busy while
+the caller consumes (writes) results, and memory stays flat however long the
+stream.  Leaving the loop early (a reader gone, a failed write, Ctrl-C)
+cancels the work still queued.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from typing import Callable, Iterable, Iterator, TypeVar
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+
+def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int) -> Iterator[R]:
+    """``work(item)`` for each item, in input order, on ``jobs`` processes.
+
+    ``work`` and the items must be picklable (a module-level function and
+    plain data); each item's result is computed exactly as in one process.
+    With ``jobs`` <= 1 the items are evaluated here, one at a time, without
+    a pool.  At most ``2 * jobs`` items are submitted ahead of the one being
+    handed back; closing the generator early drops the queued ones (running
+    ones finish) before it returns.
+    """
+    if jobs <= 1:
+        for item in items:
+            yield work(item)
+        return
+
+    from concurrent.futures import ProcessPoolExecutor
+
+    pending = deque()
+    pool = ProcessPoolExecutor(jobs)
+    try:
+        for item in items:
+            pending.append(pool.submit(work, item))
+            if len(pending) >= 2 * jobs:
+                yield pending.popleft().result()
+        while pending:
+            yield pending.popleft().result()
+    finally:
+        # a reader gone (`| head`), a failed write or Ctrl-C: drop queued work
+        pool.shutdown(wait=True, cancel_futures=True)
