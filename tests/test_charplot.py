@@ -155,7 +155,7 @@ def test_the_map_draws_what_the_cells_hold_and_nothing_else():
     assert np.array_equal(grid == SHADE, feasible & ~unstable) and grid[2, 12] == charplot.UNSTABLE
     assert np.sum(grid == " ") == grid.size - feasible.sum() - 2
     assert cmap.lines[0] == "Stability of allowed horizontal orbits: "   # the title, cut at the width
-    assert "eq. (0) fit" in str(cmap) and "x allowed, unstable" in str(cmap) and "eq. (29)" not in str(cmap)
+    assert MARKS["eq0"][1] in str(cmap) and "x allowed, unstable" in str(cmap) and "eq. (29)" not in str(cmap)
     assert all(len(line) <= 40 for line in cmap.lines)
 
 
