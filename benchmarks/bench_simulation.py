@@ -40,7 +40,7 @@ THETA, ALPHA = 60.0, 10.0
 
 def one_run(n: int, frame: str, periods: float, rtol: float, ppp: int, kick: float = 1e-6):
     kicks = np.linspace(0.0, kick, n) if n > 1 else np.array([kick if kick else 0.0])
-    starts = horizontal_starts(Setup(), THETA, ALPHA, perturb_rad=kicks)
+    starts = horizontal_starts(Setup(), THETA, ALPHA, perturb_deg=np.rad2deg(kicks))
     sim = Simulation(starts, periods=periods, points_per_period=ppp, rtol=rtol, frame=frame)
     t0 = time.perf_counter()
     rows = 0

@@ -20,18 +20,26 @@ result :class:`Table`; :mod:`deathsphere.cli` is the command line.
 __version__ = "0.1.0"
 
 from deathsphere.api import (  # noqa: E402
+    Chunks,
     limits,
     orbit,
+    orbit_input,
+    prepare_simulation,
     region,
+    region_cells,
+    region_curves,
     simulate,
     stability,
     sweep,
     table1,
     verify,
     vertical,
+    vertical_input,
+    vertical_sweep,
 )
 from deathsphere.model import Setup, Table, horizontal_orbit  # noqa: E402
 from deathsphere.params import ParameterError  # noqa: E402
 
-__all__ = ["orbit", "vertical", "sweep", "region", "limits", "stability", "simulate", "table1", "verify",
-           "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"]
+__all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
+           "region_cells", "region_curves", "limits", "stability", "simulate", "prepare_simulation", "table1",
+           "verify", "Chunks", "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"]

@@ -121,6 +121,17 @@ class Table:
             raise ValueError(f"shape {shape} does not hold {n} rows")
         self._shape = shape
 
+    @classmethod
+    def concat(cls, tables) -> Table:
+        """Tables with the same columns, one after another (e.g. the chunks
+        of a streamed result); a single table is returned as it is."""
+        tables = list(tables)
+        if len(tables) == 1:
+            return tables[0]
+        if not tables:
+            return cls({})
+        return cls({n: np.concatenate([t[n] for t in tables]) for n in tables[0].names})
+
     @property
     def names(self) -> list[str]:
         return list(self.columns)
@@ -549,6 +560,11 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
     finite_or_blank(columns)
     columns.update(add_stability(columns) if stability else _no_stability(len(pick)))
+    # an input solved for is echoed as given (a root of eq. 29 reproduces a
+    # wheel's speed or rate only to the last bits)
+    for name, column in (("speed", "v_cm_m_s"), ("omega", "omega_rad_s")):
+        target = req[name][pick]
+        columns[column] = np.where(~np.isnan(target) & ~np.isnan(columns[column]), target, columns[column])
     return Table({name: columns[name] for name in COLUMNS})
 
 

@@ -29,7 +29,15 @@ HUGE = 1e9
 
 class ParameterError(ValueError):
     """An input value outside its allowed set; the message is one line
-    saying what is wrong and what is allowed."""
+    saying what is wrong and what is allowed.  ``param`` names the
+    parameter at fault (as in the API and the command line's ``--name``),
+    or is None for a rule between several; ``missing`` says that it was
+    required and not given."""
+
+    def __init__(self, message: str, param: str | None = None, missing: bool = False):
+        super().__init__(message)
+        self.param = param
+        self.missing = missing
 
 
 @dataclass(frozen=True)
@@ -95,7 +103,10 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("points", "", "points per orbit", 2, 1_000_000, integer=True),
     Param("periods", "", "run length in periods", 0.0, 1e6, lo_open=True),
     Param("points_per_period", "", "rows per period", 2, 100_000, integer=True),
-    Param("perturb", "rad", "kick", -1.0, 1.0),
+    Param("perturb", "deg", "kick", -60.0, 60.0),
+    Param("rtol", "", "relative tolerance", 1e-14, 1e-2),
+    Param("atol", "", "absolute tolerance", 1e-16, 1.0),
+    Param("jobs", "", "processes", 1, 256, integer=True),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True),
 )}
 
@@ -136,10 +147,10 @@ def check(name: str, value) -> float:
         try:
             value = float(value)
         except (TypeError, ValueError):
-            raise ParameterError(f"{name} must be a number (got {value!r})") from None
+            raise ParameterError(f"{name} must be a number (got {value!r})", name) from None
     reason = problems(name, [value])[0]
     if reason:
-        raise ParameterError(reason)
+        raise ParameterError(reason, name)
     return float(value)
 
 
@@ -162,5 +173,5 @@ def choice(name: str, value: str, allowed) -> str:
     """``value`` lower-cased if it is one of ``allowed``; else ParameterError."""
     text = str(value).strip().lower()
     if text not in allowed:
-        raise ParameterError(f"{name} must be one of {' | '.join(allowed)} (got {value!r})")
+        raise ParameterError(f"{name} must be one of {' | '.join(allowed)} (got {value!r})", name)
     return text

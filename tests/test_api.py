@@ -170,8 +170,8 @@ def test_vertical_shapes():
      ["limits", "--side", "outside", "-a", "0.5", "--theta", "30", "--theta", "60"]),
     (lambda: deathsphere.limits(mu=1, max_g=5), ["limits", "--mu", "1", "--max-g", "5"]),
     (lambda: deathsphere.region(step=5), ["map", "--step", "5"]),
-    (lambda: deathsphere.region(0.3, side="outside", mu=1, max_g=4, k=0.4, step=2.5),
-     ["map", "--a-over-r", "0.3", "--side", "outside", "--mu", "1", "--max-g", "4", "-k", "0.4", "--step", "2.5"]),
+    (lambda: deathsphere.region(0.9, side="outside", mu=1, max_g=4, k=0.4, step=2.5),
+     ["map", "-a", "0.9", "--side", "outside", "--mu", "1", "--max-g", "4", "-k", "0.4", "--step", "2.5"]),
     (lambda: deathsphere.stability(90, 45), ["stability", "--theta", "90", "--alpha", "45"]),
     (lambda: deathsphere.stability(60, 10, a=0.03, mu=2), ["stability", "--theta", "60", "--alpha", "10",
                                                           "-a", "0.03", "--mu", "2"]),
@@ -185,9 +185,9 @@ def test_table_commands_equal_the_command_line(call, args):
 
 
 def test_region_with_the_stability_curve():
-    table = deathsphere.region(0.3, step=10, stability=True)
+    table = deathsphere.region(0.9, step=10, stability=True)
     assert "stability" in set(table["curve"])
-    assert_same_csv(table.to_csv(), cli_csv("map", "--a-over-r", "0.3", "--step", "10", "--stability"))
+    assert_same_csv(table.to_csv(), cli_csv("map", "-a", "0.9", "--step", "10", "--stability"))
 
 
 def test_sweep_chunks_come_in_order_and_join_to_the_command_line():
@@ -269,8 +269,12 @@ def test_simulate_a_sphere_and_a_vertical_orbit():
     (lambda: deathsphere.stability(90, 45, k=-0.5), ["stability", "--theta", "90", "--alpha", "45", "-k", "-0.5"]),
     (lambda: deathsphere.simulate(60, 10, periods=0), ["simulate", "--theta", "60", "--alpha", "10",
                                                        "--periods", "0"]),
-    (lambda: deathsphere.simulate(60, 10, perturb=2), ["simulate", "--theta", "60", "--alpha", "10",
-                                                       "--perturb", "2"]),
+    (lambda: deathsphere.simulate(60, 10, perturb=90), ["simulate", "--theta", "60", "--alpha", "10",
+                                                        "--perturb", "90"]),
+    (lambda: deathsphere.simulate(60, 10, rtol=1), ["simulate", "--theta", "60", "--alpha", "10", "--rtol", "1"]),
+    (lambda: deathsphere.region(a=3.3), ["map", "-a", "3.3", "--format", "csv"]),
+    (lambda: deathsphere.sweep(60, 10, a=4), ["sweep", "--theta", "60", "--alpha", "10", "-a", "4"]),
+    (lambda: deathsphere.limits("1:2:0"), ["limits", "--theta", "1:2:0"]),
     (lambda: deathsphere.simulate(60, 10, points_per_period=1.5),
      ["simulate", "--theta", "60", "--alpha", "10", "--points-per-period", "1.5"]),
     (lambda: deathsphere.simulate(60, 10, k=0), ["simulate", "--theta", "60", "--alpha", "10", "-k", "0"]),
@@ -296,8 +300,8 @@ def test_parameter_error_is_a_value_error_and_choices_say_what_is_allowed():
         deathsphere.orbit([60, math.nan], 10)
     with pytest.raises(ParameterError, match="theta must be a number"):
         deathsphere.orbit("sixty", 10)
-    with pytest.raises(ParameterError, match="a_over_r must be < 1 inside"):
-        deathsphere.region(1.5)
+    with pytest.raises(ParameterError, match="r \\(sphere radius\\) must be > a = 3.3 m"):
+        deathsphere.region(3.3)
     with pytest.raises(ParameterError, match="method must be one of"):
         deathsphere.simulate(60, 10, method="euler", periods=0.1)
     with pytest.raises(ParameterError, match="a wheel's steady orbit needs alpha"):

@@ -145,7 +145,7 @@ def test_stability_labels_stay_on_one_line(width, theta, alpha):
     from deathsphere.results.stability_report import stability_report
 
     setup = Setup()
-    text = show(stability_view(stability_report(setup, theta, alpha), setup), width)
+    text = show(stability_view(stability_report(setup, theta, alpha)), width)
     assert_fits(text, width)
     lines = text.splitlines()
     for label in ("growth rate, max Re(eigenvalue)", "slow nutation frequency", "slow nutation, rad/s",

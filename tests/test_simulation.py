@@ -107,7 +107,7 @@ def test_steady_sphere_orbit_holds():
 
 def test_perturbation_is_a_tilt_kick_on_the_constraint_surface():
     eps = 1e-3
-    starts = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=eps)
+    starts = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_deg=np.rad2deg(eps))
     steady = sim.horizontal_starts(TABLE1, 60.0, 10.0)
     res = dyn.constraint_residuals(starts.state, starts.params)
     assert abs(res["axis"][0]) < 1e-15 and abs(res["contact"][0]) < 1e-14
@@ -137,7 +137,7 @@ def test_unstable_orbit_grows_at_the_linear_rate(side, theta, alpha, periods):
     lam = float(stab["growth_rate"])
     ev = stab["eigenvalues"].reshape(-1)
     assert lam > 1.0 and np.min(np.abs(ev[ev.real > 0].imag)) < 1e-9 * lam       # a real eigenvalue
-    series, summary = run(sim.horizontal_starts(s, theta, alpha, perturb_rad=1e-10), periods=periods,
+    series, summary = run(sim.horizontal_starts(s, theta, alpha, perturb_deg=np.rad2deg(1e-10)), periods=periods,
                           points_per_period=100)
     d = np.hypot(series["theta_deg"] - theta, series["alpha_deg"] - alpha) * DEG
     linear = (d > 1e-6) & (d < 1e-3)
@@ -160,7 +160,7 @@ def test_steep_equator_orbit_is_unstable_against_the_papers_claim():
     assert lam > 4.0 and np.all(np.abs(stab["eigenvalues"].imag) > 6.0)
     ref = wheel.horizontal_orbit(90 * DEG, 80 * DEG, TABLE1.a, TABLE1.r, TABLE1.k, TABLE1.g)
     assert int(ref["status"]) == 0                                    # a legitimate steady orbit
-    series, summary = run(sim.horizontal_starts(TABLE1, 90.0, 80.0, perturb_rad=1e-9), periods=1,
+    series, summary = run(sim.horizontal_starts(TABLE1, 90.0, 80.0, perturb_deg=np.rad2deg(1e-9)), periods=1,
                           points_per_period=400)
     d = np.hypot(series["theta_deg"] - 90.0, series["alpha_deg"] - 80.0) * DEG
     window = (d > 1e-6) & (d < 1e-3) & (np.cumsum(d >= 1e-3) == 0)
@@ -175,7 +175,7 @@ def test_stable_orbit_nutates_at_the_linear_frequency():
     frequency of the linearisation (frame turning with the orbit)."""
     stab = wheel_stability(60 * DEG, 10 * DEG, TABLE1.a, TABLE1.r, TABLE1.k, TABLE1.g)
     slow = float(stab["freq_slow"])
-    series, summary = run(sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=1e-6), periods=4,
+    series, summary = run(sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_deg=np.rad2deg(1e-6)), periods=4,
                           points_per_period=100)
     assert summary["status"][0] == "completed"
     x = series["theta_deg"] - np.mean(series["theta_deg"])
@@ -268,8 +268,8 @@ def test_unstable_orbit_ends_in_an_event():
     """The outside orbit (30, 60) runs away and loses contact; with mu = 0.8
     (it needs 0.71 when steady) it slips first."""
     s = Setup(side="outside")
-    starts = sim.Starts.concat([sim.horizontal_starts(s, 30.0, 60.0, perturb_rad=1e-8),
-                                sim.horizontal_starts(s, 30.0, 60.0, perturb_rad=1e-8, input_row=2)])
+    starts = sim.Starts.concat([sim.horizontal_starts(s, 30.0, 60.0, perturb_deg=np.rad2deg(1e-8)),
+                                sim.horizontal_starts(s, 30.0, 60.0, perturb_deg=np.rad2deg(1e-8), input_row=2)])
     series, summary = run(starts, periods=3, points_per_period=50, mu=np.array([np.inf, 0.8]))
     assert list(summary["status"]) == ["contact_lost", "slips"]
     assert summary["event_time_s"][1] < summary["event_time_s"][0]
@@ -283,7 +283,7 @@ def test_unstable_orbit_ends_in_an_event():
 def test_many_bodies_in_one_call_match_single_runs():
     """Bodies integrated together (one vectorised solve_ivp) behave as alone;
     one body's event does not stop the others."""
-    a = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=1e-4)
+    a = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_deg=np.rad2deg(1e-4))
     b = sim.vertical_starts(Setup(side="outside"), 90.0, 1.0, input_row=2)
     _, together = run(sim.Starts.concat([a, b]), periods=2, points_per_period=20, frame="lab")
     _, alone_a = run(a, periods=2, points_per_period=20, frame="lab")
@@ -341,14 +341,17 @@ def test_statuses_are_the_run_status_labels_with_their_reasons():
             assert reason == sim.RunStatus[status.upper()].reason != ""
 
 
-def test_kicks_are_radians_under_their_former_name_too():
-    kicked = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=1e-3)
-    np.testing.assert_array_equal(sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb=1e-3).state, kicked.state)
-    assert kicked.perturb_rad[0] == 1e-3
-    with pytest.raises(TypeError, match="perturb_rad"):
-        sim.vertical_starts(TABLE1, 90.0, 6.0, perturb_rad=1e-3, perturb=1e-3)
-    with pytest.raises(ValueError, match="perturb_rad"):
-        sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=np.nan)
+def test_kicks_are_degrees_like_every_angle_and_echoed_as_given():
+    kicked = sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_deg=0.05)
+    assert kicked.perturb_deg[0] == 0.05
+    _, summary = run(kicked, periods=0.05, points_per_period=20)
+    assert summary["perturb_deg"][0] == 0.05 and summary["theta_deg"][0] == 60.0
+    # the tilt kick of 0.05 deg is one of 0.05 deg in alpha at the start
+    series, _ = run(kicked, periods=0.05, points_per_period=20)
+    assert series["alpha_deg"][0] == pytest.approx(10.05, abs=1e-12)
+    with pytest.raises(ValueError, match="perturb_deg"):
+        sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_deg=np.nan)
+
 
 def test_invalid_parameters_raise():
     with pytest.raises(ValueError, match="wheel or sphere"):
@@ -372,7 +375,7 @@ def test_invalid_parameters_raise():
 
 def test_implicit_method_with_block_sparsity_agrees():
     """Radau (block-diagonal Jacobian pattern over 2 bodies) agrees with DOP853."""
-    starts = sim.horizontal_starts(TABLE1, 60.0, np.array([10.0, 25.0]), perturb_rad=1e-4)
+    starts = sim.horizontal_starts(TABLE1, 60.0, np.array([10.0, 25.0]), perturb_deg=np.rad2deg(1e-4))
     _, radau = run(starts, periods=0.25, points_per_period=8, method="Radau", rtol=1e-9)
     _, dop = run(starts, periods=0.25, points_per_period=8)
     assert list(radau["method"]) == ["Radau", "Radau"]
@@ -385,7 +388,7 @@ def test_implicit_method_with_block_sparsity_agrees():
 
 @pytest.fixture(scope="module")
 def short_run():
-    starts = sim.Starts.concat([sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_rad=1e-3),
+    starts = sim.Starts.concat([sim.horizontal_starts(TABLE1, 60.0, 10.0, perturb_deg=np.rad2deg(1e-3)),
                                 sim.vertical_starts(Setup(side="outside"), 90.0, 1.0, input_row=2)])
     return run(starts, periods=1, points_per_period=40)
 

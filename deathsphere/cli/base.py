@@ -1,50 +1,70 @@
 """The ``deathsphere`` command line: the group, the shared options and
-helpers, and the entry point.  Each command lives in a module of its own
-(:mod:`deathsphere.cli.orbit`, ...); none computes physics: they parse,
-call the model and render.  Usage errors become one line on stderr with
-exit status 2 (:class:`DeathsphereGroup`); results go to stdout, diagnostics
-to stderr.
+helpers, and the entry point.
+
+Each command lives in a module of its own (:mod:`deathsphere.cli.orbit`,
+...) and only parses its options, calls the function of the same name in
+:mod:`deathsphere.api` with them as typed (the API checks every value and
+supplies every default: one place) and renders what comes back.  A
+:class:`~deathsphere.params.ParameterError` from the API becomes click's
+usage error naming the option (:class:`Command`); usage errors are one line
+on stderr with exit status 2 (:class:`DeathsphereGroup`); results go to
+stdout, diagnostics to stderr.  rich is imported only to draw (a terminal
+table, a progress bar, a note on stderr), so a piped command never pays for it.
 """
 
 from __future__ import annotations
 
 import errno
 import importlib.util
-import math
 import os
 import sys
 from contextlib import contextmanager
 
 import click
-import numpy as np
-from rich.console import Console
 
-from deathsphere import __version__
-from deathsphere.constants import (
-    BODIES,
-    SIDES,
-    STANDARD_GRAVITY,
-    TABLE1_SPHERE_RADIUS,
-    TABLE1_WHEEL_RADIUS,
-)
+from deathsphere import __version__, api
+from deathsphere.constants import BODIES, SIDES
 from deathsphere.exitcodes import ExitCode
-from deathsphere.grid import Axis, RangeError, Segment, parse_segment
-from deathsphere.model import Setup, Table
-from deathsphere.params import PARAMS, ParameterError, check, first_problem
-from deathsphere.render.fit_table import MAX_TERMINAL_ROWS
+from deathsphere.params import ParameterError
 from deathsphere.render.formats import FORMATS, write_csv, write_json, write_ndjson
-from deathsphere.render.orbit_views import write_rich_table
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
 
-def stdout_console() -> Console:
+def stdout_console():
+    from rich.console import Console
+
     # rich honours NO_COLOR and TERM=dumb itself
     return Console(highlight=False)
 
 
-def stderr_console() -> Console:
+def stderr_console():
+    from rich.console import Console
+
     return Console(stderr=True, highlight=False)
+
+
+def given(**options) -> dict:
+    """The options the user gave (None and an empty repeated option are
+    left out, so that the API's own defaults apply)."""
+    return {name: value for name, value in options.items() if value is not None and value != ()}
+
+
+class Command(click.Command):
+    """A command whose API errors are usage errors naming their option: a
+    :class:`ParameterError` about ``theta`` reads ``Invalid value for
+    '--theta': ...``, as if click had refused the value itself."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except ParameterError as exc:
+            option = next((p for p in self.params if exc.param is not None and p.name == exc.param), None)
+            if option is not None and exc.missing:
+                raise click.MissingParameter(ctx=ctx, param=option) from None
+            if option is not None:
+                raise click.BadParameter(str(exc), ctx=ctx, param=option) from None
+            raise click.UsageError(str(exc), ctx=ctx) from None
 
 
 # ---------------------------------------------------------------------------
@@ -59,90 +79,67 @@ def output_options(formats=FORMATS):
     return decorator
 
 
-def body_options(f):
-    options = [
-        click.option("--body", type=click.Choice(BODIES, case_sensitive=False), default="wheel",
-                     show_default=True, help="Rolling body."),
-        click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside",
-                     show_default=True, help="Body inside or outside the fixed sphere."),
-        click.option("-a", "--wheel-radius", "a", type=Quantity("a"), default=TABLE1_WHEEL_RADIUS,
-                     show_default=True, metavar="M", help="Body radius a [m]."),
-        click.option("-r", "--sphere-radius", "r", type=Quantity("r"), default=TABLE1_SPHERE_RADIUS,
-                     show_default=True, metavar="M", help="Fixed sphere radius r [m]."),
-        click.option("-k", "--inertia", "k", type=Quantity("k"), default=None, metavar="K",
-                     help="Inertia factor k: I11 = 2 k m a^2 for a wheel, I = k m a^2 for a sphere "
-                          "[default: 0.5 wheel, 0.4 sphere]."),
-        click.option("-g", "--gravity", "g", type=Quantity("g"), default=STANDARD_GRAVITY, show_default=True,
-                     metavar="M_S2", help="Gravitational acceleration [m/s^2]."),
-        click.option("--mu", type=Quantity("mu"), default=math.inf, metavar="MU",
-                     help="Friction coefficient available; orbits needing more have status 'slips' "
-                          "[default: unlimited]."),
-    ]
-    for option in reversed(options):
-        f = option(f)
-    return f
+def values_option(name: str, metavar: str, help: str, flags=None, required: bool = False):
+    """A repeatable option whose every use is a value or a ``start:stop:step``
+    range, handed to the API as typed (it checks them)."""
+    return click.option(*(flags or (f"--{name.replace('_', '-')}",)), name, multiple=True, metavar=metavar,
+                        required=required, help=help)
 
 
-def make_setup(body, side, a, r, k, g, mu) -> Setup:
-    """A :class:`Setup` from options already checked one by one; what is
-    left to refuse here is a combination (e.g. r <= a inside)."""
-    try:
-        return Setup(body=body.lower(), side=side.lower(), a=a, r=r, k=k, g=g, mu=mu)
-    except ValueError as exc:
-        raise click.UsageError(str(exc)) from None
+def number_option(name: str, metavar: str, help: str, flags=None, default_text: str | None = None,
+                  required: bool = False):
+    """An option of one number, handed to the API as typed (it checks it);
+    not given, the API's default applies (shown as ``default_text``)."""
+    shown = f" [default: {default_text}]" if default_text is not None else ""
+    # (click counts an explicit default, even None, as a value: none for a required option)
+    default = {} if required else {"default": None}
+    return click.option(*(flags or (f"--{name.replace('_', '-')}",)), name, metavar=metavar,
+                        required=required, help=help + shown, **default)
 
 
-class Quantity(click.ParamType):
-    """One number, checked against its domain in :mod:`deathsphere.params`
-    at parse time: a bad value is a usage error (exit 2) before any work."""
-
-    def __init__(self, name: str):
-        self.param_name = name
-        self.name = PARAMS[name].unit or "number"
-
-    def convert(self, value, param, ctx):
-        if isinstance(value, float):
-            return value
-        try:
-            number = float(str(value).strip())
-        except ValueError:
-            self.fail(f"{self.param_name}: {value!r} is not a number", param, ctx)
-        try:
-            return check(self.param_name, number)
-        except ParameterError as exc:
-            self.fail(str(exc), param, ctx)
+def stability_option(default: bool = True, help: str | None = None):
+    return click.option(
+        "--stability/--no-stability", "stability", default=default, show_default=True,
+        help=help or "Fill the stability columns from the exact linearisation (docs/stability.md); "
+                     "--no-stability leaves them empty and runs faster.")
 
 
-class Values(click.ParamType):
-    """One value or ``start:stop:step`` range of a repeatable option, as a
-    lazy :class:`~deathsphere.grid.Segment` whose every value is in the
-    domain (a range is monotone: its ends decide)."""
-
-    name = "values"
-
-    def __init__(self, name: str):
-        self.param_name = name
-
-    def convert(self, value, param, ctx):
-        if isinstance(value, Segment):
-            return value
-        try:
-            seg = parse_segment(str(value), self.param_name)
-        except RangeError as exc:
-            self.fail(str(exc).split(": ", 1)[-1], param, ctx)
-        reason = first_problem(self.param_name, [seg.first, seg.last])
-        if not reason and PARAMS[self.param_name].nonzero and Axis([seg]).contains_zero():
-            reason = f"{self.param_name} must not be 0 ({PARAMS[self.param_name].allowed()})"
-        if reason:
-            self.fail(reason, param, ctx)
-        return seg
+def jobs_option(what: str):
+    return click.option("--jobs", default=None, metavar="N",
+                        help=f"Processes {what}; the output is the same as with one [default: 1].")
 
 
-def axis(segments, default=None) -> Axis:
-    """The axis of a repeatable :class:`Values` option (``default`` if not given)."""
-    if segments:
-        return Axis(list(segments))
-    return Axis.of([math.nan if default is None else default])
+def body_options(bodies=BODIES, radii_only: bool = False):
+    """--body (the bodies the command supports; none if only a wheel),
+    --side, -a, -r, -k, -g, --mu.  ``radii_only``: only --side, -a, -r, -k."""
+    def decorator(f):
+        options = []
+        if len(bodies) > 1:
+            options.append(click.option("--body", type=click.Choice(bodies, case_sensitive=False), default="wheel",
+                                        show_default=True, help="Rolling body."))
+        options += [
+            click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside",
+                         show_default=True, help="Body inside or outside the fixed sphere."),
+            number_option("a", "M", "Body radius a [m].", ("-a", "--wheel-radius"), str(api.A)),
+            number_option("r", "M", "Fixed sphere radius r [m].", ("-r", "--sphere-radius"), str(api.R)),
+            number_option("k", "K", "Inertia factor k: I11 = 2 k m a^2 for a wheel, I = k m a^2 for a sphere.",
+                          ("-k", "--inertia"), "0.5 wheel, 0.4 sphere" if len(bodies) > 1 else "0.5"),
+        ]
+        if not radii_only:
+            options += [
+                number_option("g", "M_S2", "Gravitational acceleration [m/s^2].", ("-g", "--gravity"),
+                              str(api.G)),
+                number_option("mu", "MU", "Friction coefficient available; orbits needing more have status "
+                              "'slips'.", None, "unlimited"),
+            ]
+        for option in reversed(options):
+            f = option(f)
+        return f
+    return decorator
+
+
+#: The optional package an output needs -> the extra that installs it.
+EXTRAS = {"matplotlib": "plot", "pyarrow": "fast"}
 
 
 class OutputPath(click.ParamType):
@@ -171,29 +168,18 @@ class OutputPath(click.ParamType):
             self.fail(f"{path!r}: no permission to write there", param, ctx)
         module = self.extensions[ext]
         if module is not None and importlib.util.find_spec(module) is None:
-            raise click.UsageError(f"writing .{ext} needs {module}: pip install 'deathsphere[plot]'")
+            extra = EXTRAS.get(module, "plot")
+            raise click.UsageError(f"writing .{ext} needs {module}: pip install 'deathsphere[{extra}]'")
         return path
 
 
 def input_option(fields: str):
     return click.option(
-        "--input", "input_path", default=None, metavar="FILE|-",
+        "--input", "input", default=None, metavar="FILE|-",
         help=f"CSV of requests, one per line; its header names the options ({fields}); '-' reads stdin. "
              "Every line after the header gives one row (input_row = its line number after the header); "
-             "a bad line is an invalid row with its reason.")
-
-
-def open_requests(path: str, fields: dict, defaults: dict, ignore=(), aliases=None):
-    """A :class:`~deathsphere.inputs.RequestReader` over ``--input``; an
-    unreadable input (missing, not CSV text, bad header) is a usage error."""
-    from deathsphere.inputs import ALIASES, InputError, RequestReader, open_input
-
-    try:
-        stream = open_input(path)
-        return RequestReader(stream, fields, defaults, source="stdin" if path == "-" else path,
-                             aliases=ALIASES if aliases is None else aliases, ignore=ignore)
-    except InputError as exc:
-        raise click.UsageError(str(exc)) from None
+             "a bad line is an invalid row with its reason.  Options given with it are the defaults for "
+             "missing columns (one value each).")
 
 
 class _Progress:
@@ -250,12 +236,6 @@ def choose_format(fmt: str | None) -> str:
     return "table" if _isatty(sys.stdout) else "csv"
 
 
-def concat(tables: list[Table]) -> Table:
-    if len(tables) == 1:
-        return tables[0]
-    return Table({n: np.concatenate([t[n] for t in tables]) for n in tables[0].names})
-
-
 class Tally:
     """Rows written and rows invalid, counted as the chunks stream past."""
 
@@ -266,34 +246,28 @@ class Tally:
         for table in tables:
             self.rows += len(table)
             if "status" in table:
-                self.invalid += int(np.count_nonzero(table["status"] == "invalid"))
+                self.invalid += int((table["status"] == "invalid").sum())
             yield table
 
 
-def run_batches(batches, evaluate, fmt: str, *, label: str, total: int | None = None,
-                title: str | None = None, view=None, keep=None, output: str | None = None) -> Tally:
-    """Evaluate request batches one by one and write each result as it
-    comes (CSV/JSON/NDJSON stream with flat memory; the terminal table keeps
-    the first rows and counts the rest), with a progress bar on a terminal.
-
-    ``batches`` yields ``(n_requests, request)``; ``keep`` filters rows of
-    each result (``--only``); ``output`` is a file to write instead of
-    stdout (see :func:`emit`).  Returns the :class:`Tally`.
-    """
+def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
+           output: str | None = None) -> Tally:
+    """Write the tables of an :class:`~deathsphere.api.Chunks` as they come
+    (CSV/JSON/NDJSON with flat memory; the terminal table keeps the first
+    rows and counts the rest), with a progress bar on a terminal that
+    follows ``chunks.done`` of ``chunks.total``.  ``output`` is a file to
+    write instead of stdout (see :func:`emit`).  Returns the :class:`Tally`."""
     tally = Tally()
     # rows going to a file leave the terminal to the progress bar
     streaming = fmt != "table" and output is None
 
-    def results(bar):
-        for n, req in batches:
-            table = evaluate(req)
-            if keep is not None:
-                table = keep(table)
+    def tables(bar):
+        for table in chunks:
             yield table
-            bar.advance(n)
+            bar.update(chunks.done, chunks.total)
 
-    with progress(label, total, streaming=streaming) as bar:
-        emit(tally.count(results(bar)), fmt, title, view, output=output)
+    with progress(label, chunks.total, streaming=streaming) as bar:
+        emit(tally.count(tables(bar)), fmt, title, view, output=output)
     return tally
 
 
@@ -323,6 +297,10 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
             return writer(chunks, out)
     if writer is not None:
         return writer(chunks, sys.stdout)
+    from deathsphere.model import Table
+    from deathsphere.render.fit_table import MAX_TERMINAL_ROWS
+    from deathsphere.render.orbit_views import write_rich_table
+
     head, total = [], 0
     for table in chunks:
         if total < MAX_TERMINAL_ROWS:
@@ -330,9 +308,9 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
         total += len(table)
     if not head:
         return 0
-    table = concat(head)
+    table = Table.concat(head)
     if len(table) > MAX_TERMINAL_ROWS:
-        table = Table({n: c[:MAX_TERMINAL_ROWS] for n, c in table.columns.items()})
+        table = table[:MAX_TERMINAL_ROWS]
     if view is not None:
         stdout_console().print(view(table, total_rows=total))
         return total
@@ -351,6 +329,8 @@ class DeathsphereGroup(click.Group):
     closed, disk full) one line and status 3; a reader that stops reading
     (``| head``) a quiet status 0; Ctrl-C status 130.  (Done here rather
     than in a wrapper so that click's CliRunner sees it.)"""
+
+    command_class = Command
 
     def invoke(self, ctx):
         try:

@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import click
 
+from deathsphere import api
 from deathsphere.cli.base import (
     choose_format,
     cli,
     emit,
+    given,
+    jobs_option,
     output_options,
     progress,
     stdout_console,
@@ -28,9 +31,9 @@ def table1_command(fmt):
       deathsphere table1 --format csv
     """
     from deathsphere.render.paper_views import table1_view
-    from deathsphere.results.table1 import PRINTED, table1
+    from deathsphere.results.table1 import PRINTED
 
-    table = table1()
+    table = api.table1()
     fmt = choose_format(fmt)
     if fmt == "table":
         stdout_console().print(table1_view(table, PRINTED))
@@ -40,8 +43,9 @@ def table1_command(fmt):
 
 @cli.command("verify")
 @click.option("--claim", "claims", multiple=True, metavar="ID", help="Check only this claim (repeatable).")
+@jobs_option("checking claims")
 @output_options()
-def verify_command(claims, fmt):
+def verify_command(claims, jobs, fmt):
     """Check every quantitative claim of the paper: a checklist with the evidence.
 
     Each claim (Table 1, the inequalities and limits of each section, the
@@ -55,20 +59,14 @@ def verify_command(claims, fmt):
       deathsphere verify --claim T1-g --claim E28
       deathsphere verify --format csv
     """
-    from deathsphere.results import verify
-
-    known = {c.id for c in verify.CLAIMS}
-    for c in claims:
-        if c not in known:
-            raise click.BadParameter(f"unknown claim {c!r}; known: {' '.join(sorted(known))}",
-                                     param_hint="'--claim'")
     fmt = choose_format(fmt)
-    ids = list(claims) or None
-    with progress("checking claims", len(ids or verify.CLAIMS)) as bar:
-        table = verify.run(ids, progress=lambda claim: bar.advance(1, description=claim.id))
+    with progress("checking claims", api.n_claims(claims)) as bar:
+        table = api.verify(claims, progress=lambda claim: bar.advance(1, description=claim.id),
+                           **given(jobs=jobs))
     if fmt == "table":
         from deathsphere.render.paper_views import checklist_view
+        from deathsphere.results.verify import counts
 
-        stdout_console().print(checklist_view(table, verify.counts(table)))
+        stdout_console().print(checklist_view(table, counts(table)))
     else:
         emit([table], fmt)

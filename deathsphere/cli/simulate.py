@@ -4,15 +4,16 @@ from __future__ import annotations
 
 import click
 
-
+from deathsphere import api
 from deathsphere.cli.base import (
     OutputPath,
-    Quantity,
     body_options,
     choose_format,
     cli,
     emit,
     fail,
+    given,
+    number_option,
     one_line,
     output_options,
     progress,
@@ -42,38 +43,32 @@ def _preflight_output(output) -> bool:
 
 
 @cli.command("simulate")
-@click.option("--theta", required=True, type=Quantity("theta"), metavar="DEG",
-              help="Polar angle of the contact point (vertical orbits: the cone angle, 90 = great circle).")
-@click.option("--alpha", type=Quantity("alpha"), default=None, metavar="DEG",
-              help="Wheel: tilt of the steady orbit, any angle (205 = -155).")
-@click.option("--omega3", type=Quantity("omega3"), default=None, metavar="RAD_S",
-              help="Sphere: spin about the contact normal.")
-@click.option("--omega", type=Quantity("omega"), default=None, metavar="RAD_S",
-              help="Sphere: the signed orbital rate instead.")
+@number_option("theta", "DEG", "Polar angle of the contact point (vertical orbits: the cone angle, 90 = great "
+               "circle).", required=True)
+@number_option("alpha", "DEG", "Wheel: tilt of the steady orbit, any angle (205 = -155).")
+@number_option("omega3", "RAD_S", "Sphere: spin about the contact normal.")
+@number_option("omega", "RAD_S", "Sphere: the signed orbital rate instead.")
 @click.option("--branch", type=click.IntRange(0, 1), default=0, show_default=True,
               help="Sphere with --omega3: root of eq. 55 (0 slow, 1 fast).")
 @click.option("--vertical", is_flag=True, help="A vertical orbit of a wheel, started at the top with --v-top.")
-@click.option("--v-top", "v_top", type=Quantity("v_top"), default=None, metavar="M_S",
-              help="Vertical: speed at the top, >= 0.")
-@click.option("--perturb", type=Quantity("perturb"), default=0.0, show_default=True, metavar="EPS",
-              help="Kick off the steady orbit [rad]: the wheel tilted by EPS about its direction of travel "
-                   "(a sphere: its contact point moved EPS down the meridian); rolling and contact still hold.")
-@click.option("--periods", type=Quantity("periods"), default=20.0, show_default=True,
-              help="How long: periods of the steady orbit (vertical: laps), > 0.")
-@click.option("--points-per-period", type=Quantity("points_per_period"), default=100, show_default=True,
-              help="Output rows per period, 2..100000.")
-@click.option("--method", type=click.Choice(("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")), default="DOP853",
+@number_option("v_top", "M_S", "Vertical: speed at the top, >= 0.")
+@number_option("perturb", "DEG", "Kick off the steady orbit [deg], -60..60: the wheel tilted by this about its "
+               "direction of travel (a sphere: its contact point moved this far down the meridian); rolling and "
+               "contact still hold.", None, "0")
+@number_option("periods", "N", "How long: periods of the steady orbit (vertical: laps), > 0.", None, "20")
+@number_option("points_per_period", "N", "Output rows per period, 2..100000.", None, "100")
+@click.option("--method", type=click.Choice(api.METHODS, case_sensitive=False), default="DOP853",
               show_default=True, help="scipy.integrate.solve_ivp method.")
-@click.option("--rtol", type=click.FloatRange(1e-14, 1e-2), default=1e-10, show_default=True)
-@click.option("--atol", type=click.FloatRange(1e-16, 1.0), default=None, help="[default: = rtol, per scaled component]")
-@click.option("--frame", type=click.Choice(("turning", "lab")), default="turning", show_default=True,
+@number_option("rtol", "TOL", "Relative tolerance, 1e-14..1e-2.", None, "1e-10")
+@number_option("atol", "TOL", "Absolute tolerance per scaled component, 1e-16..1.", None, "= rtol")
+@click.option("--frame", type=click.Choice(api.FRAMES), default="turning", show_default=True,
               help="Integrate in the frame turning with the steady orbit, or in the lab.")
 @click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
 @click.option("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
               help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), "
                    "or write the 3-D view: .html (interactive, self-contained), .gif (plot extra), "
                    ".mp4 (plot extra and ffmpeg).")
-@body_options
+@body_options(bodies=("wheel", "sphere"))
 @output_options()
 def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, perturb, periods, points_per_period,
                      method, rtol, atol, frame, summary_only, output, body, side, a, r, k, g, mu, fmt):
@@ -91,21 +86,21 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     \b
     Examples:
       deathsphere simulate --theta 60 --alpha 10 --periods 20
-      deathsphere simulate --theta 60 --alpha 10 --perturb 0.05 --format csv > run.csv
-      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-6    (unstable: loses contact)
+      deathsphere simulate --theta 60 --alpha 10 --perturb 3 --format csv > run.csv
+      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-4    (unstable: loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
-      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-3 --output orbit.html   (3-D view)
+      deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output orbit.html   (3-D view)
     """
     from deathsphere import simulation
-    from deathsphere.api import prepare_simulation
     from deathsphere.render.simulation_view import simulation_view
 
     view = output is not None and _preflight_output(output)
-    sim = prepare_simulation(theta, alpha, body=body.lower(), side=side.lower(), a=a, r=r, k=k, g=g, mu=mu,
-                             omega3=omega3, omega=omega, branch=branch, vertical=vertical, v_top=v_top,
-                             perturb=perturb, periods=periods, points_per_period=points_per_period,
-                             method=method, rtol=rtol, atol=atol, frame=frame, record_states=view)
+    sim = api.prepare_simulation(
+        theta, branch=branch, vertical=vertical, method=method, frame=frame, record_states=view,
+        **given(alpha=alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3, omega=omega,
+                v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
+                atol=atol))
     fmt = choose_format(fmt)
     series = []
 

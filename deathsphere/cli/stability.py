@@ -1,28 +1,27 @@
-"""``deathsphere stability``: one orbit's exact stability beside the paper's results."""
+"""``deathsphere stability``: one orbit's exact stability beside the paper's
+results (:func:`deathsphere.api.stability`)."""
 
 from __future__ import annotations
 
-import click
-
+from deathsphere import api
 from deathsphere.cli.base import (
-    Quantity,
     body_options,
     choose_format,
     cli,
     emit,
-    make_setup,
+    given,
+    number_option,
     output_options,
     stdout_console,
 )
 
 
 @cli.command("stability")
-@click.option("--theta", required=True, type=Quantity("theta"), metavar="DEG", help="Polar angle of the orbit, 0..180.")
-@click.option("--alpha", required=True, type=Quantity("alpha"), metavar="DEG",
-              help="Tilt of the wheel, any angle (205 = -155).")
-@body_options
+@number_option("theta", "DEG", "Polar angle of the orbit, 0..180.", required=True)
+@number_option("alpha", "DEG", "Tilt of the wheel, any angle (205 = -155).", required=True)
+@body_options(bodies=("wheel",))
 @output_options()
-def stability_command(theta, alpha, body, side, a, r, k, g, mu, fmt):
+def stability_command(theta, alpha, side, a, r, k, g, mu, fmt):
     """Exact stability of a wheel's horizontal orbit, and the paper's results beside it.
 
     The exact verdict, growth rate and the two nutation frequencies come from
@@ -38,17 +37,11 @@ def stability_command(theta, alpha, body, side, a, r, k, g, mu, fmt):
       deathsphere stability --theta 90 --alpha 80      (unstable: the equator claim fails)
       deathsphere stability --theta 60 --alpha 10 -a 0.03 --format csv
     """
-    from deathsphere.results.stability_report import stability_report
-
-    setup = make_setup(body, side, a, r, k, g, mu)
-    if setup.body != "wheel":
-        raise click.UsageError("stability compares a wheel's orbit with the paper; for a sphere see the "
-                               "stability columns of `deathsphere orbit --body sphere`")
-    table = stability_report(setup, theta, alpha)
+    table = api.stability(**given(theta=theta, alpha=alpha, side=side, a=a, r=r, k=k, g=g, mu=mu))
     fmt = choose_format(fmt)
     if fmt == "table":
         from deathsphere.render.paper_views import stability_view
 
-        stdout_console().print(stability_view(table, setup))
+        stdout_console().print(stability_view(table))
     else:
         emit([table], fmt)

@@ -88,7 +88,7 @@ def _paper_label(quantity: str, units: str) -> tuple[str, str]:
     return label, condition.rstrip(")")
 
 
-def stability_view(table: Table, setup) -> Group:
+def stability_view(table: Table) -> Group:
     """``deathsphere stability``: the exact block, then the paper's results
     grouped by case (equator, small wheel, near the poles), whether each
     applies here, and the notes.  Labels stay on one line; the conditions
@@ -96,9 +96,9 @@ def stability_view(table: Table, setup) -> Group:
     from deathsphere.physics.stability import SMALL_WHEEL_VALIDITY
 
     get = table.records()
-    head = (f"[italic]stability of a wheel {setup.side}, θ = {format_number(get[0]['theta_deg'])}°, "
-            f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(setup.a)} m, "
-            f"r = {format_number(setup.r)} m, k = {format_number(setup.k)})[/italic]")
+    head = (f"[italic]stability of a wheel {get[0]['side']}, θ = {format_number(get[0]['theta_deg'])}°, "
+            f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(get[0]['a_m'])} m, "
+            f"r = {format_number(get[0]['r_m'])} m, k = {format_number(get[0]['k'])})[/italic]")
     exact_rows = [row for row in get if row["source"] == "exact"]
     exact = FitTable([Column("quantity", "quantity", [escape(r["quantity"]) for r in exact_rows], "left"),
                       Column("value", "value", [_cell(r["exact"], 5) for r in exact_rows]),

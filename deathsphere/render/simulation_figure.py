@@ -124,8 +124,8 @@ def _default_title(summary, n_bodies):
         s = {name: summary[name][0] for name in summary.names}
         what = (f"{s['body']} {s['side']}, {s['orbit']} orbit, theta = {s['theta_deg']:g} deg"
                 + (f", alpha = {s['alpha_deg']:g} deg" if s["body"] == "wheel" else ""))
-        kick = s["perturb_rad"] + s["perturb_theta_rad"] if "perturb_rad" in summary else 0.0
-        extra = f", kick {s['perturb_rad']:g} rad" if kick else ""
+        kick = s["perturb_deg"] + s["perturb_theta_deg"] if "perturb_deg" in summary else 0.0
+        extra = f", kick {s['perturb_deg']:g} deg" if kick else ""
         return f"{what}{extra}: {s['status'].replace('_', ' ')} ({s['method']}, rtol {s['rtol']:g})"
     counts = {}
     for st in summary["status"]:

@@ -30,7 +30,7 @@ def simulation_view(summary: Table):
     get = row_record(summary)
     what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, θ = {format_number(get['theta_deg'])}°"
             + (f", α = {format_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
-            + (f", kick {format_number(get['perturb_rad'])} rad" if get.get("perturb_rad") else ""))
+            + (f", kick {format_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
     out = RichTable(title=f"simulation: {what}\nsolve_ivp {get['method']}, rtol {get['rtol']:g}, "
                           f"atol {get['atol']:g}, {get['frame']} frame",
                     box=box.SIMPLE_HEAVY, title_justify="left")

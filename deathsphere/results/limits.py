@@ -4,10 +4,12 @@ paper; methods in docs/limits.md, physics in :mod:`deathsphere.physics.region`).
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import numpy as np
 
 from deathsphere.model import Setup, Table
+from deathsphere.parallel import ordered_map
 from deathsphere.physics import region
 from deathsphere.physics.stability import stability_boundary_alphas
 
@@ -45,8 +47,15 @@ def boundary_thetas(step_deg: float) -> np.ndarray:
 _STABILITY_CHUNK = 64
 
 
+def _stability_part(theta_deg: np.ndarray, a_over_r: float, k: float, outside: bool, mu: float,
+                    max_g: float) -> np.ndarray:
+    """The stability boundary at a block of thetas (one unit of parallel work)."""
+    return stability_boundary_alphas(np.deg2rad(theta_deg), a_over_r, 1.0, k, outside=outside, mu=mu,
+                                     max_g=max_g)
+
+
 def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: float, step_deg: float,
-                   stability: bool = False, progress=None) -> Table:
+                   stability: bool = False, progress=None, jobs: int = 1) -> Table:
     """Every boundary curve alpha(theta) of the allowed region, one row per
     point (curve, equation, theta_deg, alpha_deg), theta on a grid of
     ``step_deg`` over (0, 180) deg, each alpha root-found to 1e-9 rad or better.
@@ -54,17 +63,19 @@ def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: f
     With ``stability`` also the curve ``stability``: where feasible orbits
     change from stable to unstable (:func:`stability_boundary_alphas`,
     bisected to 1e-10 rad between samples 0.25 deg apart in alpha; beyond
-    the paper).  ``progress(n)`` is told as each n theta values are done
+    the paper), in blocks of thetas on ``jobs`` processes (the same values
+    as with one).  ``progress(n)`` is told as each n theta values are done
     (the stability boundary is the slow part: ~100x the others)."""
     theta = boundary_thetas(step_deg)
     curves = region.boundary_alphas(np.deg2rad(theta), a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g)
     if stability:
+        blocks = [theta[start:start + _STABILITY_CHUNK] for start in range(0, theta.size, _STABILITY_CHUNK)]
+        work = partial(_stability_part, a_over_r=a_over_r, k=k, outside=outside, mu=mu, max_g=max_g)
         parts = []
-        for start in range(0, theta.size, _STABILITY_CHUNK):
-            part = np.deg2rad(theta[start:start + _STABILITY_CHUNK])
-            parts.append(stability_boundary_alphas(part, a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g))
+        for block, part in zip(blocks, ordered_map(work, blocks, jobs)):
+            parts.append(part)
             if progress is not None:
-                progress(part.size)
+                progress(block.size)
         width = max(p.shape[1] for p in parts)
         curves["stability"] = np.concatenate(
             [np.pad(p, ((0, 0), (0, width - p.shape[1])), constant_values=np.nan) for p in parts])

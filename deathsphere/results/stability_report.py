@@ -18,7 +18,7 @@ from deathsphere.model import Setup, Table, evaluate, make_requests
 from deathsphere.physics import stability as exact_stability
 
 COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", "applies", "validity",
-           "paper", "corrected", "exact", "deviation", "note")
+           "paper", "corrected", "exact", "deviation", "note", "side", "a_m", "r_m", "k", "g_m_s2")
 
 _VERDICT = exact_stability.VERDICT_LABELS
 
@@ -73,4 +73,8 @@ def stability_report(setup: Setup, theta_deg: float, alpha_deg: float) -> Table:
     table = {name: np.array([row.get(name) for row in rows], dtype=object) for name in COLUMNS}
     table["theta_deg"] = np.full(len(rows), float(theta_deg))
     table["alpha_deg"] = np.full(len(rows), float(alpha_deg))
+    # the orbit's setup echoed, as every command echoes its inputs
+    table["side"] = np.full(len(rows), setup.side, dtype=object)
+    for name, value in (("a_m", setup.a), ("r_m", setup.r), ("k", setup.k), ("g_m_s2", setup.g)):
+        table[name] = np.full(len(rows), float(value))
     return Table(table)

@@ -447,7 +447,7 @@ def _stab_equator():
     alpha = deg(np.arange(1.0, 84.0, 0.25))
     res = st.wheel_stability(np.pi / 2, alpha, A, R, K, G)
     unstable = np.rad2deg(alpha[res["verdict"] == st.Verdict.UNSTABLE])
-    _, run = simulation.simulate(simulation.horizontal_starts(Setup(), 90.0, 80.0, perturb_rad=1e-6), periods=2)
+    _, run = simulation.simulate(simulation.horizontal_starts(Setup(), 90.0, 80.0, perturb_deg=np.rad2deg(1e-6)), periods=2)
     verdict = "refuted" if unstable.size else "confirmed"
     return Finding(verdict, f"a/r = 0.1: exact linearisation unstable for alpha >= {unstable.min():.2f} deg "
                             f"(orbits fit up to 84.3); the simulator, kicked by 1e-6 rad at alpha = 80 deg: "

@@ -115,6 +115,9 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
             out[col][rows] = np.rad2deg(res[key])
         status[rows] = res["status"]
         reason[rows] = REASON_TEXT[res["reason"]]
+        # the top speed given is echoed as given (v / r' * r' may differ in the last bit)
+        echo = rows[~np.isnan(req["v_top"][rows]) & ~np.isnan(out["v_cm_m_s"][rows])]
+        out["v_cm_m_s"][echo] = req["v_top"][echo]
     verdict = np.full(n, "", dtype=object)
     method = np.full(n, "", dtype=object)
     growth = np.full(n, np.nan)

@@ -33,7 +33,7 @@ Use
    (theta, alpha); a sphere given (theta, omega3 and a branch) or (theta,
    Omega)) or :func:`vertical_starts` (a vertical orbit of a wheel given
    the cone angle theta and the speed of its centre), optionally kicked
-   off the steady orbit by ``perturb_rad`` [RADIANS].
+   off the steady orbit by ``perturb_deg``.
    :meth:`Starts.concat` joins several sets.
 2. ``for chunk in Simulation(starts, ...).chunks(progress): ...`` yields
    the time series period by period, then ``sim.summary()`` gives one row
@@ -45,10 +45,9 @@ Statuses (:data:`STATUSES`): ``completed`` (ran the requested time),
 event), ``no_fit`` / ``no_orbit`` (no steady orbit to start from: nothing is
 integrated), ``failed`` (the integrator gave up).
 
-Angles are in degrees at this level (the CLI's units), except the
-perturbations, which are in radians (``perturb_rad``,
-``perturb_theta_rad``); lengths in m, rates in rad/s, forces per unit mass
-in m/s^2.
+Angles are in degrees at this level, as on the command line (the kicks
+``perturb_deg`` and ``perturb_theta_deg`` too); lengths in m, rates in
+rad/s, forces per unit mass in m/s^2.
 """
 
 from deathsphere.simulation.runner import FRAMES, METHODS, Simulation, simulate

@@ -7,10 +7,11 @@ horizontal orbits of the paper (a wheel given (theta, alpha), eqs. (8b),
 (11)-(13), (29); a sphere given (theta, omega3 and a branch) or (theta,
 Omega), eqs. (42), (55)); :func:`vertical_starts` puts wheels on vertical
 orbits (eqs. (26)-(28b), (82)).  Both can kick the body off the steady orbit
-by a small angle given in RADIANS (``perturb_rad``).
+by a small angle (``perturb_deg``).
 
-Angles are in degrees at the builders' interface (the CLI's units) except
-the kicks, which are in radians; the :class:`Starts` fields are in radians.
+Every angle is in degrees at the builders' interface, as on the command
+line (the kicks too); the :class:`Starts` fields used by the integrator
+are in radians, and the angles given are kept in degrees for the summary.
 """
 
 from __future__ import annotations
@@ -40,12 +41,14 @@ class Starts:
     ``frame[i]`` has the columns x', y', z' of the orbit's frame in lab
     components (paper, fig. 1-2: z' the orbit axis, x' towards the top);
     identity for horizontal orbits.  ``theta``, ``alpha`` [rad] are the
-    steady (unperturbed) values the drift is measured from; ``rate`` [rad/s]
+    steady (unperturbed) values the drift is measured from, and
+    ``theta_deg``, ``alpha_deg`` the same in degrees as given (the summary
+    echoes them: 60 stays 60, not 59.99999999999999); ``rate`` [rad/s]
     the steady Omega (horizontal) or phidot at the start (vertical);
     ``turning`` [rad/s] the rate of the turning frame (Omega for horizontal
     orbits, 0 for vertical ones); ``period`` [s] the time one "period" of the
     run lasts; ``phi0`` [rad] the start azimuth in the orbit frame;
-    ``perturb_rad``, ``perturb_theta_rad`` [rad] the kicks.
+    ``perturb_deg``, ``perturb_theta_deg`` [deg] the kicks as given.
     ``status`` holds int8 :class:`~deathsphere.simulation.status.RunStatus`
     codes: PENDING for bodies that can be integrated, else NO_FIT /
     NO_ORBIT with ``reason``.
@@ -60,14 +63,16 @@ class Starts:
     orbit: np.ndarray
     theta: np.ndarray
     alpha: np.ndarray
+    theta_deg: np.ndarray
+    alpha_deg: np.ndarray
     rate: np.ndarray
     turning: np.ndarray
     period: np.ndarray
     phi0: np.ndarray
     speed: np.ndarray
     omega3: np.ndarray
-    perturb_rad: np.ndarray
-    perturb_theta_rad: np.ndarray
+    perturb_deg: np.ndarray
+    perturb_theta_deg: np.ndarray
     mu: np.ndarray
     status: np.ndarray
     reason: np.ndarray
@@ -132,23 +137,13 @@ def _input_rows(input_row, n):
     return rows
 
 
-def _kick(perturb_rad, perturb):
-    """The kick [rad]: ``perturb_rad``, or ``perturb``, its former name
-    (also radians), while callers move to the new name."""
-    if perturb is None:
-        return perturb_rad
-    if np.any(np.asarray(perturb_rad, dtype=float) != 0):
-        raise TypeError("give the kick once: perturb_rad (perturb is its former name)")
-    return perturb
-
-
-def _check_angles(theta_deg, perturb_rad, perturb_theta_rad):
+def _check_angles(theta_deg, perturb_deg, perturb_theta_deg):
     theta_deg = np.asarray(theta_deg, dtype=float)
     if not np.all(np.isfinite(theta_deg)) or np.any((theta_deg < 0) | (theta_deg > 180)):
         raise ValueError("theta must be finite and within 0..180 deg")
-    for name, x in (("perturb_rad", perturb_rad), ("perturb_theta_rad", perturb_theta_rad)):
+    for name, x in (("perturb_deg", perturb_deg), ("perturb_theta_deg", perturb_theta_deg)):
         if not np.all(np.isfinite(np.asarray(x, dtype=float))):
-            raise ValueError(f"{name} must be finite (radians)")
+            raise ValueError(f"{name} must be finite (degrees)")
 
 
 def wheel_geometry(theta, alpha, phi, a, r):
@@ -200,10 +195,13 @@ def _setup_status(orb):
 
 @dataclass
 class _Horizontal:
-    """The body-specific part of :func:`horizontal_starts` (radians)."""
+    """The body-specific part of :func:`horizontal_starts` (radians, and the
+    angles in degrees as given)."""
 
     theta: np.ndarray
     alpha: np.ndarray
+    theta_deg: np.ndarray
+    alpha_deg: np.ndarray
     phi: np.ndarray
     rate: np.ndarray
     state: np.ndarray
@@ -211,17 +209,18 @@ class _Horizontal:
     reason: np.ndarray
     speed: np.ndarray
     omega3: np.ndarray
-    kick_alpha: np.ndarray
-    kick_theta: np.ndarray
+    kick_alpha: np.ndarray   # [deg]
+    kick_theta: np.ndarray   # [deg]
 
 
-def _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_rad, perturb_theta_rad, phi_deg, outside):
+def _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_deg, perturb_theta_deg, phi_deg, outside):
     """A wheel on the orbit (theta, alpha): Omega from eq. (29), fit (eqs. 0 /
     81) and a real Omega exactly as ``deathsphere orbit`` decides."""
     a, r, k, g = setup.a, setup.r, setup.k, setup.g
     if alpha_deg is None:
         raise ValueError("a wheel's horizontal orbit needs alpha (deg)")
-    th_d, al_d, d_al, d_th, ph_d = _flat(theta_deg, alpha_deg, perturb_rad, perturb_theta_rad, phi_deg)
+    th_d, al_d, kick_al, kick_th, ph_d = _flat(theta_deg, alpha_deg, perturb_deg, perturb_theta_deg, phi_deg)
+    d_al, d_th = np.deg2rad(kick_al), np.deg2rad(kick_th)
     if not np.all(np.isfinite(al_d)):
         raise ValueError("alpha must be finite")
     n = th_d.size
@@ -233,12 +232,13 @@ def _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_rad, perturb_theta_ra
     state = np.full((9, n), np.nan)
     if ok.any():
         state[:, ok] = wheel_start(th[ok], al[ok], ph[ok], rate[ok], d_th[ok], d_al[ok], a, r)
-    return _Horizontal(theta=th, alpha=al, phi=ph, rate=rate, state=state, status=status, reason=reason,
-                       speed=np.where(ok, orb["v_cm"], np.nan), omega3=np.full(n, np.nan),
-                       kick_alpha=d_al, kick_theta=d_th)
+    return _Horizontal(theta=th, alpha=al, theta_deg=th_d, alpha_deg=al_d, phi=ph, rate=rate, state=state,
+                       status=status, reason=reason, speed=np.where(ok, orb["v_cm"], np.nan),
+                       omega3=np.full(n, np.nan),
+                       kick_alpha=kick_al, kick_theta=kick_th)
 
 
-def _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_rad, perturb_theta_rad, phi_deg,
+def _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_deg, perturb_theta_deg, phi_deg,
                        outside):
     """A sphere on the orbit theta given its spin (root ``branch`` of eq. 55)
     or Omega, with eq. (55)'s statuses exactly as ``deathsphere orbit``
@@ -247,7 +247,8 @@ def _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_rad, per
     if (omega3 is None) == (omega is None):
         raise ValueError("a sphere's horizontal orbit needs exactly one of omega3 and omega (rad/s)")
     spin = omega3 if omega is None else omega
-    th_d, sp, br, d1, d2, ph_d = _flat(theta_deg, spin, branch, perturb_rad, perturb_theta_rad, phi_deg)
+    th_d, sp, br, kick1, kick2, ph_d = _flat(theta_deg, spin, branch, perturb_deg, perturb_theta_deg, phi_deg)
+    d1, d2 = np.deg2rad(kick1), np.deg2rad(kick2)
     if not np.all(np.isfinite(sp)):
         raise ValueError("omega3 / omega must be finite")
     if not np.all(np.isin(br, (0, 1))):
@@ -269,13 +270,14 @@ def _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_rad, per
         Xk, _ = dyn.sphere_orbit_state(th[ok] + d1[ok] + d2[ok], rate[ok], a, r, k, g, outside, ph[ok])
         state[:, ok] = np.concatenate((Xk[dyn.C], Xk[dyn.E1], X0[dyn.W]))
         om3_all[ok] = om3
-    return _Horizontal(theta=th, alpha=al, phi=ph, rate=rate, state=state, status=status, reason=reason,
-                       speed=np.where(ok, orb["v_cm"], np.nan), omega3=om3_all, kick_alpha=d1, kick_theta=d2)
+    bank_deg = th_d + np.where(outside, 90.0, -90.0)
+    return _Horizontal(theta=th, alpha=al, theta_deg=th_d, alpha_deg=bank_deg, phi=ph, rate=rate, state=state,
+                       status=status, reason=reason, speed=np.where(ok, orb["v_cm"], np.nan), omega3=om3_all,
+                       kick_alpha=kick1, kick_theta=kick2)
 
 
 def horizontal_starts(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, omega=None, branch=0,
-                      perturb_rad=0.0, perturb_theta_rad=0.0, phi_deg=0.0, input_row=None,
-                      perturb=None) -> Starts:
+                      perturb_deg=0.0, perturb_theta_deg=0.0, phi_deg=0.0, input_row=None) -> Starts:
     """Bodies on steady horizontal orbits (McDonald 1993 secs. 2.2.2, 3-5).
 
     Parameters (arrays broadcast against each other; one body per element)
@@ -288,18 +290,17 @@ def horizontal_starts(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, o
     omega3 : [rad/s]   sphere: spin about axis 3; Omega is root ``branch``
         (0 slow, 1 fast) of eq. (55)
     omega : [rad/s]    sphere: the signed orbital rate Omega instead
-    perturb_rad : [RADIANS]  the kick off the steady orbit.  Wheel: tilt by
-        ``perturb_rad`` about axis 2 (the orbit's tangent through the contact
-        point), i.e. alpha -> alpha + perturb_rad, keeping the contact point
+    perturb_deg : [deg]  the kick off the steady orbit.  Wheel: tilt by
+        ``perturb_deg`` about axis 2 (the orbit's tangent through the contact
+        point), i.e. alpha -> alpha + perturb_deg, keeping the contact point
         and the angular velocity.  Sphere: moves the contact point
-        ``perturb_rad`` down the meridian (theta -> theta + perturb_rad),
+        ``perturb_deg`` down the meridian (theta -> theta + perturb_deg),
         keeping the angular velocity.  Rolling and contact hold exactly
         after the kick.
-    perturb_theta_rad : [RADIANS]  wheel: also move the contact point down
-        the meridian by this (alpha kept); sphere: added to ``perturb_rad``
+    perturb_theta_deg : [deg]  wheel: also move the contact point down
+        the meridian by this (alpha kept); sphere: added to ``perturb_deg``
     phi_deg : [deg]    azimuth of the contact point at t = 0
     input_row : ints   labels of the bodies (default 1..n)
-    perturb : [RADIANS]  former name of ``perturb_rad`` (give one of them)
 
     Returns
     -------
@@ -312,14 +313,13 @@ def horizontal_starts(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, o
     Raises ValueError for invalid parameters (body particle, k = 0, theta
     outside 0..180 deg, missing alpha / omega3).
     """
-    perturb_rad = _kick(perturb_rad, perturb)
     _check_setup(setup)
-    _check_angles(theta_deg, perturb_rad, perturb_theta_rad)
+    _check_angles(theta_deg, perturb_deg, perturb_theta_deg)
     outside = setup.side == "outside"
     if setup.body == "wheel":
-        h = _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_rad, perturb_theta_rad, phi_deg, outside)
+        h = _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_deg, perturb_theta_deg, phi_deg, outside)
     else:
-        h = _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_rad, perturb_theta_rad, phi_deg,
+        h = _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_deg, perturb_theta_deg, phi_deg,
                                outside)
     n = h.theta.size
     params = dyn.BodyParams(*(np.full(n, v, dtype=float) for v in (setup.a, setup.r, setup.k, setup.g)),
@@ -333,8 +333,9 @@ def horizontal_starts(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, o
         state=state, params=params, frame=np.broadcast_to(np.eye(3), (n, 3, 3)).copy(),
         input_row=_input_rows(input_row, n), body=np.full(n, setup.body, dtype=object),
         side=np.full(n, setup.side, dtype=object), orbit=np.full(n, "horizontal", dtype=object),
-        theta=h.theta, alpha=h.alpha, rate=h.rate, turning=np.where(ok, h.rate, 0.0), period=period,
-        phi0=h.phi, speed=h.speed, omega3=h.omega3, perturb_rad=h.kick_alpha, perturb_theta_rad=h.kick_theta,
+        theta=h.theta, alpha=h.alpha, theta_deg=h.theta_deg, alpha_deg=h.alpha_deg, rate=h.rate,
+        turning=np.where(ok, h.rate, 0.0), period=period,
+        phi0=h.phi, speed=h.speed, omega3=h.omega3, perturb_deg=h.kick_alpha, perturb_theta_deg=h.kick_theta,
         mu=np.full(n, setup.mu), status=h.status, reason=h.reason)
 
 
@@ -359,8 +360,8 @@ def _vertical_period(th, v, ph, rp_s, fits, a, r, k, g, outside):
     return np.where(fits, period, np.nan)
 
 
-def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, perturb_rad=0.0,
-                    perturb_theta_rad=0.0, input_row=None, perturb=None) -> Starts:
+def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, perturb_deg=0.0,
+                    perturb_theta_deg=0.0, input_row=None) -> Starts:
     """Wheels on vertical orbits (McDonald 1993 sec. 2.2.1, eqs. 26-28b; sec. 3, eq. 82).
 
     The orbit's axis z' is horizontal; the wheel lies in the orbit plane
@@ -377,10 +378,9 @@ def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, pertur
         the top); the wheel moves towards increasing phi
     phi_start_deg : [deg]  azimuth of the start point from the top (0: top,
         180: bottom)
-    perturb_rad : [RADIANS]  tilt kick out of the orbit plane, alpha ->
-        alpha + perturb_rad about axis 2 (as for :func:`horizontal_starts`)
-    perturb_theta_rad : [RADIANS]  contact point moved by this in cone angle
-    perturb : [RADIANS]  former name of ``perturb_rad`` (give one of them)
+    perturb_deg : [deg]  tilt kick out of the orbit plane, alpha ->
+        alpha + perturb_deg about axis 2 (as for :func:`horizontal_starts`)
+    perturb_theta_deg : [deg]  contact point moved by this in cone angle
 
     The "period" of the run is the lap time (elliptic integral,
     :func:`deathsphere.physics.vertical_orbit.lap_time`) when the wheel inside
@@ -391,12 +391,12 @@ def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, pertur
     outside).  A wheel without contact at the start (inside, too slow at
     the top: eq. 28a) stops at once with status contact_lost.
     """
-    perturb_rad = _kick(perturb_rad, perturb)
     _check_setup(setup)
     if setup.body != "wheel":
         raise ValueError("vertical orbits are for a wheel (body wheel)")
-    _check_angles(theta_deg, perturb_rad, perturb_theta_rad)
-    th_d, v, ps_d, d_al, d_th = _flat(theta_deg, speed, phi_start_deg, perturb_rad, perturb_theta_rad)
+    _check_angles(theta_deg, perturb_deg, perturb_theta_deg)
+    th_d, v, ps_d, kick_al, kick_th = _flat(theta_deg, speed, phi_start_deg, perturb_deg, perturb_theta_deg)
+    d_al, d_th = np.deg2rad(kick_al), np.deg2rad(kick_th)
     if not np.all(np.isfinite(v)) or np.any(v < 0):
         raise ValueError("speed must be finite and >= 0 m/s")
     if not np.all(np.isfinite(ps_d)):
@@ -425,6 +425,7 @@ def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, pertur
         state=state, params=params, frame=np.broadcast_to(VERTICAL_FRAME, (n, 3, 3)).copy(),
         input_row=_input_rows(input_row, n), body=np.full(n, "wheel", dtype=object),
         side=np.full(n, setup.side, dtype=object), orbit=np.full(n, "vertical", dtype=object),
-        theta=th, alpha=al, rate=rate, turning=np.zeros(n), period=period, phi0=ph,
-        speed=v, omega3=np.full(n, np.nan), perturb_rad=d_al, perturb_theta_rad=d_th,
+        theta=th, alpha=al, theta_deg=th_d, alpha_deg=np.full(n, 180.0 if outside else 0.0), rate=rate,
+        turning=np.zeros(n), period=period, phi0=ph,
+        speed=v, omega3=np.full(n, np.nan), perturb_deg=kick_al, perturb_theta_deg=kick_th,
         mu=np.full(n, setup.mu), status=status, reason=reason)

@@ -23,7 +23,7 @@ __all__ = ["SUMMARY_COLUMNS", "Ledger"]
 #: Summary columns, one row per body (docs/simulation.md).
 SUMMARY_COLUMNS = (
     "input_row", "body", "side", "orbit", "theta_deg", "alpha_deg", "a_m", "r_m", "k", "g_m_s2",
-    "omega_rad_s", "omega3_rad_s", "speed_m_s", "period_s", "perturb_rad", "perturb_theta_rad",
+    "omega_rad_s", "omega3_rad_s", "speed_m_s", "period_s", "perturb_deg", "perturb_theta_deg",
     "mu_available", "status", "reason", "event_time_s", "event_phi_deg", "event_theta_deg",
     "event_alpha_deg", "periods_simulated", "max_theta_drift_deg", "max_alpha_drift_deg",
     "min_normal_per_mass_m_s2", "max_mu_required", "max_abs_energy_drift",
@@ -111,11 +111,11 @@ class Ledger:
         cols = {
             "input_row": s.input_row.astype(np.int64),
             "body": s.body, "side": s.side, "orbit": s.orbit,
-            "theta_deg": np.rad2deg(s.theta), "alpha_deg": np.rad2deg(s.alpha),
+            "theta_deg": s.theta_deg, "alpha_deg": s.alpha_deg,
             "a_m": s.params.a.astype(float), "r_m": s.params.r.astype(float),
             "k": s.params.k.astype(float), "g_m_s2": s.params.g.astype(float),
             "omega_rad_s": s.rate, "omega3_rad_s": s.omega3, "speed_m_s": s.speed, "period_s": period,
-            "perturb_rad": s.perturb_rad.astype(float), "perturb_theta_rad": s.perturb_theta_rad.astype(float),
+            "perturb_deg": s.perturb_deg.astype(float), "perturb_theta_deg": s.perturb_theta_deg.astype(float),
             "mu_available": np.where(np.isinf(mu), np.nan, mu),
             "status": status_labels(self.status), "reason": self.reason.astype(object),
             "event_time_s": acc["event_t"],

@@ -72,12 +72,12 @@ def test_mixed_batch_with_body_and_side_columns(run):
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--body", "sphere", "--theta", "60", "--alpha", "10"], "tilt is fixed"),
-    (["--body", "sphere", "--theta", "60"], "exactly one of --omega3"),
-    (["--body", "sphere", "--theta", "60", "--omega3", "1", "--omega", "1"], "exactly one of --omega3"),
-    (["--theta", "60", "--alpha", "10", "--omega3", "5"], "for --body sphere"),
-    (["--body", "particle", "--theta", "120", "--alpha", "10"], "a particle takes only --theta"),
-    (["--body", "sphere", "--theta", "60", "--omega3", "nan"], "not a finite number"),
+    (["--body", "sphere", "--theta", "60", "--alpha", "10", "--omega3", "80"], "tilt is fixed"),
+    (["--body", "sphere", "--theta", "60"], "exactly one of omega3"),
+    (["--body", "sphere", "--theta", "60", "--omega3", "1", "--omega", "1"], "exactly one of omega3"),
+    (["--theta", "60", "--alpha", "10", "--omega3", "5"], "for a sphere only"),
+    (["--body", "particle", "--theta", "120", "--alpha", "10"], "a particle takes only theta"),
+    (["--body", "sphere", "--theta", "60", "--omega3", "nan"], "must be a finite number"),
 ])
 def test_body_usage_errors(run, args, words):
     res = run("orbit", *args)

@@ -56,7 +56,7 @@ def test_a_row_of_commas_is_kept_and_numbering_never_shifts(run):
     (["--body", "sphere", "--theta", "120", "--omega", "1e308"], "omega (orbital rate) must be"),
     (["--theta", "60", "--alpha", "10", "-a", "1e-320"], "a (body radius) must be 1e-09"),
     (["--theta", "60", "--speed", "0"], "speed (centre speed) must be"),
-    (["--theta", "60", "--omega", "-1"], "must be > 0 rad/s"),
+    (["--theta", "60", "--omega", "-1"], "rate about the vertical, > 0"),
     (["--theta", "0:1e308:1e-300", "--alpha", "1"], "too many values"),
 ])
 def test_values_that_would_overflow_are_refused(run, args, words):
@@ -77,7 +77,7 @@ def test_sweep_of_a_sphere_takes_its_spin(run):
     out = rows(res.stdout)
     assert res.exit_code == 0 and len(out) == 6 and "invalid" not in {r["status"] for r in out}
     assert "ok" in {r["status"] for r in out}
-    one_error_line(run("sweep", "--body", "sphere", "--theta", "60"), "--omega3")
+    one_error_line(run("sweep", "--body", "sphere", "--theta", "60"), "exactly one of omega3")
 
 
 def test_sweep_combinations_that_break_a_rule_are_invalid_rows(run):

@@ -105,7 +105,7 @@ def other_args(draw):
         args += options(draw, ["--mu", "--max-g", "-g"]) + ["--format", draw(FORMAT)]
     elif command == "map":
         args = ["map", "--step", draw(st.sampled_from(["5", "10", "nan", "0", "-1", "11", "abc"]))]
-        args += options(draw, ["--a-over-r", "--mu", "--max-g", "-k"]) + ["--format", draw(FORMAT)]
+        args += options(draw, ["-a", "-r", "--mu", "--max-g", "-k"]) + ["--format", draw(FORMAT)]
     elif command == "stability":
         args = ["stability", "--theta", draw(VALUE), "--alpha", draw(VALUE)] + options(draw, ["-k", "-a"])
         args += ["--format", draw(FORMAT)]

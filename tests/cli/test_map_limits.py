@@ -49,7 +49,7 @@ def test_map_without_the_plot_extra_says_which_extra(run, tmp_path, monkeypatch)
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--a-over-r", "0"], "--a-over-r"), (["--a-over-r", "1.5"], "--a-over-r"),
+    (["-a", "0"], "--wheel-radius"), (["-a", "4.5"], "must be > a = 4.5 m"),
     (["--output", "map.jpg"], ".png, .svg or .pdf"), (["--max-g", "0"], "--max-g"), (["-k", "-1"], "k (inertia"),
 ])
 def test_map_usage_errors(run, args, words):
@@ -76,26 +76,29 @@ def test_alpha_intervals_at_theta(run):
     assert beyond[0]["status"] != "ok"
 
 
-def test_limits_is_for_a_wheel(run):
-    res = run("limits", "--body", "sphere", "--theta", "60")
-    assert res.exit_code == 2 and "wheel" in res.stderr
+def test_limits_and_map_offer_no_body_they_do_not_support(run):
+    # the limits and the map are a wheel's: --body is not offered at all
+    for command in ("limits", "map", "stability", "vertical"):
+        res = run(command, "--body", "sphere", "--theta", "60")
+        assert res.exit_code == 2 and "No such option '--body'" in res.stderr
+    assert "--body" not in run("limits", "--help").stdout
 
 
 def test_map_stability_in_the_terminal(run):
-    text = run("map", "--a-over-r", "0.3", "--stability", "--format", "table", env={"COLUMNS": "80"}).stdout
+    text = run("map", "-a", "0.9", "--stability", "--format", "table", env={"COLUMNS": "80"}).stdout
     lines = text.splitlines()
     assert max(len(line) for line in lines) <= 80
     assert "x allowed, unstable" in text and ". allowed, stable" in text
     grid = "".join(line.split("|", 1)[1] for line in lines if "|" in line)
     assert grid.count("x") > 50 and grid.count(".") > 50
     assert "x" not in "".join(line.split("|", 1)[1] for line in
-                              run("map", "--a-over-r", "0.3", "--format", "table").stdout.splitlines() if "|" in line)
+                              run("map", "-a", "0.9", "--format", "table").stdout.splitlines() if "|" in line)
 
 
 def test_map_stability_boundary_as_data(run):
     from deathsphere.physics.stability import Verdict, wheel_stability
 
-    out = rows(run("map", "--a-over-r", "0.3", "--stability", "--format", "csv", "--step", "5").stdout)
+    out = rows(run("map", "-a", "0.9", "--stability", "--format", "csv", "--step", "5").stdout)
     stab = [r for r in out if r["curve"] == "stability"]
     assert {"eq0", "eq29", "eq33", "stability"} == {r["curve"] for r in out}
     assert len(stab) > 30 and all("exact linearisation" in r["equation"] for r in stab)

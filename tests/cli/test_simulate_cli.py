@@ -17,7 +17,7 @@ def test_steady_orbit_holds(run):
 
 
 def test_time_series_streams_with_summary_on_stderr(run):
-    res = run("simulate", "--theta", "60", "--alpha", "10", "--perturb", "0.05", "--periods", "2",
+    res = run("simulate", "--theta", "60", "--alpha", "10", "--perturb", "3", "--periods", "2",
               "--points-per-period", "8", "--format", "csv")
     out = rows(res.stdout)
     assert list(out[0])[:3] == ["input_row", "t_s", "phi_deg"] and len(out) >= 16
@@ -49,7 +49,7 @@ def test_simulate_table_on_a_terminal(run):
     (["--theta", "60", "--alpha", "10", "--v-top", "3"], "v_top is for vertical orbits"),
     (["--vertical", "--theta", "90"], "v_top"),
     (["--body", "sphere", "--theta", "60"], "exactly one of omega3"),
-    (["--body", "particle", "--theta", "120"], "a wheel or a sphere"),
+    (["--body", "particle", "--theta", "120"], "is not one of 'wheel', 'sphere'"),
     (["--theta", "260", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
     (["--theta", "60", "--alpha", "10", "--rtol", "0"], "--rtol"),
     (["--theta", "60", "--alpha", "10", "--perturb", "nan"], "--perturb"),

@@ -57,7 +57,7 @@ def test_stability_command_table(run):
 
 @pytest.mark.parametrize("args, words", [
     (["--theta", "90"], "--alpha"), (["--theta", "190", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
-    (["--theta", "90", "--alpha", "10", "--body", "sphere"], "for a sphere"),
+    (["--theta", "90", "--alpha", "10", "--body", "sphere"], "No such option '--body'"),
 ])
 def test_stability_usage_errors(run, args, words):
     res = run("stability", *args)

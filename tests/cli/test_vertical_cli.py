@@ -63,9 +63,9 @@ def test_vertical_table_on_a_terminal(run):
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--theta", "90"], "exactly one of --v-top"),
+    (["--theta", "90"], "exactly one of v_top"),
     (["--theta", "90", "--v-top", "-1"], "v_top (top speed) must be 0..1e+09 m/s"),
-    (["--v-top", "5"], "give --theta"),
+    (["--v-top", "5"], "Missing option '--theta'"),
     (["--theta", "90", "--v-top", "5", "-a", "0"], "a (body radius)"),
     (["--theta", "90", "--v-top", "5", "--points", "1"], "--points"),
 ])

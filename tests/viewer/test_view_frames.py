@@ -86,7 +86,7 @@ def test_force_arrows_add_up_to_the_simulated_contact_force(name):
 
 
 def test_recorded_states_are_lab_states_and_change_nothing_else():
-    starts = sim.horizontal_starts(Setup(), 60, 10, perturb_rad=0.05)
+    starts = sim.horizontal_starts(Setup(), 60, 10, perturb_deg=3.0)
     plain, plain_summary = sim.Simulation(starts, periods=0.5, points_per_period=20).run()
     runs = {}
     for frame in ("turning", "lab"):

@@ -9,12 +9,12 @@ from deathsphere.physics import dynamics as dyn
 #: name -> (setup, kind, arguments): one run of every body, side and orbit
 CASES = {
     "wheel_inside": (Setup(), "h", dict(theta_deg=60, alpha_deg=10)),
-    "wheel_kicked": (Setup(), "h", dict(theta_deg=60, alpha_deg=10, perturb_rad=0.05)),
+    "wheel_kicked": (Setup(), "h", dict(theta_deg=60, alpha_deg=10, perturb_deg=3.0)),
     "wheel_outside": (Setup(side="outside"), "h", dict(theta_deg=30, alpha_deg=80)),
     "sphere_inside": (Setup(body="sphere"), "h", dict(theta_deg=120, omega3=40.0)),
     "sphere_outside": (Setup(body="sphere", side="outside"), "h", dict(theta_deg=30, omega3=200.0, branch=0)),
     "vertical": (Setup(), "v", dict(theta_deg=90, speed=6.0)),
-    "unstable": (Setup(), "h", dict(theta_deg=90, alpha_deg=80, perturb_rad=1e-3)),
+    "unstable": (Setup(), "h", dict(theta_deg=90, alpha_deg=80, perturb_deg=0.06)),
 }
 
 
