@@ -10,16 +10,18 @@ median as a ratio to ``python -c "import numpy"`` measured in the same run
 (so that figures from a loaded machine can be compared), the peak resident
 memory of the command (its process and the worker processes it waited
 for), the goal and whether the median meets it.  ``--repeat`` runs each
-(default 5); ``verify`` and the two ``verify.run`` rows, the slow ones,
+(default 5); the ``verify`` and ``verify.run`` rows, the slow ones,
 run ``--slow-repeat`` times (default 3).
 
 Goals: orbit, table1, stability and map within 2.0x ``import numpy``;
 vertical within 0.5 s; simulate (20 periods of a Table 1 orbit) within
 0.5 s of integration (``wall_time_s`` of its summary, median of
 ``--repeat`` runs with ``--summary-only``); verify within 5 s and 200 MB;
-limits within 1 s.  The sweep of a small grid and ``verify.run(jobs=1)``
-against ``verify.run(jobs=2)`` (the checklist on one and on two
-processes, through the Python API) are timed without a goal.
+limits within 1 s.  Timed without a goal: the sweep of a small grid;
+``verify --jobs 2`` against ``verify`` and ``verify.run(jobs=1)`` against
+``verify.run(jobs=2)`` (the checklist on one and on two processes, from the
+command line and through the Python API); ``map --stability`` (the
+stability boundary as data) with ``--jobs 1`` and ``--jobs 2``.
 
 ``--floquet`` adds, in-process, the vertical orbit's Floquet analysis
 (stability.vertical_floquet, median of --repeat) against the method as
@@ -58,7 +60,10 @@ COMMANDS = {
                  False, None),
     "limits": (DS + ["limits", "--mu", "1", "--max-g", "5", "--format", "csv"], False, ("s", 1.0)),
     "sweep": (DS + ["sweep", "--theta", "0:180:1", "--alpha", "0:90:1", "--format", "csv"], False, None),
+    "map --stability -j1": (DS + ["map", "--stability", "--format", "csv", "--jobs", "1"], False, None),
+    "map --stability -j2": (DS + ["map", "--stability", "--format", "csv", "--jobs", "2"], False, None),
     "verify": (DS + ["verify", "--format", "csv"], True, ("s", 5.0)),
+    "verify --jobs 2": (DS + ["verify", "--format", "csv", "--jobs", "2"], True, None),
     "verify.run(jobs=1)": ([sys.executable, "-c", API_VERIFY.format(1)], True, None),
     "verify.run(jobs=2)": ([sys.executable, "-c", API_VERIFY.format(2)], True, None),
 }
@@ -139,8 +144,11 @@ def main():
               f"{text:<28} {'-' if met is None else ('yes' if met else 'NO')}")
     print(f"\nsimulate: the integrator's own wall time (summary wall_time_s), median of {len(integration)}: "
           f"{sim_s:.3f} s (least {min(integration):.3f} s)")
-    one, two = (statistics.median(walls[f"verify.run(jobs={j})"]) for j in (1, 2))
-    print(f"verify.run: jobs=2 takes {two / one:.2f}x the wall time of jobs=1")
+    for label, one_name, two_name in (("verify", "verify", "verify --jobs 2"),
+                                      ("verify.run", "verify.run(jobs=1)", "verify.run(jobs=2)"),
+                                      ("map --stability", "map --stability -j1", "map --stability -j2")):
+        one, two = (statistics.median(walls[n]) for n in (one_name, two_name))
+        print(f"{label}: 2 processes take {two / one:.2f}x the wall time of 1")
     met = [n for n, v in verdicts.items() if v]
     missed = [n for n, v in verdicts.items() if v is False]
     print(f"goals met: {', '.join(met) or 'none'}; not met: {', '.join(missed) or 'none'}")

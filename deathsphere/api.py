@@ -44,7 +44,6 @@ from deathsphere.constants import (
     TABLE1_WHEEL_RADIUS,
 )
 from deathsphere.grid import Axis, RangeError, Segment, grid_chunks, grid_size, parse_segment
-from deathsphere.inputs import ALIASES, TEXT_FIELDS
 from deathsphere.model import COLUMNS, REQUEST_FIELDS, Setup, Table, evaluate, make_requests, validate_requests
 from deathsphere.params import ParameterError
 from deathsphere.physics.status import STATUS_LABELS
@@ -60,11 +59,10 @@ INF = math.inf
 
 #: Orbits per chunk of :func:`sweep` (the command line's ``--chunk-size`` default).
 CHUNK = 16384
-#: Output columns of ``orbit`` that echo an input, read back under that
-#: input's name when a result CSV is fed to :func:`orbit_input` (every
-#: other output column is ignored).
-ORBIT_ECHO = ALIASES
-#: The same for :func:`vertical_input` (``v_cm_m_s`` is the speed at the top).
+#: Output columns of ``vertical`` that echo an input, read back under that
+#: input's name when a result CSV is fed to :func:`vertical_input` (every
+#: other output column is ignored; ``v_cm_m_s`` is the speed at the top).
+#: ``orbit``'s are :data:`deathsphere.inputs.ALIASES`.
 VERTICAL_ECHO = {"theta_deg": "theta", "a_m": "a", "r_m": "r", "g_m_s2": "g", "mu_available": "mu",
                  "v_cm_m_s": "v_top"}
 #: Rows of the point-by-point output of a vertical orbit computed at once
@@ -652,7 +650,7 @@ def _input_requests(reader, chunk_size: int, make) -> Iterator[tuple[int, dict]]
         n = len(part.input_row)
         yield n, make(n, invalid=part.invalid, input_row=part.input_row, **part.values)
     if empty:
-        yield 0, make(0, **{name: np.empty(0, dtype=object if name in TEXT_FIELDS else float)
+        yield 0, make(0, **{name: np.empty(0, dtype=object if name in ("body", "side") else float)
                             for name in reader.fields})
 
 
@@ -725,7 +723,9 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
         value = _one_default(name, value)
         if value is not None:
             defaults[name] = value
-    reader = _reader(source, REQUEST_FIELDS, defaults, ORBIT_ECHO, COLUMNS)
+    from deathsphere.inputs import ALIASES
+
+    reader = _reader(source, REQUEST_FIELDS, defaults, ALIASES, COLUMNS)
     work = partial(_evaluate_filtered, stability=bool(stability))
     return Chunks(_evaluated(_input_requests(reader, chunk_size, make_requests), work))
 

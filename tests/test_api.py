@@ -432,3 +432,63 @@ def test_the_readme_python_example_runs(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)      # it writes orbits.csv
     exec(compile(block, "README.md", "exec"), {})
     assert (tmp_path / "orbits.csv").read_text().startswith("input_row,body,side,")
+
+
+# ---------------------------------------------------------------------------
+# the streamed forms the command line calls
+
+
+def test_input_files_stream_the_command_lines_rows(tmp_path):
+    path = tmp_path / "requests.csv"
+    path.write_text("theta,alpha,mu\n60,10,\n\n90,x,1\n120,80,0.5\n")
+    chunks = deathsphere.orbit_input(str(path), mu=2)
+    assert chunks.total is None
+    table = chunks.table()
+    assert chunks.done == 3 and table["input_row"].tolist() == [1, 3, 4]
+    assert table["status"][1] == "invalid" and table["mu_available"][0] == 2.0
+    assert_same_csv(table.to_csv(), cli_csv("orbit", "--input", str(path), "--mu", "2", code=1))
+    loops = tmp_path / "loops.csv"
+    loops.write_text("theta,v_top\n90,6\n60,-1\n")
+    table = deathsphere.vertical_input(str(loops), stability=False).table()
+    assert_same_csv(table.to_csv(), cli_csv("vertical", "--input", str(loops), "--no-stability", code=1))
+
+
+def test_grids_are_the_command_lines_and_know_their_size():
+    chunks = deathsphere.vertical_sweep("60:90:30", [6, 7], stability=False)
+    assert chunks.total == 4
+    assert_same_csv(chunks.table().to_csv(),
+                    cli_csv("vertical", "--theta", "60:90:30", "--v-top", "6", "--v-top", "7", "--no-stability"))
+    points = deathsphere.vertical_sweep(90, 6, points=5).table()
+    assert_same_csv(points.to_csv(), cli_csv("vertical", "--theta", "90", "--v-top", "6", "--points", "5"))
+    speeds = deathsphere.sweep(["60", "70:80:10"], speed=["7", 9], stability=False).table()
+    assert_same_csv(speeds.to_csv(), cli_csv("orbit", "--theta", "60", "--theta", "70:80:10", "--speed", "7",
+                                             "--speed", "9", "--no-stability"))
+
+
+def test_more_processes_give_the_same_tables():
+    one = deathsphere.sweep("10:170:20", "5:85:20", chunk_size=7).table()
+    two = deathsphere.sweep("10:170:20", "5:85:20", chunk_size=7, jobs=2).table()
+    assert one.to_csv() == two.to_csv() and len(one) == 45
+    assert (deathsphere.region(step=10, stability=True, jobs=2).to_csv()
+            == deathsphere.region(step=10, stability=True).to_csv())
+
+
+def test_inputs_are_echoed_as_given():
+    # a quantity the request fixes is printed as typed, not as recomputed
+    solved = deathsphere.orbit(60, speed=7, stability=False)
+    assert len(solved) >= 1 and set(solved["v_cm_m_s"].tolist()) == {7.0}
+    assert set(deathsphere.orbit(60, omega=4, stability=False)["omega_rad_s"].tolist()) == {4.0}
+    assert deathsphere.vertical(90, 6, stability=False)["v_cm_m_s"][0] == 6.0
+    _, summary = deathsphere.simulate(60, 10, perturb=0.5, periods=0.05, points_per_period=10)
+    assert (summary["theta_deg"][0], summary["alpha_deg"][0], summary["perturb_deg"][0]) == (60.0, 10.0, 0.5)
+    assert float(deathsphere.region(step=10)["a_over_r"][0]) == 0.1
+
+
+def test_the_map_draws_the_apis_cells():
+    from deathsphere.render.charplot import char_map, columns_for_width
+
+    cells = deathsphere.region_cells(a=0.9, columns=columns_for_width(80))
+    assert (cells.a, cells.r) == (0.3, 1.0)   # a/r = 0.9 / 3 as the user reads it
+    drawn = CliRunner().invoke(cli, ["map", "-a", "0.9", "--format", "table"], env={"COLUMNS": "80"}).stdout
+    assert [line.rstrip() for line in str(char_map(cells)).splitlines()] == [
+        line.rstrip() for line in drawn.splitlines()]

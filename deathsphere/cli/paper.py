@@ -30,12 +30,12 @@ def table1_command(fmt):
       deathsphere table1
       deathsphere table1 --format csv
     """
-    from deathsphere.render.paper_views import table1_view
-    from deathsphere.results.table1 import PRINTED
-
     table = api.table1()
     fmt = choose_format(fmt)
     if fmt == "table":
+        from deathsphere.render.paper_views import table1_view
+        from deathsphere.results.table1 import PRINTED
+
         stdout_console().print(table1_view(table, PRINTED))
     else:
         emit([table], fmt)

@@ -52,10 +52,10 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
         chunks = api.vertical_input(input, stability=stability, **options)
     else:
         chunks = api.vertical_sweep(stability=stability, **options)
-    if points is not None:
-        title, view = "Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)", None
-    else:
+    fmt = choose_format(fmt)
+    title, view = "Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)", None
+    if points is None and fmt == "table":
         from deathsphere.render.orbit_views import vertical_view
 
         title, view = None, vertical_view
-    finish(stream(chunks, choose_format(fmt), label="vertical orbits", title=title, view=view))
+    finish(stream(chunks, fmt, label="vertical orbits", title=title, view=view))

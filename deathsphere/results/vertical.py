@@ -34,7 +34,11 @@ VERTICAL_FIELDS = {
 
 #: Summary columns: the orbit contract's first 22 (without omega3/branch),
 #: then the vertical-orbit columns.
-COLUMNS = ORBIT_COLUMNS[: ORBIT_COLUMNS.index("mu_available") + 1] + (
+#: The friction there is a magnitude (its along-track and meridional parts
+#: are the ``--points`` columns), not the orbit's signed F_theta/m: hence its
+#: own name.
+COLUMNS = tuple("friction_magnitude_per_mass_m_s2" if c == "friction_per_mass_m_s2" else c
+                for c in ORBIT_COLUMNS[: ORBIT_COLUMNS.index("mu_available") + 1]) + (
     "v_top_min_m_s", "omega_top_min_rad_s", "v_bottom_m_s", "phi_worst_deg", "mu_top",
     "normal_top_per_mass_m_s2", "normal_bottom_per_mass_m_s2", "phi_leave_deg", "phi_slip_deg",
     "stability", "stability_method", "growth_rate_1_s",
@@ -53,7 +57,7 @@ POINT_COLUMNS = (
 _SUMMARY_KEYS = {
     "r_prime": "r_prime_m", "omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s",
     "spin": "spin_rad_s", "accel": "accel_m_s2", "accel_g": "accel_g", "normal": "normal_per_mass_m_s2",
-    "friction": "friction_per_mass_m_s2", "mu_required": "mu_required", "v_min": "v_top_min_m_s",
+    "friction": "friction_magnitude_per_mass_m_s2", "mu_required": "mu_required", "v_min": "v_top_min_m_s",
     "omega_min": "omega_top_min_rad_s", "v_bottom": "v_bottom_m_s", "mu_top": "mu_top",
     "normal_top": "normal_top_per_mass_m_s2", "normal_bottom": "normal_bottom_per_mass_m_s2",
 }
