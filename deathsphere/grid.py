@@ -159,11 +159,6 @@ def parse_segment(text: str, what: str = "value") -> Segment:
     return Segment(start, step, int(n), decimals)
 
 
-def parse_axis(texts, what: str) -> Axis:
-    """Several values/ranges (a repeated option), in the order given."""
-    return Axis([parse_segment(t, what) for t in texts])
-
-
 def parse_values(text: str, what: str = "value", max_values: int | None = None) -> np.ndarray:
     """One number or range as a float64 array (for small axes only)."""
     seg = parse_segment(text, what)
