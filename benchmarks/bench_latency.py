@@ -1,6 +1,6 @@
 """Latency of every command end to end, as a user runs it, against its goal.
 
-    python benchmarks/bench_latency.py [--repeat 5] [--slow-repeat 3] [--floquet]
+    python benchmarks/bench_latency.py [--repeat 5] [--slow-repeat 3] [--floquet] [--no-compile]
 
 Each command runs as a subprocess (the interpreter of this run,
 ``-m deathsphere``) with its defaults and ``--format csv``, output to
@@ -23,6 +23,15 @@ limits within 1 s.  Timed without a goal: the sweep of a small grid;
 command line and through the Python API); ``map --stability`` (the
 stability boundary as data) with ``--jobs 1`` and ``--jobs 2``.
 
+The package runs from bytecode, as an installed one does: before timing,
+the benchmark compiles its modules (``compileall``, what ``pip install``
+does for a regular install; Python also caches bytecode at the first import
+unless ``PYTHONDONTWRITEBYTECODE`` is set, as it is on some machines, where
+every start would otherwise compile the package's source again).
+``--no-compile`` times the tree as found and prints how many of its modules
+have bytecode (delete the ``__pycache__`` folders first to time a start
+from source).
+
 ``--floquet`` adds, in-process, the vertical orbit's Floquet analysis
 (stability.vertical_floquet, median of --repeat) against the method as
 first written (tests/physics/test_floquet.py: RK4 on all nine directions,
@@ -33,7 +42,9 @@ docs/performance.md quotes this script.
 from __future__ import annotations
 
 import argparse
+import compileall
 import csv
+import importlib.util
 import datetime
 import io
 import os
@@ -91,6 +102,22 @@ def run(cmd, stdout=subprocess.DEVNULL) -> tuple[float, float]:
     return wall, mb
 
 
+def package_bytecode(compile_it: bool) -> str:
+    """Compile the package's modules (unless ``compile_it`` is false) and say
+    how many of them have bytecode that Python will use."""
+    root = Path(importlib.util.find_spec("deathsphere").origin).parent
+    if compile_it:
+        compileall.compile_dir(root, quiet=1)
+    sources = sorted(root.rglob("*.py"))
+    cached = sum(Path(importlib.util.cache_from_source(f)).is_file()
+                 and Path(importlib.util.cache_from_source(f)).stat().st_mtime >= f.stat().st_mtime
+                 for f in sources)
+    how = "compiled by this run (compileall)" if compile_it else "as found"
+    dont_write = os.environ.get("PYTHONDONTWRITEBYTECODE") or "unset"
+    return (f"package bytecode: {how}, {cached} of {len(sources)} modules have it "
+            f"(PYTHONDONTWRITEBYTECODE={dont_write})")
+
+
 def integration_time() -> float:
     """The integrator's wall time [s] of the simulate command, from its summary."""
     out = subprocess.run(SIMULATE_SUMMARY, check=True, capture_output=True, text=True).stdout
@@ -103,9 +130,12 @@ def main():
     p.add_argument("--repeat", type=int, default=5)
     p.add_argument("--slow-repeat", type=int, default=3)
     p.add_argument("--floquet", action="store_true", help="also the in-process Floquet comparison")
+    p.add_argument("--no-compile", action="store_true",
+                   help="time the package as found, without compiling its bytecode first")
     args = p.parse_args()
     print(f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC, python {platform.python_version()}, "
           f"{platform.machine()}, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.2f} at start")
+    print(package_bytecode(not args.no_compile))
     walls = {name: [] for name in COMMANDS}
     peaks = {name: [] for name in COMMANDS}
     integration = []

@@ -19,27 +19,37 @@ result :class:`Table`; :mod:`deathsphere.cli` is the command line.
 #: every start of the command.
 __version__ = "0.1.0"
 
-from deathsphere.api import (  # noqa: E402
-    Chunks,
-    limits,
-    orbit,
-    orbit_input,
-    prepare_simulation,
-    region,
-    region_cells,
-    region_curves,
-    simulate,
-    stability,
-    sweep,
-    table1,
-    verify,
-    vertical,
-    vertical_input,
-    vertical_sweep,
-)
-from deathsphere.model import Setup, Table, horizontal_orbit  # noqa: E402
-from deathsphere.params import ParameterError  # noqa: E402
+from deathsphere.lazy import lazy_exports  # noqa: E402
+
+#: Where each public name lives; imported on first use, so that a command's
+#: start-up loads only what it evaluates.
+_HOME = {
+    "Chunks": "api",
+    "limits": "api",
+    "orbit": "api",
+    "orbit_input": "api",
+    "prepare_simulation": "api",
+    "region": "api",
+    "region_cells": "api",
+    "region_curves": "api",
+    "simulate": "api",
+    "stability": "api",
+    "sweep": "api",
+    "table1": "api",
+    "verify": "api",
+    "vertical": "api",
+    "vertical_input": "api",
+    "vertical_sweep": "api",
+    "Setup": "model",
+    "Table": "model",
+    "horizontal_orbit": "model",
+    "ParameterError": "params",
+}
+
+#: Submodules reachable as attributes, as when this package imported them.
+_MODULES = ("api", "model", "params", "constants", "physics")
 
 __all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
            "region_cells", "region_curves", "limits", "stability", "simulate", "prepare_simulation", "table1",
            "verify", "Chunks", "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"]
+__getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

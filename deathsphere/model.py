@@ -22,7 +22,9 @@ from deathsphere.constants import (
     TABLE1_WHEEL_RADIUS,
 )
 from deathsphere import params
-from deathsphere.physics import particle, region, sphere, wheel
+# Only the wheel here: the region's root finder and the other bodies are
+# imported where used, so that a command loads only what it evaluates.
+from deathsphere.physics import wheel
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 
 #: The contract's columns, in order (docs/contract.md).  Add, never rename or reorder.
@@ -436,6 +438,8 @@ def _wheel_solved(req, rows):
     """Speed or rate given: every alpha of eq. (29), one row per root (branch
     = root index, in increasing alpha); a request with no root gives one
     no_orbit row.  One vectorised call per distinct setup and target kind."""
+    from deathsphere.physics import region
+
     outside = (req["side"][rows] == "outside").astype(float)
     by_speed = (~np.isnan(req["speed"][rows])).astype(float)
     setups = np.column_stack([req[key][rows] for key in ("a", "r", "k", "g", "mu")] + [outside, by_speed])
@@ -463,6 +467,8 @@ def _wheel_solved(req, rows):
 
 def _sphere(req, rows):
     """Spin given: both roots of eq. (55), one row each; rate given: one row."""
+    from deathsphere.physics import sphere
+
     outside = req["side"][rows] == "outside"
     sel = {key: req[key][rows] for key in ("theta", "a", "r", "k", "g", "mu", "omega3", "omega")}
     theta = np.deg2rad(sel["theta"])
@@ -483,6 +489,8 @@ def _sphere(req, rows):
 
 
 def _particle(req, rows):
+    from deathsphere.physics import particle
+
     res = particle.particle_orbit(np.deg2rad(req["theta"][rows]), req["r"][rows], req["g"][rows],
                                   outside=req["side"][rows] == "outside", mu=req["mu"][rows])
     return [(rows, np.full(rows.size, -1), res)]

@@ -11,7 +11,6 @@ import numpy as np
 from deathsphere.model import Setup, Table
 from deathsphere.parallel import ordered_map
 from deathsphere.physics import region
-from deathsphere.physics.stability import stability_boundary_alphas
 
 #: Boundary name -> the equation it comes from (inside, outside).
 EQUATIONS = {
@@ -50,6 +49,8 @@ _STABILITY_CHUNK = 64
 def _stability_part(theta_deg: np.ndarray, a_over_r: float, k: float, outside: bool, mu: float,
                     max_g: float) -> np.ndarray:
     """The stability boundary at a block of thetas (one unit of parallel work)."""
+    from deathsphere.physics.stability import stability_boundary_alphas  # only map --stability needs it
+
     return stability_boundary_alphas(np.deg2rad(theta_deg), a_over_r, 1.0, k, outside=outside, mu=mu,
                                      max_g=max_g)
 

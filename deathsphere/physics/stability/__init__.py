@@ -26,32 +26,47 @@ module             concept
 
 The public functions are re-exported here, so ``from
 deathsphere.physics.stability import wheel_stability`` works as well as the
-full module path.
+full module path.  They are loaded on first use (PEP 562): ``orbit`` needs
+only ``horizontal``, and a command should not pay at start-up for the
+Floquet analysis and the paper's formulas it does not evaluate.
 """
 
-from deathsphere.physics.stability.closed_forms import (
-    equator_exact_closed_form, sphere_nutation_closed_form)
-from deathsphere.physics.stability.comparison import (
-    EQUATOR_TOL, SMALL_WHEEL_VALIDITY, compare_with_paper)
-from deathsphere.physics.stability.floquet import (
-    FLOQUET_STABLE_TOL, FLOQUET_UNSTABLE_TOL, vertical_floquet)
-from deathsphere.physics.stability.horizontal import (
-    CHUNK, sphere_stability, wheel_reduced_jacobian, wheel_stability)
-from deathsphere.physics.stability.margin import (
-    STABILITY_ALPHA_STEP_DEG, stability_boundary_alphas, stability_margin)
-from deathsphere.physics.stability.paper import (
-    equator_coefficients, equator_matrix, equator_paper, equator_printed_abc, near_pole_paper,
-    small_wheel_corrected, small_wheel_paper, vertical_paper)
-from deathsphere.physics.stability.verdict import (
-    STABLE_TOL, UNSTABLE_TOL, VERDICT_LABELS, Verdict)
+from deathsphere.lazy import lazy_exports
 
-__all__ = [
-    "Verdict", "VERDICT_LABELS", "STABLE_TOL", "UNSTABLE_TOL", "CHUNK",
-    "wheel_stability", "sphere_stability", "wheel_reduced_jacobian",
-    "stability_margin", "stability_boundary_alphas", "STABILITY_ALPHA_STEP_DEG",
-    "FLOQUET_STABLE_TOL", "FLOQUET_UNSTABLE_TOL", "vertical_floquet",
-    "vertical_paper", "equator_coefficients", "equator_matrix", "equator_printed_abc",
-    "equator_paper", "small_wheel_paper", "small_wheel_corrected", "near_pole_paper",
-    "sphere_nutation_closed_form", "equator_exact_closed_form",
-    "SMALL_WHEEL_VALIDITY", "EQUATOR_TOL", "compare_with_paper",
-]
+#: Where each public name lives.
+_HOME = {
+    "equator_exact_closed_form": "closed_forms",
+    "sphere_nutation_closed_form": "closed_forms",
+    "EQUATOR_TOL": "comparison",
+    "SMALL_WHEEL_VALIDITY": "comparison",
+    "compare_with_paper": "comparison",
+    "FLOQUET_STABLE_TOL": "floquet",
+    "FLOQUET_UNSTABLE_TOL": "floquet",
+    "vertical_floquet": "floquet",
+    "CHUNK": "horizontal",
+    "sphere_stability": "horizontal",
+    "wheel_reduced_jacobian": "horizontal",
+    "wheel_stability": "horizontal",
+    "STABILITY_ALPHA_STEP_DEG": "margin",
+    "stability_boundary_alphas": "margin",
+    "stability_margin": "margin",
+    "equator_coefficients": "paper",
+    "equator_matrix": "paper",
+    "equator_paper": "paper",
+    "equator_printed_abc": "paper",
+    "near_pole_paper": "paper",
+    "small_wheel_corrected": "paper",
+    "small_wheel_paper": "paper",
+    "vertical_paper": "paper",
+    "STABLE_TOL": "verdict",
+    "UNSTABLE_TOL": "verdict",
+    "VERDICT_LABELS": "verdict",
+    "Verdict": "verdict",
+}
+
+#: The submodules, reachable as attributes as if they had been imported here.
+_MODULES = ("verdict", "reduction", "frequencies", "horizontal", "margin", "floquet", "rk8", "paper",
+            "closed_forms", "comparison")
+
+__all__ = list(_HOME)
+__getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)
