@@ -473,6 +473,15 @@ def test_more_processes_give_the_same_tables():
             == deathsphere.region(step=10, stability=True).to_csv())
 
 
+def test_the_chunk_size_does_not_change_a_byte():
+    """A row's numbers, stability included, do not depend on the rows
+    evaluated beside it."""
+    whole = deathsphere.sweep("10:170:20", "5:85:20").table()
+    assert whole["stability"].tolist().count("stable") > 5
+    for size in (1, 2, 7):
+        assert deathsphere.sweep("10:170:20", "5:85:20", chunk_size=size).table().to_csv() == whole.to_csv()
+
+
 def test_inputs_are_echoed_as_given():
     # a quantity the request fixes is printed as typed, not as recomputed
     solved = deathsphere.orbit(60, speed=7, stability=False)

@@ -9,7 +9,7 @@ the bilinear square for the same reason.
 
 import numpy as np
 
-__all__ = ["dot", "cross", "zcross", "norm"]
+__all__ = ["dot", "cross", "zcross", "norm", "contract"]
 
 
 def dot(u, v):
@@ -32,3 +32,18 @@ def zcross(u):
 def norm(u):
     """sqrt(u . u): analytic, so complex-step derivatives work."""
     return np.sqrt(dot(u, u))
+
+
+def contract(u, v):
+    """sum_i u[i] v[i] over axis 0, of any length (the other axes broadcast),
+    added in index order.
+
+    This is ``np.einsum("i...,i...->...", u, v)`` with a fixed order of
+    summation: einsum's order depends on the shapes and strides, so one
+    orbit's result would change in its last bits with the number of orbits
+    evaluated beside it (the chunk size); here it does not.
+    """
+    total = u[0] * v[0]
+    for i in range(1, len(u)):
+        total = total + u[i] * v[i]
+    return total

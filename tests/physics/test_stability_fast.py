@@ -97,3 +97,24 @@ def test_reduced_jacobian_spans_the_same_quotient():
         B = L["basis"][i] / np.r_[[0.3] * 3, [1.0] * 3, [st.wheel_stability(th[i], al[i], 0.3, 3.0, 0.5, G)
                                                           ["rate_scale"]] * 3][:, None]
         np.testing.assert_allclose(B.T @ B, np.eye(4), atol=1e-13)
+
+
+@pytest.mark.parametrize("solver, second", [
+    (st.wheel_stability, lambda rng, n: np.deg2rad(rng.uniform(1, 80, n))),
+    (st.sphere_stability, lambda rng, n: rng.uniform(-20, 20, n)),
+])
+def test_an_orbits_stability_does_not_depend_on_its_batch(solver, second):
+    """Bit for bit the same whether an orbit is analysed alone or beside
+    others (a sweep's output must not change with --chunk-size): the sums
+    over components run in a fixed order (vectors.contract), where einsum's
+    order changed with the number of orbits."""
+    rng = np.random.default_rng(3)
+    n = 40
+    th, sec = np.deg2rad(rng.uniform(20, 160, n)), second(rng, n)
+    whole = solver(th, sec, 0.3, 3.0, 0.5, G)
+    assert np.isfinite(whole["freq_fast"]).sum() > n // 2
+    for size in (1, 2, 3, 7):
+        for start in range(0, n, size):
+            part = solver(th[start:start + size], sec[start:start + size], 0.3, 3.0, 0.5, G)
+            for key in ("growth_rate", "freq_slow", "freq_fast", "verdict", "eigenvalues"):
+                np.testing.assert_array_equal(part[key], whole[key][start:start + size], err_msg=f"{key} {size}")

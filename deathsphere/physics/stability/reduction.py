@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.physics.stability.verdict import verdict_from_growth
+from deathsphere.physics.vectors import contract
 
 __all__ = ["COMPLEX_STEP", "complex_step", "spectrum", "characteristic_invariants",
            "spectrum_from_invariants", "orthonormal_complement", "householder_complement"]
@@ -55,7 +56,10 @@ def characteristic_invariants(K):
     vanish): e2 = (tr(K)^2 - tr(K^2))/2, the sum of the principal 2x2 minors,
     and e4 = det K."""
     tr = np.trace(K, axis1=-2, axis2=-1)
-    e2 = 0.5 * (tr * tr - np.einsum("nij,nji->n", K, K))
+    # contract, not einsum: einsum's order of summation in a full contraction
+    # changes with the number of orbits, and with it an orbit's last bits
+    n = len(K)
+    e2 = 0.5 * (tr * tr - contract(K.reshape(n, -1).T, np.swapaxes(K, 1, 2).reshape(n, -1).T))
     return e2, np.linalg.det(K)
 
 
@@ -109,10 +113,10 @@ def householder_complement(A):
     vs = []
     for j in range(q):
         x = R[j:, j]                                             # (dim - j, n)
-        nx = np.sqrt(np.einsum("in,in->n", x, x))
+        nx = np.sqrt(contract(x, x))                             # fixed order: see above
         v = x.copy()
         v[0] += np.where(x[0] >= 0, nx, -nx)
-        vn = np.sqrt(np.einsum("in,in->n", v, v))
+        vn = np.sqrt(contract(v, v))
         v[0] = np.where(vn > 0, v[0], 1.0)                       # a zero column: any unit v
         v *= 1.0 / np.where(vn > 0, vn, 1.0)
         if j + 1 < q:
