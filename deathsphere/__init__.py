@@ -49,7 +49,5 @@ _HOME = {
 #: Submodules reachable as attributes, as when this package imported them.
 _MODULES = ("api", "model", "params", "constants", "physics")
 
-__all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
-           "region_cells", "region_curves", "limits", "stability", "simulate", "prepare_simulation", "table1",
-           "verify", "Chunks", "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"]
+__all__ = [*_HOME, "__version__"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)
