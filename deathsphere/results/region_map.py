@@ -56,7 +56,24 @@ PLOT_EXTRA_HINT = "pip install 'deathsphere[plot]'"
 
 
 @dataclass
-class CellMap:
+class MapSetup:
+    """What a map was computed for: body radius ``a`` and sphere radius
+    ``r`` [m], inertia factor ``k``, the side, ``mu``, ``max_g``, ``g``
+    [m/s^2], whether stability is shown, and the alpha axis [deg]."""
+
+    a: float
+    r: float
+    k: float
+    outside: bool
+    mu: float
+    max_g: float
+    g: float
+    stability: bool
+    alpha_range_deg: tuple
+
+
+@dataclass
+class CellMap(MapSetup):
     """The allowed region sampled on a grid of cells.
 
     Row i (top = largest alpha) and column j have their centres at
@@ -74,15 +91,6 @@ class CellMap:
     :func:`deathsphere.physics.region.boundary_alphas`.
     """
 
-    a: float
-    r: float
-    k: float
-    outside: bool
-    mu: float
-    max_g: float
-    g: float
-    stability: bool
-    alpha_range_deg: tuple
     theta_deg: np.ndarray
     alpha_deg: np.ndarray
     feasible: np.ndarray
@@ -158,7 +166,7 @@ def cell_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=STANDARD_GRAV
 
 
 @dataclass
-class CurveMap:
+class CurveMap(MapSetup):
     """The allowed region as curves, for an alpha axis ``alpha_range_deg``.
 
     ``interval_theta_deg`` (n,) with ``interval_lo_deg``, ``interval_hi_deg``
@@ -172,15 +180,6 @@ class CurveMap:
     all four None without stability.
     """
 
-    a: float
-    r: float
-    k: float
-    outside: bool
-    mu: float
-    max_g: float
-    g: float
-    stability: bool
-    alpha_range_deg: tuple
     interval_theta_deg: np.ndarray
     interval_lo_deg: np.ndarray
     interval_hi_deg: np.ndarray
