@@ -26,8 +26,8 @@ import numpy as np
 
 from deathsphere.grid import grid_chunks
 from deathsphere.model import TEXT_COLUMNS, evaluate, make_requests
-from deathsphere.render import compiled
-from deathsphere.render.formats import write_csv
+from deathsphere.writers import parquet, polars_csv
+from deathsphere.writers.stream import write_csv
 
 CHUNK = 16384
 
@@ -76,11 +76,11 @@ def main():
 
     runs = {"savetxt": lambda out: savetxt(out),
             "pure-Python CSV": lambda out: write_csv(iter(chunks), out, compiled=False)}
-    if compiled.csv_available():
+    if polars_csv.csv_available():
         runs["compiled CSV"] = lambda out: write_csv(iter(chunks), out, compiled=True)
     folder = tempfile.mkdtemp()
-    if compiled.parquet_available():
-        runs["Parquet"] = lambda out: compiled.write_parquet(iter(chunks), os.path.join(folder, "b.parquet"))
+    if parquet.parquet_available():
+        runs["Parquet"] = lambda out: parquet.write_parquet(iter(chunks), os.path.join(folder, "b.parquet"))
     best = dict.fromkeys(runs, float("inf"))
     with open(os.devnull, "w") as devnull:
         for _ in range(args.repeat):  # interleaved: a busy moment of the machine hits all of them
@@ -105,7 +105,7 @@ def main():
     print(f"peak RSS, sweep of {side * side:>12,} orbits: {big[0]:7.1f} MB  ({big[1]:.1f} s, "
           f"{side * side / big[1]:,.0f} rows/s end to end)")
     print(f"memory growth: {big[0] - small[0]:+.1f} MB (goal: within 20 MB)")
-    if compiled.parquet_available():
+    if parquet.parquet_available():
         parquet = peak_rss_mb(side, side, "--no-stability", "--output", os.path.join(folder, "big.parquet"))
         size = os.path.getsize(os.path.join(folder, "big.parquet")) / 1e6
         print(f"peak RSS, sweep of {side * side:>12,} orbits to Parquet (--no-stability): {parquet[0]:7.1f} MB "

@@ -42,7 +42,6 @@ _HOME = {
     "vertical_sweep": "api",
     "Setup": "model",
     "Table": "model",
-    "horizontal_orbit": "model",
     "ParameterError": "params",
 }
 

@@ -12,10 +12,10 @@ import pytest
 from click.testing import CliRunner
 
 import deathsphere
-from deathsphere import ParameterError, Setup, Table, horizontal_orbit
+from deathsphere import ParameterError, Setup, Table
 from deathsphere.cli import cli
 from deathsphere.model import COLUMNS
-from deathsphere.render.formats import write_csv
+from deathsphere.writers.stream import write_csv
 
 
 def cli_csv(*args, code=0):
@@ -396,12 +396,12 @@ def test_to_pandas_without_pandas_says_how_to_install_it(table, monkeypatch):
 # the older entry points, and the names shared with modules
 
 
-def test_horizontal_orbit_keeps_the_shape_and_takes_every_body():
-    grid = horizontal_orbit(Setup(), np.arange(30, 91, 15.0)[:, None], np.array([5.0, 10.0])[None, :])
+def test_setup_orbit_keeps_the_shape_and_takes_every_body():
+    grid = Setup().orbit(np.arange(30, 91, 15.0)[:, None], np.array([5.0, 10.0])[None, :])
     assert grid.shape == (5, 2)
-    particle = horizontal_orbit(Setup(body="particle"), [120.0, 150.0])
+    particle = Setup(body="particle").orbit([120.0, 150.0])
     assert particle["status"].tolist() == ["ok", "ok"]
-    sphere = horizontal_orbit(Setup(body="sphere"), 60, omega3=80)
+    sphere = Setup(body="sphere").orbit(60, omega3=80)
     assert sphere["branch"].tolist() == [0, 1]
     assert sphere.to_csv() == deathsphere.orbit(60, body="sphere", omega3=80).to_csv()
 
@@ -419,7 +419,7 @@ def test_command_names_are_the_api_functions():
 
 def test_everything_is_exported():
     for name in ("orbit", "vertical", "sweep", "region", "limits", "stability", "simulate", "table1", "verify",
-                 "Table", "ParameterError", "Setup", "horizontal_orbit", "__version__"):
+                 "Table", "ParameterError", "Setup", "__version__"):
         assert name in deathsphere.__all__ and getattr(deathsphere, name) is not None
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from deathsphere import Setup, horizontal_orbit
+from deathsphere import Setup
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -25,6 +25,6 @@ def test_highest_orbit_example_matches_brute_force():
     assert header == "theta_deg,alpha_deg,v_cm_m_s,accel_g,mu_required"
     theta, alpha, v, g_load, mu = map(float, best.split(","))
     assert mu <= 1 and g_load <= 5
-    grid = horizontal_orbit(Setup(mu=1.0), np.arange(5, 90.25, 0.5)[:, None], np.arange(0.5, 60.25, 0.5)[None, :])
+    grid = Setup(mu=1.0).orbit(np.arange(5, 90.25, 0.5)[:, None], np.arange(0.5, 60.25, 0.5)[None, :])
     feasible = (grid["status"] == "ok") & (grid["accel_g"] <= 5)
     assert grid["theta_deg"][feasible].min() == theta

@@ -3,7 +3,7 @@ import math
 import numpy as np
 import pytest
 
-from deathsphere import Setup, horizontal_orbit
+from deathsphere import Setup
 from deathsphere.model import COLUMNS, evaluate, make_requests
 
 
@@ -32,18 +32,18 @@ def test_default_inertia_by_body():
     assert Setup().k == 0.5 and Setup(body="sphere").k == 0.4 and Setup(k=0.25).k == 0.25
 
 
-def test_horizontal_orbit_grid_and_columns():
-    t = horizontal_orbit(Setup(), np.array([30.0, 60.0])[:, None], np.array([5.0, 10.0, 25.0])[None, :])
+def test_setup_orbit_grid_and_columns():
+    t = Setup().orbit(np.array([30.0, 60.0])[:, None], np.array([5.0, 10.0, 25.0])[None, :])
     assert len(t) == 6 and t.names == list(COLUMNS)
     assert t["theta_deg"].tolist() == [30, 30, 30, 60, 60, 60]
     assert t["alpha_deg"].tolist() == [5, 10, 25] * 2
 
 
-def test_horizontal_orbit_rejects_bad_angles():
+def test_setup_orbit_rejects_bad_angles():
     with pytest.raises(ValueError, match="theta"):
-        horizontal_orbit(Setup(), 181, 10)
+        Setup().orbit(181, 10)
     with pytest.raises(ValueError, match="alpha"):
-        horizontal_orbit(Setup(), 60, math.nan)
+        Setup().orbit(60, math.nan)
 
 
 def test_one_bad_row_never_sinks_the_rest():
@@ -57,7 +57,7 @@ def test_one_bad_row_never_sinks_the_rest():
 
 
 def test_records_for_notebooks():
-    rec = horizontal_orbit(Setup(), 60, 10).records()[0]
+    rec = Setup().orbit(60, 10).records()[0]
     assert rec["status"] == "ok" and rec["mu_available"] is None
     assert rec["v_cm_m_s"] == pytest.approx(7.8767, rel=1e-4)
 

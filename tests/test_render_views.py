@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from rich.console import Console
 
-from deathsphere.model import Setup, Table, evaluate, horizontal_orbit, make_requests
+from deathsphere.model import Setup, Table, evaluate, make_requests
 from deathsphere.render import orbit_views
-from deathsphere.render.fit_table import MAX_TERMINAL_ROWS, format_number
+from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS, format_number
 from deathsphere.render.orbit_views import (
     generic_table,
     many_orbits_table,
@@ -133,7 +133,7 @@ def test_one_sphere_without_an_orbit_says_which_spin_would_do():
 
 @pytest.mark.parametrize("width", (60, 80))
 def test_one_orbit_leaves_out_only_the_source(width):
-    text = show(one_orbit_table(horizontal_orbit(Setup(), 60.0, 10.0)), width)
+    text = show(one_orbit_table(Setup().orbit(60.0, 10.0)), width)
     assert_fits(text, width)
     assert "v_cm = |r'|Ω centre speed" in text and "nutation, slow (turning frame)" in text
     assert left_out(text) == ([] if width >= 80 else ["source"])

@@ -1,4 +1,4 @@
-"""The compiled writers (deathsphere.render.compiled) against the pure-Python
+"""The compiled writers (polars CSV, pyarrow Parquet) against the pure-Python
 ones: the same CSV bytes, Parquet holding the CSV's values with types, and
 ``sweep --jobs`` giving the output of one process."""
 
@@ -15,11 +15,12 @@ from hypothesis import strategies as st
 
 from deathsphere.cli import cli
 from deathsphere.model import COLUMNS, TEXT_COLUMNS, Table
-from deathsphere.render import compiled, formats
+from deathsphere.table import cells
+from deathsphere.writers import parquet, polars_csv, stream
 
-needs_polars = pytest.mark.skipif(not compiled.csv_available(),
+needs_polars = pytest.mark.skipif(not polars_csv.csv_available(),
                                   reason="the fast extra (polars) is not installed")
-needs_pyarrow = pytest.mark.skipif(not compiled.parquet_available(),
+needs_pyarrow = pytest.mark.skipif(not parquet.parquet_available(),
                                    reason="the fast extra (pyarrow) is not installed")
 
 #: Grids that between them give every status: wheels that fit and do not,
@@ -40,7 +41,7 @@ STATUS_GRIDS = {
 
 def sweep(*args, compiled=True, monkeypatch=None):
     if monkeypatch is not None:
-        monkeypatch.setattr(formats, "COMPILED_CSV", compiled)
+        monkeypatch.setattr(stream, "COMPILED_CSV", compiled)
     res = CliRunner().invoke(cli, ["sweep", *args], catch_exceptions=False)
     return res
 
@@ -49,14 +50,14 @@ def sweep(*args, compiled=True, monkeypatch=None):
 def pure_outputs():
     """Each status grid written by the pure-Python writer (the reference)."""
     outputs = {}
-    saved = formats.COMPILED_CSV
-    formats.COMPILED_CSV = False
+    saved = stream.COMPILED_CSV
+    stream.COMPILED_CSV = False
     try:
         for name, args in STATUS_GRIDS.items():
             res = CliRunner().invoke(cli, ["sweep", "--chunk-size", "1000", *args], catch_exceptions=False)
             outputs[name] = (res.exit_code, res.stdout)
     finally:
-        formats.COMPILED_CSV = saved
+        stream.COMPILED_CSV = saved
     return outputs
 
 
@@ -78,10 +79,10 @@ def test_pure_writer_is_used_when_asked_or_when_the_extra_is_missing(pure_output
     """The fallback runs even with polars installed: forced off, or with a
     polars that fails the repr check (or is absent)."""
     calls = []
-    monkeypatch.setattr(compiled, "csv_text", lambda *a, **k: calls.append(1) or "")
+    monkeypatch.setattr(polars_csv, "csv_text", lambda *a, **k: calls.append(1) or "")
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=False, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
-    monkeypatch.setattr(compiled, "_csv_ok", False)
+    monkeypatch.setattr(polars_csv, "_csv_ok", False)
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=True, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
     assert not calls
@@ -91,11 +92,11 @@ def test_pure_writer_is_used_when_asked_or_when_the_extra_is_missing(pure_output
 def test_long_outputs_switch_writers_midway_without_a_seam(pure_outputs, monkeypatch):
     """By default short outputs stay pure-Python (no polars import) and long
     ones switch to the compiled writer after some rows."""
-    monkeypatch.setattr(formats, "COMPILED_AFTER_ROWS", 2500)
-    monkeypatch.setattr(formats, "COMPILED_MIN_CHUNK", 600)
+    monkeypatch.setattr(stream, "COMPILED_AFTER_ROWS", 2500)
+    monkeypatch.setattr(stream, "COMPILED_MIN_CHUNK", 600)
     used = []
-    real = compiled.csv_text
-    monkeypatch.setattr(compiled, "csv_text", lambda table, header: used.append(len(table)) or real(table, header))
+    real = polars_csv.csv_text
+    monkeypatch.setattr(polars_csv, "csv_text", lambda table, header: used.append(len(table)) or real(table, header))
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=None, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
     assert used and sum(used) < res.stdout.count("\n") - 2500
@@ -105,9 +106,9 @@ def test_long_outputs_switch_writers_midway_without_a_seam(pure_outputs, monkeyp
 
 
 def test_a_polars_that_formats_unlike_repr_is_not_used(monkeypatch):
-    monkeypatch.setattr(compiled, "_csv_ok", None)
-    monkeypatch.setattr(compiled, "_polars_matches_repr", lambda: False)
-    assert not compiled.csv_available()
+    monkeypatch.setattr(polars_csv, "_csv_ok", None)
+    monkeypatch.setattr(polars_csv, "_polars_matches_repr", lambda: False)
+    assert not polars_csv.csv_available()
 
 
 # ---------------------------------------------------------------------------
@@ -142,7 +143,7 @@ def tables(draw):
 @settings(max_examples=300, deadline=None)
 @given(tables(), st.booleans())
 def test_compiled_csv_equals_pure_csv_on_random_tables(table, header):
-    assert compiled.csv_text(table, header) == formats.csv_text(table, header)
+    assert polars_csv.csv_text(table, header) == cells.csv_text(table, header)
 
 
 @needs_polars
@@ -155,7 +156,7 @@ def test_compiled_float_text_is_repr_on_random_bit_patterns():
     y = rng.standard_normal(100_000) * 10.0 ** rng.integers(-12, 18, 100_000)
     for values in (x, y):
         table = Table({"x": values})
-        assert compiled.csv_text(table, False) == formats.csv_text(table, False)
+        assert polars_csv.csv_text(table, False) == cells.csv_text(table, False)
 
 
 # ---------------------------------------------------------------------------
@@ -210,7 +211,7 @@ def test_parquet_of_nothing_kept_is_an_empty_typed_file(tmp_path, monkeypatch):
 
 
 def test_parquet_without_the_extra_is_refused_before_any_work(tmp_path, monkeypatch):
-    monkeypatch.setattr(compiled, "parquet_available", lambda: False)
+    monkeypatch.setattr(parquet, "parquet_available", lambda: False)
     path = tmp_path / "grid.parquet"
     res = CliRunner().invoke(cli, ["sweep", "--theta", "0:180:1", "--alpha", "0:90:1", "--output", str(path)])
     assert res.exit_code == 2 and not path.exists()
@@ -267,7 +268,7 @@ def test_the_file_writers_do_not_import_rich():
     import subprocess
     import sys
 
-    code = ("import sys, deathsphere.render.formats, deathsphere.render.compiled; "
+    code = ("import sys, deathsphere.writers.stream, deathsphere.writers.polars_csv, deathsphere.writers.parquet; "
             "print(sorted(m for m in sys.modules if m == 'rich' or m.startswith('rich.')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"

@@ -26,7 +26,7 @@ from deathsphere import __version__, api
 from deathsphere.constants import BODIES, SIDES
 from deathsphere.exitcodes import ExitCode
 from deathsphere.params import ParameterError
-from deathsphere.render.formats import FORMATS, write_csv, write_json, write_ndjson
+from deathsphere.writers.stream import FORMATS, write_csv, write_json, write_ndjson
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
@@ -288,7 +288,7 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
     of the whole result) and says how many it left out.  ``parquet`` needs
     ``output`` (a binary file with its own row groups, never a terminal)."""
     if fmt == "parquet":
-        from deathsphere.render.compiled import write_parquet
+        from deathsphere.writers.parquet import write_parquet
 
         return write_parquet(chunks, output)
     writer = {"csv": write_csv, "json": write_json, "ndjson": write_ndjson}.get(fmt)
@@ -298,7 +298,7 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
     if writer is not None:
         return writer(chunks, sys.stdout)
     from deathsphere.model import Table
-    from deathsphere.render.fit_table import MAX_TERMINAL_ROWS
+    from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS
     from deathsphere.render.orbit_views import write_rich_table
 
     head, total = [], 0

@@ -97,9 +97,9 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
     if ext is not None and ext != fmt:
         raise click.UsageError(f"--format {fmt} does not match the --output file {output!r} (.{ext})")
     if fmt == "parquet":
-        from deathsphere.render import compiled
+        from deathsphere.writers import parquet
 
-        if not compiled.parquet_available():
+        if not parquet.parquet_available():
             raise click.UsageError("writing .parquet needs pyarrow: pip install 'deathsphere[fast]'")
     return fmt
 

@@ -1,13 +1,10 @@
 """The output side: result tables (and the map and simulation data) as
 text, files and figures.  Nothing here computes physics; every module takes
-tables or data objects made by :mod:`deathsphere.model` and
-:mod:`deathsphere.results`.
+tables (:class:`deathsphere.table.Table`) and data objects made by the API;
+the file writers (CSV, JSON, Parquet) are :mod:`deathsphere.writers`.
 
-* :mod:`~deathsphere.render.formats`: CSV, JSON and NDJSON writers (no rich,
-  so that file output starts fast); :mod:`~deathsphere.render.compiled`: the
-  same CSV through polars, and Parquet through pyarrow (the ``fast`` extra).
-* :mod:`~deathsphere.render.fit_table`: the pieces of every terminal view
-  (:class:`~deathsphere.render.fit_table.FitTable`, number text, the row cap);
+* :mod:`~deathsphere.render.terminal_table`: the pieces of every terminal view
+  (:class:`~deathsphere.render.terminal_table.FitTable`, number text, the row cap);
   the views: :mod:`~deathsphere.render.orbit_views` (orbits, vertical orbits,
   any table), :mod:`~deathsphere.render.paper_views` (Table 1, the checklist,
   stability), :mod:`~deathsphere.render.simulation_view`.

@@ -9,7 +9,7 @@ from rich.console import Console
 from rich.markup import escape
 
 from deathsphere.model import TEXT_COLUMNS, Table
-from deathsphere.render.fit_table import (
+from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
     STABILITY_STYLE,
     Column,

@@ -7,8 +7,8 @@ from __future__ import annotations
 from rich.console import Group
 from rich.markup import escape
 
-from deathsphere.model import Table
-from deathsphere.render.fit_table import STABILITY_STYLE, Column, FitTable, format_number
+from deathsphere.table import Table
+from deathsphere.render.terminal_table import STABILITY_STYLE, Column, FitTable, format_number
 from deathsphere.results.table1 import decimals
 
 

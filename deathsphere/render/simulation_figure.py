@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 from deathsphere.render.figures import FORMATS, PlotExtraMissing, figure_format, import_matplotlib
 
 __all__ = ["plot_simulation", "PlotExtraMissing", "FORMATS", "MAX_LEGEND"]

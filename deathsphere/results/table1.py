@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.model import Setup, Table, horizontal_orbit
+from deathsphere.model import Setup, Table
 
 #: (theta deg, alpha deg, mu, v_cm m/s, "No. of g's") as printed.
 PRINTED = (
@@ -56,7 +56,7 @@ def table1(setup: Setup | None = None) -> Table:
     setup = setup or Setup()
     theta = np.array([float(row[0]) for row in PRINTED])
     alpha = np.array([float(row[1]) for row in PRINTED])
-    orbit = horizontal_orbit(setup, theta, alpha)
+    orbit = setup.orbit(theta, alpha)
     mu, v, acc_g, acc = (orbit[c] for c in ("mu_required", "v_cm_m_s", "accel_g", "accel_m_s2"))
     cols = {
         "theta_deg": theta, "alpha_deg": alpha,

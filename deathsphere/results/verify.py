@@ -21,7 +21,7 @@ from typing import Callable
 import numpy as np
 
 from deathsphere.constants import STANDARD_GRAVITY as G
-from deathsphere.model import Setup, Table, horizontal_orbit
+from deathsphere.model import Setup, Table
 from deathsphere.physics import particle, sphere, wheel
 from deathsphere.physics import vertical_orbit as vertical
 from deathsphere.physics.geometry import fits_inside, fits_outside, r_prime
@@ -160,7 +160,7 @@ def _quadrant():
 
 @claim("A0", "2.2.2", "eq. 29", "there are no steady horizontal orbits with alpha = 0")
 def _alpha_zero():
-    res = horizontal_orbit(Setup(), np.linspace(0, 180, 181), 0.0)
+    res = Setup().orbit(np.linspace(0, 180, 181), 0.0)
     n = int(np.count_nonzero(res["status"] == "ok"))
     return Finding("confirmed" if n == 0 else "refuted",
                    f"{n} of 181 orbits with alpha = 0 feasible (eq. 29 diverges: status no_orbit)")

@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterator
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.events import EVENT_STATUSES, EVENT_TOL, ContactEvents, stopped_at_start
 from deathsphere.simulation.series import concat_tables, rows_table, sample_quantities, series_rows

@@ -14,7 +14,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.starts import Starts
 

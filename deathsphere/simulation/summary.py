@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.starts import Starts
 from deathsphere.simulation.status import RunStatus, status_labels

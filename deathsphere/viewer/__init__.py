@@ -20,7 +20,7 @@ import importlib
 import shutil
 from pathlib import Path
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 
 __all__ = ["VIEW_FORMATS", "ViewerUnavailable", "view_format", "check_view_output", "write_view", "has_ffmpeg"]
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.viewer.frames import frame_geometry
 

@@ -1,8 +1,8 @@
-"""Compiled writers for result tables: CSV through polars, Parquet through
-pyarrow (the optional ``fast`` extra: ``pip install 'deathsphere[fast]'``).
+"""The CSV writer compiled in polars (the optional ``fast`` extra:
+``pip install 'deathsphere[fast]'``).
 
 The CSV they write is byte for byte the pure-Python writer's
-(:func:`deathsphere.render.formats.csv_text`); only the speed differs.  How that
+(:func:`deathsphere.table.cells.csv_text`); only the speed differs.  How that
 is kept exact:
 
 * **Floats.**  polars writes the shortest digit string that round-trips,
@@ -34,8 +34,7 @@ from typing import Iterable
 
 import numpy as np
 
-from deathsphere.model import TEXT_COLUMNS, Table
-from deathsphere.render.formats import column_strings
+from deathsphere.table.cells import column_strings
 
 #: polars writes |x| in this range differently from repr (exponent
 #: 'e-9' for 'e-09'; positional below 1e-4 where repr switches to an exponent).
@@ -54,10 +53,6 @@ PROBES = (
 
 def _module(name: str) -> bool:
     return importlib.util.find_spec(name) is not None
-
-
-def parquet_available() -> bool:
-    return _module("pyarrow")
 
 
 _csv_ok: bool | None = None
@@ -113,14 +108,14 @@ def _series(pl, name: str, values: np.ndarray):
             s = None
         if s is not None and s.dtype == pl.String:
             return _quote(pl, s)
-        if s is not None and s.dtype == pl.Int64 and name not in TEXT_COLUMNS:
+        if s is not None and s.dtype == pl.Int64 :
             return s
     # anything else (bools, mixed objects): the pure-Python text, already quoted
     return pl.Series(name, column_strings(name, values), dtype=pl.String)
 
 
-def csv_text(table: Table, header: bool) -> str:
-    """One chunk as CSV text, equal to :func:`deathsphere.render.formats.csv_text`."""
+def csv_text(table, header: bool) -> str:
+    """One chunk as CSV text, equal to :func:`deathsphere.table.cells.csv_text`."""
     import polars as pl
 
     names = table.names
@@ -129,56 +124,3 @@ def csv_text(table: Table, header: bool) -> str:
         return head
     frame = pl.DataFrame([_series(pl, n, table[n]) for n in names])
     return head + frame.write_csv(include_header=False, quote_style="never", null_value="", line_terminator="\n")
-
-
-# ---------------------------------------------------------------------------
-# Parquet
-
-
-def _arrow_type(pa, name: str, values: np.ndarray):
-    kind = values.dtype.kind
-    if name in TEXT_COLUMNS or kind in "US":
-        return pa.string()
-    if kind == "f":
-        return pa.float64()
-    if kind in "iu" or kind == "O":  # object non-text columns hold ints or None (branch)
-        return pa.int64()
-    if kind == "b":
-        return pa.bool_()
-    raise TypeError(f"column {name!r}: no Parquet type for {values.dtype}")
-
-
-def _arrow_column(pa, values: np.ndarray, kind):
-    if pa.types.is_floating(kind):
-        return pa.array(values, type=kind, from_pandas=True)  # NaN -> null, as CSV's empty cell
-    if values.dtype.kind == "O":
-        return pa.array(values.tolist(), type=kind)
-    return pa.array(values, type=kind)
-
-
-def write_parquet(chunks: Iterable[Table], path: str) -> int:
-    """Stream tables into one Parquet file, one row group per chunk, so
-    memory stays that of a chunk.  Undefined values are nulls; text columns
-    are strings, ``input_row`` and ``branch`` int64, the rest float64."""
-    import pyarrow as pa
-    import pyarrow.parquet as pq
-
-    rows = 0
-    writer = schema = None
-    try:
-        for table in chunks:
-            if schema is None:
-                schema = pa.schema([(n, _arrow_type(pa, n, table[n])) for n in table.names])
-                writer = pq.ParquetWriter(path, schema)
-            if len(table) == 0:
-                continue
-            batch = pa.table([_arrow_column(pa, table[f.name], f.type) for f in schema], schema=schema)
-            writer.write_table(batch, row_group_size=len(table))
-            rows += len(table)
-    finally:
-        if writer is not None:
-            writer.close()
-    if writer is None:  # no chunk at all: still a valid, empty file
-        pq.write_table(pa.table({}), path)
-    return rows
-

@@ -15,7 +15,7 @@ from rich.measure import Measurement
 from rich.table import Table as RichTable
 from rich.text import Text
 
-from deathsphere.model import Table
+from deathsphere.table import Table
 
 
 def format_number(value, digits: int = 4) -> str:

@@ -1,0 +1,202 @@
+"""The result type: ordered named columns of equal length (:class:`Table`).
+
+Every command's result is a Table; its columns are the contract's
+(docs/contract.md).  This module is a leaf of the package: it imports only
+numpy and the cell formatting of :mod:`deathsphere.table.cells`, so every
+layer (physics results, the API, the writers, the views) may use it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from deathsphere.table.cells import csv_text
+
+
+class Table:
+    """Ordered named columns of equal-length arrays (the result type).
+
+    ``table["v_cm_m_s"]`` is a flat float64 array (one value per row);
+    ``table.names`` the column order; ``len(table)`` the number of rows.
+    Undefined values are NaN in float columns (empty in CSV, null in JSON,
+    None in row dicts).
+
+    ``table[i]`` (an int) is row i as a dict, like ``for row in table``
+    and :meth:`to_dicts`; a slice, boolean mask or integer array selects
+    rows and gives a flat :class:`Table`.  :attr:`shape` is the shape of the
+    input the rows came from (the broadcast shape of the arguments of
+    :func:`deathsphere.orbit`, else ``(len(table),)``); :meth:`grid` gives a
+    column in that shape.
+
+    >>> t = Table({"x": np.array([1.0, 2.0, np.nan, 4.0]), "s": np.array(list("abcd"), dtype=object)},
+    ...           shape=(2, 2))
+    >>> t[2]
+    {'x': None, 's': 'c'}
+    >>> [row["s"] for row in t]
+    ['a', 'b', 'c', 'd']
+    >>> t.grid("x")
+    array([[ 1.,  2.],
+           [nan,  4.]])
+    >>> print(t.to_csv(), end="")
+    x,s
+    1.0,a
+    2.0,b
+    ,c
+    4.0,d
+    """
+
+    #: Rows shown by ``repr`` (a notebook cell) and ``_repr_html_``.
+    REPR_ROWS = 5
+
+    def __init__(self, columns: dict[str, np.ndarray], shape: tuple[int, ...] | None = None):
+        lengths = {len(v) for v in columns.values()}
+        if len(lengths) > 1:
+            raise ValueError(f"columns of unequal length: {lengths}")
+        self.columns = dict(columns)
+        n = len(self)
+        shape = (n,) if shape is None else tuple(int(s) for s in shape)
+        if math.prod(shape) != n:
+            raise ValueError(f"shape {shape} does not hold {n} rows")
+        self._shape = shape
+
+    @classmethod
+    def concat(cls, tables) -> Table:
+        """Tables with the same columns, one after another (e.g. the chunks
+        of a streamed result); a single table is returned as it is."""
+        tables = list(tables)
+        if len(tables) == 1:
+            return tables[0]
+        if not tables:
+            return cls({})
+        return cls({n: np.concatenate([t[n] for t in tables]) for n in tables[0].names})
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.columns)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """The shape the rows fill, row-major (``len(table) == prod(shape)``)."""
+        return self._shape
+
+    def __len__(self) -> int:
+        return len(next(iter(self.columns.values()))) if self.columns else 0
+
+    def __getitem__(self, key):
+        """A column by name, a row dict by int index, a flat Table by slice or mask."""
+        if isinstance(key, str):
+            return self.columns[key]
+        if isinstance(key, (int, np.integer)) and not isinstance(key, bool):
+            n = len(self)
+            i = int(key) + n if key < 0 else int(key)
+            if not 0 <= i < n:
+                raise IndexError(f"row {int(key)} of a table of {n} rows")
+            return {name: _clean(col[i].item() if isinstance(col[i], np.generic) else col[i])
+                    for name, col in self.columns.items()}
+        if isinstance(key, slice) or isinstance(key, (list, np.ndarray)):
+            return Table({name: col[key] for name, col in self.columns.items()})
+        raise TypeError(f"a Table is indexed by a column name, a row number, a slice or a mask (got {key!r})")
+
+    def __contains__(self, name: str) -> bool:
+        return name in self.columns
+
+    def __iter__(self):
+        """Rows as dicts, in order (NaN -> None)."""
+        cols = [(n, c.tolist()) for n, c in self.columns.items()]
+        for i in range(len(self)):
+            yield {n: _clean(v[i]) for n, v in cols}
+
+    def grid(self, name: str) -> np.ndarray:
+        """Column ``name`` reshaped to :attr:`shape` (e.g. theta x alpha)."""
+        return self.columns[name].reshape(self._shape)
+
+    def to_dicts(self) -> list[dict]:
+        """Rows as dicts (NaN -> None), for notebooks and JSON."""
+        return list(self)
+
+    def records(self) -> list[dict]:
+        """The same as :meth:`to_dicts` (the older name)."""
+        return self.to_dicts()
+
+    def to_csv(self, path_or_buf=None) -> str | None:
+        """The table as the command line writes it with ``--format csv`` (the
+        same bytes).  Returns the text when ``path_or_buf`` is None; else
+        writes it to that path or open text file and returns None."""
+        text = csv_text(self, header=True)
+        if path_or_buf is None:
+            return text
+        if hasattr(path_or_buf, "write"):
+            path_or_buf.write(text)
+        else:
+            # newline="": the CLI's line ends, whatever the platform
+            with open(path_or_buf, "w", encoding="utf-8", newline="") as out:
+                out.write(text)
+        return None
+
+    def to_pandas(self):
+        """A :class:`pandas.DataFrame` with the same columns (pandas is
+        optional: install it with ``pip install pandas``)."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("Table.to_pandas() needs pandas: pip install pandas") from None
+        return pd.DataFrame({name: col for name, col in self.columns.items()})
+
+    def _summary_line(self) -> str:
+        shape = "" if self._shape == (len(self),) else f", shape {self._shape}"
+        return f"Table: {len(self)} rows x {len(self.columns)} columns{shape}"
+
+    def _head_cells(self) -> tuple[list[str], list[list[str]], int]:
+        """Header names, the first rows' cells as text, and the row count shown."""
+        shown = min(len(self), self.REPR_ROWS)
+        head = self[:shown] if shown < len(self) else self
+        return self.names, [[_cell_text(v) for v in row.values()] for row in head], shown
+
+    def __repr__(self) -> str:
+        """A text table of the first rows: one line per row, or, for a table
+        wider than :data:`_REPR_WIDE` columns, one line per column (rows
+        across), which stays readable in a notebook or a terminal."""
+        names, rows, shown = self._head_cells()
+        lines = [self._summary_line()]
+        if len(names) > _REPR_WIDE:
+            grid = [[name] + [row[j] for row in rows] for j, name in enumerate(names)]
+        else:
+            grid = [names] + rows
+        if grid and grid[0]:
+            widths = [max(len(r[j]) for r in grid) for j in range(len(grid[0]))]
+            lines += ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in grid]
+        if shown < len(self):
+            lines.append(f"... ({len(self) - shown} more row{'' if len(self) - shown == 1 else 's'})")
+        return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        """An HTML table of the first rows, for Jupyter."""
+        from html import escape
+
+        names, rows, shown = self._head_cells()
+        head = "".join(f"<th>{escape(n)}</th>" for n in names)
+        body = "".join("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in row) + "</tr>" for row in rows)
+        more = f"<p>... {len(self) - shown} more rows</p>" if shown < len(self) else ""
+        return (f"<p>{escape(self._summary_line())}</p><table><thead><tr>{head}</tr></thead>"
+                f"<tbody>{body}</tbody></table>{more}")
+
+
+#: Tables wider than this show one line per column in ``repr``.
+_REPR_WIDE = 8
+#: Text cells longer than this are cut in ``repr``.
+_REPR_TEXT = 40
+
+
+def _cell_text(v) -> str:
+    if v is None:
+        return ""
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    text = str(v)
+    return text if len(text) <= _REPR_TEXT else text[: _REPR_TEXT - 3] + "..."
+
+
+def _clean(v):
+    return None if isinstance(v, float) and math.isnan(v) else v

@@ -1,0 +1,74 @@
+"""Streaming writers of result tables: CSV, JSON and NDJSON.
+
+Every writer takes an iterable of :class:`~deathsphere.table.Table` chunks so
+that sweeps stream with flat memory; the header (CSV) or the opening bracket
+(JSON) is written once.  The cells' text is :mod:`deathsphere.table.cells`'.
+
+Nothing here imports rich: a command writing CSV or JSON does not pay for
+the terminal views (:mod:`deathsphere.render`).
+"""
+
+from __future__ import annotations
+
+from typing import IO, Iterable
+
+from deathsphere.table.cells import csv_text, json_records
+
+FORMATS = ("table", "csv", "json", "ndjson")
+
+
+#: Which CSV writer formats a chunk: None picks per chunk (below), True
+#: the compiled one (:mod:`deathsphere.writers.polars_csv`, the ``fast`` extra)
+#: for every chunk, False the pure-Python one.  The bytes are the same
+#: (tests/test_writers.py compares them), so chunks may mix.
+COMPILED_CSV: bool | None = None
+
+#: With COMPILED_CSV None the compiled writer takes over once an output is
+#: this long, and only for chunks of COMPILED_MIN_CHUNK rows or more:
+#: importing polars costs ~0.2 s, which a short output (`orbit`, a small
+#: sweep) would pay in latency, and polars' per-call cost (~1 ms) is more
+#: than the pure-Python writer spends on a few hundred rows.
+COMPILED_AFTER_ROWS = 20_000
+COMPILED_MIN_CHUNK = 1024
+
+
+def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None) -> int:
+    """Stream tables as CSV: the header once, then every chunk's rows.
+    ``compiled`` None takes :data:`COMPILED_CSV`."""
+    mode = COMPILED_CSV if compiled is None else compiled
+    fast = None
+    rows = 0
+    for i, table in enumerate(chunks):
+        text = csv_text
+        if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
+            if fast is None:
+                from deathsphere.writers import polars_csv
+
+                fast = polars_csv.csv_text if polars_csv.csv_available() else False
+            text = fast or csv_text
+        out.write(text(table, header=i == 0))
+        rows += len(table)
+    return rows
+
+
+def write_ndjson(chunks: Iterable, out: IO[str]) -> int:
+    """Stream tables as NDJSON: one object per line."""
+    rows = 0
+    for table in chunks:
+        lines = json_records(table)
+        if lines:
+            out.write("\n".join(lines) + "\n")
+        rows += len(lines)
+    return rows
+
+
+def write_json(chunks: Iterable, out: IO[str]) -> int:
+    """A JSON array of row objects, streamed chunk by chunk."""
+    rows = 0
+    out.write("[")
+    for table in chunks:
+        for line in json_records(table):
+            out.write(("\n  " if rows == 0 else ",\n  ") + line)
+            rows += 1
+    out.write("\n]\n" if rows else "]\n")
+    return rows
