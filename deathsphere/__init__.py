@@ -19,7 +19,7 @@ result :class:`Table`; :mod:`deathsphere.cli` is the command line.
 #: every start of the command.
 __version__ = "0.1.0"
 
-from deathsphere.lazy import lazy_exports  # noqa: E402
+from deathsphere.physics.lazy import lazy_exports  # noqa: E402
 
 #: Where each public name lives; imported on first use, so that a command's
 #: start-up loads only what it evaluates.

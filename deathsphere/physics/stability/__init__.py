@@ -31,7 +31,7 @@ only ``horizontal``, and a command should not pay at start-up for the
 Floquet analysis and the paper's formulas it does not evaluate.
 """
 
-from deathsphere.lazy import lazy_exports
+from deathsphere.physics.lazy import lazy_exports
 
 #: Where each public name lives.
 _HOME = {

@@ -1,0 +1,296 @@
+"""Horizontal orbits: ``orbit``, ``sweep`` and ``orbit --input`` (McDonald 1993
+eqs. (0), (8b), (13), (29)-(36), (55)-(59), (81), (83))."""
+
+from __future__ import annotations
+
+import math
+from functools import partial
+
+import numpy as np
+
+from deathsphere.api.arguments import (
+    CHUNK,
+    INF,
+    STATUSES,
+    A,
+    G,
+    R,
+    broadcast_flat,
+    checked_array,
+    checked_axis,
+    checked_choice,
+    checked_grid_size,
+    checked_scalar,
+    checked_setup,
+    is_given,
+    one_default,
+    raise_if_all_invalid,
+)
+from deathsphere.api.streams import (
+    Chunks,
+    evaluate_filtered,
+    evaluated,
+    grid_requests,
+    input_requests,
+    request_reader,
+)
+from deathsphere.constants import (
+    BODIES,
+    SIDES,
+)
+from deathsphere.model import (
+    COLUMNS,
+    REQUEST_FIELDS,
+    evaluate,
+    make_requests,
+    validate_requests,
+)
+from deathsphere.params import ParameterError
+from deathsphere.table import Table
+
+
+def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
+          mu=INF, omega3=None, omega=None, speed=None, stability: bool = True) -> Table:
+    """Steady horizontal orbits: ``deathsphere orbit``.
+
+    McDonald (1993): the fit, eq. (0) (outside: eq. 81); r', eq. (8b); the
+    spins, eq. (13); the rate Omega and the forces, eqs. (29)-(36) (outside
+    the contact condition is eq. 83); a rolling sphere, eqs. (55)-(59).
+    Stability (``stability=True``) is beyond the paper: docs/stability.md.
+
+    Parameters
+    ----------
+    theta : float or array_like
+        Polar angle of the contact point from the upward vertical [deg], 0..180.
+    alpha : float or array_like, optional
+        Wheel: tilt of the wheel below the orbit plane [deg], any angle
+        (reduced to (-180, 180]; 205 = -155).  A wheel needs exactly one of
+        ``alpha``, ``speed`` and ``omega``; a sphere and a particle take none.
+    body : {"wheel", "sphere", "particle"}
+    side : {"inside", "outside"}
+    a, r : float or array_like
+        Body radius and sphere radius [m] (inside: r > a).
+    k : float or array_like, optional
+        Inertia factor (wheel: I11 = 2 k m a^2, default 0.5; sphere:
+        I = k m a^2, default 0.4).
+    g : float or array_like
+        Gravity [m/s^2].
+    mu : float or array_like
+        Friction coefficient available (``inf``: no limit); orbits needing
+        more have status ``slips``.
+    omega3 : float or array_like, optional
+        Sphere: spin about the contact normal [rad/s]; eq. (55) gives up to
+        two orbit rates, one row each (``branch`` 0 slow, 1 fast).
+    omega : float or array_like, optional
+        Orbital rate Omega [rad/s].  Sphere: signed about the upward
+        vertical (omega3 follows from eq. 55).  Wheel: > 0; eq. (29) is
+        solved for every tilt alpha giving it, one row each.
+    speed : float or array_like, optional
+        Wheel: centre speed v_cm [m/s]; every tilt alpha giving it, one row each.
+    stability : bool
+        Fill the stability columns (exact linearisation); False is faster.
+
+    All numeric arguments broadcast against each other like numpy arrays.
+
+    Returns
+    -------
+    Table
+        The columns of ``deathsphere orbit --format csv`` (docs/contract.md),
+        one row per element of the broadcast, in row-major order, and
+        ``table.shape`` the broadcast shape (``table.grid("v_cm_m_s")``
+        gives a column in that shape).  Where one request can have several
+        answers -- a sphere given ``omega3`` (two roots of eq. 55) or a
+        wheel given ``speed`` or ``omega`` (one row per tilt) -- the rows
+        cannot keep a rectangular shape: the table is flat (``shape ==
+        (len(table),)``) and ``input_row`` is 1 + the request's flat index
+        in the broadcast, shared by its rows.
+
+    Raises
+    ------
+    ParameterError
+        A value outside its parameter's allowed set, wherever it is in an
+        array (the command line refuses such an option as a whole), e.g.
+        ``theta (polar angle) must be 0..180 deg (got 200)``; or a call none
+        of whose requests can be computed (one request that breaks a
+        combination rule, such as r <= a inside or a wheel given no tilt).
+        When only some elements of the broadcast break a combination rule
+        (r <= a for some of the a and r given), those rows come back with
+        status ``invalid`` and the reason, and the rest are computed, as in
+        a ``sweep`` or an ``--input`` batch.
+
+    Examples
+    --------
+    >>> import deathsphere
+    >>> t = deathsphere.orbit(60, 10)
+    >>> t.shape, str(t["status"][0]), round(float(t["v_cm_m_s"][0]), 2)
+    ((), 'ok', 7.88)
+    >>> t = deathsphere.orbit([[30], [60], [90]], [5, 10], stability=False)
+    >>> t.shape
+    (3, 2)
+    >>> t.grid("status")
+    array([['ok', 'ok'],
+           ['ok', 'ok'],
+           ['ok', 'ok']], dtype=object)
+    >>> s = deathsphere.orbit(60, body="sphere", omega3=80, stability=False)
+    >>> s["branch"].tolist(), s["input_row"].tolist()
+    ([0, 1], [1, 1])
+    >>> deathsphere.orbit(200, 10)
+    Traceback (most recent call last):
+    ...
+    deathsphere.params.ParameterError: theta (polar angle) must be 0..180 deg (got 200)
+    """
+    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "omega3": omega3,
+             "omega": omega, "speed": speed}
+    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    n = math.prod(shape)
+    table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, **flat), stability=bool(stability)))
+    several = (body == "wheel" and alpha is None) or (body == "sphere" and omega3 is not None)
+    return table if several else Table(table.columns, shape=shape)
+
+
+def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side: str = "inside", g=G, mu=INF,
+          omega3=None, omega=None, speed=None, only=None, chunk_size: int = CHUNK, stability: bool = True,
+          jobs: int = 1) -> Chunks:
+    """Every combination of the axes, chunk by chunk: ``deathsphere sweep``
+    (and ``deathsphere orbit`` given several values).
+
+    The physics of :func:`orbit` (McDonald 1993 eqs. (0), (8b), (13),
+    (29)-(36), (55)-(59), (81), (83)) over a cartesian grid that is never
+    held in memory.
+
+    Parameters
+    ----------
+    theta, alpha, a, r, k, omega3, omega, speed : float, array_like or str
+        The axes (units as in :func:`orbit`): a value, a list or array of
+        values, or the command line's text, one value or a range
+        ``"start:stop:step"`` (stop included when on the grid, e.g.
+        ``"5:175:1"``), or a list mixing both (the values of a repeated
+        option, in order).  Grid order is a, r, k, theta, then speed,
+        alpha, omega3 or omega fastest.
+    body, side, g, mu : as for :func:`orbit` (one value each).
+    only : str or list of str, optional
+        Keep only rows with these statuses (``"ok"``, ``"no_fit"``, ...).
+    chunk_size : int
+        Grid points evaluated per chunk (memory stays flat).
+    stability : bool
+        Fill the stability columns.
+    jobs : int
+        Processes evaluating chunks (1..256); the chunks come back in grid
+        order, the same tables as with one.
+
+    Returns
+    -------
+    Chunks
+        An iterator of tables, one per chunk of ``chunk_size`` grid points,
+        in grid order (with ``only``, a chunk may be empty); ``input_row``
+        numbers the grid points from 1.  Together they are ``deathsphere
+        sweep --format csv``.  A combination that is not allowed (r <= a
+        inside) is an ``invalid`` row with the reason.
+
+    Raises
+    ------
+    ParameterError
+        At the call (before any chunk): a value outside its set, a bad
+        range, or inputs the body does not take.
+
+    Examples
+    --------
+    >>> import deathsphere
+    >>> chunks = deathsphere.sweep("30:90:30", [5, 10], chunk_size=4, stability=False)
+    >>> chunks.total, [len(c) for c in chunks]
+    (6, [4, 2])
+    >>> ok = deathsphere.sweep(60, [10, 30, 60], only="ok", stability=False)
+    >>> [row["alpha_deg"] for chunk in ok for row in chunk]
+    [10.0, 30.0]
+    """
+    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    g, mu = checked_scalar("g", g), checked_scalar("mu", mu)
+    chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
+    keep = None
+    if only is not None:
+        keep = [checked_choice("only", s, STATUSES) for s in ([only] if isinstance(only, str) else only)]
+    if not is_given(theta):
+        raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
+                             missing=True)
+    axes = {"a": checked_axis("a", a, A), "r": checked_axis("r", r, R), "k": checked_axis("k", k), "theta": checked_axis("theta", theta),
+            "speed": checked_axis("speed", speed), "alpha": checked_axis("alpha", alpha), "omega3": checked_axis("omega3", omega3),
+            "omega": checked_axis("omega", omega)}
+    total = checked_grid_size(axes)
+    if len(axes["a"]) == 1 and len(axes["r"]) == 1:
+        # one body in one sphere: a combination that cannot be is bad input,
+        # not a grid of invalid rows
+        one = np.zeros(1, dtype=np.int64)
+        checked_setup(body, side, axes["a"].take(one)[0], axes["r"].take(one)[0], None, g, mu)
+    # which inputs the body takes is the same for every grid point: ask the
+    # model's validator about the first one (with a and r that always fit,
+    # so that only a per-point combination such as r <= a gives invalid rows)
+    first = {name: axes[name].take(np.zeros(1, dtype=np.int64))
+             for name in ("theta", "alpha", "k", "omega3", "omega", "speed")}
+    reason = validate_requests(make_requests(1, body=body, side=side, a=1.0, r=2.0, g=g, mu=mu, **first))[0]
+    if reason:
+        raise ParameterError(reason)
+    fixed = dict(body=body, side=side, g=g, mu=mu)
+    work = partial(evaluate_filtered, stability=bool(stability), keep=keep)
+    return Chunks(evaluated(grid_requests(axes, chunk_size, make_requests, fixed), work, jobs), total)
+
+
+def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, body: str = "wheel",
+                side: str = "inside", a=A, r=R, k=None, g=G, mu=INF, stability: bool = True,
+                chunk_size: int = CHUNK) -> Chunks:
+    """Horizontal orbits of the requests in a CSV file: ``deathsphere orbit --input FILE``.
+
+    The physics of :func:`orbit`, one request per line, streamed: a file of
+    any length runs in the memory of one chunk.
+
+    Parameters
+    ----------
+    source : str or path
+        The CSV file, or ``"-"`` for standard input.  Its header names the
+        inputs (``theta``, ``alpha``, ``omega3``, ``omega``, ``speed``,
+        ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``); an output
+        CSV of ``orbit`` is read too (``theta_deg``, ``alpha_deg``, ...
+        echo their inputs; its other columns are ignored).
+    theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu
+        One value each: the default for a column the file lacks or a cell
+        left empty.
+    stability, chunk_size : as for :func:`sweep`.
+
+    Returns
+    -------
+    Chunks
+        The tables of ``deathsphere orbit --input FILE --format csv``: every
+        non-blank line after the header gives one request, ``input_row``
+        its position, in order; a line that cannot be read is an
+        ``invalid`` row with its reason (docs/contract.md, "Input files").
+
+    Raises
+    ------
+    ParameterError
+        A default outside its set, or a file that cannot be read as a whole
+        (missing, empty, not CSV text, an unknown column).
+
+    Examples
+    --------
+    >>> import os, tempfile, deathsphere
+    >>> path = os.path.join(tempfile.mkdtemp(), "requests.csv")
+    >>> _ = open(path, "w").write("theta,alpha\\n60,10\\n60,oops\\n")
+    >>> table = deathsphere.orbit_input(path, stability=False).table()
+    >>> table["status"].tolist(), table["input_row"].tolist()
+    (['ok', 'invalid'], [1, 2])
+    """
+    setup = checked_setup(body, side, a, r, k, g, mu)
+    chunk_size = int(checked_scalar("chunk_size", chunk_size))
+    defaults = dict(body=setup.body, side=setup.side, a=setup.a, r=setup.r, k=k, g=setup.g, mu=setup.mu)
+    if k is not None:
+        defaults["k"] = setup.k
+    for name, value in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega),
+                        ("speed", speed)):
+        value = one_default(name, value)
+        if value is not None:
+            defaults[name] = value
+    from deathsphere.inputs import ALIASES
+
+    reader = request_reader(source, REQUEST_FIELDS, defaults, ALIASES, COLUMNS)
+    work = partial(evaluate_filtered, stability=bool(stability))
+    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work))

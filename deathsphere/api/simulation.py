@@ -1,0 +1,149 @@
+"""The exact equations of motion, integrated: ``simulate``."""
+
+from __future__ import annotations
+
+from deathsphere import params
+from deathsphere.api.arguments import (
+    INF,
+    A,
+    G,
+    R,
+    checked_choice,
+    checked_optional,
+    checked_scalar,
+    checked_setup,
+)
+from deathsphere.params import ParameterError
+from deathsphere.table import Table
+
+#: solve_ivp's methods and the frames :func:`simulate` integrates in
+#: (as in :mod:`deathsphere.simulation`, named here so that a call is
+#: checked before scipy is imported).
+METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")
+
+
+METHODS_LOWER = tuple(m.lower() for m in METHODS)
+
+
+FRAMES = ("turning", "lab")
+
+
+def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
+             omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
+             periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
+             atol: float | None = None, frame: str = "turning") -> tuple[Table, Table]:
+    """Integrate the exact equations of motion from a steady orbit: ``deathsphere simulate``.
+
+    Beyond the paper (docs/simulation.md): the Newton-Euler equations of a
+    body rolling without slipping, eqs. (2)-(7b) in general form, are
+    integrated with scipy's solve_ivp from the steady orbit of :func:`orbit`
+    (or, with ``vertical``, of :func:`vertical`), optionally kicked off it.
+
+    Parameters
+    ----------
+    theta : float
+        Polar angle of the contact point [deg] (vertical: the cone angle).
+    alpha : float, optional
+        Wheel: tilt of the steady orbit [deg].
+    body : {"wheel", "sphere"}
+    side, a, r, k, g, mu : as for :func:`orbit` (k > 0); the run stops with
+        ``slips`` when the friction needed exceeds ``mu``.
+    omega3, omega : float, optional
+        Sphere: spin about the contact normal, or the signed orbital rate [rad/s].
+    branch : {0, 1}
+        Sphere with ``omega3``: the root of eq. (55) (0 slow, 1 fast).
+    vertical : bool
+        A vertical orbit of a wheel started at the top with ``v_top`` [m/s].
+    perturb : float
+        Kick off the steady orbit [deg], -60..60: the wheel tilted by this
+        about its direction of travel (a sphere: its contact point moved
+        this far down the meridian); rolling and contact still hold.
+    periods : float
+        Run length in periods of the steady orbit (vertical: laps).
+    points_per_period : int
+        Rows per period, 2..100000.
+    method : {"DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA"}
+    rtol, atol : float
+        solve_ivp's tolerances (atol defaults to rtol, per scaled component).
+    frame : {"turning", "lab"}
+
+    Returns
+    -------
+    (Table, Table)
+        The time series (``deathsphere simulate --format csv``: ``t_s``,
+        ``theta_deg``, ``alpha_deg``, forces, drifts) and the one-row
+        summary (``--summary-only``: ``status`` completed, contact_lost,
+        slips, ...).
+
+    Examples
+    --------
+    >>> import deathsphere
+    >>> series, summary = deathsphere.simulate(60, 10, periods=0.1, points_per_period=20)
+    >>> len(series), str(summary["status"][0])
+    (3, 'completed')
+    """
+    return prepare_simulation(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3,
+                              omega=omega, branch=branch, vertical=vertical, v_top=v_top, perturb=perturb,
+                              periods=periods, points_per_period=points_per_period, method=method, rtol=rtol,
+                              atol=atol, frame=frame).run()
+
+
+def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
+                       mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
+                       perturb=0.0, periods=20.0, points_per_period=100, method: str = "DOP853",
+                       rtol: float = 1e-10, atol: float | None = None, frame: str = "turning",
+                       record_states: bool = False):
+    """The validated :class:`deathsphere.simulation.Simulation` behind
+    :func:`simulate` (same parameters), not yet run: for streaming the time
+    series chunk by chunk (``sim.chunks()``, then ``sim.summary()``), as the
+    command line does; ``record_states`` keeps the full states for the 3-D
+    view.  Bad input raises :class:`ParameterError`.
+
+    Examples
+    --------
+    >>> sim = prepare_simulation(60, 10, periods=0.1, points_per_period=20)
+    >>> sum(len(chunk) for chunk in sim.chunks()), str(sim.summary()["status"][0])
+    (3, 'completed')
+    """
+    from deathsphere import simulation
+
+    setup = checked_setup(body, side, a, r, k, g, mu)
+    theta = checked_scalar("theta", theta)
+    alpha, omega3, omega, v_top = (None if v is None else checked_scalar(name, v) for name, v in
+                                   (("alpha", alpha), ("omega3", omega3), ("omega", omega), ("v_top", v_top)))
+    perturb, periods = checked_scalar("perturb", perturb), checked_scalar("periods", periods)
+    points_per_period = int(checked_scalar("points_per_period", points_per_period))
+    method = checked_choice("method", method, METHODS_LOWER)
+    method = METHODS[METHODS_LOWER.index(method)]
+    frame = checked_choice("frame", frame, FRAMES)
+    rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
+    if isinstance(branch, bool) or branch not in (0, 1):
+        raise ParameterError(f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
+    # which inputs each kind of run takes (the command line's rules, in words
+    # naming the parameters of this function)
+    if setup.body == "particle":
+        raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)")
+    if vertical:
+        if setup.body != "wheel" or alpha is not None or v_top is None:
+            raise ParameterError("vertical=True simulates a wheel: give theta and v_top (no alpha)")
+    elif v_top is not None:
+        raise ParameterError("v_top is for vertical orbits (vertical=True)")
+    elif setup.body == "wheel" and (alpha is None or omega3 is not None or omega is not None):
+        raise ParameterError("a wheel's steady orbit needs alpha (deg), and no omega3 or omega")
+    elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
+        raise ParameterError("a sphere's steady orbit needs exactly one of omega3 and omega (no alpha)")
+    if setup.k == 0:
+        raise ParameterError("simulate needs k > 0: at k = 0 the equations of motion are singular")
+    try:
+        if vertical:
+            starts = simulation.vertical_starts(setup, theta, v_top, perturb_deg=perturb)
+        elif setup.body == "wheel":
+            starts = simulation.horizontal_starts(setup, theta, params.reduce_angle(alpha), perturb_deg=perturb)
+        else:
+            starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
+                                                  perturb_deg=perturb)
+        sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
+                                    rtol=rtol, atol=atol, frame=frame, record_states=record_states)
+    except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
+        raise ParameterError(str(exc)) from None
+    return sim

@@ -1,0 +1,109 @@
+"""Streamed results: requests in chunks (a grid or an input file), evaluated
+on one or several processes, handed out as :class:`Chunks` in order."""
+
+from __future__ import annotations
+
+import os
+from collections import deque
+from collections.abc import Iterator
+
+import numpy as np
+
+from deathsphere.grid import (
+    grid_chunks,
+)
+from deathsphere.model import (
+    evaluate,
+)
+from deathsphere.params import ParameterError
+from deathsphere.table import Table
+
+
+class Chunks:
+    """The tables of a streamed result, one per chunk of requests, in order:
+    an iterator (``for table in chunks``) that knows how far it has got.
+
+    ``total`` is the number of requests (grid points; None when they are
+    read from a file as they come) and ``done`` the number evaluated so far
+    (the command line's progress bar).  :meth:`table` joins what is left
+    into one :class:`Table` (small results only)."""
+
+    def __init__(self, pairs: Iterator[tuple[int, Table]], total: int | None = None):
+        self._pairs = iter(pairs)
+        self.total = total
+        self.done = 0
+
+    def __iter__(self) -> Chunks:
+        return self
+
+    def __next__(self) -> Table:
+        n, table = next(self._pairs)
+        self.done += n
+        return table
+
+    def table(self) -> Table:
+        """Every remaining chunk as one table."""
+        return Table.concat(self)
+
+
+def grid_requests(axes: dict, chunk_size: int, make, fixed: dict) -> Iterator[tuple[int, dict]]:
+    """``(n, requests)`` per chunk of the grid of ``axes``, numbered from 1 in grid order."""
+    for first, grid in grid_chunks(axes, chunk_size):
+        n = len(grid["theta"])
+        yield n, make(n, input_row=np.arange(first + 1, first + n + 1), **fixed, **grid)
+
+
+def evaluated(batches, work, jobs: int = 1) -> Iterator[tuple[int, Table]]:
+    """``(n, work(requests))`` per batch, in order; on ``jobs`` processes if > 1."""
+    if jobs == 1:
+        for n, req in batches:
+            yield n, work(req)
+        return
+    from deathsphere.parallel import ordered_map
+
+    counts = deque()
+
+    def requests():
+        for n, req in batches:
+            counts.append(n)
+            yield req
+
+    for table in ordered_map(work, requests(), jobs):
+        yield counts.popleft(), table
+
+
+def evaluate_filtered(req: dict, stability: bool, keep=None) -> Table:
+    """Horizontal orbits of a request batch, keeping only the statuses ``keep``."""
+    table = evaluate(req, stability=stability)
+    if keep is not None:
+        table = table[np.isin(table["status"], keep)]
+    return table
+
+
+def input_requests(reader, chunk_size: int, make) -> Iterator[tuple[int, dict]]:
+    """``(n, requests)`` per chunk of an input file's rows; a file with a
+    header and no rows gives one empty batch, so that the output still has
+    its header."""
+    empty = True
+    for part in reader.chunks(chunk_size):
+        empty = False
+        n = len(part.input_row)
+        yield n, make(n, invalid=part.invalid, input_row=part.input_row, **part.values)
+    if empty:
+        yield 0, make(0, **{name: np.empty(0, dtype=object if name in ("body", "side") else float)
+                            for name in reader.fields})
+
+
+def request_reader(source, fields: dict, defaults: dict, echo: dict, columns):
+    """A streaming reader of the request CSV ``source`` (a path, or ``"-"``
+    for standard input).  ``echo`` maps the output columns that echo an
+    input back to that input, so that a result CSV can be fed back; every
+    other output column in ``columns`` is read and ignored."""
+    from deathsphere.inputs import InputError, RequestReader, open_input
+
+    name = "stdin" if source == "-" else os.fspath(source)
+    try:
+        return RequestReader(open_input(os.fspath(source)), fields, defaults, source=name, aliases=echo,
+                             ignore=[c for c in columns if c not in echo])
+    except InputError as exc:
+        raise ParameterError(str(exc), "input") from None

@@ -1,0 +1,219 @@
+"""Vertical orbits of a wheel: ``vertical``, its sweep and its input file
+(McDonald 1993 sec. 2.2.1)."""
+
+from __future__ import annotations
+
+import math
+
+from deathsphere.api.arguments import (
+    INF,
+    A,
+    G,
+    R,
+    broadcast_flat,
+    checked_array,
+    checked_axis,
+    checked_choice,
+    checked_grid_size,
+    checked_scalar,
+    checked_setup,
+    is_given,
+    one_default,
+    raise_if_all_invalid,
+)
+from deathsphere.api.streams import (
+    Chunks,
+    grid_requests,
+    input_requests,
+    request_reader,
+)
+from deathsphere.constants import (
+    SIDES,
+)
+from deathsphere.params import ParameterError
+from deathsphere.table import Table
+
+#: Output columns of ``vertical`` that echo an input, read back under that
+#: input's name when a result CSV is fed to :func:`vertical_input` (every
+#: other output column is ignored; ``v_cm_m_s`` is the speed at the top).
+#: ``orbit``'s are :data:`deathsphere.inputs.ALIASES`.
+VERTICAL_ECHO = {"theta_deg": "theta", "a_m": "a", "r_m": "r", "g_m_s2": "g", "mu_available": "mu",
+                 "v_cm_m_s": "v_top"}
+
+
+#: Rows of the point-by-point output of a vertical orbit computed at once
+#: (requests x points): a long orbit is written in slices of this many.
+POINT_ROWS = 65536
+
+
+def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5, g=G, mu=INF,
+             points=None, stability: bool = True) -> Table:
+    """Vertical orbits of a wheel: ``deathsphere vertical``.
+
+    McDonald (1993) sec. 2.2.1: contact all the way round, eq. (28a); the
+    forces and friction round the orbit, eqs. (26)-(28b); outside the sphere
+    no vertical orbit closes and the row says where the wheel leaves the
+    surface (from rest: eq. 82).  Stability (Floquet, over one lap) is
+    beyond the paper: docs/stability.md.
+
+    Parameters
+    ----------
+    theta : float or array_like
+        Cone angle of the orbit about the horizontal axis [deg], 0..180
+        (90: a vertical great circle).
+    v_top : float or array_like, optional
+        Speed of the wheel's centre at the top [m/s], >= 0.
+    phidot_top : float or array_like, optional
+        Orbital rate at the top [rad/s], >= 0 (give exactly one of
+        ``v_top`` and ``phidot_top``).
+    side : {"inside", "outside"}
+    a, r, k, g, mu : float or array_like
+        As for :func:`orbit` (k = 0.5 by default).
+    points : int, optional
+        Give the orbit point by point at ``points`` azimuths phi from the
+        top (0) round to 360 deg (2..1e6) instead of one summary row.
+    stability : bool
+        Fill the stability columns of the summary.
+
+    Returns
+    -------
+    Table
+        The columns of ``deathsphere vertical --format csv``: one summary row
+        per element of the broadcast (``shape`` the broadcast shape); with
+        ``points``, ``points`` rows per request (``shape`` the broadcast
+        shape + ``(points,)``; flat if some request is invalid, which gives
+        one row).
+
+    Raises
+    ------
+    ParameterError
+        As for :func:`orbit`.
+
+    Examples
+    --------
+    >>> import deathsphere
+    >>> t = deathsphere.vertical(90, 6, stability=False)
+    >>> str(t["status"][0]), round(float(t["v_top_min_m_s"][0]), 3)
+    ('ok', 5.146)
+    >>> p = deathsphere.vertical(90, [6, 7], points=5)
+    >>> p.shape, p.grid("phi_deg")[0].tolist()
+    ((2, 5), [0.0, 90.0, 180.0, 270.0, 360.0])
+    """
+    from deathsphere.results.vertical import (
+        evaluate_vertical,
+        vertical_points,
+        vertical_requests,
+    )
+
+    side = checked_choice("side", side, SIDES)
+    given = {"theta": theta, "v_top": v_top, "phidot_top": phidot_top, "a": a, "r": r, "k": k, "g": g, "mu": mu}
+    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    n = math.prod(shape)
+    req = vertical_requests(n, side=side, **flat)
+    if points is None:
+        return Table(raise_if_all_invalid(evaluate_vertical(req, stability=bool(stability))).columns, shape=shape)
+    points = int(checked_scalar("points", points))
+    table = raise_if_all_invalid(vertical_points(req, points))
+    return Table(table.columns, shape=shape + (points,)) if len(table) == n * points else table
+
+
+def _vertical_setup(side, a, r, k, g, mu) -> dict:
+    """The scalar options of a vertical orbit, checked (a wheel; r > a inside)."""
+    setup = checked_setup("wheel", side, a, r, k, g, mu)
+    return dict(side=setup.side, a=setup.a, r=setup.r, k=setup.k, g=setup.g, mu=setup.mu)
+
+
+def _vertical_work(points: int | None, stability: bool):
+    """What one batch of vertical requests becomes: summary rows, or the
+    orbit point by point in slices of at most :data:`POINT_ROWS` rows."""
+    from deathsphere.results.vertical import evaluate_vertical, vertical_points
+
+    if points is None:
+        return lambda batches: ((n, evaluate_vertical(req, stability=stability)) for n, req in batches)
+
+    def sliced(batches):
+        for n, req in batches:
+            for start in range(0, points, POINT_ROWS):
+                last = start + POINT_ROWS >= points
+                yield (n if last else 0), vertical_points(req, points, start, start + POINT_ROWS)
+    return sliced
+
+
+def _vertical_chunk(points: int | None) -> int:
+    return 256 if points is None else max(1, POINT_ROWS // points)
+
+
+def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5, g=G, mu=INF,
+                   points=None, stability: bool = True) -> Chunks:
+    """Every combination of cone angles and top speeds, chunk by chunk:
+    ``deathsphere vertical`` (the physics of :func:`vertical`).
+
+    Parameters
+    ----------
+    theta, v_top, phidot_top : float, array_like or str
+        Axes of the grid (theta outer), as for :func:`sweep`: values,
+        arrays, ``"start:stop:step"`` text or a list mixing them.  Give
+        exactly one of ``v_top`` [m/s] and ``phidot_top`` [rad/s].
+    side, a, r, k, g, mu, points, stability : as for :func:`vertical` (one value each).
+
+    Returns
+    -------
+    Chunks
+        The tables of ``deathsphere vertical --format csv``; ``input_row``
+        numbers the grid points from 1.
+
+    Examples
+    --------
+    >>> import deathsphere
+    >>> t = deathsphere.vertical_sweep("60:90:30", [6, 7], stability=False).table()
+    >>> t["theta_deg"].tolist(), t["v_cm_m_s"].tolist()
+    ([60.0, 60.0, 90.0, 90.0], [6.0, 7.0, 6.0, 7.0])
+    """
+    from deathsphere.results.vertical import vertical_requests
+
+    fixed = _vertical_setup(side, a, r, k, g, mu)
+    points = None if points is None else int(checked_scalar("points", points))
+    if not is_given(theta):
+        raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
+                             missing=True)
+    if is_given(v_top) == is_given(phidot_top):
+        raise ParameterError("give exactly one of v_top (m/s) and phidot_top (rad/s)",
+                             "phidot_top" if is_given(v_top) else "v_top")
+    key, value = ("v_top", v_top) if is_given(v_top) else ("phidot_top", phidot_top)
+    axes = {"theta": checked_axis("theta", theta), key: checked_axis(key, value)}
+    total = checked_grid_size(axes)
+    batches = grid_requests(axes, _vertical_chunk(points), vertical_requests, fixed)
+    return Chunks(_vertical_work(points, bool(stability))(batches), total)
+
+
+def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5,
+                   g=G, mu=INF, points=None, stability: bool = True) -> Chunks:
+    """Vertical orbits of the requests in a CSV file: ``deathsphere vertical --input FILE``.
+
+    As :func:`orbit_input`, for :func:`vertical`: the header names
+    ``theta`` and ``v_top`` or ``phidot_top`` (and optionally ``side``,
+    ``a``, ``r``, ``k``, ``g``, ``mu``); the keyword arguments are the
+    defaults for a missing column or an empty cell (one value each).  A
+    result CSV of ``vertical`` is read too (``v_cm_m_s`` is the top speed).
+
+    Examples
+    --------
+    >>> import os, tempfile, deathsphere
+    >>> path = os.path.join(tempfile.mkdtemp(), "loops.csv")
+    >>> _ = open(path, "w").write("theta,v_top\\n90,6\\n90,-1\\n")
+    >>> t = deathsphere.vertical_input(path, stability=False).table()
+    >>> t["status"].tolist()
+    ['ok', 'invalid']
+    """
+    from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
+    from deathsphere.results.vertical import VERTICAL_FIELDS, vertical_requests
+
+    defaults = _vertical_setup(side, a, r, k, g, mu)
+    points = None if points is None else int(checked_scalar("points", points))
+    for name, value in (("theta", theta), ("v_top", v_top), ("phidot_top", phidot_top)):
+        value = one_default(name, value)
+        if value is not None:
+            defaults[name] = value
+    reader = request_reader(source, VERTICAL_FIELDS, defaults, VERTICAL_ECHO, VERTICAL_COLUMNS)
+    batches = input_requests(reader, _vertical_chunk(points), vertical_requests)
+    return Chunks(_vertical_work(points, bool(stability))(batches))
