@@ -18,3 +18,15 @@ DEFAULT_INERTIA = {"wheel": 0.5, "sphere": 0.4, "particle": 0.0}
 
 BODIES = ("wheel", "sphere", "particle")
 SIDES = ("inside", "outside")
+
+#: The allowed region's boundaries (docs/limits.md): name -> its label (inside,
+#: outside), the equation it comes from and what holds on it.  The one text
+#: every table, map and plot uses (words, not physics: defined here so that
+#: the results and the views share them without the views importing physics).
+BOUNDARY_LABELS = {
+    "eq0": ("eq. (0): the wheel fits", "eq. (81): the wheel fits"),
+    "eq29": ("eq. (29): Omega^2 = 0 or diverges", "eq. (29): Omega^2 = 0 or diverges"),
+    "eq33": ("eq. (33): normal force = 0", "eq. (83): normal force = 0"),
+    "mu": ("eq. (35): mu_required = mu", "eq. (35): mu_required = mu"),
+    "max_g": ("eq. (36): g-load = max_g", "eq. (36): g-load = max_g"),
+}

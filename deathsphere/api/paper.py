@@ -74,3 +74,20 @@ def n_claims(claims=None) -> int:
     from deathsphere.results.verify import CLAIMS
 
     return len(CLAIMS) if not is_given(claims) else (1 if isinstance(claims, str) else len(claims))
+
+
+def verify_counts(table: Table) -> dict[str, int]:
+    """How many claims of a :func:`verify` table are confirmed, corrected
+    and refuted (in that order)."""
+    from deathsphere.results.verify import counts
+
+    return counts(table)
+
+
+def table1_printed() -> tuple[tuple[str, ...], ...]:
+    """Table 1 as printed, row by row, as text (theta, alpha, mu, v_cm, "No.
+    of g's"): the digits a printed value carries decide how it is compared
+    and shown."""
+    from deathsphere.results.table1 import PRINTED
+
+    return PRINTED

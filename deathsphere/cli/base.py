@@ -298,8 +298,8 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
     if writer is not None:
         return writer(chunks, sys.stdout)
     from deathsphere.model import Table
-    from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS
     from deathsphere.render.orbit_views import write_rich_table
+    from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS
 
     head, total = [], 0
     for table in chunks:

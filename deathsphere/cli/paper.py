@@ -34,9 +34,8 @@ def table1_command(fmt):
     fmt = choose_format(fmt)
     if fmt == "table":
         from deathsphere.render.paper_views import table1_view
-        from deathsphere.results.table1 import PRINTED
 
-        stdout_console().print(table1_view(table, PRINTED))
+        stdout_console().print(table1_view(table, api.table1_printed()))
     else:
         emit([table], fmt)
 
@@ -65,8 +64,7 @@ def verify_command(claims, jobs, fmt):
                            **given(jobs=jobs))
     if fmt == "table":
         from deathsphere.render.paper_views import checklist_view
-        from deathsphere.results.verify import counts
 
-        stdout_console().print(checklist_view(table, counts(table)))
+        stdout_console().print(checklist_view(table, api.verify_counts(table)))
     else:
         emit([table], fmt)

@@ -20,6 +20,7 @@ from deathsphere.cli.base import (
     stderr_console,
     stdout_console,
 )
+from deathsphere.table import Table
 
 #: --output formats and the package each needs: still figures of the run,
 #: and the 3-D view (html needs nothing beyond the core).
@@ -31,7 +32,12 @@ def _preflight_output(output) -> bool:
     """Before anything is integrated (the path, extension and the plot extra
     are already checked by :class:`OutputPath`): an .mp4 also needs its
     encoder.  Returns True for a 3-D view, False for a figure."""
-    from deathsphere.viewer import VIEW_FORMATS, ViewerUnavailable, check_view_output, view_format
+    from deathsphere.viewer import (
+        VIEW_FORMATS,
+        ViewerUnavailable,
+        check_view_output,
+        view_format,
+    )
 
     if view_format(output) not in VIEW_FORMATS:
         return False
@@ -92,7 +98,6 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output orbit.html   (3-D view)
     """
-    from deathsphere import simulation
     from deathsphere.render.simulation_view import simulation_view
 
     view = output is not None and _preflight_output(output)
@@ -129,14 +134,14 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     if view:
         from deathsphere.viewer import write_view
 
-        size = write_view(output, simulation.concat_tables(series), summary, sim.sample_states())
+        size = write_view(output, Table.concat(series), summary, sim.view_frames())
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
     elif output is not None:
         from deathsphere.render.figures import PlotExtraMissing
         from deathsphere.render.simulation_figure import plot_simulation
 
         try:
-            plot_simulation(simulation.concat_tables(series), summary, output=output)
+            plot_simulation(Table.concat(series), summary, output=output)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
         stderr_console().print(f"deathsphere: wrote {output}")

@@ -52,7 +52,6 @@ from deathsphere.physics.wheel import horizontal_orbit, omega_squared_denominato
 __all__ = [
     "AlphaIntervals",
     "HighestOrbit",
-    "BOUNDARY_LABELS",
     "fit_interval",
     "alpha_window",
     "boundary_alphas",
@@ -64,17 +63,6 @@ __all__ = [
     "highest_orbit",
     "solve_alpha",
 ]
-
-#: Boundary name -> its label (inside, outside): the equation it comes from
-#: and what holds on it.  The one text every table, map and plot uses.
-BOUNDARY_LABELS = {
-    "eq0": ("eq. (0): the wheel fits", "eq. (81): the wheel fits"),
-    "eq29": ("eq. (29): Omega^2 = 0 or diverges", "eq. (29): Omega^2 = 0 or diverges"),
-    "eq33": ("eq. (33): normal force = 0", "eq. (83): normal force = 0"),
-    "mu": ("eq. (35): mu_required = mu", "eq. (35): mu_required = mu"),
-    "max_g": ("eq. (36): g-load = max_g", "eq. (36): g-load = max_g"),
-}
-
 
 def _basis(a, r, k):
     """The building blocks C, S, s, c, r', D, S D of the module docstring."""

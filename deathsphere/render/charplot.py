@@ -23,14 +23,11 @@ map's sample lines through it).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-from deathsphere.physics.region import BOUNDARY_LABELS
+from deathsphere.constants import BOUNDARY_LABELS
 
-if TYPE_CHECKING:
-    from deathsphere.results.region_map import CellMap
 
 #: Character and legend text of each boundary, in drawing order (later wins).
 MARKS = {name: (ch, BOUNDARY_LABELS[name][0])
@@ -82,8 +79,9 @@ def columns_for_width(width: int) -> int:
     return width - _LEFT - 2
 
 
-def char_map(cells: CellMap) -> CharMap:
-    """Character map of the allowed (theta, alpha) region in ``cells``:
+def char_map(cells) -> CharMap:
+    """Character map of the allowed (theta, alpha) region in ``cells`` (a
+    :class:`deathsphere.results.region_map.CellMap`, from :func:`deathsphere.region_cells`):
     one character per cell, the frame, axis labels and a legend, in
     ``len(cells.theta_deg) + 8`` columns (see :func:`columns_for_width`).
     With ``cells.stability`` the allowed cells whose orbit is linearly

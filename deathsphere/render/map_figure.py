@@ -15,15 +15,12 @@ matplotlib is optional (:mod:`deathsphere.render.figures`).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-from deathsphere.physics.region import BOUNDARY_LABELS
+from deathsphere.constants import BOUNDARY_LABELS
 from deathsphere.render.figures import figure_format, import_matplotlib
 
-if TYPE_CHECKING:
-    from deathsphere.results.region_map import CurveMap
 
 #: name -> (legend label inside, legend label outside, matplotlib style)
 CURVES = {
@@ -72,7 +69,7 @@ def _extend(values, cells):
     return values
 
 
-def plot_map(curves: CurveMap, *, output=None, points=None, points_label="orbits", title=None, dpi=200):
+def plot_map(curves, *, output=None, points=None, points_label="orbits", title=None, dpi=200):
     """Figure of the allowed (theta, alpha) region in ``curves``, McDonald
     (1993) figure "alpha_wh" (a/r = 0.1 there), with the boundaries of eqs.
     (0), (29), (33) (eqs. (81), (83) outside) and, when the map has them,

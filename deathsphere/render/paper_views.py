@@ -9,7 +9,7 @@ from rich.markup import escape
 
 from deathsphere.table import Table
 from deathsphere.render.terminal_table import STABILITY_STYLE, Column, FitTable, format_number
-from deathsphere.results.table1 import decimals
+from deathsphere.table.cells import decimals
 
 
 #: The acceleration trio of Table 1 ("No. of g's" printed beside both
@@ -93,8 +93,6 @@ def stability_view(table: Table) -> Group:
     grouped by case (equator, small wheel, near the poles), whether each
     applies here, and the notes.  Labels stay on one line; the conditions
     of the verdicts and the premises' parameters go to lines under it."""
-    from deathsphere.physics.stability import SMALL_WHEEL_VALIDITY
-
     get = table.records()
     head = (f"[italic]stability of a wheel {get[0]['side']}, θ = {format_number(get[0]['theta_deg'])}°, "
             f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(get[0]['a_m'])} m, "
@@ -117,7 +115,7 @@ def stability_view(table: Table) -> Group:
             for key, column in cells.items():
                 column.append(f"[bold]{escape(case)}[/bold]: {where}" if key == "result" else "")
             if row["validity"] is not None:
-                symbol, limit = (("a/r'", SMALL_WHEEL_VALIDITY) if case.endswith("small wheel") else ("r'/a", 1))
+                symbol, limit = ("a/r'" if case.endswith("small wheel") else "r'/a"), row["validity_limit"]
                 premises.append(f"{case} {symbol} = {row['validity']:.3g} (applies up to {limit:g})")
         label, condition = _paper_label(row["quantity"], row["units"])
         if condition:

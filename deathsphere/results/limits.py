@@ -8,13 +8,14 @@ from functools import partial
 
 import numpy as np
 
+from deathsphere.constants import BOUNDARY_LABELS
 from deathsphere.model import Setup, Table
 from deathsphere.parallel import ordered_map
 from deathsphere.physics import region
 
 #: Boundary name -> the equation it comes from (inside, outside).
 EQUATIONS = {
-    **region.BOUNDARY_LABELS,
+    **BOUNDARY_LABELS,
     "stability": ("stability boundary (exact linearisation)", "stability boundary (exact linearisation)"),
 }
 

@@ -18,7 +18,8 @@ from deathsphere.model import Setup, Table, evaluate, make_requests
 from deathsphere.physics import stability as exact_stability
 
 COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", "applies", "validity",
-           "paper", "corrected", "exact", "deviation", "note", "side", "a_m", "r_m", "k", "g_m_s2")
+           "paper", "corrected", "exact", "deviation", "note", "side", "a_m", "r_m", "k", "g_m_s2",
+           "validity_limit")
 
 _VERDICT = exact_stability.VERDICT_LABELS
 
@@ -35,7 +36,7 @@ def stability_report(setup: Setup, theta_deg: float, alpha_deg: float) -> Table:
     every paper result (``applies`` says whether its premise holds here;
     ``validity`` is the parameter that decides it: a/r' for small wheels,
     applying up to SMALL_WHEEL_VALIDITY, and |r'|/a near the poles, applying
-    up to 1; ``deviation`` is (paper - exact)/exact, or 1/0 for a verdict
+    up to 1, the limit given as ``validity_limit``; ``deviation`` is (paper - exact)/exact, or 1/0 for a verdict
     that differs/agrees)."""
     theta, alpha = math.radians(theta_deg), math.radians(params.reduce_angle(alpha_deg))
     orbit = evaluate(make_requests(1, body="wheel", side=setup.side, theta=theta_deg, alpha=alpha_deg, a=setup.a,
@@ -67,6 +68,9 @@ def stability_report(setup: Setup, theta_deg: float, alpha_deg: float) -> Table:
         rows.append({"source": f"paper: {name.rsplit('_', 1)[0].replace('_', ' ')}", "equation": res["equation"],
                      "quantity": res["quantity"], "units": res["units"], "applies": bool(res["applies"]),
                      "validity": None if math.isnan(validity) else validity,
+                     # the premise holds for validity below this (a/r' for small wheels, r'/a near the poles)
+                     "validity_limit": None if math.isnan(validity) else (
+                         exact_stability.SMALL_WHEEL_VALIDITY if "small_wheel" in name else 1.0),
                      "paper": _value(res["paper"], verdict), "corrected": _value(res["corrected"], verdict),
                      "exact": _value(res["exact"], verdict),
                      "deviation": _value(res["deviation"], False), "note": res["note"]})

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.model import Setup, Table
+from deathsphere.table.cells import decimals
 
 #: (theta deg, alpha deg, mu, v_cm m/s, "No. of g's") as printed.
 PRINTED = (
@@ -29,11 +30,6 @@ PRINTED = (
     ("90", "45", "2.04", "3.7", "5"),
     ("135", "60", "0.56", "2.3", "3"),
 )
-
-
-def decimals(printed: str) -> int:
-    """Number of decimals a printed value carries ("0.96" -> 2, "48" -> 0)."""
-    return len(printed.split(".")[1]) if "." in printed else 0
 
 
 def agrees(computed, printed: str) -> np.ndarray:

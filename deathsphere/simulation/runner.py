@@ -378,6 +378,14 @@ class Simulation:
         order = np.lexsort((rows, t))
         return {"input_row": rows[order], "t_s": t[order], "state": state[:, order]}
 
+    def view_frames(self) -> dict[int, dict]:
+        """What the 3-D view draws of each body at every output row
+        (:func:`deathsphere.simulation.frames.body_frames`), for a run made
+        with ``record_states=True``, once :meth:`chunks` has been exhausted."""
+        from deathsphere.simulation.frames import body_frames
+
+        return body_frames(self.summary(), self.sample_states())
+
     def run(self, progress: Callable[[int, int], None] | None = None) -> tuple[Table, Table]:
         """Run to the end; returns ``(series, summary)``."""
         series = concat_tables(list(self.chunks(progress)))

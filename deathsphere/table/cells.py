@@ -92,3 +92,8 @@ def json_records(table) -> list[str]:
     """One JSON object per row (NaN and infinities as null)."""
     cols = [(n, table[n].tolist()) for n in table.names]
     return [json.dumps({n: _json_value(v[i]) for n, v in cols}) for i in range(len(table))]
+
+
+def decimals(printed: str) -> int:
+    """Number of decimals a printed value carries ("0.96" -> 2, "48" -> 0)."""
+    return len(printed.split(".")[1]) if "." in printed else 0

@@ -1,8 +1,6 @@
 """3-D view of a simulated orbit (beyond the paper; docs/simulation.md,
 "3-D view"): an interactive HTML page, or a GIF / MP4 loop.
 
-* :mod:`deathsphere.viewer.frames` -- state (c, e1, w) to frame geometry,
-  pure numpy;
 * :mod:`deathsphere.viewer.scene` -- the bodies of a run at a bounded
   number of frames, with the panel's numbers from the time series;
 * :mod:`deathsphere.viewer.html` -- one self-contained HTML file (no
@@ -75,17 +73,18 @@ def check_view_output(output) -> str:
     return fmt
 
 
-def write_view(output, series: Table, summary: Table, states: dict, *, title: str = "") -> int:
+def write_view(output, series: Table, summary: Table, frames: dict, *, title: str = "") -> int:
     """Write the 3-D view of a run to ``output`` (.html, .gif or .mp4, by
     its extension); returns the file's size in bytes.
 
-    ``series``, ``summary`` and ``states`` are the run's time series, its
-    summary and :meth:`deathsphere.simulation.Simulation.sample_states`.
+    ``series``, ``summary`` and ``frames`` are the run's time series, its
+    summary and :meth:`deathsphere.simulation.Simulation.view_frames` (the
+    geometry to draw, computed by the simulation: the viewer only draws).
     """
     from deathsphere.viewer.scene import build_scenes
 
     fmt = check_view_output(output)
-    scenes = build_scenes(series, summary, states)
+    scenes = build_scenes(series, summary, frames)
     if fmt == "html":
         from deathsphere.viewer.html import write_html
 

@@ -11,8 +11,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.physics import dynamics as dyn
-from deathsphere.viewer.frames import frame_geometry
 
 __all__ = ["BodyScene", "build_scenes", "frame_indices", "MAX_FRAMES", "PANEL_COLUMNS"]
 
@@ -31,7 +29,7 @@ PANEL_COLUMNS = {
 class BodyScene:
     """One body of the run: its description, and arrays at its F frames
     (``t`` (F,), vectors (3, F), panel scalars (F,)).  ``geometry`` holds
-    the keys of :func:`deathsphere.viewer.frames.frame_geometry`;
+    the keys of :func:`deathsphere.simulation.frames.frame_geometry`;
     ``panel`` the keys of :data:`PANEL_COLUMNS` and ``g_load``."""
 
     input_row: int
@@ -71,7 +69,7 @@ def _float(x):
     return x if math.isfinite(x) else None
 
 
-def build_scenes(series: Table, summary: Table, states: dict, *, max_frames: int = MAX_FRAMES) -> list[BodyScene]:
+def build_scenes(series: Table, summary: Table, frames: dict, *, max_frames: int = MAX_FRAMES) -> list[BodyScene]:
     """One :class:`BodyScene` per summary row (a body that could not start,
     status no_fit / no_orbit, has zero frames).
 
@@ -79,34 +77,33 @@ def build_scenes(series: Table, summary: Table, states: dict, *, max_frames: int
     ----------
     series, summary : the run's Tables (:data:`deathsphere.simulation.SERIES_COLUMNS`,
         :data:`deathsphere.simulation.SUMMARY_COLUMNS`)
-    states : :meth:`deathsphere.simulation.Simulation.sample_states`, row for
-        row with ``series``
+    frames : :meth:`deathsphere.simulation.Simulation.view_frames`: per
+        ``input_row``, the sample times ``t`` and the geometry at them, row for
+        row with that body's rows of ``series``
     max_frames : frames kept per body (:func:`frame_indices`); the spin is
         integrated over every sample before the frames are picked
     """
     rows = np.asarray(series["input_row"])
-    if not np.array_equal(np.asarray(states["input_row"]), rows) or \
-            not np.array_equal(np.asarray(states["t_s"]), np.asarray(series["t_s"])):
-        raise ValueError("states do not match the time series row for row")
     scenes = []
     for i, row in enumerate(np.asarray(summary["input_row"])):
         sel = np.flatnonzero(rows == row)
-        params = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
-                                summary["side"][i] == "outside", summary["body"][i] == "sphere")
         t = np.asarray(series["t_s"])[sel]
+        geo = frames.get(int(row))
+        if sel.size and (geo is None or not np.array_equal(geo["t"], t)):
+            raise ValueError("frames do not match the time series row for row")
         status = str(summary["status"][i])
         ev = _float(summary["event_time_s"][i]) if status in ("contact_lost", "slips", "failed") else None
         scene = BodyScene(
             input_row=int(row), body=str(summary["body"][i]), side=str(summary["side"][i]),
-            orbit=str(summary["orbit"][i]), a=params.a, r=params.r, g=params.g,
+            orbit=str(summary["orbit"][i]), a=float(summary["a_m"][i]), r=float(summary["r_m"][i]),
+            g=float(summary["g_m_s2"][i]),
             theta0_deg=float(summary["theta_deg"][i]), alpha0_deg=float(summary["alpha_deg"][i]),
             period=float(summary["period_s"][i]), status=status, reason=str(summary["reason"][i]),
             event_time=ev, t=np.zeros(0))
         if sel.size:
-            geo = frame_geometry(t, np.asarray(states["state"])[:, sel], params)
             keep = frame_indices(sel.size, max_frames)
             scene.t = t[keep]
-            scene.geometry = {k: v[..., keep] for k, v in geo.items()}
+            scene.geometry = {k: v[..., keep] for k, v in geo.items() if k != "t"}
             scene.panel = {k: np.asarray(series[col])[sel][keep] for k, col in PANEL_COLUMNS.items()}
             scene.panel["g_load"] = geo["g_load"][keep]
         scenes.append(scene)

@@ -2,11 +2,12 @@
 
 import numpy as np
 import pytest
+from viewer_cases import run_case
 
+from deathsphere.simulation.frames import body_frames
 from deathsphere.viewer import write_view
 from deathsphere.viewer.animation import SIZE_PX, frame_times, number
 from deathsphere.viewer.scene import build_scenes
-from viewer_cases import run_case
 
 pytest.importorskip("matplotlib")
 
@@ -14,11 +15,11 @@ pytest.importorskip("matplotlib")
 def test_gif_has_the_frames_and_size(tmp_path):
     Image = pytest.importorskip("PIL.Image")
     series, summary, states, _ = run_case("unstable", periods=1)     # 1.56 s, ends in contact lost
-    scenes = build_scenes(series, summary, states)
+    scenes = build_scenes(series, summary, body_frames(summary, states))
     times = frame_times(scenes)
     assert times[-1] == pytest.approx(series["t_s"][-1]) and times.size == 24   # 15 per second, real time
     out = tmp_path / "orbit.gif"
-    write_view(out, series, summary, states)
+    write_view(out, series, summary, body_frames(summary, states))
     with Image.open(out) as im:
         assert im.format == "GIF" and im.size == SIZE_PX
         assert im.n_frames == times.size
@@ -26,7 +27,7 @@ def test_gif_has_the_frames_and_size(tmp_path):
 
 def test_long_runs_loop_over_their_last_seconds():
     series, summary, states, _ = run_case("wheel_inside", periods=8)           # 14.7 s
-    times = frame_times(build_scenes(series, summary, states), fps=15, max_seconds=10.0)
+    times = frame_times(build_scenes(series, summary, body_frames(summary, states)), fps=15, max_seconds=10.0)
     assert times.size == 151 and times[-1] == pytest.approx(series["t_s"][-1])
     assert np.allclose(np.diff(times), 1 / 15)
 
@@ -42,6 +43,6 @@ def test_mp4_where_ffmpeg_is(tmp_path):
         pytest.skip("no ffmpeg on PATH: .mp4 is refused (tested in test_view_preflight.py)")
     series, summary, states, _ = run_case("wheel_inside", periods=0.15)
     out = tmp_path / "orbit.mp4"
-    write_view(out, series, summary, states)
+    write_view(out, series, summary, body_frames(summary, states))
     head = out.read_bytes()[:64]
     assert b"ftyp" in head

@@ -7,10 +7,11 @@ budget and dumps the DOM.  Skipped only where no browser binary is on PATH.
 """
 
 import pytest
-
-from deathsphere.viewer import write_view
 from view_page import body_attributes, browser_binary, dump_dom
 from viewer_cases import run_case
+
+from deathsphere.simulation.frames import body_frames
+from deathsphere.viewer import write_view
 
 
 @pytest.fixture(scope="module")
@@ -25,7 +26,7 @@ def browser():
 def test_page_loads_without_errors_and_animates(tmp_path, browser, name):
     series, summary, states, _ = run_case(name, periods=1)
     out = tmp_path / "orbit.html"
-    write_view(out, series, summary, states)
+    write_view(out, series, summary, body_frames(summary, states))
     attrs = body_attributes(dump_dom(browser, out))
     assert attrs["errors"] == "0", dump_dom(browser, out)[-3000:]
     assert attrs["ready"] == "1"
@@ -36,7 +37,7 @@ def test_a_broken_page_is_caught(tmp_path, browser):
     """The harness itself: a page whose script fails reports it."""
     series, summary, states, _ = run_case("wheel_inside", periods=0.2)
     out = tmp_path / "broken.html"
-    write_view(out, series, summary, states)
+    write_view(out, series, summary, body_frames(summary, states))
     page = out.read_text(encoding="utf-8")
     out.write_text(page.replace("var DATA = {", "var DATA = {bodies: null, x: {", 1), encoding="utf-8")
     attrs = body_attributes(dump_dom(browser, out, budget_ms=500))

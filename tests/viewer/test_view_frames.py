@@ -3,13 +3,13 @@ physics: every drawn quantity comes from the simulated state."""
 
 import numpy as np
 import pytest
+from viewer_cases import CASES, central_difference, evenly_spaced, norm, run_case
 
 from deathsphere import simulation as sim
 from deathsphere.model import Setup
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import wheel
-from deathsphere.viewer.frames import frame_geometry
-from viewer_cases import CASES, central_difference, evenly_spaced, norm, run_case
+from deathsphere.simulation.frames import frame_geometry
 
 
 @pytest.mark.parametrize("name", sorted(CASES))

@@ -5,19 +5,19 @@ import re
 
 import numpy as np
 import pytest
+from view_page import page_data
+from viewer_cases import run_case
 
+from deathsphere.simulation.frames import body_frames, frame_geometry
 from deathsphere.viewer import write_view
 from deathsphere.viewer.html import decode_array
 from deathsphere.viewer.scene import build_scenes, frame_indices
-from deathsphere.viewer.frames import frame_geometry
-from view_page import page_data
-from viewer_cases import run_case
 
 
 def _page(tmp_path, name, **run):
     series, summary, states, params = run_case(name, **run)
     out = tmp_path / f"{name}.html"
-    size = write_view(out, series, summary, states)
+    size = write_view(out, series, summary, body_frames(summary, states))
     text = out.read_text(encoding="utf-8")
     assert size == len(text.encode("utf-8"))
     return text, series, summary, states, params
@@ -75,7 +75,7 @@ def test_long_runs_are_downsampled_keeping_the_end():
     assert idx.size <= 6000 + 1 and idx[0] == 0 and idx[-1] == 100_000
     assert np.all(np.diff(idx) > 0)
     series, summary, states, _ = run_case("unstable", points_per_period=2000)
-    (scene,) = build_scenes(series, summary, states, max_frames=50)
+    (scene,) = build_scenes(series, summary, body_frames(summary, states), max_frames=50)
     assert scene.n_frames <= 51 and scene.t[-1] == series["t_s"][-1] == scene.event_time
 
 

@@ -6,8 +6,8 @@ import sys
 
 import pytest
 
-from deathsphere import simulation
 import deathsphere.viewer as viewer
+from deathsphere import simulation
 
 ARGS = ("simulate", "--theta", "60", "--alpha", "10", "--periods", "0.2")
 

@@ -1,5 +1,9 @@
 """Frame geometry of the 3-D view: what to draw, from the simulated state.
 
+It lives with the simulation, not the viewer, because it is physics (the
+contact point, the contact force, the wheel's spin rate): the viewer only
+draws what this hands it.
+
 Beyond the paper: the states come from :mod:`deathsphere.simulation`
 (exact equations of motion); how they are drawn is described in
 ``docs/simulation.md``, section "3-D view".  Pure numpy, vectorised over
@@ -12,7 +16,7 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 
-__all__ = ["frame_geometry", "spin_rate"]
+__all__ = ["frame_geometry", "spin_rate", "body_frames"]
 
 
 def _unit(v):
@@ -118,3 +122,26 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
         "force": force, "normal_force": force - friction, "friction_force": friction,
         "acceleration": accel, "g_load": np.sqrt(_dot(accel, accel)) / params.g,
     }
+
+
+def body_frames(summary, states: dict) -> dict[int, dict]:
+    """:func:`frame_geometry` of every body of a run, at all its samples.
+
+    ``summary`` is the run's summary table (one row per body: ``input_row``,
+    ``body``, ``side``, ``a_m``, ``r_m``, ``k``, ``g_m_s2``) and ``states``
+    :meth:`deathsphere.simulation.Simulation.sample_states`.  Returns
+    ``{input_row: {"t": (N,) sample times, **geometry}}`` for each body
+    with samples (a body that could not start has none and no entry).
+    """
+    rows = np.asarray(states["input_row"])
+    t_all = np.asarray(states["t_s"], dtype=np.float64)
+    state = np.asarray(states["state"], dtype=np.float64)
+    out = {}
+    for i, row in enumerate(np.asarray(summary["input_row"]).tolist()):
+        sel = np.flatnonzero(rows == row)
+        if not sel.size:
+            continue
+        params = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
+                                summary["side"][i] == "outside", summary["body"][i] == "sphere")
+        out[int(row)] = {"t": t_all[sel], **frame_geometry(t_all[sel], state[:, sel], params)}
+    return out
