@@ -44,6 +44,8 @@ _HOME = {
     "Table": "model",
     "horizontal_orbit": "model",
     "ParameterError": "params",
+    "docs_topics": "topics",
+    "doc_text": "topics",
 }
 
 #: Submodules reachable as attributes, as when this package imported them.
