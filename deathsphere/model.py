@@ -92,6 +92,8 @@ class Table:
     :func:`deathsphere.orbit`, else ``(len(table),)``); :meth:`grid` gives a
     column in that shape.
 
+    Examples
+    --------
     >>> t = Table({"x": np.array([1.0, 2.0, np.nan, 4.0]), "s": np.array(list("abcd"), dtype=object)},
     ...           shape=(2, 2))
     >>> t[2]
@@ -659,6 +661,8 @@ def horizontal_orbit(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, om
     request gives one row.  Bad values raise
     :class:`~deathsphere.params.ParameterError` (a ValueError).
 
+    Examples
+    --------
     >>> t = horizontal_orbit(Setup(), 60, 10)
     >>> round(float(t["v_cm_m_s"][0]), 2), str(t["status"][0])
     (7.88, 'ok')
