@@ -138,7 +138,7 @@ def fast_horizontal_orbit(theta, alpha, a, r, k, g, outside=False, mu=np.inf, ou
     """wheel.horizontal_orbit for 1-d theta, alpha and scalar a, r, k, g,
     outside, mu, with the same outputs.  Written before wheel.py was
     optimised, as suggestions for it; wheel.py now does 1-3 and chunks
-    (4 without the out= buffers, see docs/performance.md):
+    (4 without the out= buffers, see benchmarks/README.md):
 
     1. sin/cos of theta and alpha computed once (the core evaluated ~15
        transcendental functions per orbit: sin(theta) x3, cos(alpha) x4, ...);

@@ -36,7 +36,7 @@ from source).
 (stability.vertical_floquet, median of --repeat) against the method as
 first written (tests/physics/test_floquet.py: RK4 on all nine directions,
 one run), with the largest multiplier deviation between the two.
-docs/performance.md quotes this script.
+benchmarks/README.md records its runs; docs/performance.md quotes them.
 """
 
 from __future__ import annotations

@@ -43,6 +43,8 @@ _HOME = {
     "Setup": "model",
     "Table": "model",
     "ParameterError": "params",
+    "docs_topics": "topics",
+    "doc_text": "topics",
 }
 
 #: Submodules reachable as attributes, as when this package imported them.

@@ -123,6 +123,8 @@ class Setup:
         the results layer uses this (it sits below the API).  Raises
         :class:`~deathsphere.params.ParameterError` when no row can be computed.
 
+        Examples
+        --------
         >>> t = Setup().orbit(60, 10)
         >>> round(float(t["v_cm_m_s"][0]), 2), str(t["status"][0])
         (7.88, 'ok')

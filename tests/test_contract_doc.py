@@ -7,7 +7,7 @@ from pathlib import Path
 
 from deathsphere.params import PARAMS
 
-CONTRACT = Path(__file__).resolve().parents[1] / "docs" / "contract.md"
+CONTRACT = Path(__file__).resolve().parents[1] / "deathsphere" / "docs" / "contract.md"
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[+-]?\d+)?")
 
 

@@ -57,6 +57,7 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     spins, eq. (13); the rate Omega and the forces, eqs. (29)-(36) (outside
     the contact condition is eq. 83); a rolling sphere, eqs. (55)-(59).
     Stability (``stability=True``) is beyond the paper: docs/stability.md.
+    All numeric arguments broadcast against each other like numpy arrays.
 
     Parameters
     ----------
@@ -89,8 +90,6 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
         Wheel: centre speed v_cm [m/s]; every tilt alpha giving it, one row each.
     stability : bool
         Fill the stability columns (exact linearisation); False is faster.
-
-    All numeric arguments broadcast against each other like numpy arrays.
 
     Returns
     -------

@@ -61,11 +61,11 @@ def particle_orbit(theta, r, g, outside=False, mu=np.inf):
     ``status``/``reason``:
 
     - inside: ok below the equator; no_orbit with PARTICLE_ABOVE_EQUATOR at
-      and above it (Omega^2 < 0, or undefined on the equator);
+        and above it (Omega^2 < 0, or undefined on the equator);
     - outside: no_orbit with PARTICLE_ABOVE_EQUATOR at and above the equator,
-      no_contact with PARTICLE_OUTSIDE_BELOW_EQUATOR below it;
+        no_contact with PARTICLE_OUTSIDE_BELOW_EQUATOR below it;
     - no_orbit with POLE at theta = 0 or 180 deg (the particle sits on the
-      vertical axis: rest, not an orbit).
+        vertical axis: rest, not an orbit).
     """
     theta, r, g, mu = (np.asarray(x, dtype=float) for x in (theta, r, g, mu))
     outside = np.asarray(outside, dtype=bool)

@@ -592,10 +592,14 @@ def solve_alpha(theta, a, r, k, g=STANDARD_GRAVITY, speed=None, omega=None, outs
 
     Parameters
     ----------
-    theta : array_like, [rad];  speed / omega : array_like (broadcast with
-    theta), > 0;  alpha_range : (lo, hi) [rad], hi - lo <= 2 pi, default the
-    fit interval of eq. (0) (eq. (81) outside), which keeps every root that
-    fits; pass e.g. (-pi, pi) to see the others too (status ``no_fit``).
+    theta : array_like
+        Polar angle [rad].
+    speed, omega : array_like
+        Broadcast with theta, > 0.
+    alpha_range : (lo, hi), optional
+        [rad], hi - lo <= 2 pi; default the fit interval of eq. (0) (eq. (81)
+        outside), which keeps every root that fits; pass e.g. (-pi, pi) to
+        see the others too (status ``no_fit``).
 
     Returns
     -------

@@ -173,7 +173,7 @@ def contact_force(phi, theta, phidot_top, a, r, k, g, outside=False):
     with phidot^2 from eq. (27).  The paper prints ``+2k/(2k+1) m g sin(phi)``
     for the 2-component: the sign is wrong (torque balance a F_2 = -I11
     d(omega_1)/dt, and friction must oppose the speed-up on the way down;
-    see docs/errata and tests/physics/test_vertical.py).  Inside,
+    see docs/errata.md and tests/physics/test_vertical.py).  Inside,
     r-hat' = axis 3 (alpha = 0); outside r-hat' = -axis 3 (alpha = pi).
 
     Returns a dict of arrays (per unit mass, m/s^2):

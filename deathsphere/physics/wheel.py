@@ -8,7 +8,7 @@ The private helpers (``_omega_squared`` ...) are the same formulas taking
 sin and cos already computed: :func:`horizontal_orbit` evaluates sin(theta),
 cos(theta), sin(alpha), cos(alpha) once per orbit, plus sin(theta - alpha)
 for the fit; these five transcendental functions are half of its cost
-(docs/performance.md).
+(measured in benchmarks/README.md).
 """
 
 import math
@@ -21,7 +21,7 @@ from deathsphere.physics.status import Reason, Status, first_failure
 #: horizontal_orbit evaluates larger inputs in pieces of this many orbits:
 #: small enough for its temporaries to be recycled through the CPU caches,
 #: large enough that its ~100 numpy calls per piece cost little per orbit
-#: (docs/performance.md).  Also the chunk size of ``deathsphere sweep``.
+#: (benchmarks/README.md).  Also the chunk size of ``deathsphere sweep``.
 CHUNK = 1 << 14
 
 

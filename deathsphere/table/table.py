@@ -30,6 +30,8 @@ class Table:
     :func:`deathsphere.orbit`, else ``(len(table),)``); :meth:`grid` gives a
     column in that shape.
 
+    Examples
+    --------
     >>> t = Table({"x": np.array([1.0, 2.0, np.nan, 4.0]), "s": np.array(list("abcd"), dtype=object)},
     ...           shape=(2, 2))
     >>> t[2]
