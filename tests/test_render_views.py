@@ -139,6 +139,56 @@ def test_one_orbit_leaves_out_only_the_source(width):
     assert left_out(text) == ([] if width >= 80 else ["source"])
 
 
+def _row_value(text: str, label: str, unit: str) -> float:
+    """The value of the one table line that starts with ``label`` and has ``unit`` after the value."""
+    hits = [m for m in (re.match(rf"\s*{re.escape(label)}\s+(\S+)\s+{re.escape(unit)}(\s|$)", line)
+                        for line in text.splitlines()) if m]
+    assert len(hits) == 1, (label, unit, text)
+    return float(hits[0].group(1))
+
+
+@pytest.mark.parametrize("width", (60, 80))
+@pytest.mark.parametrize("body, request_", [
+    ("wheel", dict(theta=60.0, alpha=10.0)),
+    ("sphere", dict(theta=60.0, omega=-25.0)),
+])
+def test_one_orbit_shows_km_h_and_rpm_beside_si(width, body, request_):
+    table = evaluate(make_requests(1, body=body, **request_))
+    assert table["status"][0] == "ok"
+    text = show(one_orbit_table(table), width)
+    assert_fits(text, width)
+    speed_label = "v_cm = |r'|Ω centre speed"
+    spin_label = "ω₁ = r'Ω/a wheel spin" if body == "wheel" else "rolling rate v_cm/a"
+    m_s, rad_s = _row_value(text, speed_label, "m/s"), _row_value(text, spin_label, "rad/s")
+    km_h, rpm = _row_value(text, "the same in km/h", "km/h"), _row_value(text, "the same in rpm", "rpm")
+    # by hand from the figures shown (5 significant digits each) ...
+    assert km_h == pytest.approx(m_s * 3.6, rel=2e-4)
+    assert rpm == pytest.approx(rad_s * 60.0 / (2.0 * np.pi), rel=2e-4)
+    # ... and from the unrounded result, to the digits shown
+    assert format_number(table["v_cm_m_s"][0].item() * 3.6, 5) == f"{km_h:.5g}"
+    assert format_number(table["spin_rad_s"][0].item() * 30.0 / np.pi, 5) == f"{rpm:.5g}"
+    # each right under its SI row
+    lines = [line.strip() for line in text.splitlines()]
+    at = next(i for i, line in enumerate(lines) if line.startswith(speed_label))
+    assert lines[at + 1].startswith("the same in km/h")
+    at = next(i for i, line in enumerate(lines) if line.startswith(spin_label))
+    assert lines[at + 1].startswith("the same in rpm")
+
+
+def test_wheel_at_60_10_in_km_h_and_rpm():
+    """deathsphere orbit --theta 60 --alpha 10: 7.8767 m/s is 28.356 km/h,
+    26.256 rad/s is 250.72 rpm."""
+    text = show(one_orbit_table(horizontal_orbit(Setup(), 60.0, 10.0)), 80)
+    assert left_out(text) == []
+    assert _row_value(text, "the same in km/h", "km/h") == 28.356
+    assert _row_value(text, "the same in rpm", "rpm") == 250.72
+
+
+def test_a_particle_has_km_h_and_no_rpm():
+    text = show(one_orbit_table(evaluate(make_requests(1, body="particle", theta=120.0))), 100)
+    assert "the same in km/h" in text and "rpm" not in text
+
+
 @pytest.mark.parametrize("width", (60, 80))
 @pytest.mark.parametrize("theta, alpha", [(90.0, 45.0), (170.0, 30.0)])
 def test_stability_labels_stay_on_one_line(width, theta, alpha):

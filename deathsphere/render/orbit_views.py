@@ -48,6 +48,17 @@ ORBIT_FIELDS = (
 
 OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
 
+#: Rows repeated in a rider's unit right under the SI row: column ->
+#: (unit, factor, source).  Plain constants: the terminal view never needs
+#: pint (deathsphere/units.py), and 3.6 and 60/2π are exact by definition.
+#: A row of its own rather than a cell beside the SI figure: "m/s (28.4
+#: km/h)" widens the unit column enough that an 80-column terminal would
+#: lose the source column.
+RIDER_UNITS = {
+    "v_cm_m_s": ("km/h", 3.6, "× 3.6"),
+    "spin_rad_s": ("rpm", 60.0 / (2.0 * np.pi), "× 60/2π"),
+}
+
 #: Labels that differ by body: (body, column) -> (label, source); None hides the row.
 BODY_LABELS = {
     ("sphere", "r_prime_m"): ("r' centre to axis, (r ∓ a) sin θ", "eq. 42"),
@@ -132,6 +143,9 @@ def one_orbit_table(table: Table, row: int = 0) -> FitTable:
         override = BODY_LABELS.get((get["body"], col), (label, source))
         if col in get and override is not None:
             rows.append((override[0], format_number(get[col], 5), unit, override[1]))
+            if col in RIDER_UNITS:
+                rider, scale, how = RIDER_UNITS[col]
+                rows.append((f"  the same in {rider}", format_number(float(get[col]) * scale, 5), rider, how))
     mu = get.get("mu_available")
     rows.append(("μ available", "∞" if is_undefined(mu) else format_number(mu), "", "--mu"))
     notes = []

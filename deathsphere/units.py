@@ -1,0 +1,249 @@
+"""Units a rider writes: a suffix on a number or a range (``40km/h``,
+``8ft``, ``30rpm``, ``0.2rad``, ``30:70:5km/h``) converted to the unit the
+API uses (docs/units.md).
+
+A plain number never imports pint: the registry is built the first time a
+suffix appears (importing pint and building it costs 0.3-0.5 s) and kept.  The API's
+own unit spelled out (``60deg``, ``3m``, ``7m/s``) needs no pint either.
+
+The factors are pint's definitions evaluated in exact rational arithmetic
+and rounded to float64 once, so a foot is exactly ``0.3048`` (pint's float
+registry gets ``0.30479999999999996`` by chaining yard -> inch -> foot).
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+
+#: The physical kinds an input can have, and the unit the API takes each in
+#: (angles are degrees in the API, as on the command line).
+KINDS: dict[str, str] = {
+    "length": "m",
+    "speed": "m/s",
+    "rate": "rad/s",
+    "angle": "deg",
+    "acceleration": "m/s^2",
+    "none": "",
+}
+
+#: The spellings named in messages and docs; pint accepts more (``yd``,
+#: ``knot``, ``turn/min`` ...), as long as the dimension is right.
+COMMON: dict[str, tuple[str, ...]] = {
+    "length": ("m", "cm", "mm", "ft", "in"),
+    "speed": ("m/s", "km/h", "mph"),
+    "rate": ("rad/s", "rpm", "deg/s"),
+    "angle": ("deg", "rad"),
+    "acceleration": ("m/s^2", "ft/s^2", "g"),
+    "none": (),
+}
+
+_NOUN = {"length": "a length", "speed": "a speed", "rate": "an angular rate", "angle": "an angle",
+         "acceleration": "an acceleration", "none": "a plain number"}
+
+#: pint's spelling of each API unit, for the conversion and the dimension check.
+_PINT_API = {"length": "meter", "speed": "meter / second", "rate": "radian / second", "angle": "degree",
+             "acceleration": "meter / second ** 2"}
+
+#: pint has no angle dimension (a radian is 1), so it would take ``2Hz`` or
+#: ``3%`` for an angular rate or an angle; angles are recognised by name.
+_ANGLE_UNITS = frozenset({"radian", "degree", "turn", "revolution", "milliradian", "arcminute",
+                          "arcsecond", "gradian"})
+_NAMED_RATES = frozenset({"revolutions_per_minute", "revolutions_per_second"})
+
+#: A rider's spellings pint reads otherwise: ``g`` is a gram to pint.
+_ALIASES = {("acceleration", "g"): "standard_gravity"}
+
+#: Minus signs and dashes that text copied from a PDF or a word processor
+#: uses for a minus; float() refuses all of them.
+_MINUSES = dict.fromkeys(map(ord, "\u2212\u2010\u2011\u2012\u2013\u2014\u2015\ufe63\uff0d"), "-")
+
+_D = r"\d(?:_?\d)*"
+# inf/nan only when no letter follows, so 'info' is not 'inf' in unit 'o'
+_NUM = rf"[+-]?(?:(?:{_D}(?:\.(?:{_D})?)?|\.{_D})(?:[eE][+-]?{_D})?|(?:infinity|inf|nan)(?![^\W\d_]))"
+_SPLIT = re.compile(rf"({_NUM}(?:\s*:\s*{_NUM})*)\s*(.*)", re.IGNORECASE | re.DOTALL)
+
+
+def _error(message: str, param: str | None):
+    # imported here: params imports numpy, and a plain number should cost nothing
+    from deathsphere.params import ParameterError
+    return ParameterError(message, param)
+
+
+def normalize_number_text(text: str) -> str:
+    """``text`` with surrounding whitespace removed and Unicode minus signs
+    and dashes (U+2212, U+2010..U+2015, U+FE63, U+FF0D) as ``-``.
+
+    >>> normalize_number_text(" \u221210 ")
+    '-10'
+    """
+    return str(text).translate(_MINUSES).strip()
+
+
+def _is_plain(text: str) -> bool:
+    try:
+        for part in text.split(":"):
+            float(part)
+    except ValueError:
+        return False
+    return True
+
+
+def split_unit(text: str) -> tuple[str, str | None]:
+    """``(number_text, unit)`` of a number or ``start:stop:step`` range with
+    an optional unit suffix (one for the whole range); ``unit`` is None
+    when there is none, and also when ``text`` does not start with a number
+    (the caller's number parser then says what is wrong).
+
+    >>> split_unit("40km/h"), split_unit("0:2.4:0.2m"), split_unit("8 ft")
+    (('40', 'km/h'), ('0:2.4:0.2', 'm'), ('8', 'ft'))
+    >>> split_unit("1e3m"), split_unit("1e-3"), split_unit("-inf")
+    (('1e3', 'm'), ('1e-3', None), ('-inf', None))
+    """
+    text = normalize_number_text(text)
+    # whatever float() reads stays as it is (1_000, full-width digits, nan)
+    if _is_plain(text):
+        return text, None
+    m = _SPLIT.fullmatch(text)
+    if m is None or not m.group(2):
+        return text, None
+    number, unit = m.group(1), m.group(2).strip()
+    if text[len(number)] in "eE" and (number[-1].isdigit() or number[-1] == "."):
+        raise _error(f"{text!r} is not a number with a unit: an 'e' right after the digits starts an "
+                     f"exponent (1e3); write the exponent's digits, or a space before the unit", None)
+    if ":" in unit:
+        raise _error(f"{text!r}: a range takes one unit, after its last number (e.g. 30:70:5km/h)", None)
+    return number, unit
+
+
+@functools.lru_cache(maxsize=1)
+def registry():
+    """pint's unit registry, built once.  Exact fractions, so each factor is
+    pint's definition rounded to float64 once rather than after a chain of
+    float products."""
+    from fractions import Fraction
+
+    import pint
+
+    return pint.UnitRegistry(non_int_type=Fraction)
+
+
+def _is_kind(unit, kind: str) -> bool:
+    """Whether a parsed pint unit measures ``kind`` (angles by name, see above)."""
+    terms = dict(unit._units)
+    if kind == "angle":
+        return len(terms) == 1 and next(iter(terms.items())) in {(a, 1) for a in _ANGLE_UNITS}
+    if kind == "rate":
+        if len(terms) == 1 and next(iter(terms.items())) in {(r, 1) for r in _NAMED_RATES}:
+            return True
+        angles = [name for name in terms if name in _ANGLE_UNITS]
+        return len(angles) == 1 and terms[angles[0]] == 1 and dict(unit.dimensionality) == {"[time]": -1}
+    return kind != "none" and unit.dimensionality == registry().parse_units(_PINT_API[kind]).dimensionality
+
+
+_BASE_WORDS = {"[mass]": "a mass", "[time]": "a time", "[temperature]": "a temperature"}
+
+
+def _what_it_is(unit) -> str:
+    """What a unit of the wrong kind measures, in words."""
+    for kind in _PINT_API:
+        if _is_kind(unit, kind):
+            return _NOUN[kind]
+    dims = dict(unit.dimensionality)
+    if not dims:
+        return "a plain ratio, not an angle"
+    if dims == {"[time]": -1}:
+        return "a frequency with no angle (write rpm, turn/s or rad/s)"
+    if len(dims) == 1 and next(iter(dims.values())) == 1:
+        return _BASE_WORDS.get(next(iter(dims)), f"a {next(iter(dims)).strip('[]')}")
+    return f"of dimension {unit.dimensionality}"
+
+
+def allowed_text(kind: str) -> str:
+    """The common units of ``kind`` in words, e.g. ``m/s, km/h or mph``."""
+    names = COMMON[kind]
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
+
+
+@functools.lru_cache(maxsize=256)
+def _factor_or_reason(unit: str, kind: str) -> float | str:
+    if unit == KINDS[kind]:
+        return 1.0
+    if kind == "none":
+        return "takes no unit"
+    ureg = registry()
+    try:
+        parsed = ureg.parse_units(_ALIASES.get((kind, unit), unit))
+    except Exception:  # pint's parser raises several types; any of them means it cannot read the text
+        return f"unknown unit {unit!r}"
+    if not _is_kind(parsed, kind):
+        return f"{unit} is {_what_it_is(parsed)}"
+    return float(ureg.Quantity(1, parsed).to(_PINT_API[kind]).magnitude)
+
+
+def _factor(unit: str, kind: str, param: str | None, given: str) -> float:
+    if kind not in KINDS:
+        raise ValueError(f"unknown kind {kind!r}; one of {', '.join(KINDS)}")
+    got = _factor_or_reason(unit.strip(), kind)
+    if isinstance(got, float):
+        return got
+    name = param or kind
+    if kind == "none":
+        raise _error(f"{name} is a plain number and takes no unit (got {given!r})", param)
+    raise _error(f"{name} must be {_NOUN[kind]} in {allowed_text(kind)} (got {given!r}: {got})", param)
+
+
+def factor(unit: str, kind: str, param: str | None = None) -> float:
+    """What a value in ``unit`` is multiplied by to be in the API's unit
+    for ``kind`` (1.0 for the API's unit itself); ParameterError for a
+    unit pint does not know or one of another dimension.  ``param`` names
+    the option in the message (default: the kind).
+
+    >>> factor("km/h", "speed") * 36
+    10.0
+    """
+    return _factor(unit, kind, param, unit)
+
+
+def to_api_unit(value, unit: str | None, kind: str, param: str | None = None):
+    """``value`` (a number or an array) in ``unit`` converted to the API's
+    unit for ``kind``, as float64; ``unit`` None means it is already.
+
+    >>> to_api_unit(8, "ft", "length")
+    2.4384
+    """
+    scale = 1.0 if unit is None else factor(unit, kind, param)
+    if isinstance(value, (int, float)):
+        return float(value) * scale
+    import numpy as np
+
+    return np.asarray(value, dtype=np.float64) * scale
+
+
+def parse_suffix(text: str, kind: str, param: str | None = None) -> tuple[str, float]:
+    """``(number_text, factor)`` of a number or range with an optional unit:
+    the caller parses ``number_text`` as before and multiplies by ``factor``
+    (1.0 without a unit; a range scales linearly, so once for the whole).
+
+    >>> parse_suffix("30:70:5km/h", "speed")
+    ('30:70:5', 0.2777777777777778)
+    >>> parse_suffix("\u221210", "angle")
+    ('-10', 1.0)
+    """
+    try:
+        number, unit = split_unit(text)
+    except ValueError as exc:  # split_unit's ParameterError does not know the option
+        if hasattr(exc, "param") and exc.param is None:
+            exc.param = param
+        raise
+    return number, (1.0 if unit is None else _factor(unit, kind, param, normalize_number_text(text)))
+
+
+def parse_value(text: str, kind: str, param: str | None = None) -> float:
+    """One number with an optional unit, in the API's unit for ``kind``."""
+    number, scale = parse_suffix(text, kind, param)
+    try:
+        value = float(number)
+    except ValueError:
+        raise _error(f"{param or kind} must be a number (got {text!r})", param) from None
+    return value * scale
