@@ -178,7 +178,7 @@ def test_one_orbit_shows_km_h_and_rpm_beside_si(width, body, request_):
 def test_wheel_at_60_10_in_km_h_and_rpm():
     """deathsphere orbit --theta 60 --alpha 10: 7.8767 m/s is 28.356 km/h,
     26.256 rad/s is 250.72 rpm."""
-    text = show(one_orbit_table(horizontal_orbit(Setup(), 60.0, 10.0)), 80)
+    text = show(one_orbit_table(Setup().orbit(60.0, 10.0)), 80)
     assert left_out(text) == []
     assert _row_value(text, "the same in km/h", "km/h") == 28.356
     assert _row_value(text, "the same in rpm", "rpm") == 250.72
