@@ -59,7 +59,8 @@ def _preflight_output(output) -> bool:
 @number_option("points_per_period", "N", "Output rows per period, 2..100000.", None, "100")
 @click.option("--method", type=click.Choice(api.METHODS, case_sensitive=False), default="DOP853",
               show_default=True, help="scipy.integrate.solve_ivp method.")
-@number_option("rtol", "TOL", "Relative tolerance, 2.22e-14 (100 eps, the least solve_ivp honours)..1e-2.", None, "1e-10")
+@number_option("rtol", "TOL", "Relative tolerance, 2.22e-14 (100 eps, the least solve_ivp honours)..1e-2.", None,
+               "1e-10")
 @number_option("atol", "TOL", "Absolute tolerance per scaled component, 1e-16..1.", None, "= rtol")
 @number_option("max_steps", "N", "Step budget: a run estimated to need more (a body spinning far faster than it "
                "orbits, small a/r) is refused before it starts, with the estimate.", None, "1e6")
