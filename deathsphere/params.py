@@ -25,6 +25,10 @@ import numpy as np
 #: Dimensional inputs lie within [TINY, HUGE] in magnitude (see above).
 TINY = 1e-9
 HUGE = 1e9
+#: The least relative tolerance scipy's solve_ivp honours (100 eps, about
+#: 2.2e-14): it silently raises any smaller rtol to this, with a warning,
+#: so a smaller one is refused rather than reported as if it had been used.
+RTOL_MIN = 100 * np.finfo(float).eps
 
 
 class ParameterError(ValueError):
@@ -104,8 +108,9 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("periods", "", "run length in periods", 0.0, 1e6, lo_open=True),
     Param("points_per_period", "", "rows per period", 2, 100_000, integer=True),
     Param("perturb", "deg", "kick", -60.0, 60.0),
-    Param("rtol", "", "relative tolerance", 1e-14, 1e-2),
+    Param("rtol", "", "relative tolerance", RTOL_MIN, 1e-2),
     Param("atol", "", "absolute tolerance", 1e-16, 1.0),
+    Param("max_steps", "", "step budget", 1, 1e15, integer=True),
     Param("jobs", "", "processes", 1, 256, integer=True),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True),
 )}

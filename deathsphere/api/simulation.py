@@ -31,7 +31,7 @@ FRAMES = ("turning", "lab")
 def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
              omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
              periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
-             atol: float | None = None, frame: str = "turning") -> tuple[Table, Table]:
+             atol: float | None = None, frame: str = "turning", max_steps=1_000_000) -> tuple[Table, Table]:
     """Integrate the exact equations of motion from a steady orbit: ``deathsphere simulate``.
 
     Beyond the paper (docs/simulation.md): the Newton-Euler equations of a
@@ -66,6 +66,12 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
     rtol, atol : float
         solve_ivp's tolerances (atol defaults to rtol, per scaled component).
     frame : {"turning", "lab"}
+    max_steps : int
+        The step budget: a run estimated to need more steps (a body that
+        spins much faster than it orbits, i.e. a small a/r) is refused
+        before it starts, with the estimate.  A body spinning more than
+        1e7 radians per radian of orbit is refused whatever the budget
+        (float64 cannot hold both motions; docs/simulation.md, "Cost").
 
     Returns
     -------
@@ -85,14 +91,14 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
     return prepare_simulation(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3,
                               omega=omega, branch=branch, vertical=vertical, v_top=v_top, perturb=perturb,
                               periods=periods, points_per_period=points_per_period, method=method, rtol=rtol,
-                              atol=atol, frame=frame).run()
+                              atol=atol, frame=frame, max_steps=max_steps).run()
 
 
 def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
                        mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
                        perturb=0.0, periods=20.0, points_per_period=100, method: str = "DOP853",
                        rtol: float = 1e-10, atol: float | None = None, frame: str = "turning",
-                       record_states: bool = False):
+                       record_states: bool = False, max_steps=1_000_000):
     """The validated :class:`deathsphere.simulation.Simulation` behind
     :func:`simulate` (same parameters), not yet run: for streaming the time
     series chunk by chunk (``sim.chunks()``, then ``sim.summary()``), as the
@@ -117,6 +123,7 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
     method = METHODS[METHODS_LOWER.index(method)]
     frame = checked_choice("frame", frame, FRAMES)
     rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
+    max_steps = int(checked_scalar("max_steps", max_steps))
     if isinstance(branch, bool) or branch not in (0, 1):
         raise ParameterError(f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
     # which inputs each kind of run takes (the command line's rules, in words
@@ -143,7 +150,8 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb_deg=perturb)
         sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
-                                    rtol=rtol, atol=atol, frame=frame, record_states=record_states)
+                                    rtol=rtol, atol=atol, frame=frame, record_states=record_states,
+                                    max_steps=max_steps)
     except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
         raise ParameterError(str(exc)) from None
     return sim

@@ -18,15 +18,26 @@ from collections.abc import Callable, Iterator
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from deathsphere.table import Table
+from deathsphere.params import RTOL_MIN
 from deathsphere.physics import dynamics as dyn
-from deathsphere.simulation.events import EVENT_STATUSES, EVENT_TOL, ContactEvents, stopped_at_start
-from deathsphere.simulation.series import concat_tables, rows_table, sample_quantities, series_rows
+from deathsphere.simulation.events import (
+    EVENT_STATUSES,
+    EVENT_TOL,
+    ContactEvents,
+    stopped_at_start,
+)
+from deathsphere.simulation.series import (
+    concat_tables,
+    rows_table,
+    sample_quantities,
+    series_rows,
+)
 from deathsphere.simulation.starts import Starts
 from deathsphere.simulation.status import RunStatus, failed_reason
 from deathsphere.simulation.summary import Ledger
+from deathsphere.table import Table
 
-__all__ = ["METHODS", "FRAMES", "Simulation", "simulate"]
+__all__ = ["METHODS", "FRAMES", "DEFAULT_MAX_STEPS", "SPIN_RATIO_MAX", "Simulation", "simulate"]
 
 #: solve_ivp methods accepted.  The explicit Runge-Kutta methods are the
 #: natural choice (the flow is not stiff); Radau/BDF get a block-diagonal
@@ -49,6 +60,26 @@ _MIN_INTERNAL_PER_PERIOD = 16
 _MAX_STEP_RATES = 2.0
 #: absolute tolerance on a sphere's axis-1 marker rows (no error control)
 _MARKER_ATOL = 1e3
+#: the step budget of a run unless told otherwise (``max_steps``): about a
+#: minute or two for one body.  The steps are at least the run's length
+#: times S / 2 (the cap above), so a body spinning far faster than it orbits
+#: (a/r small) needs millions of steps per period; such a run is refused
+#: before it starts, with its estimate (docs/simulation.md, "Cost").
+DEFAULT_MAX_STEPS = 1_000_000
+#: the largest spin ratio S T / (2 pi) (S as above, T the period) that is
+#: integrated at all.  The state holds the fast spin and the slow orbital
+#: motion in the same Cartesian components, so round-off in the spin
+#: (eps S) reaches the slow motion at a relative eps times this ratio: at
+#: 1e7 that is ~2e-9, beyond it the orbit drifts visibly from round-off
+#: alone and at a/r ~ 1e-18 the start state itself is lost.  Not a budget:
+#: max_steps does not lift it.
+SPIN_RATIO_MAX = 1e7
+#: the most steps one solve_ivp call is expected to take (from the cap
+#: 2 / S): longer periods are split into pieces, because solve_ivp keeps
+#: every step of a call (its dense output and states) until it returns, so
+#: memory would otherwise grow with the step count; the pieces also pace
+#: the progress callback.
+_STEPS_PER_CALL = 20_000
 
 
 def _jac_sparsity(nA):
@@ -96,6 +127,10 @@ class Simulation:
     record_states : bool   also keep the full state (c, e1, w) at every
         output row, for :meth:`sample_states` (off by default: the time
         series and summary are the same either way)
+    max_steps : int >= 1   the step budget (default :data:`DEFAULT_MAX_STEPS`):
+        a run whose estimate :attr:`estimated_steps` exceeds it is refused
+        (ValueError) before anything is integrated.  Bodies whose spin
+        ratio exceeds :data:`SPIN_RATIO_MAX` are refused whatever the budget.
 
     Iterate with :meth:`chunks` (streaming), then :meth:`summary`; or call
     :meth:`run`.
@@ -104,7 +139,7 @@ class Simulation:
     def __init__(self, starts: Starts, *, periods: float = 20.0, points_per_period: int = 100,
                  method: str = "DOP853", rtol: float = 1e-10, atol: float | None = None,
                  frame: str = "turning", mu=None, project_each_period: bool = False,
-                 record_states: bool = False):
+                 record_states: bool = False, max_steps: int = DEFAULT_MAX_STEPS):
         if not (isinstance(periods, (int, float, np.integer, np.floating)) and math.isfinite(periods)
                 and periods > 0):
             raise ValueError(f"periods must be a finite number > 0 (got {periods!r})")
@@ -113,8 +148,10 @@ class Simulation:
             raise ValueError(f"points_per_period must be an integer >= 1 (got {points_per_period!r})")
         if method not in METHODS:
             raise ValueError(f"method must be one of {' | '.join(METHODS)} (got {method!r})")
-        if not (math.isfinite(rtol) and 0 < rtol < 1):
-            raise ValueError(f"rtol must be within (0, 1) (got {rtol!r})")
+        if not (math.isfinite(rtol) and RTOL_MIN <= rtol < 1):
+            # solve_ivp would raise a smaller rtol to 100 eps behind the caller's back
+            raise ValueError(f"rtol must be within {RTOL_MIN:.3g} (100 eps, the least solve_ivp honours)..1 "
+                             f"(got {rtol!r})")
         atol = rtol if atol is None else atol
         if not (math.isfinite(atol) and atol > 0):
             raise ValueError(f"atol must be > 0 (got {atol!r})")
@@ -122,6 +159,8 @@ class Simulation:
             raise ValueError(f"frame must be one of {' | '.join(FRAMES)} (got {frame!r})")
         if len(starts) == 0:
             raise ValueError("no bodies to simulate")
+        if isinstance(max_steps, bool) or int(max_steps) != max_steps or max_steps < 1:
+            raise ValueError(f"max_steps must be an integer >= 1 (got {max_steps!r})")
         mu_arr = starts.mu if mu is None else np.broadcast_to(np.asarray(mu, dtype=float), (len(starts),))
         if np.any(np.isnan(mu_arr)) or np.any(mu_arr < 0):
             raise ValueError("mu must be >= 0 (inf: no limit)")
@@ -153,12 +192,67 @@ class Simulation:
         self._summary = None
         self.record_states = bool(record_states)
         self._state_parts = []
+        self.max_steps = int(max_steps)
+        # the same rate scale S as the step cap of _solve, per body at t = 0
+        w0 = starts.state[dyn.W]
+        with np.errstate(invalid="ignore"):
+            scale = np.sqrt(np.sum(w0 * w0, axis=0) + starts.rate ** 2 + starts.params.g / starts.params.a)
+        self._rate_scale = np.where(ok, scale, 0.0)
+        #: fast radians per radian of orbit, S T / (2 pi), per body (0 if not integrated)
+        self.spin_ratio = np.where(ok, self._rate_scale * np.where(ok, starts.period, 0.0) / (2 * np.pi), 0.0)
+        s_max = float(np.max(self._rate_scale)) if ok.any() else 0.0
+        #: least number of steps the run takes: its length over the step cap 2 / S
+        #: (error control may ask for more, never fewer)
+        self.estimated_steps = int(math.ceil(float(np.max(self.t_end)) * s_max / _MAX_STEP_RATES)) if ok.any() else 0
+        chunk_steps = self.j_per_chunk * self.dt * s_max / _MAX_STEP_RATES
+        self.pieces_per_chunk = max(1, int(math.ceil(chunk_steps / _STEPS_PER_CALL)))
+        self._check_cost()
 
     @property
     def n_chunks(self) -> int:
         """Number of chunks :meth:`chunks` yields (one per period of the
-        fastest body; for a progress bar)."""
+        fastest body)."""
         return max(1, -(-self.j_max // self.j_per_chunk))
+
+    @property
+    def n_progress(self) -> int:
+        """The ``total`` :meth:`chunks` passes to its progress callback: the
+        chunks, each split into :attr:`pieces_per_chunk` pieces (one piece
+        per chunk unless a period takes many steps)."""
+        return self.n_chunks * self.pieces_per_chunk
+
+    def _check_cost(self):
+        """Refuse, before any work, a run float64 cannot integrate faithfully
+        (:data:`SPIN_RATIO_MAX`) or one over the step budget."""
+        if not self._ok.any():
+            return
+        worst = int(np.argmax(self.spin_ratio))
+        ratio = float(self.spin_ratio[worst])
+        if ratio > SPIN_RATIO_MAX:
+            p = self.starts.params
+            # the ratio goes as r / a: the a/r at which it would be allowed
+            a_r = float(p.a[worst] / p.r[worst]) * ratio / SPIN_RATIO_MAX
+            raise ValueError(
+                f"cannot simulate: the body spins {ratio:.2g} radians per radian of orbit, more than the "
+                f"{SPIN_RATIO_MAX:.0e} float64 can integrate faithfully (the slow orbital motion would be lost "
+                f"in the round-off of the spin); use a/r >= {a_r:.1g} (or a slower spin)")
+        if self.estimated_steps > self.max_steps:
+            cost = self._step_cost()
+            raise ValueError(
+                f"simulate would take at least {self.estimated_steps:.2g} steps (the body spins "
+                f"{ratio:.2g} radians per radian of orbit and every step must resolve that), about "
+                f"{_duration(self.estimated_steps * cost)} at the {cost * 1e6:.0f} us per step measured here; "
+                f"the budget is max_steps = {self.max_steps:.2g}: raise it (--max-steps) or run fewer periods")
+
+    def _step_cost(self) -> float:
+        """Seconds per step, measured on a short run of these bodies (only
+        ever called to word a refusal)."""
+        active = np.flatnonzero(self._ok)
+        y = self.starts.state[:, active]
+        span = 200 * _MAX_STEP_RATES / float(np.max(self._rate_scale[active]))
+        wall0 = time.perf_counter()
+        sol, _ = self._solve(active, y, 0.0, span)
+        return (time.perf_counter() - wall0) / max(len(sol.t) - 1, 1)
 
     # ---- samples and rows -------------------------------------------------------
 
@@ -200,15 +294,20 @@ class Simulation:
         ledger = Ledger(s)
         active, y, rows = self._start(ledger)
         t_cur = 0.0
-        total = self.n_chunks
-        for chunk in range(total):
+        total = self.n_progress
+        pieces = self.pieces_per_chunk
+        for chunk in range(self.n_chunks):
             j0 = chunk * self.j_per_chunk
             j1 = min((chunk + 1) * self.j_per_chunk, self.j_max)
             t_b = j1 * self.dt
             if self.project_each_period and active.size and chunk > 0:
                 y = dyn.project(y, dyn.BodyParams(*(x[active] for x in s.params)))
-            while active.size and t_cur < t_b:
-                active, y, t_cur = self._integrate(active, y, t_cur, t_b, j0, j1, ledger, rows)
+            for piece in range(1, pieces + 1):
+                t_p = t_b if piece == pieces else (j0 + (j1 - j0) * piece / pieces) * self.dt
+                while active.size and t_cur < t_p:
+                    active, y, t_cur = self._integrate(active, y, t_cur, t_p, j0, j1, ledger, rows)
+                if progress is not None and piece < pieces and active.size:
+                    progress(chunk * pieces + piece, total)
             done = self.t_end[active] <= t_b + self._tol
             for i in active[done]:
                 ledger.finish(i, RunStatus.COMPLETED)
@@ -216,9 +315,9 @@ class Simulation:
             yield rows_table(rows)
             rows = []
             if progress is not None:
-                progress(chunk + 1, total)
+                progress((chunk + 1) * pieces, total)
             if not active.size:
-                if progress is not None and chunk + 1 < total:
+                if progress is not None and (chunk + 1) * pieces < total:
                     progress(total, total)
                 break
         for i in active:          # only if rounding left a body a hair short of its end
@@ -390,6 +489,17 @@ class Simulation:
         """Run to the end; returns ``(series, summary)``."""
         series = concat_tables(list(self.chunks(progress)))
         return series, self.summary()
+
+
+def _duration(seconds: float) -> str:
+    """A rough duration in words: '40 s', '7 min', '3.2 h', '12 days'."""
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 172800:
+        return f"{seconds / 3600:.1f} h"
+    return f"{seconds / 86400:.2g} days"
 
 
 def simulate(starts: Starts, progress: Callable[[int, int], None] | None = None,
