@@ -56,16 +56,20 @@ def _decimals(text: str) -> int | None:
 
 @dataclass(frozen=True)
 class Segment:
-    """``n`` values ``start + i * step``, rounded to ``decimals`` (None: not rounded)."""
+    """``n`` values ``start + i * step``, rounded to ``decimals`` (None: not
+    rounded), times ``scale`` (a unit's factor: the range is written, and
+    rounded, in the user's unit)."""
 
     start: float
     step: float
     n: int
     decimals: int | None
+    scale: float = 1.0
 
     def take(self, i: np.ndarray) -> np.ndarray:
         v = self.start + self.step * i.astype(float)
-        return v if self.decimals is None else np.round(v, self.decimals)
+        v = v if self.decimals is None else np.round(v, self.decimals)
+        return v if self.scale == 1.0 else v * self.scale
 
     @property
     def first(self) -> float:

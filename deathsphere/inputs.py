@@ -75,6 +75,19 @@ class InputError(ValueError):
     The message is one line."""
 
 
+#: Field separators a header may use: a comma, or (a spreadsheet export where
+#: the comma is the decimal mark) a semicolon, or a tab.
+DELIMITERS = (",", ";", "\t")
+
+
+def sniff_delimiter(header: str) -> str:
+    """The separator of a CSV file from its header line: the header names
+    the columns, so the separator is whichever of :data:`DELIMITERS` it
+    holds (a comma when it holds several, or none: a one-column file)."""
+    present = [d for d in DELIMITERS if d in header]
+    return present[0] if len(present) == 1 else ","
+
+
 def allowed_columns(fields=REQUEST_FIELDS, aliases=None) -> str:
     """The column names a header may use for ``fields``, comma-separated."""
     aliases = ALIASES if aliases is None else aliases
@@ -258,9 +271,12 @@ def _short(cell: str, limit: int = 40) -> str:
 class RequestReader:
     """Stream the rows of a request CSV (see the module docstring for the guarantees).
 
-    ``fields``: name -> (default, unit, words), e.g. :data:`REQUEST_FIELDS`.
-    ``defaults``: field -> scalar used where a field has no column or an
-    empty cell (else the field's own default; None means NaN).
+    ``fields``: name -> (default, unit, words), e.g. :data:`REQUEST_FIELDS`;
+    the default is used where a field has no column or an empty cell (None
+    means NaN).
+    ``overrides``: field -> scalar applied to every row, over the file's
+    column if it has one (an option given with ``--input``: a result CSV fed
+    back with a new ``--mu`` takes that mu; such a column is not parsed).
     ``aliases``: other header names -> field (default :data:`ALIASES`).
     ``ignore``: header names read and discarded (a command's output columns);
     a name that is a field or an alias is read as that field even if listed.
@@ -271,7 +287,7 @@ class RequestReader:
     come from :meth:`chunks`.  The stream is not closed.
     """
 
-    def __init__(self, stream: BinaryIO, fields: dict, defaults: dict, *, source: str = "input",
+    def __init__(self, stream: BinaryIO, fields: dict, overrides: dict | None = None, *, source: str = "input",
                  aliases: dict | None = None, ignore: Iterable[str] = ()):
         self.source = source
         self.fields = dict(fields)
@@ -291,17 +307,17 @@ class RequestReader:
             if "longer than" in header:
                 raise InputError(f"{source}: the header line is longer than {MAX_LINE_BYTES} bytes")
             raise InputError(f"{source} is not UTF-8 or UTF-16 CSV text")
+        self.delimiter = sniff_delimiter(header)
         try:
-            names = next(csv.reader((header,), strict=True, skipinitialspace=True))
+            names = next(csv.reader((header,), strict=True, skipinitialspace=True, delimiter=self.delimiter))
         except csv.Error as exc:
             why = "an unclosed quote" if "unexpected end" in str(exc) else f"bad quoting ({exc})"
             raise InputError(f"{source}: the header line has {why}") from None
         self.header = [name.strip() for name in names]
         self.columns = self._match(self.header, ignore)
-        self._defaults = {}
-        for name, spec in self.fields.items():
-            default = defaults.get(name)
-            self._defaults[name] = spec[0] if default is None else default
+        self._overrides = {name: value for name, value in (overrides or {}).items()
+                           if name in self.fields and value is not None}
+        self._defaults = {name: spec[0] for name, spec in self.fields.items()}
 
     def _match(self, header: list[str], ignore: Iterable[str]) -> list[str | None]:
         ignored = {name.strip().lower() for name in ignore}
@@ -375,18 +391,19 @@ class RequestReader:
 
     def _parse(self, texts: list[str], input_row: np.ndarray) -> RequestChunk:
         n, width = len(texts), len(self.columns)
+        sep = self.delimiter
         invalid = np.full(n, "", dtype=object)
-        flat_text = ",".join(texts)
+        flat_text = sep.join(texts)
         columns = None
         if '"' not in flat_text and _MARK not in flat_text:
             # fast path: no quoting, every line readable; one split if every row has `width` cells
-            if list(map(str.count, texts, repeat(","))).count(width - 1) == n:
-                flat = flat_text.split(",")
+            if list(map(str.count, texts, repeat(sep))).count(width - 1) == n:
+                flat = flat_text.split(sep)
                 columns = [flat[j::width] if name is not None else None for j, name in enumerate(self.columns)]
             else:
-                cells = [text.split(",") for text in texts]
+                cells = [text.split(sep) for text in texts]
         else:
-            cells = self._split_quoted(texts, invalid, width)
+            cells = self._split_quoted(texts, invalid, width, sep)
         del flat_text
         if columns is None:
             for i, row in enumerate(cells):
@@ -398,11 +415,14 @@ class RequestReader:
             del cells
         values = {}
         for name, column in zip(self.columns, columns):
-            if name is not None:
+            if name is not None and name not in self._overrides:
+                if sep != "," and name not in TEXT_FIELDS:
+                    # a spreadsheet that separates fields with ';' writes 6,5 for 6.5
+                    column = [cell.replace(",", ".") for cell in column]
                 values[name] = self._convert(name, column, invalid)
         for name in self.fields:
             if name not in values:
-                default = self._defaults[name]
+                default = self._overrides.get(name, self._defaults[name])
                 if name in TEXT_FIELDS:
                     values[name] = np.full(n, default, dtype=object)
                 else:
@@ -411,7 +431,7 @@ class RequestReader:
         return RequestChunk(input_row=input_row, values=values, invalid=invalid)
 
     @staticmethod
-    def _split_quoted(texts: list[str], invalid: np.ndarray, width: int) -> list[list[str]]:
+    def _split_quoted(texts: list[str], invalid: np.ndarray, width: int, sep: str = ",") -> list[list[str]]:
         """Cells of lines some of which are quoted or unreadable; each line on its own."""
         cells: list[list[str] | None] = [None] * len(texts)
         readable = []
@@ -423,7 +443,7 @@ class RequestReader:
                 readable.append(i)
         lines = [texts[i] for i in readable]
         try:  # one reader for all lines: right if it gives one row per line (no quote left open)
-            rows = list(csv.reader(lines, strict=True, skipinitialspace=True))
+            rows = list(csv.reader(lines, strict=True, skipinitialspace=True, delimiter=sep))
         except csv.Error:
             rows = []
         if len(rows) == len(lines):
@@ -432,7 +452,7 @@ class RequestReader:
             return cells
         for i, text in zip(readable, lines):
             try:
-                cells[i] = next(csv.reader((text,), strict=True, skipinitialspace=True))
+                cells[i] = next(csv.reader((text,), strict=True, skipinitialspace=True, delimiter=sep))
             except csv.Error as exc:
                 invalid[i] = "unclosed quote" if "unexpected end" in str(exc) else f"bad quoting: {exc}"
                 cells[i] = [""] * width

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere import params
 from deathsphere.constants import (
     BODIES,
     DEFAULT_INERTIA,
@@ -21,7 +22,7 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
-from deathsphere import params
+
 # Only the wheel here: the region's root finder and the other bodies are
 # imported where used, so that a command loads only what it evaluates.
 from deathsphere.physics import wheel
@@ -37,7 +38,7 @@ COLUMNS = (
     # extensions (appended; see CHANGELOG.md)
     "mu_available", "omega3_rad_s", "branch",
     "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s",
-    "omega3_min_real_rad_s", "omega3_min_contact_rad_s",
+    "omega3_min_real_rad_s", "omega3_min_contact_rad_s", "max_accel_g",
 )
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
@@ -61,20 +62,13 @@ _PHYSICS_COLUMNS = {
     "omega3_min_contact": "omega3_min_contact_rad_s",  # sphere: eqs. (56), (58)/(59)
 }
 
-#: Request fields: name -> (default, unit, what it is).
+#: Request fields: name -> (default, unit, what it is), from the parameter
+#: registry (body and side are the two text fields).
 REQUEST_FIELDS = {
     "body": ("wheel", "", "wheel | sphere | particle"),
     "side": ("inside", "", "inside | outside"),
-    "theta": (None, "deg", "polar angle of the contact point, 0..180"),
-    "alpha": (None, "deg", "tilt of the wheel below the orbit plane, -180..180"),
-    "a": (TABLE1_WHEEL_RADIUS, "m", "body radius, > 0"),
-    "r": (TABLE1_SPHERE_RADIUS, "m", "sphere radius, > a inside"),
-    "k": (None, "", "inertia factor, >= 0 (default by body)"),
-    "g": (STANDARD_GRAVITY, "m/s^2", "gravity, > 0"),
-    "mu": (math.inf, "", "friction coefficient available, >= 0 (inf: no limit)"),
-    "omega3": (None, "rad/s", "sphere: spin about the contact normal (eq. 55 gives Omega)"),
-    "omega": (None, "rad/s", "orbital rate Omega: sphere -> omega3 (eq. 55); wheel -> every alpha (eq. 29)"),
-    "speed": (None, "m/s", "wheel: centre speed v_cm; eq. 29 is solved for every alpha"),
+    **{name: (params.PARAMS[name].default, params.PARAMS[name].unit, params.PARAMS[name].what)
+       for name in ("theta", "alpha", "a", "r", "k", "g", "mu", "max_g", "omega3", "omega", "speed")},
 }
 
 
@@ -228,7 +222,7 @@ def validate_requests(req: dict) -> np.ndarray:
         words[rows] = params.problems(name, req[name][rows])
         checks.append((words != "", lambda i, w=words: w[i]))
 
-    for name in ("theta", "a", "r", "k", "g", "mu"):
+    for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)
     with np.errstate(invalid="ignore"):
         checks.append(((side == "inside") & (req["r"] <= req["a"]),
@@ -408,6 +402,14 @@ def evaluate(req: dict, stability: bool = True) -> Table:
         columns[key] = out[key][order]
     # inf ("no limit") is not representable in JSON: empty/null means no --mu given
     columns["mu_available"] = np.where(np.isinf(req["mu"][pick]), np.nan, req["mu"][pick])
+    max_g = req["max_g"][pick]
+    columns["max_accel_g"] = np.where(np.isinf(max_g), np.nan, max_g)
+    # the g-load limit comes last in the order of failures (docs/contract.md):
+    # an orbit that is otherwise ok but pushes the rider past max_g
+    with np.errstate(invalid="ignore"):
+        over = (columns["status"] == "ok") & (columns["accel_g"] > max_g)
+    columns["status"][over] = "over_g"
+    columns["reason"][over] = REASON_TEXT[Reason.OVER_G]
     columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
     finite_or_blank(columns)
     columns.update(add_stability(columns) if stability else _no_stability(len(pick)))
@@ -418,6 +420,10 @@ def evaluate(req: dict, stability: bool = True) -> Table:
         columns[column] = np.where(~np.isnan(target) & ~np.isnan(columns[column]), target, columns[column])
     return Table({name: columns[name] for name in COLUMNS})
 
+
+#: Statuses of a steady orbit that exists with contact (it may need more
+#: friction or g-load than allowed): its stability is analysed.
+LIVE_STATUSES = ("ok", "slips", "over_g")
 
 #: The reason of a row whose result left float64's range (a backstop: the
 #: input domains of :mod:`deathsphere.params` are chosen so that it never fires).
@@ -434,7 +440,7 @@ def finite_or_blank(columns: dict) -> None:
             if inf.any():
                 col[inf] = np.nan
                 hit |= inf
-    claimed = hit & np.isin(columns["status"], ("ok", "slips"))
+    claimed = hit & np.isin(columns["status"], LIVE_STATUSES)
     columns["status"][claimed] = "invalid"
     columns["reason"][claimed] = OVERFLOW_REASON
 
@@ -463,7 +469,7 @@ def add_stability(columns: dict) -> dict:
 
     n = len(columns["status"])
     out = _no_stability(n)
-    live = np.isin(columns["status"], ("ok", "slips"))
+    live = np.isin(columns["status"], LIVE_STATUSES)
     body, outside = columns["body"], columns["side"] == "outside"
     theta = np.deg2rad(columns["theta_deg"])
     par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}

@@ -22,6 +22,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere.constants import (
+    STANDARD_GRAVITY,
+    TABLE1_SPHERE_RADIUS,
+    TABLE1_WHEEL_RADIUS,
+)
+
 #: Dimensional inputs lie within [TINY, HUGE] in magnitude (see above).
 TINY = 1e-9
 HUGE = 1e9
@@ -46,10 +52,24 @@ class ParameterError(ValueError):
 
 @dataclass(frozen=True)
 class Param:
-    """One input: ``name`` as in the API and CLI (``--name``), ``unit``,
-    what it is, and its allowed interval ``[lo, hi]`` (``lo_open`` /
-    ``hi_open`` exclude an end).  ``nonzero`` refuses 0 (a signed rate);
-    ``allow_inf`` accepts +inf ("no limit"); ``integer`` wants whole numbers."""
+    """One input, defined once for the API's checks, the command line's
+    options, the input files' columns and the docs' tables.
+
+    ``name`` is the API's keyword and the command line's ``--name``;
+    ``unit`` the unit the API takes it in; ``what`` a few words for
+    messages; ``[lo, hi]`` the allowed interval (``lo_open`` / ``hi_open``
+    exclude an end); ``nonzero`` refuses 0 (a signed rate); ``allow_inf``
+    accepts +inf ("no limit"); ``integer`` wants whole numbers.
+
+    The rest describe it to people and files: ``symbol`` as in the paper;
+    ``kind`` the physical kind whose unit suffixes the option accepts
+    (:mod:`deathsphere.units`: length, speed, rate, angle, acceleration,
+    none); ``default`` the API's default (None: required, or chosen by the
+    body); ``default_text`` how help shows it; ``help`` one sentence for
+    ``--help`` and the docs; ``flags`` the command line's spellings (default
+    ``--name``); ``metavar``; ``column`` the output column that echoes it,
+    read back when a result CSV is fed in as ``--input``.
+    """
 
     name: str
     unit: str
@@ -61,6 +81,14 @@ class Param:
     nonzero: bool = False
     allow_inf: bool = False
     integer: bool = False
+    symbol: str = ""
+    kind: str = "none"
+    default: float | None = None
+    default_text: str | None = None
+    help: str = ""
+    flags: tuple[str, ...] = ()
+    metavar: str = "X"
+    column: str | None = None
 
     def label(self) -> str:
         """``name (what)``, e.g. ``a (body radius)``."""
@@ -81,44 +109,125 @@ class Param:
             return f"{left} and <= {self.hi:g}{unit}" if not self.hi_open else f"{left} and < {self.hi:g}{unit}"
         return f"{left}..{self.hi:g}{unit}" + (" (end excluded)" if self.hi_open else "")
 
+    @property
+    def cli_flags(self) -> tuple[str, ...]:
+        return self.flags or (f"--{self.name.replace('_', '-')}",)
 
-def _positive(name, unit, what):
-    return Param(name, unit, what, TINY, HUGE)
+    @property
+    def shown_default(self) -> str | None:
+        """The default as ``--help`` shows it (None: no default to show)."""
+        if self.default_text is not None:
+            return self.default_text
+        if self.default is None:
+            return None
+        return "unlimited" if math.isinf(self.default) else f"{self.default:g}"
+
+
+def _length(name, what, symbol, **more):
+    return Param(name, "m", what, TINY, HUGE, symbol=symbol, kind="length", metavar="M", **more)
 
 
 #: Every parameter, by name.  Angles are in degrees, as on the command line.
 PARAMS: dict[str, Param] = {p.name: p for p in (
-    Param("theta", "deg", "polar angle", 0.0, 180.0),
+    Param("theta", "deg", "polar angle", 0.0, 180.0, symbol="θ", kind="angle", metavar="DEG", column="theta_deg",
+          help="Polar angle of the contact point from the upward vertical, 0..180 (90 = the equator)."),
     # any angle is accepted and reduced to (-180, 180] for the physics
-    Param("alpha", "deg", "tilt", -1e6, 1e6),
-    _positive("a", "m", "body radius"),
-    _positive("r", "m", "sphere radius"),
-    Param("k", "", "inertia factor", 0.0, 1e3),
-    _positive("g", "m/s^2", "gravity"),
-    Param("mu", "", "friction coefficient", 0.0, math.inf, allow_inf=True),
-    Param("max_g", "g", "largest g-load", TINY, math.inf, allow_inf=True),
-    Param("omega3", "rad/s", "spin", -HUGE, HUGE),
-    Param("omega", "rad/s", "orbital rate", -HUGE, HUGE, nonzero=True),
-    _positive("speed", "m/s", "centre speed"),
-    Param("v_top", "m/s", "top speed", 0.0, HUGE),
-    Param("phidot_top", "rad/s", "top rate", 0.0, HUGE),
-    Param("a_over_r", "", "body radius over sphere radius", TINY, HUGE),
-    Param("step", "deg", "theta step", 0.001, 10.0),
-    Param("points", "", "points per orbit", 2, 1_000_000, integer=True),
-    Param("periods", "", "run length in periods", 0.0, 1e6, lo_open=True),
-    Param("points_per_period", "", "rows per period", 2, 100_000, integer=True),
-    Param("perturb", "deg", "kick", -60.0, 60.0),
-    Param("rtol", "", "relative tolerance", RTOL_MIN, 1e-2),
-    Param("atol", "", "absolute tolerance", 1e-16, 1.0),
-    Param("max_steps", "", "step budget", 1, 1e15, integer=True),
-    Param("jobs", "", "processes", 1, 256, integer=True),
-    Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True),
+    Param("alpha", "deg", "tilt", -1e6, 1e6, symbol="α", kind="angle", metavar="DEG", column="alpha_deg",
+          help="Wheel: tilt of the wheel's diameter through the contact point below the orbit plane; any "
+               "angle (205 = -155)."),
+    _length("a", "body radius", "a", default=TABLE1_WHEEL_RADIUS, flags=("-a", "--wheel-radius"), column="a_m",
+            help="Radius of the rolling body (a wheel to its tyre's crown)."),
+    _length("r", "sphere radius", "r", default=TABLE1_SPHERE_RADIUS, flags=("-r", "--sphere-radius"),
+            column="r_m", help="Radius of the fixed sphere (the globe); or give --diameter."),
+    _length("diameter", "sphere diameter", "2r",
+            help="Diameter of the fixed sphere instead of -r (a globe is sold by its diameter: 16ft)."),
+    Param("k", "", "inertia factor", 0.0, 1e3, symbol="k", metavar="K", flags=("-k", "--inertia"), column="k",
+          default_text="0.5 wheel, 0.4 sphere",
+          help="Inertia factor: I11 = 2 k m a^2 for a wheel (eq. 1), I = k m a^2 for a sphere."),
+    Param("g", "m/s^2", "gravity", TINY, HUGE, symbol="g", kind="acceleration", metavar="M_S2",
+          default=STANDARD_GRAVITY, flags=("-g", "--gravity"), column="g_m_s2",
+          help="Gravitational acceleration."),
+    Param("mu", "", "friction coefficient", 0.0, math.inf, allow_inf=True, symbol="μ", metavar="MU",
+          default=math.inf, column="mu_available",
+          help="Friction coefficient available; an orbit needing more has status slips."),
+    Param("max_g", "g", "largest g-load", TINY, math.inf, allow_inf=True, metavar="G", default=math.inf,
+          column="max_accel_g",
+          help="Largest g-load (centre acceleration in g) the rider takes; an orbit over it has status "
+               "over_g."),
+    Param("omega3", "rad/s", "spin", -HUGE, HUGE, symbol="ω3", kind="rate", metavar="RAD_S",
+          help="Sphere: spin about the contact normal; eq. 55 gives up to two orbit rates, one row each "
+               "(branch 0 slow, 1 fast)."),
+    Param("omega", "rad/s", "orbital rate", -HUGE, HUGE, nonzero=True, symbol="Ω", kind="rate",
+          metavar="RAD_S",
+          help="Orbital rate Omega. Wheel (> 0): every tilt alpha giving it (eq. 29 solved, one row each). "
+               "Sphere: signed about the upward vertical; omega3 follows (eq. 55)."),
+    Param("speed", "m/s", "centre speed", TINY, HUGE, symbol="v_cm", kind="speed", metavar="M_S",
+          help="Wheel: centre speed v_cm; every tilt alpha giving it (eq. 29 solved, one row each, branch "
+               "= root number in increasing alpha)."),
+    Param("v_top", "m/s", "top speed", 0.0, HUGE, kind="speed", metavar="M_S",
+          help="Vertical orbit: speed of the wheel's centre at the top, >= 0."),
+    Param("phidot_top", "rad/s", "top rate", 0.0, HUGE, kind="rate", metavar="RAD_S",
+          help="Vertical orbit: orbital rate at the top, >= 0."),
+    Param("a_over_r", "", "body radius over sphere radius", TINY, HUGE, symbol="a/r"),
+    Param("step", "deg", "theta step", 0.001, 10.0, kind="angle", metavar="DEG", default=0.5,
+          help="theta step of the boundary data, 0.001..10."),
+    Param("points", "", "points per orbit", 2, 1_000_000, integer=True, metavar="N",
+          help="Give the orbit point by point at N azimuths phi from the top (0) to 360 deg, 2..1e6."),
+    Param("periods", "", "run length in periods", 0.0, 1e6, lo_open=True, metavar="N", default=20.0,
+          help="How long: periods of the steady orbit (vertical: laps), > 0."),
+    Param("points_per_period", "", "rows per period", 2, 100_000, integer=True, metavar="N", default=100,
+          help="Output rows per period, 2..100000."),
+    Param("perturb", "deg", "kick", -60.0, 60.0, kind="angle", metavar="DEG", default=0.0,
+          help="Kick off the steady orbit, -60..60 deg: the wheel tilted by this about its direction of "
+               "travel (a sphere: its contact point moved this far down the meridian)."),
+    Param("rtol", "", "relative tolerance", RTOL_MIN, 1e-2, metavar="TOL", default=1e-10,
+          help="Relative tolerance of solve_ivp, 2.2e-14..1e-2."),
+    Param("atol", "", "absolute tolerance", 1e-16, 1.0, metavar="TOL", default_text="= rtol",
+          help="Absolute tolerance per scaled component, 1e-16..1."),
+    Param("max_steps", "", "step budget", 1, 1e15, integer=True, metavar="N", default=1_000_000,
+          help="Refuse, before it starts, a run estimated to need more integration steps."),
+    Param("jobs", "", "processes", 1, 256, integer=True, metavar="N", default=1,
+          help="Processes working in parallel; the output is the same as with one."),
+    Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True, metavar="N",
+          default=16384, help="Orbits evaluated per chunk; memory stays flat whatever the grid size."),
 )}
+
+#: The defaults that several modules use by name.
+CHUNK = int(PARAMS["chunk_size"].default)
+
+
+def markdown_table() -> str:
+    """The registry as the Markdown table of docs/contract.md, "Inputs"
+    (a test keeps the doc equal to it): each parameter's option, unit and
+    the suffixes it takes, allowed values, default and meaning."""
+    from deathsphere.units import COMMON
+
+    lines = ["| parameter | option | unit (suffixes) | allowed | default | meaning |",
+             "|---|---|---|---|---|---|"]
+    for p in PARAMS.values():
+        unit = p.unit or "–"
+        others = [u for u in COMMON.get(p.kind, ()) if u != p.unit]
+        if others:
+            unit += " (" + ", ".join(others) + ")"
+        flags = ", ".join(f"`{f}`" for f in p.cli_flags) if p.help else "–"
+        default = p.shown_default or "–"
+        lines.append(f"| `{p.name}` | {flags} | {unit} | {p.allowed()} | {default} | {p.help or p.what} |")
+    return "\n".join(lines) + "\n"
+
+
+def shown_number(value) -> str:
+    """A number as the user wrote it, to the last digit: the shortest text
+    that reads back as the same float (``180.00000000000003``, ``200``,
+    ``1e-10``), never rounded, so a message about a value just outside an
+    interval shows why."""
+    if isinstance(value, float):
+        text = repr(value)
+        return text[:-2] if text.endswith(".0") else text
+    return repr(value)
 
 
 def _words(p: Param, value) -> str:
-    shown = f"{value:g}" if isinstance(value, float) else repr(value)
-    return f"{p.label()} must be {p.allowed()} (got {shown})"
+    return f"{p.label()} must be {p.allowed()} (got {shown_number(value)})"
 
 
 def problems(name: str, values) -> np.ndarray:

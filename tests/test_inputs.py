@@ -119,9 +119,9 @@ def test_no_row_for_the_trailing_newline_and_last_line_without_one():
 
 
 def test_a_row_of_separators_is_a_row_and_keeps_the_numbering():
-    numbers, values, invalid = rows("theta,alpha\n60,10\n,\n70,20\n", {"alpha": 5.0})
+    numbers, values, invalid = rows("theta,alpha\n60,10\n,\n70,20\n")
     assert numbers == [1, 2, 3]
-    assert same(values["theta"], [60.0, math.nan, 70.0]) and values["alpha"] == [10.0, 5.0, 20.0]
+    assert same(values["theta"], [60.0, math.nan, 70.0]) and same(values["alpha"], [10.0, math.nan, 20.0])
     assert invalid == ["", "", ""]  # theta missing is for the validator to say
 
 
@@ -223,12 +223,12 @@ def test_undecodable_and_binary_lines_spoil_only_their_rows():
 
 def test_bad_numbers_and_text_cells():
     data = "theta,alpha,mu,body,side\n60,abc,,SPHERE, Outside \n nan ,10,inf,,\n60,1e400,-inf,,\n60,10,nan,,\n"
-    numbers, values, invalid = rows(data, {"body": "particle"})
+    numbers, values, invalid = rows(data)
     assert numbers == [1, 2, 3, 4]
     assert invalid == ["alpha: 'abc' is not a number", "theta: 'nan' is not a finite number",
                        "alpha: '1e400' is not a finite number", "mu: 'nan' is not a finite number"]
     assert values["mu"][1:3] == [math.inf, -math.inf]  # mu alone may be infinite
-    assert values["body"] == ["sphere", "particle", "particle", "particle"]
+    assert values["body"] == ["sphere", "wheel", "wheel", "wheel"]  # an empty cell takes the default
     assert values["side"] == ["outside", "inside", "inside", "inside"]
 
 
@@ -239,12 +239,14 @@ def test_long_bad_cell_is_shortened_in_the_reason():
 
 # ---------------------------------------------------------------- values and defaults
 
-def test_defaults_fill_empty_cells_and_missing_fields():
+def test_overrides_apply_to_every_row_and_defaults_fill_the_rest():
+    """An option given with --input applies to every row, over the file's
+    column; a field neither given nor in the file takes its default."""
     chunk, = reader("theta,a,k\n60,,\n70,0.2,0.5\n", {"a": 0.25, "g": 3.7, "k": None}).chunks()
     assert list(chunk.values) == list(FIELDS)
-    assert chunk.values["a"].tolist() == [0.25, 0.2]
-    assert same(chunk.values["k"].tolist(), [math.nan, 0.5])  # no default anywhere: NaN
-    assert chunk.values["g"].tolist() == [3.7, 3.7]  # from defaults, broadcast
+    assert chunk.values["a"].tolist() == [0.25, 0.25]  # the option wins over the column
+    assert same(chunk.values["k"].tolist(), [math.nan, 0.5])  # None is no option; no default anywhere: NaN
+    assert chunk.values["g"].tolist() == [3.7, 3.7]  # given, no column: broadcast
     assert chunk.values["r"].tolist() == [FIELDS["r"][0]] * 2  # the field's own default
     assert chunk.values["mu"].tolist() == [math.inf] * 2
     assert chunk.values["body"].dtype == object and chunk.values["body"].tolist() == ["wheel", "wheel"]
@@ -495,7 +497,8 @@ def test_every_non_blank_line_is_one_row_in_order(lines, newline, end, encoding,
     text = newline.join([",".join(HEADER)] + lines) + end
     data = text.encode(encoding, "surrogatepass")
     defaults = {"theta": 1.5, "alpha": -2.0, "mu": 0.5, "body": "particle"}
-    numbers, values, invalid = rows(data, defaults, chunk=chunk, size=size)
+    fields = {name: (defaults.get(name, spec[0]), *spec[1:]) for name, spec in FIELDS.items()}
+    numbers, values, invalid = rows(data, fields=fields, chunk=chunk, size=size)
 
     header, *physical = re.split(r"\r\n|\r|\n", text)  # a line ends at LF, CRLF or CR
     assert header == ",".join(HEADER)
@@ -508,3 +511,20 @@ def test_every_non_blank_line_is_one_row_in_order(lines, newline, end, encoding,
         else:
             assert invalid[k] == ""
             assert {name: values[name][k] for name in HEADER} == expect
+
+
+@pytest.mark.parametrize("sep", [";", "\t"])
+def test_a_spreadsheet_export_with_semicolons_or_tabs_is_read(sep):
+    """Where the comma is the decimal mark a spreadsheet separates fields with
+    ';' (or tabs): the header says which, and 6,5 in such a file is 6.5."""
+    data = sep.join(["theta", "alpha", "body"]) + "\n" + sep.join(["60", "10,5", "wheel"]) + "\n" \
+        + sep.join(["70", "oops", "sphere"]) + "\n"
+    numbers, values, invalid = rows(data)
+    assert numbers == [1, 2] and values["theta"] == [60.0, 70.0] and values["alpha"][0] == 10.5
+    assert values["body"] == ["wheel", "sphere"] and invalid[0] == "" and "oops" in invalid[1]
+
+
+def test_an_overridden_column_is_not_read():
+    """A bad cell in a column an option replaces spoils nothing."""
+    numbers, values, invalid = rows("theta,mu\n60,oops\n", {"mu": 0.5})
+    assert invalid == [""] and values["mu"] == [0.5]

@@ -192,10 +192,9 @@ def test_a_particle_has_km_h_and_no_rpm():
 @pytest.mark.parametrize("width", (60, 80))
 @pytest.mark.parametrize("theta, alpha", [(90.0, 45.0), (170.0, 30.0)])
 def test_stability_labels_stay_on_one_line(width, theta, alpha):
-    from deathsphere.results.stability_report import stability_report
+    import deathsphere
 
-    setup = Setup()
-    text = show(stability_view(stability_report(setup, theta, alpha)), width)
+    text = show(stability_view(deathsphere.stability(theta, alpha)), width)
     assert_fits(text, width)
     lines = text.splitlines()
     for label in ("growth rate, max Re(eigenvalue)", "slow nutation frequency", "slow nutation, rad/s",

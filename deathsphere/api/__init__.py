@@ -34,9 +34,9 @@ _HOME = {
     "orbit": "orbits", "sweep": "orbits", "orbit_input": "orbits",
     "vertical": "vertical_orbits", "vertical_sweep": "vertical_orbits", "vertical_input": "vertical_orbits",
     "VERTICAL_ECHO": "vertical_orbits", "POINT_ROWS": "vertical_orbits",
-    "region": "region_limits", "region_cells": "region_limits", "region_curves": "region_limits", "limits": "region_limits",
+    "region": "region_limits", "region_cells": "region_limits", "region_curves": "region_limits", "limits": "region_limits", "limits_input": "region_limits",
     "MAX_LIMIT_THETAS": "region_limits",
-    "stability": "orbit_stability",
+    "stability": "orbit_stability", "stability_input": "orbit_stability",
     "simulate": "simulation", "prepare_simulation": "simulation", "METHODS": "simulation", "FRAMES": "simulation",
     "table1": "paper", "verify": "paper", "n_claims": "paper", "verify_counts": "paper",
     "table1_printed": "paper",
@@ -48,6 +48,6 @@ _MODULES = ("arguments", "streams", "orbits", "vertical_orbits", "region_limits"
             "paper")
 
 __all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
-           "region_cells", "region_curves", "limits", "stability", "simulate", "prepare_simulation", "table1",
+           "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "table1",
            "verify", "Chunks", "ParameterError"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

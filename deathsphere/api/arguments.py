@@ -12,9 +12,6 @@ from deathsphere import params
 from deathsphere.constants import (
     BODIES,
     SIDES,
-    STANDARD_GRAVITY,
-    TABLE1_SPHERE_RADIUS,
-    TABLE1_WHEEL_RADIUS,
 )
 from deathsphere.grid import (
     Axis,
@@ -30,39 +27,99 @@ from deathsphere.params import ParameterError
 from deathsphere.physics.status import STATUS_LABELS
 from deathsphere.table import Table
 
-G = STANDARD_GRAVITY
-
-
-A = TABLE1_WHEEL_RADIUS
-
-
-R = TABLE1_SPHERE_RADIUS
-
-
+#: The API's defaults, from the parameter registry (one place).
+G = params.PARAMS["g"].default
+A = params.PARAMS["a"].default
+R = params.PARAMS["r"].default
 INF = math.inf
-
-
 #: Orbits per chunk of :func:`sweep` (the command line's ``--chunk-size`` default).
-CHUNK = 16384
-
+CHUNK = params.CHUNK
 
 #: Row statuses (``only=`` of :func:`sweep`).
 STATUSES = tuple(str(s) for s in STATUS_LABELS)
 
 
-def checked_array(name: str, value) -> np.ndarray:
-    """``value`` (a number, list or array) as a float array whose every
-    element is an allowed ``name``; else ParameterError with the reason."""
+def number_from_text(name: str, text: str) -> float:
+    """One value of ``name`` typed as text, with an optional unit suffix
+    (``"40km/h"``, ``"8ft"``, ``"-10"`` with a typographic minus, ``"inf"``),
+    in the API's unit (:mod:`deathsphere.units`).  Not range-checked."""
+    from deathsphere import units
+
+    return units.parse_value(str(text), params.PARAMS[name].kind, name)
+
+
+def _real_array(name: str, value) -> np.ndarray:
+    """``value`` as a float64 array, refusing what is not a real number
+    instead of coercing it: complex values (their imaginary part would be
+    lost), booleans, masked arrays (their mask would be ignored) and text
+    that is not a number (text that is one, with a unit or not, is read)."""
+    if np.ma.isMaskedArray(value):
+        raise ParameterError(f"{name}: a masked array is not accepted (its mask would be ignored); pass "
+                             "np.ma.filled(x, value) or x.compressed()", name)
     if isinstance(value, str):
-        raise ParameterError(f"{name} must be a number (got {value!r})", name)
+        return np.asarray(number_from_text(name, value), dtype=float)
+    if isinstance(value, (list, tuple)) and any(isinstance(v, str) for v in np.ravel(np.asarray(value, dtype=object))):
+        items = np.asarray(value, dtype=object)
+        return np.vectorize(lambda v: number_from_text(name, v) if isinstance(v, str) else _one_real(name, v),
+                            otypes=[float])(items)
     try:
-        arr = np.asarray(value, dtype=float)
+        arr = np.asarray(value)
     except (TypeError, ValueError):
         raise ParameterError(f"{name} must be a number (got {value!r})", name) from None
+    if arr.dtype.kind == "c":
+        raise ParameterError(f"{name} must be a real number (got the complex {value!r})", name)
+    if arr.dtype.kind == "b":
+        raise ParameterError(f"{name} must be a number (got the boolean {value!r})", name)
+    if arr.dtype.kind in "OUS":
+        return np.vectorize(lambda v: _one_real(name, v), otypes=[float])(arr)
+    try:
+        return arr.astype(float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be a number (got {value!r})", name) from None
+
+
+def _one_real(name: str, v) -> float:
+    if isinstance(v, str):
+        return number_from_text(name, v)
+    if isinstance(v, (bool, np.bool_)) or isinstance(v, (complex, np.complexfloating)) or v is None:
+        raise ParameterError(f"{name} must be a real number (got {v!r})", name)
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be a number (got {v!r})", name) from None
+
+
+def checked_array(name: str, value) -> np.ndarray:
+    """``value`` (a number, text, list or array) as a float array whose every
+    element is an allowed ``name``; else ParameterError with the reason."""
+    arr = _real_array(name, value)
     reason = params.first_problem(name, arr)
     if reason:
         raise ParameterError(reason, name)
     return arr
+
+
+def checked_flag(name: str, value) -> bool:
+    """A True/False argument: a bool (or numpy bool) only, so that
+    ``stability="no"`` is refused rather than read as True."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ParameterError(f"{name} must be True or False (got {value!r})", name)
+
+
+def sphere_radius(r, diameter):
+    """The sphere's radius from ``r`` or ``diameter`` (one of them; a globe
+    is sold by its diameter).  Returns ``r`` unchanged when no diameter is
+    given (it is checked where it is used, as a scalar or an array)."""
+    if diameter is None:
+        return r
+    if r is not None and r is not R:
+        raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
+    d = _real_array("diameter", diameter)
+    reason = params.first_problem("diameter", d)
+    if reason:
+        raise ParameterError(reason, "diameter")
+    return d / 2.0 if d.ndim else float(d) / 2.0
 
 
 def checked_scalar(name: str, value) -> float:
@@ -72,7 +129,11 @@ def checked_scalar(name: str, value) -> float:
         value = value[0]
     if np.ndim(value) != 0:
         raise ParameterError(f"{name} takes one value (got an array of shape {np.shape(value)})", name)
-    return params.check(name, value)
+    value = float(_real_array(name, value))
+    reason = params.problems(name, [value])[0]
+    if reason:
+        raise ParameterError(reason, name)
+    return value
 
 
 def checked_optional(name: str, value) -> float | None:
@@ -130,12 +191,17 @@ def checked_segment(name: str, item) -> Segment:
     """One value or ``start:stop:step`` range of ``name``, every value allowed
     (a range is monotone: its ends decide, and it is never built)."""
     if isinstance(item, str) and ":" not in item:
-        seg = Segment(params.check(name, item), 0.0, 1, None)
+        seg = Segment(checked_scalar(name, item), 0.0, 1, None)
     elif isinstance(item, str):
+        from deathsphere import units
+
+        number, scale = units.parse_suffix(item, params.PARAMS[name].kind, name)
         try:
-            seg = parse_segment(item, name)
+            seg = parse_segment(number, name)
         except RangeError as exc:
             raise ParameterError(str(exc).split(": ", 1)[-1], name) from None
+        if scale != 1.0:  # the range in the unit written, each value converted
+            seg = Segment(seg.start, seg.step, seg.n, seg.decimals, scale)
     else:
         seg = Segment(float(checked_array(name, item)), 0.0, 1, None)
     reason = params.first_problem(name, [seg.first, seg.last])
@@ -183,3 +249,29 @@ def raise_if_all_invalid(table: Table) -> Table:
     if len(table) and np.all(status == "invalid"):
         raise ParameterError(str(table["reason"][0]))
     return table
+
+
+def checked_statuses(only) -> list[str] | None:
+    """The statuses of ``only=`` (one or a list), checked; None keeps every row."""
+    if only is None or (isinstance(only, (list, tuple)) and not only):
+        return None
+    return [checked_choice("only", s, STATUSES) for s in ([only] if isinstance(only, str) else only)]
+
+
+class _HalvedAxis(Axis):
+    """Radii from an axis of diameters (half of each value)."""
+
+    def __init__(self, diameters: Axis):
+        super().__init__([])
+        self._diameters = diameters
+
+    def __len__(self) -> int:
+        return len(self._diameters)
+
+    def take(self, index) -> np.ndarray:
+        return self._diameters.take(index) / 2.0
+
+
+def radii_of(diameters: Axis) -> Axis:
+    """The axis of sphere radii of an axis of diameters (``--diameter 16ft``)."""
+    return _HalvedAxis(diameters)

@@ -11,7 +11,6 @@ import numpy as np
 from deathsphere.api.arguments import (
     CHUNK,
     INF,
-    STATUSES,
     A,
     G,
     R,
@@ -19,12 +18,16 @@ from deathsphere.api.arguments import (
     checked_array,
     checked_axis,
     checked_choice,
+    checked_flag,
     checked_grid_size,
     checked_scalar,
     checked_setup,
+    checked_statuses,
     is_given,
     one_default,
+    radii_of,
     raise_if_all_invalid,
+    sphere_radius,
 )
 from deathsphere.api.streams import (
     Chunks,
@@ -50,7 +53,8 @@ from deathsphere.table import Table
 
 
 def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
-          mu=INF, omega3=None, omega=None, speed=None, stability: bool = True) -> Table:
+          mu=INF, omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None,
+          stability: bool = True) -> Table:
     """Steady horizontal orbits: ``deathsphere orbit``.
 
     McDonald (1993): the fit, eq. (0) (outside: eq. 81); r', eq. (8b); the
@@ -139,18 +143,22 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     deathsphere.params.ParameterError: theta (polar angle) must be 0..180 deg (got 200)
     """
     body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
-    given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "omega3": omega3,
-             "omega": omega, "speed": speed}
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    r = sphere_radius(r, diameter)
+    given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "max_g": max_g,
+             "omega3": omega3, "omega": omega, "speed": speed}
     shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
     n = math.prod(shape)
-    table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, **flat), stability=bool(stability)))
+    table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, **flat), stability=stability))
     several = (body == "wheel" and alpha is None) or (body == "sphere" and omega3 is not None)
+    if keep is not None:
+        return table[np.isin(table["status"], keep)]
     return table if several else Table(table.columns, shape=shape)
 
 
 def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side: str = "inside", g=G, mu=INF,
-          omega3=None, omega=None, speed=None, only=None, chunk_size: int = CHUNK, stability: bool = True,
-          jobs: int = 1) -> Chunks:
+          omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None, chunk_size: int = CHUNK,
+          stability: bool = True, jobs: int = 1) -> Chunks:
     """Every combination of the axes, chunk by chunk: ``deathsphere sweep``
     (and ``deathsphere orbit`` given several values).
 
@@ -204,15 +212,18 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     [10.0, 30.0]
     """
     body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
-    g, mu = checked_scalar("g", g), checked_scalar("mu", mu)
+    g, mu, max_g = checked_scalar("g", g), checked_scalar("mu", mu), checked_scalar("max_g", max_g)
     chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
-    keep = None
-    if only is not None:
-        keep = [checked_choice("only", s, STATUSES) for s in ([only] if isinstance(only, str) else only)]
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    if diameter is not None:
+        if is_given(r) and r is not R:
+            raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
+        r = None
     if not is_given(theta):
         raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
                              missing=True)
-    axes = {"a": checked_axis("a", a, A), "r": checked_axis("r", r, R), "k": checked_axis("k", k), "theta": checked_axis("theta", theta),
+    r_axis = checked_axis("r", r, R) if diameter is None else radii_of(checked_axis("diameter", diameter))
+    axes = {"a": checked_axis("a", a, A), "r": r_axis, "k": checked_axis("k", k), "theta": checked_axis("theta", theta),
             "speed": checked_axis("speed", speed), "alpha": checked_axis("alpha", alpha), "omega3": checked_axis("omega3", omega3),
             "omega": checked_axis("omega", omega)}
     total = checked_grid_size(axes)
@@ -229,14 +240,14 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     reason = validate_requests(make_requests(1, body=body, side=side, a=1.0, r=2.0, g=g, mu=mu, **first))[0]
     if reason:
         raise ParameterError(reason)
-    fixed = dict(body=body, side=side, g=g, mu=mu)
-    work = partial(evaluate_filtered, stability=bool(stability), keep=keep)
+    fixed = dict(body=body, side=side, g=g, mu=mu, max_g=max_g)
+    work = partial(evaluate_filtered, stability=stability, keep=keep)
     return Chunks(evaluated(grid_requests(axes, chunk_size, make_requests, fixed), work, jobs), total)
 
 
-def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, body: str = "wheel",
-                side: str = "inside", a=A, r=R, k=None, g=G, mu=INF, stability: bool = True,
-                chunk_size: int = CHUNK) -> Chunks:
+def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, body=None, side=None,
+                a=None, r=None, diameter=None, k=None, g=None, mu=None, max_g=None, only=None,
+                stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1) -> Chunks:
     """Horizontal orbits of the requests in a CSV file: ``deathsphere orbit --input FILE``.
 
     The physics of :func:`orbit`, one request per line, streamed: a file of
@@ -250,10 +261,12 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
         ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``); an output
         CSV of ``orbit`` is read too (``theta_deg``, ``alpha_deg``, ...
         echo their inputs; its other columns are ignored).
-    theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu
-        One value each: the default for a column the file lacks or a cell
-        left empty.
-    stability, chunk_size : as for :func:`sweep`.
+    theta, alpha, omega3, omega, speed, body, side, a, r, diameter, k, g, mu, max_g
+        One value each, applied to every row: over the file's column where
+        it has one (a result CSV fed back with a new ``mu``), else as the
+        column.  Not given (None): the file's value, or the parameter's
+        default where the file has no column or a cell is empty.
+    only, stability, chunk_size, jobs : as for :func:`sweep`.
 
     Returns
     -------
@@ -278,18 +291,21 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     >>> table["status"].tolist(), table["input_row"].tolist()
     (['ok', 'invalid'], [1, 2])
     """
-    setup = checked_setup(body, side, a, r, k, g, mu)
-    chunk_size = int(checked_scalar("chunk_size", chunk_size))
-    defaults = dict(body=setup.body, side=setup.side, a=setup.a, r=setup.r, k=k, g=setup.g, mu=setup.mu)
-    if k is not None:
-        defaults["k"] = setup.k
+    chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    overrides = {}
+    if body is not None:
+        overrides["body"] = checked_choice("body", body, BODIES)
+    if side is not None:
+        overrides["side"] = checked_choice("side", side, SIDES)
+    r = sphere_radius(r, diameter)
     for name, value in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega),
-                        ("speed", speed)):
+                        ("speed", speed), ("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu), ("max_g", max_g)):
         value = one_default(name, value)
         if value is not None:
-            defaults[name] = value
+            overrides[name] = value
     from deathsphere.inputs import ALIASES
 
-    reader = request_reader(source, REQUEST_FIELDS, defaults, ALIASES, COLUMNS)
-    work = partial(evaluate_filtered, stability=bool(stability))
-    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work))
+    reader = request_reader(source, REQUEST_FIELDS, overrides, ALIASES, COLUMNS)
+    work = partial(evaluate_filtered, stability=stability, keep=keep)
+    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work, jobs))

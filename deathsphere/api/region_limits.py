@@ -2,18 +2,28 @@
 
 from __future__ import annotations
 
+import math
+
 from deathsphere.api.arguments import (
+    CHUNK,
     INF,
     A,
     G,
     R,
+    broadcast_flat,
+    checked_array,
     checked_axis,
     checked_choice,
     checked_scalar,
     checked_setup,
     is_given,
+    one_default,
+    raise_if_all_invalid,
+    sphere_radius,
 )
+from deathsphere.api.streams import Chunks, input_requests, request_reader
 from deathsphere.constants import (
+    BODIES,
     SIDES,
 )
 from deathsphere.params import ParameterError
@@ -23,16 +33,19 @@ from deathsphere.table import Table
 MAX_LIMIT_THETAS = 100_000
 
 
-def _ratio(a, r, side) -> tuple[float, float]:
+def _ratio(a, r, side, g=G, diameter=None) -> tuple[float, float]:
     """The body radius over the sphere radius (all the map depends on), to
     15 significant digits so that ``-a 0.3 -r 3`` is the 0.1 a user reads
     (0.3 / 3.0 is 0.09999999999999999 in float64), and the inertia factor."""
     side = checked_choice("side", side, SIDES)
-    setup = checked_setup("wheel", side, a, r, None, G, INF)
+    # g is checked but changes nothing: the region's angles and the g-load
+    # in g do not depend on it (it scales every speed by sqrt(g))
+    setup = checked_setup("wheel", side, a, sphere_radius(r, diameter), None, g, INF)
     return float(f"{setup.a / setup.r:.15g}"), side
 
 
-def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, step=0.5, stability: bool = False,
+def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None, step=0.5,
+           stability: bool = False,
            jobs: int = 1, progress=None) -> Table:
     """The allowed (theta, alpha) region of a wheel as data: ``deathsphere map --format csv``.
 
@@ -45,7 +58,9 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, step=0.5
     Parameters
     ----------
     a, r : float
-        Wheel and sphere radius [m] (inside: r > a).
+        Wheel and sphere radius [m] (inside: r > a); or ``diameter``, the sphere's.
+    g : float
+        Gravity [m/s^2]: checked, but the region does not depend on it.
     k : float
         Inertia factor.
     side : {"inside", "outside"}
@@ -78,7 +93,7 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, step=0.5
     """
     from deathsphere.results.limits import boundary_table, boundary_thetas
 
-    a_over_r, side = _ratio(a, r, side)
+    a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
                                                       ("jobs", jobs))}
     tick = None
@@ -92,7 +107,8 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, step=0.5
                           stability=bool(stability), progress=tick, jobs=int(values["jobs"]))
 
 
-def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, stability: bool = False,
+def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None,
+                 stability: bool = False,
                  columns: int = 72, rows=None):
     """The allowed region on a grid of cells: what ``deathsphere map`` draws
     on a terminal (:mod:`deathsphere.render.charplot`).
@@ -114,7 +130,7 @@ def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, st
     """
     from deathsphere.results.region_map import cell_map
 
-    a_over_r, side = _ratio(a, r, side)
+    a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g))}
     try:
         return cell_map(a_over_r, 1.0, values["k"], outside=side == "outside", mu=values["mu"],
@@ -123,7 +139,8 @@ def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, st
         raise ParameterError(str(exc)) from None
 
 
-def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, stability: bool = False):
+def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None,
+                  stability: bool = False):
     """The allowed region as curves: what ``deathsphere map --output FILE``
     draws (:mod:`deathsphere.render.map_figure`; the paper's figure).
 
@@ -136,13 +153,14 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, s
     """
     from deathsphere.results.region_map import curve_map
 
-    a_over_r, side = _ratio(a, r, side)
+    a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g))}
     return curve_map(a_over_r, 1.0, values["k"], outside=side == "outside", mu=values["mu"],
                      max_g=values["max_g"], stability=bool(stability))
 
 
-def limits(theta=None, *, a=A, r=R, k=None, g=G, mu=INF, max_g=INF, side: str = "inside") -> Table:
+def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF, max_g=INF,
+           diameter=None) -> Table:
     """The feasible tilts at theta, or the highest orbit: ``deathsphere limits``.
 
     Beyond the paper (method: docs/limits.md), from its conditions eqs. (0),
@@ -155,9 +173,13 @@ def limits(theta=None, *, a=A, r=R, k=None, g=G, mu=INF, max_g=INF, side: str = 
         Polar angle(s) of the orbit [deg]: values or ``"start:stop:step"``
         text as for :func:`sweep`, at most 100000.  Without it: the highest
         orbit possible (the smallest theta with a feasible tilt).
-    a, r, k, g, mu, side : as for :func:`orbit` (a wheel; one value each).
-    max_g : float
+    body : {"wheel"}
+        Only a wheel has a tilt to choose; another body is refused.
+    side, a, r, k, g, mu, diameter : as for :func:`orbit`.
+    max_g : float or array_like
         Largest centre acceleration the rider takes [g] (``inf``: no limit).
+        The numeric arguments broadcast against each other (a text range of
+        theta is one axis of values); each element is one request.
 
     Returns
     -------
@@ -166,8 +188,9 @@ def limits(theta=None, *, a=A, r=R, k=None, g=G, mu=INF, max_g=INF, side: str = 
         (``alpha_min_deg``, ``alpha_max_deg``, the speed range
         ``v_min_m_s``..``v_max_m_s``), a theta without any giving one row
         with ``intervals`` = 0 (flat: a theta may have several intervals).
-        Without: one row (``found``, ``theta_deg``, ``alpha_deg``,
-        ``v_cm_m_s``, ``note``).
+        Without: one row per setup (``found``, ``theta_deg``, ``alpha_deg``,
+        ``v_cm_m_s``, ``note``).  Then ``input_row`` (the request's flat
+        index + 1), ``body``, ``side``, ``status`` and ``reason``.
 
     Examples
     --------
@@ -175,15 +198,66 @@ def limits(theta=None, *, a=A, r=R, k=None, g=G, mu=INF, max_g=INF, side: str = 
     >>> t = deathsphere.limits(60, mu=1.2)
     >>> int(t["intervals"][0]), round(float(t["alpha_max_deg"][0]), 3)
     (1, 10.104)
+    >>> t = deathsphere.limits([60, 90], mu=[[1.2], [2.0]])
+    >>> t["input_row"].tolist(), t["mu_available"].tolist()
+    ([1, 2, 3, 4], [1.2, 1.2, 2.0, 2.0])
     """
-    from deathsphere.results.limits import highest_orbit_table, intervals_table
+    from deathsphere.model import make_requests
+    from deathsphere.results.limits import limits_rows
 
-    setup = checked_setup("wheel", side, a, r, k, g, mu)
-    max_g = checked_scalar("max_g", max_g)
-    if not is_given(theta):
-        return highest_orbit_table(setup, max_g)
-    thetas = checked_axis("theta", theta)
-    if len(thetas) > MAX_LIMIT_THETAS:
-        raise ParameterError(f"theta: {len(thetas)} values, more than {MAX_LIMIT_THETAS} (each is a root search)",
-                             "theta")
-    return intervals_table(setup, thetas.values(), max_g)
+    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    if body != "wheel":
+        from deathsphere.results.limits import NOT_A_WHEEL
+
+        raise ParameterError(NOT_A_WHEEL, "body")
+    r = sphere_radius(r, diameter)
+    given = {"a": a, "r": r, "k": k, "g": g, "mu": mu, "max_g": max_g}
+    if is_given(theta):
+        thetas = theta
+        if isinstance(theta, str) or (isinstance(theta, (list, tuple)) and any(isinstance(v, str) for v in theta)):
+            thetas = checked_axis("theta", theta).values() if len(checked_axis("theta", theta)) <= MAX_LIMIT_THETAS \
+                else _too_many(len(checked_axis("theta", theta)))
+        given["theta"] = thetas
+    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    n = math.prod(shape)
+    if n > MAX_LIMIT_THETAS:
+        _too_many(n)
+    req = make_requests(n, body=body, side=side, **flat)
+    table = limits_rows(req, highest=not is_given(theta))
+    return raise_if_all_invalid(table)
+
+
+def _too_many(n: int):
+    raise ParameterError(f"theta: {n} requests, more than {MAX_LIMIT_THETAS} (each is a root search)", "theta")
+
+
+def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=None, g=None, mu=None, max_g=None,
+                 diameter=None, chunk_size: int = CHUNK) -> Chunks:
+    """The limits of the requests in a CSV file: ``deathsphere limits --input
+    FILE``.  Its header names ``theta`` (required in every row) and
+    optionally ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``,
+    ``max_g``; an option given applies to every row (as for
+    :func:`deathsphere.orbit_input`).  Each request gives its intervals,
+    numbered by ``input_row``; a bad line, or a body other than a wheel, is
+    one ``invalid`` row with the reason."""
+    from deathsphere.inputs import ALIASES
+    from deathsphere.model import REQUEST_FIELDS, make_requests
+    from deathsphere.results.limits import LIMITS_FIELDS, limits_rows
+
+    overrides = {}
+    if body is not None:
+        overrides["body"] = checked_choice("body", body, BODIES)
+    if side is not None:
+        overrides["side"] = checked_choice("side", side, SIDES)
+    for name, value in (("theta", theta), ("a", a), ("r", sphere_radius(r, diameter)), ("k", k), ("g", g),
+                        ("mu", mu), ("max_g", max_g)):
+        value = one_default(name, value)
+        if value is not None:
+            overrides[name] = value
+    fields = {name: REQUEST_FIELDS[name] for name in LIMITS_FIELDS}
+    reader = request_reader(source, fields, overrides, ALIASES, ())
+    chunk_size = int(checked_scalar("chunk_size", chunk_size))
+
+    def work(req):
+        return limits_rows(req, highest=False)
+    return Chunks((n, work(req)) for n, req in input_requests(reader, chunk_size, make_requests))

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import numpy as np
+
 from deathsphere import params
 from deathsphere.api.arguments import (
     INF,
@@ -9,9 +11,11 @@ from deathsphere.api.arguments import (
     G,
     R,
     checked_choice,
+    checked_flag,
     checked_optional,
     checked_scalar,
     checked_setup,
+    sphere_radius,
 )
 from deathsphere.params import ParameterError
 from deathsphere.table import Table
@@ -31,7 +35,8 @@ FRAMES = ("turning", "lab")
 def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
              omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
              periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
-             atol: float | None = None, frame: str = "turning", max_steps=1_000_000) -> tuple[Table, Table]:
+             atol: float | None = None, frame: str = "turning", max_steps=1_000_000, speed=None,
+             diameter=None) -> tuple[Table, Table]:
     """Integrate the exact equations of motion from a steady orbit: ``deathsphere simulate``.
 
     Beyond the paper (docs/simulation.md): the Newton-Euler equations of a
@@ -45,6 +50,12 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
         Polar angle of the contact point [deg] (vertical: the cone angle).
     alpha : float, optional
         Wheel: tilt of the steady orbit [deg].
+    speed, omega : float, optional
+        Wheel: instead of ``alpha``, the centre speed [m/s] or the orbital
+        rate [rad/s] of the steady orbit; its tilt is the root ``branch``
+        (0 first, in increasing alpha) of eq. (29) solved for it.
+    diameter : float, optional
+        The sphere's diameter instead of ``r``.
     body : {"wheel", "sphere"}
     side, a, r, k, g, mu : as for :func:`orbit` (k > 0); the run stops with
         ``slips`` when the friction needed exceeds ``mu``.
@@ -91,14 +102,14 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
     return prepare_simulation(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3,
                               omega=omega, branch=branch, vertical=vertical, v_top=v_top, perturb=perturb,
                               periods=periods, points_per_period=points_per_period, method=method, rtol=rtol,
-                              atol=atol, frame=frame, max_steps=max_steps).run()
+                              atol=atol, frame=frame, max_steps=max_steps, speed=speed, diameter=diameter).run()
 
 
 def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
                        mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
                        perturb=0.0, periods=20.0, points_per_period=100, method: str = "DOP853",
                        rtol: float = 1e-10, atol: float | None = None, frame: str = "turning",
-                       record_states: bool = False, max_steps=1_000_000):
+                       record_states: bool = False, max_steps=1_000_000, speed=None, diameter=None):
     """The validated :class:`deathsphere.simulation.Simulation` behind
     :func:`simulate` (same parameters), not yet run: for streaming the time
     series chunk by chunk (``sim.chunks()``, then ``sim.summary()``), as the
@@ -113,10 +124,12 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
     """
     from deathsphere import simulation
 
-    setup = checked_setup(body, side, a, r, k, g, mu)
+    setup = checked_setup(body, side, a, sphere_radius(r, diameter), k, g, mu)
     theta = checked_scalar("theta", theta)
-    alpha, omega3, omega, v_top = (None if v is None else checked_scalar(name, v) for name, v in
-                                   (("alpha", alpha), ("omega3", omega3), ("omega", omega), ("v_top", v_top)))
+    alpha, omega3, omega, v_top, speed = (
+        None if v is None else checked_scalar(name, v) for name, v in
+        (("alpha", alpha), ("omega3", omega3), ("omega", omega), ("v_top", v_top), ("speed", speed)))
+    vertical, record_states = checked_flag("vertical", vertical), checked_flag("record_states", record_states)
     perturb, periods = checked_scalar("perturb", perturb), checked_scalar("periods", periods)
     points_per_period = int(checked_scalar("points_per_period", points_per_period))
     method = checked_choice("method", method, METHODS_LOWER)
@@ -124,8 +137,14 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
     frame = checked_choice("frame", frame, FRAMES)
     rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
     max_steps = int(checked_scalar("max_steps", max_steps))
-    if isinstance(branch, bool) or branch not in (0, 1):
+    if setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None):
+        # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved), the root ``branch``
+        alpha = _tilt_for(setup, theta, speed, omega, branch)
+        omega = None
+    elif isinstance(branch, bool) or branch not in (0, 1):
         raise ParameterError(f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
+    elif speed is not None:
+        raise ParameterError("speed is an input for a wheel's horizontal orbit", "speed")
     # which inputs each kind of run takes (the command line's rules, in words
     # naming the parameters of this function)
     if setup.body == "particle":
@@ -136,7 +155,7 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
     elif v_top is not None:
         raise ParameterError("v_top is for vertical orbits (vertical=True)")
     elif setup.body == "wheel" and (alpha is None or omega3 is not None or omega is not None):
-        raise ParameterError("a wheel's steady orbit needs alpha (deg), and no omega3 or omega")
+        raise ParameterError("a wheel's steady orbit needs alpha (deg) or its speed or rate (no omega3)")
     elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
         raise ParameterError("a sphere's steady orbit needs exactly one of omega3 and omega (no alpha)")
     if setup.k == 0:
@@ -155,3 +174,18 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
     except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
         raise ParameterError(str(exc)) from None
     return sim
+
+
+def _tilt_for(setup, theta: float, speed, omega, branch) -> float:
+    """The tilt [deg] of a wheel's orbit at ``theta`` with this speed or rate:
+    root number ``branch`` of eq. (29) (as ``orbit`` numbers them)."""
+    rows = setup.orbit(theta, speed=speed, omega=omega, stability=False)
+    found = [row for row in rows if row["branch"] is not None]
+    what = "speed" if speed is not None else "rate"
+    if not found:
+        raise ParameterError(f"no tilt alpha gives this {what} at theta = {theta:g} deg (eq. 29 has no root)",
+                             "speed" if speed is not None else "omega")
+    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < len(found):
+        raise ParameterError(f"branch must be one of the {len(found)} tilts that give this {what} "
+                             f"(0..{len(found) - 1}; got {branch!r})", "branch")
+    return float(found[int(branch)]["alpha_deg"])

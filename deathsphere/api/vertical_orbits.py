@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from deathsphere.api.arguments import (
     INF,
     A,
@@ -14,12 +16,15 @@ from deathsphere.api.arguments import (
     checked_array,
     checked_axis,
     checked_choice,
+    checked_flag,
     checked_grid_size,
     checked_scalar,
     checked_setup,
+    checked_statuses,
     is_given,
     one_default,
     raise_if_all_invalid,
+    sphere_radius,
 )
 from deathsphere.api.streams import (
     Chunks,
@@ -47,7 +52,7 @@ POINT_ROWS = 65536
 
 
 def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5, g=G, mu=INF,
-             points=None, stability: bool = True) -> Table:
+             diameter=None, points=None, only=None, stability: bool = True) -> Table:
     """Vertical orbits of a wheel: ``deathsphere vertical``.
 
     McDonald (1993) sec. 2.2.1: contact all the way round, eq. (28a); the
@@ -106,15 +111,20 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
     )
 
     side = checked_choice("side", side, SIDES)
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    r = sphere_radius(r, diameter)
     given = {"theta": theta, "v_top": v_top, "phidot_top": phidot_top, "a": a, "r": r, "k": k, "g": g, "mu": mu}
     shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
     n = math.prod(shape)
     req = vertical_requests(n, side=side, **flat)
     if points is None:
-        return Table(raise_if_all_invalid(evaluate_vertical(req, stability=bool(stability))).columns, shape=shape)
-    points = int(checked_scalar("points", points))
-    table = raise_if_all_invalid(vertical_points(req, points))
-    return Table(table.columns, shape=shape + (points,)) if len(table) == n * points else table
+        table = Table(raise_if_all_invalid(evaluate_vertical(req, stability=stability)).columns, shape=shape)
+    else:
+        points = int(checked_scalar("points", points))
+        table = raise_if_all_invalid(vertical_points(req, points))
+        if len(table) == n * points:
+            table = Table(table.columns, shape=shape + (points,))
+    return table if keep is None else table[np.isin(table["status"], keep)]
 
 
 def _vertical_setup(side, a, r, k, g, mu) -> dict:
@@ -123,19 +133,23 @@ def _vertical_setup(side, a, r, k, g, mu) -> dict:
     return dict(side=setup.side, a=setup.a, r=setup.r, k=setup.k, g=setup.g, mu=setup.mu)
 
 
-def _vertical_work(points: int | None, stability: bool):
+def _vertical_work(points: int | None, stability: bool, keep=None):
     """What one batch of vertical requests becomes: summary rows, or the
-    orbit point by point in slices of at most :data:`POINT_ROWS` rows."""
+    orbit point by point in slices of at most :data:`POINT_ROWS` rows
+    (only the rows whose status is in ``keep``, if given)."""
     from deathsphere.results.vertical import evaluate_vertical, vertical_points
 
+    def kept(table):
+        return table if keep is None else table[np.isin(table["status"], keep)]
+
     if points is None:
-        return lambda batches: ((n, evaluate_vertical(req, stability=stability)) for n, req in batches)
+        return lambda batches: ((n, kept(evaluate_vertical(req, stability=stability))) for n, req in batches)
 
     def sliced(batches):
         for n, req in batches:
             for start in range(0, points, POINT_ROWS):
                 last = start + POINT_ROWS >= points
-                yield (n if last else 0), vertical_points(req, points, start, start + POINT_ROWS)
+                yield (n if last else 0), kept(vertical_points(req, points, start, start + POINT_ROWS))
     return sliced
 
 
@@ -144,7 +158,7 @@ def _vertical_chunk(points: int | None) -> int:
 
 
 def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5, g=G, mu=INF,
-                   points=None, stability: bool = True) -> Chunks:
+                   diameter=None, points=None, only=None, stability: bool = True) -> Chunks:
     """Every combination of cone angles and top speeds, chunk by chunk:
     ``deathsphere vertical`` (the physics of :func:`vertical`).
 
@@ -154,7 +168,7 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
         Axes of the grid (theta outer), as for :func:`sweep`: values,
         arrays, ``"start:stop:step"`` text or a list mixing them.  Give
         exactly one of ``v_top`` [m/s] and ``phidot_top`` [rad/s].
-    side, a, r, k, g, mu, points, stability : as for :func:`vertical` (one value each).
+    side, a, r, diameter, k, g, mu, points, only, stability : as for :func:`vertical` (one value each).
 
     Returns
     -------
@@ -171,8 +185,9 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
     """
     from deathsphere.results.vertical import vertical_requests
 
-    fixed = _vertical_setup(side, a, r, k, g, mu)
+    fixed = _vertical_setup(side, a, sphere_radius(r, diameter), k, g, mu)
     points = None if points is None else int(checked_scalar("points", points))
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
     if not is_given(theta):
         raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
                              missing=True)
@@ -183,18 +198,19 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
     axes = {"theta": checked_axis("theta", theta), key: checked_axis(key, value)}
     total = checked_grid_size(axes)
     batches = grid_requests(axes, _vertical_chunk(points), vertical_requests, fixed)
-    return Chunks(_vertical_work(points, bool(stability))(batches), total)
+    return Chunks(_vertical_work(points, stability, keep)(batches), total)
 
 
-def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5,
-                   g=G, mu=INF, points=None, stability: bool = True) -> Chunks:
+def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None, a=None, r=None, k=None,
+                   g=None, mu=None, diameter=None, points=None, only=None, stability: bool = True) -> Chunks:
     """Vertical orbits of the requests in a CSV file: ``deathsphere vertical --input FILE``.
 
     As :func:`orbit_input`, for :func:`vertical`: the header names
     ``theta`` and ``v_top`` or ``phidot_top`` (and optionally ``side``,
-    ``a``, ``r``, ``k``, ``g``, ``mu``); the keyword arguments are the
-    defaults for a missing column or an empty cell (one value each).  A
-    result CSV of ``vertical`` is read too (``v_cm_m_s`` is the top speed).
+    ``a``, ``r``, ``k``, ``g``, ``mu``); a keyword argument given applies
+    to every row, over the file's column (one value each); one not given
+    takes the file's value, else its default (k = 0.5).  A result CSV of
+    ``vertical`` is read too (``v_cm_m_s`` is the top speed).
 
     Examples
     --------
@@ -208,12 +224,14 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side: str
     from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
     from deathsphere.results.vertical import VERTICAL_FIELDS, vertical_requests
 
-    defaults = _vertical_setup(side, a, r, k, g, mu)
     points = None if points is None else int(checked_scalar("points", points))
-    for name, value in (("theta", theta), ("v_top", v_top), ("phidot_top", phidot_top)):
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    overrides = {} if side is None else {"side": checked_choice("side", side, SIDES)}
+    for name, value in (("theta", theta), ("v_top", v_top), ("phidot_top", phidot_top), ("a", a),
+                        ("r", sphere_radius(r, diameter)), ("k", k), ("g", g), ("mu", mu)):
         value = one_default(name, value)
         if value is not None:
-            defaults[name] = value
-    reader = request_reader(source, VERTICAL_FIELDS, defaults, VERTICAL_ECHO, VERTICAL_COLUMNS)
+            overrides[name] = value
+    reader = request_reader(source, VERTICAL_FIELDS, overrides, VERTICAL_ECHO, VERTICAL_COLUMNS)
     batches = input_requests(reader, _vertical_chunk(points), vertical_requests)
-    return Chunks(_vertical_work(points, bool(stability))(batches))
+    return Chunks(_vertical_work(points, stability, keep)(batches))

@@ -28,7 +28,7 @@ from deathsphere.exitcodes import ExitCode
 from deathsphere.params import ParameterError
 from deathsphere.writers.stream import FORMATS, write_csv, write_json, write_ndjson
 
-CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
+CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 80}
 
 
 def stdout_console():

@@ -7,18 +7,23 @@ import click
 from deathsphere import api
 from deathsphere.cli.base import (
     OutputPath,
-    body_options,
     choose_format,
     cli,
     emit,
     fail,
     given,
-    number_option,
     one_line,
-    output_options,
     progress,
     stderr_console,
     stdout_console,
+)
+from deathsphere.cli.options import (
+    body_option,
+    output_options,
+    param_option,
+    params_options,
+    setup_options,
+    single,
 )
 from deathsphere.table import Table
 
@@ -49,38 +54,30 @@ def _preflight_output(output) -> bool:
 
 
 @cli.command("simulate")
-@number_option("theta", "DEG", "Polar angle of the contact point (vertical orbits: the cone angle, 90 = great "
-               "circle).", required=True)
-@number_option("alpha", "DEG", "Wheel: tilt of the steady orbit, any angle (205 = -155).")
-@number_option("omega3", "RAD_S", "Sphere: spin about the contact normal.")
-@number_option("omega", "RAD_S", "Sphere: the signed orbital rate instead.")
-@click.option("--branch", type=click.IntRange(0, 1), default=0, show_default=True,
-              help="Sphere with --omega3: root of eq. 55 (0 slow, 1 fast).")
+@param_option("theta", required=True, help="Polar angle of the contact point (a vertical orbit: the cone angle, "
+              "90 = great circle).")
+@params_options("alpha", "speed", "omega", "omega3")
+@single("--branch", type=click.IntRange(0, None), default=0,
+        help="Which orbit when several give the request: a sphere with --omega3, the root of eq. 55 (0 slow, "
+             "1 fast); a wheel with --speed or --omega, the tilt (0 first, in increasing alpha) [default: 0].")
 @click.option("--vertical", is_flag=True, help="A vertical orbit of a wheel, started at the top with --v-top.")
-@number_option("v_top", "M_S", "Vertical: speed at the top, >= 0.")
-@number_option("perturb", "DEG", "Kick off the steady orbit [deg], -60..60: the wheel tilted by this about its "
-               "direction of travel (a sphere: its contact point moved this far down the meridian); rolling and "
-               "contact still hold.", None, "0")
-@number_option("periods", "N", "How long: periods of the steady orbit (vertical: laps), > 0.", None, "20")
-@number_option("points_per_period", "N", "Output rows per period, 2..100000.", None, "100")
-@click.option("--method", type=click.Choice(api.METHODS, case_sensitive=False), default="DOP853",
-              show_default=True, help="scipy.integrate.solve_ivp method.")
-@number_option("rtol", "TOL", "Relative tolerance, 2.22e-14 (100 eps, the least solve_ivp honours)..1e-2.", None,
-               "1e-10")
-@number_option("atol", "TOL", "Absolute tolerance per scaled component, 1e-16..1.", None, "= rtol")
-@number_option("max_steps", "N", "Step budget: a run estimated to need more (a body spinning far faster than it "
-               "orbits, small a/r) is refused before it starts, with the estimate.", None, "1e6")
-@click.option("--frame", type=click.Choice(api.FRAMES), default="turning", show_default=True,
-              help="Integrate in the frame turning with the steady orbit, or in the lab.")
+@params_options("v_top", "perturb", "periods", "points_per_period")
+@single("--method", type=click.Choice(api.METHODS, case_sensitive=False), default="DOP853",
+        help="scipy.integrate.solve_ivp method [default: DOP853].")
+@params_options("rtol", "atol", "max_steps")
+@single("--frame", type=click.Choice(api.FRAMES), default="turning",
+        help="Integrate in the frame turning with the steady orbit, or in the lab [default: turning].")
 @click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
-@click.option("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
-              help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), "
-                   "or write the 3-D view: .html (interactive, self-contained), .gif (plot extra), "
-                   ".mp4 (plot extra and ffmpeg).")
-@body_options(bodies=("wheel", "sphere"))
+@single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
+        help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), or write "
+             "the 3-D view: .html (interactive, self-contained), .gif (plot extra), .mp4 (plot extra and "
+             "ffmpeg).")
+@body_option(("wheel", "sphere"))
+@setup_options()
 @output_options()
-def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, perturb, periods, points_per_period,
-                     method, rtol, atol, max_steps, frame, summary_only, output, body, side, a, r, k, g, mu, fmt):
+def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
+                     points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, body, side, a,
+                     r, diameter, k, g, mu, fmt):
     """Integrate the exact equations of motion from a steady orbit (beyond the paper).
 
     The rigid-body equations of a wheel or sphere rolling without slipping
@@ -99,6 +96,7 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
       deathsphere simulate --theta 90 --alpha 80 --perturb 1e-4    (unstable: loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
+      deathsphere simulate --theta 90 --speed 40km/h --diameter 16ft
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output orbit.html   (3-D view)
     """
     from deathsphere.render.simulation_view import simulation_view
@@ -106,7 +104,8 @@ def simulate_command(theta, alpha, omega3, omega, branch, vertical, v_top, pertu
     view = output is not None and _preflight_output(output)
     sim = api.prepare_simulation(
         theta, branch=branch, vertical=vertical, method=method, frame=frame, record_states=view,
-        **given(alpha=alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3, omega=omega,
+        **given(alpha=alpha, speed=speed, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
+                omega3=omega3, omega=omega,
                 v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
                 atol=atol, max_steps=max_steps))
     fmt = choose_format(fmt)

@@ -1,47 +1,84 @@
-"""``deathsphere stability``: one orbit's exact stability beside the paper's
-results (:func:`deathsphere.api.stability`)."""
+"""``deathsphere stability``: orbits' exact stability beside the paper's
+results (:func:`deathsphere.api.stability`, :func:`deathsphere.api.stability_input`)."""
 
 from __future__ import annotations
 
 from deathsphere import api
 from deathsphere.cli.base import (
-    body_options,
     choose_format,
     cli,
     emit,
+    finish,
     given,
-    number_option,
-    output_options,
     stdout_console,
+    stream,
+)
+from deathsphere.cli.options import (
+    body_option,
+    input_option,
+    output_options,
+    param_option,
+    params_options,
+    setup_options,
 )
 
 
 @cli.command("stability")
-@number_option("theta", "DEG", "Polar angle of the orbit, 0..180.", required=True)
-@number_option("alpha", "DEG", "Tilt of the wheel, any angle (205 = -155).", required=True)
-@body_options(bodies=("wheel",))
+@param_option("theta", multiple=True, required=True)
+@params_options("alpha", "speed", "omega", "omega3", multiple=("alpha", "speed", "omega", "omega3"))
+@body_option()
+@setup_options()
+@input_option("theta, alpha, speed, omega, omega3, body, side, a, r, k, g, mu")
 @output_options()
-def stability_command(theta, alpha, side, a, r, k, g, mu, fmt):
-    """Exact stability of a wheel's horizontal orbit, and the paper's results beside it.
+def stability_command(theta, alpha, speed, omega, omega3, body, side, a, r, diameter, k, g, mu, input, fmt):
+    """Exact stability of horizontal orbits, and the paper's results beside it.
 
-    The exact verdict, growth rate and the two nutation frequencies come from
-    the equations of motion linearised about the orbit (docs/stability.md).
-    Then each of the paper's results -- the equator (eqs. 133-138), small
-    wheels (eq. 207), near the poles (eq. 208) -- as printed and as
-    corrected, whether its premise holds here, and its deviation from the
-    exact value.
+    The orbits are those orbit gives for the same options.  For each: the
+    exact verdict, growth rate and the two nutation frequencies from the
+    equations of motion linearised about the orbit (docs/stability.md);
+    then, for a wheel, each of the paper's results -- the equator (eqs.
+    133-138), small wheels (eq. 207), near the poles (eq. 208) -- as
+    printed and as corrected, whether its premise holds here, and its
+    deviation from the exact value.
 
     \b
     Examples:
       deathsphere stability --theta 90 --alpha 45
       deathsphere stability --theta 90 --alpha 80      (unstable: the equator claim fails)
       deathsphere stability --theta 60 --alpha 10 -a 0.03 --format csv
+      deathsphere stability --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere stability --body sphere --theta 60 --omega3 80
     """
-    table = api.stability(**given(theta=theta, alpha=alpha, side=side, a=a, r=r, k=k, g=g, mu=mu))
+    options = given(body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
+    orbit = given(theta=theta, alpha=alpha, speed=speed, omega=omega, omega3=omega3)
     fmt = choose_format(fmt)
+    if input is not None:
+        finish(stream(api.stability_input(input, **orbit, **options), fmt, label="stability",
+                      title="Stability of each orbit", view=_views if fmt == "table" else None))
+        return
+    table = api.stability(**_grid(orbit), **options)
     if fmt == "table":
-        from deathsphere.render.paper_views import stability_view
-
-        stdout_console().print(stability_view(table))
+        stdout_console().print(_views(table))
     else:
         emit([table], fmt)
+
+
+def _grid(orbit: dict) -> dict:
+    """The command line's values (text, perhaps ranges or with units) as the
+    API's arrays: theta down, the orbit's other input across (every
+    combination, as orbit evaluates them)."""
+    from deathsphere.api.arguments import checked_axis
+
+    grid = {name: checked_axis(name, list(values)).values() for name, values in orbit.items()}
+    return {name: (values[:, None] if name == "theta" else values[None, :]) for name, values in grid.items()}
+
+
+def _views(table, total_rows=None):
+    """One view per orbit of a report (rows grouped by input_row and branch)."""
+    from rich.console import Group
+
+    from deathsphere.render.paper_views import stability_view
+
+    keys = list(zip(table["input_row"].tolist(), table["branch"].tolist()))
+    starts = [i for i in range(len(keys)) if i == 0 or keys[i] != keys[i - 1]] + [len(keys)]
+    return Group(*(stability_view(table[starts[j]:starts[j + 1]]) for j in range(len(starts) - 1)))

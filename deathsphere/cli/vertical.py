@@ -4,33 +4,30 @@
 from __future__ import annotations
 
 from deathsphere import api
-from deathsphere.cli.base import (
-    body_options,
-    choose_format,
-    cli,
-    finish,
-    given,
+from deathsphere.cli.base import choose_format, cli, finish, given, stream
+from deathsphere.cli.options import (
     input_option,
-    number_option,
+    only_option,
     output_options,
+    param_option,
+    params_options,
+    setup_options,
     stability_option,
-    stream,
-    values_option,
 )
 
 
 @cli.command("vertical", short_help="Vertical orbit of a wheel: contact, forces, friction, worst point, lap time.")
-@values_option("theta", "DEG", "Cone angle of the orbit about the horizontal axis, 0..180 (90 = a vertical "
-               "great circle).")
-@values_option("v_top", "M_S", "Speed of the wheel's centre at the top, >= 0.")
-@values_option("phidot_top", "RAD_S", "Orbital rate at the top, >= 0.")
-@body_options(bodies=("wheel",))
-@number_option("points", "N", "Print the orbit point by point at N azimuths phi from the top (0) to 360 deg "
-               "(2..1e6).")
+@param_option("theta", multiple=True, help="Cone angle of the orbit about the horizontal axis, 0..180 (90 = a "
+              "vertical great circle).")
+@params_options("v_top", "phidot_top", multiple=("v_top", "phidot_top"))
+@setup_options()
+@param_option("points")
 @input_option("theta, v_top or phidot_top, side, a, r, k, g, mu")
+@only_option(api.STATUSES)
 @stability_option(help="Exact stability by Floquet analysis over one lap (docs/stability.md).")
 @output_options()
-def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, input, stability, fmt):
+def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, points, input, only, stability,
+                     fmt):
     """Vertical orbit of a wheel: contact all round (eq. 28a), forces and friction (eqs. 27-28b).
 
     Reports the least top speed for contact, the normal force and friction
@@ -46,12 +43,12 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, k, g, mu, points, inp
       deathsphere vertical --theta 90 --v-top 6 --points 13 --format csv
       deathsphere vertical --side outside --theta 90 --v-top 0
     """
-    options = given(theta=theta, v_top=v_top, phidot_top=phidot_top, side=side, a=a, r=r, k=k, g=g, mu=mu,
-                    points=points)
+    options = given(theta=theta, v_top=v_top, phidot_top=phidot_top, side=side, a=a, r=r, diameter=diameter, k=k,
+                    g=g, mu=mu, points=points)
     if input is not None:
-        chunks = api.vertical_input(input, stability=stability, **options)
+        chunks = api.vertical_input(input, stability=stability, only=only or None, **options)
     else:
-        chunks = api.vertical_sweep(stability=stability, **options)
+        chunks = api.vertical_sweep(stability=stability, only=only or None, **options)
     fmt = choose_format(fmt)
     title, view = "Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)", None
     if points is None and fmt == "table":

@@ -1,7 +1,8 @@
 """Status and reason codes shared by every configuration.
 
 A status names the *first* condition an orbit fails, in the order of the
-contract (docs/contract.md): fit, real rotation rate, contact, friction.  Each status
+contract (docs/contract.md): fit, real rotation rate, contact, friction,
+g-load (``over_g``, applied by the model to an orbit that is otherwise ok).  Each status
 carries a reason code whose words live in :data:`REASONS`; physics functions
 return small integer arrays, and only the model turns them into text.
 """
@@ -18,6 +19,7 @@ class Status(IntEnum):
     NO_CONTACT = 3
     SLIPS = 4
     INVALID = 5
+    OVER_G = 6
 
     @property
     def label(self) -> str:
@@ -53,6 +55,7 @@ class Reason(IntEnum):
     SPHERE_K_ZERO = 22
     PARTICLE_OUTSIDE_BELOW_EQUATOR = 23
     NO_ALPHA_FOR_RATE = 24
+    OVER_G = 25
 
 
 REASONS = {
@@ -81,6 +84,7 @@ REASONS = {
     Reason.SPHERE_K_ZERO: "k = 0: omega_3 drops out of eq. 55 and cannot be found from Omega",
     Reason.PARTICLE_OUTSIDE_BELOW_EQUATOR: "outside the sphere below the equator the normal force would have to pull (N/m = g/cos(theta) < 0)",
     Reason.NO_ALPHA_FOR_RATE: "no tilt alpha in the fit range gives this speed or rate (eq. 29 has no root)",
+    Reason.OVER_G: "the g-load accel_g (eq. 36) exceeds the largest given (max_accel_g)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -15,7 +15,12 @@ import math
 
 import numpy as np
 
-from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside, r_prime_from_trig
+from deathsphere.physics.geometry import (
+    SINGULAR,
+    fits_inside,
+    fits_outside,
+    r_prime_from_trig,
+)
 from deathsphere.physics.status import Reason, Status, first_failure
 
 #: horizontal_orbit evaluates larger inputs in pieces of this many orbits:

@@ -28,7 +28,6 @@ import numpy as np
 
 from deathsphere.constants import BOUNDARY_LABELS
 
-
 #: Character and legend text of each boundary, in drawing order (later wins).
 MARKS = {name: (ch, BOUNDARY_LABELS[name][0])
          for name, ch in (("eq29", "="), ("eq0", "#"), ("eq33", "*"), ("mu", "m"), ("max_g", "g"))}

@@ -15,12 +15,10 @@ matplotlib is optional (:mod:`deathsphere.render.figures`).
 
 from __future__ import annotations
 
-
 import numpy as np
 
 from deathsphere.constants import BOUNDARY_LABELS
 from deathsphere.render.figures import figure_format, import_matplotlib
-
 
 #: name -> (legend label inside, legend label outside, matplotlib style)
 CURVES = {

@@ -24,7 +24,6 @@ from deathsphere.render.terminal_table import (
     status_text,
 )
 
-
 #: (column, label, unit, source) for the one-orbit view.
 ORBIT_FIELDS = (
     ("r_prime_m", "r' centre to axis", "m", "eq. 8b"),

@@ -7,10 +7,14 @@ from __future__ import annotations
 from rich.console import Group
 from rich.markup import escape
 
+from deathsphere.render.terminal_table import (
+    STABILITY_STYLE,
+    Column,
+    FitTable,
+    format_number,
+)
 from deathsphere.table import Table
-from deathsphere.render.terminal_table import STABILITY_STYLE, Column, FitTable, format_number
 from deathsphere.table.cells import decimals
-
 
 #: The acceleration trio of Table 1 ("No. of g's" printed beside both
 #: readings of it) goes first, as a block: one of the three alone says

@@ -12,8 +12,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.render.figures import (
+    FORMATS,
+    PlotExtraMissing,
+    figure_format,
+    import_matplotlib,
+)
 from deathsphere.table import Table
-from deathsphere.render.figures import FORMATS, PlotExtraMissing, figure_format, import_matplotlib
 
 __all__ = ["plot_simulation", "PlotExtraMissing", "FORMATS", "MAX_LEGEND"]
 

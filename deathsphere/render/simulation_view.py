@@ -5,9 +5,8 @@ from __future__ import annotations
 from rich import box
 from rich.table import Table as RichTable
 
-from deathsphere.table import Table
 from deathsphere.render.terminal_table import format_number, is_undefined, row_record
-
+from deathsphere.table import Table
 
 #: (column, label, unit) of the simulation summary view.
 SIMULATION_FIELDS = (

@@ -50,7 +50,9 @@ _STABILITY_CHUNK = 64
 def _stability_part(theta_deg: np.ndarray, a_over_r: float, k: float, outside: bool, mu: float,
                     max_g: float) -> np.ndarray:
     """The stability boundary at a block of thetas (one unit of parallel work)."""
-    from deathsphere.physics.stability import stability_boundary_alphas  # only map --stability needs it
+    from deathsphere.physics.stability import (
+        stability_boundary_alphas,  # only map --stability needs it
+    )
 
     return stability_boundary_alphas(np.deg2rad(theta_deg), a_over_r, 1.0, k, outside=outside, mu=mu,
                                      max_g=max_g)
@@ -146,3 +148,96 @@ def _highest_note(h) -> str:
         return ("a bound approached but not reached: the least speed grows without limit as theta "
                 "approaches theta_deg (v_cm_m_s empty)")
     return "v_cm_m_s is the least speed in the limit theta -> theta_deg"
+
+
+#: The request fields of ``limits`` (an --input file's columns).
+LIMITS_FIELDS = ("body", "side", "theta", "a", "r", "k", "g", "mu", "max_g")
+#: Appended to the interval columns when the rows answer several requests.
+REQUEST_COLUMNS = ("input_row", "body", "side", "status", "reason")
+#: Why a request that is not a wheel's gets no limits.
+NOT_A_WHEEL = ("limits analyses the tilt alpha of a wheel: a sphere's tilt is fixed by theta and a particle "
+               "has none (use orbit)")
+
+
+def limits_rows(req: dict, highest: bool) -> Table:
+    """The limits of every request of ``req`` (flat arrays of
+    :data:`LIMITS_FIELDS`, ``input_row`` and ``invalid`` reasons, as the
+    model's requests), in request order: with ``highest``, the highest orbit
+    of each; else the intervals of alpha at each request's theta (several
+    rows for one request with several intervals).  Requests are grouped by
+    their setup, one vectorised root search per distinct setup; a request
+    that is invalid, or not a wheel's, is one row with the reason."""
+    from deathsphere.model import validate_requests
+
+    n = len(req["input_row"])
+    reason = req["invalid"].copy()
+    probe = dict(req)
+    probe["alpha"] = np.zeros(n)  # a tilt, so that the wheel's combination rules pass
+    for name in ("omega3", "omega", "speed"):
+        probe[name] = np.full(n, np.nan)
+    if highest:
+        probe["theta"] = np.full(n, 90.0)
+    wheel = req["body"] == "wheel"
+    # a known body that is not a wheel: the reason is that limits are a wheel's
+    reason = np.where((reason == "") & ~wheel & np.isin(req["body"], ("sphere", "particle")), NOT_A_WHEEL, reason)
+    reason = np.where(reason == "", validate_requests(probe), reason)
+    req = {**req, "k": probe["k"]}  # the validator fills k by body
+    ok = reason == ""
+    keys = np.column_stack([req[name] for name in ("a", "r", "k", "g", "mu", "max_g")]
+                           + [(req["side"] == "outside").astype(float)])
+    parts, order = [], []
+    rows = np.flatnonzero(ok)
+    if rows.size:
+        unique, inverse = np.unique(keys[rows], axis=0, return_inverse=True)
+        for u, (a, r, k, g, mu, max_g, outside) in enumerate(unique):
+            sub = rows[inverse.reshape(-1) == u]
+            setup = Setup(side="outside" if outside else "inside", a=a, r=r, k=k, g=g, mu=mu)
+            if highest:
+                one = highest_orbit_table(setup, max_g)
+                table = Table({name: np.repeat(col, sub.size) for name, col in one.columns.items()})
+                source = sub
+            else:
+                table = intervals_table(setup, req["theta"][sub], max_g)
+                source = sub[_request_of(table, req["theta"][sub])]
+            parts.append(table)
+            order.append(source)
+    order = [o.astype(np.int64) for o in order]
+    bad = np.flatnonzero(~ok)
+    template = parts[0] if parts else (highest_orbit_table(Setup(), math.inf) if highest
+                                       else intervals_table(Setup(), np.zeros(1), math.inf))
+    echoed = {"theta_deg": "theta", "a_m": "a", "r_m": "r", "k": "k"}
+    columns = {}
+    for name in template.names:
+        arrays = [np.asarray(t.columns[name]) for t in parts]
+        if bad.size:
+            # a request without limits: its inputs echoed, every result empty
+            kind = np.asarray(template.columns[name]).dtype
+            if name in echoed and not highest or name in ("a_m", "r_m", "k"):
+                filler = req[echoed[name]][bad].astype(float)
+            elif kind.kind == "f":
+                filler = np.full(bad.size, np.nan)
+            else:
+                arrays = [x.astype(object) for x in arrays]
+                filler = np.full(bad.size, None, dtype=object)
+            arrays.append(filler)
+        columns[name] = np.concatenate(arrays) if arrays else np.zeros(0)
+    source = np.concatenate(order + [bad]) if (order or bad.size) else np.zeros(0, dtype=np.int64)
+    pick = np.argsort(source, kind="stable")
+    columns = {name: col[pick] for name, col in columns.items()}
+    src = source[pick]
+    columns["input_row"] = np.asarray(req["input_row"], dtype=np.int64)[src]
+    columns["body"] = req["body"][src].astype(object)
+    columns["side"] = req["side"][src].astype(object)
+    columns["status"] = np.where(reason[src] == "", "ok", "invalid").astype(object)
+    columns["reason"] = reason[src].astype(object)
+    return Table(columns)
+
+
+def _request_of(table: Table, thetas: np.ndarray) -> np.ndarray:
+    """Which of ``thetas`` (the requests of one setup, in order) each row of
+    :func:`intervals_table` answers: its rows come theta by theta, one per
+    interval (one for a theta without any)."""
+    firsts = np.flatnonzero(np.asarray(table.columns["interval"]) <= 1)
+    request = np.zeros(len(table), dtype=np.int64)
+    request[firsts[1:]] = 1
+    return np.cumsum(request)

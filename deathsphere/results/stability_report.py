@@ -9,76 +9,118 @@ and how far it is from the exact value.  Physics:
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from deathsphere import params
-from deathsphere.model import Setup, Table, evaluate, make_requests
+from deathsphere.model import EXACT_METHOD, LIVE_STATUSES
 from deathsphere.physics import stability as exact_stability
+from deathsphere.table import Table
 
+#: The report's columns (appended to, never reordered: input_row, body and
+#: branch came when the report took several orbits at once).
 COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", "applies", "validity",
            "paper", "corrected", "exact", "deviation", "note", "side", "a_m", "r_m", "k", "g_m_s2",
-           "validity_limit")
+           "validity_limit", "input_row", "body", "branch")
 
 _VERDICT = exact_stability.VERDICT_LABELS
 
+#: The exact rows: (quantity, orbit-table column, units).
+_EXACT = (("growth rate, max Re(eigenvalue)", "growth_rate_1_s", "1/s"),
+          ("slow nutation frequency", "freq_slow_rad_s", "rad/s"),
+          ("fast nutation frequency", "freq_fast_rad_s", "rad/s"),
+          ("verdict", "stability", ""))
+_EXACT_NOTE = "docs/stability.md sec. 1 (frequencies in the frame turning with the orbit)"
 
-def _value(x, verdict: bool):
-    x = np.asarray(x).item()
+
+def _cells(values, verdict: bool) -> np.ndarray:
+    """Report cells (object) from a result array: verdict codes as labels, NaN as None."""
+    values = np.asarray(values)
     if verdict:
-        return str(_VERDICT[int(x)])
-    return None if (isinstance(x, float) and math.isnan(x)) else float(x)
+        return np.asarray(_VERDICT, dtype=object)[values.astype(int)]
+    out = values.astype(object)
+    out[np.isnan(values.astype(float))] = None
+    return out
 
 
-def stability_report(setup: Setup, theta_deg: float, alpha_deg: float) -> Table:
-    """Rows: the exact growth rate, nutation frequencies and verdict, then
-    every paper result (``applies`` says whether its premise holds here;
-    ``validity`` is the parameter that decides it: a/r' for small wheels,
-    applying up to SMALL_WHEEL_VALIDITY, and |r'|/a near the poles, applying
-    up to 1, the limit given as ``validity_limit``; ``deviation`` is (paper - exact)/exact, or 1/0 for a verdict
-    that differs/agrees)."""
-    theta, alpha = math.radians(theta_deg), math.radians(params.reduce_angle(alpha_deg))
-    orbit = evaluate(make_requests(1, body="wheel", side=setup.side, theta=theta_deg, alpha=alpha_deg, a=setup.a,
-                                   r=setup.r, k=setup.k, g=setup.g, mu=setup.mu), stability=False)
-    status, reason = str(orbit["status"][0]), str(orbit["reason"][0])
-    exists = status in ("ok", "slips")
-    # without a steady orbit with contact (or at k = 0, where the equations
-    # of motion are singular) there is nothing to linearise about
-    analysed = exists and setup.k > 0
-    why_not = (f"no steady orbit with contact here ({status}: {reason})" if not exists
-               else "not analysed: k = 0 makes the equations of motion singular")
-    exact, results = ({}, {}) if not analysed else exact_stability.compare_with_paper(
-        theta, alpha, setup.a, setup.r, setup.k, setup.g, outside=setup.side == "outside")
-    rows = [{"source": "exact", "equation": "0, 29, 33", "quantity": "orbit status", "units": "",
-             "applies": True, "validity": None, "paper": None, "corrected": None, "exact": status,
-             "deviation": None, "note": reason or "a steady orbit with contact"}]
-    for quantity, key, units in (("growth rate, max Re(eigenvalue)", "growth_rate", "1/s"),
-                                 ("slow nutation frequency", "freq_slow", "rad/s"),
-                                 ("fast nutation frequency", "freq_fast", "rad/s"),
-                                 ("verdict", "verdict", "")):
-        rows.append({"source": "exact", "equation": "2-7b linearised", "quantity": quantity, "units": units,
-                     "applies": analysed, "validity": None, "paper": None, "corrected": None,
-                     "exact": _value(exact[key], key == "verdict") if analysed else None, "deviation": None,
-                     "note": "docs/stability.md sec. 1 (frequencies in the frame turning with the orbit)"
-                     if analysed else why_not})
-    for name, res in results.items():
-        verdict = name.endswith("verdict")
-        validity = np.asarray(res["validity"]).item()
-        rows.append({"source": f"paper: {name.rsplit('_', 1)[0].replace('_', ' ')}", "equation": res["equation"],
-                     "quantity": res["quantity"], "units": res["units"], "applies": bool(res["applies"]),
-                     "validity": None if math.isnan(validity) else validity,
-                     # the premise holds for validity below this (a/r' for small wheels, r'/a near the poles)
-                     "validity_limit": None if math.isnan(validity) else (
-                         exact_stability.SMALL_WHEEL_VALIDITY if "small_wheel" in name else 1.0),
-                     "paper": _value(res["paper"], verdict), "corrected": _value(res["corrected"], verdict),
-                     "exact": _value(res["exact"], verdict),
-                     "deviation": _value(res["deviation"], False), "note": res["note"]})
-    table = {name: np.array([row.get(name) for row in rows], dtype=object) for name in COLUMNS}
-    table["theta_deg"] = np.full(len(rows), float(theta_deg))
-    table["alpha_deg"] = np.full(len(rows), float(alpha_deg))
-    # the orbit's setup echoed, as every command echoes its inputs
-    table["side"] = np.full(len(rows), setup.side, dtype=object)
-    for name, value in (("a_m", setup.a), ("r_m", setup.r), ("k", setup.k), ("g_m_s2", setup.g)):
-        table[name] = np.full(len(rows), float(value))
-    return Table(table)
+def stability_report(orbits: Table) -> Table:
+    """The stability report of every orbit of ``orbits`` (the table of
+    :func:`deathsphere.model.evaluate` with its stability columns), orbit
+    after orbit.
+
+    Each orbit gives the exact rows -- its status, then the growth rate,
+    the two nutation frequencies and the verdict of the exact linearisation
+    (read from the orbit's stability columns) -- and, for a wheel whose
+    orbit exists with contact, every paper result: ``applies`` says whether
+    its premise holds here; ``validity`` is the parameter that decides it
+    (a/r' for small wheels, |r'|/a near the poles), ``validity_limit`` the
+    value up to which it applies; ``deviation`` is (paper - exact)/exact, or
+    1/0 for a verdict that differs/agrees.  A sphere's orbits have only the
+    exact rows (the paper's stability results are the wheel's).  Vectorised:
+    one call of :func:`deathsphere.physics.stability.compare_with_paper`
+    for every wheel orbit.
+    """
+    n = len(orbits)
+    status, reason = orbits["status"].astype(object), orbits["reason"].astype(object)
+    live = np.isin(status, LIVE_STATUSES)
+    analysed = live & (orbits["stability_method"] == EXACT_METHOD)
+    why_not = np.where(live, orbits["stability_method"].astype(object),
+                       [f"no steady orbit with contact here ({s}: {w})" for s, w in zip(status, reason)])
+    blank = np.full(n, None, dtype=object)
+    kinds = [dict(source="exact", equation="0, 29, 33", quantity="orbit status", units="", applies=np.ones(n, bool),
+                  validity=blank, paper=blank, corrected=blank, exact=status, deviation=blank,
+                  note=np.where(reason == "", "a steady orbit with contact", reason), validity_limit=blank,
+                  present=np.ones(n, bool))]
+    for quantity, column, units in _EXACT:
+        cells = orbits[column].astype(object) if column == "stability" else _cells(orbits[column], False)
+        kinds.append(dict(source="exact", equation="2-7b linearised", quantity=quantity, units=units,
+                          applies=analysed, validity=blank, paper=blank, corrected=blank,
+                          exact=np.where(analysed, cells, None), deviation=blank,
+                          note=np.where(analysed, _EXACT_NOTE, why_not), validity_limit=blank,
+                          present=np.ones(n, bool)))
+    wheels = np.flatnonzero(analysed & (orbits["body"] == "wheel"))
+    if wheels.size:
+        theta = np.deg2rad(orbits["theta_deg"][wheels])
+        alpha = np.deg2rad(params.reduce_angle(orbits["alpha_deg"][wheels]))
+        _, results = exact_stability.compare_with_paper(
+            theta, alpha, orbits["a_m"][wheels], orbits["r_m"][wheels], orbits["k"][wheels],
+            orbits["g_m_s2"][wheels], outside=orbits["side"][wheels] == "outside")
+        present = np.zeros(n, bool)
+        present[wheels] = True
+        for name, res in results.items():
+            verdict = name.endswith("verdict")
+
+            def spread(values, fill=None):
+                out = np.full(n, fill, dtype=object)
+                out[wheels] = values
+                return out
+            validity = np.asarray(res["validity"], dtype=float)
+            limit = exact_stability.SMALL_WHEEL_VALIDITY if "small_wheel" in name else 1.0
+            kinds.append(dict(
+                source=f"paper: {name.rsplit('_', 1)[0].replace('_', ' ')}", equation=res["equation"],
+                quantity=res["quantity"], units=res["units"], applies=spread(np.asarray(res["applies"], bool), False),
+                validity=spread(_cells(validity, False)),
+                paper=spread(_cells(res["paper"], verdict)), corrected=spread(_cells(res["corrected"], verdict)),
+                exact=spread(_cells(res["exact"], verdict)), deviation=spread(_cells(res["deviation"], False)),
+                note=res["note"],
+                # the premise holds for validity below this (a/r' for small wheels, r'/a near the poles)
+                validity_limit=spread(np.where(np.isnan(validity), None, limit).astype(object)),
+                present=present))
+    # orbit after orbit: a (orbits x kinds) grid read row-major, rows absent for an orbit dropped
+    present = np.stack([np.broadcast_to(kind["present"], n) for kind in kinds], axis=1).reshape(-1)
+    which = np.repeat(np.arange(n), len(kinds))[present]
+
+    def column(key):
+        grid = np.empty((n, len(kinds)), dtype=object)
+        for j, kind in enumerate(kinds):
+            grid[:, j] = np.broadcast_to(np.asarray(kind[key], dtype=object), n)
+        return grid.reshape(-1)[present]
+    table = {key: column(key) for key in ("source", "equation", "quantity", "units", "applies", "validity",
+                                          "paper", "corrected", "exact", "deviation", "note", "validity_limit")}
+    table["applies"] = table["applies"].astype(bool)
+    for name in ("theta_deg", "alpha_deg", "a_m", "r_m", "k", "g_m_s2"):
+        table[name] = np.asarray(orbits[name], dtype=float)[which]
+    table["side"] = orbits["side"].astype(object)[which]
+    table["body"] = orbits["body"].astype(object)[which]
+    table["input_row"] = np.asarray(orbits["input_row"], dtype=np.int64)[which]
+    table["branch"] = orbits["branch"].astype(object)[which]
+    return Table({name: table[name] for name in COLUMNS})

@@ -18,8 +18,16 @@ import math
 import numpy as np
 
 from deathsphere import params
+from deathsphere.constants import DEFAULT_INERTIA
 from deathsphere.model import COLUMNS as ORBIT_COLUMNS
-from deathsphere.model import NOT_ANALYSED_K0, REQUEST_FIELDS, finite_or_blank, Table, make_requests, validate_requests
+from deathsphere.model import (
+    NOT_ANALYSED_K0,
+    REQUEST_FIELDS,
+    Table,
+    finite_or_blank,
+    make_requests,
+    validate_requests,
+)
 from deathsphere.physics import vertical_orbit
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 
@@ -29,7 +37,9 @@ VERTICAL_FIELDS = {
     "theta": (None, "deg", "cone angle of the orbit about the horizontal axis, 0..180 (90: great circle)"),
     "v_top": (None, "m/s", "speed of the wheel's centre at the top"),
     "phidot_top": (None, "rad/s", "orbital rate at the top"),
-    **{name: REQUEST_FIELDS[name] for name in ("a", "r", "k", "g", "mu")},
+    **{name: REQUEST_FIELDS[name] for name in ("a", "r", "g", "mu")},
+    # a vertical orbit is a wheel's: its inertia factor defaults to the wheel's
+    "k": (DEFAULT_INERTIA["wheel"], *REQUEST_FIELDS["k"][1:]),
 }
 
 #: Summary columns: the orbit contract's first 22 (without omega3/branch),

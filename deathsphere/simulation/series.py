@@ -14,9 +14,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from deathsphere.table import Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.starts import Starts
+from deathsphere.table import Table
 
 __all__ = ["SERIES_COLUMNS", "sample_quantities", "series_rows", "rows_table", "concat_tables", "wrap_angle"]
 

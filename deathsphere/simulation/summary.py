@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.table import Table
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.starts import Starts
 from deathsphere.simulation.status import RunStatus, status_labels
+from deathsphere.table import Table
 
 __all__ = ["SUMMARY_COLUMNS", "Ledger"]
 

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import importlib.util
 import math
-from typing import Iterable
 
 import numpy as np
 

@@ -76,12 +76,19 @@ def test_alpha_intervals_at_theta(run):
     assert beyond[0]["status"] != "ok"
 
 
-def test_limits_and_map_offer_no_body_they_do_not_support(run):
-    # the limits and the map are a wheel's: --body is not offered at all
-    for command in ("limits", "map", "stability", "vertical"):
+def test_body_is_offered_where_it_makes_sense_and_refused_with_the_reason(run):
+    # the map and a vertical orbit are a wheel's: --body is not offered at all
+    for command in ("map", "vertical"):
         res = run(command, "--body", "sphere", "--theta", "60")
         assert res.exit_code == 2 and "No such option '--body'" in res.stderr
-    assert "--body" not in run("limits", "--help").stdout
+    # limits takes --body (one vocabulary) and says why it answers only for a wheel
+    res = run("limits", "--body", "sphere", "--theta", "60")
+    assert res.exit_code == 2 and res.stderr.count("\n") == 1 and "tilt alpha of a wheel" in res.stderr
+    # ... and in a file of requests, such a row is invalid with that reason while the others are answered
+    res = run("limits", "--input", "-", "--format", "csv", input="theta,body\n60,wheel\n60,sphere\n")
+    out = rows(res.stdout)
+    assert res.exit_code == 1 and [r["status"] for r in out] == ["ok", "invalid"]
+    assert "tilt alpha of a wheel" in out[1]["reason"] and out[0]["intervals"] == "1"
 
 
 def test_map_stability_in_the_terminal(run):

@@ -56,8 +56,9 @@ def test_stability_command_table(run):
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--theta", "90"], "--alpha"), (["--theta", "190", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
-    (["--theta", "90", "--alpha", "10", "--body", "sphere"], "No such option '--body'"),
+    (["--theta", "90"], "exactly one of alpha"), (["--theta", "190", "--alpha", "10"], "theta (polar angle) must be 0..180 deg"),
+    (["--theta", "90", "--alpha", "10", "--body", "sphere"], "a sphere needs exactly one of omega3"),
+    (["--theta", "90", "--alpha", "10", "--alpha", "20", "--speed", "7"], "exactly one of alpha"),
 ])
 def test_stability_usage_errors(run, args, words):
     res = run("stability", *args)
@@ -67,3 +68,27 @@ def test_stability_usage_errors(run, args, words):
 def test_vertical_orbits_get_their_stability(run):
     (row,) = rows(run("vertical", "--theta", "90", "--v-top", "6", "--format", "csv").stdout)
     assert row["stability"] == "stable" and row["stability_method"] == "floquet"
+
+
+def test_stability_takes_the_orbit_options_and_reports_each_orbit(run):
+    """--speed (a rider's units too) gives every tilt with that speed, each
+    reported; a sphere gets its exact rows only."""
+    out = rows(run("stability", "--theta", "90", "--speed", "25.2km/h", "--format", "csv").stdout)
+    orbits = {(r["input_row"], r["branch"]) for r in out}
+    assert len(orbits) >= 1 and all(r["body"] == "wheel" for r in out)
+    exact_v = [r for r in out if r["quantity"] == "orbit status"]
+    assert len(exact_v) == len(orbits)
+    sphere = rows(run("stability", "--body", "sphere", "--theta", "60", "--omega3", "80", "--format", "csv").stdout)
+    assert {r["source"] for r in sphere} == {"exact"} and {r["branch"] for r in sphere} == {"0", "1"}
+    # the slow root does not keep contact (nothing to linearise about); the fast one is stable
+    verdicts = [r for r in sphere if r["quantity"] == "verdict"]
+    assert [r["exact"] for r in verdicts] == ["", "stable"] and "no_contact" in verdicts[0]["note"]
+
+
+def test_stability_of_a_grid_is_the_stability_of_each_orbit_alone(run):
+    both = rows(run("stability", "--theta", "90", "--alpha", "45", "--alpha", "80", "--format", "csv").stdout)
+    for i, alpha in enumerate(("45", "80"), 1):
+        alone = rows(run("stability", "--theta", "90", "--alpha", alpha, "--format", "csv").stdout)
+        mine = [r for r in both if r["input_row"] == str(i)]
+        assert [{k: v for k, v in r.items() if k != "input_row"} for r in mine] == \
+            [{k: v for k, v in r.items() if k != "input_row"} for r in alone]

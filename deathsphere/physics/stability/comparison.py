@@ -12,7 +12,11 @@ from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.stability.closed_forms import equator_exact_closed_form
 from deathsphere.physics.stability.horizontal import wheel_stability
 from deathsphere.physics.stability.paper import (
-    equator_paper, near_pole_paper, small_wheel_corrected, small_wheel_paper)
+    equator_paper,
+    near_pole_paper,
+    small_wheel_corrected,
+    small_wheel_paper,
+)
 from deathsphere.physics.stability.verdict import Verdict
 
 __all__ = ["SMALL_WHEEL_VALIDITY", "EQUATOR_TOL", "compare_with_paper"]

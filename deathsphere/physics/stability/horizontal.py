@@ -17,8 +17,13 @@ import numpy as np
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside
 from deathsphere.physics.stability.reduction import (
-    COMPLEX_STEP, complex_step, householder_complement, orthonormal_complement, spectrum,
-    spectrum_from_invariants)
+    COMPLEX_STEP,
+    complex_step,
+    householder_complement,
+    orthonormal_complement,
+    spectrum,
+    spectrum_from_invariants,
+)
 from deathsphere.physics.stability.verdict import Verdict
 from deathsphere.physics.vectors import dot, zcross
 from deathsphere.physics.wheel import omega_squared

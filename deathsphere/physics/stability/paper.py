@@ -15,7 +15,10 @@ import numpy as np
 
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.stability.frequencies import (
-    both_real_positive, quadratic_roots, real_frequencies)
+    both_real_positive,
+    quadratic_roots,
+    real_frequencies,
+)
 from deathsphere.physics.wheel import omega_squared
 
 __all__ = ["vertical_paper", "equator_coefficients", "equator_matrix", "equator_printed_abc",

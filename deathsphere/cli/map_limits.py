@@ -4,26 +4,30 @@ the rider's limits (:func:`deathsphere.api.region`, :func:`~deathsphere.api.regi
 
 from __future__ import annotations
 
-import click
-
 from deathsphere import api
 from deathsphere.cli.base import (
     OutputPath,
-    body_options,
     choose_format,
     cli,
     emit,
     fail,
+    finish,
     given,
-    jobs_option,
-    number_option,
     one_line,
-    output_options,
     progress,
-    stability_option,
     stderr_console,
     stdout_console,
-    values_option,
+    stream,
+)
+from deathsphere.cli.options import (
+    body_option,
+    input_option,
+    jobs_option,
+    output_options,
+    param_option,
+    setup_options,
+    single,
+    stability_option,
 )
 
 #: Figure formats of the map (matplotlib, the plot extra).
@@ -31,19 +35,18 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 
 
 @cli.command("map")
-@body_options(bodies=("wheel",), radii_only=True)
-@number_option("mu", "MU", "Also draw the friction limit mu_required = MU.", None, "none")
-@number_option("max_g", "G", "Also draw the g-load limit accel_g = G.", ("--max-g",), "none")
-@click.option("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
-              help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
-@number_option("step", "DEG", "theta step of the boundary data (--format csv/json), 0.001..10.", None, "0.5")
+@setup_options()
+@param_option("max_g")
+@single("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
+        help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
+@param_option("step")
 @stability_option(default=False, help=(
     "Also show the exact linear stability of each orbit (beyond the paper, docs/stability.md): stable and "
     "unstable parts of the allowed region and the boundary between them.  Wheel only: a rolling sphere "
     "has no tilt alpha (and all its horizontal orbits are stable)."))
 @jobs_option("computing the stability boundary (--format csv/json)")
 @output_options()
-def map_command(side, a, r, k, mu, max_g, output, step, stability, jobs, fmt):
+def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, jobs, fmt):
     """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.
 
     Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
@@ -64,7 +67,7 @@ def map_command(side, a, r, k, mu, max_g, output, step, stability, jobs, fmt):
       deathsphere map --output map.png
       deathsphere map -a 0.9 -r 3 --stability --output map.png
     """
-    options = given(side=side, a=a, r=r, k=k, mu=mu, max_g=max_g)
+    options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     if output is not None:
         from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
         from deathsphere.render.map_figure import plot_map
@@ -90,24 +93,35 @@ def map_command(side, a, r, k, mu, max_g, output, step, stability, jobs, fmt):
 
 
 @cli.command("limits")
-@values_option("theta", "DEG", "Polar angle(s) of the orbit; without it: the highest orbit possible.")
-@number_option("max_g", "G", "Largest centre acceleration the rider takes, in g.", ("--max-g",), "unlimited")
-@body_options(bodies=("wheel",))
+@param_option("theta", multiple=True, help="Polar angle(s) of the orbit; without it: the highest orbit possible.")
+@param_option("max_g")
+@body_option()
+@setup_options()
+@input_option("theta, body, side, a, r, k, g, mu, max_g")
 @output_options()
-def limits_command(theta, max_g, side, a, r, k, g, mu, fmt):
+def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fmt):
     """Which tilts alpha give a feasible orbit at theta, and at what speeds (beyond the paper).
 
     With --theta: the interval(s) of alpha where the wheel fits, Omega^2 > 0
     and it keeps contact, within --mu and --max-g, with the speed range over
     each.  Without --theta: the highest orbit possible (smallest theta) with
-    its alpha and speed.  Method: docs/limits.md.
+    its alpha and speed.  A wheel's tilt is what is chosen: another body is
+    refused (in an --input file, its row is invalid with the reason).
+    Method: docs/limits.md.
 
     \b
     Examples:
       deathsphere limits --theta 60 --mu 1.2
       deathsphere limits --mu 1 --max-g 5
+      deathsphere limits --theta 30:90:10 --diameter 16ft --mu 1 --max-g 4
     """
-    table = api.limits(**given(theta=theta, max_g=max_g, side=side, a=a, r=r, k=k, g=g, mu=mu))
+    options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
+    fmt = choose_format(fmt)
+    if input is not None:
+        finish(stream(api.limits_input(input, **given(theta=theta), **options), fmt, label="limits",
+                      title="Feasible tilts (fit, Omega^2 > 0, contact, mu, g-load)"))
+        return
+    table = api.limits(**given(theta=theta), **options)
     title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, g-load)" if theta else
              "The highest orbit possible (smallest theta with a feasible tilt)")
-    emit([table], choose_format(fmt), title=title)
+    emit([table], fmt, title=title)

@@ -1,0 +1,137 @@
+"""The command line's options, built from the one parameter registry
+(:data:`deathsphere.params.PARAMS`): every command that takes ``--mu`` takes
+the same ``--mu``, with the same flags, help text, metavar and default.
+
+Values are handed to the API as typed (text, perhaps with a unit suffix:
+``--speed 40km/h``); the API checks and converts them, once.  An option that
+takes one value and is given twice is a usage error rather than a silent
+"last one wins" (:func:`single`).
+"""
+
+from __future__ import annotations
+
+import click
+
+from deathsphere.constants import BODIES, SIDES
+from deathsphere.params import PARAMS
+from deathsphere.writers.stream import FORMATS
+
+#: How each kind's help names the unit suffixes it takes.
+UNIT_HINTS = {
+    "length": "m; or ft, in, cm, mm: 8ft",
+    "speed": "m/s; or km/h, mph: 40km/h",
+    "rate": "rad/s; or rpm, deg/s: 30rpm",
+    "angle": "deg; or rad: 0.2rad",
+    "acceleration": "m/s^2",
+}
+
+
+def _once(ctx, param, value):
+    """The one value of an option declared ``multiple`` only so that a
+    second use can be caught: given twice, a usage error naming both."""
+    if value is None or value == ():
+        return param.metadata_default
+    if len(value) > 1:
+        shown = ", ".join(str(v) for v in value)
+        raise click.BadParameter(f"given {len(value)} times ({shown}); it takes one value", ctx=ctx, param=param)
+    return value[0]
+
+
+class SingleOption(click.Option):
+    """An option of one value that refuses to be given twice."""
+
+    def __init__(self, *args, default=None, **kwargs):
+        kwargs.setdefault("callback", _once)
+        super().__init__(*args, multiple=True, **kwargs)
+        self.metadata_default = default
+
+
+def single(*flags, default=None, **kwargs):
+    """``click.option`` for one value, given at most once."""
+    return click.option(*flags, cls=SingleOption, default=default, **kwargs)
+
+
+def _help(name: str, help: str | None, multiple: bool) -> str:
+    p = PARAMS[name]
+    text = help or p.help
+    hint = UNIT_HINTS.get(p.kind)
+    if hint:
+        text += f" [{hint}]"
+    if multiple:
+        text += " Repeat it or give start:stop:step."
+    if p.shown_default is not None:
+        text += f" [default: {p.shown_default}]"
+    return text
+
+
+def param_option(name: str, *, multiple: bool = False, required: bool = False, help: str | None = None):
+    """The option of registry parameter ``name``: its flags, metavar and help
+    (``help`` overrides the text where a command gives the symbol another
+    meaning, e.g. theta as a vertical orbit's cone angle).  ``multiple``:
+    values and ranges, repeatable (a grid axis)."""
+    p = PARAMS[name]
+    text = _help(name, help, multiple)
+    if multiple:
+        return click.option(*p.cli_flags, name, multiple=True, metavar=p.metavar, required=required, help=text)
+    return single(*p.cli_flags, name, metavar=p.metavar, required=required, help=text)
+
+
+def params_options(*names: str, multiple=()):
+    """Several registry options at once, in the order given."""
+    def decorator(f):
+        for name in reversed(names):
+            f = param_option(name, multiple=name in multiple)(f)
+        return f
+    return decorator
+
+
+def body_option(bodies=BODIES):
+    # no default here: not given, the API's applies (with --input: the file's column)
+    return single("--body", type=click.Choice(bodies, case_sensitive=False), default=None,
+                  help=f"Rolling body: {', '.join(bodies)} [default: wheel].")
+
+
+def side_option():
+    return single("--side", type=click.Choice(SIDES, case_sensitive=False), default=None,
+                  help="Body inside or outside the fixed sphere [default: inside].")
+
+
+def setup_options(*, multiple=(), gravity: bool = True, friction: bool = True):
+    """The setup every physics command takes: --side, -a, -r or --diameter,
+    -k, -g, --mu (``multiple``: those that are grid axes)."""
+    names = ["a", "r", "diameter", "k"] + (["g"] if gravity else []) + (["mu"] if friction else [])
+
+    def decorator(f):
+        f = params_options(*names, multiple=multiple)(f)
+        return side_option()(f)
+    return decorator
+
+
+def output_options(formats=FORMATS):
+    return single("--format", "fmt", type=click.Choice(formats, case_sensitive=False), default=None,
+                  help="Output format [default: table on a terminal, csv when piped].")
+
+
+def stability_option(default: bool = True, help: str | None = None):
+    return click.option(
+        "--stability/--no-stability", "stability", default=default, show_default=True,
+        help=help or "Fill the stability columns from the exact linearisation (docs/stability.md); "
+                     "--no-stability leaves them empty and runs faster.")
+
+
+def jobs_option(what: str):
+    return param_option("jobs", help=f"Processes {what}; the output is the same as with one.")
+
+
+def only_option(statuses):
+    return click.option("--only", multiple=True, type=click.Choice(statuses, case_sensitive=False),
+                        help="Keep only rows with this status (repeatable), e.g. --only ok.")
+
+
+def input_option(fields: str):
+    return single(
+        "--input", "input", default=None, metavar="FILE|-",
+        help=f"CSV of requests, one per line ('-' reads stdin); its header names the options ({fields}); "
+             "its own output CSV is read too, and ',', ';' or tab separates the fields.  Every line after "
+             "the header gives one row; a bad line is an invalid row with its reason.  An option given "
+             "with --input applies to every row, over the file's column.")
