@@ -26,19 +26,19 @@ EXTRA = "dataframes"
 
 
 def require(module: str, method: str):
-    """Import ``module`` for ``Table.<method>()``, or raise a one-line
-    ImportError that says how to install it."""
+    """Import ``module`` for ``method`` (e.g. "Table.to_pandas"), or raise a
+    one-line ImportError that names the extra to install."""
     try:
         return importlib.import_module(module)
     except ImportError:
-        raise ImportError(f"Table.{method}() needs {module}: pip install 'deathsphere[{EXTRA}]'") from None
+        raise ImportError(f"{method}() needs {module}: pip install 'deathsphere[{EXTRA}]'") from None
 
 
 def _arrow_types(pa) -> dict:
     return {"float": pa.float64(), "int": pa.int64(), "bool": pa.bool_(), "text": pa.string()}
 
 
-def arrow_schema(table, method: str = "to_arrow"):
+def arrow_schema(table, method: str = "Table.to_arrow"):
     """The Arrow schema of a table: text columns string, whole numbers int64
     (``branch`` too, nulls where it is None), flags bool, the rest float64."""
     pa = require("pyarrow", method)
@@ -62,7 +62,7 @@ def _arrow_column(pa, values: np.ndarray, kind):
     return pa.array(values, type=kind)
 
 
-def arrow_table(table, schema=None, method: str = "to_arrow"):
+def arrow_table(table, schema=None, method: str = "Table.to_arrow"):
     """The table as a ``pyarrow.Table``; ``schema`` (the first chunk's, when
     chunks are joined or streamed into one file) fixes the types."""
     pa = require("pyarrow", method)
@@ -71,7 +71,7 @@ def arrow_table(table, schema=None, method: str = "to_arrow"):
     return pa.table([_arrow_column(pa, table.columns[f.name], f.type) for f in schema], schema=schema)
 
 
-def arrow_concat(tables, method: str = "to_arrow"):
+def arrow_concat(tables, method: str = "Table.to_arrow"):
     """Tables with the same columns (the chunks of a stream) as one
     ``pyarrow.Table``, converted one at a time so that only Arrow's compact
     copy of the rows converted so far is held, never all of them as numpy
@@ -88,13 +88,13 @@ def arrow_concat(tables, method: str = "to_arrow"):
     return pa.concat_tables(parts), first
 
 
-def polars_frame(arrow, method: str = "to_polars"):
+def polars_frame(arrow, method: str = "Table.to_polars"):
     pl = require("polars", method)
     require("pyarrow", method)
     return pl.from_arrow(arrow)
 
 
-def pandas_frame(arrow, like, method: str = "to_pandas"):
+def pandas_frame(arrow, like, method: str = "Table.to_pandas"):
     """A ``pandas.DataFrame`` from the Arrow table of ``like`` (a Table with
     the same columns): text as pandas' string dtype (``pd.NA`` for null),
     whole numbers and flags of object columns (``branch``) as the nullable
@@ -164,7 +164,7 @@ def _xarray_values(name: str, values: np.ndarray) -> np.ndarray:
     return np.array(text_cells(values), dtype=object)
 
 
-def xarray_dataset(table, method: str = "to_xarray"):
+def xarray_dataset(table, method: str = "Table.to_xarray"):
     """An ``xarray.Dataset``: a grid (a :attr:`~Table.shape` of more than one
     axis) keeps its axes as dimensions, named and given coordinates by
     :func:`axis_names`; any other table has one dimension, ``row``."""

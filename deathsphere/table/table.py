@@ -115,6 +115,8 @@ class Table:
             if not 0 <= i < n:
                 raise IndexError(f"row {int(key)} of a table of {n} rows")
             return {name: cell_value(col[i]) for name, col in self.columns.items()}
+        if isinstance(key, (bool, np.bool_)) and self._shape == ():
+            key = np.array(key)  # the mask of a scalar table (t["status"] == "ok" is one bool)
         if isinstance(key, slice) or isinstance(key, (list, np.ndarray)):
             if isinstance(key, np.ndarray) and key.dtype == bool and key.shape == self._shape:
                 key = key.reshape(-1)
@@ -162,18 +164,20 @@ class Table:
         numbers (``input_row``, ``branch``) int64, the rest float64, and
         every undefined value (NaN, empty text, None) a null.  The Parquet
         output (``--output F.parquet``) is this table, chunk by chunk."""
-        return frames.arrow_table(self, method="to_arrow")
+        return frames.arrow_table(self, method="Table.to_arrow")
 
     def to_polars(self):
         """A ``polars.DataFrame`` (through :meth:`to_arrow`: the same types
         and nulls)."""
-        return frames.polars_frame(frames.arrow_table(self, method="to_polars"))
+        frames.require("polars", "Table.to_polars")
+        return frames.polars_frame(frames.arrow_table(self, method="Table.to_polars"))
 
     def to_pandas(self):
         """A ``pandas.DataFrame`` (through :meth:`to_arrow`): text columns
         of pandas' ``string`` dtype (``pd.NA`` where undefined), ``branch``
         nullable ``Int64``, floats float64 with NaN."""
-        return frames.pandas_frame(frames.arrow_table(self, method="to_pandas"), self)
+        frames.require("pandas", "Table.to_pandas")
+        return frames.pandas_frame(frames.arrow_table(self, method="Table.to_pandas"), self)
 
     def to_xarray(self):
         """An ``xarray.Dataset``.  A grid (:attr:`shape` of two axes or more)
