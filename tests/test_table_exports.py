@@ -5,6 +5,7 @@ CSV, scalar columns for one request, and read-only columns."""
 import csv
 import io
 import json
+import pickle
 import sys
 
 import numpy as np
@@ -256,6 +257,13 @@ def test_columns_are_read_only(grid):
     speed = grid["v_cm_m_s"].copy()
     speed *= 3.6
     assert np.array_equal(speed, grid["v_cm_m_s"] * 3.6, equal_nan=True)
+
+
+def test_a_table_from_another_process_stays_read_only(grid):
+    """--jobs hands tables back pickled, and unpickled arrays are writable."""
+    back = pickle.loads(pickle.dumps(grid))
+    assert back.to_csv() == grid.to_csv() and back.shape == grid.shape
+    assert not any(col.flags.writeable for col in back.columns.values())
 
 
 def test_a_table_freezes_the_arrays_it_is_given():

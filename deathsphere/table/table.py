@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from deathsphere.table import frames
-from deathsphere.table.cells import cell_value, csv_text
+from deathsphere.table.cells import cell_value, csv_text, python_values
 
 
 class Table:
@@ -77,6 +77,12 @@ class Table:
             raise ValueError(f"shape {shape} does not hold {n} rows")
         self._shape = shape
 
+    def __setstate__(self, state: dict) -> None:
+        # unpickled arrays (a table back from a --jobs worker) are writable again
+        self.__dict__.update(state)
+        for col in self.columns.values():
+            col.flags.writeable = False
+
     @classmethod
     def concat(cls, tables) -> Table:
         """Tables with the same columns, one after another (e.g. the chunks
@@ -128,9 +134,9 @@ class Table:
 
     def __iter__(self):
         """Rows as dicts, in order (NaN and empty text -> None)."""
-        cols = [(n, c.tolist()) for n, c in self.columns.items()]
+        cols = [(n, python_values(c)) for n, c in self.columns.items()]
         for i in range(len(self)):
-            yield {n: cell_value(v[i]) for n, v in cols}
+            yield {n: v[i] for n, v in cols}
 
     def grid(self, name: str) -> np.ndarray:
         """Column ``name`` reshaped to :attr:`shape` (e.g. theta x alpha)."""
