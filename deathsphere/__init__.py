@@ -6,7 +6,7 @@ command with the same parameters (:mod:`deathsphere.api`, docs/api.md)::
 
     >>> import deathsphere
     >>> t = deathsphere.orbit(60, 10)
-    >>> round(float(t["v_cm_m_s"][0]), 2)
+    >>> round(float(t["v_cm_m_s"]), 2)
     7.88
 
 The pure-numpy physics lives in :mod:`deathsphere.physics`;

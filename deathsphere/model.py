@@ -120,7 +120,7 @@ class Setup:
         Examples
         --------
         >>> t = Setup().orbit(60, 10)
-        >>> round(float(t["v_cm_m_s"][0]), 2), str(t["status"][0])
+        >>> round(float(t["v_cm_m_s"]), 2), str(t["status"])
         (7.88, 'ok')
         """
         given = {name: np.asarray(v, dtype=float) for name, v in

@@ -106,7 +106,7 @@ def test_broadcast_shape_is_kept():
     assert table.grid("theta_deg").tolist() == np.broadcast_to(theta, (5, 2)).tolist()
     assert table.grid("alpha_deg")[:, 1].tolist() == [25.0] * 5
     one = deathsphere.orbit(theta[3, 0], 25.0, stability=False)
-    assert table.grid("v_cm_m_s")[3, 1] == one["v_cm_m_s"][0]
+    assert table.grid("v_cm_m_s")[3, 1] == one["v_cm_m_s"]
     assert one.shape == () and len(one) == 1
     assert deathsphere.orbit(np.full((2, 3, 4), 60.0), 10, stability=False).shape == (2, 3, 4)
 
@@ -333,7 +333,7 @@ def test_table_rows(table):
 def test_to_dicts_turns_nan_into_none(table):
     dicts = table.to_dicts()
     assert dicts == list(table) == table.records()
-    assert dicts[0]["mu_available"] is None and dicts[0]["stability"] == ""
+    assert dicts[0]["mu_available"] is None and dicts[0]["stability"] is None  # --no-stability: undefined
     blank = [i for i, s in enumerate(table["status"]) if s in ("no_fit", "no_orbit")]
     assert blank and dicts[blank[0]]["mu_required"] is None
     assert math.isnan(table["mu_required"][blank[0]])
@@ -369,26 +369,17 @@ def test_repr_shows_the_columns_and_the_first_rows(table):
     assert html.count("<tr>") == 5 and "<th>v_cm_m_s</th>" in html
 
 
-def test_to_pandas_hands_every_column_in_order(table, monkeypatch):
-    """pandas is optional and not installed by the test extra: a stand-in
-    module records what Table.to_pandas() gives the DataFrame constructor."""
-    import types
-
-    class DataFrame:
-        def __init__(self, data):
-            self.data = data
-
-    monkeypatch.setitem(sys.modules, "pandas", types.SimpleNamespace(DataFrame=DataFrame))
+def test_to_pandas_hands_every_column_in_order(table):
+    import pandas as pd  # the test extra installs it (pyproject.toml)
     frame = table.to_pandas()
-    assert isinstance(frame, DataFrame) and list(frame.data) == list(COLUMNS)
-    assert all(len(col) == 4 for col in frame.data.values())
-    assert frame.data["v_cm_m_s"].tolist() == table["v_cm_m_s"].tolist()
-    assert frame.data["v_cm_m_s"].dtype == np.float64 and frame.data["input_row"].dtype == np.int64
+    assert isinstance(frame, pd.DataFrame) and list(frame.columns) == list(COLUMNS) and len(frame) == 4
+    assert frame["v_cm_m_s"].tolist() == pytest.approx(table["v_cm_m_s"].tolist(), nan_ok=True)
+    assert frame["v_cm_m_s"].dtype == np.float64 and frame["input_row"].dtype == np.int64
 
 
 def test_to_pandas_without_pandas_says_how_to_install_it(table, monkeypatch):
     monkeypatch.setitem(sys.modules, "pandas", None)   # import pandas -> ImportError
-    with pytest.raises(ImportError, match=r"^Table\.to_pandas\(\) needs pandas: pip install pandas$"):
+    with pytest.raises(ImportError, match=r"^Table\.to_pandas\(\) needs pandas: pip install 'deathsphere\[dataframes\]'$"):
         table.to_pandas()
 
 
@@ -487,7 +478,7 @@ def test_inputs_are_echoed_as_given():
     solved = deathsphere.orbit(60, speed=7, stability=False)
     assert len(solved) >= 1 and set(solved["v_cm_m_s"].tolist()) == {7.0}
     assert set(deathsphere.orbit(60, omega=4, stability=False)["omega_rad_s"].tolist()) == {4.0}
-    assert deathsphere.vertical(90, 6, stability=False)["v_cm_m_s"][0] == 6.0
+    assert float(deathsphere.vertical(90, 6, stability=False)["v_cm_m_s"]) == 6.0
     _, summary = deathsphere.simulate(60, 10, perturb=0.5, periods=0.05, points_per_period=10)
     assert (summary["theta_deg"][0], summary["alpha_deg"][0], summary["perturb_deg"][0]) == (60.0, 10.0, 0.5)
     assert float(deathsphere.region(step=10)["a_over_r"][0]) == 0.1

@@ -125,7 +125,7 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     --------
     >>> import deathsphere
     >>> t = deathsphere.orbit(60, 10)
-    >>> t.shape, str(t["status"][0]), round(float(t["v_cm_m_s"][0]), 2)
+    >>> t.shape, str(t["status"]), round(float(t["v_cm_m_s"]), 2)
     ((), 'ok', 7.88)
     >>> t = deathsphere.orbit([[30], [60], [90]], [5, 10], stability=False)
     >>> t.shape

@@ -45,6 +45,30 @@ class Chunks:
         """Every remaining chunk as one table."""
         return Table.concat(self)
 
+    def to_arrow(self):
+        """Every remaining chunk as one ``pyarrow.Table``, converted chunk by
+        chunk (never the whole result as numpy and Arrow at once); the
+        types of :meth:`Table.to_arrow`, fixed by the first chunk."""
+        from deathsphere.table import frames
+
+        return frames.arrow_concat(self, "Chunks.to_arrow")[0]
+
+    def to_polars(self):
+        """Every remaining chunk as one ``polars.DataFrame`` (through :meth:`to_arrow`)."""
+        from deathsphere.table import frames
+
+        frames.require("polars", "Chunks.to_polars")
+        return frames.polars_frame(frames.arrow_concat(self, "Chunks.to_polars")[0], "Chunks.to_polars")
+
+    def to_pandas(self):
+        """Every remaining chunk as one ``pandas.DataFrame`` (through
+        :meth:`to_arrow`; the types of :meth:`Table.to_pandas`)."""
+        from deathsphere.table import frames
+
+        frames.require("pandas", "Chunks.to_pandas")
+        arrow, first = frames.arrow_concat(self, "Chunks.to_pandas")
+        return frames.pandas_frame(arrow, first, "Chunks.to_pandas")
+
 
 def grid_requests(axes: dict, chunk_size: int, make, fixed: dict) -> Iterator[tuple[int, dict]]:
     """``(n, requests)`` per chunk of the grid of ``axes``, numbered from 1 in grid order."""

@@ -98,7 +98,7 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
     --------
     >>> import deathsphere
     >>> t = deathsphere.vertical(90, 6, stability=False)
-    >>> str(t["status"][0]), round(float(t["v_top_min_m_s"][0]), 3)
+    >>> str(t["status"]), round(float(t["v_top_min_m_s"]), 3)
     ('ok', 5.146)
     >>> p = deathsphere.vertical(90, [6, 7], points=5)
     >>> p.shape, p.grid("phi_deg")[0].tolist()

@@ -205,7 +205,7 @@ def _spin_lines(table: Table) -> list[str]:
     contact: the least spin that would do, once per setup and θ."""
     if "omega3_min_real_rad_s" not in table:
         return []
-    rows = [i for i, (b, s) in enumerate(zip(table["body"].tolist(), table["status"].tolist()))
+    rows = [i for i, (b, s) in enumerate(zip(table.columns["body"].tolist(), table.columns["status"].tolist()))
             if b == "sphere" and s != "ok"]
     setup_cols = ("a_m", "r_m", "k", "g_m_s2", "side")
     first = {}
@@ -232,9 +232,9 @@ def many_orbits_table(table: Table, title: str | None = None, total_rows: int | 
     ``total_rows``), then each distinct reason once."""
     total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    bodies = set(head["body"].tolist())
+    bodies = set(head.columns["body"].tolist())
     kind = bodies.pop() if len(bodies) == 1 else "mixed"
-    columns = [Column(col, SUMMARY_HEADERS[col], _summary_cells(col, head[col].tolist()),
+    columns = [Column(col, SUMMARY_HEADERS[col], _summary_cells(col, head.columns[col].tolist()),
                       "left" if col in TEXT_COLUMNS else "right")
                for col in SUMMARY_COLUMNS[kind] if col in head]
     footer = [row_cap_line(len(head), total)] if total > len(head) else []
@@ -281,12 +281,12 @@ def generic_table(table: Table, title: str | None = None, total_rows: int | None
                          Column("value", "value", [_plain_cell(v, 6) for _, v in names])], title=title)
     total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    same = [n for n in table.names if _constant(table[n])]
+    same = [n for n in table.names if _constant(table.columns[n])]
     legend = status_legend(head) if "status" in table and "reason" in table else []
     hidden = set(same) | ({"reason"} if legend or "status" in table else set())
     names = [n for n in table.names if n not in hidden]
-    columns = [Column(n, column_header(n), [_plain_cell(v) for v in head[n].tolist()],
-                      "left" if head[n].dtype == object else "right") for n in names]
+    columns = [Column(n, column_header(n), [_plain_cell(v) for v in head.columns[n].tolist()],
+                      "left" if head.columns[n].dtype == object else "right") for n in names]
     keys = {names[0], *GENERIC_KEYS} if names else set()
     drop_order = [n for n in reversed(names) if n not in keys]
     first = row_record(head) if same else {}
@@ -364,7 +364,7 @@ def vertical_view(table: Table, total_rows: int | None = None):
         return quantity_table(title, get, rows, "keeps contact all round with enough friction")
     total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    columns = [Column(col, header, _summary_cells(col, head[col].tolist()), "left" if col == "status" else "right")
+    columns = [Column(col, header, _summary_cells(col, head.columns[col].tolist()), "left" if col == "status" else "right")
                for col, header in VERTICAL_COLUMNS]
     footer = [row_cap_line(len(head), total)] if total > len(head) else []
     return FitTable(columns, VERTICAL_DROP_ORDER, title="Vertical orbits (eqs. 27-28b)", footer=footer,

@@ -147,13 +147,13 @@ def row_total(table: Table, total_rows: int | None) -> int:
 
 def status_legend(table: Table) -> list[str]:
     """Each distinct (status, reason) once, in order of appearance."""
-    reasons = dict.fromkeys(zip(table["status"].tolist(), table["reason"].tolist()))
+    reasons = dict.fromkeys(zip(table.columns["status"].tolist(), table.columns["reason"].tolist()))
     return [f"{status_text(st)}: {escape(str(why))}" for st, why in reasons if why]
 
 
 def row_record(table: Table, row: int = 0) -> dict:
     """One row as a dict of plain Python values."""
-    return {n: (v.item() if hasattr(v, "item") else v) for n, v in ((n, table[n][row]) for n in table.names)}
+    return {n: (v.item() if hasattr(v, "item") else v) for n, v in ((n, table.columns[n][row]) for n in table.names)}
 
 
 def is_undefined(v) -> bool:

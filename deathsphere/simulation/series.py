@@ -135,4 +135,4 @@ def concat_tables(tables: Sequence[Table]) -> Table:
     if not tables:
         return rows_table([])
     names = tables[0].names
-    return Table({name: np.concatenate([t[name] for t in tables]) for name in names})
+    return Table({name: np.concatenate([t.columns[name] for t in tables]) for name in names})

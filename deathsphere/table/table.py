@@ -12,32 +12,41 @@ import math
 
 import numpy as np
 
-from deathsphere.table.cells import csv_text
+from deathsphere.table import frames
+from deathsphere.table.cells import cell_value, csv_text, python_values
 
 
 class Table:
     """Ordered named columns of equal-length arrays (the result type).
 
-    ``table["v_cm_m_s"]`` is a flat float64 array (one value per row);
-    ``table.names`` the column order; ``len(table)`` the number of rows.
-    Undefined values are NaN in float columns (empty in CSV, null in JSON,
-    None in row dicts).
+    ``table["v_cm_m_s"]`` is a column: a flat float64 array, one value per
+    row, except for a table of one request (:attr:`shape` ``()``, e.g.
+    ``orbit(60, 10)``), whose columns are 0-d arrays (``float(t["v_cm_m_s"])``
+    works); ``table.names`` the column order; ``len(table)`` the number of
+    rows.  Undefined values are NaN in float columns and "" or None in text
+    columns: empty in CSV, null in JSON, Parquet and the dataframe exports,
+    None in row dicts.  The columns are read-only: the table is a result,
+    and its CSV, views and exports always show what was computed (the
+    arrays handed to the constructor are taken as they are, not copied, and
+    made read-only).
 
     ``table[i]`` (an int) is row i as a dict, like ``for row in table``
     and :meth:`to_dicts`; a slice, boolean mask or integer array selects
     rows and gives a flat :class:`Table`.  :attr:`shape` is the shape of the
     input the rows came from (the broadcast shape of the arguments of
     :func:`deathsphere.orbit`, else ``(len(table),)``); :meth:`grid` gives a
-    column in that shape.
+    column in that shape.  :meth:`to_arrow`, :meth:`to_polars`,
+    :meth:`to_pandas` and :meth:`to_xarray` hand the table to the
+    dataframe libraries (the ``dataframes`` extra).
 
     Examples
     --------
-    >>> t = Table({"x": np.array([1.0, 2.0, np.nan, 4.0]), "s": np.array(list("abcd"), dtype=object)},
+    >>> t = Table({"x": np.array([1.0, 2.0, np.nan, 4.0]), "s": np.array(["a", "b", "c", ""], dtype=object)},
     ...           shape=(2, 2))
-    >>> t[2]
-    {'x': None, 's': 'c'}
+    >>> t[2], t[3]
+    ({'x': None, 's': 'c'}, {'x': 4.0, 's': None})
     >>> [row["s"] for row in t]
-    ['a', 'b', 'c', 'd']
+    ['a', 'b', 'c', None]
     >>> t.grid("x")
     array([[ 1.,  2.],
            [nan,  4.]])
@@ -46,22 +55,35 @@ class Table:
     1.0,a
     2.0,b
     ,c
-    4.0,d
+    4.0,
+    >>> t["x"][0] = 5.0
+    Traceback (most recent call last):
+    ...
+    ValueError: assignment destination is read-only
     """
 
     #: Rows shown by ``repr`` (a notebook cell) and ``_repr_html_``.
     REPR_ROWS = 5
 
     def __init__(self, columns: dict[str, np.ndarray], shape: tuple[int, ...] | None = None):
+        columns = {name: np.asarray(col) for name, col in columns.items()}
         lengths = {len(v) for v in columns.values()}
         if len(lengths) > 1:
             raise ValueError(f"columns of unequal length: {lengths}")
-        self.columns = dict(columns)
+        for col in columns.values():
+            col.flags.writeable = False
+        self.columns = columns
         n = len(self)
         shape = (n,) if shape is None else tuple(int(s) for s in shape)
         if math.prod(shape) != n:
             raise ValueError(f"shape {shape} does not hold {n} rows")
         self._shape = shape
+
+    def __setstate__(self, state: dict) -> None:
+        # unpickled arrays (a table back from a --jobs worker) are writable again
+        self.__dict__.update(state)
+        for col in self.columns.values():
+            col.flags.writeable = False
 
     @classmethod
     def concat(cls, tables) -> Table:
@@ -72,7 +94,7 @@ class Table:
             return tables[0]
         if not tables:
             return cls({})
-        return cls({n: np.concatenate([t[n] for t in tables]) for n in tables[0].names})
+        return cls({n: np.concatenate([t.columns[n] for t in tables]) for n in tables[0].names})
 
     @property
     def names(self) -> list[str]:
@@ -87,17 +109,25 @@ class Table:
         return len(next(iter(self.columns.values()))) if self.columns else 0
 
     def __getitem__(self, key):
-        """A column by name, a row dict by int index, a flat Table by slice or mask."""
+        """A column by name (0-d when :attr:`shape` is ``()``, else flat), a
+        row dict by int index, a flat Table by slice or mask (a mask may also
+        have the table's shape, as ``table.grid(name) == value`` has)."""
         if isinstance(key, str):
-            return self.columns[key]
+            col = self.columns[key]
+            # one request, one value: a scalar-like column, as numpy gives for
+            # a 0-d input (float() of a 1-element array fails in numpy 2)
+            return col.reshape(()) if self._shape == () else col
         if isinstance(key, (int, np.integer)) and not isinstance(key, bool):
             n = len(self)
             i = int(key) + n if key < 0 else int(key)
             if not 0 <= i < n:
                 raise IndexError(f"row {int(key)} of a table of {n} rows")
-            return {name: _clean(col[i].item() if isinstance(col[i], np.generic) else col[i])
-                    for name, col in self.columns.items()}
+            return {name: cell_value(col[i]) for name, col in self.columns.items()}
+        if isinstance(key, (bool, np.bool_)) and self._shape == ():
+            key = np.array(key)  # the mask of a scalar table (t["status"] == "ok" is one bool)
         if isinstance(key, slice) or isinstance(key, (list, np.ndarray)):
+            if isinstance(key, np.ndarray) and key.dtype == bool and key.shape == self._shape:
+                key = key.reshape(-1)
             return Table({name: col[key] for name, col in self.columns.items()})
         raise TypeError(f"a Table is indexed by a column name, a row number, a slice or a mask (got {key!r})")
 
@@ -105,17 +135,17 @@ class Table:
         return name in self.columns
 
     def __iter__(self):
-        """Rows as dicts, in order (NaN -> None)."""
-        cols = [(n, c.tolist()) for n, c in self.columns.items()]
+        """Rows as dicts, in order (NaN and empty text -> None)."""
+        cols = [(n, python_values(c)) for n, c in self.columns.items()]
         for i in range(len(self)):
-            yield {n: _clean(v[i]) for n, v in cols}
+            yield {n: v[i] for n, v in cols}
 
     def grid(self, name: str) -> np.ndarray:
         """Column ``name`` reshaped to :attr:`shape` (e.g. theta x alpha)."""
         return self.columns[name].reshape(self._shape)
 
     def to_dicts(self) -> list[dict]:
-        """Rows as dicts (NaN -> None), for notebooks and JSON."""
+        """Rows as dicts (NaN and empty text -> None), for notebooks and JSON."""
         return list(self)
 
     def records(self) -> list[dict]:
@@ -137,14 +167,34 @@ class Table:
                 out.write(text)
         return None
 
+    def to_arrow(self):
+        """A ``pyarrow.Table``: the columns in order, text as string, whole
+        numbers (``input_row``, ``branch``) int64, the rest float64, and
+        every undefined value (NaN, empty text, None) a null.  The Parquet
+        output (``--output F.parquet``) is this table, chunk by chunk."""
+        return frames.arrow_table(self, method="Table.to_arrow")
+
+    def to_polars(self):
+        """A ``polars.DataFrame`` (through :meth:`to_arrow`: the same types
+        and nulls)."""
+        frames.require("polars", "Table.to_polars")
+        return frames.polars_frame(frames.arrow_table(self, method="Table.to_polars"))
+
     def to_pandas(self):
-        """A :class:`pandas.DataFrame` with the same columns (pandas is
-        optional: install it with ``pip install pandas``)."""
-        try:
-            import pandas as pd
-        except ImportError:
-            raise ImportError("Table.to_pandas() needs pandas: pip install pandas") from None
-        return pd.DataFrame({name: col for name, col in self.columns.items()})
+        """A ``pandas.DataFrame`` (through :meth:`to_arrow`): text columns
+        of pandas' ``string`` dtype (``pd.NA`` where undefined), ``branch``
+        nullable ``Int64``, floats float64 with NaN."""
+        frames.require("pandas", "Table.to_pandas")
+        return frames.pandas_frame(frames.arrow_table(self, method="Table.to_pandas"), self)
+
+    def to_xarray(self):
+        """An ``xarray.Dataset``.  A grid (:attr:`shape` of two axes or more)
+        keeps its axes as dimensions, each named after the one input column
+        that varies along it (``theta_deg``, ``alpha_deg``, ...), which
+        becomes its coordinate, else ``dim_0``, ``dim_1``, ...; any other
+        table has one dimension, ``row``.  Text is object (None where
+        undefined), ``branch`` float64 (NaN where undefined)."""
+        return frames.xarray_dataset(self)
 
     def _summary_line(self) -> str:
         shape = "" if self._shape == (len(self),) else f", shape {self._shape}"
@@ -199,6 +249,3 @@ def _cell_text(v) -> str:
     text = str(v)
     return text if len(text) <= _REPR_TEXT else text[: _REPR_TEXT - 3] + "..."
 
-
-def _clean(v):
-    return None if isinstance(v, float) and math.isnan(v) else v

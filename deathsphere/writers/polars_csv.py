@@ -121,5 +121,5 @@ def csv_text(table, header: bool) -> str:
     head = ",".join(names) + "\n" if header and names else ""
     if len(table) == 0:
         return head
-    frame = pl.DataFrame([_series(pl, n, table[n]) for n in names])
+    frame = pl.DataFrame([_series(pl, n, table.columns[n]) for n in names])
     return head + frame.write_csv(include_header=False, quote_style="never", null_value="", line_terminator="\n")
