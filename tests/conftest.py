@@ -1,4 +1,14 @@
+import os
+
 import pytest
+from hypothesis import settings
+
+# Property tests draw the same examples on every run (CI included), so a red
+# run is reproducible and a green one is not luck; HYPOTHESIS_PROFILE=explore
+# draws new ones, to hunt for counter-examples by hand.
+settings.register_profile("deterministic", derandomize=True, database=None)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "deterministic"))
 from click.testing import CliRunner
 
 from deathsphere.cli import cli

@@ -18,15 +18,15 @@ import errno
 import importlib.util
 import os
 import sys
+import time
 from contextlib import contextmanager
 
 import click
 
-from deathsphere import __version__, api
-from deathsphere.constants import BODIES, SIDES
+from deathsphere import __version__
 from deathsphere.exitcodes import ExitCode
 from deathsphere.params import ParameterError
-from deathsphere.writers.stream import FORMATS, write_csv, write_json, write_ndjson
+from deathsphere.writers.stream import write_csv, write_json, write_ndjson
 
 CONTEXT = {"help_option_names": ["-h", "--help"], "max_content_width": 80}
 
@@ -68,74 +68,7 @@ class Command(click.Command):
 
 
 # ---------------------------------------------------------------------------
-# shared options
-
-
-def output_options(formats=FORMATS):
-    def decorator(f):
-        return click.option(
-            "--format", "fmt", type=click.Choice(formats, case_sensitive=False), default=None,
-            help="Output format [default: table on a terminal, csv when piped].")(f)
-    return decorator
-
-
-def values_option(name: str, metavar: str, help: str, flags=None, required: bool = False):
-    """A repeatable option whose every use is a value or a ``start:stop:step``
-    range, handed to the API as typed (it checks them)."""
-    return click.option(*(flags or (f"--{name.replace('_', '-')}",)), name, multiple=True, metavar=metavar,
-                        required=required, help=help)
-
-
-def number_option(name: str, metavar: str, help: str, flags=None, default_text: str | None = None,
-                  required: bool = False):
-    """An option of one number, handed to the API as typed (it checks it);
-    not given, the API's default applies (shown as ``default_text``)."""
-    shown = f" [default: {default_text}]" if default_text is not None else ""
-    # (click counts an explicit default, even None, as a value: none for a required option)
-    default = {} if required else {"default": None}
-    return click.option(*(flags or (f"--{name.replace('_', '-')}",)), name, metavar=metavar,
-                        required=required, help=help + shown, **default)
-
-
-def stability_option(default: bool = True, help: str | None = None):
-    return click.option(
-        "--stability/--no-stability", "stability", default=default, show_default=True,
-        help=help or "Fill the stability columns from the exact linearisation (docs/stability.md); "
-                     "--no-stability leaves them empty and runs faster.")
-
-
-def jobs_option(what: str):
-    return click.option("--jobs", default=None, metavar="N",
-                        help=f"Processes {what}; the output is the same as with one [default: 1].")
-
-
-def body_options(bodies=BODIES, radii_only: bool = False):
-    """--body (the bodies the command supports; none if only a wheel),
-    --side, -a, -r, -k, -g, --mu.  ``radii_only``: only --side, -a, -r, -k."""
-    def decorator(f):
-        options = []
-        if len(bodies) > 1:
-            options.append(click.option("--body", type=click.Choice(bodies, case_sensitive=False), default="wheel",
-                                        show_default=True, help="Rolling body."))
-        options += [
-            click.option("--side", type=click.Choice(SIDES, case_sensitive=False), default="inside",
-                         show_default=True, help="Body inside or outside the fixed sphere."),
-            number_option("a", "M", "Body radius a [m].", ("-a", "--wheel-radius"), str(api.A)),
-            number_option("r", "M", "Fixed sphere radius r [m].", ("-r", "--sphere-radius"), str(api.R)),
-            number_option("k", "K", "Inertia factor k: I11 = 2 k m a^2 for a wheel, I = k m a^2 for a sphere.",
-                          ("-k", "--inertia"), "0.5 wheel, 0.4 sphere" if len(bodies) > 1 else "0.5"),
-        ]
-        if not radii_only:
-            options += [
-                number_option("g", "M_S2", "Gravitational acceleration [m/s^2].", ("-g", "--gravity"),
-                              str(api.G)),
-                number_option("mu", "MU", "Friction coefficient available; orbits needing more have status "
-                              "'slips'.", None, "unlimited"),
-            ]
-        for option in reversed(options):
-            f = option(f)
-        return f
-    return decorator
+# shared options: deathsphere.cli.options (from the parameter registry)
 
 
 #: The optional package an output needs -> the extra that installs it.
@@ -173,35 +106,43 @@ class OutputPath(click.ParamType):
         return path
 
 
-def input_option(fields: str):
-    return click.option(
-        "--input", "input", default=None, metavar="FILE|-",
-        help=f"CSV of requests, one per line; its header names the options ({fields}); '-' reads stdin. "
-             "Every line after the header gives one row (input_row = its line number after the header); "
-             "a bad line is an invalid row with its reason.  Options given with it are the defaults for "
-             "missing columns (one value each).")
+#: Work that ends sooner draws no progress bar: a bar that flashes up for a
+#: fraction of a second only leaves a flicker (or, mixed with output, residue).
+PROGRESS_DELAY_S = 1.0
 
 
 class _Progress:
     """What a command reports progress to: ``advance(n)`` or ``update(done, total)``.
-    Without a bar (not a terminal) both do nothing."""
+    Without a bar (not a terminal) both do nothing.  The bar is drawn only
+    once the work has run :data:`PROGRESS_DELAY_S`."""
 
     def __init__(self, bar=None, task=None):
         self.bar, self.task = bar, task
+        self.started = False
+        self._since = time.monotonic()
+
+    def _show(self) -> None:
+        if not self.started and time.monotonic() - self._since >= PROGRESS_DELAY_S:
+            self.bar.start()
+            self.started = True
 
     def advance(self, n: int = 1, description: str | None = None) -> None:
         if self.bar is not None:
             self.bar.update(self.task, advance=n, **({"description": description} if description else {}))
+            self._show()
 
     def update(self, done: int, total: int) -> None:
         if self.bar is not None:
             self.bar.update(self.task, completed=done, total=total)
+            self._show()
 
 
 @contextmanager
 def progress(label: str, total: int, streaming: bool = False):
     """A rich progress bar on stderr when stderr is a terminal (nothing
-    otherwise, so pipes and logs stay clean); yields a :class:`_Progress`.
+    otherwise, so pipes and logs stay clean), drawn only for work that runs
+    longer than :data:`PROGRESS_DELAY_S` and removed when it ends; yields a
+    :class:`_Progress`.
 
     ``streaming``: results go to stdout while the bar runs; if stdout is the
     same terminal the rows themselves show the progress, and a bar would
@@ -217,9 +158,14 @@ def progress(label: str, total: int, streaming: bool = False):
         TimeElapsedColumn,
     )
 
-    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                  console=stderr_console(), transient=True, redirect_stdout=False, redirect_stderr=False) as bar:
-        yield _Progress(bar, bar.add_task(label, total=total))
+    bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                   console=stderr_console(), transient=True, redirect_stdout=False, redirect_stderr=False)
+    state = _Progress(bar, bar.add_task(label, total=total))
+    try:
+        yield state
+    finally:
+        if state.started:
+            bar.stop()
 
 
 def _isatty(stream) -> bool:
@@ -267,7 +213,14 @@ def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
             bar.update(chunks.done, chunks.total)
 
     with progress(label, chunks.total, streaming=streaming) as bar:
-        emit(tally.count(tables(bar)), fmt, title, view, output=output)
+        if fmt == "table":
+            # read everything while the bar runs; draw once it is gone, so
+            # that no trace of it is left in the table
+            shown = terminal_view(tally.count(tables(bar)), title, view)
+        else:
+            emit(tally.count(tables(bar)), fmt, title, view, output=output)
+    if fmt == "table" and shown is not None:
+        stdout_console().print(shown[0])
     return tally
 
 
@@ -297,9 +250,21 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
             return writer(chunks, out)
     if writer is not None:
         return writer(chunks, sys.stdout)
-    from deathsphere.model import Table
-    from deathsphere.render.orbit_views import write_rich_table
+    shown = terminal_view(chunks, title, view)
+    if shown is None:
+        return 0
+    stdout_console().print(shown[0])
+    return shown[1]
+
+
+def terminal_view(chunks, title: str | None = None, view=None):
+    """``(renderable, rows read)``: the terminal view of the tables in
+    ``chunks`` (every chunk is read, so the count and the exit status are
+    those of the whole result; at most :data:`MAX_TERMINAL_ROWS` rows are
+    drawn), or None for no rows."""
+    from deathsphere.render.orbit_views import rich_table
     from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS
+    from deathsphere.table import Table
 
     head, total = [], 0
     for table in chunks:
@@ -307,15 +272,12 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
             head.append(table)
         total += len(table)
     if not head:
-        return 0
+        return None
     table = Table.concat(head)
     if len(table) > MAX_TERMINAL_ROWS:
         table = table[:MAX_TERMINAL_ROWS]
-    if view is not None:
-        stdout_console().print(view(table, total_rows=total))
-        return total
-    write_rich_table(table, stdout_console(), title, total_rows=total)
-    return total
+    shown = view(table, total_rows=total) if view is not None else rich_table(table, title, total_rows=total)
+    return shown, total
 
 
 class _OutputFailed(Exception):

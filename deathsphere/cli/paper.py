@@ -10,11 +10,10 @@ from deathsphere.cli.base import (
     cli,
     emit,
     given,
-    jobs_option,
-    output_options,
     progress,
     stdout_console,
 )
+from deathsphere.cli.options import jobs_option, output_options
 
 
 @cli.command("table1")

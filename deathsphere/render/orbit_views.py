@@ -307,20 +307,24 @@ def _constant(values: np.ndarray) -> bool:
     return all(str(v) == first for v in values.tolist())
 
 
-def write_rich_table(table: Table, console: Console, title: str | None = None,
-                     total_rows: int | None = None) -> int:
+def rich_table(table: Table, title: str | None = None, total_rows: int | None = None):
     """Terminal view: every quantity for one orbit, a summary row per orbit
     for many; any other table column by column.  At most MAX_TERMINAL_ROWS
-    rows are formatted and printed, with a line saying how many there are
+    rows are formatted, with a line saying how many there are
     (``total_rows`` when the caller hands over only the first rows of a
-    longer result).  Returns the number of rows given."""
+    longer result)."""
     total = row_total(table, total_rows)
     if "body" not in table or "status" not in table:
-        console.print(generic_table(table, title, total))
-    elif len(table) == 1 and total == 1:
-        console.print(one_orbit_table(table))
-    else:
-        console.print(many_orbits_table(table, title, total))
+        return generic_table(table, title, total)
+    if len(table) == 1 and total == 1:
+        return one_orbit_table(table)
+    return many_orbits_table(table, title, total)
+
+
+def write_rich_table(table: Table, console: Console, title: str | None = None,
+                     total_rows: int | None = None) -> int:
+    """:func:`rich_table` printed on ``console``; returns the number of rows given."""
+    console.print(rich_table(table, title, total_rows))
     return len(table)
 
 

@@ -42,17 +42,15 @@ def test_sweep_into_head_ends_quietly():
     assert "Traceback" not in proc.stderr and "Error" not in proc.stderr
 
 
-def test_progress_bar_on_a_terminal_never_swallows_stdout():
-    """With stderr a terminal the progress bar shows there, and every CSV row
-    still goes to stdout (rich's Live must not redirect stdout)."""
+def _with_stderr_on_a_terminal(*args):
+    """Run the command with stderr on a pseudo-terminal; (process, what the terminal saw)."""
     import os
     import pty
 
     leader, follower = pty.openpty()
     try:
-        proc = subprocess.run([sys.executable, "-m", "deathsphere", "sweep", "--theta", "0:180:1", "--alpha", "0:90:0.25",
-                               "--no-stability"], stdout=subprocess.PIPE, stderr=follower, timeout=120,
-                              env={**os.environ, "COLUMNS": "80"})
+        proc = subprocess.run([sys.executable, "-m", "deathsphere", *args], stdout=subprocess.PIPE, stderr=follower,
+                              timeout=120, env={**os.environ, "COLUMNS": "80"})
         os.close(follower)
         seen = b""
         while True:
@@ -65,6 +63,22 @@ def test_progress_bar_on_a_terminal_never_swallows_stdout():
             seen += data
     finally:
         os.close(leader)
+    return proc, seen
+
+
+def test_progress_bar_on_a_terminal_never_swallows_stdout():
+    """With stderr a terminal the progress bar of a long sweep (a few
+    seconds) shows there, and every CSV row still goes to stdout (rich's
+    Live must not redirect stdout)."""
+    proc, seen = _with_stderr_on_a_terminal("sweep", "--theta", "0:180:0.25", "--alpha", "0:90:0.25")
     lines = proc.stdout.decode().splitlines()
-    assert proc.returncode == 0 and len(lines) == 1 + 181 * 361
+    assert proc.returncode == 0 and len(lines) == 1 + 721 * 361
     assert b"input_row" not in seen and b"sweep" in seen  # the bar, not the data, on the terminal
+
+
+def test_work_under_a_second_draws_no_bar():
+    """A single orbit, or a small sweep, leaves the terminal alone: no bar
+    flashes up (and none can leave residue in the output)."""
+    for args in (["orbit", "--theta", "60", "--alpha", "10"], ["sweep", "--theta", "0:180:10", "--alpha", "10"]):
+        proc, seen = _with_stderr_on_a_terminal(*args)
+        assert proc.returncode == 0 and proc.stdout and seen == b"", args
