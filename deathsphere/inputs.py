@@ -48,6 +48,7 @@ from typing import BinaryIO, Iterable, Iterator
 import numpy as np
 
 from deathsphere.model import REQUEST_FIELDS
+from deathsphere.table.reasons import echo
 
 ALIASES = {
     "theta_deg": "theta", "alpha_deg": "alpha", "a_m": "a", "r_m": "r", "g_m_s2": "g",
@@ -251,8 +252,14 @@ class _Lines:
         return lines
 
 
-def _short(cell: str, limit: int = 40) -> str:
-    return repr(cell if len(cell) <= limit else cell[:limit] + "...")
+def _quoting_problem(message: str) -> str:
+    """A row's reason for the csv module's complaint, in words without a
+    comma (its own message for text after a closing quote holds one)."""
+    if "unexpected end" in message:
+        return "unclosed quote"
+    if "expected after" in message:
+        return "bad quoting: text after a closing quote (a quoted field ends at the next separator)"
+    return f"bad quoting: {echo(message)}"
 
 
 class RequestReader:
@@ -434,7 +441,7 @@ class RequestReader:
             try:
                 cells[i] = next(csv.reader((text,), strict=True, skipinitialspace=True))
             except csv.Error as exc:
-                invalid[i] = "unclosed quote" if "unexpected end" in str(exc) else f"bad quoting: {exc}"
+                invalid[i] = _quoting_problem(str(exc))
                 cells[i] = [""] * width
         return cells
 
@@ -466,7 +473,7 @@ class RequestReader:
         if bad.any():
             for i in np.flatnonzero(bad):
                 if not invalid[i]:
-                    invalid[i] = f"{name}: {_short(column[i].strip())} is not a finite number"
+                    invalid[i] = f"{name}: {echo(column[i].strip())} is not a finite number"
             out[bad] = math.nan
         return out
 
@@ -481,12 +488,12 @@ class RequestReader:
                 number = float(cell)
             except ValueError:
                 if not invalid[i]:
-                    invalid[i] = f"{name}: {_short(cell)} is not a number"
+                    invalid[i] = f"{name}: {echo(cell)} is not a number"
                 number = math.nan
             else:
                 if math.isnan(number) or (math.isinf(number) and not infinite_ok):
                     if not invalid[i]:
-                        invalid[i] = f"{name}: {_short(cell)} is not a finite number"
+                        invalid[i] = f"{name}: {echo(cell)} is not a finite number"
                     number = math.nan
             out[i] = number
         return out

@@ -87,6 +87,18 @@ REASONS = {
 REASON_TEXT = np.array([REASONS[Reason(i)] for i in range(len(Reason))], dtype=object)
 
 
+def mu_required(normal, friction):
+    """Least static friction coefficient that holds the contact, eq. (35):
+    |friction| / normal, NaN where the normal force is not positive.
+
+    Every body takes its mu_required from here, and decides ``no_contact``
+    on the same test (normal > 0 fails), so that a no_contact row never
+    carries a friction coefficient: friction cannot hold a contact that
+    would have to pull (docs/contract.md, "Statuses")."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.abs(friction) / np.where(normal > 0, normal, np.nan)
+
+
 def first_failure(conditions):
     """Status and reason of the first failing condition, vectorised.
 

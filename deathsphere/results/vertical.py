@@ -19,7 +19,8 @@ import numpy as np
 
 from deathsphere import params
 from deathsphere.model import COLUMNS as ORBIT_COLUMNS
-from deathsphere.model import NOT_ANALYSED_K0, REQUEST_FIELDS, finite_or_blank, Table, make_requests, validate_requests
+from deathsphere.model import (NOT_ANALYSED_K0, REQUEST_FIELDS, Table, echo_given, finite_or_blank, make_requests,
+                               validate_requests)
 from deathsphere.physics import vertical_orbit
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 
@@ -119,9 +120,6 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
             out[col][rows] = np.rad2deg(res[key])
         status[rows] = res["status"]
         reason[rows] = REASON_TEXT[res["reason"]]
-        # the top speed given is echoed as given (v / r' * r' may differ in the last bit)
-        echo = rows[~np.isnan(req["v_top"][rows]) & ~np.isnan(out["v_cm_m_s"][rows])]
-        out["v_cm_m_s"][echo] = req["v_top"][echo]
     verdict = np.full(n, "", dtype=object)
     method = np.full(n, "", dtype=object)
     growth = np.full(n, np.nan)
@@ -149,6 +147,9 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
         **out,
     }
     finite_or_blank(columns)
+    # the top speed or rate given is printed as given (v / r' * r' may differ
+    # in the last bit; a wheel that does not fit computes none)
+    echo_given(columns, {"v_cm_m_s": req["v_top"], "omega_rad_s": req["phidot_top"]})
     return Table({name: columns[name] for name in COLUMNS})
 
 

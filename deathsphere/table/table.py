@@ -13,6 +13,7 @@ import math
 import numpy as np
 
 from deathsphere.table.cells import csv_text
+from deathsphere.table.reasons import reason_column
 
 
 class Table:
@@ -57,6 +58,9 @@ class Table:
         if len(lengths) > 1:
             raise ValueError(f"columns of unequal length: {lengths}")
         self.columns = dict(columns)
+        if "reason" in self.columns:
+            # the one gate of every reason text (docs/contract.md: no comma)
+            self.columns["reason"] = reason_column(self.columns["reason"])
         n = len(self)
         shape = (n,) if shape is None else tuple(int(s) for s in shape)
         if math.prod(shape) != n:
