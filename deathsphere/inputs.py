@@ -271,6 +271,9 @@ class RequestReader:
     ``aliases``: other header names -> field (default :data:`ALIASES`).
     ``ignore``: header names read and discarded (a command's output columns);
     a name that is a field or an alias is read as that field even if listed.
+    ``ignore_when``: alias -> header name: that alias is discarded instead
+    when the header also holds that name (an output column whose meaning
+    depends on the output it comes from).
     ``source``: the input's name in messages.
 
     The constructor reads up to and including the header and raises
@@ -279,7 +282,7 @@ class RequestReader:
     """
 
     def __init__(self, stream: BinaryIO, fields: dict, defaults: dict, *, source: str = "input",
-                 aliases: dict | None = None, ignore: Iterable[str] = ()):
+                 aliases: dict | None = None, ignore: Iterable[str] = (), ignore_when: dict | None = None):
         self.source = source
         self.fields = dict(fields)
         self.aliases = ALIASES if aliases is None else dict(aliases)
@@ -304,6 +307,11 @@ class RequestReader:
             why = "an unclosed quote" if "unexpected end" in str(exc) else f"bad quoting ({exc})"
             raise InputError(f"{source}: the header line has {why}") from None
         self.header = [name.strip() for name in names]
+        present = {name.lower() for name in self.header}
+        for alias, marker in (ignore_when or {}).items():
+            if marker.lower() in present:
+                self.aliases = {a: f for a, f in self.aliases.items() if a.lower() != alias.lower()}
+                ignore = [*ignore, alias]
         self.columns = self._match(self.header, ignore)
         self._defaults = {}
         for name, spec in self.fields.items():

@@ -21,6 +21,7 @@ from deathsphere.api.arguments import (
     one_default,
     raise_if_all_invalid,
 )
+from deathsphere.api.orbits import refuse_oversized
 from deathsphere.api.streams import (
     Chunks,
     grid_requests,
@@ -40,6 +41,18 @@ from deathsphere.table import Table
 VERTICAL_ECHO = {"theta_deg": "theta", "a_m": "a", "r_m": "r", "g_m_s2": "g", "mu_available": "mu",
                  "v_cm_m_s": "v_top"}
 
+#: In the point-by-point output (its ``phi_deg`` column tells it apart)
+#: ``v_cm_m_s`` is the speed at phi, not at the top: it is ignored there,
+#: like every other output column, and the top speed comes from
+#: ``--v-top``/``--phidot-top`` (or a ``v_top`` column).
+POINTS_ONLY_ECHO = {"v_cm_m_s": "phi_deg"}
+
+
+#: Peak bytes per row of :func:`vertical`, measured with tracemalloc: a
+#: summary row ~10 kB with stability (the Floquet integration over a lap),
+#: ~0.9 kB without; a row of the point-by-point output ~0.3 kB.
+VERTICAL_ROW_BYTES = {True: 10_200, False: 900}
+POINT_ROW_BYTES = 300
 
 #: Rows of the point-by-point output of a vertical orbit computed at once
 #: (requests x points): a long orbit is written in slices of this many.
@@ -87,7 +100,9 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
     Raises
     ------
     ParameterError
-        As for :func:`orbit`.
+        As for :func:`orbit`; also when the rows would need more than
+        2 GiB (:data:`VERTICAL_ROW_BYTES`, :data:`POINT_ROW_BYTES` per row):
+        use :func:`vertical_sweep`.
 
     Examples
     --------
@@ -107,12 +122,19 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
 
     side = checked_choice("side", side, SIDES)
     given = {"theta": theta, "v_top": v_top, "phidot_top": phidot_top, "a": a, "r": r, "k": k, "g": g, "mu": mu}
-    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    if points is not None:
+        points = int(checked_scalar("points", points))
+        refuse_oversized(checked, POINT_ROW_BYTES, "deathsphere.vertical(points=...)",
+                         "deathsphere.vertical_sweep()", per_request=points)
+    else:
+        refuse_oversized(checked, VERTICAL_ROW_BYTES[bool(stability)], "deathsphere.vertical()",
+                         "deathsphere.vertical_sweep()")
+    shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     req = vertical_requests(n, side=side, **flat)
     if points is None:
         return Table(raise_if_all_invalid(evaluate_vertical(req, stability=bool(stability))).columns, shape=shape)
-    points = int(checked_scalar("points", points))
     table = raise_if_all_invalid(vertical_points(req, points))
     return Table(table.columns, shape=shape + (points,)) if len(table) == n * points else table
 
@@ -194,7 +216,10 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side: str
     ``theta`` and ``v_top`` or ``phidot_top`` (and optionally ``side``,
     ``a``, ``r``, ``k``, ``g``, ``mu``); the keyword arguments are the
     defaults for a missing column or an empty cell (one value each).  A
-    result CSV of ``vertical`` is read too (``v_cm_m_s`` is the top speed).
+    result CSV of ``vertical`` is read too: the summary (``v_cm_m_s`` is the
+    top speed) and the point-by-point output of ``points`` (each point a
+    request; its ``v_cm_m_s`` is the speed at phi and is ignored, so the top
+    speed comes from ``v_top`` or ``phidot_top``).
 
     Examples
     --------
@@ -206,7 +231,7 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side: str
     ['ok', 'invalid']
     """
     from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
-    from deathsphere.results.vertical import VERTICAL_FIELDS, vertical_requests
+    from deathsphere.results.vertical import POINT_COLUMNS, VERTICAL_FIELDS, vertical_requests
 
     defaults = _vertical_setup(side, a, r, k, g, mu)
     points = None if points is None else int(checked_scalar("points", points))
@@ -214,6 +239,8 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side: str
         value = one_default(name, value)
         if value is not None:
             defaults[name] = value
-    reader = request_reader(source, VERTICAL_FIELDS, defaults, VERTICAL_ECHO, VERTICAL_COLUMNS)
+    # both outputs can be fed back: the summary and the orbit point by point
+    outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
+    reader = request_reader(source, VERTICAL_FIELDS, defaults, VERTICAL_ECHO, outputs, POINTS_ONLY_ECHO)
     batches = input_requests(reader, _vertical_chunk(points), vertical_requests)
     return Chunks(_vertical_work(points, bool(stability))(batches))

@@ -119,7 +119,8 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
 @number_option("mu", "MU", "Friction available.", None, "unlimited")
 @click.option("--only", multiple=True, type=click.Choice(api.STATUSES, case_sensitive=False),
               help="Keep only rows with this status (repeatable), e.g. --only ok.")
-@number_option("chunk_size", "N", "Orbits evaluated per chunk; memory stays flat whatever the grid size.",
+@number_option("chunk_size", "N", "Orbits evaluated per chunk; memory stays flat whatever the grid size "
+               "(above 131072, ~256 MiB a chunk, N is clamped to it; the output is the same).",
                None, str(api.CHUNK))
 @jobs_option("evaluating chunks")
 @click.option("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
