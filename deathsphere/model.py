@@ -243,7 +243,7 @@ def validate_requests(req: dict) -> np.ndarray:
         domain(name, ~np.isnan(v))
     with np.errstate(invalid="ignore"):
         checks.append((is_wheel & (omega < 0),
-                       lambda i: f"a wheel's omega is its rate about the vertical, > 0 (got {omega[i]:g})"))
+                       lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {omega[i]:g})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
     checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
