@@ -147,6 +147,13 @@ def test_every_echoed_request_appears_whatever_the_status():
     assert w["omega_rad_s"].tolist() == [1.0, 2.0]
 
 
+def test_the_top_speed_is_echoed_in_the_points_output():
+    _, rows = run("vertical", "--theta", "90", "--v-top", "6", "--points", "3", "--format", "csv")
+    assert [r["v_cm_m_s"] for r in rows][::2] == ["6.0", "6.0"]          # phi = 0 and 360 deg
+    _, rows = run("vertical", "--theta", "37", "--phidot-top", "4.1", "--points", "2", "--format", "csv")
+    assert [r["omega_rad_s"] for r in rows] == ["4.1", "4.1"]
+
+
 # --------------------------------------------------------------------------
 # no root of eq. (29) at a singular point
 
@@ -259,3 +266,8 @@ def test_vertical_reads_its_summary_output_back(tmp_path):
 def test_evaluate_keeps_input_rows_for_wheels_solved_for():
     t = evaluate(make_requests(3, theta=np.array([0.0, 60.0, 180.0]), speed=7.0), stability=False)
     assert sorted(set(t["input_row"].tolist())) == [1, 2, 3]
+
+
+def test_the_equator_reason_names_k_when_k_is_what_vanishes():
+    t = deathsphere.orbit(90, body="sphere", omega3=5.0, k=0.0, stability=False)
+    assert "k omega_3" in str(t["reason"][0])

@@ -71,7 +71,7 @@ REASONS = {
     Reason.PARTICLE_ABOVE_EQUATOR: "a frictionless particle has no horizontal orbit at or above the equator",
     Reason.NO_FIT_VERTICAL: "wheel does not fit on this circle (needs r sin(theta) > a)",
     Reason.SPHERE_NO_FIT: "rolling sphere does not fit inside (needs a < r)",
-    Reason.ZERO_RATE_EQUATOR: "on the equator eq. 55 needs omega_3 != 0",
+    Reason.ZERO_RATE_EQUATOR: "on the equator eq. 55 needs k omega_3 != 0 (a spin and rotational inertia)",
     Reason.VERTICAL_TOP_TOO_SLOW: "top rate too low: the wheel leaves the wall at the top of the vertical orbit (eq. 28a needs r' phidot0^2 > g)",
     Reason.VERTICAL_OUTSIDE_LEAVES: "outside the sphere a vertical orbit cannot close: the wheel leaves the surface at phi_leave (eq. 82)",
     Reason.SPHERE_NO_CONTACT_INSIDE: "contact force pulls away from the wall (eq. 58 needs (r-a) Omega^2 sin^2(theta) > g cos(theta))",

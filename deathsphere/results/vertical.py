@@ -189,4 +189,8 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
         "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],
         "phi_deg": phi_col, "status": STATUS_LABELS[status], "reason": reason, **cols,
     }
+    # at the top (phi = 0 and 360 deg) the speed or rate given is printed as given
+    top = (phi_col == 0.0) | (phi_col == 360.0)
+    echo_given(columns, {"v_cm_m_s": np.where(top, req["v_top"][source], np.nan),
+                         "omega_rad_s": np.where(top, req["phidot_top"][source], np.nan)})
     return Table({name: columns[name][order] for name in POINT_COLUMNS})
