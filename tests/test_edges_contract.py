@@ -271,3 +271,11 @@ def test_evaluate_keeps_input_rows_for_wheels_solved_for():
 def test_the_equator_reason_names_k_when_k_is_what_vanishes():
     t = deathsphere.orbit(90, body="sphere", omega3=5.0, k=0.0, stability=False)
     assert "k omega_3" in str(t["reason"][0])
+
+
+def test_simulate_echoes_its_tilt_as_given():
+    from deathsphere.api.simulation import prepare_simulation
+
+    sim = prepare_simulation(60, 10.123456789, periods=0.01, points_per_period=4)
+    list(sim.chunks())
+    assert sim.summary()["alpha_deg"][0] == 10.123456789
