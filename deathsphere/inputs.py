@@ -48,6 +48,7 @@ from typing import BinaryIO, Iterable, Iterator
 import numpy as np
 
 from deathsphere.model import REQUEST_FIELDS
+from deathsphere.table.reasons import echo
 
 ALIASES = {
     "theta_deg": "theta", "alpha_deg": "alpha", "a_m": "a", "r_m": "r", "g_m_s2": "g",
@@ -264,8 +265,14 @@ class _Lines:
         return lines
 
 
-def _short(cell: str, limit: int = 40) -> str:
-    return repr(cell if len(cell) <= limit else cell[:limit] + "...")
+def _quoting_problem(message: str) -> str:
+    """A row's reason for the csv module's complaint, in words without a
+    comma (its own message for text after a closing quote holds one)."""
+    if "unexpected end" in message:
+        return "unclosed quote"
+    if "expected after" in message:
+        return "bad quoting: text after a closing quote (a quoted field ends at the next separator)"
+    return f"bad quoting: {echo(message)}"
 
 
 class RequestReader:
@@ -280,6 +287,9 @@ class RequestReader:
     ``aliases``: other header names -> field (default :data:`ALIASES`).
     ``ignore``: header names read and discarded (a command's output columns);
     a name that is a field or an alias is read as that field even if listed.
+    ``ignore_when``: alias -> header name: that alias is discarded instead
+    when the header also holds that name (an output column whose meaning
+    depends on the output it comes from).
     ``source``: the input's name in messages.
 
     The constructor reads up to and including the header and raises
@@ -288,7 +298,7 @@ class RequestReader:
     """
 
     def __init__(self, stream: BinaryIO, fields: dict, overrides: dict | None = None, *, source: str = "input",
-                 aliases: dict | None = None, ignore: Iterable[str] = ()):
+                 aliases: dict | None = None, ignore: Iterable[str] = (), ignore_when: dict | None = None):
         self.source = source
         self.fields = dict(fields)
         self.aliases = ALIASES if aliases is None else dict(aliases)
@@ -314,6 +324,11 @@ class RequestReader:
             why = "an unclosed quote" if "unexpected end" in str(exc) else f"bad quoting ({exc})"
             raise InputError(f"{source}: the header line has {why}") from None
         self.header = [name.strip() for name in names]
+        present = {name.lower() for name in self.header}
+        for alias, marker in (ignore_when or {}).items():
+            if marker.lower() in present:
+                self.aliases = {a: f for a, f in self.aliases.items() if a.lower() != alias.lower()}
+                ignore = [*ignore, alias]
         self.columns = self._match(self.header, ignore)
         self._overrides = {name: value for name, value in (overrides or {}).items()
                            if name in self.fields and value is not None}
@@ -454,7 +469,7 @@ class RequestReader:
             try:
                 cells[i] = next(csv.reader((text,), strict=True, skipinitialspace=True, delimiter=sep))
             except csv.Error as exc:
-                invalid[i] = "unclosed quote" if "unexpected end" in str(exc) else f"bad quoting: {exc}"
+                invalid[i] = _quoting_problem(str(exc))
                 cells[i] = [""] * width
         return cells
 
@@ -486,7 +501,7 @@ class RequestReader:
         if bad.any():
             for i in np.flatnonzero(bad):
                 if not invalid[i]:
-                    invalid[i] = f"{name}: {_short(column[i].strip())} is not a finite number"
+                    invalid[i] = f"{name}: {echo(column[i].strip())} is not a finite number"
             out[bad] = math.nan
         return out
 
@@ -501,12 +516,12 @@ class RequestReader:
                 number = float(cell)
             except ValueError:
                 if not invalid[i]:
-                    invalid[i] = f"{name}: {_short(cell)} is not a number"
+                    invalid[i] = f"{name}: {echo(cell)} is not a number"
                 number = math.nan
             else:
                 if math.isnan(number) or (math.isinf(number) and not infinite_ok):
                     if not invalid[i]:
-                        invalid[i] = f"{name}: {_short(cell)} is not a finite number"
+                        invalid[i] = f"{name}: {echo(cell)} is not a finite number"
                     number = math.nan
             out[i] = number
         return out

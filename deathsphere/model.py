@@ -28,6 +28,7 @@ from deathsphere.constants import (
 from deathsphere.physics import wheel
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.table import Table
+from deathsphere.table.reasons import echo
 
 #: The contract's columns, in order (docs/contract.md).  Add, never rename or reorder.
 COLUMNS = (
@@ -209,8 +210,8 @@ def validate_requests(req: dict) -> np.ndarray:
     reason = req["invalid"].copy()
     pending = reason == ""
     checks = [
-        (~np.isin(body, BODIES), lambda i: f"body must be one of {' | '.join(BODIES)} (got {body[i]!r})"),
-        (~np.isin(side, SIDES), lambda i: f"side must be one of {' | '.join(SIDES)} (got {side[i]!r})"),
+        (~np.isin(body, BODIES), lambda i: f"body must be one of {' | '.join(BODIES)} (got {echo(body[i])})"),
+        (~np.isin(side, SIDES), lambda i: f"side must be one of {' | '.join(SIDES)} (got {echo(side[i])})"),
         (np.isnan(req["theta"]), lambda i: "theta is missing (give --theta or a theta column)"),
     ]
 
@@ -231,12 +232,12 @@ def validate_requests(req: dict) -> np.ndarray:
     is_wheel, is_sphere = body == "wheel", body == "sphere"
     targets = (~np.isnan(alpha)).astype(int) + (~np.isnan(omega)) + (~np.isnan(speed))
     checks.append((is_wheel & (targets != 1),
-                   lambda i: "a wheel needs exactly one of alpha, speed (m/s) and omega (rad/s)"))
+                   lambda i: "a wheel needs exactly one of alpha | speed (m/s) | omega (rad/s)"))
     for name, v in (("alpha", alpha), ("speed", speed), ("omega", omega), ("omega3", omega3)):
         domain(name, ~np.isnan(v))
     with np.errstate(invalid="ignore"):
         checks.append((is_wheel & (omega < 0),
-                       lambda i: f"a wheel's omega is its rate about the vertical, > 0 (got {omega[i]:g})"))
+                       lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {omega[i]:g})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
     checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
@@ -245,7 +246,7 @@ def validate_requests(req: dict) -> np.ndarray:
     with np.errstate(invalid="ignore"):
         bank = np.abs(params.reduce_angle(alpha - fixed_bank_angle(req["theta"], side))) < 1e-9
     checks.append((is_sphere & ~np.isnan(alpha) & ~bank,
-                   lambda i: "a sphere's tilt is fixed (theta - 90 deg inside, + 90 outside): no alpha"))
+                   lambda i: "a sphere's tilt is fixed (theta - 90 deg inside; theta + 90 deg outside): no alpha"))
     checks.append(((body == "particle") & ~(np.isnan(alpha) & np.isnan(omega)),
                    lambda i: "a particle takes only theta (no alpha or omega)"))
     for failed, words in checks:
@@ -413,17 +414,29 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
     finite_or_blank(columns)
     columns.update(add_stability(columns) if stability else _no_stability(len(pick)))
-    # an input solved for is echoed as given (a root of eq. 29 reproduces a
-    # wheel's speed or rate only to the last bits)
-    for name, column in (("speed", "v_cm_m_s"), ("omega", "omega_rad_s")):
-        target = req[name][pick]
-        columns[column] = np.where(~np.isnan(target) & ~np.isnan(columns[column]), target, columns[column])
+    echo_given(columns, {column: req[name][pick] for name, column in ECHOED.items()})
     return Table({name: columns[name] for name in COLUMNS})
 
 
 #: Statuses of a steady orbit that exists with contact (it may need more
 #: friction or g-load than allowed): its stability is analysed.
 LIVE_STATUSES = ("ok", "slips", "over_g")
+#: Request fields a row prints as given, and their columns (docs/contract.md,
+#: "Inputs are echoed as given").
+ECHOED = {"speed": "v_cm_m_s", "omega": "omega_rad_s", "omega3": "omega3_rad_s"}
+
+
+def echo_given(columns: dict, given: dict) -> None:
+    """Print a quantity a request fixes as given, in every row that is not
+    ``invalid``, whatever its status: a solved root reproduces a wheel's
+    speed or rate only to the last bits, and a row with no orbit (no root,
+    a pole, no fit) computes none, yet it is still the answer to that
+    request (two requests must not give identical rows).  ``given``:
+    column -> the requested values per row (NaN where not given)."""
+    valid = columns["status"] != "invalid"
+    for column, target in given.items():
+        columns[column] = np.where(valid & ~np.isnan(target), target, columns[column])
+
 
 #: The reason of a row whose result left float64's range (a backstop: the
 #: input domains of :mod:`deathsphere.params` are chosen so that it never fires).

@@ -27,6 +27,7 @@ from deathsphere.constants import (
     TABLE1_SPHERE_RADIUS,
     TABLE1_WHEEL_RADIUS,
 )
+from deathsphere.errors import ParameterError  # noqa: F401  (raised by every check here; the API's error)
 
 #: Dimensional inputs lie within [TINY, HUGE] in magnitude (see above).
 TINY = 1e-9
@@ -35,19 +36,6 @@ HUGE = 1e9
 #: 2.2e-14): it silently raises any smaller rtol to this, with a warning,
 #: so a smaller one is refused rather than reported as if it had been used.
 RTOL_MIN = 100 * np.finfo(float).eps
-
-
-class ParameterError(ValueError):
-    """An input value outside its allowed set; the message is one line
-    saying what is wrong and what is allowed.  ``param`` names the
-    parameter at fault (as in the API and the command line's ``--name``),
-    or is None for a rule between several; ``missing`` says that it was
-    required and not given."""
-
-    def __init__(self, message: str, param: str | None = None, missing: bool = False):
-        super().__init__(message)
-        self.param = param
-        self.missing = missing
 
 
 @dataclass(frozen=True)

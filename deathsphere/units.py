@@ -65,8 +65,7 @@ _SPLIT = re.compile(rf"({_NUM}(?:\s*:\s*{_NUM})*)\s*(.*)", re.IGNORECASE | re.DO
 
 
 def _error(message: str, param: str | None):
-    # imported here: params imports numpy, and a plain number should cost nothing
-    from deathsphere.params import ParameterError
+    from deathsphere.errors import ParameterError
     return ParameterError(message, param)
 
 

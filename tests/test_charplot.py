@@ -104,8 +104,8 @@ def test_narrow_width_and_rich_rendering():
 
 
 def test_stability_marks_exactly_the_unstable_cells():
-    from deathsphere.render.charplot import UNSTABLE
     from deathsphere.physics.stability import Verdict, wheel_stability
+    from deathsphere.render.charplot import UNSTABLE
 
     a, r = 0.9, 3.0                                        # a/r = 0.3: stable and unstable orbits
     cmap = char_map(a, r, K, stability=True)

@@ -1,7 +1,15 @@
 import numpy as np
 import pytest
 
-from deathsphere.grid import Axis, parse_segment, RangeError, grid_chunks, parse_many, parse_values, range_size
+from deathsphere.grid import (
+    Axis,
+    RangeError,
+    grid_chunks,
+    parse_many,
+    parse_segment,
+    parse_values,
+    range_size,
+)
 
 
 def test_stop_included_as_a_physicist_reads_it():

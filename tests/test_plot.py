@@ -82,9 +82,8 @@ def test_drawn_curves_lie_on_the_boundaries():
 
 
 def test_stability_margin_sign_is_the_verdict():
-    from deathsphere.physics.stability import stability_margin
     from deathsphere.physics import region
-    from deathsphere.physics.stability import Verdict, wheel_stability
+    from deathsphere.physics.stability import Verdict, stability_margin, wheel_stability
 
     for outside, hi in ((False, 90.0), (True, 270.0)):
         T, A = np.meshgrid(np.deg2rad(np.arange(1.0, 180.0, 2.0)), np.deg2rad(np.arange(0.3, hi, 2.0)))

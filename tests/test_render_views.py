@@ -10,7 +10,6 @@ from rich.console import Console
 
 from deathsphere.model import Setup, Table, evaluate, make_requests
 from deathsphere.render import orbit_views
-from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS, format_number
 from deathsphere.render.orbit_views import (
     generic_table,
     many_orbits_table,
@@ -19,6 +18,7 @@ from deathsphere.render.orbit_views import (
     write_rich_table,
 )
 from deathsphere.render.paper_views import stability_view, table1_view
+from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS, format_number
 
 WIDTHS = (60, 80, 120)
 

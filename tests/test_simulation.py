@@ -13,7 +13,6 @@ import sys
 import numpy as np
 import pytest
 
-from deathsphere.render import figures as plot_module
 from deathsphere import simulation as sim
 from deathsphere.model import Setup
 from deathsphere.physics import dynamics as dyn
@@ -21,6 +20,7 @@ from deathsphere.physics import sphere as sph
 from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
 from deathsphere.physics.stability import wheel_stability
+from deathsphere.render import figures as plot_module
 
 TABLE1 = Setup()                 # wheel inside, a = 0.3 m, r = 3 m, k = 1/2, g = 9.80665
 DEG = np.pi / 180

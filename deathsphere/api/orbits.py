@@ -51,6 +51,41 @@ from deathsphere.model import (
 from deathsphere.params import ParameterError
 from deathsphere.table import Table
 
+#: Peak memory one call of :func:`orbit` or :func:`~deathsphere.api.vertical`
+#: may take: a larger broadcast is refused before any array is built, with
+#: a pointer to the streamed form (:func:`sweep`, ``vertical_sweep``), whose
+#: memory stays flat.
+CALL_BYTES = 2 * 1024 ** 3
+#: Peak bytes per row of :func:`orbit`, measured with tracemalloc over 2e5
+#: rows: ~1.1 kB with the stability columns (~0.7 kB without).
+ORBIT_ROW_BYTES = 1100
+#: Rows one :func:`orbit` call evaluates at most: CALL_BYTES / ORBIT_ROW_BYTES.
+MAX_ORBIT_ROWS = CALL_BYTES // ORBIT_ROW_BYTES
+#: Grid points per chunk of :func:`sweep` and rows per chunk of
+#: :func:`orbit_input` at most: a larger ``chunk_size`` is clamped to this
+#: (the output is the same whatever the chunk size).  A chunk, with its CSV
+#: text, peaks at ~2 kB per row (tracemalloc, with or without stability), so
+#: this keeps one chunk under ~256 MiB; each of ``jobs`` processes holds one.
+MAX_CHUNK_ROWS = 131072
+
+
+def refuse_oversized(arrays: dict, row_bytes: int, call: str, instead: str, per_request: int = 1) -> None:
+    """ParameterError when the broadcast of ``arrays`` would need more than
+    :data:`CALL_BYTES` at ``row_bytes`` per row (``per_request`` rows per
+    element), checked from the shapes alone, before anything is allocated.
+    Shapes that do not broadcast are left to the caller's own message."""
+    try:
+        shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
+    except ValueError:
+        return
+    rows = math.prod(shape) * per_request
+    limit = CALL_BYTES // row_bytes
+    if rows > limit:
+        raise ParameterError(
+            f"{call} evaluates at most {limit} rows at once ({CALL_BYTES // 1024 ** 3} GiB at ~{row_bytes} bytes "
+            f"each); these arguments give {rows} (shape {shape}): use {instead}, which streams them chunk by chunk "
+            f"in flat memory")
+
 
 def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
           mu=INF, omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None,
@@ -113,7 +148,9 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     ParameterError
         A value outside its parameter's allowed set, wherever it is in an
         array (the command line refuses such an option as a whole), e.g.
-        ``theta (polar angle) must be 0..180 deg (got 200)``; or a call none
+        ``theta (polar angle) must be 0..180 deg (got 200)``; arguments that
+        broadcast to more than :data:`MAX_ORBIT_ROWS` (1952257) rows, about
+        2 GiB (use :func:`sweep`); or a call none
         of whose requests can be computed (one request that breaks a
         combination rule, such as r <= a inside or a wheel given no tilt).
         When only some elements of the broadcast break a combination rule
@@ -140,14 +177,16 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     >>> deathsphere.orbit(200, 10)
     Traceback (most recent call last):
     ...
-    deathsphere.params.ParameterError: theta (polar angle) must be 0..180 deg (got 200)
+    deathsphere.ParameterError: theta (polar angle) must be 0..180 deg (got 200)
     """
     body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     r = sphere_radius(r, diameter)
     given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "max_g": max_g,
              "omega3": omega3, "omega": omega, "speed": speed}
-    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    refuse_oversized(checked, ORBIT_ROW_BYTES, "deathsphere.orbit()", "deathsphere.sweep()")
+    shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, **flat), stability=stability))
     several = (body == "wheel" and alpha is None) or (body == "sphere" and omega3 is not None)
@@ -179,7 +218,9 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     only : str or list of str, optional
         Keep only rows with these statuses (``"ok"``, ``"no_fit"``, ...).
     chunk_size : int
-        Grid points evaluated per chunk (memory stays flat).
+        Grid points evaluated per chunk (memory stays flat); at most
+        :data:`MAX_CHUNK_ROWS` (131072, ~256 MiB per chunk): a larger value
+        is clamped to it, which changes nothing in the output.
     stability : bool
         Fill the stability columns.
     jobs : int
@@ -214,6 +255,7 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
     g, mu, max_g = checked_scalar("g", g), checked_scalar("mu", mu), checked_scalar("max_g", max_g)
     chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
+    chunk_size = min(chunk_size, MAX_CHUNK_ROWS)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     if diameter is not None:
         if is_given(r) and r is not R:
@@ -292,6 +334,7 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     (['ok', 'invalid'], [1, 2])
     """
     chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
+    chunk_size = min(chunk_size, MAX_CHUNK_ROWS)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     overrides = {}
     if body is not None:

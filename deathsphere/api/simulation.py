@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from deathsphere import params
@@ -165,6 +167,9 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
             starts = simulation.vertical_starts(setup, theta, v_top, perturb_deg=perturb)
         elif setup.body == "wheel":
             starts = simulation.horizontal_starts(setup, theta, params.reduce_angle(alpha), perturb_deg=perturb)
+            # the tilt is echoed as given (the reduction to (-180, 180] may
+            # change its last bits: 10.123456789 -> 10.123456788999988)
+            starts = dataclasses.replace(starts, alpha_deg=np.full(len(starts), alpha))
         else:
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb_deg=perturb)

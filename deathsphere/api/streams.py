@@ -118,17 +118,18 @@ def input_requests(reader, chunk_size: int, make) -> Iterator[tuple[int, dict]]:
                             for name in reader.fields})
 
 
-def request_reader(source, fields: dict, overrides: dict, echo: dict, columns):
+def request_reader(source, fields: dict, overrides: dict, echo: dict, columns, ignore_when=None):
     """A streaming reader of the request CSV ``source`` (a path, or ``"-"``
     for standard input).  ``overrides`` are the options given with it,
     applied to every row over the file's columns.  ``echo`` maps the output
     columns that echo an input back to that input, so that a result CSV can
-    be fed back; every other output column in ``columns`` is read and ignored."""
+    be fed back; every other output column in ``columns`` is read and
+    ignored (``ignore_when``: see :class:`~deathsphere.inputs.RequestReader`)."""
     from deathsphere.inputs import InputError, RequestReader, open_input
 
     name = "stdin" if source == "-" else os.fspath(source)
     try:
         return RequestReader(open_input(os.fspath(source)), fields, overrides, source=name, aliases=echo,
-                             ignore=[c for c in columns if c not in echo])
+                             ignore=[c for c in columns if c not in echo], ignore_when=ignore_when)
     except InputError as exc:
         raise ParameterError(str(exc), "input") from None

@@ -26,6 +26,7 @@ from deathsphere.api.arguments import (
     raise_if_all_invalid,
     sphere_radius,
 )
+from deathsphere.api.orbits import refuse_oversized
 from deathsphere.api.streams import (
     Chunks,
     grid_requests,
@@ -45,6 +46,18 @@ from deathsphere.table import Table
 VERTICAL_ECHO = {"theta_deg": "theta", "a_m": "a", "r_m": "r", "g_m_s2": "g", "mu_available": "mu",
                  "v_cm_m_s": "v_top"}
 
+#: In the point-by-point output (its ``phi_deg`` column tells it apart)
+#: ``v_cm_m_s`` is the speed at phi, not at the top: it is ignored there,
+#: like every other output column, and the top speed comes from
+#: ``--v-top``/``--phidot-top`` (or a ``v_top`` column).
+POINTS_ONLY_ECHO = {"v_cm_m_s": "phi_deg"}
+
+
+#: Peak bytes per row of :func:`vertical`, measured with tracemalloc: a
+#: summary row ~10 kB with stability (the Floquet integration over a lap),
+#: ~0.9 kB without; a row of the point-by-point output ~0.3 kB.
+VERTICAL_ROW_BYTES = {True: 10_200, False: 900}
+POINT_ROW_BYTES = 300
 
 #: Rows of the point-by-point output of a vertical orbit computed at once
 #: (requests x points): a long orbit is written in slices of this many.
@@ -92,7 +105,9 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
     Raises
     ------
     ParameterError
-        As for :func:`orbit`.
+        As for :func:`orbit`; also when the rows would need more than
+        2 GiB (:data:`VERTICAL_ROW_BYTES`, :data:`POINT_ROW_BYTES` per row):
+        use :func:`vertical_sweep`.
 
     Examples
     --------
@@ -114,13 +129,20 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     r = sphere_radius(r, diameter)
     given = {"theta": theta, "v_top": v_top, "phidot_top": phidot_top, "a": a, "r": r, "k": k, "g": g, "mu": mu}
-    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    if points is not None:
+        points = int(checked_scalar("points", points))
+        refuse_oversized(checked, POINT_ROW_BYTES, "deathsphere.vertical(points=...)",
+                         "deathsphere.vertical_sweep()", per_request=points)
+    else:
+        refuse_oversized(checked, VERTICAL_ROW_BYTES[bool(stability)], "deathsphere.vertical()",
+                         "deathsphere.vertical_sweep()")
+    shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     req = vertical_requests(n, side=side, **flat)
     if points is None:
         table = Table(raise_if_all_invalid(evaluate_vertical(req, stability=stability)).columns, shape=shape)
     else:
-        points = int(checked_scalar("points", points))
         table = raise_if_all_invalid(vertical_points(req, points))
         if len(table) == n * points:
             table = Table(table.columns, shape=shape + (points,))
@@ -210,7 +232,10 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     ``a``, ``r``, ``k``, ``g``, ``mu``); a keyword argument given applies
     to every row, over the file's column (one value each); one not given
     takes the file's value, else its default (k = 0.5).  A result CSV of
-    ``vertical`` is read too (``v_cm_m_s`` is the top speed).
+    ``vertical`` is read too: the summary (``v_cm_m_s`` is the top speed)
+    and the point-by-point output of ``points`` (each point a request; its
+    ``v_cm_m_s`` is the speed at phi and is ignored, so the top speed comes
+    from ``v_top`` or ``phidot_top``).
 
     Examples
     --------
@@ -222,7 +247,11 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     ['ok', 'invalid']
     """
     from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
-    from deathsphere.results.vertical import VERTICAL_FIELDS, vertical_requests
+    from deathsphere.results.vertical import (
+        POINT_COLUMNS,
+        VERTICAL_FIELDS,
+        vertical_requests,
+    )
 
     points = None if points is None else int(checked_scalar("points", points))
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
@@ -232,6 +261,8 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
         value = one_default(name, value)
         if value is not None:
             overrides[name] = value
-    reader = request_reader(source, VERTICAL_FIELDS, overrides, VERTICAL_ECHO, VERTICAL_COLUMNS)
+    # both outputs can be fed back: the summary and the orbit point by point
+    outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
+    reader = request_reader(source, VERTICAL_FIELDS, overrides, VERTICAL_ECHO, outputs, POINTS_ONLY_ECHO)
     batches = input_requests(reader, _vertical_chunk(points), vertical_requests)
     return Chunks(_vertical_work(points, stability, keep)(batches))

@@ -23,7 +23,7 @@ Units: rad, m, s; broadcasting; statuses instead of exceptions.
 import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR
-from deathsphere.physics.status import Reason, Status, first_failure
+from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
 __all__ = ["omega_squared", "particle_orbit"]
 
@@ -57,7 +57,8 @@ def particle_orbit(theta, r, g, outside=False, mu=np.inf):
     axis) [m], ``omega2``, ``omega`` (>= 0) [rad/s], ``period`` [s], ``v_cm``
     [m/s], ``spin`` (0: a point particle has no rolling spin), ``accel``,
     ``accel_g``, ``normal`` (per unit mass, pressing particle and sphere
-    together) [m/s^2], ``friction`` (0), ``mu_required`` (0), int8
+    together) [m/s^2], ``friction`` (0), ``mu_required`` (0; NaN without
+    contact), int8
     ``status``/``reason``:
 
     - inside: ok below the equator; no_orbit with PARTICLE_ABOVE_EQUATOR at
@@ -81,11 +82,13 @@ def particle_orbit(theta, r, g, outside=False, mu=np.inf):
     # inward push r Omega^2 inside; the outward push outside is its negative
     normal = np.where(outside, -r * om2_r, r * om2_r)
     zero = np.where(real, 0.0, np.nan)
+    # 0 where the particle presses on the wall, NaN where it would have to pull
+    mu_req = mu_required(normal, zero)
     status, reason = first_failure([
         (pole, Status.NO_ORBIT, Reason.POLE),
         (~real, Status.NO_ORBIT, Reason.PARTICLE_ABOVE_EQUATOR),
         (~(normal > 0), Status.NO_CONTACT, Reason.PARTICLE_OUTSIDE_BELOW_EQUATOR),
-        (zero > mu, Status.SLIPS, Reason.SLIPS),
+        (mu_req > mu, Status.SLIPS, Reason.SLIPS),
     ])
     accel = np.abs(rp) * om2_r
     return {
@@ -99,7 +102,7 @@ def particle_orbit(theta, r, g, outside=False, mu=np.inf):
         "accel_g": accel / g,
         "normal": normal,
         "friction": zero,
-        "mu_required": zero,
+        "mu_required": mu_req,
         "status": status,
         "reason": reason,
     }

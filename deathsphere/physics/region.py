@@ -575,6 +575,15 @@ def _limit_speed(lo, hi, vmin_near, a, r, k, g, outside, mu, max_g):
 # tilt for a given speed or rotation rate
 # ---------------------------------------------------------------------------
 
+#: A root of the speed or rate equation is reported only where the forward
+#: model (:func:`~deathsphere.physics.wheel.horizontal_orbit`) at it gives the
+#: target back to this relative tolerance (docs/limits.md, "Bank angle for a
+#: given speed").  Loose on purpose: next to a pole of eq. (29) v_cm changes
+#: so fast with alpha that a root exact to the last bit of alpha reproduces
+#: the target only to ~1e-4; a false root (0/0 at a singular point) gives NaN.
+ROOT_MATCH_RTOL = 1e-3
+
+
 def solve_alpha(theta, a, r, k, g=STANDARD_GRAVITY, speed=None, omega=None, outside=False,
                 mu=np.inf, alpha_range=None):
     """Every tilt alpha at which eq. (29) gives the centre speed
@@ -588,7 +597,9 @@ def solve_alpha(theta, a, r, k, g=STANDARD_GRAVITY, speed=None, omega=None, outs
     of :func:`deathsphere.physics.wheel.horizontal_orbit` (with ``mu``), so
     its status says whether it is a feasible orbit.  Tangent (double) roots,
     where the speed is exactly a local extremum of v_cm(alpha), are not
-    reported.
+    reported; nor is a zero at which the forward model does not give the
+    target back to :data:`ROOT_MATCH_RTOL` (a singular point of eq. (29),
+    where the polynomial vanishes but Omega is undefined).
 
     Parameters
     ----------
@@ -633,6 +644,17 @@ def solve_alpha(theta, a, r, k, g=STANDARD_GRAVITY, speed=None, omega=None, outs
     m = roots.shape[1]
     found = np.isfinite(roots)
     orb = horizontal_orbit(t1[:, None], np.where(found, roots, 0.0), a, r, k, g, outside, mu)
+    # A zero of h is a tilt giving the target only where eq. (29) is defined
+    # there and gives it back: h vanishes also where its numerator and the
+    # denominator of eq. (29) vanish together (the poles at theta = 0 or 180
+    # deg, alpha = 0 for a huge rate), and the forward model is NaN there.
+    got = orb["v_cm"] if speed is not None else orb["omega"]
+    with np.errstate(invalid="ignore"):
+        found &= np.abs(got - tg[:, None]) <= ROOT_MATCH_RTOL * tg[:, None]
+    order = np.argsort(~found, axis=1, kind="stable")       # kept roots first, still increasing
+    found = np.take_along_axis(found, order, axis=1)
+    roots = np.where(found, np.take_along_axis(roots, order, axis=1), np.nan)
+    orb = {key: np.take_along_axis(np.broadcast_to(val, roots.shape), order, axis=1) for key, val in orb.items()}
     out = {"alpha": roots.reshape(shape + (m,)), "count": np.sum(found, axis=1).reshape(shape)}
     for key, val in orb.items():
         if key in ("status", "reason"):

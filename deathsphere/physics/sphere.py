@@ -43,7 +43,7 @@ import numpy as np
 
 from deathsphere.constants import DEFAULT_INERTIA, STANDARD_GRAVITY
 from deathsphere.physics.geometry import SINGULAR
-from deathsphere.physics.status import Reason, Status, first_failure
+from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
 #: inertia factor of a uniform solid ball, I = k m a^2 (sec. 4), 2/5
 K_SOLID_BALL = DEFAULT_INERTIA["sphere"]
@@ -269,7 +269,7 @@ def _orbit(theta, omega, omega3, branch, a, r, k, g, outside, mu, extra_fail):
     om = np.where(defined, omega, np.nan)
     normal, friction = contact_force(theta, om, a, r, g, outside)
     ok_n = normal > 0
-    mu_req = np.where(ok_n, np.abs(friction) / np.where(ok_n, normal, 1.0), np.nan)
+    mu_req = mu_required(normal, friction)
     rp = rho * np.sin(theta)
     om_s = np.where(defined, om, 1.0)
     period = np.where(defined, 2 * np.pi / np.abs(om_s), np.nan)

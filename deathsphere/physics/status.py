@@ -74,7 +74,7 @@ REASONS = {
     Reason.PARTICLE_ABOVE_EQUATOR: "a frictionless particle has no horizontal orbit at or above the equator",
     Reason.NO_FIT_VERTICAL: "wheel does not fit on this circle (needs r sin(theta) > a)",
     Reason.SPHERE_NO_FIT: "rolling sphere does not fit inside (needs a < r)",
-    Reason.ZERO_RATE_EQUATOR: "on the equator eq. 55 needs omega_3 != 0",
+    Reason.ZERO_RATE_EQUATOR: "on the equator eq. 55 needs k omega_3 != 0 (a spin and rotational inertia)",
     Reason.VERTICAL_TOP_TOO_SLOW: "top rate too low: the wheel leaves the wall at the top of the vertical orbit (eq. 28a needs r' phidot0^2 > g)",
     Reason.VERTICAL_OUTSIDE_LEAVES: "outside the sphere a vertical orbit cannot close: the wheel leaves the surface at phi_leave (eq. 82)",
     Reason.SPHERE_NO_CONTACT_INSIDE: "contact force pulls away from the wall (eq. 58 needs (r-a) Omega^2 sin^2(theta) > g cos(theta))",
@@ -89,6 +89,18 @@ REASONS = {
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.
 REASON_TEXT = np.array([REASONS[Reason(i)] for i in range(len(Reason))], dtype=object)
+
+
+def mu_required(normal, friction):
+    """Least static friction coefficient that holds the contact, eq. (35):
+    |friction| / normal, NaN where the normal force is not positive.
+
+    Every body takes its mu_required from here, and decides ``no_contact``
+    on the same test (normal > 0 fails), so that a no_contact row never
+    carries a friction coefficient: friction cannot hold a contact that
+    would have to pull (docs/contract.md, "Statuses")."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.abs(friction) / np.where(normal > 0, normal, np.nan)
 
 
 def first_failure(conditions):

@@ -31,7 +31,7 @@ slip angle) are in docs/derivations-configurations.md.
 import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR, r_prime
-from deathsphere.physics.status import Reason, Status, first_failure
+from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
 __all__ = [
     "vertical_r_prime", "vertical_fits", "top_rate_from_speed", "top_speed_from_rate",
@@ -196,8 +196,7 @@ def contact_force(phi, theta, phidot_top, a, r, k, g, outside=False):
     normal = np.where(outside, radial, -radial) * np.sin(theta)
     meridional = radial * _cos(theta)
     friction = np.hypot(along, meridional)
-    ok = fits & (normal > 0)
-    mu = np.where(ok, friction / np.where(ok, normal, 1.0), np.nan)
+    mu = mu_required(np.where(fits, normal, np.nan), friction)
     nan = ~fits
     return {
         "along": np.where(nan, np.nan, along),

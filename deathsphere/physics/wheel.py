@@ -21,7 +21,7 @@ from deathsphere.physics.geometry import (
     fits_outside,
     r_prime_from_trig,
 )
-from deathsphere.physics.status import Reason, Status, first_failure
+from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
 #: horizontal_orbit evaluates larger inputs in pieces of this many orbits:
 #: small enough for its temporaries to be recycled through the CPU caches,
@@ -125,10 +125,9 @@ def contact_force_body(alpha, r_prime_, omega2, g):
 def friction_coefficient(normal, friction):
     """Least static friction coefficient that holds the contact, eq. (35):
     mu = |F_parallel| / F_perp.  NaN where the normal force is not positive
-    (no contact: mu is undefined there)."""
-    # |F| / NaN is NaN, without a warning: one np.where, not two
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.abs(friction) / np.where(normal > 0, normal, np.nan)
+    (no contact: mu is undefined there).  The rule of every body:
+    :func:`deathsphere.physics.status.mu_required`."""
+    return mu_required(normal, friction)
 
 
 def _orbit(theta, alpha, a, r, k, g, outside, mu):

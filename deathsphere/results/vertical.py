@@ -24,6 +24,7 @@ from deathsphere.model import (
     NOT_ANALYSED_K0,
     REQUEST_FIELDS,
     Table,
+    echo_given,
     finite_or_blank,
     make_requests,
     validate_requests,
@@ -129,9 +130,6 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
             out[col][rows] = np.rad2deg(res[key])
         status[rows] = res["status"]
         reason[rows] = REASON_TEXT[res["reason"]]
-        # the top speed given is echoed as given (v / r' * r' may differ in the last bit)
-        echo = rows[~np.isnan(req["v_top"][rows]) & ~np.isnan(out["v_cm_m_s"][rows])]
-        out["v_cm_m_s"][echo] = req["v_top"][echo]
     verdict = np.full(n, "", dtype=object)
     method = np.full(n, "", dtype=object)
     growth = np.full(n, np.nan)
@@ -159,6 +157,9 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
         **out,
     }
     finite_or_blank(columns)
+    # the top speed or rate given is printed as given (v / r' * r' may differ
+    # in the last bit; a wheel that does not fit computes none)
+    echo_given(columns, {"v_cm_m_s": req["v_top"], "omega_rad_s": req["phidot_top"]})
     return Table({name: columns[name] for name in COLUMNS})
 
 
@@ -198,4 +199,8 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
         "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],
         "phi_deg": phi_col, "status": STATUS_LABELS[status], "reason": reason, **cols,
     }
+    # at the top (phi = 0 and 360 deg) the speed or rate given is printed as given
+    top = (phi_col == 0.0) | (phi_col == 360.0)
+    echo_given(columns, {"v_cm_m_s": np.where(top, req["v_top"][source], np.nan),
+                         "omega_rad_s": np.where(top, req["phidot_top"][source], np.nan)})
     return Table({name: columns[name][order] for name in POINT_COLUMNS})

@@ -12,8 +12,15 @@ import math
 
 import numpy as np
 
-from deathsphere.table import frames
 from deathsphere.table.cells import cell_value, csv_text, python_values
+from deathsphere.table.frames import (
+    arrow_table,
+    pandas_frame,
+    polars_frame,
+    require,
+    xarray_dataset,
+)
+from deathsphere.table.reasons import reason_column
 
 
 class Table:
@@ -72,6 +79,10 @@ class Table:
             raise ValueError(f"columns of unequal length: {lengths}")
         for col in columns.values():
             col.flags.writeable = False
+        if "reason" in columns:
+            # the one gate of every reason text (docs/contract.md: no comma)
+            columns["reason"] = reason_column(columns["reason"])
+            columns["reason"].flags.writeable = False
         self.columns = columns
         n = len(self)
         shape = (n,) if shape is None else tuple(int(s) for s in shape)
@@ -172,20 +183,20 @@ class Table:
         numbers (``input_row``, ``branch``) int64, the rest float64, and
         every undefined value (NaN, empty text, None) a null.  The Parquet
         output (``--output F.parquet``) is this table, chunk by chunk."""
-        return frames.arrow_table(self, method="Table.to_arrow")
+        return arrow_table(self, method="Table.to_arrow")
 
     def to_polars(self):
         """A ``polars.DataFrame`` (through :meth:`to_arrow`: the same types
         and nulls)."""
-        frames.require("polars", "Table.to_polars")
-        return frames.polars_frame(frames.arrow_table(self, method="Table.to_polars"))
+        require("polars", "Table.to_polars")
+        return polars_frame(arrow_table(self, method="Table.to_polars"))
 
     def to_pandas(self):
         """A ``pandas.DataFrame`` (through :meth:`to_arrow`): text columns
         of pandas' ``string`` dtype (``pd.NA`` where undefined), ``branch``
         nullable ``Int64``, floats float64 with NaN."""
-        frames.require("pandas", "Table.to_pandas")
-        return frames.pandas_frame(frames.arrow_table(self, method="Table.to_pandas"), self)
+        require("pandas", "Table.to_pandas")
+        return pandas_frame(arrow_table(self, method="Table.to_pandas"), self)
 
     def to_xarray(self):
         """An ``xarray.Dataset``.  A grid (:attr:`shape` of two axes or more)
@@ -194,7 +205,7 @@ class Table:
         becomes its coordinate, else ``dim_0``, ``dim_1``, ...; any other
         table has one dimension, ``row``.  Text is object (None where
         undefined), ``branch`` float64 (NaN where undefined)."""
-        return frames.xarray_dataset(self)
+        return xarray_dataset(self)
 
     def _summary_line(self) -> str:
         shape = "" if self._shape == (len(self),) else f", shape {self._shape}"

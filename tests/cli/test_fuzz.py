@@ -9,7 +9,9 @@ field counts, binary).  Whatever comes in:
 - on exit status 2, exactly one line on stderr;
 - with ``--input``, every non-blank line after the header comes out, in
   order, numbered by its position after the header;
-- no ``ok`` row carries ``nan`` or ``inf``.
+- no ``ok`` row carries ``nan`` or ``inf``;
+- no reason holds a comma (``awk -F,`` splits the CSV), whatever text the
+  input file echoes into it.
 
 Quick in CI (a bounded number of examples); set DEATHSPHERE_FUZZ_EXAMPLES
 (e.g. 2000) for a deeper run.
@@ -63,6 +65,11 @@ def check_ok_rows_finite(rows):
         if row.get("status") == "ok":
             bad = [k for k, v in row.items() if v is not None and v.strip().lower() in ("nan", "inf", "-inf")]
             assert not bad, row
+
+
+def check_reasons_have_no_comma(rows):
+    for row in rows:
+        assert "," not in (row.get("reason") or ""), row
 
 
 def options(draw, names):
@@ -126,6 +133,7 @@ def test_orbit_options_never_crash(args):
     check_common(res, args)
     if res.exit_code in (0, 1) and args[-1] == "csv":
         check_ok_rows_finite(csv_rows(res.stdout))
+        check_reasons_have_no_comma(csv_rows(res.stdout))
 
 
 @FUZZ
@@ -135,16 +143,17 @@ def test_every_command_never_crashes(args):
     check_common(res, args)
     if res.exit_code in (0, 1) and args[-1] == "csv":
         check_ok_rows_finite(csv_rows(res.stdout))
+        check_reasons_have_no_comma(csv_rows(res.stdout))
 
 
 CELLS = st.sampled_from(["60", "10", "90", "25", "0.3", "3", "", " ", "abc", "nan", "inf", "-1", "200",
                          '"60"', '"6,0"', '"unclosed', "wheel", "sphere", "outside", "\x00", "\u00e9", "1e308",
-                         "405", "-175"])
+                         "405", "-175", '"bi,ke"', '"in,side"', '"60"x', '"1,2,3"', '","'])
 
 
 @st.composite
 def csv_bodies(draw):
-    columns = draw(st.lists(st.sampled_from(["theta", "alpha", "a", "r", "k", "mu", "side", "theta_deg",
+    columns = draw(st.lists(st.sampled_from(["theta", "alpha", "a", "r", "k", "mu", "side", "body", "theta_deg",
                                               "status", "v_cm_m_s"]), min_size=1, max_size=4, unique=True))
     if "theta_deg" in columns and "theta" in columns:
         columns.remove("theta_deg")
@@ -193,3 +202,28 @@ def test_input_rows_are_never_lost(data, command):
     assert numbers == sorted(numbers)
     assert list(dict.fromkeys(numbers)) == data_line_positions(data)
     check_ok_rows_finite(rows)
+    check_reasons_have_no_comma(rows)
+
+
+#: Characters a hostile cell is made of: separators, quotes, escapes, digits
+#: and letters, a line break inside a quoted field, non-ASCII.
+HOSTILE_TEXT = st.text(alphabet=',;"\'\\ \t.-+eE0123456789abcdefgiknrwxyz\u00e9\u2028\n\x7f', max_size=24)
+
+
+@FUZZ
+@given(st.lists(st.tuples(HOSTILE_TEXT, HOSTILE_TEXT, HOSTILE_TEXT), min_size=1, max_size=8))
+def test_hostile_cell_text_never_puts_a_comma_in_a_reason(cells):
+    """Whatever a cell holds, the reason that echoes it has no comma, and
+    every line still gives its row."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["theta", "alpha", "body"])
+    for theta, alpha, body in cells:
+        # a line break would make one request span two lines: not a row of its own
+        writer.writerow([theta.replace("\n", " "), alpha.replace("\n", " "), body.replace("\n", " ")])
+    args = ["orbit", "--input", "-", "--format", "csv", "--no-stability"]
+    res = CliRunner().invoke(cli, args, input=out.getvalue(), catch_exceptions=True)
+    check_common(res, args)
+    rows = csv_rows(res.stdout)
+    check_reasons_have_no_comma(rows)
+    assert [int(r["input_row"]) for r in rows if r["branch"] in ("", "0")] == list(range(1, len(cells) + 1))

@@ -11,7 +11,11 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.geometry import SINGULAR, fits_inside, fits_outside
-from deathsphere.physics.stability.horizontal import CHUNK, empty_result, stability_result
+from deathsphere.physics.stability.horizontal import (
+    CHUNK,
+    empty_result,
+    stability_result,
+)
 from deathsphere.physics.stability.reduction import COMPLEX_STEP
 from deathsphere.physics.stability.verdict import STABLE_TOL, UNSTABLE_TOL, Verdict
 from deathsphere.physics.vectors import dot, zcross

@@ -8,11 +8,10 @@ docs/stability.md sec. 1).
 
 import numpy as np
 import pytest
+from stability_reference import wheel_stability_ref
 
 from deathsphere.physics import stability as st
 from deathsphere.physics.stability import stability_boundary_alphas
-
-from stability_reference import wheel_stability_ref
 
 G = 9.80665
 
