@@ -44,7 +44,7 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
     "Also show the exact linear stability of each orbit (beyond the paper, docs/stability.md): stable and "
     "unstable parts of the allowed region and the boundary between them.  Wheel only: a rolling sphere "
     "has no tilt alpha (and all its horizontal orbits are stable)."))
-@jobs_option("computing the stability boundary (--format csv/json)")
+@jobs_option()
 @output_options()
 def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, jobs, fmt):
     """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.

@@ -119,8 +119,8 @@ def stability_option(default: bool = True, help: str | None = None):
                      "--no-stability leaves them empty and runs faster.")
 
 
-def jobs_option(what: str):
-    return param_option("jobs", help=f"Processes {what}; the output is the same as with one.")
+def jobs_option():
+    return param_option("jobs")
 
 
 def only_option(statuses):

@@ -116,7 +116,7 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
 @orbit_options
 @param_option("chunk_size", help="Orbits evaluated per chunk; memory stays flat whatever the grid size (above "
               "131072, ~256 MiB a chunk, N is clamped to it; the output is the same).")
-@jobs_option("evaluating chunks")
+@jobs_option()
 @single("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
         help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
              "of stdout.  Parquet needs the fast extra.")
@@ -134,7 +134,7 @@ def sweep_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, d
 
     \b
     Examples:
-      deathsphere sweep --theta 5:175:1 --alpha 1:89:1 --only ok | sort -t, -k21,21g
+      deathsphere sweep --theta 5:175:1 --alpha 1:89:1 --only ok | head
       deathsphere sweep --theta 60 --alpha 1:50:1 -a 0.1 -a 0.3 --format ndjson
       deathsphere sweep --body sphere --theta 30:150:10 --omega3 60:120:20
       deathsphere sweep --theta 0:180:0.25 --alpha 0:90:0.25 --output grid.parquet

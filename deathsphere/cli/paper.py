@@ -41,7 +41,7 @@ def table1_command(fmt):
 
 @cli.command("verify")
 @click.option("--claim", "claims", multiple=True, metavar="ID", help="Check only this claim (repeatable).")
-@jobs_option("checking claims")
+@jobs_option()
 @output_options()
 def verify_command(claims, jobs, fmt):
     """Check every quantitative claim of the paper: a checklist with the evidence.

@@ -92,12 +92,12 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
     \b
     Examples:
       deathsphere simulate --theta 60 --alpha 10 --periods 20
-      deathsphere simulate --theta 60 --alpha 10 --perturb 3 --format csv > run.csv
-      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-4    (unstable: loses contact)
+      deathsphere simulate --theta 60 --alpha 10 --perturb 3 --format csv
+      deathsphere simulate --theta 90 --alpha 80 --perturb 1e-4  (loses contact)
       deathsphere simulate --vertical --theta 90 --v-top 5.2
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
       deathsphere simulate --theta 90 --speed 40km/h --diameter 16ft
-      deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output orbit.html   (3-D view)
+      deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
     """
     from deathsphere.render.simulation_view import simulation_view
 

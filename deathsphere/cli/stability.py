@@ -3,6 +3,8 @@ results (:func:`deathsphere.api.stability`, :func:`deathsphere.api.stability_inp
 
 from __future__ import annotations
 
+import click
+
 from deathsphere import api
 from deathsphere.cli.base import (
     choose_format,
@@ -24,7 +26,7 @@ from deathsphere.cli.options import (
 
 
 @cli.command("stability")
-@param_option("theta", multiple=True, required=True)
+@param_option("theta", multiple=True)
 @params_options("alpha", "speed", "omega", "omega3", multiple=("alpha", "speed", "omega", "omega3"))
 @body_option()
 @setup_options()
@@ -44,7 +46,7 @@ def stability_command(theta, alpha, speed, omega, omega3, body, side, a, r, diam
     \b
     Examples:
       deathsphere stability --theta 90 --alpha 45
-      deathsphere stability --theta 90 --alpha 80      (unstable: the equator claim fails)
+      deathsphere stability --theta 90 --alpha 80    (unstable, unlike the paper)
       deathsphere stability --theta 60 --alpha 10 -a 0.03 --format csv
       deathsphere stability --theta 90 --speed 40km/h --diameter 16ft
       deathsphere stability --body sphere --theta 60 --omega3 80
@@ -52,6 +54,8 @@ def stability_command(theta, alpha, speed, omega, omega3, body, side, a, r, diam
     options = given(body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
     orbit = given(theta=theta, alpha=alpha, speed=speed, omega=omega, omega3=omega3)
     fmt = choose_format(fmt)
+    if input is None and not theta:
+        raise click.UsageError("Missing option '--theta' (or give --input FILE)")
     if input is not None:
         finish(stream(api.stability_input(input, **orbit, **options), fmt, label="stability",
                       title="Stability of each orbit", view=_views if fmt == "table" else None))

@@ -1,0 +1,125 @@
+"""The house's layers, read from the source (imports inside functions
+count): physics <- model <- results, simulation <- api <- cli, with the
+result table and the writers beside them and the views consuming tables.
+No module imports one above it, and no import circle exists."""
+
+import ast
+import pathlib
+
+import deathsphere
+
+ROOT = pathlib.Path(deathsphere.__file__).parent
+
+
+def _modules() -> dict[str, set[str]]:
+    """module -> the deathsphere modules it imports (anywhere in its body)."""
+    names = {}
+    for path in ROOT.rglob("*.py"):
+        rel = path.relative_to(ROOT.parent).with_suffix("")
+        name = ".".join(rel.parts).removesuffix(".__init__")
+        names[name] = path
+    graph = {}
+    for name, path in names.items():
+        package = name if path.name == "__init__.py" else name.rsplit(".", 1)[0]
+        targets = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                targets |= {a.name for a in node.names}
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    parts = package.split(".")[: len(package.split(".")) - node.level + 1]
+                    base = ".".join(parts + ([base] if base else []))
+                found = {f"{base}.{a.name}" for a in node.names} & set(names)
+                targets |= found or {base}
+        graph[name] = {t for t in targets if t in names and t != name}
+    return graph
+
+
+GRAPH = _modules()
+
+
+def _layer(module: str) -> str:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else "deathsphere"
+
+
+#: What each layer may import (besides itself).  The bottom: errors,
+#: constants and the lazy loader, which import nothing of the package.
+BOTTOM = {"errors", "constants", "exitcodes"}
+ALLOWED = {
+    "physics": {"constants"},       # standard gravity and the paper's setup are physical constants
+    "table": set(),
+    "errors": set(),
+    "constants": set(),
+    "exitcodes": set(),
+    "units": {"errors"},
+    "params": {"units", "errors", "constants"},
+    "grid": set(),
+    "parallel": set(),
+    "topics": set(),
+    "model": {"physics", "table", "params", "constants", "errors"},
+    "inputs": {"model", "params", "errors", "units", "table"},
+    # verify checks claims about motion with the simulator
+    "results": {"physics", "model", "table", "params", "constants", "parallel", "simulation"},
+    "simulation": {"physics", "model", "table", "params", "constants"},
+    "writers": {"table", "model"},
+    "render": {"table", "model", "constants", "params"},
+    "viewer": {"table", "render"},
+    "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
+            "parallel", "units", "errors"},
+    "__main__": {"cli"},
+    "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics"},
+}
+
+
+def test_no_module_imports_a_layer_above_it():
+    wrong = []
+    for module, targets in GRAPH.items():
+        layer = _layer(module)
+        if layer == "deathsphere":
+            continue
+        for target in targets:
+            other = _layer(target)
+            if other in (layer, "deathsphere") or target == "deathsphere.physics.lazy":
+                continue
+            if other not in ALLOWED.get(layer, set()):
+                wrong.append(f"{module} -> {target}")
+    assert wrong == []
+
+
+def test_no_import_circle():
+    index, low, stack, on, cycles = {}, {}, [], set(), []
+
+    def visit(v, counter=[0]):
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on.add(v)
+        for w in GRAPH[v]:
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            part = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                part.append(w)
+                if w == v:
+                    break
+            if len(part) > 1:
+                cycles.append(sorted(part))
+
+    for v in GRAPH:
+        if v not in index:
+            visit(v)
+    assert cycles == []
+
+
+def test_the_probe_sees_imports_inside_functions():
+    """The graph counts function-level imports (the circle this guards
+    against ran through them)."""
+    assert "deathsphere.results.stability_report" in GRAPH["deathsphere.api.orbit_stability"]
