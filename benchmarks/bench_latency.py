@@ -44,8 +44,8 @@ from __future__ import annotations
 import argparse
 import compileall
 import csv
-import importlib.util
 import datetime
+import importlib.util
 import io
 import os
 import platform

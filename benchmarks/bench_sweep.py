@@ -106,10 +106,10 @@ def main():
           f"{side * side / big[1]:,.0f} rows/s end to end)")
     print(f"memory growth: {big[0] - small[0]:+.1f} MB (goal: within 20 MB)")
     if parquet.parquet_available():
-        parquet = peak_rss_mb(side, side, "--no-stability", "--output", os.path.join(folder, "big.parquet"))
+        to_parquet = peak_rss_mb(side, side, "--no-stability", "--output", os.path.join(folder, "big.parquet"))
         size = os.path.getsize(os.path.join(folder, "big.parquet")) / 1e6
-        print(f"peak RSS, sweep of {side * side:>12,} orbits to Parquet (--no-stability): {parquet[0]:7.1f} MB "
-              f"({parquet[1]:.1f} s, file {size:.0f} MB)")
+        print(f"peak RSS, sweep of {side * side:>12,} orbits to Parquet (--no-stability): {to_parquet[0]:7.1f} MB "
+              f"({to_parquet[1]:.1f} s, file {size:.0f} MB)")
     for name in os.listdir(folder):
         os.remove(os.path.join(folder, name))
     os.rmdir(folder)

@@ -48,6 +48,7 @@ from typing import BinaryIO, Iterable, Iterator
 import numpy as np
 
 from deathsphere.model import REQUEST_FIELDS
+from deathsphere.params import CHUNK
 from deathsphere.table.reasons import echo
 
 ALIASES = {
@@ -60,8 +61,8 @@ INFINITE_OK = ("mu",)
 
 #: A longer line is consumed without being held and its row is invalid.
 MAX_LINE_BYTES = 65536
-#: Rows per chunk of :meth:`RequestReader.chunks`.
-CHUNK_ROWS = 16384
+#: Rows per chunk of :meth:`RequestReader.chunks`: the API's chunk.
+CHUNK_ROWS = CHUNK
 #: Bytes asked of the stream per read (one ``read1`` call: a pipe is not waited on to fill it).
 READ_BYTES = 65536
 

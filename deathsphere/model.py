@@ -26,6 +26,7 @@ from deathsphere.constants import (
 # Only the wheel here: the region's root finder and the other bodies are
 # imported where used, so that a command loads only what it evaluates.
 from deathsphere.physics import wheel
+from deathsphere.physics.geometry import too_big_inside
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.table import Table
 from deathsphere.table.reasons import echo
@@ -157,7 +158,7 @@ def validate_scalars(body, side, a, r, k, g, mu=math.inf) -> str:
 
 
 def _combination_problem(side, a, r) -> str:
-    if side == "inside" and r <= a:
+    if too_big_inside(a, r, side == "outside"):
         return f"r (sphere radius) must be > a = {a:g} m for a body inside (got {r:g})"
     return ""
 
@@ -226,7 +227,7 @@ def validate_requests(req: dict) -> np.ndarray:
     for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)
     with np.errstate(invalid="ignore"):
-        checks.append(((side == "inside") & (req["r"] <= req["a"]),
+        checks.append((too_big_inside(req["a"], req["r"], side != "inside"),
                        lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
     is_wheel, is_sphere = body == "wheel", body == "sphere"

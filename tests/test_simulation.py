@@ -27,7 +27,7 @@ DEG = np.pi / 180
 
 
 def run(starts, **options):
-    return sim.simulate(starts, **options)
+    return sim.run_simulation(starts, **options)
 
 
 # --------------------------------------------------------------------------

@@ -79,7 +79,7 @@ def test_pure_writer_is_used_when_asked_or_when_the_extra_is_missing(pure_output
     """The fallback runs even with polars installed: forced off, or with a
     polars that fails the repr check (or is absent)."""
     calls = []
-    monkeypatch.setattr(polars_csv, "csv_text", lambda *a, **k: calls.append(1) or "")
+    monkeypatch.setattr(polars_csv, "polars_csv_text", lambda *a, **k: calls.append(1) or "")
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=False, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
     monkeypatch.setattr(polars_csv, "_csv_ok", False)
@@ -95,8 +95,8 @@ def test_long_outputs_switch_writers_midway_without_a_seam(pure_outputs, monkeyp
     monkeypatch.setattr(stream, "COMPILED_AFTER_ROWS", 2500)
     monkeypatch.setattr(stream, "COMPILED_MIN_CHUNK", 600)
     used = []
-    real = polars_csv.csv_text
-    monkeypatch.setattr(polars_csv, "csv_text", lambda table, header: used.append(len(table)) or real(table, header))
+    real = polars_csv.polars_csv_text
+    monkeypatch.setattr(polars_csv, "polars_csv_text", lambda table, header: used.append(len(table)) or real(table, header))
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=None, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
     assert used and sum(used) < res.stdout.count("\n") - 2500
@@ -143,7 +143,7 @@ def tables(draw):
 @settings(max_examples=300, deadline=None)
 @given(tables(), st.booleans())
 def test_compiled_csv_equals_pure_csv_on_random_tables(table, header):
-    assert polars_csv.csv_text(table, header) == cells.csv_text(table, header)
+    assert polars_csv.polars_csv_text(table, header) == cells.csv_text(table, header)
 
 
 @needs_polars
@@ -156,7 +156,7 @@ def test_compiled_float_text_is_repr_on_random_bit_patterns():
     y = rng.standard_normal(100_000) * 10.0 ** rng.integers(-12, 18, 100_000)
     for values in (x, y):
         table = Table({"x": values})
-        assert polars_csv.csv_text(table, False) == cells.csv_text(table, False)
+        assert polars_csv.polars_csv_text(table, False) == cells.csv_text(table, False)
 
 
 # ---------------------------------------------------------------------------

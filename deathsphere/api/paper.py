@@ -28,7 +28,7 @@ def table1() -> Table:
     >>> len(t), t[3]["v_cm_printed_m_s"], round(t[3]["v_cm_computed_m_s"], 2), t[3]["v_cm_agrees"]
     (10, 7.9, 7.88, True)
     """
-    from deathsphere.results.table1 import table1 as compute
+    from deathsphere.results.table1 import table1_comparison as compute
 
     return compute()
 

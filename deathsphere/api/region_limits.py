@@ -91,14 +91,14 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     >>> sorted(set(t["curve"])), float(t["a_over_r"][0])
     (['eq0', 'eq29', 'eq33'], 0.1)
     """
-    from deathsphere.results.limits import boundary_table, boundary_thetas
+    from deathsphere.results.limits import boundary_table, theta_grid
 
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
                                                       ("jobs", jobs))}
     tick = None
     if progress is not None:
-        total, done = boundary_thetas(values["step"]).size, [0]
+        total, done = theta_grid(values["step"]).size, [0]
 
         def tick(n):
             done[0] += n

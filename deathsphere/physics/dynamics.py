@@ -42,8 +42,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from deathsphere.physics.geometry import SINGULAR, r_prime
-from deathsphere.physics.sphere import centre_distance
+from deathsphere.physics.geometry import SINGULAR, r_prime, too_big_inside
+from deathsphere.physics.sphere import centre_distance, omega3_from_rate
 from deathsphere.physics.vectors import cross, dot, norm, zcross
 from deathsphere.physics.wheel import omega_squared
 
@@ -92,7 +92,7 @@ def body_params(a, r, k, g, outside=False, sphere=False) -> BodyParams:
         raise ValueError("inertia factor k must be > 0 for the equations of motion")
     if np.any(g <= 0):
         raise ValueError("g must be > 0")
-    if np.any(~outside & (r <= a)):
+    if np.any(too_big_inside(a, r, outside)):
         raise ValueError("a body inside the sphere needs r > a")
     return BodyParams(a, r, k, g, outside, sphere)
 
@@ -561,25 +561,6 @@ def wheel_orbit_state(theta, alpha, a, r, k, g, outside=False, phi=0.0):
     return np.concatenate((c, e1, w)), omega
 
 
-def sphere_spin(theta, omega, a, r, k, g, outside=False):
-    """Spin omega3 = w.e3 [rad/s] of a sphere on the steady horizontal orbit
-    of polar angle theta [rad] and rate omega = Omega [rad/s]: eq. (55)
-    solved for it,
-
-        omega3 = -((k+1) r' Omega^2 cos(theta) + g) / (k a Omega),
-
-    r' = r - a inside (eq. 42), r + a outside (sec. 5).  NaN where Omega = 0.
-    Complex theta / omega accepted (complex step); for float inputs with
-    cos(theta) snapped at the equator see
-    :func:`deathsphere.physics.sphere.omega3_from_rate`.
-    """
-    rp = centre_distance(a, r, outside)
-    nz = omega != 0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(nz, -((k + 1) * rp * omega ** 2 * np.cos(theta) + g)
-                        / (k * a * np.where(nz, omega, 1.0)), np.nan)
-
-
 def sphere_orbit_state(theta, omega, a, r, k, g, outside=False, phi=0.0):
     """State of a sphere on the steady horizontal orbit of polar angle theta
     and rate omega = Omega, and its spin omega3.
@@ -588,7 +569,7 @@ def sphere_orbit_state(theta, omega, a, r, k, g, outside=False, phi=0.0):
     r' = r - a (inside) or r + a (outside) from the origin on the ray of polar
     angle theta and azimuth phi; e3 (centre to contact) = +/- that ray;
     w = -(1/a) e3 x v_cm + omega3 e3 (eq. 6a) with v_cm = Omega z x c and
-    omega3 from eq. (55) (:func:`sphere_spin`).
+    omega3 from eq. (55) (:func:`deathsphere.physics.sphere.omega3_from_rate`).
     The e1 rows hold a body-fixed marker (the paper's axis 1 at t = 0).
 
     Returns ``(state, omega3)``; NaN where Omega = 0.
@@ -597,7 +578,7 @@ def sphere_orbit_state(theta, omega, a, r, k, g, outside=False, phi=0.0):
         *(np.asarray(x) for x in (theta, omega, a, r, k, g)),
         np.asarray(outside, dtype=bool), np.asarray(phi))
     rp = centre_distance(a, r, outside)
-    omega3 = sphere_spin(theta, omega, a, r, k, g, outside)
+    omega3 = omega3_from_rate(theta, omega, a, r, k, g, outside)
     cp, sp = np.cos(phi), np.sin(phi)
     zero = np.zeros_like(cp)
     rhat = np.stack((cp, sp, zero))

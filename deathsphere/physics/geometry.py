@@ -54,3 +54,9 @@ def fits_outside(theta, alpha):
     size does not enter: circles tangent externally never overlap.
     """
     return np.sin(alpha - theta) > 0.0
+
+
+def too_big_inside(a, r, outside=False):
+    """True where a body of radius a cannot be inside a sphere of radius r
+    (r <= a): the one statement of "r > a inside" that every check uses."""
+    return ~np.asarray(outside, dtype=bool) & (np.asarray(r) <= np.asarray(a))

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from deathsphere.constants import STANDARD_GRAVITY
-from deathsphere.physics.geometry import r_prime
+from deathsphere.physics.geometry import SINGULAR, r_prime, too_big_inside
 from deathsphere.physics.status import Status
 from deathsphere.physics.trig_roots import MERGE_TOL, TWO_PI, TrigPoly2, sorted_union
 from deathsphere.physics.trig_roots import roots_in as _roots_in
@@ -105,7 +105,7 @@ def _check(a, r, k, g, outside, mu=np.inf, max_g=np.inf):
         raise ValueError(f"wheel radius a must be > 0, got {a}")
     if r <= 0:
         raise ValueError(f"sphere radius r must be > 0, got {r}")
-    if not outside and r <= a:
+    if too_big_inside(a, r, outside):
         raise ValueError(f"a wheel inside needs r > a, got a = {a}, r = {r}")
     if k < 0:
         raise ValueError(f"inertia factor k must be >= 0, got {k}")
@@ -330,7 +330,7 @@ def _speed_sq(t, alpha, a, r, k, g):
     rp = r_prime(t, alpha, a, r)
     den = omega_squared_denominator(t, alpha, a, r, k)
     num = g * rp * rp * np.cos(alpha)
-    pole = np.abs(den) <= 1e-12 * ((2 * k + 1) * r + (k + 1) * a)
+    pole = np.abs(den) <= SINGULAR * ((2 * k + 1) * r + (k + 1) * a)
     with np.errstate(divide="ignore", invalid="ignore"):
         v2 = num / np.where(pole, 1.0, den)
     v2 = np.where(pole, np.inf, v2)

@@ -125,13 +125,23 @@ def omega3_from_rate(theta, omega, a, r, k=K_SOLID_BALL, g=STANDARD_GRAVITY, out
 
     .. math:: \\omega_3 = -\\frac{(k+1) r' \\Omega^2\\cos\\theta + g}{k a \\Omega}
 
-    NaN where Omega = 0 or k a = 0 (omega3 then drops out of eq. 55).
+    (r' = r - a inside, eq. 42; r + a outside, sec. 5).  NaN where Omega = 0
+    or k a = 0 (omega3 then drops out of eq. 55).  The one definition of this
+    formula (the steady states of :mod:`deathsphere.physics.dynamics` use it
+    too).  cos(theta) is snapped to 0 within SINGULAR, as in
+    :func:`orbit_rates`: 90 deg reaches radians as pi/2 rounded, whose cosine
+    is 6.1e-17, not the 0 the user meant (docs/derivations.md, "The sphere's
+    spin on the equator").  Complex theta and omega are accepted (the complex
+    step of the stability closed forms): only the real part of the cosine is
+    snapped, so its imaginary part, the derivative, is kept.
     """
-    theta, omega, a, r, k, g = _arrays(theta, omega, a, r, k, g)
-    rho, cos_t, big_a, ka = _quadratic(theta, a, r, k, g, outside)
-    den = ka * omega
+    theta, omega, a, r, k, g = (np.asarray(x) for x in (theta, omega, a, r, k, g))
+    rho = centre_distance(a, r, outside)
+    cos_t = np.cos(theta)
+    cos_t = np.where(np.abs(np.real(cos_t)) <= SINGULAR, cos_t - np.real(cos_t), cos_t)
+    den = k * a * omega
     ok = den != 0
-    return np.where(ok, -(big_a * omega ** 2 + g) / np.where(ok, den, 1.0), np.nan)
+    return np.where(ok, -((k + 1) * rho * omega ** 2 * cos_t + g) / np.where(ok, den, 1.0), np.nan)
 
 
 def omega3_min_real(theta, a, r, k=K_SOLID_BALL, g=STANDARD_GRAVITY, outside=False):

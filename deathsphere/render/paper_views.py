@@ -7,6 +7,7 @@ from __future__ import annotations
 from rich.console import Group
 from rich.markup import escape
 
+from deathsphere.model import LIVE_STATUSES
 from deathsphere.render.terminal_table import (
     STABILITY_STYLE,
     Column,
@@ -147,7 +148,7 @@ def stability_view(table: Table) -> Group:
     lines += [f"[dim]{escape(n)}[/dim]" for n in notes]
     lines.append("[dim]errata E1-E9: docs/stability.md, docs/errata.md[/dim]")
     orbit = next((r for r in exact_rows if r["quantity"] == "orbit status"), None)
-    if orbit is not None and orbit["exact"] not in ("ok", "slips"):
+    if orbit is not None and orbit["exact"] not in LIVE_STATUSES:
         # nothing to linearise about: say why instead of an empty table
         why = exact_rows[-1]["note"]
         return Group(head, exact, f"[yellow]{escape(why)}[/yellow]")

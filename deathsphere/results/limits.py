@@ -37,7 +37,7 @@ def _speed(v):
     return np.where(np.abs(v) < 1e-6, 0.0, v)
 
 
-def boundary_thetas(step_deg: float) -> np.ndarray:
+def theta_grid(step_deg: float) -> np.ndarray:
     """The theta grid [deg] of the boundary data: multiples of ``step_deg``
     strictly inside (0, 180), where every boundary is defined."""
     return np.arange(step_deg, 180.0 - 0.5 * step_deg, step_deg)
@@ -70,7 +70,7 @@ def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: f
     the paper), in blocks of thetas on ``jobs`` processes (the same values
     as with one).  ``progress(n)`` is told as each n theta values are done
     (the stability boundary is the slow part: ~100x the others)."""
-    theta = boundary_thetas(step_deg)
+    theta = theta_grid(step_deg)
     curves = region.boundary_alphas(np.deg2rad(theta), a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g)
     if stability:
         blocks = [theta[start:start + _STABILITY_CHUNK] for start in range(0, theta.size, _STABILITY_CHUNK)]

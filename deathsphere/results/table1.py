@@ -39,7 +39,7 @@ def agrees(computed, printed: str) -> np.ndarray:
     return np.abs(np.asarray(computed) - float(printed)) <= half_unit * (1 + 1e-9)
 
 
-def table1(setup: Setup | None = None) -> Table:
+def table1_comparison(setup: Setup | None = None) -> Table:
     """Printed Table 1 beside the values computed from eqs. (29), (35), (36).
 
     Columns: the printed mu, v_cm and "No. of g's", the computed mu_required,

@@ -15,7 +15,7 @@ Modules
   the start-state geometry of eqs. (8b), (11)-(13);
 * :mod:`~deathsphere.simulation.runner` -- the integrator driver:
   :class:`Simulation` (solve_ivp, chunking period by period, recorded
-  states), :func:`simulate`, :data:`METHODS`, :data:`FRAMES`;
+  states), :func:`run_simulation`, :data:`METHODS`, :data:`FRAMES`;
 * :mod:`~deathsphere.simulation.events` -- the terminal events
   (contact lost, slips);
 * :mod:`~deathsphere.simulation.series` -- the time series: quantities at
@@ -37,7 +37,7 @@ Use
    :meth:`Starts.concat` joins several sets.
 2. ``for chunk in Simulation(starts, ...).chunks(progress): ...`` yields
    the time series period by period, then ``sim.summary()`` gives one row
-   per body; :func:`simulate` does both and returns ``(series, summary)``.
+   per body; :func:`run_simulation` does both and returns ``(series, summary)``.
 
 Statuses (:data:`STATUSES`): ``completed`` (ran the requested time),
 ``contact_lost`` (the normal force fell to zero; terminal event),
@@ -50,7 +50,7 @@ Angles are in degrees at this level, as on the command line (the kicks
 rad/s, forces per unit mass in m/s^2.
 """
 
-from deathsphere.simulation.runner import FRAMES, METHODS, Simulation, simulate
+from deathsphere.simulation.runner import FRAMES, METHODS, Simulation, run_simulation
 from deathsphere.simulation.series import SERIES_COLUMNS, concat_tables
 from deathsphere.simulation.starts import Starts, horizontal_starts, vertical_starts
 from deathsphere.simulation.status import STATUSES, RunStatus
@@ -58,5 +58,5 @@ from deathsphere.simulation.summary import SUMMARY_COLUMNS
 
 __all__ = [
     "STATUSES", "RunStatus", "SERIES_COLUMNS", "SUMMARY_COLUMNS", "METHODS", "FRAMES",
-    "Starts", "horizontal_starts", "vertical_starts", "Simulation", "simulate", "concat_tables",
+    "Starts", "horizontal_starts", "vertical_starts", "Simulation", "run_simulation", "concat_tables",
 ]

@@ -37,7 +37,7 @@ from deathsphere.simulation.status import RunStatus, failed_reason
 from deathsphere.simulation.summary import Ledger
 from deathsphere.table import Table
 
-__all__ = ["METHODS", "FRAMES", "DEFAULT_MAX_STEPS", "SPIN_RATIO_MAX", "Simulation", "simulate"]
+__all__ = ["METHODS", "FRAMES", "DEFAULT_MAX_STEPS", "SPIN_RATIO_MAX", "Simulation", "run_simulation"]
 
 #: solve_ivp methods accepted.  The explicit Runge-Kutta methods are the
 #: natural choice (the flow is not stiff); Radau/BDF get a block-diagonal
@@ -502,7 +502,7 @@ def _duration(seconds: float) -> str:
     return f"{seconds / 86400:.2g} days"
 
 
-def simulate(starts: Starts, progress: Callable[[int, int], None] | None = None,
+def run_simulation(starts: Starts, progress: Callable[[int, int], None] | None = None,
              **options) -> tuple[Table, Table]:
     """``Simulation(starts, **options).run(progress)``: the whole time series
     and the summary (beyond the paper; docs/simulation.md)."""

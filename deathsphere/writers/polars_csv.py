@@ -113,7 +113,7 @@ def _series(pl, name: str, values: np.ndarray):
     return pl.Series(name, column_strings(name, values), dtype=pl.String)
 
 
-def csv_text(table, header: bool) -> str:
+def polars_csv_text(table, header: bool) -> str:
     """One chunk as CSV text, equal to :func:`deathsphere.table.cells.csv_text`."""
     import polars as pl
 

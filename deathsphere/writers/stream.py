@@ -44,7 +44,7 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None) -> i
             if fast is None:
                 from deathsphere.writers import polars_csv
 
-                fast = polars_csv.csv_text if polars_csv.csv_available() else False
+                fast = polars_csv.polars_csv_text if polars_csv.csv_available() else False
             text = fast or csv_text
         out.write(text(table, header=i == 0))
         rows += len(table)

@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 from deathsphere.model import Setup
-from deathsphere.results.table1 import PRINTED, agrees, decimals, table1
+from deathsphere.results.table1 import PRINTED, agrees, decimals
+from deathsphere.results.table1 import table1_comparison as table1
 
 MU_MISPRINTS = {(30.0, 5.0), (45.0, 10.0), (75.0, 30.0)}
 

@@ -10,8 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics import dynamics as dyn
-from deathsphere.physics.sphere import centre_distance
+from deathsphere.physics.sphere import centre_distance, omega3_from_rate
 from deathsphere.physics.stability.frequencies import nutation_from_invariants
 from deathsphere.physics.wheel import omega_squared
 
@@ -37,7 +36,7 @@ def sphere_nutation_closed_form(theta, omega, a, r, k, g, outside=False):
     """
     theta, omega, a, r, k, g = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (theta, omega, a, r, k, g)))
     outside = np.broadcast_to(np.asarray(outside, dtype=bool), theta.shape)
-    omega3 = dyn.sphere_spin(theta, omega, a, r, k, g, outside)
+    omega3 = omega3_from_rate(theta, omega, a, r, k, g, outside)
     b = k * a * omega3 / ((k + 1) * centre_distance(a, r, outside))
     return np.sqrt((b + 2 * omega * np.cos(theta)) ** 2 + (omega * np.sin(theta)) ** 2)
 

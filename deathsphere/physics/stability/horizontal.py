@@ -26,13 +26,15 @@ from deathsphere.physics.stability.reduction import (
 )
 from deathsphere.physics.stability.verdict import Verdict
 from deathsphere.physics.vectors import dot, zcross
+from deathsphere.physics.wheel import CHUNK as WHEEL_CHUNK
 from deathsphere.physics.wheel import omega_squared
 
 __all__ = ["CHUNK", "wheel_stability", "sphere_stability", "wheel_reduced_jacobian",
            "stability_result", "empty_result"]
 
-#: orbits per vectorised batch (bounds memory; ~1 KB of temporaries per orbit)
-CHUNK = 16384
+#: orbits per vectorised batch: the wheel's piece size (bounds memory; ~1 KB
+#: of temporaries per orbit here)
+CHUNK = WHEEL_CHUNK
 
 
 def _wheel_linearisation(theta, alpha, a, r, k, g, outside, want_basis=True):
@@ -173,7 +175,7 @@ def sphere_stability(theta, omega, a, r, k, g, outside=False):
         return empty_result(shape, 2)
     n = theta.size
     th, Om, a, r, k, g, out = (x.reshape(-1) for x in (theta, omega, a, r, k, g, outside))
-    ok = np.isfinite(Om) & (Om != 0) & (np.abs(np.sin(th)) > 1e-12)
+    ok = np.isfinite(Om) & (Om != 0) & (np.abs(np.sin(th)) > SINGULAR)
     Om_s = np.where(ok, Om, 1.0)
     th_s = np.where(ok, th, np.pi / 2)
     p = dyn.BodyParams(a, r, k, g, out, np.ones(n, dtype=bool))
