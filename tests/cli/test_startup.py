@@ -31,7 +31,7 @@ print(json.dumps(sorted(sys.modules)))
 #: Never needed to write a csv: terminal drawing, figures, the integrator,
 #: the installed metadata (the version string is static), the input reader.
 NEVER = ("rich", "matplotlib", "scipy", "importlib.metadata", "deathsphere.simulation", "deathsphere.inputs",
-         "deathsphere.viewer")
+         "deathsphere.viewer", "pint", "polars", "pyarrow", "pandas", "xarray")
 
 
 def loaded(*args: str) -> set[str]:
