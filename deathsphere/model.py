@@ -262,9 +262,9 @@ def _wheel(req, rows):
     tilted = rows[~np.isnan(req["alpha"][rows])]
     parts = []
     if tilted.size:
-        sel = {key: req[key][tilted] for key in ("theta", "alpha", "a", "r", "k", "g", "mu")}
+        sel = {key: req[key][tilted] for key in ("theta_rad", "alpha_rad", "a", "r", "k", "g", "mu")}
         res = wheel.horizontal_orbit(
-            np.deg2rad(sel["theta"]), np.deg2rad(params.reduce_angle(sel["alpha"])), sel["a"], sel["r"], sel["k"], sel["g"],
+            sel["theta_rad"], sel["alpha_rad"], sel["a"], sel["r"], sel["k"], sel["g"],
             outside=req["side"][tilted] == "outside", mu=sel["mu"])
         parts.append((tilted, np.full(tilted.size, -1), res))
     solve = rows[np.isnan(req["alpha"][rows])]
@@ -287,7 +287,7 @@ def _wheel_solved(req, rows):
     for u, (a, r, k, g, mu, out, speed_given) in enumerate(unique):
         sub = rows[inverse.reshape(-1) == u]
         target = "speed" if speed_given else "omega"
-        res = region.solve_alpha(np.deg2rad(req["theta"][sub]), a, r, k, g, outside=bool(out), mu=mu,
+        res = region.solve_alpha(req["theta_rad"][sub], a, r, k, g, outside=bool(out), mu=mu,
                                  **{target: req[target][sub]})
         count = np.asarray(res["count"]).reshape(-1)
         roots = res["alpha"].reshape(sub.size, -1)
@@ -309,8 +309,8 @@ def _sphere(req, rows):
     from deathsphere.physics import sphere
 
     outside = req["side"][rows] == "outside"
-    sel = {key: req[key][rows] for key in ("theta", "a", "r", "k", "g", "mu", "omega3", "omega")}
-    theta = np.deg2rad(sel["theta"])
+    sel = {key: req[key][rows] for key in ("theta_rad", "a", "r", "k", "g", "mu", "omega3", "omega")}
+    theta = sel["theta_rad"]
     spun = ~np.isnan(sel["omega3"])
     parts = []
     if spun.any():
@@ -330,7 +330,7 @@ def _sphere(req, rows):
 def _particle(req, rows):
     from deathsphere.physics import particle
 
-    res = particle.particle_orbit(np.deg2rad(req["theta"][rows]), req["r"][rows], req["g"][rows],
+    res = particle.particle_orbit(req["theta_rad"][rows], req["r"][rows], req["g"][rows],
                                   outside=req["side"][rows] == "outside", mu=req["mu"][rows])
     return [(rows, np.full(rows.size, -1), res)]
 
@@ -352,6 +352,10 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     (a handful of vectorised calls, no loop over orbits).
     """
     invalid = validate_requests(req)
+    # degrees become radians here, once, for every solver and the stability
+    # analysis (the physics is in radians; the degrees are kept to be echoed)
+    req["theta_rad"] = np.deg2rad(req["theta"])
+    req["alpha_rad"] = np.deg2rad(params.reduce_angle(req["alpha"]))
     ok = invalid == ""
     body = req["body"]
     bad = np.flatnonzero(~ok)
@@ -368,6 +372,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     status = np.full(m, Status.INVALID, dtype=np.int8)
     reason = np.empty(m, dtype=object)
     alpha = req["alpha"][source].copy()
+    alpha_rad = req["alpha_rad"][source].copy()
     start = 0
     for rows, _, res in parts:
         span = slice(start, start + rows.size)
@@ -382,6 +387,8 @@ def evaluate(req: dict, stability: bool = True) -> Table:
         reason[span] = REASON_TEXT[res["reason"]]
         if "alpha_deg" in res:  # a wheel's tilt solved from its speed or rate
             alpha[span] = res["alpha_deg"]
+            # the orbit analysed is the orbit printed: the tilt as its degrees read back
+            alpha_rad[span] = np.deg2rad(params.reduce_angle(res["alpha_deg"]))
 
     order = np.lexsort((branch, source))
     pick = source[order]
@@ -414,7 +421,8 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     columns["reason"][over] = REASON_TEXT[Reason.OVER_G]
     columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
     finite_or_blank(columns)
-    columns.update(add_stability(columns) if stability else _no_stability(len(pick)))
+    columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order]) if stability
+                   else _no_stability(len(pick)))
     echo_given(columns, {column: req[name][pick] for name, column in ECHOED.items()})
     return Table({name: columns[name] for name in COLUMNS})
 
@@ -470,7 +478,7 @@ EXACT_METHOD = "exact-linearisation"
 NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
 
 
-def add_stability(columns: dict) -> dict:
+def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray) -> dict:
     """The stability columns for rows whose steady orbit exists with contact.
 
     Beyond the paper (docs/stability.md): the exact equations of motion
@@ -478,6 +486,9 @@ def add_stability(columns: dict) -> dict:
     modes of the symmetry and of the family of orbits removed; growth rate
     = max Re(eigenvalue) [1/s], the two nutation frequencies [rad/s] in the
     turning frame.  A sliding particle is not analysed (``unknown``).
+    ``theta_rad`` and ``alpha_rad`` are each row's angles as the request's
+    radians (converted once, in :func:`evaluate`), not read back from the
+    degree columns.
     """
     from deathsphere.physics import stability as exact
 
@@ -485,7 +496,7 @@ def add_stability(columns: dict) -> dict:
     out = _no_stability(n)
     live = np.isin(columns["status"], LIVE_STATUSES)
     body, outside = columns["body"], columns["side"] == "outside"
-    theta = np.deg2rad(columns["theta_deg"])
+    theta = theta_rad
     par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}
     singular = live & (columns["k"] == 0) & (body != "particle")
     out["stability"][singular] = "unknown"
@@ -495,7 +506,7 @@ def add_stability(columns: dict) -> dict:
         rows = np.flatnonzero(live & (body == name))
         if not rows.size:
             continue
-        second = np.deg2rad(params.reduce_angle(columns["alpha_deg"][rows])) if name == "wheel" else columns["omega_rad_s"][rows]
+        second = alpha_rad[rows] if name == "wheel" else columns["omega_rad_s"][rows]
         solver = exact.wheel_stability if name == "wheel" else exact.sphere_stability
         res = solver(theta[rows], second, *(par[key][rows] for key in ("a", "r", "k", "g")), outside=outside[rows])
         out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]
