@@ -24,6 +24,8 @@ __all__ = ["frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_
 MAX_TURN_RAD = 0.5 * np.pi
 #: the most the body's centre may move between two frames, in units of r
 MAX_MOVE_R = 0.02
+#: 1 m/s = 3600 s/h / 1000 m/km
+_KM_H_PER_M_S = 3.6
 # frames are placed for these fractions of the bounds: the rates are known
 # at the samples, and may peak between them
 _TARGET = 0.75
@@ -121,7 +123,7 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
                   a steady orbit)
     ``rate``      |w| [rad/s]: how fast the body turns (any way), which
                   bounds the angle it turns between two frames
-    ``speed``     |dc/dt| = |a e3 x w| [m/s] (eq. 6)
+    ``speed``     |dc/dt| = |a e3 x w| [m/s] (eq. 6); ``speed_km_h`` the same in km/h
     ``normal``, ``friction_magnitude``, ``mu_required``  of
                   :func:`deathsphere.physics.dynamics.contact_force`
     ``force_angle_deg``  angle [deg] between the contact force and the
@@ -143,12 +145,13 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
     u = np.cross(e1, e3, axis=0)
     spoke = np.where(params.sphere, e1, np.cos(spin) * e3 + np.sin(spin) * u)
     accel = force - np.asarray(params.g) * np.array([0.0, 0.0, 1.0])[:, None]
+    speed = _centre_speed(state, params)
     return {
         "centre": c, "axis": e1, "e3": e3, "contact": pvec,
         "spin": spin, "spoke": spoke,
         "force": force, "normal_force": force - friction, "friction_force": friction,
         "acceleration": accel, "g_load": np.sqrt(_dot(accel, accel)) / params.g,
-        "rate": _norm(state[dyn.W]), "speed": _centre_speed(state, params),
+        "rate": _norm(state[dyn.W]), "speed": speed, "speed_km_h": speed * _KM_H_PER_M_S,
         "normal": f["normal"], "friction_magnitude": f["friction_magnitude"], "mu_required": f["mu_required"],
         "force_angle_deg": np.degrees(np.arctan2(f["friction_magnitude"], f["normal"])),
     }
@@ -243,8 +246,10 @@ def body_frames(summary, states: dict, *, refine: bool = True) -> dict[int, dict
     ``body``, ``side``, ``a_m``, ``r_m``, ``k``, ``g_m_s2``) and ``states``
     :meth:`deathsphere.simulation.Simulation.sample_states`.  Returns
     ``{input_row: {"t": (M,) frame times, "sample": (M,) bool (a sample
-    of ``states``, i.e. a row of the time series), **geometry}}`` for each
-    body with samples (a body that could not start has none and no entry).
+    of ``states``, i.e. a row of the time series), "bounds": (the most
+    turn [rad], the most centre step [r]) between frames, **geometry}}``
+    for each body with samples (a body that could not start has none and
+    no entry).
     """
     rows = np.asarray(states["input_row"])
     t_all = np.asarray(states["t_s"], dtype=np.float64)
@@ -259,5 +264,6 @@ def body_frames(summary, states: dict, *, refine: bool = True) -> dict[int, dict
         t, y = t_all[sel], state[:, sel]
         if refine:
             t, y = refine_samples(t, y, params)
-        out[int(row)] = {"t": t, "sample": np.isin(t, t_all[sel]), **frame_geometry(t, y, params)}
+        out[int(row)] = {"t": t, "sample": np.isin(t, t_all[sel]), "bounds": (MAX_TURN_RAD, MAX_MOVE_R),
+                         **frame_geometry(t, y, params)}
     return out

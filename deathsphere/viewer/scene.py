@@ -15,9 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from deathsphere.simulation.frames import MAX_MOVE_R, MAX_TURN_RAD
 from deathsphere.table import Table
-from deathsphere.units import factor
 
 __all__ = ["BodyScene", "build_scenes", "frame_indices", "playback_factor", "slow_motion_words",
            "MAX_FRAMES", "TRAIL_POINTS", "PLAYBACK_FACTORS", "PANEL_COLUMNS", "EVENT_STATUSES"]
@@ -29,8 +27,8 @@ MAX_FRAMES = 40_000
 TRAIL_POINTS = 6000
 #: the playback factors offered (simulated seconds per second shown), from
 #: real time down: a fast run plays at the largest that does not alias
-PLAYBACK_FACTORS = (10.0, 5.0, 2.0, 1.0, 0.5, 0.25, 0.2, 0.1, 0.05, 0.04, 0.025, 0.02, 0.01, 0.005, 0.004,
-                    0.0025, 0.002, 0.001)
+PLAYBACK_FACTORS = (10.0, 5.0, 2.0, 1.0) + tuple(
+    1.0 / (m * 10.0 ** e) for e in range(4) for m in (1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10) if m * 10 ** e > 1)
 #: statuses that end a run at an event of the simulation
 EVENT_STATUSES = ("contact_lost", "slips", "failed")
 
@@ -38,7 +36,7 @@ EVENT_STATUSES = ("contact_lost", "slips", "failed")
 #: frames; the other readouts are the frames' own)
 PANEL_COLUMNS = {"theta": "theta_deg", "alpha": "alpha_deg"}
 #: readout -> frame-geometry key it is
-FRAME_PANEL = {"speed": "speed", "g_load": "g_load", "mu": "mu_required", "normal": "normal",
+FRAME_PANEL = {"speed": "speed", "speed_km_h": "speed_km_h", "g_load": "g_load", "mu": "mu_required", "normal": "normal",
                "friction": "friction_magnitude", "force_angle": "force_angle_deg"}
 
 
@@ -47,10 +45,11 @@ class BodyScene:
     """One body of the run: its description, and arrays at its F frames
     (``t`` (F,), vectors (3, F), readouts (F,)).  ``geometry`` holds the
     keys of :func:`deathsphere.simulation.frames.frame_geometry`; ``panel``
-    the readouts (:data:`PANEL_COLUMNS`, :data:`FRAME_PANEL` and
-    ``speed_km_h``); ``trail`` (3, T) the contact point at the time
-    series' rows (at most :data:`TRAIL_POINTS`) with their times
-    ``trail_t``."""
+    the readouts (:data:`PANEL_COLUMNS`, :data:`FRAME_PANEL`); ``trail``
+    (3, T) the contact point at the time series' rows (at most
+    :data:`TRAIL_POINTS`) with their times ``trail_t``; ``bounds`` the
+    most turn [rad] and centre step [r] allowed between frames (the
+    simulation's, handed over with its frames)."""
 
     input_row: int
     body: str
@@ -71,6 +70,7 @@ class BodyScene:
     panel: dict = field(default_factory=dict)
     trail_t: np.ndarray = field(default_factory=lambda: np.zeros(0))
     trail: np.ndarray = field(default_factory=lambda: np.zeros((3, 0)))
+    bounds: tuple = (0.5 * math.pi, 0.02)
 
     @property
     def n_frames(self) -> int:
@@ -108,12 +108,11 @@ def playback_factor(scenes: list[BodyScene], frame_interval: float, t_from: floa
         keep = s.t >= t_from
         if s.n_frames < 2 or not keep.any():
             continue
-        # the frames' rates, and their mean over each frame interval (a
-        # rate may peak between two frames: the larger of the two)
         rate = np.nanmax(s.geometry["rate"][keep])
         speed = np.nanmax(s.geometry["speed"][keep])
         with np.errstate(divide="ignore"):
-            need = min(need, MAX_TURN_RAD / (rate * frame_interval), MAX_MOVE_R * s.r / (speed * frame_interval))
+            turn, move = s.bounds
+            need = min(need, turn / (rate * frame_interval), move * s.r / (speed * frame_interval))
     return max([f for f in PLAYBACK_FACTORS if f <= need], default=PLAYBACK_FACTORS[-1])
 
 
@@ -141,7 +140,6 @@ def build_scenes(series: Table, summary: Table, frames: dict, *, max_frames: int
         last); the trail still goes back to t = 0
     """
     rows = np.asarray(series["input_row"])
-    to_km_h = 1.0 / factor("km/h", "speed")
     scenes = []
     for i, row in enumerate(np.asarray(summary["input_row"])):
         sel = np.flatnonzero(rows == row)
@@ -167,11 +165,12 @@ def build_scenes(series: Table, summary: Table, frames: dict, *, max_frames: int
         if sel.size:
             keep = slice(max(0, geo["t"].size - max_frames), None)
             scene.t = geo["t"][keep]
-            scene.geometry = {k: np.asarray(v)[..., keep] for k, v in geo.items() if k not in ("t", "sample")}
+            scene.bounds = tuple(geo["bounds"])
+            scene.geometry = {k: np.asarray(v)[..., keep] for k, v in geo.items()
+                              if k not in ("t", "sample", "bounds")}
             scene.panel = {k: np.interp(scene.t, t_rows, np.asarray(series[col], dtype=np.float64)[sel])
                            for k, col in PANEL_COLUMNS.items()}
             scene.panel.update({k: scene.geometry[key] for k, key in FRAME_PANEL.items()})
-            scene.panel["speed_km_h"] = scene.panel["speed"] * to_km_h
             on_row = np.isin(geo["t"], t_rows)
             trail_t, trail = geo["t"][on_row], geo["contact"][:, on_row]
             pick = frame_indices(trail_t.size, TRAIL_POINTS)
