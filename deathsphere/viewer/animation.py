@@ -195,6 +195,7 @@ class _GifStream:
     def __init__(self, path):
         self._fp = open(path, "wb")
         self._palette = None
+        self._previous = None
 
     def add(self, rgb, duration_ms: int):
         from PIL import GifImagePlugin, Image
@@ -216,7 +217,18 @@ class _GifStream:
             frame = first
         else:
             frame = im.quantize(palette=self._palette, dither=Image.Dither.NONE)
-        for chunk in GifImagePlugin.getdata(frame, duration=int(duration_ms), disposal=1):
+        # only the rectangle that changed is stored (the sphere and most of
+        # the picture stay): the file is several times smaller
+        pixels = np.asarray(frame)
+        offset = (0, 0)
+        if self._previous is not None:
+            rows = np.flatnonzero(np.any(pixels != self._previous, axis=1))
+            cols = np.flatnonzero(np.any(pixels != self._previous, axis=0))
+            box = (cols[0], rows[0], cols[-1] + 1, rows[-1] + 1) if rows.size else (0, 0, 1, 1)
+            offset = (int(box[0]), int(box[1]))
+            frame = frame.crop(tuple(int(x) for x in box))
+        self._previous = pixels
+        for chunk in GifImagePlugin.getdata(frame, offset, duration=int(duration_ms), disposal=1):
             self._fp.write(chunk)
 
     def close(self):
