@@ -28,9 +28,12 @@ from deathsphere.cli.options import (
 from deathsphere.table import Table
 
 #: --output formats and the package each needs: still figures of the run,
-#: and the 3-D view (html needs nothing beyond the core).
+#: the 3-D view (html needs nothing beyond the core), and the time series
+#: (or, with --summary-only, the summary) as a table file.
 OUTPUTS = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib",
-           "html": None, "gif": "matplotlib", "mp4": "matplotlib"}
+           "html": None, "gif": "matplotlib", "mp4": "matplotlib", "csv": None, "json": None, "ndjson": None}
+#: --output extensions that are tables
+TABLE_OUTPUTS = ("csv", "json", "ndjson")
 
 
 def _preflight_output(output) -> bool:
@@ -69,9 +72,9 @@ def _preflight_output(output) -> bool:
         help="Integrate in the frame turning with the steady orbit, or in the lab [default: turning].")
 @click.option("--summary-only", is_flag=True, help="With csv/json/ndjson: print the summary rows, not the time series.")
 @single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
-        help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), or write "
+        help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), write "
              "the 3-D view: .html (interactive, self-contained), .gif (plot extra), .mp4 (plot extra and "
-             "ffmpeg).")
+             "ffmpeg), or the time series: .csv/.json/.ndjson.  Nothing is printed on stdout then.")
 @body_option(("wheel", "sphere"))
 @setup_options()
 @output_options()
@@ -87,7 +90,9 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
     --mu; otherwise completed.  On a terminal: the summary (drift of theta
     and alpha, least normal force, most friction, energy and constraint
     drift, method and tolerances).  Piped: the time series as CSV, the
-    summary on stderr.
+    summary on stderr.  With --output nothing goes to stdout: the file
+    is the output, and stderr says where it went (and, on a terminal,
+    shows the summary).
 
     \b
     Examples:
@@ -100,6 +105,7 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
     """
     from deathsphere.render.simulation_view import simulation_view
+    from deathsphere.viewer import view_format
 
     view = output is not None and _preflight_output(output)
     sim = api.prepare_simulation(
@@ -109,16 +115,19 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
                 v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
                 atol=atol, max_steps=max_steps))
     fmt = choose_format(fmt)
+    table_file = view_format(output) if output is not None and view_format(output) in TABLE_OUTPUTS else None
     series = []
 
     def chunks(advance):
         for table in sim.chunks(progress=advance):
-            if output is not None:
+            if output is not None and table_file is None:
                 series.append(table)
             yield table
 
     def run(advance):
-        if fmt == "table" or summary_only:
+        if table_file is not None and not summary_only:
+            emit(chunks(advance), table_file, output=output)
+        elif output is not None or fmt == "table" or summary_only:
             for _ in chunks(advance):
                 pass
         else:
@@ -127,13 +136,22 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
     with progress("simulate", sim.n_progress) as bar:
         run(bar.update)
     summary = sim.summary()
-    if fmt == "table":
+    if output is not None:
+        # the file is the output: stdout stays empty (a pipe downstream
+        # gets nothing it did not ask for); the summary on a terminal only
+        if stderr_console().is_terminal:
+            stderr_console().print(simulation_view(summary))
+    elif fmt == "table":
         stdout_console().print(simulation_view(summary))
     elif summary_only:
         emit([summary], fmt)
     else:
         stderr_console().print(simulation_view(summary))
-    if view:
+    if table_file is not None:
+        if summary_only:
+            emit([summary], table_file, output=output)
+        stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+    elif view:
         from deathsphere.viewer import write_view
 
         size = write_view(output, Table.concat(series), summary, sim.view_frames())
@@ -146,4 +164,4 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
             plot_simulation(Table.concat(series), summary, output=output)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
-        stderr_console().print(f"deathsphere: wrote {output}")
+        stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)

@@ -16,7 +16,19 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 
-__all__ = ["frame_geometry", "spin_rate", "body_frames"]
+__all__ = ["frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD", "MAX_MOVE_R"]
+
+#: the most a body may turn between two frames of the view [rad]: a quarter
+#: turn, past which a turning spoke or marker can be read as turning the
+#: other way (aliasing)
+MAX_TURN_RAD = 0.5 * np.pi
+#: the most the body's centre may move between two frames, in units of r
+MAX_MOVE_R = 0.02
+#: 1 m/s = 3600 s/h / 1000 m/km
+_KM_H_PER_M_S = 3.6
+# frames are placed for these fractions of the bounds: the rates are known
+# at the samples, and may peak between them
+_TARGET = 0.75
 
 
 def _unit(v):
@@ -25,6 +37,15 @@ def _unit(v):
 
 def _dot(u, v):
     return np.sum(u * v, axis=0)
+
+
+def _norm(v):
+    return np.sqrt(_dot(v, v))
+
+
+def _centre_speed(state, params):
+    """|dc/dt| = |a e3 x w| (eq. 6), with a e3 = p - c."""
+    return _norm(np.cross(dyn.contact_point(state, params) - state[dyn.C], state[dyn.W], axis=0))
 
 
 def _params(params: dyn.BodyParams) -> dyn.BodyParams:
@@ -100,6 +121,14 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
     ``acceleration``  d2c/dt2 = F/m - g z [m/s^2]
     ``g_load``    |d2c/dt2| / g: the centre's acceleration in g (eq. 36 on
                   a steady orbit)
+    ``rate``      |w| [rad/s]: how fast the body turns (any way), which
+                  bounds the angle it turns between two frames
+    ``speed``     |dc/dt| = |a e3 x w| [m/s] (eq. 6); ``speed_km_h`` the same in km/h
+    ``normal``, ``friction_magnitude``, ``mu_required``  of
+                  :func:`deathsphere.physics.dynamics.contact_force`
+    ``force_angle_deg``  angle [deg] between the contact force and the
+                  normal pressing the body onto the sphere (tan of it is the
+                  friction needed; 90 and more: the force pulls, no contact)
     """
     t = np.asarray(t, dtype=np.float64)
     state = np.asarray(state, dtype=np.float64)
@@ -116,22 +145,111 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
     u = np.cross(e1, e3, axis=0)
     spoke = np.where(params.sphere, e1, np.cos(spin) * e3 + np.sin(spin) * u)
     accel = force - np.asarray(params.g) * np.array([0.0, 0.0, 1.0])[:, None]
+    speed = _centre_speed(state, params)
     return {
         "centre": c, "axis": e1, "e3": e3, "contact": pvec,
         "spin": spin, "spoke": spoke,
         "force": force, "normal_force": force - friction, "friction_force": friction,
         "acceleration": accel, "g_load": np.sqrt(_dot(accel, accel)) / params.g,
+        "rate": _norm(state[dyn.W]), "speed": speed, "speed_km_h": speed * _KM_H_PER_M_S,
+        "normal": f["normal"], "friction_magnitude": f["friction_magnitude"], "mu_required": f["mu_required"],
+        "force_angle_deg": np.degrees(np.arctan2(f["friction_magnitude"], f["normal"])),
     }
 
 
-def body_frames(summary, states: dict) -> dict[int, dict]:
-    """:func:`frame_geometry` of every body of a run, at all its samples.
+def _subdivisions(t, state, params, max_turn, max_move):
+    """How many frames each sample interval needs (>= 1): from the fastest
+    turn |w| and centre speed at its two ends."""
+    rate = _norm(state[dyn.W])
+    speed = _centre_speed(state, params)
+    dt = np.diff(t)
+    need = np.maximum(np.fmax(rate[1:], rate[:-1]) * dt / max_turn,
+                      np.fmax(speed[1:], speed[:-1]) * dt / (max_move * np.asarray(params.r)))
+    need = np.where(np.isfinite(need), need, 1.0)
+    return np.maximum(1, np.ceil(need)).astype(np.int64)
+
+
+def _integrate_between(t, state, params, n, batch=2000):
+    """States at the n_k - 1 evenly spaced times inside each interval k with
+    n_k > 1, integrated afresh (solve_ivp, DOP853, lab frame) from the
+    sample at its start; returns (times, states (9, M))."""
+    from scipy.integrate import solve_ivp
+
+    ks = np.flatnonzero(n > 1)
+    times, states = [], []
+    for lo in range(0, ks.size, batch):
+        k = ks[lo:lo + batch]
+        nb = k.size
+        dt = np.diff(t)[k]
+        y0 = state[:, k]
+        scale_w = np.sqrt(_dot(y0[dyn.W], y0[dyn.W]) + np.asarray(params.g) / np.asarray(params.a))
+        pb = dyn.BodyParams(*(np.broadcast_to(x, (nb,)) for x in params))
+
+        def fun(tau, y):
+            # each interval runs in its own time tau in [0, 1], t = t_k + tau dt_k
+            return (dyn.rhs(y.reshape(9, nb), pb) * dt).reshape(-1)
+
+        # as the simulation's own error control (docs/simulation.md), the
+        # sphere's marker rows left out of it
+        marker = np.where(np.asarray(pb.sphere), 1e3, 1e-10)
+        atol = np.concatenate((np.broadcast_to(1e-10 * np.asarray(pb.r), (3, nb)), np.broadcast_to(marker, (3, nb)),
+                               np.broadcast_to(1e-10 * scale_w, (3, nb)))).reshape(-1)
+        max_step = 2.0 / float(np.max(scale_w * dt))
+        sol = solve_ivp(fun, (0.0, 1.0), y0.reshape(-1), method="DOP853", rtol=1e-10, atol=atol,
+                        dense_output=True, max_step=max_step)
+        if sol.status != 0:
+            raise RuntimeError(f"the view's frames could not be integrated: {sol.message}")
+        for m in np.unique(n[k]):
+            sel = np.flatnonzero(n[k] == m)
+            tau = np.arange(1, m) / m
+            y = sol.sol(tau).reshape(9, nb, tau.size)[:, sel, :]           # (9, s, m-1)
+            times.append((t[k[sel], None] + tau[None, :] * dt[sel, None]).reshape(-1))
+            states.append(y.reshape(9, -1))
+    if not times:
+        return np.zeros(0), np.zeros((9, 0))
+    return np.concatenate(times), np.concatenate(states, axis=1)
+
+
+def refine_samples(t, state, params: dyn.BodyParams, *, max_turn=MAX_TURN_RAD, max_move=MAX_MOVE_R):
+    """Samples of one body close enough for the 3-D view: the given ones
+    plus, inside every interval where the body would turn more than a part
+    of ``max_turn`` [rad] or its centre move more than a part of
+    ``max_move`` r, evenly spaced states integrated afresh from the sample
+    at the interval's start (the equations of motion of
+    :mod:`deathsphere.physics.dynamics`, not an interpolation).  The number
+    of frames follows the fastest rotation and motion of each interval, so
+    a run is sampled finely only where it moves fast.
+
+    Beyond the paper (docs/simulation.md, "3-D view").  Returns (t (M,),
+    state (9, M)), M >= N, increasing in time, holding the given samples
+    (the last one, an event's, among them).
+    """
+    t = np.asarray(t, dtype=np.float64)
+    state = np.asarray(state, dtype=np.float64)
+    if t.size < 2:
+        return t, state
+    params = _params(params)
+    n = _subdivisions(t, state, params, _TARGET * max_turn, _TARGET * max_move)
+    extra_t, extra = _integrate_between(t, state, params, n)
+    t_all = np.concatenate((t, extra_t))
+    order = np.argsort(t_all, kind="stable")
+    return t_all[order], np.concatenate((state, extra), axis=1)[:, order]
+
+
+def body_frames(summary, states: dict, *, refine: bool = True) -> dict[int, dict]:
+    """:func:`frame_geometry` of every body of a run, at all its samples
+    and, with ``refine``, at the frames :func:`refine_samples` adds between
+    them (so that no body turns more than a quarter turn, nor its centre
+    moves more than 2 % of r, from one frame to the next).
 
     ``summary`` is the run's summary table (one row per body: ``input_row``,
     ``body``, ``side``, ``a_m``, ``r_m``, ``k``, ``g_m_s2``) and ``states``
     :meth:`deathsphere.simulation.Simulation.sample_states`.  Returns
-    ``{input_row: {"t": (N,) sample times, **geometry}}`` for each body
-    with samples (a body that could not start has none and no entry).
+    ``{input_row: {"t": (M,) frame times, "sample": (M,) bool (a sample
+    of ``states``, i.e. a row of the time series), "bounds": (the most
+    turn [rad], the most centre step [r]) between frames, **geometry}}``
+    for each body with samples (a body that could not start has none and
+    no entry).
     """
     rows = np.asarray(states["input_row"])
     t_all = np.asarray(states["t_s"], dtype=np.float64)
@@ -143,5 +261,9 @@ def body_frames(summary, states: dict) -> dict[int, dict]:
             continue
         params = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
                                 summary["side"][i] == "outside", summary["body"][i] == "sphere")
-        out[int(row)] = {"t": t_all[sel], **frame_geometry(t_all[sel], state[:, sel], params)}
+        t, y = t_all[sel], state[:, sel]
+        if refine:
+            t, y = refine_samples(t, y, params)
+        out[int(row)] = {"t": t, "sample": np.isin(t, t_all[sel]), "bounds": (MAX_TURN_RAD, MAX_MOVE_R),
+                         **frame_geometry(t, y, params)}
     return out

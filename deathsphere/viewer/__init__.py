@@ -5,8 +5,8 @@
   number of frames, with the panel's numbers from the time series;
 * :mod:`deathsphere.viewer.html` -- one self-contained HTML file (no
   third-party code; the template ships as package data);
-* :mod:`deathsphere.viewer.animation` -- GIF (Pillow) or MP4 (ffmpeg)
-  through matplotlib's animation module (the ``plot`` extra).
+* :mod:`deathsphere.viewer.animation` -- GIF (Pillow) or MP4 (ffmpeg),
+  drawn with matplotlib (the ``plot`` extra) and written frame by frame.
 
 :func:`check_view_output` says, before anything is integrated, whether the
 file can be written here; :func:`write_view` writes it.

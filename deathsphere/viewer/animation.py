@@ -1,23 +1,40 @@
 """The 3-D view as a GIF or MP4 loop from a fixed camera, for slides
 (beyond the paper; docs/simulation.md, "3-D view").
 
-Drawn with matplotlib's mplot3d and written by its animation module:
-Pillow for .gif (Pillow comes with matplotlib), ffmpeg for .mp4.  The
-loop plays the run in real time: all of it when it is short, else its
-last ``max_seconds`` (where a kick has grown and an event ends the run);
-the trail always goes back to t = 0.
+Drawn with matplotlib's mplot3d, one frame at a time, and written as it is
+drawn: a GIF through Pillow's frame encoder with one palette for all
+frames (taken from the first frame and the view's colours), an MP4 by
+piping raw frames to ffmpeg.  No frame is held after it is written, so the
+memory does not grow with the loop's length.
+
+The loop plays the run at the playback factor of
+:func:`deathsphere.viewer.scene.playback_factor` (real time, or the slow
+motion in which nothing aliases between frames, shown on every frame): all
+of the run when it fits in ``max_seconds`` of loop, else its last part
+(where a kick has grown and an event ends the run); the trail always goes
+back to t = 0.  The last frame is the run's end, held ``END_HOLD_S``.
 """
 
 from __future__ import annotations
 
+import shutil
+import subprocess
+import textwrap
+
 import numpy as np
 
-from deathsphere.viewer.scene import BodyScene
+from deathsphere.viewer.scene import BodyScene, playback_factor, slow_motion_words
 
-__all__ = ["frame_times", "write_animation", "CAMERA", "FPS", "MAX_SECONDS", "SIZE_PX"]
+__all__ = ["frame_times", "loop_plan", "frame_delays_ms", "write_animation", "CAMERA", "FPS", "MAX_SECONDS",
+           "SIZE_PX", "END_HOLD_S"]
 
-FPS = 15
+#: frames a second of the loop: 40 ms, a whole number of the GIF's 10 ms
+#: units, so the GIF's clock is exact
+FPS = 25
+#: the most seconds of loop (shown time, not simulated)
 MAX_SECONDS = 10.0
+#: how long the last frame (the run's end, an event's label) is held [s]
+END_HOLD_S = 1.5
 SIZE_PX = (720, 540)
 #: (elevation, azimuth) [deg] of the fixed camera, as the HTML view's default
 CAMERA = {"horizontal": (24.0, -62.0), "vertical": (14.0, 25.0)}
@@ -29,18 +46,43 @@ _TRAIL = "#1f9bd1"
 _NORMAL = "#1e8449"
 _FRICTION = "#e67e22"
 _SPOKE = "#d62728"
+_EVENT = "#c0392b"
+#: colours the GIF's palette must hold although the first frame may lack them
+_SWATCHES = (_WHEEL, _TRAIL, _NORMAL, _FRICTION, _SPOKE, _EVENT, "#333333", "#8796b0", "#d4a017", "#9a7400",
+             "#555555", "#ffffff", "#000000")
+
+
+def loop_plan(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MAX_SECONDS) -> tuple[np.ndarray, float]:
+    """(times [s], playback factor) of the loop's frames: one every
+    factor / fps simulated seconds, ending on the run's end, at most
+    ``max_seconds`` of loop.  The factor is chosen from the fastest
+    rotation and motion in the last ``max_seconds`` of the run, which
+    holds any stretch a slower loop shows."""
+    drawn = [s for s in scenes if s.n_frames]
+    if not drawn:
+        return np.zeros(1), 1.0
+    t_end = max(float(s.t[-1]) for s in drawn)
+    t_start = min(float(s.t[0]) for s in drawn)
+    factor = playback_factor(drawn, 1.0 / fps, t_from=t_end - max_seconds)
+    step = factor / fps
+    span = min(t_end - t_start, max_seconds * factor)
+    n = int(np.floor(span / step + 1e-9)) + 1
+    return t_end - np.arange(n)[::-1] * step, factor
 
 
 def frame_times(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MAX_SECONDS) -> np.ndarray:
-    """Times [s] of the loop's frames: every 1/fps s of the run's last
-    ``max_seconds`` (all of it when shorter), ending on the run's end."""
-    ends = [float(s.t[-1]) for s in scenes if s.n_frames]
-    if not ends:
-        return np.zeros(1)
-    t_end = max(ends)
-    span = min(t_end, max_seconds)
-    n = int(np.floor(span * fps + 1e-9)) + 1
-    return t_end - np.arange(n)[::-1] / fps
+    """Times [s] of the loop's frames (:func:`loop_plan`)."""
+    return loop_plan(scenes, fps, max_seconds)[0]
+
+
+def frame_delays_ms(n: int, fps: int = FPS, hold_s: float = END_HOLD_S) -> list[int]:
+    """How long each of n frames shows [ms], in the GIF's 10 ms units: the
+    rounding is carried from frame to frame, so frame k starts at
+    k * 1000 / fps ms within 10 ms and the loop's clock never drifts; the
+    last frame is held ``hold_s``."""
+    edges = np.round(np.arange(n) * 100.0 / fps).astype(np.int64) * 10
+    delays = np.diff(edges).tolist()
+    return [int(d) for d in delays] + [int(round(hold_s * 100)) * 10]
 
 
 def _index(scene, t):
@@ -52,8 +94,9 @@ def _unit(v):
 
 
 def _between(scene, t):
-    """Geometry at time t, linear between the samples around it (as the
-    HTML view does; the panel shows the earlier sample's own numbers)."""
+    """Geometry at time t, linear between the frames around it (as the
+    HTML view does): frames are at most a quarter turn apart, so a blend
+    of two directions, normalised, turns the same way as the body."""
     i = _index(scene, t)
     j = min(i + 1, scene.n_frames - 1)
     f = 0.0 if j == i else float(np.clip((t - scene.t[i]) / (scene.t[j] - scene.t[i]), 0.0, 1.0))
@@ -120,25 +163,122 @@ def title_text(scene: BodyScene, title: str = "") -> str:
     return (f"{title}: " if title else "") + f"{what} ({start}, a = {scene.a:g} m, r = {scene.r:g} m)"
 
 
-def _panel(scene, i):
+def _nearest(scene, t):
+    i = _index(scene, t)
+    return i + 1 if i + 1 < scene.n_frames and scene.t[i + 1] - t < t - scene.t[i] else i
+
+
+def _panel(scene, t, factor):
+    """The readouts at time t: the clock, the playback factor, and the
+    simulation's numbers at the frame nearest t."""
+    i = _nearest(scene, t)
     P = scene.panel
-    lines = [f"t = {number(scene.t[i])} s",
-             f"\u03b8 = {number(P['theta'][i])}\u00b0   \u03b1 = {number(P['alpha'][i])}\u00b0",
-             f"v = {number(P['speed'][i])} m/s   g-load = {number(P['g_load'][i])} g",
-             f"\u03bc required = {number(P['mu'][i])}"]
-    if scene.event_time is not None and i == scene.n_frames - 1:
-        lines.append(f"{scene.status.replace('_', ' ').upper()} at t = {scene.event_time:.3f} s")
+    mu_av = "no limit" if scene.mu_available is None else number(scene.mu_available)
+    lines = [f"t = {number(t)} s   ({slow_motion_words(factor)})",
+             f"v = {number(P['speed'][i], 2)} m/s = {number(P['speed_km_h'][i], 1)} km/h",
+             f"g-load = {number(P['g_load'][i], 2)} g",
+             f"\u03bc needed = {number(P['mu'][i])}  (available: {mu_av})",
+             f"force \u2220 normal = {number(P['force_angle'][i], 1)}\u00b0"]
+    if scene.event_time is not None and t >= scene.t[-1]:
+        lines.append(f"{scene.event_words.upper()} at t = {scene.event_time:.3f} s")
     return "\n".join(lines)
 
 
+def _hex_rgb(colour):
+    return tuple(int(colour[k:k + 2], 16) for k in (1, 3, 5))
+
+
+class _GifStream:
+    """A GIF written frame by frame (Pillow's GIF encoder, one global
+    palette): nothing is held but the palette and the open file."""
+
+    def __init__(self, path):
+        self._fp = open(path, "wb")
+        self._palette = None
+        self._previous = None
+
+    def add(self, rgb, duration_ms: int):
+        from PIL import GifImagePlugin, Image
+
+        im = Image.fromarray(rgb, "RGB")
+        if self._palette is None:
+            # the first frame's colours, and the view's own (an event's red
+            # may first appear at the end): one palette for every frame,
+            # so a frame's colours never flicker
+            probe = Image.new("RGB", (im.width, im.height + 24))
+            probe.paste(im, (0, 0))
+            for k, colour in enumerate(_SWATCHES):
+                probe.paste(Image.new("RGB", (24, 24), _hex_rgb(colour)), (24 * k, im.height))
+            self._palette = probe.quantize(colors=256, method=Image.Quantize.MEDIANCUT)
+            first = im.quantize(palette=self._palette, dither=Image.Dither.NONE)
+            header, _ = GifImagePlugin.getheader(first, info={"loop": 0, "optimize": False})
+            for chunk in header:
+                self._fp.write(chunk)
+            frame = first
+        else:
+            frame = im.quantize(palette=self._palette, dither=Image.Dither.NONE)
+        # only the rectangle that changed is stored (the sphere and most of
+        # the picture stay): the file is several times smaller
+        pixels = np.asarray(frame)
+        offset = (0, 0)
+        if self._previous is not None:
+            rows = np.flatnonzero(np.any(pixels != self._previous, axis=1))
+            cols = np.flatnonzero(np.any(pixels != self._previous, axis=0))
+            box = (cols[0], rows[0], cols[-1] + 1, rows[-1] + 1) if rows.size else (0, 0, 1, 1)
+            offset = (int(box[0]), int(box[1]))
+            frame = frame.crop(tuple(int(x) for x in box))
+        self._previous = pixels
+        for chunk in GifImagePlugin.getdata(frame, offset, duration=int(duration_ms), disposal=1):
+            self._fp.write(chunk)
+
+    def close(self):
+        self._fp.write(b";")
+        self._fp.close()
+
+
+class _Mp4Stream:
+    """Raw RGB frames piped to ffmpeg (H.264, yuv420p, playable in slide
+    software); a frame's duration is repeated frames at the fixed rate."""
+
+    def __init__(self, path, size, fps):
+        from matplotlib import rcParams
+
+        binary = shutil.which(rcParams["animation.ffmpeg_path"])
+        if binary is None:      # refused before any work by check_view_output; here for direct callers
+            raise RuntimeError("writing .mp4 needs the ffmpeg encoder, which is not on PATH; "
+                               "install ffmpeg, or write .gif or .html instead")
+        self._ms = 1000.0 / fps
+        self._shown = 0.0
+        self._sent = 0
+        self._proc = subprocess.Popen(
+            [binary, "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{size[0]}x{size[1]}",
+             "-r", str(fps), "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
+             str(path)], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
+    def add(self, rgb, duration_ms: int):
+        self._shown += duration_ms
+        data = np.ascontiguousarray(rgb).tobytes()
+        while (self._sent + 1) * self._ms <= self._shown + 1e-6:
+            self._proc.stdin.write(data)
+            self._sent += 1
+
+    def close(self):
+        self._proc.stdin.close()
+        err = self._proc.stderr.read().decode(errors="replace")
+        if self._proc.wait() != 0:
+            raise RuntimeError(f"ffmpeg failed: {err.strip()[-500:]}")
+
+
 def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: int = FPS,
-                    max_seconds: float = MAX_SECONDS, size_px=SIZE_PX, dpi: int = 90) -> int:
-    """Write the loop to ``output`` (.gif with Pillow, .mp4 with ffmpeg);
-    returns the number of frames.  Needs matplotlib (the ``plot`` extra)."""
+                    max_seconds: float = MAX_SECONDS, size_px=SIZE_PX, dpi: int = 90, progress=None) -> int:
+    """Write the loop to ``output`` (.gif with Pillow, .mp4 with ffmpeg),
+    each frame as it is drawn; returns the number of frames.  Needs
+    matplotlib (the ``plot`` extra).  ``progress(k, n)``, if given, is
+    called after each frame."""
     from deathsphere.render.figures import import_matplotlib
 
     import_matplotlib()
-    from matplotlib import animation
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -146,19 +286,22 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
     r, a = first.r, first.a
     extent = (r + 2.2 * a if first.side == "outside" else r) * 1.02
     fig = Figure(figsize=(size_px[0] / dpi, size_px[1] / dpi), dpi=dpi)
-    ax = fig.add_axes((0.0, 0.0, 1.0, 0.93), projection="3d")
+    canvas = FigureCanvasAgg(fig)
+    ax = fig.add_axes((0.0, 0.05, 1.0, 0.83), projection="3d")
     ax.set_axis_off()
     ax.set_box_aspect((1, 1, 1), zoom=1.45)
     for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         set_lim(-extent, extent)
     ax.view_init(*CAMERA.get(first.orbit, CAMERA["horizontal"]))
     _sphere_lines(ax, r)
-    fig.text(0.5, 0.965, title_text(first, title), ha="center", va="center", fontsize=12, fontweight="bold")
-    panel = fig.text(0.015, 0.9, "", ha="left", va="top", fontsize=12, family="DejaVu Sans",
+    fig.text(0.5, 0.995, textwrap.fill(title_text(first, title), 78), ha="center", va="top", fontsize=12,
+             fontweight="bold")
+    panel = fig.text(0.015, 0.9, "", ha="left", va="top", fontsize=11, family="DejaVu Sans",
                      bbox=dict(boxstyle="round", fc="white", ec="#999999", alpha=0.9))
-    fig.text(0.985, 0.03, "arrows: normal force (green), friction (orange), 0.1 r per g", ha="right",
+    fig.text(0.985, 0.015, "arrows: normal force (green), friction (orange), 0.1 r per g", ha="right",
              fontsize=9, color="#555555")
-    times = frame_times(scenes, fps, max_seconds)
+    times, factor = loop_plan(scenes, fps, max_seconds)
+    delays = frame_delays_ms(times.size, fps)
     drawn = [s for s in scenes if s.n_frames]
     artists = []
     for s in drawn:
@@ -169,12 +312,13 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
         trail, = ax.plot([], [], [], color=_TRAIL, lw=1.6)
         normal, = ax.plot([], [], [], color=_NORMAL, lw=2.5)
         friction, = ax.plot([], [], [], color=_FRICTION, lw=2.5)
-        artists.append((s, body, spoke, trail, normal, friction))
+        label = ax.text(0, 0, 0, "", color=_EVENT, fontsize=13, fontweight="bold", ha="center",
+                        bbox=dict(boxstyle="round", fc="white", ec=_EVENT))
+        artists.append((s, body, spoke, trail, normal, friction, label))
 
-    def draw(k):
-        t = times[k]
-        for s, body, spoke, trail, normal, friction in artists:
-            i, now = _between(s, t)
+    def draw(t):
+        for s, body, spoke, trail, normal, friction, label in artists:
+            _, now = _between(s, t)
             c, e1, e3, p = now["centre"], now["axis"], now["e3"], now["contact"]
             if s.body == "wheel":
                 body.set_verts([_disc(c, e1, e3, s.a)])
@@ -183,20 +327,32 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
                 body.set_verts(_ball(c, s.a))
                 tip = c + 1.05 * s.a * now["spoke"]          # the body-fixed marker
             spoke.set_data_3d([c[0], tip[0]], [c[1], tip[1]], [c[2], tip[2]])
-            tr = np.column_stack((s.geometry["contact"][:, : i + 1], p))
+            upto = int(np.searchsorted(s.trail_t, t, side="right"))
+            tr = np.column_stack((s.trail[:, :upto], p))
             trail.set_data_3d(tr[0], tr[1], tr[2])
             scale = FORCE_SCALE_R_PER_G * s.r / s.g
             for art, key in ((normal, "normal_force"), (friction, "friction_force")):
                 q = p + scale * now[key]
                 art.set_data_3d([p[0], q[0]], [p[1], q[1]], [p[2], q[2]])
+            ended = s.event_time is not None and t >= s.t[-1]
+            label.set_text(f"\u2716 {s.event_words}" if ended else "")
+            q = p * (1.15 if s.side == "outside" else 0.85)
+            label.set_position((q[0], q[1]))
+            label.set_3d_properties(q[2], None)
         if drawn:
-            panel.set_text(_panel(drawn[0], _index(drawn[0], t)))
+            panel.set_text(_panel(drawn[0], t, factor))
         else:
             panel.set_text(f"{first.status}: {first.reason}")
-        return []
+        canvas.draw()
+        return np.asarray(canvas.buffer_rgba())[..., :3]
 
-    anim = animation.FuncAnimation(fig, draw, frames=len(times), interval=1000 / fps, blit=False)
     fmt = str(output).lower().rsplit(".", 1)[-1]
-    writer = animation.PillowWriter(fps=fps) if fmt == "gif" else animation.FFMpegWriter(fps=fps)
-    anim.save(str(output), writer=writer, dpi=dpi)
-    return len(times)
+    stream = _GifStream(output) if fmt == "gif" else _Mp4Stream(output, size_px, fps)
+    try:
+        for k, t in enumerate(times):
+            stream.add(draw(float(t)), delays[k])
+            if progress is not None:
+                progress(k + 1, times.size)
+    finally:
+        stream.close()
+    return int(times.size)

@@ -4,7 +4,9 @@ docs/simulation.md, "3-D view").
 The page is ``template.html`` (package data: plain JavaScript drawing on a
 2-D canvas with its own perspective projection and depth-sorted drawing,
 no third-party code) with the run's frames embedded as JSON: numbers are
-little-endian float32 arrays in base64, about 5.3 characters a number.
+little-endian float32 arrays in base64, about 5.3 characters a number;
+times are float64, so that the last frame is the run's end (an event's
+time) exactly, not its float32 rounding.
 """
 
 from __future__ import annotations
@@ -16,9 +18,10 @@ from pathlib import Path
 
 import numpy as np
 
-from deathsphere.viewer.scene import BodyScene
+from deathsphere.viewer.scene import PLAYBACK_FACTORS, BodyScene, playback_factor
 
-__all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "SCALAR_KEYS"]
+__all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "SCALAR_KEYS",
+           "PANEL_KEYS", "SCREEN_INTERVAL_S"]
 
 #: where the template takes the data (a JavaScript expression)
 DATA_MARK = "/*__DEATHSPHERE_DATA__*/null"
@@ -26,16 +29,20 @@ DATA_MARK = "/*__DEATHSPHERE_DATA__*/null"
 VECTOR_KEYS = ("centre", "axis", "e3", "contact", "normal_force", "friction_force")
 #: frame scalars stored, (F,) each
 SCALAR_KEYS = ("spin",)
-PANEL_KEYS = ("theta", "alpha", "speed", "g_load", "mu", "normal", "friction")
+PANEL_KEYS = ("theta", "alpha", "speed", "speed_km_h", "g_load", "mu", "normal", "friction", "force_angle")
+#: the screen refresh the page's default playback factor is chosen for
+#: (60 Hz: a slower screen shows fewer frames, the clock still true)
+SCREEN_INTERVAL_S = 1 / 60
 
 
-def _encode(x) -> str:
-    return base64.b64encode(np.ascontiguousarray(x, dtype="<f4").tobytes()).decode("ascii")
+def _encode(x, dtype="<f4") -> str:
+    return base64.b64encode(np.ascontiguousarray(x, dtype=dtype).tobytes()).decode("ascii")
 
 
-def decode_array(text: str, rows: int = 1) -> np.ndarray:
-    """Inverse of the encoding: (F,) for rows 1, else (rows, F)."""
-    x = np.frombuffer(base64.b64decode(text), dtype="<f4").astype(np.float64)
+def decode_array(text: str, rows: int = 1, dtype="<f4") -> np.ndarray:
+    """Inverse of the encoding: (F,) for rows 1, else (rows, F); times
+    (``t``, ``trail_t``) are ``dtype="<f8"``."""
+    x = np.frombuffer(base64.b64decode(text), dtype=dtype).astype(np.float64)
     return x if rows == 1 else x.reshape(-1, rows).T
 
 
@@ -45,7 +52,9 @@ def _body(scene: BodyScene) -> dict:
         "a": scene.a, "r": scene.r, "g": scene.g, "theta0_deg": scene.theta0_deg,
         "alpha0_deg": scene.alpha0_deg, "period": scene.period if np.isfinite(scene.period) else None,
         "status": scene.status, "reason": scene.reason, "event_time": scene.event_time,
-        "n": scene.n_frames, "t": _encode(scene.t),
+        "event_words": scene.event_words, "mu_available": scene.mu_available,
+        "n": scene.n_frames, "t": _encode(scene.t, "<f8"),
+        "trail_t": _encode(scene.trail_t, "<f8"), "trail": _encode(scene.trail.T) if scene.trail.size else "",
     }
     for key in VECTOR_KEYS:
         out[key] = _encode(scene.geometry[key].T) if scene.n_frames else ""
@@ -56,11 +65,16 @@ def _body(scene: BodyScene) -> dict:
 
 
 def view_data(scenes: list[BodyScene], title: str = "") -> dict:
-    """The JSON-able data the page reads: ``title``, ``t_end`` [s] (the
-    latest time of any body) and ``bodies`` (one dict per body, arrays
-    base64 float32, see :func:`decode_array`)."""
-    ends = [float(s.t[-1]) for s in scenes if s.n_frames]
-    return {"format": "deathsphere-view/1", "title": title, "t_end": max(ends) if ends else 0.0,
+    """The JSON-able data the page reads: ``title``, ``t_start`` and
+    ``t_end`` [s] (the earliest and latest frame of any body), ``playback``
+    (the default playback factor, :func:`deathsphere.viewer.scene.playback_factor`
+    at 60 frames a second), ``factors`` (those the page offers) and
+    ``bodies`` (one dict per body, arrays base64, see :func:`decode_array`)."""
+    drawn = [s for s in scenes if s.n_frames]
+    return {"format": "deathsphere-view/2", "title": title,
+            "t_start": min(float(s.t[0]) for s in drawn) if drawn else 0.0,
+            "t_end": max(float(s.t[-1]) for s in drawn) if drawn else 0.0,
+            "playback": playback_factor(scenes, SCREEN_INTERVAL_S), "factors": list(PLAYBACK_FACTORS),
             "bodies": [_body(s) for s in scenes]}
 
 

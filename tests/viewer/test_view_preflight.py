@@ -30,7 +30,7 @@ def _one_error_line(res, *words):
 
 def test_unknown_extension(run, no_integration, tmp_path):
     res = run(*ARGS, "--output", str(tmp_path / "x.xyz"))
-    _one_error_line(res, ".png, .svg, .pdf, .html, .gif or .mp4", "x.xyz")
+    _one_error_line(res, ".png, .svg, .pdf, .html, .gif, .mp4, .csv, .json or .ndjson", "x.xyz")
     assert not (tmp_path / "x.xyz").exists()
 
 

@@ -42,3 +42,29 @@ def body_attributes(dom: str) -> dict:
     m = re.search(r"<body([^>]*)>", dom)
     assert m, dom[:500]
     return dict(re.findall(r'data-([a-z]+)="([^"]*)"', m.group(1)))
+
+
+def page_layout(binary, html_path, width, height, fragment="", budget_ms=3000):
+    """The page's own record of where its parts are (``data-layout``: boxes
+    [left, top, width, height] in CSS pixels) in a viewport of width x
+    height, and its <body> attributes.  Headless Chromium's window size
+    includes a strip the page does not get: measured once and added."""
+    target = "file://" + os.path.abspath(html_path) + (f"#{fragment}" if fragment else "")
+
+    def measure(h):
+        with tempfile.TemporaryDirectory() as profile:
+            res = subprocess.run(
+                [binary, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                 f"--user-data-dir={profile}", f"--window-size={width},{h}", f"--virtual-time-budget={budget_ms}",
+                 "--dump-dom", target],
+                capture_output=True, text=True, timeout=120)
+        assert res.returncode == 0, res.stderr[-2000:]
+        attrs = body_attributes(res.stdout)
+        return json.loads(attrs["layout"].replace("&quot;", '"')), attrs, res.stdout
+
+    layout, attrs, dom = measure(height)
+    strip = height - layout["window"][1]
+    if strip:
+        layout, attrs, dom = measure(height + strip)
+    return layout, attrs, dom
