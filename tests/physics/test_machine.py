@@ -245,5 +245,6 @@ def test_singular_inputs_give_statuses_not_warnings():
         for key, val in out.items():
             assert np.all(np.isfinite(val[ok])), key
         assert np.all((out["reason"] != 0) == ~ok)
-    # standing upright at the equator: no orbit, said so
-    assert res["status"][2, 2] == Status.NO_ORBIT
+    # standing upright on the floor: no orbit, said so (and upright on the equator wall does not fit)
+    assert (res["status"][1, 2], res["reason"][1, 2]) == (Status.NO_ORBIT, Reason.MACHINE_OMEGA_ZERO)
+    assert res["status"][2, 2] == Status.NO_FIT
