@@ -246,5 +246,7 @@ def test_singular_inputs_give_statuses_not_warnings():
             assert np.all(np.isfinite(val[ok])), key
         assert np.all((out["reason"] != 0) == ~ok)
     # standing upright on the floor: no orbit, said so (and upright on the equator wall does not fit)
-    assert (res["status"][1, 2], res["reason"][1, 2]) == (Status.NO_ORBIT, Reason.MACHINE_OMEGA_ZERO)
+    assert (res["status"][6, 2], res["reason"][6, 2]) == (Status.NO_ORBIT, Reason.MACHINE_OMEGA_ZERO)
+    # ... and on the axis at the very bottom both sides of eq. M8 vanish
+    assert (res["status"][1, 2], res["reason"][1, 2]) == (Status.NO_ORBIT, Reason.MACHINE_ZERO_DENOMINATOR)
     assert res["status"][2, 2] == Status.NO_FIT
