@@ -63,6 +63,7 @@ class Reason(IntEnum):
     MACHINE_OMEGA_IMAGINARY = 30
     MACHINE_NO_CONTACT = 31
     MACHINE_OVER_G = 32
+    MACHINE_NO_ALPHA = 33
 
 
 REASONS = {
@@ -99,6 +100,7 @@ REASONS = {
     Reason.MACHINE_OMEGA_IMAGINARY: "Omega^2 < 0 (machine.md eq. M8): no real rotation rate at this tilt",
     Reason.MACHINE_NO_CONTACT: "contact force pulls away from the wall (machine.md eq. M9 needs r_G Omega^2 sin(theta) > g cos(theta))",
     Reason.MACHINE_OVER_G: "the load load_g (machine.md eq. M11) exceeds the largest given (max_g)",
+    Reason.MACHINE_NO_ALPHA: "no tilt alpha at which the wheel fits gives this speed (machine.md eq. M12 has no root)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.
