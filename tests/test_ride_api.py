@@ -142,3 +142,15 @@ def test_machine_files(tmp_path):
     worse.write_text("mass = -1\n")
     with pytest.raises(ParameterError, match="mass"):
         machine_file(worse)
+
+
+def test_the_stability_columns_of_the_papers_wheel_are_orbits():
+    th, al = [[40], [90], [130]], [-20, 10, 30, 60]
+    t = deathsphere.ride(th, al, machine="paper-wheel", r=3.0)
+    o = deathsphere.orbit(th, al, r=3.0)
+    np.testing.assert_array_equal(t["stability"], o["stability"])
+    assert set(t["stability"].tolist()) >= {"stable", "unstable"}
+    np.testing.assert_allclose(t["freq_fast_rad_s"], o["freq_fast_rad_s"], rtol=1e-9)
+    a = deathsphere.ride(90, [10, 20, 30], machine="stunt125", diameter="16ft")
+    assert set(a["stability"].tolist()) == {"unstable"} and "a rider steers" in a["stability_method"][0]
+    assert all(a["growth_rate_1_s"] > 0)

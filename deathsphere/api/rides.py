@@ -26,6 +26,8 @@ from deathsphere.table import Table
 
 #: Orbits evaluated per piece (temporaries stay in cache, as the wheel's).
 CHUNK = 1 << 14
+#: Orbits per batch of the stability analysis (~10 kB of temporaries each).
+STABILITY_CHUNK = 4096
 #: Rows one call may return (about 1 GiB at ~500 bytes a row).
 MAX_RIDE_ROWS = 2_000_000
 
@@ -34,12 +36,13 @@ RIDE_COLUMNS = (
     "input_row", "machine", "theta_deg", "alpha_deg", "lean_deg", "r_m", "height_m", "g_m_s2", "mu_available",
     "max_g", "status", "reason", "omega_rad_s", "period_s", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s",
     "wheel_spin_rad_s", "com_orbit_radius_m", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
-    "load_g", "head_clearance_m", "stability", "stability_method", "growth_rate_1_s",
+    "load_g", "head_clearance_m", "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s",
+    "freq_fast_rad_s",
 )
 
-#: What the stability columns say on every analysed row (docs/machine.md sec. 9).
-STABILITY_NOT_ANALYSED = ("not analysed: the machine's exact linearisation is not implemented yet; expect an "
-                          "unsteered machine to be unstable on most orbits (a rider steers)")
+#: What the stability columns say on every analysed row (docs/machine.md sec. 5).
+STABILITY_METHOD = ("exact linearisation of the machine with its steering locked (docs/machine.md sec. 5): "
+                    "an unsteered machine is unstable on most orbits; a rider steers")
 
 _PHYS = {"omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s", "v_contact": "v_contact_m_s",
          "spin": "wheel_spin_rad_s", "r_g": "com_orbit_radius_m", "normal": "normal_per_mass_m_s2",
@@ -89,13 +92,25 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
         if key == "v_cm":
             cols["v_cm_km_h"] = res[key] * 3.6
     has_orbit = (status == Status.OK) | (status == Status.SLIPS) | (status == Status.OVER_G)
-    if stability:
-        cols["stability"] = np.where(has_orbit, "unknown", "").astype(object)
-        cols["stability_method"] = np.where(has_orbit, STABILITY_NOT_ANALYSED, "").astype(object)
-    else:
-        cols["stability"] = np.full(n, "", dtype=object)
-        cols["stability_method"] = np.full(n, "", dtype=object)
-    cols["growth_rate_1_s"] = np.full(n, np.nan)
+    blank = np.full(n, "", dtype=object)
+    cols["stability"], cols["stability_method"] = blank, blank.copy()
+    for key in ("growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s"):
+        cols[key] = np.full(n, np.nan)
+    rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
+    if rows.size:
+        from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
+        from deathsphere.physics.stability.verdict import VERDICT_LABELS
+
+        rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
+        for start in range(0, rows.size, STABILITY_CHUNK):
+            idx = rows[start:start + STABILITY_CHUNK]
+            p = MachineParams(m.a, m.t, rr[idx], m.h, gg[idx], m.mass, *m.inertia, m.spin_inertia)
+            st = machine_stability(theta[idx], alpha[idx], p)
+            cols["stability"][idx] = VERDICT_LABELS[st["verdict"]]
+            cols["stability_method"][idx] = STABILITY_METHOD
+            cols["growth_rate_1_s"][idx] = st["growth_rate"]
+            cols["freq_slow_rad_s"][idx] = st["freq_slow"]
+            cols["freq_fast_rad_s"][idx] = st["freq_fast"]
     return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape)
 
 

@@ -1,0 +1,88 @@
+"""The machine's exact equations of motion and the stability of its steady
+orbits (docs/machine.md sec. 5): the paper's wheel is the house's wheel
+state by state and mode by mode; eq. M8 is a fixed point of the full
+equations for any machine."""
+
+import numpy as np
+import pytest
+
+from deathsphere.physics import dynamics as dyn
+from deathsphere.physics.machine import ride_orbit
+from deathsphere.physics.machine_dynamics import MachineParams, machine_orbit_state, machine_rhs, machine_stability
+from deathsphere.physics.stability import wheel_stability
+from deathsphere.physics.stability.verdict import Verdict
+
+G = 9.80665
+
+
+def _wheel(a, r, k, m=2.0):
+    i = k * m * a * a
+    return MachineParams(a, 0.0, r, a, G, m, i, 2 * i, i, 2 * i)
+
+
+@pytest.mark.parametrize("a, r, k", [(0.3, 3.0, 0.5), (0.5, 1.5, 0.25)])
+def test_the_papers_wheel_has_the_houses_equations_of_motion(a, r, k):
+    """Not only on the orbit: at perturbed states too (the wheel's
+    equations, physics.dynamics, derived separately in docs/dynamics.md)."""
+    rng = np.random.default_rng(3)
+    th = np.radians(rng.uniform(40, 150, 40))
+    al = np.radians(rng.uniform(5, 40, 40))
+    bp = dyn.body_params(a, r, k, G)
+    X, _ = dyn.wheel_orbit_state(th, al, a, r, k, G)
+    keep = np.all(np.isfinite(X), axis=0)
+    X = dyn.project(X[:, keep] + 0.02 * rng.standard_normal((9, keep.sum())), bp)
+    ref = dyn.rhs(X, bp)
+    got = machine_rhs(X, _wheel(a, r, k))
+    assert np.max(np.abs(got - ref)) < 1e-11 * np.max(np.abs(ref))
+
+
+def test_eq_m8_is_a_fixed_point_of_the_full_equations():
+    """The steady orbit of eq. M8 (rate, spin) placed in the exact equations
+    in the frame turning at Omega: every rate vanishes, for machines with a
+    round tyre and any inertia."""
+    rng = np.random.default_rng(5)
+    n = 300
+    p = MachineParams(0.3, rng.uniform(0, 0.2, n), rng.uniform(1.5, 6, n), rng.uniform(0.3, 1.2, n), G, 150.0,
+                      rng.uniform(5, 30, n), rng.uniform(20, 40, n), rng.uniform(5, 30, n), rng.uniform(0, 2, n))
+    th = np.radians(rng.uniform(30, 170, n))
+    al = np.radians(rng.uniform(-10, 80, n))
+    res = ride_orbit(th, al, p.r, G, p.mass, p.h, p.a, p.t, p.pitch, p.yaw, p.spin, p.h + 1)
+    ok = np.isfinite(res["omega"]) & (res["status"] != 1)
+    assert ok.sum() > 100
+    X, om = machine_orbit_state(th[ok], al[ok], MachineParams(*(np.broadcast_to(x, (n,))[ok] for x in p)))
+    np.testing.assert_allclose(om, res["omega"][ok], rtol=1e-13)
+    rates = machine_rhs(X, MachineParams(*(np.broadcast_to(x, (n,))[ok] for x in p)), om)
+    scale = np.abs(om) * (np.abs(X[6:9]).max(axis=0) + 1)
+    assert np.max(np.abs(rates) / scale) < 1e-11
+
+
+def test_the_papers_wheel_has_the_houses_stability():
+    a, r, k = 0.3, 3.0, 0.5
+    th, al = np.meshgrid(np.radians(np.linspace(30, 160, 14)), np.radians(np.linspace(-30, 80, 12)))
+    th, al = th.ravel(), al.ravel()
+    ws = wheel_stability(th, al, a, r, k, G)
+    ms = machine_stability(th, al, _wheel(a, r, k))
+    known = np.isfinite(ws["growth_rate"])
+    assert known.sum() > 60
+    np.testing.assert_array_equal(np.isfinite(ms["growth_rate"]), known)
+    diff = np.abs(ms["growth_rate"][known] - ws["growth_rate"][known]) / ws["rate_scale"][known]
+    assert np.max(diff) < 1e-8
+    np.testing.assert_allclose(ms["freq_fast"][known], ws["freq_fast"][known], rtol=1e-9)
+    np.testing.assert_allclose(ms["freq_slow"][known], ws["freq_slow"][known], rtol=1e-8, atol=1e-9)
+    np.testing.assert_array_equal(ms["verdict"][known], ws["verdict"][known])
+    assert {Verdict.STABLE, Verdict.UNSTABLE} <= set(ws["verdict"][known].tolist())
+
+
+def test_an_unsteered_motorcycle_is_unstable_on_most_orbits():
+    p = MachineParams(0.3, 0.045, 2.4384, 0.8, G, 165.0, 25.0, 40.0, 20.0, 0.8)
+    th, al = np.meshgrid(np.radians(np.linspace(60, 170, 12)), np.radians(np.linspace(-5, 60, 14)))
+    st = machine_stability(th.ravel(), al.ravel(), p)
+    known = np.isfinite(st["growth_rate"])
+    assert known.sum() > 50
+    assert np.mean(st["verdict"][known] == Verdict.UNSTABLE) > 0.9
+    # the spectrum is symmetric (lambda -> -lambda): reversible equations
+    ev = st["eigenvalues"][known]
+    tol = 1e-8 * np.nanmax(st["rate_scale"])
+    re, im = np.sort(ev.real, axis=1), np.sort(ev.imag, axis=1)
+    np.testing.assert_allclose(re, -re[:, ::-1], atol=tol)
+    np.testing.assert_allclose(im, -im[:, ::-1], atol=tol)
