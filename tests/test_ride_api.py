@@ -145,7 +145,7 @@ def test_machine_files(tmp_path):
 
 
 def test_the_stability_columns_of_the_papers_wheel_are_orbits():
-    th, al = [[40], [90], [130]], [-20, 10, 30, 60]
+    th, al = [[40], [90], [130]], [-20, 10, 30, 60, 80]
     t = deathsphere.ride(th, al, machine="paper-wheel", r=3.0)
     o = deathsphere.orbit(th, al, r=3.0)
     np.testing.assert_array_equal(t["stability"], o["stability"])
