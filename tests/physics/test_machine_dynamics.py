@@ -133,3 +133,23 @@ def test_simulation_confirms_a_stable_machine_orbit():
     first = ts <= ts[-1] / 2
     assert dev[~first].max() < 1.1 * dev[first].max()
     assert dev.max() < 1e-3
+
+
+@pytest.mark.parametrize("v", [2.0, 10.0, 30.0])
+def test_flat_ground_capsize_mode(v):
+    """On flat ground (r = 1e6 m, a 2 km turn: nearly straight and upright)
+    the lean mode of the single-contact machine is docs/machine.md eq. M20:
+    (I_roll + m h^2) lambda^2 = m g h - (m h v + J v/a) J v / (a I_yaw):
+    capsize (real lambda) below the critical speed, a wobble above."""
+    from deathsphere.physics.machine import solve_alpha_for_speed
+
+    m, h, a, t, i_r, i_p, i_y, j = 165.0, 0.8, 0.3, 0.0, 25.0, 40.0, 20.0, 0.8
+    r, R = 1e6, 2000.0
+    th = np.pi - np.arcsin(R / r)
+    roots = solve_alpha_for_speed([th], [v], r, G, m, h, a, t, i_p, i_y, j)[0]
+    al = roots[np.isfinite(roots) & (roots > 0) & (roots < np.pi / 2)]
+    st = machine_stability(np.array([th]), al, MachineParams(a, t, r, h, G, m, i_r, i_p, i_y, j))
+    lam2 = (m * G * h - (m * h * v + j * v / a) * j * v / (a * i_y)) / (i_r + m * h * h)
+    ev = st["eigenvalues"][0]
+    main = ev[np.argmax(np.abs(ev))]
+    assert (main ** 2).real == pytest.approx(lam2, rel=2e-4)
