@@ -62,23 +62,25 @@ class MachineParams(tuple):
 
 class _Jet:
     """x(eps) = x0 + x1 eps + x2 eps^2 / 2, truncated (x1, x2: first and
-    second time derivatives).  Vectors carry a leading axis of 3."""
+    second time derivatives; x2 None: a first-order jet, whose products
+    skip the second order).  Vectors carry a leading axis of 3."""
 
     __slots__ = ("x0", "x1", "x2")
     __array_ufunc__ = None
 
-    def __init__(self, x0, x1, x2):
+    def __init__(self, x0, x1, x2=None):
         self.x0, self.x1, self.x2 = x0, x1, x2
 
     def __add__(self, o):
         if isinstance(o, _Jet):
-            return _Jet(self.x0 + o.x0, self.x1 + o.x1, self.x2 + o.x2)
+            x2 = None if self.x2 is None or o.x2 is None else self.x2 + o.x2
+            return _Jet(self.x0 + o.x0, self.x1 + o.x1, x2)
         return _Jet(self.x0 + o, self.x1, self.x2)
 
     __radd__ = __add__
 
     def __neg__(self):
-        return _Jet(-self.x0, -self.x1, -self.x2)
+        return _Jet(-self.x0, -self.x1, None if self.x2 is None else -self.x2)
 
     def __sub__(self, o):
         return self + (-o)
@@ -88,9 +90,10 @@ class _Jet:
 
     def __mul__(self, o):
         if isinstance(o, _Jet):
-            return _Jet(self.x0 * o.x0, self.x1 * o.x0 + self.x0 * o.x1,
-                        self.x2 * o.x0 + 2 * self.x1 * o.x1 + self.x0 * o.x2)
-        return _Jet(self.x0 * o, self.x1 * o, self.x2 * o)
+            x2 = (None if self.x2 is None or o.x2 is None
+                  else self.x2 * o.x0 + 2 * self.x1 * o.x1 + self.x0 * o.x2)
+            return _Jet(self.x0 * o.x0, self.x1 * o.x0 + self.x0 * o.x1, x2)
+        return _Jet(self.x0 * o, self.x1 * o, None if self.x2 is None else self.x2 * o)
 
     __rmul__ = __mul__
 
@@ -98,28 +101,30 @@ class _Jet:
         if isinstance(o, _Jet):
             q0 = self.x0 / o.x0
             q1 = (self.x1 - q0 * o.x1) / o.x0
-            q2 = (self.x2 - 2 * q1 * o.x1 - q0 * o.x2) / o.x0
+            q2 = (None if self.x2 is None or o.x2 is None
+                  else (self.x2 - 2 * q1 * o.x1 - q0 * o.x2) / o.x0)
             return _Jet(q0, q1, q2)
-        return _Jet(self.x0 / o, self.x1 / o, self.x2 / o)
+        return _Jet(self.x0 / o, self.x1 / o, None if self.x2 is None else self.x2 / o)
 
     def __rtruediv__(self, o):
         q0 = o / self.x0
         q1 = -q0 * self.x1 / self.x0
-        return _Jet(q0, q1, (-2 * q1 * self.x1 - q0 * self.x2) / self.x0)
+        return _Jet(q0, q1, None if self.x2 is None else (-2 * q1 * self.x1 - q0 * self.x2) / self.x0)
 
     def __getitem__(self, i):
-        return _Jet(self.x0[i], self.x1[i], self.x2[i])
+        return _Jet(self.x0[i], self.x1[i], None if self.x2 is None else self.x2[i])
 
 
 def _jsqrt(x: _Jet) -> _Jet:
     s0 = np.sqrt(x.x0)
     s1 = x.x1 / (2 * s0)
-    return _Jet(s0, s1, (x.x2 - 2 * s1 * s1) / (2 * s0))
+    return _Jet(s0, s1, None if x.x2 is None else (x.x2 - 2 * s1 * s1) / (2 * s0))
 
 
 def _jdot(u: _Jet, v: _Jet) -> _Jet:
-    return _Jet(np.sum(u.x0 * v.x0, axis=0), np.sum(u.x1 * v.x0 + u.x0 * v.x1, axis=0),
-                np.sum(u.x2 * v.x0 + 2 * u.x1 * v.x1 + u.x0 * v.x2, axis=0))
+    x2 = (None if u.x2 is None or v.x2 is None
+          else np.sum(u.x2 * v.x0 + 2 * u.x1 * v.x1 + u.x0 * v.x2, axis=0))
+    return _Jet(np.sum(u.x0 * v.x0, axis=0), np.sum(u.x1 * v.x0 + u.x0 * v.x1, axis=0), x2)
 
 
 def _cross(u, v):
@@ -127,8 +132,9 @@ def _cross(u, v):
 
 
 def _jcross(u: _Jet, v: _Jet) -> _Jet:
-    return _Jet(_cross(u.x0, v.x0), _cross(u.x1, v.x0) + _cross(u.x0, v.x1),
-                _cross(u.x2, v.x0) + 2 * _cross(u.x1, v.x1) + _cross(u.x0, v.x2))
+    x2 = (None if u.x2 is None or v.x2 is None
+          else _cross(u.x2, v.x0) + 2 * _cross(u.x1, v.x1) + _cross(u.x0, v.x2))
+    return _Jet(_cross(u.x0, v.x0), _cross(u.x1, v.x0) + _cross(u.x0, v.x1), x2)
 
 
 def _dot(u, v):
@@ -169,8 +175,7 @@ def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
     C_, E_, W_, vC_, Ed_, P_ = (x[add] for x in (C, E, W, vC, Edot, P))
     # first-order rates of the geometry (P dot) from a jet with zero second coefficients
-    zero = np.zeros_like(C_)
-    h1j, e3j, Qj, Pj = _geometry(_Jet(C_, vC_, zero), _Jet(E_, Ed_, zero), a, t)
+    h1j, e3j, Qj, Pj = _geometry(_Jet(C_, vC_), _Jet(E_, Ed_), a, t)
     Pdot = Pj.x1
     # accelerations of C and E for each trial dw/dt
     Cdd = -_cross(Wd, P_ - C_) - _cross(W_, Pdot - vC_)
@@ -179,9 +184,10 @@ def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
     Gdd = Cdd - (h - a) * e3j.x2
     F = m * (Gdd + g * np.stack((0 * Gdd[0], 0 * Gdd[0], 1.0 + 0 * Gdd[0])))
     # frame angular velocity and its rate (first-order jets: value, rate)
-    e3d = _Jet(e3j.x1, e3j.x2, 0 * e3j.x2)                       # de3/dt as a jet
+    e3d = _Jet(e3j.x1, e3j.x2)                                    # de3/dt as a (first-order) jet
+    h1j, e3j = _Jet(h1j.x0, h1j.x1), _Jet(e3j.x0, e3j.x1)         # first order from here on
     e2j = _jcross(e3j, h1j)
-    Wj = _Jet(W_ + 0 * Wd, Wd, 0 * Wd)
+    Wj = _Jet(W_, Wd)
     psi = -_jdot(e3d, e2j)
     w1 = _jdot(Wj, h1j)
     omf = Wj - h1j * w1 + h1j * psi
