@@ -116,7 +116,7 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
 
 
 def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None, height=None,
-         only=None, stability: bool = True) -> Table:
+         only=None, stability: bool = True, vertical: bool = False, v_top=None) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -149,6 +149,10 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     only : status or list of statuses to keep.
     stability : bool
         Fill the stability columns (see ``stability_method``).
+    vertical, v_top : bool, float or array_like
+        A vertical loop instead (docs/machine.md sec. 10): theta is the cone
+        angle (90 = a great circle), ``v_top`` the centre of mass's speed at
+        the top [m/s]; columns :data:`LOOP_COLUMNS`.
 
     Returns
     -------
@@ -172,6 +176,13 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     """
     m = as_machine(machine)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    if checked_flag("vertical", vertical):
+        if alpha is not None or speed is not None or height is not None:
+            raise ParameterError("a vertical loop takes theta and v_top (not alpha, speed or height)", "v_top")
+        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g)
+        return table if keep is None else table[np.isin(table["status"], keep)]
+    if v_top is not None:
+        raise ParameterError("v_top is for a vertical loop: pass vertical=True", "v_top")
     if (theta is None) == (height is None):
         raise ParameterError("give exactly one of theta and height (the contact's height above the floor)", "theta",
                              missing=theta is None)
@@ -292,3 +303,33 @@ def ride_summary(table: Table) -> Table:
         del speeds
     cols = {c: np.array(v, dtype=object if c == "limits" else float) for c, v in rows.items()}
     return Table(cols)
+
+
+#: The columns of ``deathsphere ride --vertical``.
+LOOP_COLUMNS = ("input_row", "machine", "theta_deg", "r_m", "g_m_s2", "v_top_m_s", "status", "reason",
+                "v_top_min_m_s", "v_bottom_m_s", "omega_top_rad_s", "omega_bottom_rad_s", "com_loop_radius_m",
+                "load_top_g", "load_bottom_g", "head_clearance_m")
+
+
+def _loop(theta, v_top, m: Machine, r, g) -> Table:
+    """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M23)."""
+    from deathsphere.physics.machine import vertical_loop
+
+    if theta is None or v_top is None:
+        raise ParameterError("a vertical loop needs theta (its cone angle) and v_top", "v_top", missing=True)
+    checked = {name: checked_array(name, v) for name, v in
+               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g))}
+    shape, flat = broadcast_flat(checked)
+    n = math.prod(shape)
+    th = np.radians(flat["theta"])
+    res = vertical_loop(th, flat["v_top"], flat["r"], flat["g"], m.mass, m.h, m.a, m.t, m.inertia[1],
+                        m.spin_inertia, m.head)
+    res = {k: np.asarray(v).reshape(-1) for k, v in res.items()}
+    cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),
+            "theta_deg": flat["theta"], "r_m": flat["r"], "g_m_s2": flat["g"], "v_top_m_s": flat["v_top"],
+            "status": STATUS_LABELS[res["status"]], "reason": REASON_TEXT[res["reason"]],
+            "v_top_min_m_s": res["v_top_min"], "v_bottom_m_s": res["v_bottom"], "omega_top_rad_s": res["omega_top"],
+            "omega_bottom_rad_s": res["omega_bottom"], "com_loop_radius_m": res["r_g"],
+            "load_top_g": res["load_top"], "load_bottom_g": res["load_bottom"],
+            "head_clearance_m": res["head_clearance"]}
+    return Table({c: cols[c] for c in LOOP_COLUMNS}, shape=shape)

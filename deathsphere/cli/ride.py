@@ -70,6 +70,10 @@ def _axis(name: str, values):
 @param_option("mu")
 @param_option("max_g", help="Largest load_g (|contact force| / (m g), what the rider feels); an orbit over "
               "it has status over_g.")
+@click.option("--vertical", is_flag=True, default=False,
+              help="A vertical loop instead: --theta is its cone angle (90 = a great circle), --v-top the "
+                   "speed of the centre of mass at the top.")
+@param_option("v_top", multiple=True, help="Vertical loop: speed of the centre of mass at the top, >= 0.")
 @click.option("--summary", is_flag=True, default=False,
               help="The rider's table: per height (or theta), the speeds that are ok with lean, load, "
                    "friction and head clearance.")
@@ -78,7 +82,7 @@ def _axis(name: str, values):
 @output_options()
 def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
                  roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
-                 summary, only, stability, fmt):
+                 vertical, v_top, summary, only, stability, fmt):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
     Every combination of the --theta (or --height) and --alpha (or --speed)
@@ -95,6 +99,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 30:70:5km/h \\
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
+      deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
     """
     name = (machine or "stunt125").lower()
     chosen = api.machine_file(machine_file, base=name) if machine_file else api.PRESETS[name]
@@ -102,6 +107,14 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                  "roll_inertia": roll_inertia, "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia,
                  "spin_inertia": spin_inertia, "head_height": head_height}
     chosen = chosen.with_overrides(**overrides)
+    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g)) if v is not None}
+    if vertical:
+        if not theta or not v_top or height or alpha or speed or summary:
+            raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
+        table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
+                         machine=chosen, only=only or None, **setup)
+        emit([table], choose_format(fmt), f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)")
+        return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
     if not theta and not height:

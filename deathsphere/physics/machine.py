@@ -38,7 +38,7 @@ from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 from deathsphere.physics.trig_roots import evaluate_rows, roots_in
 
-__all__ = ["ride_orbit", "speed_polynomial", "solve_alpha_for_speed", "fit_window", "ROOT_MATCH_RTOL"]
+__all__ = ["vertical_loop", "ride_orbit", "speed_polynomial", "solve_alpha_for_speed", "fit_window", "ROOT_MATCH_RTOL"]
 
 #: A root of the speed polynomial (eq. M12) is kept only where the forward
 #: model gives the target speed back to this relative tolerance (as
@@ -248,3 +248,62 @@ def solve_alpha_for_speed(theta, speed, r, g, mass, h, a, t, inertia_pitch, iner
 def polynomial_values(coef, alpha):
     """Values of coefficient rows (n, 2N+1) at alpha (n, m) (a check)."""
     return evaluate_rows(coef, alpha)
+
+
+# ---------------------------------------------------------------------------
+# vertical loops (docs/machine.md sec. 10, eqs. M21-M23)
+# ---------------------------------------------------------------------------
+
+def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head):
+    """A machine looping in the vertical plane at distance r cos(theta) from
+    the sphere's centre, its up-axis towards the loop's centre (docs/machine.md
+    sec. 10).  Loop radius rho = r sin(theta), centre-of-mass radius
+    r_G = rho - h, the wheels' spin s = -phidot rho / a relative to the frame;
+    energy (M21): (1/2) M phidot^2 + m g r_G cos(phi) = const with
+    M = m r_G^2 + I_pitch + J (rho^2 - 2 rho a) / a^2; contact at the top
+    (M22): v_top^2 >= g r_G; at the bottom (M23) phidot_b^2 = phidot_t^2 +
+    4 m g r_G / M and the load is phidot_b^2 r_G / g + 1.  A knife edge (t = 0)
+    stays in any loop's plane; a round tyre only on a great circle (theta =
+    90 deg).  ``v_top`` is the centre of mass's speed at the top.
+
+    Returns dict of arrays: ``r_g``, ``v_top_min``, ``v_bottom``,
+    ``omega_top``, ``omega_bottom``, ``load_top``, ``load_bottom``,
+    ``head_clearance`` (r - |head point| at the top), ``status``, ``reason``.
+    """
+    theta, v_top, r, g, mass, h, a, t, ip, js, head = (
+        np.asarray(x, dtype=float) for x in (theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head))
+    st, ct = np.sin(theta), np.cos(theta)
+    rho = r * st
+    r_g = rho - h
+    small = ~((rho > a) & (r_g > 0))
+    off_plane = (t > 0) & (np.abs(ct) > SINGULAR)
+    safe = np.where(small, 1.0, r_g)
+    meff = mass * safe * safe + ip + js * (rho * rho - 2 * rho * a) / (a * a)
+    om_t = v_top / safe
+    om_b2 = om_t * om_t + 4 * mass * g * safe / meff
+    with np.errstate(invalid="ignore"):
+        v_min = np.sqrt(g * safe)
+    hx = np.abs(rho - head)                       # the head point in the plane, distance from the loop's centre
+    clearance = r - np.sqrt(hx * hx + (r * ct) ** 2)
+    status, reason = first_failure([
+        (small, Status.NO_FIT, Reason.LOOP_TOO_SMALL),
+        (off_plane, Status.NO_ORBIT, Reason.LOOP_ROUND_TYRE_OFF_PLANE),
+        (~(clearance > 0), Status.NO_FIT, Reason.HEAD_HITS),
+        (v_top < v_min * (1 - 1e-12), Status.NO_CONTACT, Reason.LOOP_TOP_TOO_SLOW),
+    ])
+    bad = small | off_plane
+    nan = np.nan
+    out = {
+        "r_g": np.where(small, nan, r_g),
+        "v_top_min": np.where(bad, nan, v_min),
+        "v_bottom": np.where(bad, nan, np.sqrt(om_b2) * safe),
+        "omega_top": np.where(bad, nan, om_t),
+        "omega_bottom": np.where(bad, nan, np.sqrt(om_b2)),
+        "load_top": np.where(bad, nan, np.abs(om_t * om_t * safe - g) / g),
+        "load_bottom": np.where(bad, nan, om_b2 * safe / g + 1.0),
+        "head_clearance": clearance,
+        "status": status,
+        "reason": reason,
+    }
+    shape = status.shape
+    return {k: (v if v.shape == shape else np.broadcast_to(v, shape)) for k, v in out.items()}

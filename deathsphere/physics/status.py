@@ -64,6 +64,9 @@ class Reason(IntEnum):
     MACHINE_NO_CONTACT = 31
     MACHINE_OVER_G = 32
     MACHINE_NO_ALPHA = 33
+    LOOP_TOO_SMALL = 34
+    LOOP_ROUND_TYRE_OFF_PLANE = 35
+    LOOP_TOP_TOO_SLOW = 36
 
 
 REASONS = {
@@ -101,6 +104,9 @@ REASONS = {
     Reason.MACHINE_NO_CONTACT: "contact force pulls away from the wall (machine.md eq. M9 needs r_G Omega^2 sin(theta) > g cos(theta))",
     Reason.MACHINE_OVER_G: "the load load_g (machine.md eq. M11) exceeds the largest given (max_g)",
     Reason.MACHINE_NO_ALPHA: "no tilt alpha at which the wheel fits gives this speed (machine.md eq. M12 has no root)",
+    Reason.LOOP_TOO_SMALL: "the loop is too small for the machine (machine.md sec. 10 needs r sin(theta) > a and > h)",
+    Reason.LOOP_ROUND_TYRE_OFF_PLANE: "a round tyre off a great circle touches the sphere t cos(theta) out of the loop's plane: the machine cannot stay in the plane (it must lean and steer; machine.md sec. 10)",
+    Reason.LOOP_TOP_TOO_SLOW: "the machine leaves the wall at the top of the loop (machine.md eq. M22 needs v_top^2 >= g r_G)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -59,3 +59,13 @@ def test_machines_lists_the_presets(run):
                              "roll_inertia_kg_m2", "pitch_inertia_kg_m2", "yaw_inertia_kg_m2", "spin_inertia_kg_m2",
                              "head_height_m", "source"]
     assert all(r["source"] for r in rows)
+
+
+def test_vertical_loops(run):
+    res = run("ride", "--vertical", "--theta", "90", "--v-top", "20:40:10km/h", "--diameter", "16ft",
+              "--format", "csv")
+    rows = _rows(res.stdout)
+    assert res.exit_code == 0 and [r["status"] for r in rows] == ["ok", "ok", "ok"]
+    assert float(rows[0]["v_top_min_m_s"]) == pytest.approx((9.80665 * (2.4384 - 0.8)) ** 0.5)
+    bad = run("ride", "--vertical", "--theta", "90", "--v-top", "5", "--alpha", "10")
+    assert bad.exit_code == 2

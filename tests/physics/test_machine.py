@@ -250,3 +250,42 @@ def test_singular_inputs_give_statuses_not_warnings():
     # ... and on the axis at the very bottom both sides of eq. M8 vanish
     assert (res["status"][1, 2], res["reason"][1, 2]) == (Status.NO_ORBIT, Reason.MACHINE_ZERO_DENOMINATOR)
     assert res["status"][2, 2] == Status.NO_FIT
+
+
+# ---------------------------------------------------------------------------
+# vertical loops (docs/machine.md sec. 10)
+
+def test_the_papers_wheel_loops_like_vertical():
+    from deathsphere.api import vertical
+    from deathsphere.physics.machine import vertical_loop
+
+    a, r, k, m = 0.3, 3.0, 0.5, 2.0
+    i = k * m * a * a
+    theta = [90.0, 60.0, 45.0, 120.0]
+    res = vertical_loop(np.radians(theta), 6.0, r, G, m, a, a, 0.0, 2 * i, 2 * i, a)
+    ref = vertical(theta, v_top=6.0, r=r, stability=False)
+    np.testing.assert_allclose(res["v_top_min"], ref["v_top_min_m_s"], rtol=1e-13)
+    np.testing.assert_allclose(res["v_bottom"], ref["v_bottom_m_s"], rtol=1e-13)
+    # the contact force is in the loop's plane; its part along the sphere's normal is the wheel's
+    np.testing.assert_allclose(res["load_bottom"] * np.sin(np.radians(theta)) * G,
+                               ref["normal_bottom_per_mass_m_s2"], rtol=1e-12)
+
+
+def test_a_point_mass_loops_with_v_top_squared_g_r_minus_h():
+    """The task's limit: a point mass on massless wheels needs v^2 >= g (r - h)
+    at the top of a great circle; energy alone gives v_b^2 = v_t^2 + 4 g (r - h)."""
+    from deathsphere.physics.machine import vertical_loop
+
+    r, h = 2.4384, 0.8
+    res = vertical_loop(np.pi / 2, [4.0, 6.0], r, G, 100.0, h, 0.3, 0.0, 0.0, 0.0, 1.6)
+    assert res["v_top_min"][0] == pytest.approx(np.sqrt(G * (r - h)), rel=1e-14)
+    np.testing.assert_allclose(res["v_bottom"], np.sqrt(np.array([16.0, 36.0]) + 4 * G * (r - h)), rtol=1e-14)
+    assert res["status"].tolist() == [Status.NO_CONTACT, Status.OK]
+
+
+def test_a_round_tyre_only_loops_on_a_great_circle():
+    from deathsphere.physics.machine import vertical_loop
+
+    res = vertical_loop(np.radians([90.0, 70.0]), 8.0, 2.45, G, 165.0, 0.8, 0.3, 0.045, 40.0, 0.8, 1.65)
+    assert res["status"].tolist() == [Status.OK, Status.NO_ORBIT]
+    assert res["reason"][1] == Reason.LOOP_ROUND_TYRE_OFF_PLANE
