@@ -40,6 +40,8 @@ _HOME = {
     "vertical": "api",
     "vertical_input": "api",
     "vertical_sweep": "api",
+    "ride": "api",
+    "Machine": "api",
     "Setup": "model",
     "Table": "model",
     "ParameterError": "params",

@@ -111,8 +111,8 @@ class Param:
         return "unlimited" if math.isinf(self.default) else f"{self.default:g}"
 
 
-def _length(name, what, symbol, **more):
-    return Param(name, "m", what, TINY, HUGE, symbol=symbol, kind="length", metavar="M", **more)
+def _length(name, what, symbol, lo=TINY, **more):
+    return Param(name, "m", what, lo, HUGE, symbol=symbol, kind="length", metavar="M", **more)
 
 
 #: Every parameter, by name.  Angles are in degrees, as on the command line.
@@ -174,6 +174,30 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
           help="Absolute tolerance per scaled component, 1e-16..1."),
     Param("max_steps", "", "step budget", 1, 1e15, integer=True, metavar="N", default=1_000_000,
           help="Refuse, before it starts, a run estimated to need more integration steps."),
+    # the machine of `deathsphere ride` (docs/machine.md): a motorcycle and rider as one gyrostat
+    Param("mass", "kg", "machine mass", TINY, HUGE, symbol="m", metavar="KG",
+          help="Ride: total mass of machine, rider and wheels."),
+    _length("com_height", "centre-of-mass height", "h", lo=0.0,
+            help="Ride: height of the centre of mass above the contact along the up-axis (upright on flat "
+                 "ground)."),
+    _length("tyre_radius", "tyre crown radius", "t", lo=0.0,
+            help="Ride: radius of the tyre's round crown (0: a knife-edge wheel); less than the wheel radius."),
+    Param("roll_inertia", "kg m^2", "roll inertia", 0.0, HUGE, symbol="I_roll", metavar="KG_M2",
+          help="Ride: moment of inertia of the whole machine, wheels locked, about the direction of travel "
+               "through its centre of mass."),
+    Param("pitch_inertia", "kg m^2", "pitch inertia", 0.0, HUGE, symbol="I_pitch", metavar="KG_M2",
+          help="Ride: moment of inertia of the whole machine, wheels locked, about the axle direction "
+               "through its centre of mass."),
+    Param("yaw_inertia", "kg m^2", "yaw inertia", 0.0, HUGE, symbol="I_yaw", metavar="KG_M2",
+          help="Ride: moment of inertia of the whole machine, wheels locked, about the up-axis through its "
+               "centre of mass."),
+    Param("spin_inertia", "kg m^2", "wheels' spin inertia", 0.0, HUGE, symbol="J", metavar="KG_M2",
+          help="Ride: sum of the wheels' polar moments of inertia about their axles."),
+    _length("head_height", "head height", "head", lo=0.0,
+            help="Ride: height of the top of the rider's head above the contact along the up-axis."),
+    _length("height", "contact height", "z", lo=0.0,
+            help="Ride: height of the contact point above the globe's floor instead of --theta (0 .. the "
+                 "diameter)."),
     Param("jobs", "", "processes", 1, 256, integer=True, metavar="N", default=1,
           help="Processes working in parallel; the output is the same as with one."),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True, metavar="N",

@@ -5,6 +5,7 @@ from deathsphere.cli import (  # noqa: F401  (register the commands)
     map_limits,
     orbit,
     paper,
+    ride,
     simulate,
     stability,
     vertical,

@@ -56,6 +56,17 @@ class Reason(IntEnum):
     PARTICLE_OUTSIDE_BELOW_EQUATOR = 23
     NO_ALPHA_FOR_RATE = 24
     OVER_G = 25
+    MACHINE_NO_FIT = 26
+    HEAD_HITS = 27
+    MACHINE_ZERO_DENOMINATOR = 28
+    MACHINE_OMEGA_ZERO = 29
+    MACHINE_OMEGA_IMAGINARY = 30
+    MACHINE_NO_CONTACT = 31
+    MACHINE_OVER_G = 32
+    MACHINE_NO_ALPHA = 33
+    LOOP_TOO_SMALL = 34
+    LOOP_ROUND_TYRE_OFF_PLANE = 35
+    LOOP_TOP_TOO_SLOW = 36
 
 
 REASONS = {
@@ -85,6 +96,17 @@ REASONS = {
     Reason.PARTICLE_OUTSIDE_BELOW_EQUATOR: "outside the sphere below the equator the normal force would have to pull (N/m = g/cos(theta) < 0)",
     Reason.NO_ALPHA_FOR_RATE: "no tilt alpha in the fit range gives this speed or rate (eq. 29 has no root)",
     Reason.OVER_G: "the g-load accel_g (eq. 36) exceeds the largest given (max_accel_g)",
+    Reason.MACHINE_NO_FIT: "the wheel does not fit inside the sphere at this tilt (machine.md eq. M10 needs sin(theta - alpha) > (a - t)/(r - t))",
+    Reason.HEAD_HITS: "the rider's head reaches the globe at this tilt (head_clearance_m <= 0)",
+    Reason.MACHINE_ZERO_DENOMINATOR: "the denominator of machine.md eq. M8 vanishes: no steady orbit at this tilt",
+    Reason.MACHINE_OMEGA_ZERO: "Omega^2 = 0 (machine.md eq. M8): the centre of mass is straight above the contact; the machine balances at rest",
+    Reason.MACHINE_OMEGA_IMAGINARY: "Omega^2 < 0 (machine.md eq. M8): no real rotation rate at this tilt",
+    Reason.MACHINE_NO_CONTACT: "contact force pulls away from the wall (machine.md eq. M9 needs r_G Omega^2 sin(theta) > g cos(theta))",
+    Reason.MACHINE_OVER_G: "the load load_g (machine.md eq. M11) exceeds the largest given (max_g)",
+    Reason.MACHINE_NO_ALPHA: "no tilt alpha at which the wheel fits gives this speed (machine.md eq. M12 has no root)",
+    Reason.LOOP_TOO_SMALL: "the loop is too small for the machine (machine.md sec. 10 needs r sin(theta) > a and > h)",
+    Reason.LOOP_ROUND_TYRE_OFF_PLANE: "a round tyre off a great circle touches the sphere t cos(theta) out of the loop's plane: the machine cannot stay in the plane (it must lean and steer; machine.md sec. 10)",
+    Reason.LOOP_TOP_TOO_SLOW: "the machine leaves the wall at the top of the loop (machine.md eq. M22 needs v_top^2 >= g r_G)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -1,0 +1,335 @@
+"""Steady horizontal orbits of a machine (a motorcycle and rider) inside the
+globe: ``deathsphere ride`` (docs/machine.md; beyond the paper, which it
+contains as the machine ``paper-wheel``)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from deathsphere.api.arguments import (
+    INF,
+    G,
+    R,
+    broadcast_flat,
+    checked_array,
+    checked_flag,
+    checked_statuses,
+    sphere_radius,
+)
+from deathsphere.api.machines import Machine, as_machine
+from deathsphere.params import ParameterError
+from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
+from deathsphere.table import Table
+
+#: Orbits evaluated per piece (temporaries stay in cache, as the wheel's).
+CHUNK = 1 << 14
+#: Orbits per batch of the stability analysis: small, so that its temporaries
+#: (~10 kB an orbit) stay in cache (measured fastest of 128..4096).
+STABILITY_CHUNK = 512
+#: Rows one call may return (about 1 GiB at ~500 bytes a row).
+MAX_RIDE_ROWS = 2_000_000
+
+#: The columns of ``deathsphere ride``, in order.
+RIDE_COLUMNS = (
+    "input_row", "machine", "theta_deg", "alpha_deg", "lean_deg", "r_m", "height_m", "g_m_s2", "mu_available",
+    "max_g", "status", "reason", "omega_rad_s", "period_s", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s",
+    "wheel_spin_rad_s", "com_orbit_radius_m", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
+    "load_g", "head_clearance_m", "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s",
+    "freq_fast_rad_s",
+)
+
+#: What the stability columns say on every analysed row (docs/machine.md sec. 5).
+STABILITY_METHOD = ("exact linearisation of the machine with its steering locked (docs/machine.md sec. 5): "
+                    "an unsteered machine is unstable on most orbits; a rider steers")
+
+_PHYS = {"omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s", "v_contact": "v_contact_m_s",
+         "spin": "wheel_spin_rad_s", "r_g": "com_orbit_radius_m", "normal": "normal_per_mass_m_s2",
+         "friction": "friction_per_mass_m_s2", "mu_required": "mu_required", "load_g": "load_g",
+         "head_clearance": "head_clearance_m"}
+
+
+def _machine_args(m: Machine):
+    return dict(mass=m.mass, h=m.h, a=m.a, t=m.t, inertia_pitch=m.inertia[1], inertia_yaw=m.inertia[2],
+                spin_inertia=m.spin_inertia)
+
+
+def _evaluate(theta, alpha, r, g, mu, max_g, m: Machine) -> dict:
+    """ride_orbit over flat arrays, piece by piece; scalars stay scalars."""
+    n = theta.size
+    margs = _machine_args(m)
+    pieces = []
+    uniform = [x if x.size == 1 else None for x in (r, g, mu, max_g)]
+    for start in range(0, n, CHUNK):
+        sl = slice(start, start + CHUNK)
+        rr, gg, mm, xg = ((float(u[0]) if u is not None else x[sl]) for u, x in zip(uniform, (r, g, mu, max_g)))
+        pieces.append(ride_orbit(theta[sl], alpha[sl], rr, gg, head=m.head, mu=mm, max_g=xg, **margs))
+    if len(pieces) == 1:
+        return {k: np.asarray(v).reshape(-1) for k, v in pieces[0].items()}
+    return {k: np.concatenate([np.asarray(p[k]).reshape(-1) for p in pieces]) for k in pieces[0]}
+
+
+def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability: bool, shape=None) -> Table:
+    n = theta.size
+    status = res["status"]
+    cols = {
+        "input_row": req_index + 1,
+        "machine": np.full(n, m.name, dtype=object),
+        "theta_deg": np.degrees(theta),
+        "alpha_deg": np.degrees(alpha),
+        "lean_deg": 90.0 - np.degrees(alpha),
+        "r_m": np.broadcast_to(r, (n,)),
+        "height_m": res["height"],
+        "g_m_s2": np.broadcast_to(g, (n,)),
+        "mu_available": np.broadcast_to(mu, (n,)),
+        "max_g": np.broadcast_to(max_g, (n,)),
+        "status": STATUS_LABELS[status],
+        "reason": REASON_TEXT[res["reason"]],
+    }
+    for key, col in _PHYS.items():
+        cols[col] = res[key]
+        if key == "v_cm":
+            cols["v_cm_km_h"] = res[key] * 3.6
+    has_orbit = (status == Status.OK) | (status == Status.SLIPS) | (status == Status.OVER_G)
+    blank = np.full(n, "", dtype=object)
+    cols["stability"], cols["stability_method"] = blank, blank.copy()
+    for key in ("growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s"):
+        cols[key] = np.full(n, np.nan)
+    rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
+    if rows.size:
+        from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
+        from deathsphere.physics.stability.verdict import VERDICT_LABELS
+
+        rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
+        for start in range(0, rows.size, STABILITY_CHUNK):
+            idx = rows[start:start + STABILITY_CHUNK]
+            p = MachineParams(m.a, m.t, rr[idx], m.h, gg[idx], m.mass, *m.inertia, m.spin_inertia)
+            st = machine_stability(theta[idx], alpha[idx], p)
+            cols["stability"][idx] = VERDICT_LABELS[st["verdict"]]
+            cols["stability_method"][idx] = STABILITY_METHOD
+            cols["growth_rate_1_s"][idx] = st["growth_rate"]
+            cols["freq_slow_rad_s"][idx] = st["freq_slow"]
+            cols["freq_fast_rad_s"][idx] = st["freq_fast"]
+    return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape)
+
+
+def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None, height=None,
+         only=None, stability: bool = True, vertical: bool = False, v_top=None) -> Table:
+    """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
+
+    Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
+    gyrostat (motorcycle and rider, wheels spinning) rolling without
+    slipping on the inside of a sphere.  All numeric arguments broadcast
+    like numpy arrays, as in :func:`deathsphere.orbit`.
+
+    Parameters
+    ----------
+    theta : float or array_like
+        Polar angle of the contact point from the upward vertical [deg]
+        (180 = the floor, 90 = the equator); or give ``height``.
+    alpha : float or array_like
+        Tilt of the machine's up-axis above the orbit plane [deg] (the
+        paper's alpha for its wheel; lean from the vertical = 90 - alpha).
+        Give exactly one of ``alpha`` and ``speed``.
+    machine : Machine or str
+        A :class:`deathsphere.Machine` or a preset's name
+        (``deathsphere.api.machines.PRESETS``).
+    r, diameter : sphere radius or diameter [m] (one of them).
+    g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
+        (|contact force| / (m g), what the rider feels) allowed.
+    speed : float or array_like
+        Speed of the centre of mass [m/s]; every tilt in the range where the
+        wheel fits that gives it, one row each (``input_row`` shared); a
+        speed no tilt gives is one ``no_orbit`` row.
+    height : float or array_like
+        Height of the contact point above the globe's floor [m] instead of
+        theta: theta = arccos(height / r - 1).
+    only : status or list of statuses to keep.
+    stability : bool
+        Fill the stability columns (see ``stability_method``).
+    vertical, v_top : bool, float or array_like
+        A vertical loop instead (docs/machine.md sec. 10): theta is the cone
+        angle (90 = a great circle), ``v_top`` the centre of mass's speed at
+        the top [m/s]; columns :data:`LOOP_COLUMNS`.
+
+    Returns
+    -------
+    Table
+        Columns :data:`RIDE_COLUMNS`; with ``alpha`` its shape is the
+        broadcast shape, with ``speed`` it is flat.
+
+    Raises
+    ------
+    ParameterError
+        A value outside its set, a bad machine, theta and height (or alpha
+        and speed) both or neither given, a height above the globe's top, a
+        wheel that does not fit in the sphere.
+
+    Examples
+    --------
+    >>> import deathsphere
+    >>> t = deathsphere.ride(90, 15, machine="stunt125", diameter="16ft")
+    >>> str(t["status"]), round(float(t["v_cm_km_h"]), 1), round(float(t["load_g"]), 2)
+    ('ok', 29.9, 4.34)
+    """
+    m = as_machine(machine)
+    stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    if checked_flag("vertical", vertical):
+        if alpha is not None or speed is not None or height is not None:
+            raise ParameterError("a vertical loop takes theta and v_top (not alpha, speed or height)", "v_top")
+        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g)
+        return table if keep is None else table[np.isin(table["status"], keep)]
+    if v_top is not None:
+        raise ParameterError("v_top is for a vertical loop: pass vertical=True", "v_top")
+    if (theta is None) == (height is None):
+        raise ParameterError("give exactly one of theta and height (the contact's height above the floor)", "theta",
+                             missing=theta is None)
+    if (alpha is None) == (speed is None):
+        raise ParameterError("give exactly one of alpha and speed", "alpha", missing=alpha is None)
+    r = sphere_radius(r, diameter)
+    given = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "r": r, "g": g, "mu": mu,
+             "max_g": max_g}
+    checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    shape, flat = broadcast_flat(checked)
+    n = math.prod(shape)
+    if n > MAX_RIDE_ROWS:
+        raise ParameterError(f"ride evaluates at most {MAX_RIDE_ROWS} orbits at once (got {n}, shape {shape}): "
+                             "split the grid")
+    rr = flat["r"]
+    if np.any(rr <= m.a):
+        raise ParameterError(f"the wheel (a = {m.a:g} m) does not fit in a sphere of radius {float(rr.min()):g} m "
+                             "(needs r > a)", "r")
+    if height is not None:
+        hh = flat["height"]
+        if np.any(hh > 2 * rr):
+            i = int(np.argmax(hh > 2 * rr))
+            raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * rr[i]:g} m "
+                                 f"(got {hh[i]:g})", "height")
+        th = np.arccos(np.clip(hh / rr - 1.0, -1.0, 1.0))
+    else:
+        th = np.radians(flat["theta"])
+    g_, mu_, xg = flat["g"], flat["mu"], flat["max_g"]
+    if alpha is not None:
+        al = np.radians(_reduced(flat["alpha"]))
+        res = _evaluate(th, al, rr, g_, mu_, xg, m)
+        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape)
+    else:
+        table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability)
+    if keep is not None:
+        return table[np.isin(table["status"], keep)]
+    return table
+
+
+def _reduced(deg):
+    return 180.0 - np.mod(180.0 - deg, 360.0)
+
+
+def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool) -> Table:
+    """One row per tilt giving each speed (eq. M12), a no_orbit row where none does."""
+    n = th.size
+    margs = _machine_args(m)
+    parts = []
+    for start in range(0, n, CHUNK):
+        sl = slice(start, start + CHUNK)
+        roots = solve_alpha_for_speed(th[sl], v[sl], r[sl], g[sl], **{k: np.full(th[sl].size, x)
+                                                                      for k, x in margs.items()})
+        parts.append(roots)
+    width = max(1, max(p.shape[1] for p in parts))
+    roots = np.concatenate([np.pad(p, ((0, 0), (0, width - p.shape[1])), constant_values=np.nan) for p in parts])
+    found = np.isfinite(roots)
+    count = found.sum(axis=1)
+    reps = np.maximum(count, 1)
+    req = np.repeat(np.arange(n), reps)
+    # the roots of each request in order, or NaN (none)
+    order = np.argsort(~found, axis=1, kind="stable")
+    roots = np.take_along_axis(roots, order, axis=1)
+    slot = np.arange(req.size) - np.repeat(np.cumsum(reps) - reps, reps)
+    al = roots[req, slot]
+    none = ~np.isfinite(al)
+    res = _evaluate(th[req], np.where(none, 0.0, al), r[req], g[req], mu[req], max_g[req], m)
+    if none.any():
+        res = {k: np.array(val) for k, val in res.items()}
+        for key, val in res.items():
+            if key == "status":
+                val[none] = Status.NO_ORBIT
+            elif key == "reason":
+                val[none] = Reason.MACHINE_NO_ALPHA
+            elif key != "height":
+                val[none] = np.nan
+    return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability)
+
+
+#: Columns of the rider's table (:func:`ride_summary`).
+SUMMARY_COLUMNS = ("height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_min_km_h", "v_max_km_h",
+                   "lean_min_deg", "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m",
+                   "limits")
+
+
+def ride_summary(table: Table) -> Table:
+    """The rider's question answered per height (one row per contact
+    height of a ``ride`` table given speeds): the speeds that are ``ok``
+    (feasible with the friction and g limit given), and over them the lean
+    from the vertical, the load, the friction needed and the least head
+    clearance; ``limits`` names what stops the other speeds."""
+    height = np.round(np.asarray(table["height_m"], dtype=float), 9)
+    rows = {c: [] for c in SUMMARY_COLUMNS}
+    for hv in np.unique(height):
+        sel = height == hv
+        status = np.asarray(table["status"])[sel]
+        ok = status == "ok"
+        speeds = np.asarray(table["v_cm_km_h"])[sel]
+        req = np.asarray(table["input_row"])[sel]
+        rows["height_m"].append(float(hv))
+        rows["theta_deg"].append(float(np.asarray(table["theta_deg"])[sel][0]))
+        rows["speeds_tried"].append(float(np.unique(req).size))
+        rows["speeds_ok"].append(float(np.unique(req[ok]).size))
+
+        def span(col, fn, mask=ok):
+            vals = np.asarray(table[col], dtype=float)[sel][mask]
+            return float(fn(vals)) if vals.size else math.nan
+
+        rows["v_min_km_h"].append(span("v_cm_km_h", np.min))
+        rows["v_max_km_h"].append(span("v_cm_km_h", np.max))
+        rows["lean_min_deg"].append(span("lean_deg", np.min))
+        rows["lean_max_deg"].append(span("lean_deg", np.max))
+        rows["load_min_g"].append(span("load_g", np.min))
+        rows["load_max_g"].append(span("load_g", np.max))
+        rows["mu_max"].append(span("mu_required", np.max))
+        rows["head_clearance_min_m"].append(span("head_clearance_m", np.min))
+        failed = sorted(set(status[~ok].tolist()))
+        rows["limits"].append(" ".join(failed) if failed else "")
+        del speeds
+    cols = {c: np.array(v, dtype=object if c == "limits" else float) for c, v in rows.items()}
+    return Table(cols)
+
+
+#: The columns of ``deathsphere ride --vertical``.
+LOOP_COLUMNS = ("input_row", "machine", "theta_deg", "r_m", "g_m_s2", "v_top_m_s", "status", "reason",
+                "v_top_min_m_s", "v_bottom_m_s", "omega_top_rad_s", "omega_bottom_rad_s", "com_loop_radius_m",
+                "load_top_g", "load_bottom_g", "head_clearance_m")
+
+
+def _loop(theta, v_top, m: Machine, r, g) -> Table:
+    """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M23)."""
+    from deathsphere.physics.machine import vertical_loop
+
+    if theta is None or v_top is None:
+        raise ParameterError("a vertical loop needs theta (its cone angle) and v_top", "v_top", missing=True)
+    checked = {name: checked_array(name, v) for name, v in
+               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g))}
+    shape, flat = broadcast_flat(checked)
+    n = math.prod(shape)
+    th = np.radians(flat["theta"])
+    res = vertical_loop(th, flat["v_top"], flat["r"], flat["g"], m.mass, m.h, m.a, m.t, m.inertia[1],
+                        m.spin_inertia, m.head)
+    res = {k: np.asarray(v).reshape(-1) for k, v in res.items()}
+    cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),
+            "theta_deg": flat["theta"], "r_m": flat["r"], "g_m_s2": flat["g"], "v_top_m_s": flat["v_top"],
+            "status": STATUS_LABELS[res["status"]], "reason": REASON_TEXT[res["reason"]],
+            "v_top_min_m_s": res["v_top_min"], "v_bottom_m_s": res["v_bottom"], "omega_top_rad_s": res["omega_top"],
+            "omega_bottom_rad_s": res["omega_bottom"], "com_loop_radius_m": res["r_g"],
+            "load_top_g": res["load_top"], "load_bottom_g": res["load_bottom"],
+            "head_clearance_m": res["head_clearance"]}
+    return Table({c: cols[c] for c in LOOP_COLUMNS}, shape=shape)

@@ -1,0 +1,153 @@
+"""``deathsphere ride`` and ``deathsphere machines``: a motorcycle and rider
+(a machine) on steady horizontal orbits inside the globe
+(:func:`deathsphere.api.ride`, docs/machine.md)."""
+
+from __future__ import annotations
+
+import click
+import numpy as np
+
+from deathsphere import api
+from deathsphere.cli.base import choose_format, cli, emit
+from deathsphere.cli.options import (
+    UNIT_HINTS,
+    only_option,
+    output_options,
+    param_option,
+    single,
+    stability_option,
+)
+from deathsphere.params import PARAMS
+
+#: The machine's overrides: registry parameter -> option flag.
+MACHINE_OPTIONS = {"mass": "--mass", "com_height": "--com-height", "a": "--wheel-radius",
+                   "tyre_radius": "--tyre-radius", "roll_inertia": "--roll-inertia",
+                   "pitch_inertia": "--pitch-inertia", "yaw_inertia": "--yaw-inertia",
+                   "spin_inertia": "--spin-inertia", "head_height": "--head-height"}
+
+
+def _machine_option(name: str, flag: str):
+    p = PARAMS[name]
+    text = p.help.removeprefix("Ride: ")
+    if name == "a":
+        text = "Wheel radius to the tyre's crown."
+    hint = UNIT_HINTS.get(p.kind)
+    text += (f" [{hint}]" if hint else f" [{p.unit}]") + " [default: the machine's]"
+    return single(flag, name, metavar=p.metavar, help=text)
+
+
+def machine_options(f):
+    for name, flag in reversed(list(MACHINE_OPTIONS.items())):
+        f = _machine_option(name, flag)(f)
+    f = single("--machine-file", "machine_file", default=None, metavar="FILE",
+               help="A machine from a TOML or CSV file (keys mass, com_height, wheel_radius, tyre_radius, "
+                    "roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, name, source; "
+                    "missing keys from --machine).")(f)
+    f = single("--machine", "machine", type=click.Choice(tuple(api.PRESETS), case_sensitive=False),
+               default=None, help="A preset machine (see 'deathsphere machines') [default: stunt125].")(f)
+    return f
+
+
+def _axis(name: str, values):
+    """The values of a repeated option (values and start:stop:step ranges,
+    with unit suffixes), as one flat array."""
+    from deathsphere.api.arguments import checked_axis
+
+    axis = checked_axis(name, list(values))
+    return axis.take(np.arange(len(axis)))
+
+
+@cli.command("ride", short_help="A motorcycle and rider on horizontal orbits: lean, speed, load, clearance.")
+@param_option("theta", multiple=True)
+@param_option("height", multiple=True)
+@param_option("alpha", multiple=True, help="Tilt of the machine's up-axis above the orbit plane (lean from "
+              "the vertical = 90 - alpha).")
+@param_option("speed", multiple=True, help="Speed of the centre of mass; every tilt giving it, one row each.")
+@machine_options
+@param_option("r")
+@param_option("diameter")
+@param_option("g")
+@param_option("mu")
+@param_option("max_g", help="Largest load_g (|contact force| / (m g), what the rider feels); an orbit over "
+              "it has status over_g.")
+@click.option("--vertical", is_flag=True, default=False,
+              help="A vertical loop instead: --theta is its cone angle (90 = a great circle), --v-top the "
+                   "speed of the centre of mass at the top.")
+@param_option("v_top", multiple=True, help="Vertical loop: speed of the centre of mass at the top, >= 0.")
+@click.option("--summary", is_flag=True, default=False,
+              help="The rider's table: per height (or theta), the speeds that are ok with lean, load, "
+                   "friction and head clearance.")
+@only_option(api.STATUSES)
+@stability_option()
+@output_options()
+def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
+                 roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
+                 vertical, v_top, summary, only, stability, fmt):
+    """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
+
+    Every combination of the --theta (or --height) and --alpha (or --speed)
+    values.  Each row: the orbit rate and period, the speed of the centre of
+    mass and of the contact, the wheels' spin, the force on the tyre (normal,
+    friction, mu needed), the load the rider feels (load_g) and the clearance
+    of the rider's head from the globe (docs/machine.md).  An unsteered
+    machine is expected to be unstable on most orbits: a rider steers.
+
+    \b
+    Examples:
+      deathsphere ride --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere ride --height 1.2m --alpha 10:30:5 --machine benchmark-bicycle
+      deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 30:70:5km/h \\
+          --mu 1 --max-g 5 --summary
+      deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
+      deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
+    """
+    name = (machine or "stunt125").lower()
+    chosen = api.machine_file(machine_file, base=name) if machine_file else api.PRESETS[name]
+    overrides = {"mass": mass, "com_height": com_height, "a": a, "tyre_radius": tyre_radius,
+                 "roll_inertia": roll_inertia, "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia,
+                 "spin_inertia": spin_inertia, "head_height": head_height}
+    chosen = chosen.with_overrides(**overrides)
+    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g)) if v is not None}
+    if vertical:
+        if not theta or not v_top or height or alpha or speed or summary:
+            raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
+        table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
+                         machine=chosen, only=only or None, **setup)
+        emit([table], choose_format(fmt), f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)")
+        return
+    if theta and height:
+        raise click.UsageError("give --theta or --height, not both")
+    if not theta and not height:
+        raise click.UsageError("give --theta or --height (the contact's height above the floor)")
+    if alpha and speed:
+        raise click.UsageError("give --alpha or --speed, not both")
+    if not alpha and not speed:
+        raise click.UsageError("give --alpha or --speed")
+    where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
+    how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
+    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))
+             if v is not None}
+    table = api.ride(**where, **how, machine=chosen, stability=stability, only=None if summary else (only or None),
+                     **setup)
+    fmt = choose_format(fmt)
+    if summary:
+        table = api.ride_summary(table)
+        title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"
+    else:
+        title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
+    emit([table], fmt, title)
+
+
+@cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")
+@output_options()
+def machines_command(fmt):
+    """The preset machines of 'deathsphere ride': mass, centre-of-mass height,
+    wheel and tyre radii, inertias, head height and where each comes from
+    (docs/machine.md sec. 7).
+
+    \b
+    Examples:
+      deathsphere machines
+      deathsphere machines --format csv
+    """
+    emit([api.machines_table()], choose_format(fmt), "Preset machines (docs/machine.md sec. 7)")

@@ -1,0 +1,71 @@
+"""``deathsphere ride`` and ``deathsphere machines`` on the command line."""
+
+import csv
+import io
+
+import pytest
+
+
+def _rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_ride_with_units_and_a_preset(run):
+    res = run("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format", "csv")
+    assert res.exit_code == 0
+    (row,) = _rows(res.stdout)
+    assert row["status"] == "ok" and float(row["v_cm_km_h"]) == pytest.approx(40.0)
+    assert float(row["r_m"]) == pytest.approx(2.4384) and row["machine"] == "stunt125"
+
+
+def test_the_riders_question_one_row_per_height(run):
+    res = run("ride", "--diameter", "16ft", "--height", "0:2.4:0.2m", "--speed", "30:70:5km/h", "--mu", "1",
+              "--max-g", "8", "--summary", "--format", "csv")
+    assert res.exit_code == 0
+    rows = _rows(res.stdout)
+    assert [round(float(r["height_m"]), 6) for r in rows] == [round(0.2 * i, 6) for i in range(13)]
+    assert all(r["speeds_tried"] == "9.0" for r in rows)
+    equator = rows[-1]
+    assert float(equator["speeds_ok"]) >= 1 and 30 <= float(equator["v_min_km_h"]) <= float(equator["v_max_km_h"])
+
+
+def test_overrides_and_machine_file(run, tmp_path):
+    path = tmp_path / "m.toml"
+    path.write_text("mass = 120\ncom_height = 0.7\n")
+    a = _rows(run("ride", "--theta", "90", "--alpha", "15", "--machine-file", str(path), "--format", "csv").stdout)
+    b = _rows(run("ride", "--theta", "90", "--alpha", "15", "--mass", "120", "--com-height", "0.7",
+                  "--format", "csv").stdout)
+    assert a[0]["omega_rad_s"] == b[0]["omega_rad_s"]
+    c = _rows(run("ride", "--theta", "90", "--alpha", "15", "--format", "csv").stdout)
+    assert c[0]["omega_rad_s"] != b[0]["omega_rad_s"]
+
+
+@pytest.mark.parametrize("args, words", [
+    (("--mass", "0"), "--mass"),
+    (("--tyre-radius", "0.35"), "less than the wheel radius"),
+    (("--roll-inertia", "100"), "triangle"),
+    (("--machine", "bus"), "--machine"),
+])
+def test_bad_machines_exit_2(run, args, words):
+    res = run("ride", "--theta", "90", "--alpha", "10", *args)
+    assert res.exit_code == 2 and words in res.output
+
+
+def test_machines_lists_the_presets(run):
+    res = run("machines", "--format", "csv")
+    rows = _rows(res.stdout)
+    assert [r["name"] for r in rows] == ["paper-wheel", "benchmark-bicycle", "stunt125"]
+    assert list(rows[0]) == ["name", "mass_kg", "com_height_m", "wheel_radius_m", "tyre_radius_m",
+                             "roll_inertia_kg_m2", "pitch_inertia_kg_m2", "yaw_inertia_kg_m2", "spin_inertia_kg_m2",
+                             "head_height_m", "source"]
+    assert all(r["source"] for r in rows)
+
+
+def test_vertical_loops(run):
+    res = run("ride", "--vertical", "--theta", "90", "--v-top", "20:40:10km/h", "--diameter", "16ft",
+              "--format", "csv")
+    rows = _rows(res.stdout)
+    assert res.exit_code == 0 and [r["status"] for r in rows] == ["ok", "ok", "ok"]
+    assert float(rows[0]["v_top_min_m_s"]) == pytest.approx((9.80665 * (2.4384 - 0.8)) ** 0.5)
+    bad = run("ride", "--vertical", "--theta", "90", "--v-top", "5", "--alpha", "10")
+    assert bad.exit_code == 2

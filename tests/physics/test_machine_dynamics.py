@@ -1,0 +1,155 @@
+"""The machine's exact equations of motion and the stability of its steady
+orbits (docs/machine.md sec. 5): the paper's wheel is the house's wheel
+state by state and mode by mode; eq. M8 is a fixed point of the full
+equations for any machine."""
+
+import numpy as np
+import pytest
+
+from deathsphere.physics import dynamics as dyn
+from deathsphere.physics.machine import ride_orbit
+from deathsphere.physics.machine_dynamics import MachineParams, machine_orbit_state, machine_rhs, machine_stability
+from deathsphere.physics.stability import wheel_stability
+from deathsphere.physics.stability.verdict import Verdict
+
+G = 9.80665
+
+
+def _wheel(a, r, k, m=2.0):
+    i = k * m * a * a
+    return MachineParams(a, 0.0, r, a, G, m, i, 2 * i, i, 2 * i)
+
+
+@pytest.mark.parametrize("a, r, k", [(0.3, 3.0, 0.5), (0.5, 1.5, 0.25)])
+def test_the_papers_wheel_has_the_houses_equations_of_motion(a, r, k):
+    """Not only on the orbit: at perturbed states too (the wheel's
+    equations, physics.dynamics, derived separately in docs/dynamics.md)."""
+    rng = np.random.default_rng(3)
+    th = np.radians(rng.uniform(40, 150, 40))
+    al = np.radians(rng.uniform(5, 40, 40))
+    bp = dyn.body_params(a, r, k, G)
+    X, _ = dyn.wheel_orbit_state(th, al, a, r, k, G)
+    keep = np.all(np.isfinite(X), axis=0)
+    X = dyn.project(X[:, keep] + 0.02 * rng.standard_normal((9, keep.sum())), bp)
+    ref = dyn.rhs(X, bp)
+    got = machine_rhs(X, _wheel(a, r, k))
+    assert np.max(np.abs(got - ref)) < 1e-11 * np.max(np.abs(ref))
+
+
+def test_eq_m8_is_a_fixed_point_of_the_full_equations():
+    """The steady orbit of eq. M8 (rate, spin) placed in the exact equations
+    in the frame turning at Omega: every rate vanishes, for machines with a
+    round tyre and any inertia."""
+    rng = np.random.default_rng(5)
+    n = 300
+    p = MachineParams(0.3, rng.uniform(0, 0.2, n), rng.uniform(1.5, 6, n), rng.uniform(0.3, 1.2, n), G, 150.0,
+                      rng.uniform(5, 30, n), rng.uniform(20, 40, n), rng.uniform(5, 30, n), rng.uniform(0, 2, n))
+    th = np.radians(rng.uniform(30, 170, n))
+    al = np.radians(rng.uniform(-10, 80, n))
+    res = ride_orbit(th, al, p.r, G, p.mass, p.h, p.a, p.t, p.pitch, p.yaw, p.spin, p.h + 1)
+    ok = np.isfinite(res["omega"]) & (res["status"] != 1)
+    assert ok.sum() > 100
+    X, om = machine_orbit_state(th[ok], al[ok], MachineParams(*(np.broadcast_to(x, (n,))[ok] for x in p)))
+    np.testing.assert_allclose(om, res["omega"][ok], rtol=1e-13)
+    rates = machine_rhs(X, MachineParams(*(np.broadcast_to(x, (n,))[ok] for x in p)), om)
+    scale = np.abs(om) * (np.abs(X[6:9]).max(axis=0) + 1)
+    assert np.max(np.abs(rates) / scale) < 1e-11
+
+
+def test_the_papers_wheel_has_the_houses_stability():
+    a, r, k = 0.3, 3.0, 0.5
+    th, al = np.meshgrid(np.radians(np.linspace(30, 160, 14)), np.radians(np.linspace(-30, 80, 12)))
+    th, al = th.ravel(), al.ravel()
+    ws = wheel_stability(th, al, a, r, k, G)
+    ms = machine_stability(th, al, _wheel(a, r, k))
+    known = np.isfinite(ws["growth_rate"])
+    assert known.sum() > 60
+    np.testing.assert_array_equal(np.isfinite(ms["growth_rate"]), known)
+    diff = np.abs(ms["growth_rate"][known] - ws["growth_rate"][known]) / ws["rate_scale"][known]
+    assert np.max(diff) < 1e-8
+    np.testing.assert_allclose(ms["freq_fast"][known], ws["freq_fast"][known], rtol=1e-9)
+    np.testing.assert_allclose(ms["freq_slow"][known], ws["freq_slow"][known], rtol=1e-8, atol=1e-9)
+    np.testing.assert_array_equal(ms["verdict"][known], ws["verdict"][known])
+    assert {Verdict.STABLE, Verdict.UNSTABLE} <= set(ws["verdict"][known].tolist())
+
+
+def test_an_unsteered_motorcycle_is_unstable_on_most_orbits():
+    p = MachineParams(0.3, 0.045, 2.4384, 0.8, G, 165.0, 25.0, 40.0, 20.0, 0.8)
+    th, al = np.meshgrid(np.radians(np.linspace(60, 170, 12)), np.radians(np.linspace(-5, 60, 14)))
+    st = machine_stability(th.ravel(), al.ravel(), p)
+    known = np.isfinite(st["growth_rate"])
+    assert known.sum() > 50
+    assert np.mean(st["verdict"][known] == Verdict.UNSTABLE) > 0.9
+    # the spectrum is symmetric (lambda -> -lambda): reversible equations
+    ev = st["eigenvalues"][known]
+    tol = 1e-8 * np.nanmax(st["rate_scale"])
+    re, im = np.sort(ev.real, axis=1), np.sort(ev.imag, axis=1)
+    np.testing.assert_allclose(re, -re[:, ::-1], atol=tol)
+    np.testing.assert_allclose(im, -im[:, ::-1], atol=tol)
+
+
+def _simulate(theta_deg, alpha_deg, p, periods, kick=1e-6):
+    from scipy.integrate import solve_ivp
+
+    from deathsphere.physics.machine_dynamics import _geometry
+
+    th, al = np.radians([theta_deg]), np.radians([alpha_deg])
+    X0, om = machine_orbit_state(th, al, p)
+    X = X0[:, 0].copy()
+    X[6:9] += kick * abs(om[0]) * np.array([0.3, -0.5, 0.2])      # a kick of the angular velocity
+    T = periods * 2 * np.pi / om[0]
+    sol = solve_ivp(lambda t, y: machine_rhs(y[:, None], p, om)[:, 0], (0, T), X, rtol=1e-11, atol=1e-13,
+                    dense_output=True)
+    ts = np.linspace(0, T, 400)
+    Y = sol.sol(ts)
+    _, e3, _, P = _geometry(Y[0:3], Y[3:6], p.a, p.t)
+    dtheta = np.arccos(P[2] / np.linalg.norm(P, axis=0)) - th[0]
+    dalpha = np.arcsin(-e3[2]) - al[0]
+    return ts, np.hypot(dtheta, dalpha), machine_stability(th, al, p)
+
+
+STUNT = MachineParams(0.3, 0.045, 2.4384, 0.8, G, 165.0, 25.0, 40.0, 20.0, 0.8)
+
+
+def test_simulation_confirms_an_unstable_machine_orbit():
+    """The equator of a 16-ft globe at alpha = 15 deg: the full nonlinear
+    equations grow a small kick at the linearisation's growth rate."""
+    ts, dev, st = _simulate(90.0, 15.0, STUNT, periods=1.5)    # e^(3.7 * 1.9 s) ~ 1e3: still linear
+    lam = st["growth_rate"][0]
+    assert st["verdict"][0] == Verdict.UNSTABLE and lam > 1.0
+    late = ts > ts[-1] / 2
+    rate = np.polyfit(ts[late], np.log(dev[late]), 1)[0]
+    assert rate == pytest.approx(lam, rel=0.02)
+
+
+def test_simulation_confirms_a_stable_machine_orbit():
+    """High on the wall (theta = 20 deg, alpha = -10.34 deg, ~10 g): the
+    kick stays bounded (the linearisation: all eigenvalues imaginary, the
+    slow one 2.36 rad/s, a 2.7 s nutation = 16 orbit periods): over two
+    nutations the second is no larger than the first."""
+    ts, dev, st = _simulate(20.0, -10.34, STUNT, periods=32)
+    assert st["verdict"][0] == Verdict.STABLE
+    assert st["freq_slow"][0] == pytest.approx(2.357, abs=1e-3)
+    first = ts <= ts[-1] / 2
+    assert dev[~first].max() < 1.1 * dev[first].max()
+    assert dev.max() < 1e-3
+
+
+@pytest.mark.parametrize("v", [2.0, 10.0, 30.0])
+def test_flat_ground_capsize_mode(v):
+    """On flat ground (r = 1e6 m, a 2 km turn: nearly straight and upright)
+    the lean mode of the single-contact machine is docs/machine.md eq. M20:
+    (I_roll + m h^2) lambda^2 = m g h - (m h v + J v/a) J v / (a I_yaw):
+    capsize (real lambda) below the critical speed, a wobble above."""
+    from deathsphere.physics.machine import solve_alpha_for_speed
+
+    m, h, a, t, i_r, i_p, i_y, j = 165.0, 0.8, 0.3, 0.0, 25.0, 40.0, 20.0, 0.8
+    r, R = 1e6, 2000.0
+    th = np.pi - np.arcsin(R / r)
+    roots = solve_alpha_for_speed([th], [v], r, G, m, h, a, t, i_p, i_y, j)[0]
+    al = roots[np.isfinite(roots) & (roots > 0) & (roots < np.pi / 2)]
+    st = machine_stability(np.array([th]), al, MachineParams(a, t, r, h, G, m, i_r, i_p, i_y, j))
+    lam2 = (m * G * h - (m * h * v + j * v / a) * j * v / (a * i_y)) / (i_r + m * h * h)
+    ev = st["eigenvalues"][0]
+    main = ev[np.argmax(np.abs(ev))]
+    assert (main ** 2).real == pytest.approx(lam2, rel=2e-4)

@@ -1,0 +1,156 @@
+"""deathsphere.Machine and deathsphere.ride (docs/machine.md): validation,
+broadcasting, every tilt for a speed, height and diameter, the presets (the
+benchmark bicycle's totals recomputed from its published table here)."""
+
+import numpy as np
+import pytest
+
+import deathsphere
+from deathsphere import Machine, ParameterError
+from deathsphere.api.machines import PRESETS, benchmark_bicycle, machine_file
+
+STUNT = dict(mass=165.0, h=0.8, a=0.3, t=0.045, inertia=(25.0, 40.0, 20.0), spin_inertia=0.8, head=1.65)
+
+
+@pytest.mark.parametrize("change, words", [
+    (dict(mass=0.0), "mass (machine mass) must be"),
+    (dict(mass=-3.0), "mass (machine mass) must be"),
+    (dict(h=-0.1), "com_height"),
+    (dict(t=0.3), "must be less than the wheel radius"),
+    (dict(t=0.5), "must be less than the wheel radius"),
+    (dict(head=0.5), "must be at least the centre-of-mass height"),
+    (dict(mass=float("nan")), "must be a finite number"),
+    (dict(a=float("inf")), "must be a finite number"),
+    (dict(inertia=(1.0, 1.0, 3.0)), "triangle inequality"),
+    (dict(inertia=(1.0, 1.0)), "three numbers"),
+    (dict(inertia=(1.0, float("nan"), 1.0)), "finite"),
+    (dict(spin_inertia=50.0), "exceeds the pitch inertia"),
+])
+def test_bad_machines_raise_one_line(change, words):
+    with pytest.raises(ParameterError) as info:
+        Machine(**{**STUNT, **change})
+    assert words in str(info.value) and "\n" not in str(info.value)
+
+
+def test_the_cli_refuses_a_bad_machine_with_status_2():
+    from click.testing import CliRunner
+
+    from deathsphere.cli import cli
+
+    res = CliRunner().invoke(cli, ["ride", "--theta", "90", "--alpha", "10", "--head-height", "0.1"])
+    assert res.exit_code == 2 and "head_height" in res.output
+
+
+def test_the_benchmark_bicycle_from_its_published_table():
+    """Meijaard et al. (2007) Table 1, typed here again: masses R 2, B 85,
+    H 4, F 3 kg at (x, z) = (0, -0.3), (0.3, -0.9), (0.9, -0.7), (1.02,
+    -0.35) m: total 94 kg, centre of mass 0.8612 m above the ground."""
+    m = np.array([2.0, 85.0, 4.0, 3.0])
+    x = np.array([0.0, 0.3, 0.9, 1.02])
+    z = np.array([-0.3, -0.9, -0.7, -0.35])
+    bike = benchmark_bicycle()
+    assert bike.mass == m.sum() == 94.0
+    assert bike.h == pytest.approx(-(m * z).sum() / m.sum(), rel=1e-12)
+    assert bike.h == pytest.approx(0.86117, abs=1e-5)
+    # the spin inertia keeps the wheels' angular momentum at a speed: J/a = IRyy/rR + IFyy/rF
+    assert bike.spin_inertia / bike.a == pytest.approx(0.12 / 0.3 + 0.28 / 0.35)
+    # pitch inertia by the parallel-axis theorem, by hand
+    xt, zt = (m * x).sum() / 94, (m * z).sum() / 94
+    iyy = 0.12 + 11 + 0.06 + 0.28 + (m * ((x - xt) ** 2 + (z - zt) ** 2)).sum()
+    assert bike.inertia[1] == pytest.approx(iyy, rel=1e-12)
+
+
+def test_ride_broadcasts_like_orbit():
+    t = deathsphere.ride([[60], [90], [120]], [5, 15], machine="stunt125", stability=False)
+    assert t.shape == (3, 2) and len(t) == 6
+    one = deathsphere.ride(90, 15, machine="stunt125", diameter="16ft")
+    assert one.shape == () and str(one["status"]) == "ok"
+    assert float(one["r_m"]) == pytest.approx(2.4384)
+    assert float(one["v_cm_km_h"]) == pytest.approx(8.30136 * 3.6, abs=1e-4)
+
+
+def test_ride_reproduces_orbit_for_the_papers_wheel():
+    t = deathsphere.ride([[30], [60], [90], [150]], [-40, 5, 10, 30, 60], machine="paper-wheel", r=3.0,
+                         stability=False)
+    o = deathsphere.orbit([[30], [60], [90], [150]], [-40, 5, 10, 30, 60], r=3.0, stability=False)
+    np.testing.assert_array_equal(t["status"], o["status"])
+    ok = o["status"] == "ok"
+    for a, b in (("omega_rad_s", "omega_rad_s"), ("v_cm_m_s", "v_cm_m_s"), ("mu_required", "mu_required"),
+                 ("normal_per_mass_m_s2", "normal_per_mass_m_s2")):
+        np.testing.assert_allclose(t[a][ok], o[b][ok], rtol=1e-12)
+
+
+def test_every_tilt_for_a_speed_and_the_rows_verify():
+    t = deathsphere.ride(height=[[0.3], [1.2], [2.4]], speed=["25km/h", "40km/h"], machine="stunt125", diameter="16ft",
+                         stability=False)
+    assert t.shape == (len(t),)
+    assert set(t["input_row"].tolist()) == set(range(1, 7))
+    found = np.isfinite(t["alpha_deg"])
+    np.testing.assert_allclose(t["v_cm_m_s"][found], np.array([25 / 3.6, 40 / 3.6])[
+        (t["input_row"][found] - 1) % 2], rtol=1e-9)
+    # each root re-evaluated with alpha given: the same row
+    again = deathsphere.ride(t["theta_deg"][found], t["alpha_deg"][found], machine="stunt125", diameter="16ft",
+                             stability=False)
+    np.testing.assert_allclose(again["v_cm_m_s"], t["v_cm_m_s"][found], rtol=1e-12)
+    np.testing.assert_allclose(t["height_m"], np.repeat([0.3, 1.2, 2.4], 2)[t["input_row"] - 1], rtol=1e-12)
+
+
+def test_a_speed_no_tilt_gives_is_one_no_orbit_row():
+    t = deathsphere.ride(90, speed=0.5, machine="stunt125", r=2.45, stability=False)
+    assert len(t) == 1 and t["status"][0] == "no_orbit" and "M12" in t["reason"][0]
+
+
+def test_inputs_are_checked():
+    with pytest.raises(ParameterError, match="exactly one of theta and height"):
+        deathsphere.ride(90, height=1.0, alpha=10, machine="stunt125")
+    with pytest.raises(ParameterError, match="exactly one of alpha and speed"):
+        deathsphere.ride(90, machine="stunt125")
+    with pytest.raises(ParameterError, match="at most the globe's diameter"):
+        deathsphere.ride(height=6.0, alpha=10, machine="stunt125", diameter="16ft")
+    with pytest.raises(ParameterError, match="machine must be one of"):
+        deathsphere.ride(90, 10, machine="unicycle")
+    with pytest.raises(ParameterError, match="needs r > a"):
+        deathsphere.ride(90, 10, machine="stunt125", r=0.2)
+
+
+def test_the_head_hits_the_globe_when_the_up_axis_runs_along_the_wall():
+    """Above the equator with the up-axis close to the wall (theta = 60,
+    alpha = 50 deg): the head point H = P + (head - t) u + t n_in lies
+    outside the sphere (by hand: |H| = 2.68 m > r = 2.45 m)."""
+    t = deathsphere.ride(60, 50, machine=Machine(**STUNT), r=2.45, stability=False)
+    P = 2.45 * np.array([np.sin(np.radians(60)), np.cos(np.radians(60))])
+    u = np.array([-np.cos(np.radians(50)), np.sin(np.radians(50))])
+    H = P - 0.045 * P / 2.45 + (1.65 - 0.045) * u
+    assert float(t["head_clearance_m"]) == pytest.approx(2.45 - np.hypot(*H), rel=1e-12)
+    assert str(t["status"]) == "no_fit" and "head" in str(t["reason"]) and float(t["head_clearance_m"]) < 0
+
+
+def test_machine_files(tmp_path):
+    toml = tmp_path / "bike.toml"
+    toml.write_text('name = "my bike"\nmass = 170\nwheel_radius = "12in"\nhead_height = 1.7\n')
+    m = machine_file(toml)
+    assert (m.name, m.mass, m.head) == ("my bike", 170.0, 1.7) and m.a == pytest.approx(0.3048)
+    assert m.inertia == PRESETS["stunt125"].inertia
+    csv = tmp_path / "bike.csv"
+    csv.write_text("mass,com_height,head_height\n150,0.7,1.6\n")
+    assert machine_file(csv).h == 0.7
+    bad = tmp_path / "bad.toml"
+    bad.write_text("mas = 3\n")
+    with pytest.raises(ParameterError, match="unknown key 'mas'"):
+        machine_file(bad)
+    worse = tmp_path / "worse.toml"
+    worse.write_text("mass = -1\n")
+    with pytest.raises(ParameterError, match="mass"):
+        machine_file(worse)
+
+
+def test_the_stability_columns_of_the_papers_wheel_are_orbits():
+    th, al = [[40], [90], [130]], [-20, 10, 30, 60, 80]
+    t = deathsphere.ride(th, al, machine="paper-wheel", r=3.0)
+    o = deathsphere.orbit(th, al, r=3.0)
+    np.testing.assert_array_equal(t["stability"], o["stability"])
+    assert set(t["stability"].tolist()) >= {"stable", "unstable"}
+    np.testing.assert_allclose(t["freq_fast_rad_s"], o["freq_fast_rad_s"], rtol=1e-9)
+    a = deathsphere.ride(90, [10, 20, 30], machine="stunt125", diameter="16ft")
+    assert set(a["stability"].tolist()) == {"unstable"} and "a rider steers" in a["stability_method"][0]
+    assert all(a["growth_rate_1_s"] > 0)
