@@ -71,8 +71,13 @@ def _evaluate(theta, alpha, r, g, mu, max_g, m: Machine) -> dict:
     return {k: np.concatenate([np.asarray(p[k]).reshape(-1) for p in pieces]) for k in pieces[0]}
 
 
-def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability: bool, shape=None) -> Table:
+def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability: bool, shape=None,
+           given: dict | None = None) -> Table:
+    """The rows of ``ride``.  ``given`` holds the requested inputs per row
+    (``theta_deg``, ``alpha_deg``, ``v_cm_m_s``, NaN where not given), echoed
+    as typed rather than as recomputed (docs/contract.md)."""
     n = theta.size
+    given = given or {}
     status = res["status"]
     cols = {
         "input_row": req_index + 1,
@@ -83,15 +88,22 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
         "r_m": np.broadcast_to(r, (n,)),
         "height_m": res["height"],
         "g_m_s2": np.broadcast_to(g, (n,)),
-        "mu_available": np.broadcast_to(mu, (n,)),
-        "max_g": np.broadcast_to(max_g, (n,)),
+        # inf ("no limit") is empty, as in every table (never inf in a row)
+        "mu_available": np.where(np.isinf(np.broadcast_to(mu, (n,))), np.nan, np.broadcast_to(mu, (n,))),
+        "max_g": np.where(np.isinf(np.broadcast_to(max_g, (n,))), np.nan, np.broadcast_to(max_g, (n,))),
         "status": STATUS_LABELS[status],
         "reason": REASON_TEXT[res["reason"]],
     }
+    for name, values in given.items():  # inputs as given
+        cols[name] = np.where(np.isnan(values), cols.get(name, np.nan), values)
     for key, col in _PHYS.items():
         cols[col] = res[key]
+        if col in given:
+            cols[col] = np.where(np.isnan(given[col]), cols[col], given[col])
         if key == "v_cm":
-            cols["v_cm_km_h"] = res[key] * 3.6
+            # a rider's unit beside SI; rounded at 1e-9 km/h so that a speed
+            # typed in km/h reads back as typed (40, not 40.00000000000001)
+            cols["v_cm_km_h"] = np.round(cols[col] * 3.6, 9)
     has_orbit = (status == Status.OK) | (status == Status.SLIPS) | (status == Status.OVER_G)
     blank = np.full(n, "", dtype=object)
     cols["stability"], cols["stability_method"] = blank, blank.copy()
@@ -214,9 +226,13 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     if alpha is not None:
         al = np.radians(_reduced(flat["alpha"]))
         res = _evaluate(th, al, rr, g_, mu_, xg, m)
-        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape)
+        given = {"alpha_deg": flat["alpha"].astype(float)}
+        if height is None:
+            given["theta_deg"] = flat["theta"].astype(float)
+        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given)
     else:
-        table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability)
+        table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
+                          theta_deg=None if height is not None else flat["theta"].astype(float))
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
@@ -226,7 +242,7 @@ def _reduced(deg):
     return 180.0 - np.mod(180.0 - deg, 360.0)
 
 
-def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool) -> Table:
+def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None) -> Table:
     """One row per tilt giving each speed (eq. M12), a no_orbit row where none does."""
     n = th.size
     margs = _machine_args(m)
@@ -258,7 +274,10 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool) -> Table:
                 val[none] = Reason.MACHINE_NO_ALPHA
             elif key != "height":
                 val[none] = np.nan
-    return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability)
+    given = {"v_cm_m_s": np.asarray(v, dtype=float)[req]}
+    if theta_deg is not None:
+        given["theta_deg"] = theta_deg[req]
+    return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability, given=given)
 
 
 #: Columns of the rider's table (:func:`ride_summary`).
@@ -283,8 +302,8 @@ def ride_summary(table: Table) -> Table:
         req = np.asarray(table["input_row"])[sel]
         rows["height_m"].append(float(hv))
         rows["theta_deg"].append(float(np.asarray(table["theta_deg"])[sel][0]))
-        rows["speeds_tried"].append(float(np.unique(req).size))
-        rows["speeds_ok"].append(float(np.unique(req[ok]).size))
+        rows["speeds_tried"].append(int(np.unique(req).size))
+        rows["speeds_ok"].append(int(np.unique(req[ok]).size))
 
         def span(col, fn, mask=ok):
             vals = np.asarray(table[col], dtype=float)[sel][mask]
@@ -301,7 +320,8 @@ def ride_summary(table: Table) -> Table:
         failed = sorted(set(status[~ok].tolist()))
         rows["limits"].append(" ".join(failed) if failed else "")
         del speeds
-    cols = {c: np.array(v, dtype=object if c == "limits" else float) for c, v in rows.items()}
+    kinds = {"limits": object, "speeds_tried": np.int64, "speeds_ok": np.int64}
+    cols = {c: np.array(v, dtype=kinds.get(c, float)) for c, v in rows.items()}
     return Table(cols)
 
 

@@ -24,7 +24,7 @@ def test_the_riders_question_one_row_per_height(run):
     assert res.exit_code == 0
     rows = _rows(res.stdout)
     assert [round(float(r["height_m"]), 6) for r in rows] == [round(0.2 * i, 6) for i in range(13)]
-    assert all(r["speeds_tried"] == "9.0" for r in rows)
+    assert all(r["speeds_tried"] == "9" for r in rows)          # a count
     equator = rows[-1]
     assert float(equator["speeds_ok"]) >= 1 and 30 <= float(equator["v_min_km_h"]) <= float(equator["v_max_km_h"])
 
@@ -69,3 +69,14 @@ def test_vertical_loops(run):
     assert float(rows[0]["v_top_min_m_s"]) == pytest.approx((9.80665 * (2.4384 - 0.8)) ** 0.5)
     bad = run("ride", "--vertical", "--theta", "90", "--v-top", "5", "--alpha", "10")
     assert bad.exit_code == 2
+
+
+def test_ride_rows_echo_their_inputs_and_never_hold_inf(run):
+    """As every table: a speed typed in km/h reads back as typed, theta and
+    alpha as given, and "no limit" is an empty cell, not inf."""
+    text = run("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format", "csv").stdout
+    rows = _rows(text)
+    assert rows and all(r["v_cm_km_h"] == "40.0" and r["theta_deg"] == "90.0" for r in rows)
+    assert all(r["mu_available"] == "" and r["max_g"] == "" for r in rows) and "inf" not in text
+    tilted = _rows(run("ride", "--theta", "60.1", "--alpha", "10.3", "--format", "csv").stdout)
+    assert (tilted[0]["theta_deg"], tilted[0]["alpha_deg"]) == ("60.1", "10.3")
