@@ -77,13 +77,18 @@ def _polars_matches_repr() -> bool:
     return text.split("\n")[:-1] == [repr(x) for x in probes]
 
 
-def _quote(pl, s):
-    """The contract's CSV quoting on a polars String series (nulls stay null)."""
-    needs = s.str.contains(r'[,"\r\n]').fill_null(False)
-    if not needs.any():
+def _needs_quote(text: str) -> bool:
+    return "," in text or '"' in text or "\r" in text or "\n" in text
+
+
+def _quote(pl, s, distinct):
+    """The contract's CSV quoting on a polars String series (nulls stay null).
+    ``distinct`` are its values: a result's text columns hold a handful of
+    statuses and reasons, so the rule is decided on those, not per row."""
+    bad = [x for x in distinct if isinstance(x, str) and _needs_quote(x)]
+    if not bad:
         return s
-    quoted = '"' + s.str.replace_all('"', '""', literal=True) + '"'
-    return pl.select(pl.when(needs).then(quoted).otherwise(s)).to_series().alias(s.name)
+    return s.replace({x: '"' + x.replace('"', '""') + '"' for x in bad})
 
 
 def _series(pl, name: str, values: np.ndarray):
@@ -106,7 +111,7 @@ def _series(pl, name: str, values: np.ndarray):
         except Exception:
             s = None
         if s is not None and s.dtype == pl.String:
-            return _quote(pl, s)
+            return _quote(pl, s, set(items))
         if s is not None and s.dtype == pl.Int64 :
             return s
     # anything else (bools, mixed objects): the pure-Python text, already quoted

@@ -24,20 +24,26 @@ FORMATS = ("table", "csv", "json", "ndjson")
 COMPILED_CSV: bool | None = None
 
 #: With COMPILED_CSV None the compiled writer takes over once an output is
-#: this long, and only for chunks of COMPILED_MIN_CHUNK rows or more:
-#: importing polars costs ~0.2 s, which a short output (`orbit`, a small
-#: sweep) would pay in latency, and polars' per-call cost (~1 ms) is more
-#: than the pure-Python writer spends on a few hundred rows.
+#: this long (from the first chunk when the output is known to be at least
+#: this long: a sweep's grid), and only for chunks of COMPILED_MIN_CHUNK
+#: rows or more: importing polars costs ~0.2 s, which a short output
+#: (`orbit`, a small sweep) would pay in latency, and polars' per-call cost
+#: (~1 ms) is more than the pure-Python writer spends on a few hundred rows.
 COMPILED_AFTER_ROWS = 20_000
 COMPILED_MIN_CHUNK = 1024
 
 
-def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None) -> int:
+def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expected: int | None = None) -> int:
     """Stream tables as CSV: the header once, then every chunk's rows.
-    ``compiled`` None takes :data:`COMPILED_CSV`."""
+    ``compiled`` None takes :data:`COMPILED_CSV`; ``expected`` is the
+    number of rows to come when known (None: unknown)."""
     mode = COMPILED_CSV if compiled is None else compiled
     fast = None
-    rows = 0
+    # a long output known in advance takes the compiled writer at once: the
+    # first COMPILED_AFTER_ROWS rows by the pure one would cost more than
+    # importing polars
+    rows = COMPILED_AFTER_ROWS if expected is not None and expected >= COMPILED_AFTER_ROWS else 0
+    written = 0
     for i, table in enumerate(chunks):
         text = csv_text
         if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
@@ -48,7 +54,8 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None) -> i
             text = fast or csv_text
         out.write(text(table, header=i == 0))
         rows += len(table)
-    return rows
+        written += len(table)
+    return written
 
 
 def write_ndjson(chunks: Iterable, out: IO[str]) -> int:
