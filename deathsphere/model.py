@@ -218,11 +218,17 @@ def validate_requests(req: dict) -> np.ndarray:
 
     def domain(name, given=None):
         # only the values given are checked (an optional input left empty is
-        # NaN in every row, and would otherwise cost a message per row)
-        rows = np.arange(len(body)) if given is None else np.flatnonzero(given)
-        words = np.full(len(body), "", dtype=object)
-        words[rows] = params.problems(name, req[name][rows])
-        checks.append((words != "", lambda i, w=words: w[i]))
+        # NaN in every row, and would otherwise cost a message per row), and
+        # words only for the rows that fail
+        values = req[name]
+        if given is None and values.size and np.all(values == values[0]):
+            # one value in every row (a, r, g, mu in a sweep): check it once
+            bad = np.full(values.size, bool(params.failing(name, values[:1])[0]))
+        else:
+            bad = params.failing(name, values)
+            if given is not None:
+                bad &= given
+        checks.append((bad, lambda i: params.problems(name, values[i:i + 1])[0]))
 
     for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)
@@ -419,7 +425,9 @@ def evaluate(req: dict, stability: bool = True) -> Table:
         over = (columns["status"] == "ok") & (columns["accel_g"] > max_g)
     columns["status"][over] = "over_g"
     columns["reason"][over] = REASON_TEXT[Reason.OVER_G]
-    columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
+    columns["branch"] = np.full(len(pick), None, dtype=object)
+    rooted = np.flatnonzero(branch[order] >= 0)  # a row per root: its index (Python ints, as the contract prints)
+    columns["branch"][rooted] = branch[order][rooted].tolist()
     finite_or_blank(columns)
     columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order]) if stability
                    else _no_stability(len(pick)))

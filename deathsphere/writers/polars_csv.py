@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import threading
 
 import numpy as np
 
@@ -55,14 +56,17 @@ def _module(name: str) -> bool:
 
 
 _csv_ok: bool | None = None
+#: The check runs once even when a warm-up thread and the writer ask at once.
+_csv_lock = threading.Lock()
 
 
 def csv_available() -> bool:
     """polars is installed and formats floats as repr does (checked once)."""
     global _csv_ok
-    if _csv_ok is None:
-        _csv_ok = _module("polars") and _polars_matches_repr()
-    return _csv_ok
+    with _csv_lock:
+        if _csv_ok is None:
+            _csv_ok = _module("polars") and _polars_matches_repr()
+        return _csv_ok
 
 
 def _polars_matches_repr() -> bool:
@@ -110,7 +114,7 @@ def _series(pl, name: str, values: np.ndarray):
             s = pl.Series(name, items, strict=True)
         except Exception:
             s = None
-        if s is not None and s.dtype == pl.String:
+        if s is not None and s.dtype in (pl.String, pl.Null):  # Null: every cell None, written empty
             return _quote(pl, s, set(items))
         if s is not None and s.dtype == pl.Int64 :
             return s

@@ -43,6 +43,8 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
     # first COMPILED_AFTER_ROWS rows by the pure one would cost more than
     # importing polars
     rows = COMPILED_AFTER_ROWS if expected is not None and expected >= COMPILED_AFTER_ROWS else 0
+    if mode or (mode is None and rows):
+        _warm_up_polars()
     written = 0
     for i, table in enumerate(chunks):
         text = csv_text
@@ -56,6 +58,18 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
         rows += len(table)
         written += len(table)
     return written
+
+
+def _warm_up_polars() -> None:
+    """Import polars and check it against repr
+    (:func:`deathsphere.writers.polars_csv.csv_available`, ~0.3 s, much of
+    it in compiled code) on a thread while the first chunk is evaluated;
+    the first compiled chunk waits for it (the check runs once, under a lock)."""
+    import threading
+
+    from deathsphere.writers import polars_csv
+
+    threading.Thread(target=polars_csv.csv_available, name="deathsphere-polars", daemon=True).start()
 
 
 def write_ndjson(chunks: Iterable, out: IO[str]) -> int:
