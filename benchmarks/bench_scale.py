@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -74,7 +73,8 @@ def timed(args: list[str], stdout=subprocess.DEVNULL, env=None) -> dict:
         text = log.read()
 
     def field(label):
-        return re.search(re.escape(label) + r"[^:]*: (.+)", text).group(1).strip()
+        line = next(line for line in text.splitlines() if line.strip().startswith(label))
+        return line.rsplit(": ", 1)[1].strip()
 
     h, m, s = (["0"] + field("Elapsed (wall clock) time").split(":"))[-3:]
     return {"wall": int(h) * 3600 + int(m) * 60 + float(s), "user": float(field("User time")),

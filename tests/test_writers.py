@@ -98,7 +98,7 @@ def test_long_outputs_switch_writers_midway_without_a_seam(pure_outputs, monkeyp
     monkeypatch.setattr(stream, "COMPILED_MIN_CHUNK", 600)
     used = []
     real = polars_csv.polars_csv_text
-    monkeypatch.setattr(polars_csv, "polars_csv_text", lambda table, header: used.append(len(table)) or real(table, header))
+    monkeypatch.setattr(polars_csv, "polars_csv_text", lambda table, header, **kw: used.append(len(table)) or real(table, header, **kw))
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=None, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
     assert used and sum(used) == res.stdout.count("\n") - 1  # every chunk compiled (all >= 600 rows)
@@ -278,3 +278,20 @@ def test_the_file_writers_do_not_import_rich():
             "print(sorted(m for m in sys.modules if m == 'rich' or m.startswith('rich.')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+@needs_polars
+def test_compiled_writer_to_a_binary_buffer_writes_the_same_bytes(tmp_path):
+    """A text file's chunks go to its binary buffer as bytes (no Python
+    string per chunk): the same file as the pure-Python writer's, with an
+    empty first chunk keeping its header."""
+    tables = list(deathsphere.sweep("0:180:7.5", "-180:180:7.5", mu=1, a=[0.3, 4], chunk_size=1000))
+    empty = tables[0][np.zeros(len(tables[0]), dtype=bool)]
+    for chunks in (tables, [empty, *tables]):
+        paths = []
+        for compiled in (False, True):
+            path = tmp_path / f"{compiled}.csv"
+            with open(path, "w", encoding="utf-8", newline="") as out:
+                stream.write_csv(iter(chunks), out, compiled=compiled)
+            paths.append(path.read_bytes())
+        assert paths[0] == paths[1] and paths[0].startswith(b"input_row,")

@@ -46,6 +46,9 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
     if mode or (mode is None and rows):
         _warm_up_polars()
     written = 0
+    # the compiled writer writes bytes straight to a text file's buffer
+    utf8 = (getattr(out, "encoding", None) or "").lower().replace("-", "") == "utf8"
+    binary = getattr(out, "buffer", None) if utf8 else None
     for i, table in enumerate(chunks):
         text = csv_text
         if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
@@ -54,7 +57,11 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
 
                 fast = polars_csv.polars_csv_text if polars_csv.csv_available() else False
             text = fast or csv_text
-        out.write(text(table, header=i == 0))
+        if text is csv_text or binary is None:
+            out.write(text(table, header=i == 0))
+        else:
+            out.flush()  # what the text layer holds goes first
+            text(table, header=i == 0, sink=binary)
         rows += len(table)
         written += len(table)
     return written
