@@ -124,6 +124,8 @@ def main():
     p.add_argument("--repeat", type=int, default=2)
     p.add_argument("--cluster", action="store_true")
     p.add_argument("--input-rows", type=int, default=1_000_000)
+    p.add_argument("--before", metavar="DIR", help="also run the sweeps and the input stream with the package "
+                   "in DIR first on PYTHONPATH (e.g. `git archive REV deathsphere | tar -x -C DIR`)")
     args = p.parse_args()
 
     step = repr(args.step)
@@ -139,12 +141,16 @@ def main():
     folder = tempfile.mkdtemp()
     parquet = os.path.join(folder, "grid.parquet")
     print("deathsphere sweep, best of", args.repeat)
+    trees = [("", None)]
+    if args.before:
+        trees.insert(0, ("before: ", dict(os.environ, PYTHONPATH=os.path.abspath(args.before))))
     for label, extra in (("CSV --no-stability", ["--no-stability"]), ("CSV with stability", []),
                          ("Parquet --no-stability", ["--no-stability", "--output", parquet]),
                          ("Parquet with stability", ["--output", parquet]),
                          ("CSV --no-stability --jobs 2", ["--no-stability", "--jobs", "2"]),
                          ("CSV with stability --jobs 2", ["--jobs", "2"])):
-        row(label, best([*sweep, *extra], args.repeat), savetxt)
+        for prefix, env in trees:  # interleaved: a busy moment hits both
+            row(prefix + label, best([*sweep, *extra], args.repeat, env=env), savetxt)
     if args.cluster:
         reference = subprocess.run(sweep, capture_output=True, check=True).stdout
         r = cluster_run(sweep, 1, reference)
@@ -157,9 +163,10 @@ def main():
         f.write("theta,alpha,mu\n")
         np.savetxt(f, np.column_stack([rng.uniform(1, 179, n), rng.uniform(-30, 95, n), rng.uniform(0.2, 2, n)]),
                    fmt="%.6g", delimiter=",")
-    r = timed([sys.executable, "-m", "deathsphere", "orbit", "--input", requests, "--format", "csv"])
-    print(f"orbit --input of {n:,} requests with stability: peak RSS {r['rss']:.1f} MB (goal < 150), "
-          f"{r['wall']:.2f} s, {r['faults']:,} minor faults")
+    for prefix, env in trees:
+        r = timed([sys.executable, "-m", "deathsphere", "orbit", "--input", requests, "--format", "csv"], env=env)
+        print(f"{prefix}orbit --input of {n:,} requests with stability: peak RSS {r['rss']:.1f} MB (goal < 150), "
+              f"{r['wall']:.2f} s, {r['faults']:,} minor faults")
     for name in os.listdir(folder):
         os.remove(os.path.join(folder, name))
     os.rmdir(folder)

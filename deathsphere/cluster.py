@@ -19,6 +19,7 @@ from collections import deque
 from typing import Callable, Iterable, Iterator
 
 from deathsphere.errors import ParameterError
+from deathsphere.memory import reuse_freed_memory
 
 #: The line a run asking for a cluster gets when the extra is missing.
 EXTRA_MISSING = "--scheduler needs dask.distributed: pip install 'deathsphere[distributed]'"
@@ -65,6 +66,22 @@ def workers(client) -> int:
         return 1
 
 
+class OnWorker:
+    """``work`` as a task: the first call in a worker process first sets its
+    malloc thresholds (:func:`deathsphere.memory.reuse_freed_memory`)."""
+
+    _ready = False  # per process: a class attribute of the worker's copy of the module
+
+    def __init__(self, work: Callable):
+        self.work = work
+
+    def __call__(self, item):
+        if not OnWorker._ready:
+            reuse_freed_memory()
+            OnWorker._ready = True
+        return self.work(item)
+
+
 def ordered_map(work: Callable, items: Iterable, client, close: bool = False) -> Iterator:
     """``work(item)`` for each item on the cluster of ``client``, handed
     back in input order.  Items are drawn lazily, at most
@@ -72,6 +89,7 @@ def ordered_map(work: Callable, items: Iterable, client, close: bool = False) ->
     Leaving early (a reader gone, a failed write, Ctrl-C) cancels the tasks
     still pending on the cluster; ``close`` closes the client at the end."""
     pending = deque()
+    work = OnWorker(work)
     try:
         ahead = AHEAD_PER_WORKER * workers(client)
         for item in items:

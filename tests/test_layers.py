@@ -58,7 +58,8 @@ ALLOWED = {
     "grid": set(),
     # a dask cluster is the other place parallel work can run (the distributed extra)
     "parallel": {"cluster"},
-    "cluster": {"errors"},
+    "cluster": {"errors", "memory"},
+    "memory": set(),
     "topics": set(),
     "model": {"physics", "table", "params", "constants", "errors"},
     "inputs": {"model", "params", "errors", "units", "table"},
@@ -71,7 +72,8 @@ ALLOWED = {
     "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
             "parallel", "cluster", "units", "errors"},
     "__main__": {"cli"},
-    "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics"},
+    "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",
+            "memory"},
 }
 
 

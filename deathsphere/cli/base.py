@@ -26,6 +26,7 @@ import click
 
 from deathsphere import __version__
 from deathsphere.exitcodes import ExitCode
+from deathsphere.memory import reuse_freed_memory
 from deathsphere.params import ParameterError
 from deathsphere.writers.stream import write_csv, write_json, write_ndjson
 
@@ -394,32 +395,6 @@ def cli():
 
 # ---------------------------------------------------------------------------
 # entry point
-
-
-#: glibc's malloc thresholds for a command (bytes).  A chunk's column of
-#: 16,384 floats is 128 kB, glibc's default mmap threshold: each one was
-#: mapped fresh from the kernel and unmapped when freed, so every chunk
-#: paid a page fault per 4 kB touched (a quarter of a sweep's CPU time with
-#: stability).  Below these sizes freed buffers stay in the heap and the
-#: next chunk reuses them; the peak stays that of one chunk.
-MMAP_THRESHOLD = 32 * 1024 ** 2   # glibc's largest allowed on 64-bit
-TRIM_THRESHOLD = 256 * 1024 ** 2
-
-
-def reuse_freed_memory() -> None:
-    """Raise glibc's mmap and trim thresholds (nothing elsewhere: another
-    libc has no ``mallopt`` or its own policy)."""
-    if not sys.platform.startswith("linux"):
-        return
-    try:
-        import ctypes
-
-        mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError):
-        return
-    m_trim_threshold, m_mmap_threshold = -1, -3  # <malloc.h>
-    mallopt(m_mmap_threshold, MMAP_THRESHOLD)
-    mallopt(m_trim_threshold, TRIM_THRESHOLD)
 
 
 def main(argv=None) -> None:
