@@ -66,10 +66,18 @@ def savetxt_seconds(mats, repeat: int) -> tuple[float, float]:
     return best_np, best_pl
 
 
+#: The tree measured: this checkout (``--before DIR`` adds another).  The
+#: processes run in a neutral directory: ``python -m`` puts the working
+#: directory first on sys.path, which would shadow PYTHONPATH.
+HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
 def timed(args: list[str], stdout=subprocess.DEVNULL, env=None) -> dict:
     """One process under /usr/bin/time -v: wall, user, sys [s], peak RSS [MB], minor faults."""
+    env = env or dict(os.environ, PYTHONPATH=HERE)
     with tempfile.NamedTemporaryFile("r", suffix=".txt") as log:
-        subprocess.run([TIME, "-v", "-o", log.name, *args], stdout=stdout, check=True, env=env)
+        subprocess.run([TIME, "-v", "-o", log.name, *args], stdout=stdout, check=True, env=env,
+                       cwd=tempfile.gettempdir())
         text = log.read()
 
     def field(label):
@@ -101,7 +109,8 @@ def cluster_run(sweep: list[str], repeat: int, reference: str) -> None:
         time.sleep(3)
         for _ in range(2):
             procs.append(subprocess.Popen(["dask", "worker", address, "--nthreads", "1", "--nworkers", "1",
-                                           "--dashboard-address", ":0"], stderr=subprocess.DEVNULL))
+                                           "--dashboard-address", ":0"], stderr=subprocess.DEVNULL,
+                                          env=dict(os.environ, PYTHONPATH=HERE), cwd=tempfile.gettempdir()))
         time.sleep(5)
         with tempfile.NamedTemporaryFile("w+b", suffix=".csv") as out:
             r = best([*sweep, "--scheduler", address], repeat, stdout=out)
@@ -152,7 +161,8 @@ def main():
         for prefix, env in trees:  # interleaved: a busy moment hits both
             row(prefix + label, best([*sweep, *extra], args.repeat, env=env), savetxt)
     if args.cluster:
-        reference = subprocess.run(sweep, capture_output=True, check=True).stdout
+        reference = subprocess.run(sweep, capture_output=True, check=True, env=dict(os.environ, PYTHONPATH=HERE),
+                                   cwd=tempfile.gettempdir()).stdout
         r = cluster_run(sweep, 1, reference)
         print(f"  per worker: {rows / r['wall'] / 2:,.0f} orbits/s with stability (CSV written by the client); "
               f"10^9 orbits on N such workers: ~{1e9 / (rows / r['wall'] / 2) / 60:,.0f} / N minutes")

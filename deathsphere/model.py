@@ -398,15 +398,20 @@ def evaluate(req: dict, stability: bool = True) -> Table:
 
     order = np.lexsort((branch, source))
     pick = source[order]
-    sphere_alpha = fixed_bank_angle(req["theta"], req["side"])
-    alpha = np.where(body[source] == "sphere", sphere_alpha[source], alpha)
+    # text compared once per request, not per row and column (an object
+    # comparison costs a Python call per element)
+    is_sphere, is_particle = body == "sphere", body == "particle"
+    if is_sphere.any():
+        sphere_alpha = fixed_bank_angle(req["theta"], req["side"])
+        alpha = np.where(is_sphere[source], sphere_alpha[source], alpha)
+    particle = is_particle[pick]
     columns = {
         "input_row": req["input_row"][pick].astype(np.int64),
         "body": body[pick].astype(object),
         "side": req["side"][pick].astype(object),
         "theta_deg": req["theta"][pick],
-        "alpha_deg": np.where(body[pick] == "particle", np.nan, alpha[order]),
-        "a_m": np.where(body[pick] == "particle", np.nan, req["a"][pick]),
+        "alpha_deg": np.where(particle, np.nan, alpha[order]),
+        "a_m": np.where(particle, np.nan, req["a"][pick]),
         "r_m": req["r"][pick],
         "k": req["k"][pick],
         "g_m_s2": req["g"][pick],
@@ -422,7 +427,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     # the g-load limit comes last in the order of failures (docs/contract.md):
     # an orbit that is otherwise ok but pushes the rider past max_g
     with np.errstate(invalid="ignore"):
-        over = (columns["status"] == "ok") & (columns["accel_g"] > max_g)
+        over = (status[order] == Status.OK) & (columns["accel_g"] > max_g)
     columns["status"][over] = "over_g"
     columns["reason"][over] = REASON_TEXT[Reason.OVER_G]
     columns["branch"] = np.full(len(pick), None, dtype=object)
@@ -470,6 +475,8 @@ def finite_or_blank(columns: dict) -> None:
             if inf.any():
                 col[inf] = np.nan
                 hit |= inf
+    if not hit.any():
+        return
     claimed = hit & np.isin(columns["status"], LIVE_STATUSES)
     columns["status"][claimed] = "invalid"
     columns["reason"][claimed] = OVERFLOW_REASON
