@@ -49,22 +49,65 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
     # the compiled writer writes bytes straight to a text file's buffer
     utf8 = (getattr(out, "encoding", None) or "").lower().replace("-", "") == "utf8"
     binary = getattr(out, "buffer", None) if utf8 else None
-    for i, table in enumerate(chunks):
-        text = csv_text
-        if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
-            if fast is None:
-                from deathsphere.writers import polars_csv
+    behind = None
+    try:
+        for i, table in enumerate(chunks):
+            text = csv_text
+            if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
+                if fast is None:
+                    from deathsphere.writers import polars_csv
 
-                fast = polars_csv.polars_csv_text if polars_csv.csv_available() else False
-            text = fast or csv_text
-        if text is csv_text or binary is None:
-            out.write(text(table, header=i == 0))
-        else:
-            out.flush()  # what the text layer holds goes first
-            text(table, header=i == 0, sink=binary)
-        rows += len(table)
-        written += len(table)
+                    fast = polars_csv.polars_csv_text if polars_csv.csv_available() else False
+                text = fast or csv_text
+            if text is csv_text or binary is None:
+                if behind is not None:
+                    behind.wait()
+                out.write(text(table, header=i == 0))
+            elif expected is None:
+                # a stream of unknown length (an --input file) keeps to one
+                # chunk in memory: it holds the reader's blocks besides
+                out.flush()  # what the text layer holds goes first
+                text(table, header=i == 0, sink=binary)
+            else:
+                if behind is None:
+                    out.flush()  # what the text layer holds goes first
+                    behind = _WriteBehind()
+                behind.put(text, table, i == 0, binary)
+            rows += len(table)
+            written += len(table)
+        if behind is not None:
+            behind.wait()
+    finally:
+        if behind is not None:
+            behind.close()
     return written
+
+
+class _WriteBehind:
+    """The compiled writer on one thread: a chunk is formatted and written
+    there while the caller evaluates the next one.  polars formats and the
+    OS writes without holding the GIL, so on two cores the two overlap.  One
+    chunk at most is in the thread's hands, so the chunks stay in order and
+    memory grows by one chunk; a failed write (a reader gone) is raised
+    here at the next chunk or at the end."""
+
+    def __init__(self):
+        from concurrent.futures import ThreadPoolExecutor
+
+        self.pool = ThreadPoolExecutor(1, thread_name_prefix="deathsphere-writer")
+        self.pending = None
+
+    def put(self, text, table, header: bool, sink) -> None:
+        self.wait()
+        self.pending = self.pool.submit(text, table, header=header, sink=sink)
+
+    def wait(self) -> None:
+        if self.pending is not None:
+            done, self.pending = self.pending, None
+            done.result()
+
+    def close(self) -> None:
+        self.pool.shutdown(wait=True, cancel_futures=True)
 
 
 def _warm_up_polars() -> None:
