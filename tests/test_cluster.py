@@ -102,3 +102,10 @@ def test_unreachable_scheduler_is_one_line_and_exit_2(monkeypatch, run):
 def test_jobs_and_scheduler_together_are_refused(client):
     with pytest.raises(ParameterError, match="not both"):
         deathsphere.sweep("10:20:5", 10, jobs=2, scheduler=client)
+
+
+def test_command_line_map_stability_on_the_cluster(client, run):
+    args = ["map", "--stability", "--step", "10", "--format", "csv"]
+    local = run(*args)
+    remote = run(*args, "--scheduler", client.scheduler.address)
+    assert remote.exit_code == 0 and remote.output == local.output
