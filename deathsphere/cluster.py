@@ -101,7 +101,11 @@ def ordered_map(work: Callable, items: Iterable, client, close: bool = False) ->
         while pending:
             yield pending.popleft().result()
     finally:
-        if pending:
-            client.cancel(list(pending))
+        # release, not Client.cancel: cancel waits for the scheduler's answer,
+        # and after a KeyboardInterrupt inside a wait that answer never came
+        # (the command hung); a released task nobody wants is dropped by the
+        # scheduler (queued ones are never run)
+        while pending:
+            pending.popleft().release()
         if close:
-            client.close()
+            client.close(timeout=CONNECT_TIMEOUT_S)
