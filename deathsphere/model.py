@@ -218,11 +218,17 @@ def validate_requests(req: dict) -> np.ndarray:
 
     def domain(name, given=None):
         # only the values given are checked (an optional input left empty is
-        # NaN in every row, and would otherwise cost a message per row)
-        rows = np.arange(len(body)) if given is None else np.flatnonzero(given)
-        words = np.full(len(body), "", dtype=object)
-        words[rows] = params.problems(name, req[name][rows])
-        checks.append((words != "", lambda i, w=words: w[i]))
+        # NaN in every row, and would otherwise cost a message per row), and
+        # words only for the rows that fail
+        values = req[name]
+        if given is None and values.size and np.all(values == values[0]):
+            # one value in every row (a, r, g, mu in a sweep): check it once
+            bad = np.full(values.size, bool(params.failing(name, values[:1])[0]))
+        else:
+            bad = params.failing(name, values)
+            if given is not None:
+                bad &= given
+        checks.append((bad, lambda i: params.problems(name, values[i:i + 1])[0]))
 
     for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)
@@ -392,15 +398,20 @@ def evaluate(req: dict, stability: bool = True) -> Table:
 
     order = np.lexsort((branch, source))
     pick = source[order]
-    sphere_alpha = fixed_bank_angle(req["theta"], req["side"])
-    alpha = np.where(body[source] == "sphere", sphere_alpha[source], alpha)
+    # text compared once per request, not per row and column (an object
+    # comparison costs a Python call per element)
+    is_sphere, is_particle = body == "sphere", body == "particle"
+    if is_sphere.any():
+        sphere_alpha = fixed_bank_angle(req["theta"], req["side"])
+        alpha = np.where(is_sphere[source], sphere_alpha[source], alpha)
+    particle = is_particle[pick]
     columns = {
         "input_row": req["input_row"][pick].astype(np.int64),
         "body": body[pick].astype(object),
         "side": req["side"][pick].astype(object),
         "theta_deg": req["theta"][pick],
-        "alpha_deg": np.where(body[pick] == "particle", np.nan, alpha[order]),
-        "a_m": np.where(body[pick] == "particle", np.nan, req["a"][pick]),
+        "alpha_deg": np.where(particle, np.nan, alpha[order]),
+        "a_m": np.where(particle, np.nan, req["a"][pick]),
         "r_m": req["r"][pick],
         "k": req["k"][pick],
         "g_m_s2": req["g"][pick],
@@ -416,10 +427,12 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     # the g-load limit comes last in the order of failures (docs/contract.md):
     # an orbit that is otherwise ok but pushes the rider past max_g
     with np.errstate(invalid="ignore"):
-        over = (columns["status"] == "ok") & (columns["accel_g"] > max_g)
+        over = (status[order] == Status.OK) & (columns["accel_g"] > max_g)
     columns["status"][over] = "over_g"
     columns["reason"][over] = REASON_TEXT[Reason.OVER_G]
-    columns["branch"] = np.array([None if b < 0 else b for b in branch[order].tolist()], dtype=object)
+    columns["branch"] = np.full(len(pick), None, dtype=object)
+    rooted = np.flatnonzero(branch[order] >= 0)  # a row per root: its index (Python ints, as the contract prints)
+    columns["branch"][rooted] = branch[order][rooted].tolist()
     finite_or_blank(columns)
     columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order]) if stability
                    else _no_stability(len(pick)))
@@ -462,6 +475,8 @@ def finite_or_blank(columns: dict) -> None:
             if inf.any():
                 col[inf] = np.nan
                 hit |= inf
+    if not hit.any():
+        return
     claimed = hit & np.isin(columns["status"], LIVE_STATUSES)
     columns["status"][claimed] = "invalid"
     columns["reason"][claimed] = OVERFLOW_REASON

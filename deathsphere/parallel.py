@@ -18,8 +18,11 @@ T = TypeVar("T")
 R = TypeVar("R")
 
 
-def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int) -> Iterator[R]:
-    """``work(item)`` for each item, in input order, on ``jobs`` processes.
+def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int, client=None,
+                close: bool = False) -> Iterator[R]:
+    """``work(item)`` for each item, in input order, on ``jobs`` processes
+    (or, given a ``distributed.Client``, on its cluster:
+    :func:`deathsphere.cluster.ordered_map`, which ``close`` is passed to).
 
     ``work`` and the items must be picklable (a module-level function and
     plain data); each item's result is computed exactly as in one process.
@@ -28,6 +31,11 @@ def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int) -> Iterat
     handed back; closing the generator early drops the queued ones (running
     ones finish) before it returns.
     """
+    if client is not None:
+        from deathsphere.cluster import ordered_map as on_cluster
+
+        yield from on_cluster(work, items, client, close=close)
+        return
     if jobs <= 1:
         for item in items:
             yield work(item)

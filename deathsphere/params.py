@@ -252,6 +252,18 @@ def problems(name: str, values) -> np.ndarray:
     p = PARAMS[name]
     v = np.asarray(values, dtype=float).reshape(-1)
     out = np.full(v.size, "", dtype=object)
+    for i in np.flatnonzero(failing(name, v)):
+        out[i] = (f"{p.label()} must be a finite number ({p.allowed()})" if not np.isfinite(v[i])
+                  and not (p.allow_inf and v[i] > 0) else _words(p, float(v[i])))
+    return out
+
+
+def failing(name: str, values) -> np.ndarray:
+    """Which of ``values`` are not an allowed ``name``: the test of
+    :func:`problems` without its words (a batch needs words only for the
+    few that fail)."""
+    p = PARAMS[name]
+    v = np.asarray(values, dtype=float).reshape(-1)
     with np.errstate(invalid="ignore"):
         bad = np.isnan(v) | (np.isinf(v) & ~(p.allow_inf & (v > 0)))
         inside = (v > p.lo if p.lo_open else v >= p.lo) & (v < p.hi if p.hi_open else v <= p.hi)
@@ -260,10 +272,7 @@ def problems(name: str, values) -> np.ndarray:
             bad |= v == 0
         if p.integer:
             bad |= np.isfinite(v) & (v != np.round(v))
-    for i in np.flatnonzero(bad):
-        out[i] = (f"{p.label()} must be a finite number ({p.allowed()})" if not np.isfinite(v[i])
-                  and not (p.allow_inf and v[i] > 0) else _words(p, float(v[i])))
-    return out
+    return bad
 
 
 def check(name: str, value) -> float:

@@ -56,7 +56,10 @@ ALLOWED = {
     "units": {"errors"},
     "params": {"units", "errors", "constants"},
     "grid": set(),
-    "parallel": set(),
+    # a dask cluster is the other place parallel work can run (the distributed extra)
+    "parallel": {"cluster"},
+    "cluster": {"errors", "memory"},
+    "memory": set(),
     "topics": set(),
     "model": {"physics", "table", "params", "constants", "errors"},
     "inputs": {"model", "params", "errors", "units", "table"},
@@ -67,9 +70,10 @@ ALLOWED = {
     "render": {"table", "model", "constants", "params"},
     "viewer": {"table", "render"},
     "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
-            "parallel", "units", "errors"},
+            "parallel", "cluster", "units", "errors"},
     "__main__": {"cli"},
-    "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics"},
+    "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",
+            "memory"},
 }
 
 

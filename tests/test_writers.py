@@ -13,6 +13,7 @@ from click.testing import CliRunner
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import deathsphere
 from deathsphere.cli import cli
 from deathsphere.model import COLUMNS, TEXT_COLUMNS, Table
 from deathsphere.table import cells
@@ -90,16 +91,23 @@ def test_pure_writer_is_used_when_asked_or_when_the_extra_is_missing(pure_output
 
 @needs_polars
 def test_long_outputs_switch_writers_midway_without_a_seam(pure_outputs, monkeypatch):
-    """By default short outputs stay pure-Python (no polars import) and long
-    ones switch to the compiled writer after some rows."""
+    """By default short outputs stay pure-Python (no polars import); a long
+    sweep (its grid size known) is compiled from its first chunk, and an
+    output of unknown length switches to the compiled writer after some rows."""
     monkeypatch.setattr(stream, "COMPILED_AFTER_ROWS", 2500)
     monkeypatch.setattr(stream, "COMPILED_MIN_CHUNK", 600)
     used = []
     real = polars_csv.polars_csv_text
-    monkeypatch.setattr(polars_csv, "polars_csv_text", lambda table, header: used.append(len(table)) or real(table, header))
+    monkeypatch.setattr(polars_csv, "polars_csv_text", lambda table, header, **kw: used.append(len(table)) or real(table, header, **kw))
     res = sweep("--chunk-size", "1000", *STATUS_GRIDS["wheel"], compiled=None, monkeypatch=monkeypatch)
     assert (res.exit_code, res.stdout) == pure_outputs["wheel"]
-    assert used and sum(used) < res.stdout.count("\n") - 2500
+    assert used and sum(used) == res.stdout.count("\n") - 1  # every chunk compiled (all >= 600 rows)
+    used.clear()
+    tables = list(deathsphere.sweep(*STATUS_GRIDS["wheel"][1:4:2], mu=1, a=[0.3, 4, 1e-9], chunk_size=1000))
+    out = io.StringIO()
+    stream.write_csv(iter(tables), out)  # no expected size: a stream read as it comes
+    assert out.getvalue() == pure_outputs["wheel"][1]
+    assert used and sum(used) < out.getvalue().count("\n") - 2500
     used.clear()
     res = sweep("--theta", "0:180:10", "--alpha", "0:90:10", compiled=None, monkeypatch=monkeypatch)
     assert res.exit_code == 0 and not used
@@ -270,3 +278,20 @@ def test_the_file_writers_do_not_import_rich():
             "print(sorted(m for m in sys.modules if m == 'rich' or m.startswith('rich.')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+@needs_polars
+def test_compiled_writer_to_a_binary_buffer_writes_the_same_bytes(tmp_path):
+    """A text file's chunks go to its binary buffer as bytes (no Python
+    string per chunk): the same file as the pure-Python writer's, with an
+    empty first chunk keeping its header."""
+    tables = list(deathsphere.sweep("0:180:7.5", "-180:180:7.5", mu=1, a=[0.3, 4], chunk_size=1000))
+    empty = tables[0][np.zeros(len(tables[0]), dtype=bool)]
+    for chunks in (tables, [empty, *tables]):
+        paths = []
+        for compiled in (False, True):
+            path = tmp_path / f"{compiled}.csv"
+            with open(path, "w", encoding="utf-8", newline="") as out:
+                stream.write_csv(iter(chunks), out, compiled=compiled)
+            paths.append(path.read_bytes())
+        assert paths[0] == paths[1] and paths[0].startswith(b"input_row,")

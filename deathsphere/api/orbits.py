@@ -32,6 +32,7 @@ from deathsphere.api.arguments import (
 from deathsphere.api.streams import (
     Chunks,
     evaluate_filtered,
+    cluster_of,
     evaluated,
     grid_requests,
     input_requests,
@@ -197,7 +198,7 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
 
 def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side: str = "inside", g=G, mu=INF,
           omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None, chunk_size: int = CHUNK,
-          stability: bool = True, jobs: int = 1) -> Chunks:
+          stability: bool = True, jobs: int = 1, scheduler=None) -> Chunks:
     """Every combination of the axes, chunk by chunk: ``deathsphere sweep``
     (and ``deathsphere orbit`` given several values).
 
@@ -226,6 +227,12 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     jobs : int
         Processes evaluating chunks (1..256); the chunks come back in grid
         order, the same tables as with one.
+    scheduler : str or distributed.Client, optional
+        Evaluate the chunks on a dask.distributed cluster: the scheduler's
+        address (``"tcp://host:8786"``) or a Client (the ``distributed``
+        extra).  The chunks come back in grid order, the same tables as a
+        local run; at most two chunks per worker are in flight.  Not with
+        ``jobs`` > 1.
 
     Returns
     -------
@@ -284,12 +291,13 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
         raise ParameterError(reason)
     fixed = dict(body=body, side=side, g=g, mu=mu, max_g=max_g)
     work = partial(evaluate_filtered, stability=stability, keep=keep)
-    return Chunks(evaluated(grid_requests(axes, chunk_size, make_requests, fixed), work, jobs), total)
+    cluster = cluster_of(scheduler, jobs)
+    return Chunks(evaluated(grid_requests(axes, chunk_size, make_requests, fixed), work, jobs, cluster), total)
 
 
 def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, body=None, side=None,
                 a=None, r=None, diameter=None, k=None, g=None, mu=None, max_g=None, only=None,
-                stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1) -> Chunks:
+                stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1, scheduler=None) -> Chunks:
     """Horizontal orbits of the requests in a CSV file: ``deathsphere orbit --input FILE``.
 
     The physics of :func:`orbit`, one request per line, streamed: a file of
@@ -308,7 +316,7 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
         it has one (a result CSV fed back with a new ``mu``), else as the
         column.  Not given (None): the file's value, or the parameter's
         default where the file has no column or a cell is empty.
-    only, stability, chunk_size, jobs : as for :func:`sweep`.
+    only, stability, chunk_size, jobs, scheduler : as for :func:`sweep`.
 
     Returns
     -------
@@ -351,4 +359,5 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
 
     reader = request_reader(source, REQUEST_FIELDS, overrides, ALIASES, COLUMNS)
     work = partial(evaluate_filtered, stability=stability, keep=keep)
-    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work, jobs))
+    cluster = cluster_of(scheduler, jobs)
+    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work, jobs, cluster))

@@ -21,7 +21,7 @@ from deathsphere.api.arguments import (
     raise_if_all_invalid,
     sphere_radius,
 )
-from deathsphere.api.streams import Chunks, input_requests, request_reader
+from deathsphere.api.streams import Chunks, cluster_of, input_requests, request_reader
 from deathsphere.constants import (
     BODIES,
     SIDES,
@@ -46,7 +46,7 @@ def _ratio(a, r, side, g=G, diameter=None) -> tuple[float, float]:
 
 def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None, step=0.5,
            stability: bool = False,
-           jobs: int = 1, progress=None) -> Table:
+           jobs: int = 1, progress=None, scheduler=None) -> Table:
     """The allowed (theta, alpha) region of a wheel as data: ``deathsphere map --format csv``.
 
     Its boundaries are the paper's: eq. (0) (the wheel fits; outside eq. 81),
@@ -74,6 +74,10 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
         Also the curve ``stability`` (slow: exact linearisation).
     jobs : int
         Processes computing the stability boundary (same values as with one).
+    scheduler : str or distributed.Client, optional
+        Compute the stability boundary on a dask.distributed cluster (its
+        scheduler's address or a Client; the ``distributed`` extra): the
+        same values as a local run.  Not with ``jobs`` > 1.
     progress : callable, optional
         ``progress(done, total)`` as blocks of thetas of the stability
         boundary are done (the slow part).
@@ -96,6 +100,7 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
                                                       ("jobs", jobs))}
+    cluster = cluster_of(scheduler, int(values["jobs"])) if stability else None
     tick = None
     if progress is not None:
         total, done = theta_grid(values["step"]).size, [0]
@@ -104,7 +109,8 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
             done[0] += n
             progress(done[0], total)
     return boundary_table(a_over_r, values["k"], side == "outside", values["mu"], values["max_g"], values["step"],
-                          stability=bool(stability), progress=tick, jobs=int(values["jobs"]))
+                          stability=bool(stability), progress=tick, jobs=int(values["jobs"]),
+                          cluster=cluster)
 
 
 def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None,

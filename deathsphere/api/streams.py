@@ -77,9 +77,11 @@ def grid_requests(axes: dict, chunk_size: int, make, fixed: dict) -> Iterator[tu
         yield n, make(n, input_row=np.arange(first + 1, first + n + 1), **fixed, **grid)
 
 
-def evaluated(batches, work, jobs: int = 1) -> Iterator[tuple[int, Table]]:
-    """``(n, work(requests))`` per batch, in order; on ``jobs`` processes if > 1."""
-    if jobs == 1:
+def evaluated(batches, work, jobs: int = 1, cluster=None) -> Iterator[tuple[int, Table]]:
+    """``(n, work(requests))`` per batch, in order; on ``jobs`` processes if
+    > 1, or on a dask cluster: ``cluster`` is ``(client, own)`` from
+    :func:`deathsphere.cluster.connect` (``own``: close it at the end)."""
+    if jobs == 1 and cluster is None:
         for n, req in batches:
             yield n, work(req)
         return
@@ -92,7 +94,8 @@ def evaluated(batches, work, jobs: int = 1) -> Iterator[tuple[int, Table]]:
             counts.append(n)
             yield req
 
-    for table in ordered_map(work, requests(), jobs):
+    client, own = cluster if cluster is not None else (None, False)
+    for table in ordered_map(work, requests(), jobs, client=client, close=own):
         yield counts.popleft(), table
 
 
@@ -102,6 +105,19 @@ def evaluate_filtered(req: dict, stability: bool, keep=None) -> Table:
     if keep is not None:
         table = table[np.isin(table["status"], keep)]
     return table
+
+
+def cluster_of(scheduler, jobs: int):
+    """``(client, own)`` for the API's ``scheduler`` argument (None: a
+    local run), connected now, so that a missing extra or an unreachable
+    scheduler fails before any work."""
+    if scheduler is None:
+        return None
+    if jobs != 1:
+        raise ParameterError("give jobs (local processes) or a scheduler (a dask cluster), not both", "scheduler")
+    from deathsphere.cluster import connect
+
+    return connect(scheduler)
 
 
 def input_requests(reader, chunk_size: int, make) -> Iterator[tuple[int, dict]]:

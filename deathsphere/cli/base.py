@@ -20,11 +20,13 @@ import os
 import sys
 import time
 from contextlib import contextmanager
+from functools import partial
 
 import click
 
 from deathsphere import __version__
 from deathsphere.exitcodes import ExitCode
+from deathsphere.memory import reuse_freed_memory
 from deathsphere.params import ParameterError
 from deathsphere.writers.stream import write_csv, write_json, write_ndjson
 
@@ -218,7 +220,7 @@ def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
             # that no trace of it is left in the table
             shown = terminal_view(tally.count(tables(bar)), title, view)
         else:
-            emit(tally.count(tables(bar)), fmt, title, view, output=output)
+            emit(tally.count(tables(bar)), fmt, title, view, output=output, expected=chunks.total)
     if fmt == "table" and shown is not None:
         stdout_console().print(shown[0])
     return tally
@@ -232,19 +234,24 @@ def finish(tally: Tally) -> None:
         sys.exit(ExitCode.INVALID_ROWS)
 
 
-def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | None = None) -> int:
+def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | None = None,
+         expected: int | None = None) -> int:
     """Write tables in the chosen format to stdout (or to the file
     ``output``, already checked by :class:`OutputPath`); returns the row count.
 
     The terminal view draws at most :data:`MAX_TERMINAL_ROWS` rows (it
     still consumes every chunk, so the count and the exit status are those
     of the whole result) and says how many it left out.  ``parquet`` needs
-    ``output`` (a binary file with its own row groups, never a terminal)."""
+    ``output`` (a binary file with its own row groups, never a terminal).
+    ``expected``: the rows to come when known (a sweep's grid), which lets
+    a long CSV take the compiled writer from its first chunk."""
     if fmt == "parquet":
         from deathsphere.writers.parquet import write_parquet
 
         return write_parquet(chunks, output)
     writer = {"csv": write_csv, "json": write_json, "ndjson": write_ndjson}.get(fmt)
+    if writer is write_csv:
+        writer = partial(write_csv, expected=expected)
     if writer is not None and output is not None:
         with open(output, "w", encoding="utf-8", newline="") as out:
             return writer(chunks, out)
@@ -392,4 +399,5 @@ def cli():
 
 def main(argv=None) -> None:
     """Console-script entry point (see :class:`DeathsphereGroup` for exit codes)."""
+    reuse_freed_memory()
     cli.main(args=argv)

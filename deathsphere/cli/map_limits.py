@@ -25,6 +25,7 @@ from deathsphere.cli.options import (
     jobs_option,
     output_options,
     param_option,
+    scheduler_option,
     setup_options,
     single,
     stability_option,
@@ -45,8 +46,9 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
     "unstable parts of the allowed region and the boundary between them.  Wheel only: a rolling sphere "
     "has no tilt alpha (and all its horizontal orbits are stable)."))
 @jobs_option()
+@scheduler_option()
 @output_options()
-def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, jobs, fmt):
+def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, jobs, scheduler, fmt):
     """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.
 
     Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
@@ -88,7 +90,8 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
         stdout_console().print(to_rich(char_map(cells)), end="")
         return
     with progress("boundaries", None) as bar:
-        table = api.region(stability=stability, progress=bar.update, **given(step=step, jobs=jobs), **options)
+        table = api.region(stability=stability, progress=bar.update,
+                           **given(step=step, jobs=jobs, scheduler=scheduler), **options)
     emit([table], fmt)
 
 

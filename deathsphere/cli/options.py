@@ -123,6 +123,13 @@ def jobs_option():
     return param_option("jobs")
 
 
+def scheduler_option():
+    return single(
+        "--scheduler", default=None, metavar="ADDRESS",
+        help="Evaluate on the dask.distributed cluster whose scheduler is at ADDRESS (tcp://host:8786; the "
+             "distributed extra); the output is that of a local run.  Not with --jobs.")
+
+
 def only_option(statuses):
     return click.option("--only", multiple=True, type=click.Choice(statuses, case_sensitive=False),
                         help="Keep only rows with this status (repeatable), e.g. --only ok.")

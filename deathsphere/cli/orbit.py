@@ -16,6 +16,7 @@ from deathsphere.cli.options import (
     output_options,
     param_option,
     params_options,
+    scheduler_option,
     setup_options,
     single,
     stability_option,
@@ -117,12 +118,13 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
 @param_option("chunk_size", help="Orbits evaluated per chunk; memory stays flat whatever the grid size (above "
               "131072, ~256 MiB a chunk, N is clamped to it; the output is the same).")
 @jobs_option()
+@scheduler_option()
 @single("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
         help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
              "of stdout.  Parquet needs the fast extra.")
 @output_options(tuple(SWEEP_FORMATS))
 def sweep_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
-                  stability, chunk_size, jobs, output, fmt):
+                  stability, chunk_size, jobs, scheduler, output, fmt):
     """Stream a grid of orbits (all combinations) as CSV, NDJSON, JSON or Parquet.
 
     The options of orbit; -a, -r, --diameter and -k may be grid axes too.
@@ -138,9 +140,11 @@ def sweep_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, d
       deathsphere sweep --theta 60 --alpha 1:50:1 -a 0.1 -a 0.3 --format ndjson
       deathsphere sweep --body sphere --theta 30:150:10 --omega3 60:120:20
       deathsphere sweep --theta 0:180:0.25 --alpha 0:90:0.25 --output grid.parquet
+      deathsphere sweep --theta 0:180:0.1 --alpha 0:90:1 --scheduler tcp://h:8786
     """
     fmt = sweep_format(fmt, output)
     options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
                     a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
-    chunks = orbit_chunks(input, stability, only, options, **given(chunk_size=chunk_size, jobs=jobs))
+    chunks = orbit_chunks(input, stability, only, options, **given(chunk_size=chunk_size, jobs=jobs,
+                                                                        scheduler=scheduler))
     finish(stream(chunks, fmt, label="sweep", output=output))

@@ -59,7 +59,7 @@ def _stability_part(theta_deg: np.ndarray, a_over_r: float, k: float, outside: b
 
 
 def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: float, step_deg: float,
-                   stability: bool = False, progress=None, jobs: int = 1) -> Table:
+                   stability: bool = False, progress=None, jobs: int = 1, cluster=None) -> Table:
     """Every boundary curve alpha(theta) of the allowed region, one row per
     point (curve, equation, theta_deg, alpha_deg), theta on a grid of
     ``step_deg`` over (0, 180) deg, each alpha root-found to 1e-9 rad or better.
@@ -68,7 +68,8 @@ def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: f
     change from stable to unstable (:func:`stability_boundary_alphas`,
     bisected to 1e-10 rad between samples 0.25 deg apart in alpha; beyond
     the paper), in blocks of thetas on ``jobs`` processes (the same values
-    as with one).  ``progress(n)`` is told as each n theta values are done
+    as with one; or on a dask cluster, ``cluster`` being ``(client, own)``
+    from :func:`deathsphere.cluster.connect`).  ``progress(n)`` is told as each n theta values are done
     (the stability boundary is the slow part: ~100x the others)."""
     theta = theta_grid(step_deg)
     curves = region.boundary_alphas(np.deg2rad(theta), a_over_r, 1.0, k, outside=outside, mu=mu, max_g=max_g)
@@ -76,7 +77,8 @@ def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: f
         blocks = [theta[start:start + _STABILITY_CHUNK] for start in range(0, theta.size, _STABILITY_CHUNK)]
         work = partial(_stability_part, a_over_r=a_over_r, k=k, outside=outside, mu=mu, max_g=max_g)
         parts = []
-        for block, part in zip(blocks, ordered_map(work, blocks, jobs)):
+        client, own = cluster if cluster is not None else (None, False)
+        for block, part in zip(blocks, ordered_map(work, blocks, jobs, client=client, close=own)):
             parts.append(part)
             if progress is not None:
                 progress(block.size)

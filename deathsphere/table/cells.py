@@ -46,7 +46,16 @@ def undefined_text_mask(values: np.ndarray) -> np.ndarray:
     """:func:`is_undefined_text` of every cell of a text column, at numpy's speed."""
     if values.dtype.kind in "US":
         return values == values.dtype.type()
-    return (values == "") | np.equal(values, None)
+    distinct = set(values.tolist()) if values.size else set()
+    # a result's text column holds a handful of distinct values: compare
+    # row by row only for those present (an object comparison per row is
+    # slow, and most columns hold no empty text or no None at all)
+    mask = np.zeros(values.shape, dtype=bool)
+    if "" in distinct:
+        mask |= values == ""
+    if None in distinct:
+        mask |= np.equal(values, None)
+    return mask
 
 
 def text_cells(values: np.ndarray) -> list:

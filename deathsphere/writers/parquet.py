@@ -32,7 +32,11 @@ def write_parquet(chunks: Iterable, path: str) -> int:
         for table in chunks:
             if schema is None:
                 schema = frames.arrow_schema(table)
-                writer = pq.ParquetWriter(path, schema)
+                # dictionaries for the text columns only: a float column of
+                # distinct results would be dictionary-encoded in vain (pyarrow
+                # tries it, then falls back), the chunk's costliest step
+                text = [f.name for f in schema if pa.types.is_string(f.type)]
+                writer = pq.ParquetWriter(path, schema, use_dictionary=text)
             if len(table) == 0:
                 continue
             writer.write_table(frames.arrow_table(table, schema), row_group_size=len(table))

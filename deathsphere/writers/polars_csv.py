@@ -29,7 +29,10 @@ pyarrow take a noticeable time to import.
 from __future__ import annotations
 
 import importlib.util
+import os
+import re
 import math
+import threading
 
 import numpy as np
 
@@ -55,14 +58,17 @@ def _module(name: str) -> bool:
 
 
 _csv_ok: bool | None = None
+#: The check runs once even when a warm-up thread and the writer ask at once.
+_csv_lock = threading.Lock()
 
 
 def csv_available() -> bool:
     """polars is installed and formats floats as repr does (checked once)."""
     global _csv_ok
-    if _csv_ok is None:
-        _csv_ok = _module("polars") and _polars_matches_repr()
-    return _csv_ok
+    with _csv_lock:
+        if _csv_ok is None:
+            _csv_ok = _module("polars") and _polars_matches_repr()
+        return _csv_ok
 
 
 def _polars_matches_repr() -> bool:
@@ -77,13 +83,18 @@ def _polars_matches_repr() -> bool:
     return text.split("\n")[:-1] == [repr(x) for x in probes]
 
 
-def _quote(pl, s):
-    """The contract's CSV quoting on a polars String series (nulls stay null)."""
-    needs = s.str.contains(r'[,"\r\n]').fill_null(False)
-    if not needs.any():
+def _needs_quote(text: str) -> bool:
+    return "," in text or '"' in text or "\r" in text or "\n" in text
+
+
+def _quote(pl, s, distinct):
+    """The contract's CSV quoting on a polars String series (nulls stay null).
+    ``distinct`` are its values: a result's text columns hold a handful of
+    statuses and reasons, so the rule is decided on those, not per row."""
+    bad = [x for x in distinct if isinstance(x, str) and _needs_quote(x)]
+    if not bad:
         return s
-    quoted = '"' + s.str.replace_all('"', '""', literal=True) + '"'
-    return pl.select(pl.when(needs).then(quoted).otherwise(s)).to_series().alias(s.name)
+    return s.replace({x: '"' + x.replace('"', '""') + '"' for x in bad})
 
 
 def _series(pl, name: str, values: np.ndarray):
@@ -105,21 +116,40 @@ def _series(pl, name: str, values: np.ndarray):
             s = pl.Series(name, items, strict=True)
         except Exception:
             s = None
-        if s is not None and s.dtype == pl.String:
-            return _quote(pl, s)
+        if s is not None and s.dtype in (pl.String, pl.Null):  # Null: every cell None, written empty
+            return _quote(pl, s, set(items))
         if s is not None and s.dtype == pl.Int64 :
             return s
     # anything else (bools, mixed objects): the pure-Python text, already quoted
     return pl.Series(name, column_strings(name, values), dtype=pl.String)
 
 
-def polars_csv_text(table, header: bool) -> str:
-    """One chunk as CSV text, equal to :func:`deathsphere.table.cells.csv_text`."""
+def polars_csv_text(table, header: bool, sink=None) -> str:
+    """One chunk as CSV text, equal to :func:`deathsphere.table.cells.csv_text`.
+    Given ``sink``, a binary file, the text is written there as UTF-8 and
+    '' returned: a chunk's text never exists as a Python string (polars
+    would build it as bytes, decode it, and the text file encode it back:
+    three copies of ~5 MB per chunk of 16,384 rows)."""
     import polars as pl
 
     names = table.names
     head = ",".join(names) + "\n" if header and names else ""
+    if sink is not None:
+        sink.write(head.encode())
+        head = ""
     if len(table) == 0:
         return head
     frame = pl.DataFrame([_series(pl, n, table.columns[n]) for n in names])
-    return head + frame.write_csv(include_header=False, quote_style="never", null_value="", line_terminator="\n")
+    options = dict(include_header=False, quote_style="never", null_value="", line_terminator="\n")
+    if sink is None:
+        return head + frame.write_csv(**options)
+    try:
+        frame.write_csv(sink, **options)
+    except OSError as exc:
+        # polars names the OS's error only in words ("Broken pipe (os error
+        # 32)"); the command line tells a reader gone (EPIPE) by its errno
+        code = re.search(r"os error (\d+)", str(exc)) if exc.errno is None else None
+        if code is None:
+            raise
+        raise OSError(int(code.group(1)), os.strerror(int(code.group(1)))) from None
+    return ""

@@ -24,31 +24,102 @@ FORMATS = ("table", "csv", "json", "ndjson")
 COMPILED_CSV: bool | None = None
 
 #: With COMPILED_CSV None the compiled writer takes over once an output is
-#: this long, and only for chunks of COMPILED_MIN_CHUNK rows or more:
-#: importing polars costs ~0.2 s, which a short output (`orbit`, a small
-#: sweep) would pay in latency, and polars' per-call cost (~1 ms) is more
-#: than the pure-Python writer spends on a few hundred rows.
+#: this long (from the first chunk when the output is known to be at least
+#: this long: a sweep's grid), and only for chunks of COMPILED_MIN_CHUNK
+#: rows or more: importing polars costs ~0.2 s, which a short output
+#: (`orbit`, a small sweep) would pay in latency, and polars' per-call cost
+#: (~1 ms) is more than the pure-Python writer spends on a few hundred rows.
 COMPILED_AFTER_ROWS = 20_000
 COMPILED_MIN_CHUNK = 1024
 
 
-def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None) -> int:
+def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expected: int | None = None) -> int:
     """Stream tables as CSV: the header once, then every chunk's rows.
-    ``compiled`` None takes :data:`COMPILED_CSV`."""
+    ``compiled`` None takes :data:`COMPILED_CSV`; ``expected`` is the
+    number of rows to come when known (None: unknown)."""
     mode = COMPILED_CSV if compiled is None else compiled
     fast = None
-    rows = 0
-    for i, table in enumerate(chunks):
-        text = csv_text
-        if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
-            if fast is None:
-                from deathsphere.writers import polars_csv
+    # a long output known in advance takes the compiled writer at once: the
+    # first COMPILED_AFTER_ROWS rows by the pure one would cost more than
+    # importing polars
+    rows = COMPILED_AFTER_ROWS if expected is not None and expected >= COMPILED_AFTER_ROWS else 0
+    if mode or (mode is None and rows):
+        _warm_up_polars()
+    written = 0
+    # the compiled writer writes bytes straight to a text file's buffer
+    utf8 = (getattr(out, "encoding", None) or "").lower().replace("-", "") == "utf8"
+    binary = getattr(out, "buffer", None) if utf8 else None
+    behind = None
+    try:
+        for i, table in enumerate(chunks):
+            text = csv_text
+            if mode or (mode is None and rows >= COMPILED_AFTER_ROWS and len(table) >= COMPILED_MIN_CHUNK):
+                if fast is None:
+                    from deathsphere.writers import polars_csv
 
-                fast = polars_csv.polars_csv_text if polars_csv.csv_available() else False
-            text = fast or csv_text
-        out.write(text(table, header=i == 0))
-        rows += len(table)
-    return rows
+                    fast = polars_csv.polars_csv_text if polars_csv.csv_available() else False
+                text = fast or csv_text
+            if text is csv_text or binary is None:
+                if behind is not None:
+                    behind.wait()
+                out.write(text(table, header=i == 0))
+            elif expected is None:
+                # a stream of unknown length (an --input file) keeps to one
+                # chunk in memory: it holds the reader's blocks besides
+                out.flush()  # what the text layer holds goes first
+                text(table, header=i == 0, sink=binary)
+            else:
+                if behind is None:
+                    out.flush()  # what the text layer holds goes first
+                    behind = _WriteBehind()
+                behind.put(text, table, i == 0, binary)
+            rows += len(table)
+            written += len(table)
+        if behind is not None:
+            behind.wait()
+    finally:
+        if behind is not None:
+            behind.close()
+    return written
+
+
+class _WriteBehind:
+    """The compiled writer on one thread: a chunk is formatted and written
+    there while the caller evaluates the next one.  polars formats and the
+    OS writes without holding the GIL, so on two cores the two overlap.  One
+    chunk at most is in the thread's hands, so the chunks stay in order and
+    memory grows by one chunk; a failed write (a reader gone) is raised
+    here at the next chunk or at the end."""
+
+    def __init__(self):
+        from concurrent.futures import ThreadPoolExecutor
+
+        self.pool = ThreadPoolExecutor(1, thread_name_prefix="deathsphere-writer")
+        self.pending = None
+
+    def put(self, text, table, header: bool, sink) -> None:
+        self.wait()
+        self.pending = self.pool.submit(text, table, header=header, sink=sink)
+
+    def wait(self) -> None:
+        if self.pending is not None:
+            done, self.pending = self.pending, None
+            done.result()
+
+    def close(self) -> None:
+        self.pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _warm_up_polars() -> None:
+    """Import polars and check it against repr
+    (:func:`deathsphere.writers.polars_csv.csv_available`, ~0.3 s, much of
+    it in compiled code) on a thread while the first chunk is evaluated;
+    the first compiled chunk waits for it (the check runs once, under a lock)."""
+    import threading
+
+    from deathsphere.writers import polars_csv
+
+    threading.Thread(target=polars_csv.csv_available, name="deathsphere-polars", daemon=True).start()
 
 
 def write_ndjson(chunks: Iterable, out: IO[str]) -> int:

@@ -70,9 +70,10 @@ def test_progress_bar_on_a_terminal_never_swallows_stdout():
     """With stderr a terminal the progress bar of a long sweep (a few
     seconds) shows there, and every CSV row still goes to stdout (rich's
     Live must not redirect stdout)."""
-    proc, seen = _with_stderr_on_a_terminal("sweep", "--theta", "0:180:0.25", "--alpha", "0:90:0.25")
+    # 1.3 M orbits: a few seconds, well past the bar's delay however fast the sweep
+    proc, seen = _with_stderr_on_a_terminal("sweep", "--theta", "0:180:0.05", "--alpha", "0:90:0.25")
     lines = proc.stdout.decode().splitlines()
-    assert proc.returncode == 0 and len(lines) == 1 + 721 * 361
+    assert proc.returncode == 0 and len(lines) == 1 + 3601 * 361
     assert b"input_row" not in seen and b"sweep" in seen  # the bar, not the data, on the terminal
 
 

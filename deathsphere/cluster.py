@@ -1,0 +1,111 @@
+"""Chunks on a dask.distributed cluster: ``--scheduler ADDRESS`` and the
+API's ``scheduler=`` (the optional ``distributed`` extra:
+``pip install 'deathsphere[distributed]'``).
+
+The cluster is only a place to evaluate chunks: the requests are built
+here, each chunk is one task, and the results come back here in submission
+order and are written by this process, so the output is that of a local
+run, byte for byte.  At most :data:`AHEAD_PER_WORKER` chunks per worker are
+in flight: enough to keep every worker busy while this process writes, and
+memory stays that of a few chunks however long the grid.
+
+Nothing here imports dask until a scheduler is asked for: distributed takes
+about a second to import, which no local command should pay.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from typing import Callable, Iterable, Iterator
+
+from deathsphere.errors import ParameterError
+from deathsphere.memory import reuse_freed_memory
+
+#: The line a run asking for a cluster gets when the extra is missing.
+EXTRA_MISSING = "--scheduler needs dask.distributed: pip install 'deathsphere[distributed]'"
+#: Seconds to reach the scheduler before giving up: a wrong address should
+#: fail within a few seconds, not hang the command.
+CONNECT_TIMEOUT_S = 5
+#: Chunks submitted ahead per worker.  Two keep a worker busy while its last
+#: result travels back; more would only hold memory on this side.
+AHEAD_PER_WORKER = 2
+
+
+def connect(scheduler, timeout: float | None = None):
+    """``(client, own)``: a :class:`distributed.Client` for ``scheduler`` (an
+    address such as ``tcp://host:8786``, or a Client, used as it is) and
+    whether this call opened it (and so must close it).  Raises
+    :class:`ParameterError` (param ``scheduler``) when the extra is missing
+    or the scheduler cannot be reached within ``timeout`` seconds: before
+    any work (``timeout`` None: :data:`CONNECT_TIMEOUT_S`)."""
+    try:
+        from distributed import Client
+    except ImportError:
+        raise ParameterError(EXTRA_MISSING, "scheduler") from None
+    timeout = CONNECT_TIMEOUT_S if timeout is None else timeout
+
+    if isinstance(scheduler, Client):
+        return scheduler, False
+    if not isinstance(scheduler, str) or not scheduler.strip():
+        raise ParameterError(f"scheduler must be an address such as tcp://host:8786 or a distributed.Client "
+                             f"(got {scheduler!r})", "scheduler")
+    try:
+        client = Client(scheduler.strip(), timeout=timeout, set_as_default=False)
+    except Exception as exc:  # OSError, TimeoutError, a malformed address: one line, no traceback
+        words = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        raise ParameterError(f"cannot reach the dask scheduler at {scheduler!r} within {timeout:g} s: {words}",
+                             "scheduler") from None
+    return client, True
+
+
+def workers(client) -> int:
+    """Workers the scheduler knows now (at least 1: more may join later)."""
+    try:
+        return max(1, len(client.scheduler_info().get("workers", {})))
+    except Exception:
+        return 1
+
+
+class OnWorker:
+    """``work`` as a task: the first call in a worker process first sets its
+    malloc thresholds (:func:`deathsphere.memory.reuse_freed_memory`)."""
+
+    _ready = False  # per process: a class attribute of the worker's copy of the module
+
+    def __init__(self, work: Callable):
+        self.work = work
+
+    def __call__(self, item):
+        if not OnWorker._ready:
+            reuse_freed_memory()
+            OnWorker._ready = True
+        return self.work(item)
+
+
+def ordered_map(work: Callable, items: Iterable, client, close: bool = False) -> Iterator:
+    """``work(item)`` for each item on the cluster of ``client``, handed
+    back in input order.  Items are drawn lazily, at most
+    :data:`AHEAD_PER_WORKER` per worker ahead of the one being handed back.
+    Leaving early (a reader gone, a failed write, Ctrl-C) cancels the tasks
+    still pending on the cluster; ``close`` closes the client at the end."""
+    pending = deque()
+    work = OnWorker(work)
+    try:
+        ahead = AHEAD_PER_WORKER * workers(client)
+        for item in items:
+            # pure=False: two equal chunks are two tasks (dask would otherwise
+            # hash the requests to decide, which costs more than it saves)
+            pending.append(client.submit(work, item, pure=False))
+            if len(pending) >= ahead:
+                yield pending.popleft().result()
+        while pending:
+            yield pending.popleft().result()
+    finally:
+        # release, not Client.cancel: cancel waits for the scheduler's answer,
+        # and after a KeyboardInterrupt inside a wait that answer never came
+        # (the command hung); a released task nobody wants is dropped by the
+        # scheduler (queued ones are never run)
+        while pending:
+            pending.popleft().release()
+        if close:
+            client.close(timeout=CONNECT_TIMEOUT_S)
