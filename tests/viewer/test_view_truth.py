@@ -225,7 +225,15 @@ def test_playing_reaches_the_event(tmp_path, browser):
     series, summary, states, _ = run_case("unstable", periods=1)
     out = tmp_path / "u.html"
     write_view(out, series, summary, body_frames(summary, states))
-    layout, attrs, _ = page_layout(browser, out, 1024, 768, budget_ms=2800)
-    assert attrs["playback"] == "1"
-    assert attrs["events"] == "1"
-    assert float(attrs["time"]) == pytest.approx(float(summary["event_time_s"][0]), abs=1e-6)
+    # the page holds the end for 2 s, then loops; headless chromium's
+    # virtual clock starts the animation a little later on a loaded machine,
+    # so look at three moments inside the hold: playing must reach the end
+    seen = []
+    for budget in (2800, 3200, 2400):
+        layout, attrs, _ = page_layout(browser, out, 1024, 768, budget_ms=budget)
+        assert attrs["playback"] == "1"
+        seen.append((attrs["events"], float(attrs["time"])))
+        if attrs["events"] == "1":
+            break
+    assert seen[-1][0] == "1", seen
+    assert seen[-1][1] == pytest.approx(float(summary["event_time_s"][0]), abs=1e-6)
