@@ -64,7 +64,8 @@ ORBIT_ROW_BYTES = 1100
 MAX_ORBIT_ROWS = CALL_BYTES // ORBIT_ROW_BYTES
 #: Grid points per chunk of :func:`sweep` and rows per chunk of
 #: :func:`orbit_input` at most: a larger ``chunk_size`` is clamped to this
-#: (the output is the same whatever the chunk size).  A chunk, with its CSV
+#: (the rows are the same; the stability columns may differ in the last
+#: digit with the chunk size, docs/contract.md).  A chunk, with its CSV
 #: text, peaks at ~2 kB per row (tracemalloc, with or without stability), so
 #: this keeps one chunk under ~256 MiB; each of ``jobs`` processes holds one.
 MAX_CHUNK_ROWS = 131072

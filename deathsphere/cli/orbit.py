@@ -116,7 +116,7 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
 @cli.command("sweep", short_help="Stream a grid of orbits as CSV, NDJSON, JSON or Parquet.")
 @orbit_options
 @param_option("chunk_size", help="Orbits evaluated per chunk; memory stays flat whatever the grid size (above "
-              "131072, ~256 MiB a chunk, N is clamped to it; the output is the same).")
+              "131072, ~256 MiB a chunk, N is clamped to it).")
 @jobs_option()
 @scheduler_option()
 @single("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
