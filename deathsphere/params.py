@@ -4,8 +4,8 @@ defined once and checked once (docs/contract.md, "Inputs").
 The command line, ``--input`` rows and the Python API all validate through
 this module: :func:`problems` checks a whole array of values at once (no
 loop over rows) and returns the reason each value is refused ('' where it
-is fine); :func:`check` does the same for one value and raises
-:class:`ParameterError` with the one-line message the command line prints.
+is fine); the API (:mod:`deathsphere.api.arguments`) raises
+:class:`ParameterError` with that reason, the one line the command line prints.
 
 Why the magnitude bounds: every dimensional input lies within 1e-9..1e9 of
 its SI unit.  Products of a few such numbers (Omega^2 r', v^2 / r', ...)
@@ -273,20 +273,6 @@ def failing(name: str, values) -> np.ndarray:
         if p.integer:
             bad |= np.isfinite(v) & (v != np.round(v))
     return bad
-
-
-def check(name: str, value) -> float:
-    """``value`` as a float if it is an allowed ``name``; else
-    :class:`ParameterError` with the one-line reason."""
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        try:
-            value = float(value)
-        except (TypeError, ValueError):
-            raise ParameterError(f"{name} must be a number (got {value!r})", name) from None
-    reason = problems(name, [value])[0]
-    if reason:
-        raise ParameterError(reason, name)
-    return float(value)
 
 
 def first_problem(name: str, values) -> str:

@@ -7,19 +7,11 @@ budget and dumps the DOM.  Skipped only where no browser binary is on PATH.
 """
 
 import pytest
-from view_page import body_attributes, browser_binary, dump_dom
+from view_page import body_attributes, dump_dom
 from viewer_cases import run_case
 
 from deathsphere.simulation.frames import body_frames
 from deathsphere.viewer import write_view
-
-
-@pytest.fixture(scope="module")
-def browser():
-    binary = browser_binary()
-    if binary is None:
-        pytest.skip("no chromium/chrome binary on PATH: the real-browser check of the 3-D viewer needs one")
-    return binary
 
 
 @pytest.mark.parametrize("name", ["wheel_kicked", "sphere_inside", "vertical", "unstable"])

@@ -2,12 +2,11 @@
 aliasing between frames, a true clock, frames streamed, a layout that fits
 a projector, and nothing on stdout when a file is written."""
 
-import math
 
 import numpy as np
 import pytest
-from view_page import browser_binary, page_data, page_layout
-from viewer_cases import CASES, norm, run_case
+from view_page import page_data, page_layout
+from viewer_cases import norm, run_case
 
 from deathsphere import simulation as sim
 from deathsphere.model import Setup
@@ -177,12 +176,6 @@ def test_writing_a_file_prints_nothing_on_stdout(tmp_path, run, ext):
 
 # ---------------------------------------------------------------- a real browser
 
-@pytest.fixture(scope="module")
-def browser():
-    binary = browser_binary()
-    if binary is None:
-        pytest.skip("no chromium/chrome binary on PATH: the real-browser check of the 3-D viewer needs one")
-    return binary
 
 
 def _inside(box, window):
