@@ -26,9 +26,10 @@ from deathsphere.table import Table
 
 #: Orbits evaluated per piece (temporaries stay in cache, as the wheel's).
 CHUNK = 1 << 14
-#: Orbits per batch of the stability analysis: small, so that its temporaries
-#: (~10 kB an orbit) stay in cache (measured fastest of 128..4096).
-STABILITY_CHUNK = 512
+#: Orbits per batch of the stability analysis: the per-batch overhead
+#: against temporaries falling out of cache (measured fastest of 128..16384;
+#: docs/machine.md, "Performance").
+STABILITY_CHUNK = 4096
 #: Rows one call may return (about 1 GiB at ~500 bytes a row).
 MAX_RIDE_ROWS = 2_000_000
 

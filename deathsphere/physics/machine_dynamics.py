@@ -23,11 +23,13 @@ Equations (docs/machine.md sec. 5):
 * the wheels' axial balance: J dw/dt . e1 = ((P - C) x F) . e1 (free axle).
 
 The accelerations enter through d2G/dt2 and dL_G/dt affinely in (dw/dt,
-M_p): the four equations are assembled from five evaluations by
-second-order Taylor arithmetic (:class:`_Jet`) and solved as a 4x4 linear
-system per body.  Only +, -, *, / and sqrt are used, so a complex step
-differentiates the whole right-hand side exactly (the stability's
-Jacobian).
+M_p): the residual of the four equations is evaluated for four trial
+accelerations (the geometry's derivatives written out in :class:`_Rates`,
+the angular momentum's rate by first-order Taylor arithmetic, :class:`_Jet`)
+and solved as a 4x4 linear system per body.  Only +, -, *, / and sqrt are
+used, so a complex step differentiates the whole right-hand side exactly;
+the stability's Jacobian differentiates the residual at the solved
+accelerations instead (implicit function, :func:`_rhs_directional`).
 """
 
 from __future__ import annotations
@@ -36,10 +38,14 @@ import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.machine import ride_orbit
-from deathsphere.physics.stability.reduction import COMPLEX_STEP, householder_complement, spectrum
+from deathsphere.physics.stability.reduction import (
+    COMPLEX_STEP,
+    householder_complement,
+    spectrum_from_invariants,
+)
 from deathsphere.physics.vectors import zcross
 
-__all__ = ["MachineParams", "machine_rhs", "machine_orbit_state", "machine_stability"]
+__all__ = ["MachineParams", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
 
 
 class MachineParams(tuple):
@@ -61,70 +67,38 @@ class MachineParams(tuple):
 
 
 class _Jet:
-    """x(eps) = x0 + x1 eps + x2 eps^2 / 2, truncated (x1, x2: first and
-    second time derivatives; x2 None: a first-order jet, whose products
-    skip the second order).  Vectors carry a leading axis of 3."""
+    """x(eps) = x0 + x1 eps, truncated: a value and its time derivative.
+    Vectors carry a leading axis of 3."""
 
-    __slots__ = ("x0", "x1", "x2")
+    __slots__ = ("x0", "x1")
     __array_ufunc__ = None
 
-    def __init__(self, x0, x1, x2=None):
-        self.x0, self.x1, self.x2 = x0, x1, x2
+    def __init__(self, x0, x1):
+        self.x0, self.x1 = x0, x1
 
     def __add__(self, o):
         if isinstance(o, _Jet):
-            x2 = None if self.x2 is None or o.x2 is None else self.x2 + o.x2
-            return _Jet(self.x0 + o.x0, self.x1 + o.x1, x2)
-        return _Jet(self.x0 + o, self.x1, self.x2)
+            return _Jet(self.x0 + o.x0, self.x1 + o.x1)
+        return _Jet(self.x0 + o, self.x1)
 
     __radd__ = __add__
 
     def __neg__(self):
-        return _Jet(-self.x0, -self.x1, None if self.x2 is None else -self.x2)
+        return _Jet(-self.x0, -self.x1)
 
     def __sub__(self, o):
         return self + (-o)
 
-    def __rsub__(self, o):
-        return (-self) + o
-
     def __mul__(self, o):
         if isinstance(o, _Jet):
-            x2 = (None if self.x2 is None or o.x2 is None
-                  else self.x2 * o.x0 + 2 * self.x1 * o.x1 + self.x0 * o.x2)
-            return _Jet(self.x0 * o.x0, self.x1 * o.x0 + self.x0 * o.x1, x2)
-        return _Jet(self.x0 * o, self.x1 * o, None if self.x2 is None else self.x2 * o)
+            return _Jet(self.x0 * o.x0, self.x1 * o.x0 + self.x0 * o.x1)
+        return _Jet(self.x0 * o, self.x1 * o)
 
     __rmul__ = __mul__
 
-    def __truediv__(self, o):
-        if isinstance(o, _Jet):
-            q0 = self.x0 / o.x0
-            q1 = (self.x1 - q0 * o.x1) / o.x0
-            q2 = (None if self.x2 is None or o.x2 is None
-                  else (self.x2 - 2 * q1 * o.x1 - q0 * o.x2) / o.x0)
-            return _Jet(q0, q1, q2)
-        return _Jet(self.x0 / o, self.x1 / o, None if self.x2 is None else self.x2 / o)
-
-    def __rtruediv__(self, o):
-        q0 = o / self.x0
-        q1 = -q0 * self.x1 / self.x0
-        return _Jet(q0, q1, None if self.x2 is None else (-2 * q1 * self.x1 - q0 * self.x2) / self.x0)
-
-    def __getitem__(self, i):
-        return _Jet(self.x0[i], self.x1[i], None if self.x2 is None else self.x2[i])
-
-
-def _jsqrt(x: _Jet) -> _Jet:
-    s0 = np.sqrt(x.x0)
-    s1 = x.x1 / (2 * s0)
-    return _Jet(s0, s1, None if x.x2 is None else (x.x2 - 2 * s1 * s1) / (2 * s0))
-
 
 def _jdot(u: _Jet, v: _Jet) -> _Jet:
-    x2 = (None if u.x2 is None or v.x2 is None
-          else np.sum(u.x2 * v.x0 + 2 * u.x1 * v.x1 + u.x0 * v.x2, axis=0))
-    return _Jet(np.sum(u.x0 * v.x0, axis=0), np.sum(u.x1 * v.x0 + u.x0 * v.x1, axis=0), x2)
+    return _Jet(np.sum(u.x0 * v.x0, axis=0), np.sum(u.x1 * v.x0 + u.x0 * v.x1, axis=0))
 
 
 def _cross(u, v):
@@ -132,9 +106,7 @@ def _cross(u, v):
 
 
 def _jcross(u: _Jet, v: _Jet) -> _Jet:
-    x2 = (None if u.x2 is None or v.x2 is None
-          else _cross(u.x2, v.x0) + 2 * _cross(u.x1, v.x1) + _cross(u.x0, v.x2))
-    return _Jet(_cross(u.x0, v.x0), _cross(u.x1, v.x0) + _cross(u.x0, v.x1), x2)
+    return _Jet(_cross(u.x0, v.x0), _cross(u.x1, v.x0) + _cross(u.x0, v.x1))
 
 
 def _dot(u, v):
@@ -142,85 +114,171 @@ def _dot(u, v):
 
 
 def _geometry(C, E, a, t):
-    """(e1 unit, e3, Q, P) from C and E, on jets or arrays (the same lines)."""
-    jet = isinstance(C, _Jet)
-    dot = _jdot if jet else _dot
-    sqrt = _jsqrt if jet else np.sqrt
-    h1 = E / sqrt(dot(E, E))
-    cperp = C - h1 * dot(C, h1)
-    e3 = cperp / sqrt(dot(cperp, cperp))
+    """(e1 unit, e3, Q, P) from the wheel centre C and the axle vector E."""
+    h1 = E / np.sqrt(_dot(E, E))
+    cperp = C - h1 * _dot(C, h1)
+    e3 = cperp / np.sqrt(_dot(cperp, cperp))
     Q = C + e3 * (a - t)
-    P = Q + Q * (t / sqrt(dot(Q, Q)))
+    P = Q + Q * (t / np.sqrt(_dot(Q, Q)))
     return h1, e3, Q, P
 
 
-def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
-    """d(state)/dt of the machine's exact equations (module docstring);
-    ``state`` (9, ...) real or complex.  ``frame_rate`` [rad/s]: components
-    in a frame turning at that rate about +z.  With ``forces`` also returns
-    (F/m (3, ...), M_p / m)."""
-    state = np.asarray(state)
+class _Rates:
+    """The geometry of :func:`_geometry` and its first time derivatives
+    (suffix 1) for rates vC = dC/dt, Ed = dE/dt, with the intermediate
+    norms kept, so that the second derivative of e3 for many trial
+    accelerations (:meth:`e3_second`) reuses them."""
+
+    __slots__ = ("C1", "E1", "sE", "sE1", "h1", "h1_1", "d", "d1", "cp", "cp1", "sc", "sc1", "e3", "e3_1",
+                 "P", "P1")
+
+    def __init__(self, C, E, vC, Ed, a, t):
+        self.C1, self.E1 = vC, Ed
+        self.sE = np.sqrt(_dot(E, E))
+        self.sE1 = _dot(E, Ed) / self.sE
+        self.h1 = E / self.sE
+        self.h1_1 = (Ed - self.h1 * self.sE1) / self.sE
+        self.d = _dot(C, self.h1)
+        self.d1 = _dot(vC, self.h1) + _dot(C, self.h1_1)
+        self.cp = C - self.h1 * self.d
+        self.cp1 = vC - (self.h1_1 * self.d + self.h1 * self.d1)
+        self.sc = np.sqrt(_dot(self.cp, self.cp))
+        self.sc1 = _dot(self.cp, self.cp1) / self.sc
+        self.e3 = self.cp / self.sc
+        self.e3_1 = (self.cp1 - self.e3 * self.sc1) / self.sc
+        Q = C + self.e3 * (a - t)
+        Q1 = vC + self.e3_1 * (a - t)
+        sQ = np.sqrt(_dot(Q, Q))
+        sQ1 = _dot(Q, Q1) / sQ
+        self.P = Q + Q * (t / sQ)
+        self.P1 = Q1 + Q1 * (t / sQ) - Q * (t * sQ1 / (sQ * sQ))
+
+    def e3_second(self, C, E, Cdd, Edd):
+        """d2e3/dt2 for second derivatives Cdd, Edd (3, k, ...) of C and E
+        (C, E with a matching axis of one): u s = v differentiated twice,
+        u2 = (v2 - 2 u1 s1 - u0 s2) / s with s2 = (|v1|^2 + v0.v2 - s1^2) / s,
+        for h1 = E/|E| and e3 = cperp/|cperp|, cperp = C - h1 (C.h1)."""
+        sE2 = (_dot(self.E1, self.E1) - self.sE1 * self.sE1 + _dot(E, Edd)) / self.sE
+        h1_2 = (Edd - 2 * self.h1_1 * self.sE1 - self.h1 * sE2) / self.sE
+        d2 = _dot(Cdd, self.h1) + 2 * _dot(self.C1, self.h1_1) + _dot(C, h1_2)
+        cp2 = Cdd - (h1_2 * self.d + 2 * self.h1_1 * self.d1 + self.h1 * d2)
+        sc2 = (_dot(self.cp1, self.cp1) - self.sc1 * self.sc1 + _dot(self.cp, cp2)) / self.sc
+        return (cp2 - 2 * self.e3_1 * self.sc1 - self.e3 * sc2) / self.sc
+
+
+def _residuals(state, p: MachineParams, Wd):
+    """The Euler and axial-balance residuals (4, k, ...) of the machine at
+    ``state`` for k trial wheel accelerations ``Wd`` (3, k, ...) and zero
+    pitch moment, with the contact forces F (3, k, ...) [N] they need, the
+    rates dC/dt and dE/dt (3, ...) and the axle e1 (3, ...).  The residual
+    is affine in (dw/dt, M_p): R = b + A dw/dt - (e1, 0) M_p."""
     C, E, W = state[0:3], state[3:6], state[6:9]
     a, t, h, g, m = p.a, p.t, p.h, p.g, p.mass
     # velocities (rolling): P from the geometry, C moves as the wheel rolls on P
-    h1, e3, Q, P = _geometry(C, E, a, t)
+    *_, P = _geometry(C, E, a, t)
     vC = -_cross(W, P - C)
     Edot = _cross(W, E)
-    shape = np.broadcast_shapes(C.shape[1:], np.shape(a))
-    # five evaluations: dw/dt = 0 and the three unit vectors (M_p enters linearly)
-    k = 4
-    Wd = np.zeros((3, k) + shape, dtype=state.dtype if np.iscomplexobj(state) else float)
-    for i in range(3):
-        Wd[i, i + 1] = 1.0
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
     C_, E_, W_, vC_, Ed_, P_ = (x[add] for x in (C, E, W, vC, Edot, P))
-    # first-order rates of the geometry (P dot) from a jet with zero second coefficients
-    h1j, e3j, Qj, Pj = _geometry(_Jet(C_, vC_), _Jet(E_, Ed_), a, t)
-    Pdot = Pj.x1
+    geo = _Rates(C_, E_, vC_, Ed_, a, t)
     # accelerations of C and E for each trial dw/dt
-    Cdd = -_cross(Wd, P_ - C_) - _cross(W_, Pdot - vC_)
+    Cdd = -_cross(Wd, P_ - C_) - _cross(W_, geo.P1 - vC_)
     Edd = _cross(Wd, E_) + _cross(W_, Ed_)
-    h1j, e3j, Qj, Pj = _geometry(_Jet(C_, vC_, Cdd), _Jet(E_, Ed_, Edd), a, t)
-    Gdd = Cdd - (h - a) * e3j.x2
+    e3dd = geo.e3_second(C_, E_, Cdd, Edd)
+    Gdd = Cdd - (h - a) * e3dd
     F = m * (Gdd + g * np.stack((0 * Gdd[0], 0 * Gdd[0], 1.0 + 0 * Gdd[0])))
     # frame angular velocity and its rate (first-order jets: value, rate)
-    e3d = _Jet(e3j.x1, e3j.x2)                                    # de3/dt as a (first-order) jet
-    h1j, e3j = _Jet(h1j.x0, h1j.x1), _Jet(e3j.x0, e3j.x1)         # first order from here on
+    e3d = _Jet(geo.e3_1, e3dd)                                    # de3/dt as a (first-order) jet
+    h1j, e3j = _Jet(geo.h1, geo.h1_1), _Jet(geo.e3, geo.e3_1)
+    Pj = _Jet(geo.P, geo.P1)
     e2j = _jcross(e3j, h1j)
     Wj = _Jet(W_, Wd)
     psi = -_jdot(e3d, e2j)
-    w1 = _jdot(Wj, h1j)
-    omf = Wj - h1j * w1 + h1j * psi
-    spin = w1 - psi
-    L = (e2j * (_jdot(e2j, omf) * p.roll) + h1j * (_jdot(h1j, omf) * p.pitch)
-         + e3j * (_jdot(e3j, omf) * p.yaw) + h1j * (spin * p.spin))
+    spin = _jdot(Wj, h1j) - psi
+    # the frame turns with w's components across the axle and psi about it
+    # (omega_f = w - (w.e1) e1 + psi e1, with e1, e2, e3 orthonormal)
+    L = (e2j * (_jdot(e2j, Wj) * p.roll) + e3j * (_jdot(e3j, Wj) * p.yaw)
+         + h1j * (psi * p.pitch + spin * p.spin))
     Ldot = L.x1
     G = C_ - (h - a) * e3j.x0
     torque = _cross(Pj.x0 - G, F)
     euler = Ldot - torque                                         # = M_p e1
     axial = p.spin * _dot(Wd, h1j.x0) - _dot(_cross(Pj.x0 - C_, F), h1j.x0)
     R = np.concatenate((euler, axial[None]), axis=0)             # (4, k, ...)
+    return R, F, vC, Edot, h1j.x0[:, 0]
+
+
+def _trial_accelerations(shape, dtype):
+    """The four trials (3, 4, ...): dw/dt = 0 and the three unit vectors."""
+    Wd = np.zeros((3, 4) + shape, dtype=dtype)
+    for i in range(3):
+        Wd[i, i + 1] = 1.0
+    return Wd
+
+
+def _acceleration_system(state, p: MachineParams):
+    """(A, b) of the accelerations: A (..., 4, 4) x = b (..., 4) for
+    x = (dw/dt, M_p), from the residual at the four trials, with the forces
+    of the trials (3, 4, ...) and the rates dC/dt, dE/dt, e1."""
+    shape = np.broadcast_shapes(state.shape[1:], np.shape(p.a))
+    Wd = _trial_accelerations(shape, state.dtype if np.iscomplexobj(state) else float)
+    R, F, vC, Edot, e1 = _residuals(state, p, Wd)
     base = R[:, 0]
     A = R[:, 1:] - base[:, None]                                  # (4, 3, ...) columns for dw/dt
-    Mcol = -h1j.x0[:, 0]                                          # the M_p column: -e1 in euler, 0 in axial
-    Mcol = np.concatenate((Mcol, np.zeros_like(Mcol[:1])), axis=0)
+    Mcol = np.concatenate((-e1, np.zeros_like(e1[:1])), axis=0)   # M_p: -e1 in euler, 0 in axial
     Afull = np.concatenate((A, Mcol[:, None]), axis=1)            # (4, 4, ...)
     Am = np.moveaxis(Afull, (0, 1), (-2, -1))
-    bm = np.moveaxis(-base, 0, -1)[..., None]
-    x = np.linalg.solve(Am, bm)[..., 0]                           # (..., 4)
-    x = np.moveaxis(x, -1, 0)
-    Wdot = x[:3]
-    out = np.concatenate((vC, Edot, Wdot))
+    bm = np.moveaxis(-base, 0, -1)
+    return Am, bm, F, vC, Edot
+
+
+def _turning(out, state, frame_rate):
+    """Add the rates of a frame turning at ``frame_rate`` about +z:
+    - Omega z x u for u = C, E, W (in place)."""
     fr = np.asarray(frame_rate)
     if np.any(fr != 0):
-        for i in (0, 3, 6):          # - Omega z x u for u = C, E, W
+        for i in (0, 3, 6):
             out[i] = out[i] + fr * state[i + 1]
             out[i + 1] = out[i + 1] - fr * state[i]
+    return out
+
+
+def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
+    """d(state)/dt of the machine's exact equations (module docstring;
+    docs/machine.md eqs. M16-M19); ``state`` (9, ...) real or complex.
+    ``frame_rate`` [rad/s]: components in a frame turning at that rate about
+    +z.  With ``forces`` also returns (F/m (3, ...), M_p / m)."""
+    state = np.asarray(state)
+    Am, bm, F, vC, Edot = _acceleration_system(state, p)
+    x = np.moveaxis(np.linalg.solve(Am, bm[..., None])[..., 0], -1, 0)   # (4, ...)
+    Wdot = x[:3]
+    out = _turning(np.concatenate((vC, Edot, Wdot)), state, frame_rate)
     if not forces:
         return out
     # the force for the solved accelerations (affine in dw/dt: combine the trials)
     Fsol = F[:, 0] + np.sum((F[:, 1:] - F[:, :1]) * Wdot[None], axis=1)
-    return out, Fsol / m, x[3] / m
+    return out, Fsol / p.mass, x[3] / p.mass
+
+
+def _rhs_directional(X0, dirs, p: MachineParams, frame_rate, step=COMPLEX_STEP):
+    """The Jacobian of :func:`machine_rhs` at the real states X0 (9, n)
+    along ``dirs`` (9, d, n), exactly (complex step): the accelerations x =
+    (dw/dt, M_p) solve A(X) x = b(X), so along dX, A dx = -dR/dX . dX with
+    the residual R(X, x) held at the solved x.  One complex evaluation of
+    the residual at that x replaces complex trials of all four (the same
+    derivative, in a quarter of the second-order work)."""
+    Am, bm, _, _, _ = _acceleration_system(X0, p)
+    Ainv = np.linalg.inv(Am)                                      # (n, 4, 4): one LU for x and 4 directions
+    x = (Ainv @ bm[..., None])[..., 0].T                          # (4, n)
+    pc = MachineParams(*(np.asarray(v)[None] for v in p))
+    Xc = X0[:, None, :] + 1j * step * dirs                       # (9, d, n)
+    R, _, vC, Edot, e1 = _residuals(Xc, pc, x[:3, None, None, :])
+    R = R[:, 0]
+    R[:3] = R[:3] - e1 * x[3][None, None, :]
+    dR = np.imag(R) / step                                        # (4, d, n)
+    dx = -Ainv[:, :3] @ dR.transpose(2, 0, 1)                   # (n, 3, d)
+    out = np.concatenate((np.imag(vC) / step, np.imag(Edot) / step, dx.transpose(1, 2, 0)))
+    return _turning(out, dirs, np.asarray(frame_rate)[None])
 
 
 def machine_orbit_state(theta, alpha, p: MachineParams):
@@ -257,15 +315,29 @@ def _params_flat(p: MachineParams, n):
 
 def machine_stability(theta, alpha, p: MachineParams):
     """Exact linear stability of a machine's steady horizontal orbits
-    (docs/machine.md sec. 5): the Jacobian of :func:`machine_rhs` in the
-    frame turning at Omega (complex step), on the 7-dimensional constraint
-    manifold (|e1| = 1, |Q| = r - t) minus the three neutral directions
-    (phase along the orbit; d/dtheta, d/dalpha of the family), leaving 4
-    eigenvalues.  Inputs 1-D of one length n (theta, alpha [rad]); orbits
-    that do not exist (NaN Omega) or where the wheel does not fit give NaN.
+    (docs/machine.md sec. 5): the eigenvalues of the reduced Jacobian of
+    :func:`machine_jacobian`.  The equations are reversible, so the spectrum
+    is symmetric under lambda -> -lambda and comes from the invariants of
+    the 4x4 matrix (as the wheel's, docs/stability.md sec. 1).  Inputs 1-D
+    of one length n (theta, alpha [rad]); orbits that do not exist (NaN
+    Omega) or where the wheel does not fit give NaN.
 
     Returns dict: ``growth_rate`` [1/s], ``freq_slow``, ``freq_fast``
     [rad/s], ``verdict`` (int8), ``eigenvalues`` (n, 4), ``rate_scale``."""
+    K, scale, Om = machine_jacobian(theta, alpha, p)
+    ev, growth, slow, fast, verdict = spectrum_from_invariants(K, scale)
+    return {"growth_rate": growth, "freq_slow": slow, "freq_fast": fast, "verdict": verdict,
+            "eigenvalues": ev, "rate_scale": scale, "omega": Om}
+
+
+def machine_jacobian(theta, alpha, p: MachineParams):
+    """The reduced Jacobian K (n, 4, 4) of a machine's steady horizontal
+    orbits (docs/machine.md sec. 5): the Jacobian of :func:`machine_rhs` in
+    the frame turning at Omega (complex step), on the 7-dimensional
+    constraint manifold (|e1| = 1, |Q| = r - t) minus the three neutral
+    directions (phase along the orbit; d/dtheta, d/dalpha of the family),
+    in scaled coordinates; with the rate scale S [1/s] and Omega [rad/s]
+    (NaN where there is no orbit)."""
     theta = np.asarray(theta, dtype=float).reshape(-1)
     alpha = np.asarray(alpha, dtype=float).reshape(-1)
     n = theta.size
@@ -287,15 +359,14 @@ def machine_stability(theta, alpha, p: MachineParams):
     S = np.sqrt(np.sum(W * W, axis=0) + Om ** 2 + p.g / a)
     D = np.empty((9, n))
     D[0:3], D[3:6], D[6:9] = a, 1.0, S
-    # constraint gradients by complex step of |E|^2 and |Q|^2 in each of the 6 position components
+    # gradients of the constraints |E|^2 = 1 and |Q|^2 = (r - t)^2 in (C, E):
+    # 2E, and, with Q = (|cperp| + a - t) e3 + (C.e1) e1, d|Q|^2/dC = 2Q and
+    # d|Q|^2/dE = -2 (a - t) (C.e1) e3 / |E| (docs/machine.md sec. 5)
+    e1, e3, Q, _ = _geometry(C, E, a, t)
     grads = np.zeros((9, 2, n))
-    for i in range(6):
-        dX = np.zeros((6, n), dtype=complex)
-        dX[i] = 1j * step
-        Cc, Ec = C + dX[0:3], E + dX[3:6]
-        _, _, Q, _ = _geometry(Cc, Ec, a, t)
-        grads[i, 0] = np.imag(np.sum(Ec * Ec, axis=0)) / step
-        grads[i, 1] = np.imag(np.sum(Q * Q, axis=0)) / step
+    grads[3:6, 0] = 2 * E
+    grads[0:3, 1] = 2 * Q
+    grads[3:6, 1] = -2 * (a - t) * _dot(C, e1) * e3 / np.sqrt(_dot(E, E))
     A = np.zeros((9, 5, n))
     A[:, 0:2] = grads * D[:, None, :]
     for blk in (slice(0, 3), slice(3, 6), slice(6, 9)):
@@ -305,12 +376,8 @@ def machine_stability(theta, alpha, p: MachineParams):
     A *= 1.0 / np.sqrt(np.einsum("ikn,ikn->kn", A, A))[None]
     Y = householder_complement(A)                                  # (9, 4, n)
     dirs = Y * D[:, None, :]                                        # (9, 4, n)
-    pc = MachineParams(*(x[None, :] for x in p))
-    Xc = X0[:, None, :] + 1j * step * dirs
-    JdX = np.imag(machine_rhs(Xc, pc, Om[None, :])) / step           # (9, 4, n)
+    JdX = _rhs_directional(X0, dirs, p, Om)                         # (9, 4, n)
     K = np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)
-    ev, growth, slow, fast, verdict = spectrum(K, scale)
-    return {"growth_rate": growth, "freq_slow": slow, "freq_fast": fast, "verdict": verdict,
-            "eigenvalues": ev, "rate_scale": scale, "omega": np.where(ok, Om, np.nan)}
+    return K, scale, np.where(ok, Om, np.nan)

@@ -6,9 +6,16 @@ equations for any machine."""
 import numpy as np
 import pytest
 
+from deathsphere.api.machines import as_machine
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.machine import ride_orbit
-from deathsphere.physics.machine_dynamics import MachineParams, machine_orbit_state, machine_rhs, machine_stability
+from deathsphere.physics.machine_dynamics import (
+    MachineParams,
+    machine_jacobian,
+    machine_orbit_state,
+    machine_rhs,
+    machine_stability,
+)
 from deathsphere.physics.stability import wheel_stability
 from deathsphere.physics.stability.verdict import Verdict
 
@@ -80,12 +87,31 @@ def test_an_unsteered_motorcycle_is_unstable_on_most_orbits():
     known = np.isfinite(st["growth_rate"])
     assert known.sum() > 50
     assert np.mean(st["verdict"][known] == Verdict.UNSTABLE) > 0.9
-    # the spectrum is symmetric (lambda -> -lambda): reversible equations
-    ev = st["eigenvalues"][known]
-    tol = 1e-8 * np.nanmax(st["rate_scale"])
-    re, im = np.sort(ev.real, axis=1), np.sort(ev.imag, axis=1)
-    np.testing.assert_allclose(re, -re[:, ::-1], atol=tol)
-    np.testing.assert_allclose(im, -im[:, ::-1], atol=tol)
+
+
+@pytest.mark.parametrize("machine", ["stunt125", "benchmark-bicycle"])
+def test_the_reduced_jacobian_is_reversible(machine):
+    """The stability takes the eigenvalues from two invariants of K, which
+    holds only if the odd coefficients of its characteristic polynomial
+    vanish (lambda -> -lambda): checked on K itself, and the eigenvalues
+    against a general eigenvalue solver."""
+    m = as_machine(machine)
+    p = MachineParams(m.a, m.t, 2.4384, m.h, G, m.mass, *m.inertia, m.spin_inertia)
+    th, al = np.meshgrid(np.radians(np.linspace(20, 170, 16)), np.radians(np.linspace(-20, 70, 16)))
+    K, scale, _ = machine_jacobian(th.ravel(), al.ravel(), p)
+    known = np.isfinite(scale)
+    assert known.sum() > 100
+    K, s = K[known], scale[known][:, None]
+    ev = np.linalg.eigvals(K)
+    # coefficients of lambda^3 and lambda: -sum of the eigenvalues, -sum of their triple products
+    c3 = np.sum(ev, axis=1)
+    c1 = np.array([np.sum([e[i] * e[j] * e[k] for i, j, k in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3))])
+                   for e in ev])
+    assert np.max(np.abs(c3) / s[:, 0]) < 1e-11
+    assert np.max(np.abs(c1) / s[:, 0] ** 3) < 1e-11
+    st = machine_stability(th.ravel(), al.ravel(), p)
+    growth = np.max(ev.real, axis=1)
+    np.testing.assert_allclose(st["growth_rate"][known], np.maximum(growth, 0), atol=1e-6 * s.max())
 
 
 def _simulate(theta_deg, alpha_deg, p, periods, kick=1e-6):
