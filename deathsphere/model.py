@@ -191,9 +191,28 @@ def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **f
     return req
 
 
-def fixed_bank_angle(theta_deg, side):
-    """A sphere's bank angle [deg]: theta - 90 inside, theta + 90 outside (sec. 4)."""
-    return theta_deg + np.where(side == "outside", 90.0, -90.0)
+def fixed_bank_angle(theta_deg, outside):
+    """A sphere's bank angle [deg]: theta - 90 inside, theta + 90 outside
+    (sec. 4); ``outside`` booleans."""
+    return theta_deg + np.where(outside, 90.0, -90.0)
+
+
+def text_codes(values: np.ndarray, vocabulary: tuple) -> np.ndarray:
+    """The index of each text value in ``vocabulary`` (int8; -1 for none of
+    them).  A request batch compares its text columns once, here, and
+    integers from then on: comparing an object array costs a Python call
+    per element, and a sweep's batch holds one body and one side in every
+    row (one comparison decides it)."""
+    codes = np.full(values.size, -1, dtype=np.int8)
+    if values.size == 0:
+        return codes
+    first = values[0]
+    if isinstance(first, str) and np.all(values == first):
+        codes[:] = vocabulary.index(first) if first in vocabulary else -1
+        return codes
+    for j, word in enumerate(vocabulary):
+        codes[values == word] = j
+    return codes
 
 
 def validate_requests(req: dict) -> np.ndarray:
@@ -204,15 +223,19 @@ def validate_requests(req: dict) -> np.ndarray:
     inside).  Words are built only for the rows that fail.
     """
     body, side = req["body"], req["side"]
+    # the text columns as codes, kept for the solvers (:func:`evaluate`)
+    req["body_code"] = body_code = text_codes(body, BODIES)
+    side_code = text_codes(side, SIDES)
+    req["outside"] = outside = side_code == SIDES.index("outside")
     k = req["k"].copy()
     for b, default in DEFAULT_INERTIA.items():
-        k[np.isnan(k) & (body == b)] = default
+        k[np.isnan(k) & (body_code == BODIES.index(b))] = default
     req["k"] = k
     reason = req["invalid"].copy()
     pending = reason == ""
     checks = [
-        (~np.isin(body, BODIES), lambda i: f"body must be one of {' | '.join(BODIES)} (got {echo(body[i])})"),
-        (~np.isin(side, SIDES), lambda i: f"side must be one of {' | '.join(SIDES)} (got {echo(side[i])})"),
+        (body_code < 0, lambda i: f"body must be one of {' | '.join(BODIES)} (got {echo(body[i])})"),
+        (side_code < 0, lambda i: f"side must be one of {' | '.join(SIDES)} (got {echo(side[i])})"),
         (np.isnan(req["theta"]), lambda i: "theta is missing (give --theta or a theta column)"),
     ]
 
@@ -233,10 +256,10 @@ def validate_requests(req: dict) -> np.ndarray:
     for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)
     with np.errstate(invalid="ignore"):
-        checks.append((too_big_inside(req["a"], req["r"], side != "inside"),
+        checks.append((too_big_inside(req["a"], req["r"], side_code != SIDES.index("inside")),
                        lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
-    is_wheel, is_sphere = body == "wheel", body == "sphere"
+    is_wheel, is_sphere = body_code == BODIES.index("wheel"), body_code == BODIES.index("sphere")
     targets = (~np.isnan(alpha)).astype(int) + (~np.isnan(omega)) + (~np.isnan(speed))
     checks.append((is_wheel & (targets != 1),
                    lambda i: "a wheel needs exactly one of alpha | speed (m/s) | omega (rad/s)"))
@@ -250,11 +273,13 @@ def validate_requests(req: dict) -> np.ndarray:
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
     checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
     # a result CSV fed back carries a sphere's fixed bank angle as alpha_deg: that one is accepted
-    with np.errstate(invalid="ignore"):
-        bank = np.abs(params.reduce_angle(alpha - fixed_bank_angle(req["theta"], side))) < 1e-9
-    checks.append((is_sphere & ~np.isnan(alpha) & ~bank,
+    tilted_sphere = is_sphere & ~np.isnan(alpha)
+    if tilted_sphere.any():
+        with np.errstate(invalid="ignore"):
+            tilted_sphere &= np.abs(params.reduce_angle(alpha - fixed_bank_angle(req["theta"], outside))) >= 1e-9
+    checks.append((tilted_sphere,
                    lambda i: "a sphere's tilt is fixed (theta - 90 deg inside; theta + 90 deg outside): no alpha"))
-    checks.append(((body == "particle") & ~(np.isnan(alpha) & np.isnan(omega)),
+    checks.append(((body_code == BODIES.index("particle")) & ~(np.isnan(alpha) & np.isnan(omega)),
                    lambda i: "a particle takes only theta (no alpha or omega)"))
     for failed, words in checks:
         hit = pending & failed
@@ -271,7 +296,7 @@ def _wheel(req, rows):
         sel = {key: req[key][tilted] for key in ("theta_rad", "alpha_rad", "a", "r", "k", "g", "mu")}
         res = wheel.horizontal_orbit(
             sel["theta_rad"], sel["alpha_rad"], sel["a"], sel["r"], sel["k"], sel["g"],
-            outside=req["side"][tilted] == "outside", mu=sel["mu"])
+            outside=req["outside"][tilted], mu=sel["mu"])
         parts.append((tilted, np.full(tilted.size, -1), res))
     solve = rows[np.isnan(req["alpha"][rows])]
     if solve.size:
@@ -285,7 +310,7 @@ def _wheel_solved(req, rows):
     no_orbit row.  One vectorised call per distinct setup and target kind."""
     from deathsphere.physics import region
 
-    outside = (req["side"][rows] == "outside").astype(float)
+    outside = req["outside"][rows].astype(float)
     by_speed = (~np.isnan(req["speed"][rows])).astype(float)
     setups = np.column_stack([req[key][rows] for key in ("a", "r", "k", "g", "mu")] + [outside, by_speed])
     unique, inverse = np.unique(setups, axis=0, return_inverse=True)
@@ -314,7 +339,7 @@ def _sphere(req, rows):
     """Spin given: both roots of eq. (55), one row each; rate given: one row."""
     from deathsphere.physics import sphere
 
-    outside = req["side"][rows] == "outside"
+    outside = req["outside"][rows]
     sel = {key: req[key][rows] for key in ("theta_rad", "a", "r", "k", "g", "mu", "omega3", "omega")}
     theta = sel["theta_rad"]
     spun = ~np.isnan(sel["omega3"])
@@ -337,7 +362,7 @@ def _particle(req, rows):
     from deathsphere.physics import particle
 
     res = particle.particle_orbit(req["theta_rad"][rows], req["r"][rows], req["g"][rows],
-                                  outside=req["side"][rows] == "outside", mu=req["mu"][rows])
+                                  outside=req["outside"][rows], mu=req["mu"][rows])
     return [(rows, np.full(rows.size, -1), res)]
 
 
@@ -363,11 +388,11 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     req["theta_rad"] = np.deg2rad(req["theta"])
     req["alpha_rad"] = np.deg2rad(params.reduce_angle(req["alpha"]))
     ok = invalid == ""
-    body = req["body"]
+    body, body_code = req["body"], req["body_code"]
     bad = np.flatnonzero(~ok)
     parts = [(bad, np.full(bad.size, -1), None)]
     for name, solver in SOLVERS.items():
-        rows = np.flatnonzero(ok & (body == name))
+        rows = np.flatnonzero(ok & (body_code == BODIES.index(name)))
         if rows.size:
             parts.extend(solver(req, rows))
 
@@ -400,15 +425,15 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     pick = source[order]
     # text compared once per request, not per row and column (an object
     # comparison costs a Python call per element)
-    is_sphere, is_particle = body == "sphere", body == "particle"
+    is_sphere, is_particle = body_code == BODIES.index("sphere"), body_code == BODIES.index("particle")
     if is_sphere.any():
-        sphere_alpha = fixed_bank_angle(req["theta"], req["side"])
+        sphere_alpha = fixed_bank_angle(req["theta"], req["outside"])
         alpha = np.where(is_sphere[source], sphere_alpha[source], alpha)
     particle = is_particle[pick]
     columns = {
         "input_row": req["input_row"][pick].astype(np.int64),
-        "body": body[pick].astype(object),
-        "side": req["side"][pick].astype(object),
+        "body": body[pick].astype(object, copy=False),
+        "side": req["side"][pick].astype(object, copy=False),
         "theta_deg": req["theta"][pick],
         "alpha_deg": np.where(particle, np.nan, alpha[order]),
         "a_m": np.where(particle, np.nan, req["a"][pick]),
@@ -433,29 +458,37 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     columns["branch"] = np.full(len(pick), None, dtype=object)
     rooted = np.flatnonzero(branch[order] >= 0)  # a row per root: its index (Python ints, as the contract prints)
     columns["branch"][rooted] = branch[order][rooted].tolist()
-    finite_or_blank(columns)
-    columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order]) if stability
+    codes = status[order]
+    codes[over] = Status.OVER_G
+    demoted = finite_or_blank(columns)
+    if demoted is not None:
+        codes[demoted] = Status.INVALID
+    columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order], codes,
+                                 body_code[pick], req["outside"][pick]) if stability
                    else _no_stability(len(pick)))
-    echo_given(columns, {column: req[name][pick] for name, column in ECHOED.items()})
+    echo_given(columns, {column: req[name][pick] for name, column in ECHOED.items()}, codes != Status.INVALID)
     return Table({name: columns[name] for name in COLUMNS})
 
 
 #: Statuses of a steady orbit that exists with contact (it may need more
 #: friction or g-load than allowed): its stability is analysed.
 LIVE_STATUSES = ("ok", "slips", "over_g")
+LIVE_CODES = (Status.OK, Status.SLIPS, Status.OVER_G)
 #: Request fields a row prints as given, and their columns (docs/contract.md,
 #: "Inputs are echoed as given").
 ECHOED = {"speed": "v_cm_m_s", "omega": "omega_rad_s", "omega3": "omega3_rad_s"}
 
 
-def echo_given(columns: dict, given: dict) -> None:
+def echo_given(columns: dict, given: dict, valid: np.ndarray | None = None) -> None:
     """Print a quantity a request fixes as given, in every row that is not
     ``invalid``, whatever its status: a solved root reproduces a wheel's
     speed or rate only to the last bits, and a row with no orbit (no root,
     a pole, no fit) computes none, yet it is still the answer to that
     request (two requests must not give identical rows).  ``given``:
-    column -> the requested values per row (NaN where not given)."""
-    valid = columns["status"] != "invalid"
+    column -> the requested values per row (NaN where not given); ``valid``
+    the rows that are not ``invalid``, when known."""
+    if valid is None:
+        valid = columns["status"] != "invalid"
     for column, target in given.items():
         columns[column] = np.where(valid & ~np.isnan(target), target, columns[column])
 
@@ -465,9 +498,10 @@ def echo_given(columns: dict, given: dict) -> None:
 OVERFLOW_REASON = "a result overflowed float64 (inputs outside the representable range)"
 
 
-def finite_or_blank(columns: dict) -> None:
+def finite_or_blank(columns: dict) -> np.ndarray | None:
     """No row carries inf: an infinite value becomes empty, and a row that
-    claimed an orbit (ok, slips) with one becomes ``invalid`` with the reason."""
+    claimed an orbit (ok, slips) with one becomes ``invalid`` with the
+    reason; returns those rows (None when no value was infinite)."""
     hit = np.zeros(len(columns["status"]), dtype=bool)
     for name, col in columns.items():
         if isinstance(col, np.ndarray) and col.dtype.kind == "f":
@@ -476,10 +510,11 @@ def finite_or_blank(columns: dict) -> None:
                 col[inf] = np.nan
                 hit |= inf
     if not hit.any():
-        return
+        return None
     claimed = hit & np.isin(columns["status"], LIVE_STATUSES)
     columns["status"][claimed] = "invalid"
     columns["reason"][claimed] = OVERFLOW_REASON
+    return claimed
 
 
 def _no_stability(n: int) -> dict:
@@ -493,7 +528,8 @@ EXACT_METHOD = "exact-linearisation"
 NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
 
 
-def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray) -> dict:
+def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,
+                  body_code: np.ndarray, outside: np.ndarray) -> dict:
     """The stability columns for rows whose steady orbit exists with contact.
 
     Beyond the paper (docs/stability.md): the exact equations of motion
@@ -503,22 +539,23 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray) -
     turning frame.  A sliding particle is not analysed (``unknown``).
     ``theta_rad`` and ``alpha_rad`` are each row's angles as the request's
     radians (converted once, in :func:`evaluate`), not read back from the
-    degree columns.
+    degree columns; ``status`` (int8 :class:`Status` codes), ``body_code``
+    (:func:`text_codes` of BODIES) and ``outside`` are each row's too.
     """
     from deathsphere.physics import stability as exact
 
     n = len(columns["status"])
     out = _no_stability(n)
-    live = np.isin(columns["status"], LIVE_STATUSES)
-    body, outside = columns["body"], columns["side"] == "outside"
+    live = np.isin(status, LIVE_CODES)
     theta = theta_rad
     par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}
-    singular = live & (columns["k"] == 0) & (body != "particle")
+    particle = body_code == BODIES.index("particle")
+    singular = live & (columns["k"] == 0) & ~particle
     out["stability"][singular] = "unknown"
     out["stability_method"][singular] = NOT_ANALYSED_K0
     live &= ~singular
     for name in ("wheel", "sphere"):
-        rows = np.flatnonzero(live & (body == name))
+        rows = np.flatnonzero(live & (body_code == BODIES.index(name)))
         if not rows.size:
             continue
         second = alpha_rad[rows] if name == "wheel" else columns["omega_rad_s"][rows]
@@ -529,7 +566,7 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray) -
         out["growth_rate_1_s"][rows] = res["growth_rate"]
         out["freq_slow_rad_s"][rows] = res["freq_slow"]
         out["freq_fast_rad_s"][rows] = res["freq_fast"]
-    rows = np.flatnonzero(live & (body == "particle"))
+    rows = np.flatnonzero(live & particle)
     out["stability"][rows] = "unknown"
     out["stability_method"][rows] = "not analysed (sliding particle)"
     return out

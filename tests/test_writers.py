@@ -144,6 +144,7 @@ def tables(draw):
         "mu_required": np.array(col(st.sampled_from([math.nan, 0.25])), dtype=float),  # constant path
         "branch": np.array(col(st.one_of(st.none(), st.integers(0, 3))), dtype=object),
         "reason": np.array(col(texts), dtype=object),
+        "side": np.array([draw(texts)] * n, dtype=object),  # one value in every row: the repeated-text path
     })
 
 

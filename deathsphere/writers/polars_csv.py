@@ -110,6 +110,13 @@ def _series(pl, name: str, values: np.ndarray):
         return s
     if kind in "iu":
         return pl.Series(name, values)
+    if kind == "O" and len(values):
+        first = values[0]
+        if (first is None or isinstance(first, str)) and bool(np.all(values == first)):
+            # one value in every row (a sweep's body and side; blank stability
+            # columns): no per-row conversion of Python strings
+            s = pl.repeat(first, len(values), dtype=pl.String, eager=True).alias(name)
+            return _quote(pl, s, (first,))
     if kind == "O" or kind in "US":
         items = values.tolist()
         try:
@@ -118,7 +125,7 @@ def _series(pl, name: str, values: np.ndarray):
             s = None
         if s is not None and s.dtype in (pl.String, pl.Null):  # Null: every cell None, written empty
             return _quote(pl, s, set(items))
-        if s is not None and s.dtype == pl.Int64 :
+        if s is not None and s.dtype == pl.Int64:
             return s
     # anything else (bools, mixed objects): the pure-Python text, already quoted
     return pl.Series(name, column_strings(name, values), dtype=pl.String)
