@@ -154,3 +154,13 @@ def test_the_stability_columns_of_the_papers_wheel_are_orbits():
     a = deathsphere.ride(90, [10, 20, 30], machine="stunt125", diameter="16ft")
     assert set(a["stability"].tolist()) == {"unstable"} and "a rider steers" in a["stability_method"][0]
     assert all(a["growth_rate_1_s"] > 0)
+
+
+@pytest.mark.parametrize("target", [{"alpha": 10.0}, {"speed": "40km/h"}])
+def test_a_height_is_echoed_as_typed(target):
+    """0.6 m reaches theta through arccos and would read back as
+    0.6000000000000003: the row prints the height the rider gave."""
+    t = deathsphere.ride(height=[0.6, 1.2], machine="stunt125", diameter="16ft", stability=False, **target)
+    rows = t["input_row"].ravel()
+    assert set(rows.tolist()) == {1, 2}
+    assert t["height_m"].ravel().tolist() == np.array([0.6, 1.2])[rows - 1].tolist()

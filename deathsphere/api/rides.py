@@ -230,10 +230,13 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
         given = {"alpha_deg": flat["alpha"].astype(float)}
         if height is None:
             given["theta_deg"] = flat["theta"].astype(float)
+        else:
+            given["height_m"] = flat["height"].astype(float)
         table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given)
     else:
         table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
-                          theta_deg=None if height is not None else flat["theta"].astype(float))
+                          theta_deg=None if height is not None else flat["theta"].astype(float),
+                          height=None if height is None else flat["height"].astype(float))
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
@@ -243,8 +246,9 @@ def _reduced(deg):
     return 180.0 - np.mod(180.0 - deg, 360.0)
 
 
-def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None) -> Table:
-    """One row per tilt giving each speed (eq. M12), a no_orbit row where none does."""
+def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None, height=None) -> Table:
+    """One row per tilt giving each speed (eq. M12), a no_orbit row where none
+    does; ``theta_deg`` or ``height`` as the request gave it, echoed."""
     n = th.size
     margs = _machine_args(m)
     parts = []
@@ -278,6 +282,8 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
     given = {"v_cm_m_s": np.asarray(v, dtype=float)[req]}
     if theta_deg is not None:
         given["theta_deg"] = theta_deg[req]
+    if height is not None:
+        given["height_m"] = height[req]
     return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability, given=given)
 
 
