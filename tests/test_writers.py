@@ -145,6 +145,8 @@ def tables(draw):
         "branch": np.array(col(st.one_of(st.none(), st.integers(0, 3))), dtype=object),
         "reason": np.array(col(texts), dtype=object),
         "side": np.array([draw(texts)] * n, dtype=object),  # one value in every row: the repeated-text path
+        "a_m": np.full(n, draw(floats)),                    # one value in every row: its text repeated
+        "k": np.array([0.0] * (n - 1) + [-0.0] * (n > 0)),   # == everywhere, yet two texts: not repeated
     })
 
 

@@ -36,7 +36,7 @@ import threading
 
 import numpy as np
 
-from deathsphere.table.cells import column_strings
+from deathsphere.table.cells import column_strings, float_text
 
 #: polars writes |x| in this range differently from repr (exponent
 #: 'e-9' for 'e-09'; positional below 1e-4 where repr switches to an exponent).
@@ -102,6 +102,13 @@ def _series(pl, name: str, values: np.ndarray):
     kind = values.dtype.kind
     if kind == "f":
         values = values.astype(np.float64, copy=False)
+        # one value in every row (a sweep's a, r, k, g; an empty limit):
+        # its text once, repeated, instead of formatting every cell.  Bits,
+        # not ==, decide it: -0.0 == 0.0, yet repr tells them apart
+        bits = values.view(np.int64)
+        if len(values) > 1 and ((bits[0] == bits).all() or np.isnan(values).all()):
+            text = float_text(float(values[0]))
+            return pl.repeat(text or None, len(values), dtype=pl.String, eager=True).alias(name)
         s = pl.Series(name, values, nan_to_null=True)
         size = np.abs(values)
         odd = np.flatnonzero((size >= _REPR_LOW) & (size < _REPR_HIGH))
