@@ -107,15 +107,16 @@ def machine_energy(state, p: MachineParams):
 
 
 def machine_residuals(state, p: MachineParams) -> dict:
-    """The constraints' residuals: ``axis`` |E| - 1 [-], ``contact``
-    |Q| - (r - t) [m] (the crown point on the sphere of radius r - t)."""
+    """The residuals of eq. M16's constraints (beyond the paper): ``axis``
+    |E| - 1 [-], ``contact`` |Q| - (r - t) [m] (the crown point on the
+    sphere of radius r - t)."""
     state = np.asarray(state)
     Q = _geometry(state[0:3], state[3:6], p.a, p.t)[2]
     return {"axis": _norm(state[3:6]) - 1.0, "contact": _norm(Q) - (p.r - p.t)}
 
 
 def machine_project(state, p: MachineParams):
-    """The state moved back onto the constraints: E normalised, then C
+    """The state moved back onto eq. M16's constraints (beyond the paper): E normalised, then C
     shifted along Q/|Q| by (r - t) - |Q|, which keeps e3 and puts the crown
     point exactly on its sphere (as :func:`deathsphere.physics.dynamics.project`)."""
     state = np.array(state, dtype=np.result_type(state, float), copy=True)

@@ -55,12 +55,12 @@ class MachineBodies(NamedTuple):
 
 
 def take(params, index):
-    """The bodies ``index`` of per-body parameters (either kind)."""
+    """The bodies ``index`` of per-body parameters (either kind; beyond the paper)."""
     return type(params)(*(np.asarray(x)[index] for x in params))
 
 
 def concat_params(parts):
-    """Per-body parameters of one kind, joined in order."""
+    """Per-body parameters of one kind, joined in order (beyond the paper)."""
     kinds = {type(p) for p in parts}
     if len(kinds) != 1:
         raise ValueError("one run simulates one kind of body (wheels and spheres, or machines)")
@@ -221,6 +221,7 @@ MACHINE = _Machine()
 
 
 def model_of(params):
-    """The body model of per-body parameters: :data:`MACHINE` for
-    :class:`MachineBodies`, else :data:`PAPER`."""
+    """The body model of per-body parameters (beyond the paper):
+    :data:`MACHINE` for :class:`MachineBodies` (docs/machine.md eqs.
+    M16-M19), else :data:`PAPER` (eqs. 2-7b in general form)."""
     return MACHINE if isinstance(params, MachineBodies) else PAPER

@@ -25,7 +25,8 @@ __all__ = ["machine_starts", "machine_bodies"]
 
 def machine_bodies(*, a, t, r, h, g, mass, inertia, spin, head, name, n: int = 1) -> MachineBodies:
     """:class:`MachineBodies` of n identical machines from scalars
-    (``inertia`` = (I_roll, I_pitch, I_yaw) [kg m^2])."""
+    (``inertia`` = (I_roll, I_pitch, I_yaw) [kg m^2]; docs/machine.md
+    sec. 1, beyond the paper)."""
     roll, pitch, yaw = inertia
     numbers = [np.full(n, float(x)) for x in (a, t, r, h, g, mass, roll, pitch, yaw, spin, head)]
     return MachineBodies(*numbers, np.full(n, name, dtype=object))

@@ -1,8 +1,9 @@
 """The integrator driver of a simulation (beyond the paper; docs/simulation.md,
 "Method", "Events" and "Outputs").
 
-:class:`Simulation` integrates the exact equations of motion of
-:mod:`deathsphere.physics.dynamics` for all bodies of a :class:`Starts` at
+:class:`Simulation` integrates the exact equations of motion (those of the
+body model, :mod:`deathsphere.simulation.bodies`: the paper's
+:mod:`deathsphere.physics.dynamics`, or a machine's eqs. M16-M19) for all bodies of a :class:`Starts` at
 once (one state vector of 9 n rows, one vectorised right-hand side) with
 :func:`scipy.integrate.solve_ivp`, period by period (:meth:`Simulation.chunks`),
 stopping a body at the terminal events of
