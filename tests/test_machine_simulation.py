@@ -1,5 +1,5 @@
 """Simulating a machine (docs/machine.md sec. 5, eqs. M16-M19;
-docs/simulation.md "Machines"): the paper's wheel as a machine runs the
+docs/simulation.md "Bodies"): the paper's wheel as a machine runs the
 wheel's simulation, and ``stunt125``'s orbits behave as ``ride``'s
 stability says."""
 

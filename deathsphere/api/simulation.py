@@ -71,7 +71,7 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
         ``body``, ``a``, ``k``, ``side="outside"``, ``omega``, ``omega3``
         or ``vertical``.  The series gains ``v_cm_m_s`` and
         ``head_clearance_m``, the summary ``machine`` and
-        ``min_head_clearance_m`` (docs/simulation.md, "Machines").
+        ``min_head_clearance_m`` (docs/simulation.md, "Bodies").
     omega3, omega : float, optional
         Sphere: spin about the contact normal, or the signed orbital rate [rad/s].
     branch : {0, 1}

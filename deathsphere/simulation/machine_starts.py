@@ -1,5 +1,5 @@
 """Initial conditions of simulated machines (a motorcycle and rider; beyond
-the paper: docs/machine.md sec. 5, docs/simulation.md "Machines").
+the paper: docs/machine.md sec. 5, docs/simulation.md "Bodies").
 
 :func:`machine_starts` puts machines on steady horizontal orbits (theta,
 alpha) inside the sphere, eq. M8, optionally kicked in tilt, as a
