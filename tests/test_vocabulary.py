@@ -36,6 +36,10 @@ def test_every_physics_command_takes_the_setup_options():
     ("--body", ("orbit", "sweep", "limits", "stability", "simulate")),
     ("--only", ("orbit", "sweep", "vertical")),
     ("--input", ("orbit", "sweep", "vertical", "stability", "limits")),
+    ("--machine", ("ride", "simulate")),
+    ("--machine-file", ("ride", "simulate")),
+    ("--mass", ("ride", "simulate")),
+    ("--head-height", ("ride", "simulate")),
 ])
 def test_each_option_is_on_every_command_where_it_makes_sense(option, commands):
     for command in commands:

@@ -34,11 +34,11 @@ METHODS_LOWER = tuple(m.lower() for m in METHODS)
 FRAMES = ("turning", "lab")
 
 
-def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
-             omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
+def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None, g=G,
+             mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
              periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
              atol: float | None = None, frame: str = "turning", max_steps=1_000_000, speed=None,
-             diameter=None) -> tuple[Table, Table]:
+             diameter=None, machine=None) -> tuple[Table, Table]:
     """Integrate the exact equations of motion from a steady orbit: ``deathsphere simulate``.
 
     Beyond the paper (docs/simulation.md): the Newton-Euler equations of a
@@ -58,9 +58,20 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
         (0 first, in increasing alpha) of eq. (29) solved for it.
     diameter : float, optional
         The sphere's diameter instead of ``r``.
-    body : {"wheel", "sphere"}
-    side, a, r, k, g, mu : as for :func:`orbit` (k > 0); the run stops with
-        ``slips`` when the friction needed exceeds ``mu``.
+    body : {"wheel", "sphere"}, default wheel
+    side, a, r, k, g, mu : as for :func:`orbit` (k > 0; a default 0.3 m);
+        the run stops with ``slips`` when the friction needed exceeds ``mu``.
+    machine : Machine or str, optional
+        Simulate a machine (motorcycle and rider, :class:`deathsphere.Machine`
+        or a preset's name) instead of the paper's body: its exact equations
+        of motion, docs/machine.md eqs. M16-M19, from its steady orbit (eq.
+        M8) at theta and ``alpha`` (the up-axis's tilt) or ``speed`` (the
+        centre of mass's, the tilt ``branch`` in increasing alpha, eq. M12);
+        ``perturb`` tilts it about its direction of travel.  Not with
+        ``body``, ``a``, ``k``, ``side="outside"``, ``omega``, ``omega3``
+        or ``vertical``.  The series gains ``v_cm_m_s`` and
+        ``head_clearance_m``, the summary ``machine`` and
+        ``min_head_clearance_m`` (docs/simulation.md, "Bodies").
     omega3, omega : float, optional
         Sphere: spin about the contact normal, or the signed orbital rate [rad/s].
     branch : {0, 1}
@@ -104,14 +115,15 @@ def simulate(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=
     return prepare_simulation(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3,
                               omega=omega, branch=branch, vertical=vertical, v_top=v_top, perturb=perturb,
                               periods=periods, points_per_period=points_per_period, method=method, rtol=rtol,
-                              atol=atol, frame=frame, max_steps=max_steps, speed=speed, diameter=diameter).run()
+                              atol=atol, frame=frame, max_steps=max_steps, speed=speed, diameter=diameter,
+                              machine=machine).run()
 
 
-def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
-                       mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
+def prepare_simulation(theta, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None,
+                       g=G, mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
                        perturb=0.0, periods=20.0, points_per_period=100, method: str = "DOP853",
                        rtol: float = 1e-10, atol: float | None = None, frame: str = "turning",
-                       record_states: bool = False, max_steps=1_000_000, speed=None, diameter=None):
+                       record_states: bool = False, max_steps=1_000_000, speed=None, diameter=None, machine=None):
     """The validated :class:`deathsphere.simulation.Simulation` behind
     :func:`simulate` (same parameters), not yet run: for streaming the time
     series chunk by chunk (``sim.chunks()``, then ``sim.summary()``), as the
@@ -126,19 +138,30 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
     """
     from deathsphere import simulation
 
-    setup = checked_setup(body, side, a, sphere_radius(r, diameter), k, g, mu)
+    if machine is not None:
+        if vertical is not False:
+            raise ParameterError("vertical loops of a machine are not simulated (their steady values: ride with "
+                                 "vertical=True, 'deathsphere ride --vertical'); a machine's run starts on a "
+                                 "horizontal orbit", "vertical")
+        refused = [name for name, v in (("body", body), ("a", a), ("k", k), ("omega", omega), ("omega3", omega3),
+                                        ("v_top", v_top)) if v is not None]
+        refused += ["side='outside'"] if side != "inside" else []
+        if refused:
+            raise ParameterError(f"with machine= the body is the machine (its wheel radius is its own): "
+                                 f"{', '.join(refused)} not allowed; give theta and alpha or speed (and branch), "
+                                 "r or diameter, g, mu, perturb and the run's options", "machine")
+        return _prepare_machine(theta, alpha, speed, branch, machine, sphere_radius(r, diameter), g, mu,
+                                _run_options(perturb, periods, points_per_period, method, rtol, atol, frame,
+                                             record_states, max_steps))
+    setup = checked_setup("wheel" if body is None else body, side, A if a is None else a,
+                          sphere_radius(r, diameter), k, g, mu)
     theta = checked_scalar("theta", theta)
     alpha, omega3, omega, v_top, speed = (
         None if v is None else checked_scalar(name, v) for name, v in
         (("alpha", alpha), ("omega3", omega3), ("omega", omega), ("v_top", v_top), ("speed", speed)))
-    vertical, record_states = checked_flag("vertical", vertical), checked_flag("record_states", record_states)
-    perturb, periods = checked_scalar("perturb", perturb), checked_scalar("periods", periods)
-    points_per_period = int(checked_scalar("points_per_period", points_per_period))
-    method = checked_choice("method", method, METHODS_LOWER)
-    method = METHODS[METHODS_LOWER.index(method)]
-    frame = checked_choice("frame", frame, FRAMES)
-    rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
-    max_steps = int(checked_scalar("max_steps", max_steps))
+    vertical = checked_flag("vertical", vertical)
+    run = _run_options(perturb, periods, points_per_period, method, rtol, atol, frame, record_states, max_steps)
+    perturb = run.pop("perturb")
     if setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None):
         # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved), the root ``branch``
         alpha = _tilt_for(setup, theta, speed, omega, branch)
@@ -173,12 +196,75 @@ def prepare_simulation(theta, alpha=None, *, body: str = "wheel", side: str = "i
         else:
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb_deg=perturb)
-        sim = simulation.Simulation(starts, periods=periods, points_per_period=points_per_period, method=method,
-                                    rtol=rtol, atol=atol, frame=frame, record_states=record_states,
-                                    max_steps=max_steps)
+        sim = simulation.Simulation(starts, **run)
     except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
         raise ParameterError(str(exc)) from None
     return sim
+
+
+def _run_options(perturb, periods, points_per_period, method, rtol, atol, frame, record_states, max_steps) -> dict:
+    """The checked kick and :class:`deathsphere.simulation.Simulation` options, whatever rolls."""
+    method = checked_choice("method", method, METHODS_LOWER)
+    return {"perturb": checked_scalar("perturb", perturb), "periods": checked_scalar("periods", periods),
+            "points_per_period": int(checked_scalar("points_per_period", points_per_period)),
+            "method": METHODS[METHODS_LOWER.index(method)], "rtol": checked_scalar("rtol", rtol),
+            "atol": checked_optional("atol", atol), "frame": checked_choice("frame", frame, FRAMES),
+            "record_states": checked_flag("record_states", record_states),
+            "max_steps": int(checked_scalar("max_steps", max_steps))}
+
+
+def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
+    """:func:`prepare_simulation` of a machine (beyond the paper; docs/machine.md
+    eqs. M8, M12, M16-M19): its steady orbit at (theta, alpha), or at the
+    tilt ``branch`` giving the centre of mass the ``speed``."""
+    from deathsphere import simulation
+    from deathsphere.api.machines import as_machine
+    from deathsphere.simulation.machine_starts import machine_bodies, machine_starts
+
+    m = as_machine(machine)
+    theta = checked_scalar("theta", theta)
+    r, g, mu = checked_scalar("r", r), checked_scalar("g", g), checked_scalar("mu", mu)
+    if not r > m.a:
+        raise ParameterError(f"the wheel (a = {m.a:g} m) does not fit in a sphere of radius {r:g} m (needs r > a)",
+                             "r")
+    if (alpha is None) == (speed is None):
+        raise ParameterError("a machine's steady orbit needs exactly one of alpha (deg) and speed (its centre of "
+                             "mass's, m/s)", "alpha", missing=alpha is None)
+    if speed is not None:
+        alpha = _machine_tilt_for(m, theta, checked_scalar("speed", speed), branch, r, g)
+    elif isinstance(branch, bool) or branch != 0:
+        raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
+                             "branch")
+    else:
+        alpha = checked_scalar("alpha", alpha)
+    perturb = run.pop("perturb")
+    bodies = machine_bodies(a=m.a, t=m.t, r=r, h=m.h, g=g, mass=m.mass, inertia=m.inertia, spin=m.spin_inertia,
+                            head=m.head, name=m.name)
+    try:
+        starts = machine_starts(bodies, theta, params.reduce_angle(alpha), perturb_deg=perturb, mu=mu)
+        # the tilt is echoed as given, as a wheel's
+        starts = dataclasses.replace(starts, alpha_deg=np.full(len(starts), alpha))
+        return simulation.Simulation(starts, **run)
+    except ValueError as exc:
+        raise ParameterError(str(exc)) from None
+
+
+def _machine_tilt_for(m, theta: float, speed: float, branch, r: float, g: float) -> float:
+    """The tilt [deg] of a machine's orbit at ``theta`` whose centre of mass
+    runs at ``speed``: the tilt number ``branch`` in increasing alpha of
+    those eq. M12 gives (as ``ride`` lists them)."""
+    from deathsphere.api.rides import ride
+
+    rows = ride(theta, speed=speed, machine=m, r=r, g=g, stability=False)
+    tilts = np.sort(np.asarray(rows["alpha_deg"], dtype=float))
+    tilts = tilts[np.isfinite(tilts)]
+    if not tilts.size:
+        raise ParameterError(f"no tilt alpha gives the centre of mass this speed at theta = {theta:g} deg "
+                             "(eq. M12 has no root)", "speed")
+    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < tilts.size:
+        raise ParameterError(f"branch must be one of the {tilts.size} tilts that give this speed "
+                             f"(0..{tilts.size - 1}; got {branch!r})", "branch")
+    return float(tilts[int(branch)])
 
 
 def _tilt_for(setup, theta: float, speed, omega, branch) -> float:

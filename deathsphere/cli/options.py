@@ -142,3 +142,52 @@ def input_option(fields: str):
              "its own output CSV is read too, and ',', ';' or tab separates the fields.  Every line after "
              "the header gives one row; a bad line is an invalid row with its reason.  An option given "
              "with --input applies to every row, over the file's column.")
+
+
+#: The machine's overrides: registry parameter -> option flag (``ride``,
+#: ``simulate --machine``).
+MACHINE_OPTIONS = {"mass": "--mass", "com_height": "--com-height", "a": "--wheel-radius",
+                   "tyre_radius": "--tyre-radius", "roll_inertia": "--roll-inertia",
+                   "pitch_inertia": "--pitch-inertia", "yaw_inertia": "--yaw-inertia",
+                   "spin_inertia": "--spin-inertia", "head_height": "--head-height"}
+
+
+def _machine_option(name: str, flag: str):
+    p = PARAMS[name]
+    text = p.help.removeprefix("Ride: ")
+    if name == "a":
+        text = "Wheel radius to the tyre's crown."
+    hint = UNIT_HINTS.get(p.kind)
+    text += (f" [{hint}]" if hint else f" [{p.unit}]") + " [default: the machine's]"
+    return single(flag, name, metavar=p.metavar, help=text)
+
+
+def machine_options(*, without=(), machine_help: str = "A preset machine (see 'deathsphere machines') "
+                                                            "[default: stunt125]."):
+    """--machine, --machine-file and the machine's overrides (those of
+    :data:`MACHINE_OPTIONS` not in ``without``: a command whose setup
+    already takes ``-a/--wheel-radius`` leaves ``a`` out)."""
+    from deathsphere.api.machines import PRESETS
+
+    def decorator(f):
+        for name, flag in reversed(list(MACHINE_OPTIONS.items())):
+            if name not in without:
+                f = _machine_option(name, flag)(f)
+        f = single("--machine-file", "machine_file", default=None, metavar="FILE",
+                   help="A machine from a TOML or CSV file (keys mass, com_height, wheel_radius, tyre_radius, "
+                        "roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, name, source; "
+                        "missing keys from --machine).")(f)
+        return single("--machine", "machine", type=click.Choice(tuple(PRESETS), case_sensitive=False),
+                      default=None, help=machine_help)(f)
+    return decorator
+
+
+def machine_from_options(machine, machine_file, **overrides):
+    """The Machine the options name: the preset ``machine`` (stunt125 if
+    none), or ``machine_file`` (its missing keys from the preset), with the
+    override options given (registry names; None: not given)."""
+    from deathsphere import api
+
+    name = (machine or api.machines.DEFAULT_MACHINE).lower()
+    chosen = api.machine_file(machine_file, base=name) if machine_file else api.PRESETS[name]
+    return chosen.with_overrides(**overrides)

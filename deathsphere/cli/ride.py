@@ -10,43 +10,13 @@ import numpy as np
 from deathsphere import api
 from deathsphere.cli.base import choose_format, cli, emit
 from deathsphere.cli.options import (
-    UNIT_HINTS,
+    machine_from_options,
+    machine_options,
     only_option,
     output_options,
     param_option,
-    single,
     stability_option,
 )
-from deathsphere.params import PARAMS
-
-#: The machine's overrides: registry parameter -> option flag.
-MACHINE_OPTIONS = {"mass": "--mass", "com_height": "--com-height", "a": "--wheel-radius",
-                   "tyre_radius": "--tyre-radius", "roll_inertia": "--roll-inertia",
-                   "pitch_inertia": "--pitch-inertia", "yaw_inertia": "--yaw-inertia",
-                   "spin_inertia": "--spin-inertia", "head_height": "--head-height"}
-
-
-def _machine_option(name: str, flag: str):
-    p = PARAMS[name]
-    text = p.help.removeprefix("Ride: ")
-    if name == "a":
-        text = "Wheel radius to the tyre's crown."
-    hint = UNIT_HINTS.get(p.kind)
-    text += (f" [{hint}]" if hint else f" [{p.unit}]") + " [default: the machine's]"
-    return single(flag, name, metavar=p.metavar, help=text)
-
-
-def machine_options(f):
-    for name, flag in reversed(list(MACHINE_OPTIONS.items())):
-        f = _machine_option(name, flag)(f)
-    f = single("--machine-file", "machine_file", default=None, metavar="FILE",
-               help="A machine from a TOML or CSV file (keys mass, com_height, wheel_radius, tyre_radius, "
-                    "roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, name, source; "
-                    "missing keys from --machine).")(f)
-    f = single("--machine", "machine", type=click.Choice(tuple(api.PRESETS), case_sensitive=False),
-               default=None, help="A preset machine (see 'deathsphere machines') [default: stunt125].")(f)
-    return f
-
 
 def _axis(name: str, values):
     """The values of a repeated option (values and start:stop:step ranges,
@@ -63,7 +33,7 @@ def _axis(name: str, values):
 @param_option("alpha", multiple=True, help="Tilt of the machine's up-axis above the orbit plane (lean from "
               "the vertical = 90 - alpha).")
 @param_option("speed", multiple=True, help="Speed of the centre of mass; every tilt giving it, one row each.")
-@machine_options
+@machine_options()
 @param_option("r")
 @param_option("diameter")
 @param_option("g")
@@ -101,12 +71,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
     """
-    name = (machine or "stunt125").lower()
-    chosen = api.machine_file(machine_file, base=name) if machine_file else api.PRESETS[name]
-    overrides = {"mass": mass, "com_height": com_height, "a": a, "tyre_radius": tyre_radius,
-                 "roll_inertia": roll_inertia, "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia,
-                 "spin_inertia": spin_inertia, "head_height": head_height}
-    chosen = chosen.with_overrides(**overrides)
+    chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
+                                  tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
+                                  yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g)) if v is not None}
     if vertical:
         if not theta or not v_top or height or alpha or speed or summary:

@@ -18,7 +18,10 @@ from deathsphere.cli.base import (
     stdout_console,
 )
 from deathsphere.cli.options import (
+    MACHINE_OPTIONS,
     body_option,
+    machine_from_options,
+    machine_options,
     output_options,
     param_option,
     params_options,
@@ -76,11 +79,15 @@ def _preflight_output(output) -> bool:
              "the 3-D view: .html (interactive, self-contained), .gif (plot extra), .mp4 (plot extra and "
              "ffmpeg), or the time series: .csv/.json/.ndjson.  Nothing is printed on stdout then.")
 @body_option(("wheel", "sphere"))
+@machine_options(without=("a",), machine_help="Simulate a machine (motorcycle and rider) instead: a preset (see "
+                 "'deathsphere machines'), its wheel radius -a, changed by the machine options "
+                 "(docs/machine.md sec. 5).  Horizontal orbits: --alpha or --speed (its centre of mass's).")
 @setup_options()
 @output_options()
 def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
-                     points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, body, side, a,
-                     r, diameter, k, g, mu, fmt):
+                     points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, body, machine,
+                     machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
+                     spin_inertia, head_height, side, a, r, diameter, k, g, mu, fmt):
     """Integrate the exact equations of motion from a steady orbit (beyond the paper).
 
     The rigid-body equations of a wheel or sphere rolling without slipping
@@ -103,17 +110,30 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
       deathsphere simulate --theta 90 --speed 40km/h --diameter 16ft
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
+      deathsphere simulate --machine stunt125 --theta 60 --speed 30km/h -r 8ft
+      deathsphere simulate --machine stunt125 --theta 90 --alpha 15 --output v.gif
     """
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
 
+    overrides = {"mass": mass, "com_height": com_height, "tyre_radius": tyre_radius, "roll_inertia": roll_inertia,
+                 "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia, "spin_inertia": spin_inertia,
+                 "head_height": head_height}
+    chosen = None
+    if machine is not None or machine_file is not None:
+        # -a is the wheel's radius: a machine's, as ride's --wheel-radius
+        chosen, a = machine_from_options(machine, machine_file, a=a, **overrides), None
+    elif given(**overrides):
+        flags = [MACHINE_OPTIONS[name] for name in given(**overrides)]
+        what = "is a machine option" if len(flags) == 1 else "are machine options"
+        raise click.UsageError(f"{', '.join(flags)} {what}: give --machine (or --machine-file)")
     view = output is not None and _preflight_output(output)
     sim = api.prepare_simulation(
         theta, branch=branch, vertical=vertical, method=method, frame=frame, record_states=view,
         **given(alpha=alpha, speed=speed, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
                 omega3=omega3, omega=omega,
                 v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
-                atol=atol, max_steps=max_steps))
+                atol=atol, max_steps=max_steps, machine=chosen))
     fmt = choose_format(fmt)
     table_file = view_format(output) if output is not None and view_format(output) in TABLE_OUTPUTS else None
     series = []

@@ -24,7 +24,7 @@ Equations (docs/machine.md sec. 5):
 
 The accelerations enter through d2G/dt2 and dL_G/dt affinely in (dw/dt,
 M_p): the residual of the four equations is evaluated for four trial
-accelerations (the geometry's derivatives written out in :class:`_Rates`,
+accelerations (the geometry's derivatives written out in :class:`GeometryRates`,
 the angular momentum's rate by first-order Taylor arithmetic, :class:`_Jet`)
 and solved as a 4x4 linear system per body.  Only +, -, *, / and sqrt are
 used, so a complex step differentiates the whole right-hand side exactly;
@@ -45,7 +45,7 @@ from deathsphere.physics.stability.reduction import (
 )
 from deathsphere.physics.vectors import zcross
 
-__all__ = ["MachineParams", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
+__all__ = ["MachineParams", "GeometryRates", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
 
 
 class MachineParams(tuple):
@@ -113,8 +113,11 @@ def _dot(u, v):
     return np.sum(u * v, axis=0)
 
 
-def _geometry(C, E, a, t):
-    """(e1 unit, e3, Q, P) from the wheel centre C and the axle vector E."""
+def machine_geometry(C, E, a, t):
+    """The machine's geometry (eq. M16; docs/machine.md sec. 5): the unit
+    axle e1, the unit vector e3 from the wheel centre towards the crown
+    (the up-axis is -e3), the crown point Q and the contact point P (3, ...)
+    from the wheel centre C and the axle vector E (3, ...)."""
     h1 = E / np.sqrt(_dot(E, E))
     cperp = C - h1 * _dot(C, h1)
     e3 = cperp / np.sqrt(_dot(cperp, cperp))
@@ -123,11 +126,11 @@ def _geometry(C, E, a, t):
     return h1, e3, Q, P
 
 
-class _Rates:
-    """The geometry of :func:`_geometry` and its first time derivatives
-    (suffix 1) for rates vC = dC/dt, Ed = dE/dt, with the intermediate
-    norms kept, so that the second derivative of e3 for many trial
-    accelerations (:meth:`e3_second`) reuses them."""
+class GeometryRates:
+    """The geometry of :func:`machine_geometry` and its first time
+    derivatives (suffix 1) for rates vC = dC/dt, Ed = dE/dt (eq. M16), with
+    the intermediate norms kept, so that the second derivative of e3 for
+    many trial accelerations (:meth:`e3_second`) reuses them."""
 
     __slots__ = ("C1", "E1", "sE", "sE1", "h1", "h1_1", "d", "d1", "cp", "cp1", "sc", "sc1", "e3", "e3_1",
                  "P", "P1")
@@ -175,12 +178,12 @@ def _residuals(state, p: MachineParams, Wd):
     C, E, W = state[0:3], state[3:6], state[6:9]
     a, t, h, g, m = p.a, p.t, p.h, p.g, p.mass
     # velocities (rolling): P from the geometry, C moves as the wheel rolls on P
-    *_, P = _geometry(C, E, a, t)
+    *_, P = machine_geometry(C, E, a, t)
     vC = -_cross(W, P - C)
     Edot = _cross(W, E)
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
     C_, E_, W_, vC_, Ed_, P_ = (x[add] for x in (C, E, W, vC, Edot, P))
-    geo = _Rates(C_, E_, vC_, Ed_, a, t)
+    geo = GeometryRates(C_, E_, vC_, Ed_, a, t)
     # accelerations of C and E for each trial dw/dt
     Cdd = -_cross(Wd, P_ - C_) - _cross(W_, geo.P1 - vC_)
     Edd = _cross(Wd, E_) + _cross(W_, Ed_)
@@ -362,7 +365,7 @@ def machine_jacobian(theta, alpha, p: MachineParams):
     # gradients of the constraints |E|^2 = 1 and |Q|^2 = (r - t)^2 in (C, E):
     # 2E, and, with Q = (|cperp| + a - t) e3 + (C.e1) e1, d|Q|^2/dC = 2Q and
     # d|Q|^2/dE = -2 (a - t) (C.e1) e3 / |E| (docs/machine.md sec. 5)
-    e1, e3, Q, _ = _geometry(C, E, a, t)
+    e1, e3, Q, _ = machine_geometry(C, E, a, t)
     grads = np.zeros((9, 2, n))
     grads[3:6, 0] = 2 * E
     grads[0:3, 1] = 2 * Q

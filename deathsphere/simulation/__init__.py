@@ -13,6 +13,11 @@ Modules
 * :mod:`~deathsphere.simulation.starts` -- initial conditions:
   :class:`Starts`, :func:`horizontal_starts`, :func:`vertical_starts` and
   the start-state geometry of eqs. (8b), (11)-(13);
+* :mod:`~deathsphere.simulation.bodies` -- the body model (the paper's
+  wheel and sphere, or a machine: docs/machine.md eqs. M16-M19) the others
+  ask for the dynamics;
+* :mod:`~deathsphere.simulation.machine_starts` -- a machine's initial
+  conditions: :func:`machine_starts`;
 * :mod:`~deathsphere.simulation.runner` -- the integrator driver:
   :class:`Simulation` (solve_ivp, chunking period by period, recorded
   states), :func:`run_simulation`, :data:`METHODS`, :data:`FRAMES`;
@@ -50,6 +55,7 @@ Angles are in degrees at this level, as on the command line (the kicks
 rad/s, forces per unit mass in m/s^2.
 """
 
+from deathsphere.simulation.machine_starts import machine_bodies, machine_starts
 from deathsphere.simulation.runner import FRAMES, METHODS, Simulation, run_simulation
 from deathsphere.simulation.series import SERIES_COLUMNS, concat_tables
 from deathsphere.simulation.starts import Starts, horizontal_starts, vertical_starts
@@ -58,5 +64,6 @@ from deathsphere.simulation.summary import SUMMARY_COLUMNS
 
 __all__ = [
     "STATUSES", "RunStatus", "SERIES_COLUMNS", "SUMMARY_COLUMNS", "METHODS", "FRAMES",
-    "Starts", "horizontal_starts", "vertical_starts", "Simulation", "run_simulation", "concat_tables",
+    "Starts", "horizontal_starts", "vertical_starts", "machine_starts", "machine_bodies", "Simulation",
+    "run_simulation", "concat_tables",
 ]

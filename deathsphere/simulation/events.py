@@ -1,8 +1,9 @@
 """The terminal events of a run: contact lost and slipping (beyond the paper;
 docs/simulation.md, "Events").
 
-Both are functions of the state through the contact force of
-:func:`deathsphere.physics.dynamics.contact_force`: the normal force N / g
+Both are functions of the state through the contact force of the body
+model (:mod:`deathsphere.simulation.bodies`: the paper's bodies'
+:func:`deathsphere.physics.dynamics.contact_force`, a machine's eq. M18): the normal force N / g
 (``contact_lost`` where it falls to zero) and (mu N - |F_friction|) / g
 (``slips`` where it does, only for a finite mu).  The bodies integrated
 together share one solve_ivp call, so each event is the least value over
@@ -17,6 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from deathsphere.physics import dynamics as dyn
+from deathsphere.simulation.bodies import PAPER
 from deathsphere.simulation.status import RunStatus
 
 __all__ = ["ContactEvents", "EVENT_STATUSES", "EVENT_TOL", "stopped_at_start"]
@@ -40,12 +42,13 @@ class ContactEvents:
     turning: np.ndarray
     mu: np.ndarray
     g: np.ndarray
+    model: object = PAPER      # the body model (simulation.bodies) of params
     _cache: tuple = field(default=(None, None, None))
     _scalar: tuple | None = None
 
     def __post_init__(self):
-        if self.idx.size == 1:      # (coefficients, g) for dyn.contact_values
-            self._scalar = (dyn.scalar_coefficients(self.params), float(self.params.g[0]))
+        if self.idx.size == 1:      # the model's one-body float path, if it has one
+            self._scalar = self.model.scalar_events(self.params)
 
     def values(self, t, y):
         """(normal/g, (mu N - |F|)/g) per body at (t, y), cached for the
@@ -55,7 +58,7 @@ class ContactEvents:
             return vals
         if self._scalar is not None and y.ndim == 1:
             try:          # one body: the same equations on Python floats
-                n, fmag = dyn.contact_values(y.tolist(), *self._scalar)
+                n, fmag = self.model.contact_values(y.tolist(), self._scalar)
                 mu = float(self.mu[0])
                 slip = mu * n - fmag if math.isfinite(mu) else 1.0
                 vals = (np.array([n]) / self.g, np.array([slip]) / self.g)
@@ -64,7 +67,7 @@ class ContactEvents:
             except (ZeroDivisionError, OverflowError, ValueError):
                 pass
         state = np.asarray(y).reshape(9, -1)
-        f = dyn.contact_force(state, self.params)
+        f = self.model.contact_force(state, self.params)
         n = f["normal"]
         finite = np.isfinite(self.mu)
         slip = np.where(finite, np.where(finite, self.mu, 0.0) * n - f["friction_magnitude"], 1.0)

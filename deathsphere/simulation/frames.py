@@ -5,8 +5,9 @@ contact point, the contact force, the wheel's spin rate): the viewer only
 draws what this hands it.
 
 Beyond the paper: the states come from :mod:`deathsphere.simulation`
-(exact equations of motion); how they are drawn is described in
-``docs/simulation.md``, section "3-D view".  Pure numpy, vectorised over
+(exact equations of motion: the paper's bodies, or a machine's, eqs.
+M16-M19, whose frame adds its centre of mass and the rider's head); how
+they are drawn is described in ``docs/simulation.md``, section "3-D view".  Pure numpy, vectorised over
 samples; no drawing here.
 """
 
@@ -15,8 +16,11 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.physics import dynamics as dyn
+from deathsphere.physics import machine_motion as mm
+from deathsphere.simulation.bodies import MACHINE, PAPER, model_of, take
 
-__all__ = ["frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD", "MAX_MOVE_R"]
+__all__ = ["frame_geometry", "machine_frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD",
+           "MAX_MOVE_R"]
 
 #: the most a body may turn between two frames of the view [rad]: a quarter
 #: turn, past which a turning spoke or marker can be read as turning the
@@ -157,11 +161,62 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
     }
 
 
-def _subdivisions(t, state, params, max_turn, max_move):
+def machine_frame_geometry(t, state, params, psi0=0.0):
+    """What the 3-D view draws of one machine at its samples (beyond the
+    paper; docs/machine.md eqs. M16-M18, docs/simulation.md "3-D view").
+
+    ``params`` is one body's :class:`~deathsphere.simulation.bodies.MachineBodies`.
+    The keys of :func:`frame_geometry`, with the machine's meanings where
+    they differ: ``centre`` the wheel centre C, ``e3`` the unit vector from
+    C towards the crown (the up-axis is -e3), ``contact`` P, ``spin`` the
+    angle of the marked spoke from the wheels' spin s = w.e1 - psi
+    relative to the frame (eq. M17), ``force`` F/m of eq. M18,
+    ``acceleration`` that of the centre of mass, ``g_load`` |F|/(m g)
+    (what the rider feels, ``ride``'s load_g), ``speed`` |dC/dt| (the
+    drawn wheel's, which bounds the frames' spacing); and the frame and
+    rider: ``com`` the centre of mass G = C - (h - a) e3, ``head`` the top
+    of the head H = Q - (head - t) e3 (eq. M2) and ``rider_speed`` |dG/dt|
+    [m/s] (``ride``'s v_cm, the speed the view reads out).
+    """
+    t = np.asarray(t, dtype=np.float64)
+    state = np.asarray(state, dtype=np.float64)
+    mp = params.physics()
+    pts = mm.machine_points(state, mp, head=params.head)
+    rates = mm.machine_rates(state, mp)
+    f = mm.machine_contact_force(state, mp)
+    e1, e3 = pts["e1"], pts["e3"]
+    rate = rates["spin"]
+    steps = 0.5 * (rate[1:] + rate[:-1]) * np.diff(t)
+    spin = psi0 + np.concatenate((np.zeros(min(t.size, 1)), np.cumsum(steps)))
+    u = np.cross(e1, e3, axis=0)
+    force, friction = f["force"], f["friction"]
+    g = np.asarray(params.g, dtype=float)
+    accel = force - g * np.array([0.0, 0.0, 1.0])[:, None]
+    speed = _norm(rates["vC"])
+    return {
+        "centre": pts["C"], "axis": e1, "e3": e3, "contact": pts["P"],
+        "spin": spin, "spoke": np.cos(spin) * e3 + np.sin(spin) * u,
+        "force": force, "normal_force": force - friction, "friction_force": friction,
+        "acceleration": accel, "g_load": _norm(force) / g,
+        "rate": _norm(state[dyn.W]), "speed": speed, "speed_km_h": speed * _KM_H_PER_M_S,
+        "normal": f["normal"], "friction_magnitude": f["friction_magnitude"], "mu_required": f["mu_required"],
+        "force_angle_deg": np.degrees(np.arctan2(f["friction_magnitude"], f["normal"])),
+        "com": pts["G"], "head": pts["H"], "rider_speed": _norm(rates["vG"]),
+    }
+
+
+def _speed(state, params, model):
+    """The drawn body's centre speed: the paper's |a e3 x w|, a machine's |dC/dt|."""
+    if model is PAPER:
+        return _centre_speed(state, params)
+    return model.centre_speed(state, model.contact_point(state, params))
+
+
+def _subdivisions(t, state, params, max_turn, max_move, model=PAPER):
     """How many frames each sample interval needs (>= 1): from the fastest
     turn |w| and centre speed at its two ends."""
     rate = _norm(state[dyn.W])
-    speed = _centre_speed(state, params)
+    speed = _speed(state, params, model)
     dt = np.diff(t)
     need = np.maximum(np.fmax(rate[1:], rate[:-1]) * dt / max_turn,
                       np.fmax(speed[1:], speed[:-1]) * dt / (max_move * np.asarray(params.r)))
@@ -169,7 +224,7 @@ def _subdivisions(t, state, params, max_turn, max_move):
     return np.maximum(1, np.ceil(need)).astype(np.int64)
 
 
-def _integrate_between(t, state, params, n, batch=2000):
+def _integrate_between(t, state, params, n, batch=2000, model=PAPER):
     """States at the n_k - 1 evenly spaced times inside each interval k with
     n_k > 1, integrated afresh (solve_ivp, DOP853, lab frame) from the
     sample at its start; returns (times, states (9, M))."""
@@ -183,15 +238,15 @@ def _integrate_between(t, state, params, n, batch=2000):
         dt = np.diff(t)[k]
         y0 = state[:, k]
         scale_w = np.sqrt(_dot(y0[dyn.W], y0[dyn.W]) + np.asarray(params.g) / np.asarray(params.a))
-        pb = dyn.BodyParams(*(np.broadcast_to(x, (nb,)) for x in params))
+        pb = type(params)(*(np.broadcast_to(x, (nb,)) for x in params))
 
         def fun(tau, y):
             # each interval runs in its own time tau in [0, 1], t = t_k + tau dt_k
-            return (dyn.rhs(y.reshape(9, nb), pb) * dt).reshape(-1)
+            return (model.rhs(y.reshape(9, nb), pb) * dt).reshape(-1)
 
         # as the simulation's own error control (docs/simulation.md), the
         # sphere's marker rows left out of it
-        marker = np.where(np.asarray(pb.sphere), 1e3, 1e-10)
+        marker = np.where(model.marker(pb), 1e3, 1e-10)
         atol = np.concatenate((np.broadcast_to(1e-10 * np.asarray(pb.r), (3, nb)), np.broadcast_to(marker, (3, nb)),
                                np.broadcast_to(1e-10 * scale_w, (3, nb)))).reshape(-1)
         max_step = 2.0 / float(np.max(scale_w * dt))
@@ -216,27 +271,37 @@ def refine_samples(t, state, params: dyn.BodyParams, *, max_turn=MAX_TURN_RAD, m
     of ``max_turn`` [rad] or its centre move more than a part of
     ``max_move`` r, evenly spaced states integrated afresh from the sample
     at the interval's start (the equations of motion of
-    :mod:`deathsphere.physics.dynamics`, not an interpolation).  The number
+    :mod:`deathsphere.physics.dynamics`, or a machine's, eqs. M16-M19;
+    not an interpolation).  The number
     of frames follows the fastest rotation and motion of each interval, so
     a run is sampled finely only where it moves fast.
 
     Beyond the paper (docs/simulation.md, "3-D view").  Returns (t (M,),
     state (9, M)), M >= N, increasing in time, holding the given samples
-    (the last one, an event's, among them).
+    (the last one, an event's, among them).  ``params``: the paper's body
+    (:class:`~deathsphere.physics.dynamics.BodyParams`) or one machine
+    (:class:`~deathsphere.simulation.bodies.MachineBodies`).
     """
+    model = model_of(params)
+    if model is PAPER:
+        params = _params(params)
+    return _refine(t, state, params, model, max_turn, max_move)
+
+
+def _refine(t, state, params, model, max_turn, max_move):
+    """:func:`refine_samples` with the body model given."""
     t = np.asarray(t, dtype=np.float64)
     state = np.asarray(state, dtype=np.float64)
     if t.size < 2:
         return t, state
-    params = _params(params)
-    n = _subdivisions(t, state, params, _TARGET * max_turn, _TARGET * max_move)
-    extra_t, extra = _integrate_between(t, state, params, n)
+    n = _subdivisions(t, state, params, _TARGET * max_turn, _TARGET * max_move, model)
+    extra_t, extra = _integrate_between(t, state, params, n, model=model)
     t_all = np.concatenate((t, extra_t))
     order = np.argsort(t_all, kind="stable")
     return t_all[order], np.concatenate((state, extra), axis=1)[:, order]
 
 
-def body_frames(summary, states: dict, *, refine: bool = True) -> dict[int, dict]:
+def body_frames(summary, states: dict, *, refine: bool = True, params=None) -> dict[int, dict]:
     """:func:`frame_geometry` of every body of a run, at all its samples
     and, with ``refine``, at the frames :func:`refine_samples` adds between
     them (so that no body turns more than a quarter turn, nor its centre
@@ -249,7 +314,11 @@ def body_frames(summary, states: dict, *, refine: bool = True) -> dict[int, dict
     of ``states``, i.e. a row of the time series), "bounds": (the most
     turn [rad], the most centre step [r]) between frames, **geometry}}``
     for each body with samples (a body that could not start has none and
-    no entry).
+    no entry).  ``params``: the run's per-body parameters
+    (:attr:`deathsphere.simulation.Starts.params`, in the summary's order),
+    needed for machines (:func:`machine_frame_geometry`: the summary does
+    not hold a machine's inertias); the paper's bodies are read from the
+    summary.
     """
     rows = np.asarray(states["input_row"])
     t_all = np.asarray(states["t_s"], dtype=np.float64)
@@ -259,11 +328,16 @@ def body_frames(summary, states: dict, *, refine: bool = True) -> dict[int, dict
         sel = np.flatnonzero(rows == row)
         if not sel.size:
             continue
-        params = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
-                                summary["side"][i] == "outside", summary["body"][i] == "sphere")
         t, y = t_all[sel], state[:, sel]
+        if params is not None and model_of(params) is MACHINE:
+            one = take(params, i)
+            geometry = machine_frame_geometry
+        else:
+            one = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
+                                 summary["side"][i] == "outside", summary["body"][i] == "sphere")
+            geometry = frame_geometry
         if refine:
-            t, y = refine_samples(t, y, params)
+            t, y = refine_samples(t, y, one)
         out[int(row)] = {"t": t, "sample": np.isin(t, t_all[sel]), "bounds": (MAX_TURN_RAD, MAX_MOVE_R),
-                         **frame_geometry(t, y, params)}
+                         **geometry(t, y, one)}
     return out

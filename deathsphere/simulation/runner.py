@@ -1,8 +1,9 @@
 """The integrator driver of a simulation (beyond the paper; docs/simulation.md,
 "Method", "Events" and "Outputs").
 
-:class:`Simulation` integrates the exact equations of motion of
-:mod:`deathsphere.physics.dynamics` for all bodies of a :class:`Starts` at
+:class:`Simulation` integrates the exact equations of motion (those of the
+body model, :mod:`deathsphere.simulation.bodies`: the paper's
+:mod:`deathsphere.physics.dynamics`, or a machine's eqs. M16-M19) for all bodies of a :class:`Starts` at
 once (one state vector of 9 n rows, one vectorised right-hand side) with
 :func:`scipy.integrate.solve_ivp`, period by period (:meth:`Simulation.chunks`),
 stopping a body at the terminal events of
@@ -20,6 +21,7 @@ from scipy.integrate import solve_ivp
 
 from deathsphere.params import RTOL_MIN
 from deathsphere.physics import dynamics as dyn
+from deathsphere.simulation.bodies import model_of, take
 from deathsphere.simulation.events import (
     EVENT_STATUSES,
     EVENT_TOL,
@@ -30,6 +32,7 @@ from deathsphere.simulation.series import (
     concat_tables,
     rows_table,
     sample_quantities,
+    series_columns,
     series_rows,
 )
 from deathsphere.simulation.starts import Starts
@@ -165,6 +168,8 @@ class Simulation:
         if np.any(np.isnan(mu_arr)) or np.any(mu_arr < 0):
             raise ValueError("mu must be >= 0 (inf: no limit)")
         self.starts = starts
+        #: what rolls: the paper's bodies or machines (simulation.bodies)
+        self.model = model_of(starts.params)
         self.periods = float(periods)
         self.points_per_period = int(points_per_period)
         self.method = method
@@ -270,7 +275,7 @@ class Simulation:
                 "input_row": np.broadcast_to(rows[None, :], keep.shape)[keep].astype(np.int64),
                 "t_s": np.broadcast_to(t[:, None], keep.shape)[keep],
                 "state": q["state"][:, keep]})
-        return series_rows(rows, t, q, keep)
+        return series_rows(rows, t, q, keep, self.model.series_extras)
 
     # ---- the run ----------------------------------------------------------------
 
@@ -301,7 +306,7 @@ class Simulation:
             j1 = min((chunk + 1) * self.j_per_chunk, self.j_max)
             t_b = j1 * self.dt
             if self.project_each_period and active.size and chunk > 0:
-                y = dyn.project(y, dyn.BodyParams(*(x[active] for x in s.params)))
+                y = self.model.project(y, take(s.params, active))
             for piece in range(1, pieces + 1):
                 t_p = t_b if piece == pieces else (j0 + (j1 - j0) * piece / pieces) * self.dt
                 while active.size and t_cur < t_p:
@@ -312,7 +317,7 @@ class Simulation:
             for i in active[done]:
                 ledger.finish(i, RunStatus.COMPLETED)
             active, y = active[~done], y[:, ~done]
-            yield rows_table(rows)
+            yield rows_table(rows, series_columns(self.model))
             rows = []
             if progress is not None:
                 progress((chunk + 1) * pieces, total)
@@ -352,14 +357,14 @@ class Simulation:
         ``active`` at states y from t_cur to t_b.  Returns (solution, events)."""
         s = self.starts
         nA = active.size
-        p = dyn.BodyParams(*(x[active] for x in s.params))
-        events = ContactEvents(active, p, self._frame_rate[active], self.mu[active], p.g)
-        fun = dyn.ode(p, self._frame_rate[active])
+        p = take(s.params, active)
+        events = ContactEvents(active, p, self._frame_rate[active], self.mu[active], p.g, self.model)
+        fun = self.model.ode(p, self._frame_rate[active])
         w0 = s.state[dyn.W][:, active]
         scale_w = np.sqrt(np.sum(w0 * w0, axis=0) + s.rate[active] ** 2 + p.g / p.a)
         # a sphere's axis-1 rows are a body-fixed marker that does not enter
         # its dynamics: kept out of the error control (docs/simulation.md)
-        marker = np.where(p.sphere, _MARKER_ATOL / self.atol, 1.0)
+        marker = np.where(self.model.marker(p), _MARKER_ATOL / self.atol, 1.0)
         atol = self.atol * np.concatenate((np.broadcast_to(p.r, (3, nA)), np.broadcast_to(marker, (3, nA)),
                                            np.broadcast_to(scale_w, (3, nA)))).reshape(-1)
         # resolve the body's own rotation and nutation even where the state
@@ -483,7 +488,7 @@ class Simulation:
         with ``record_states=True``, once :meth:`chunks` has been exhausted."""
         from deathsphere.simulation.frames import body_frames
 
-        return body_frames(self.summary(), self.sample_states())
+        return body_frames(self.summary(), self.sample_states(), params=self.starts.params)
 
     def run(self, progress: Callable[[int, int], None] | None = None) -> tuple[Table, Table]:
         """Run to the end; returns ``(series, summary)``."""

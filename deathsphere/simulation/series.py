@@ -1,11 +1,12 @@
 """The time series of a run: what is sampled at each output time and how
 the rows are assembled (beyond the paper; docs/simulation.md, "Outputs").
 
-:func:`sample_quantities` turns states of the equations of motion of
-:mod:`deathsphere.physics.dynamics` into the series' quantities (contact
-point angles, tilt, speed, contact force, energy drift, constraint
-residual); :func:`series_rows` keeps the output rows of them and
-:func:`rows_table` sorts row blocks into one time-major :class:`Table`.
+:func:`sample_quantities` turns states of the equations of motion (those
+of the run's body model, :mod:`deathsphere.simulation.bodies`) into the
+series' quantities (contact point angles, tilt, speed, contact force,
+energy drift, constraint residual; a machine's extras);
+:func:`series_rows` keeps the output rows of them and :func:`rows_table`
+sorts row blocks into one time-major :class:`Table`.
 """
 
 from __future__ import annotations
@@ -15,10 +16,12 @@ from collections.abc import Sequence
 import numpy as np
 
 from deathsphere.physics import dynamics as dyn
+from deathsphere.simulation.bodies import model_of, take
 from deathsphere.simulation.starts import Starts
 from deathsphere.table import Table
 
-__all__ = ["SERIES_COLUMNS", "sample_quantities", "series_rows", "rows_table", "concat_tables", "wrap_angle"]
+__all__ = ["SERIES_COLUMNS", "series_columns", "sample_quantities", "series_rows", "rows_table", "concat_tables",
+           "wrap_angle"]
 
 #: Time-series columns, one row per body and sample time (docs/simulation.md).
 #: ``friction_magnitude_per_mass_m_s2`` is the size of the tangential contact
@@ -28,6 +31,13 @@ SERIES_COLUMNS = (
     "normal_per_mass_m_s2", "friction_magnitude_per_mass_m_s2", "mu_required",
     "energy_drift", "constraint_residual",
 )
+
+
+
+def series_columns(model) -> tuple:
+    """The time series' columns for a body model: :data:`SERIES_COLUMNS`,
+    then the model's own (a machine: ``v_cm_m_s``, ``head_clearance_m``)."""
+    return SERIES_COLUMNS + tuple(model.series_extras)
 
 
 def wrap_angle(x):
@@ -44,14 +54,15 @@ def sample_quantities(starts: Starts, idx, y, t, frame_rate, phi_carry, e0, e_sc
     the azimuth's unwrap carry (advanced here, in place), the start energy
     and the energy scale of the drift.  Returns a dict of (m, nb) arrays
     ``theta``, ``phi``, ``alpha``, ``speed``, ``normal``, ``friction``
-    (magnitude), ``mu``, ``drift``, ``resid``; with ``with_state`` also
+    (magnitude), ``mu``, ``drift``, ``resid`` and the body model's extra
+    columns under their names (``model.series_extras``); with ``with_state`` also
     ``state`` (9, m, nb), the states in lab components.
     """
     s = starts
-    p = dyn.BodyParams(*(x[idx] for x in s.params))
+    model = model_of(s.params)
+    p = take(s.params, idx)
     R = s.frame[idx]                                             # (nb, 3, 3)
-    pvec = dyn.contact_point(y, p)                              # (3, m, nb)
-    c, e1, w = y[dyn.C], y[dyn.E1], y[dyn.W]
+    pvec = model.contact_point(y, p)                            # (3, m, nb)
     pl = np.einsum("bji,jmb->imb", R, pvec)                    # orbit-frame components
     zp = np.moveaxis(R[:, :, 2], 0, 1)[:, None, :]             # z' (3, 1, nb)
     theta = np.arctan2(np.hypot(pl[0], pl[1]), pl[2])
@@ -65,26 +76,19 @@ def sample_quantities(starts: Starts, idx, y, t, frame_rate, phi_carry, e0, e_sc
         phi_f[i] = prev
     phi_carry[idx] = prev
     phi = phi_f + frame_rate[idx][None, :] * t[:, None]
-    # tilt (eq. 11): z' = -cos(alpha) e1 - sin(alpha) e3; for a sphere the
-    # equivalent alpha of sec. 4 (axis 3 along the radius)
-    e3 = (pvec - c) / p.a
-    e1h = e1 / np.sqrt(np.sum(e1 * e1, axis=0))
-    z3 = np.sum(zp * e3, axis=0)
-    z1 = np.sum(zp * e1h, axis=0)
-    cos_sphere = np.where(p.outside, -1.0, 1.0) * np.sqrt(np.maximum(1.0 - z3 * z3, 0.0))
-    al = np.arctan2(-z3, np.where(p.sphere, cos_sphere, -z1))
+    al = model.tilt_angle(y, p, pvec, zp)
     alpha0 = s.alpha[idx]
     alpha = alpha0 + wrap_angle(al - alpha0)
-    speed = np.sqrt(np.sum(np.cross(pvec - c, w, axis=0) ** 2, axis=0))   # |a e3 x w|, eq. (6)
-    f = dyn.contact_force(y, p)
-    drift = (dyn.energy(y, p) - e0[idx]) / e_scale[idx]
-    res = dyn.constraint_residuals(y, p)
-    resid = np.maximum(np.where(p.sphere, 0.0, np.abs(res["axis"])), np.abs(res["contact"]) / p.r)
+    speed = model.centre_speed(y, pvec)
+    f = model.contact_force(y, p)
+    drift = (model.energy(y, p) - e0[idx]) / e_scale[idx]
+    resid = model.residual(y, p)
     q = {
         "theta": theta, "phi": phi, "alpha": alpha, "speed": speed,
         "normal": f["normal"], "friction": f["friction_magnitude"], "mu": f["mu_required"],
         "drift": drift, "resid": resid,
     }
+    q.update(model.extras(y, p))
     if with_state:
         q["state"] = lab_states(y, frame_rate[idx][None, :] * t[:, None])
     return q
@@ -101,9 +105,10 @@ def lab_states(y, angle):
     return lab
 
 
-def series_rows(input_row, t, q, keep) -> dict:
+def series_rows(input_row, t, q, keep, extras=()) -> dict:
     """Long-format rows (time-major) of the samples ``q`` of bodies labelled
-    ``input_row`` (nb,) at times t (m,), where keep (m, nb)."""
+    ``input_row`` (nb,) at times t (m,), where keep (m, nb); ``extras`` the
+    body model's own columns, which ``q`` holds under their names."""
     return {
         "input_row": np.broadcast_to(input_row[None, :], keep.shape)[keep].astype(np.int64),
         "t_s": np.broadcast_to(t[:, None], keep.shape)[keep],
@@ -116,15 +121,17 @@ def series_rows(input_row, t, q, keep) -> dict:
         "mu_required": q["mu"][keep],
         "energy_drift": q["drift"][keep],
         "constraint_residual": q["resid"][keep],
+        **{name: q[name][keep] for name in extras},
     }
 
 
-def rows_table(parts: list[dict]) -> Table:
-    """One time-major Table from row blocks (sorted by time, then input_row)."""
+def rows_table(parts: list[dict], columns: Sequence[str] = SERIES_COLUMNS) -> Table:
+    """One time-major Table of ``columns`` from row blocks (sorted by time,
+    then input_row)."""
     if not parts:
         return Table({name: np.zeros(0, dtype=np.int64 if name == "input_row" else float)
-                      for name in SERIES_COLUMNS})
-    cols = {name: np.concatenate([p[name] for p in parts]) for name in SERIES_COLUMNS}
+                      for name in columns})
+    cols = {name: np.concatenate([p[name] for p in parts]) for name in columns}
     order = np.lexsort((cols["input_row"], cols["t_s"]))
     return Table({name: v[order] for name, v in cols.items()})
 

@@ -28,9 +28,11 @@ from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import REASON_TEXT, Status
+from deathsphere.simulation.bodies import MachineBodies, concat_params, take
 from deathsphere.simulation.status import NO_FIT_VERTICAL_REASON, RunStatus
 
-__all__ = ["Starts", "horizontal_starts", "vertical_starts", "VERTICAL_FRAME", "wheel_geometry", "wheel_start"]
+__all__ = ["Starts", "horizontal_starts", "vertical_starts", "VERTICAL_FRAME", "wheel_geometry", "wheel_start",
+           "start_status"]
 
 
 @dataclass(frozen=True)
@@ -55,7 +57,7 @@ class Starts:
     """
 
     state: np.ndarray
-    params: dyn.BodyParams
+    params: dyn.BodyParams | MachineBodies
     frame: np.ndarray
     input_row: np.ndarray
     body: np.ndarray
@@ -98,7 +100,7 @@ class Starts:
             if name == "state":
                 out[name] = np.concatenate(vals, axis=1)
             elif name == "params":
-                out[name] = dyn.BodyParams(*(np.concatenate(x) for x in zip(*vals)))
+                out[name] = concat_params(vals)
             else:
                 out[name] = np.concatenate(vals, axis=0)
         return Starts(**out)
@@ -111,7 +113,7 @@ class Starts:
             if name == "state":
                 out[name] = v[:, index]
             elif name == "params":
-                out[name] = dyn.BodyParams(*(x[index] for x in v))
+                out[name] = take(v, index)
             else:
                 out[name] = v[index]
         return Starts(**out)
@@ -182,7 +184,7 @@ def wheel_start(theta, alpha, phi, rate, d_theta, d_alpha, a, r):
     return np.concatenate((c, e1, w))
 
 
-def _setup_status(orb):
+def start_status(orb):
     """(RunStatus codes, reason words) from a physics orbit dict: only fit
     and the existence of Omega decide whether a body can start; contact and
     friction are the simulation's business (events)."""
@@ -226,7 +228,7 @@ def _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_deg, perturb_theta_de
     n = th_d.size
     th, al, ph = np.deg2rad(th_d), np.deg2rad(al_d), np.deg2rad(ph_d)
     orb = wheel.horizontal_orbit(th, al, a, r, k, g, outside=outside)
-    status, reason = _setup_status(orb)
+    status, reason = start_status(orb)
     ok = status == RunStatus.PENDING
     rate = np.where(ok, orb["omega"], np.nan)
     state = np.full((9, n), np.nan)
@@ -259,7 +261,7 @@ def _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_deg, per
         orb = sph.sphere_orbit(th, sp, a, r, k, g, outside, branch=br.astype(int))
     else:
         orb = sph.sphere_orbit_from_rate(th, sp, a, r, k, g, outside)
-    status, reason = _setup_status(orb)
+    status, reason = start_status(orb)
     ok = status == RunStatus.PENDING
     rate = np.where(ok, orb["omega"], np.nan)
     state = np.full((9, n), np.nan)

@@ -6,14 +6,15 @@ final status and reason, the extremes of the sampled quantities (drifts of
 theta and alpha, least normal force, most friction needed, largest energy
 drift and constraint residual), the event's time and place, the time
 reached, and the solver's counters; :meth:`Ledger.table` turns it into the
-summary :class:`Table` (columns :data:`SUMMARY_COLUMNS`).
+summary :class:`Table` (columns :data:`SUMMARY_COLUMNS`, then the body
+model's own: a machine's name and least head clearance).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics import dynamics as dyn
+from deathsphere.simulation.bodies import model_of, take
 from deathsphere.simulation.starts import Starts
 from deathsphere.simulation.status import RunStatus, status_labels
 from deathsphere.table import Table
@@ -56,12 +57,15 @@ class Ledger:
         self.phi_carry = s.phi0.astype(float).copy()
         self.e0 = np.full(n, np.nan)
         self.e_scale = np.ones(n)
+        self.model = model_of(s.params)
+        for key, _, _ in self.model.extremes:
+            self.acc[key] = np.full(n, np.nan)
         ok = s.pending
         if ok.any():
-            p_ok = dyn.BodyParams(*(x[ok] for x in s.params))
-            e0 = dyn.energy(s.state[:, ok], p_ok)
+            p_ok = take(s.params, ok)
+            e0 = self.model.energy(s.state[:, ok], p_ok)
             self.e0[ok] = e0
-            self.e_scale[ok] = np.abs(e0 - p_ok.g * s.state[2, ok]) + p_ok.g * p_ok.r
+            self.e_scale[ok] = self.model.energy_scale(s.state[:, ok], p_ok, e0)
         self.n_steps = 0
         self.n_fev = 0
 
@@ -77,7 +81,7 @@ class Ledger:
             ("max_mu", np.fmax, q["mu"]),
             ("max_drift", np.fmax, np.abs(q["drift"])),
             ("max_resid", np.fmax, q["resid"]),
-        )
+        ) + tuple((key, op, q[name]) for key, op, name in self.model.extremes)
         for key, op, v in reductions:
             acc[key][idx] = op(acc[key][idx], op.reduce(np.where(within, v, np.nan), axis=0))
 
@@ -113,7 +117,8 @@ class Ledger:
             "body": s.body, "side": s.side, "orbit": s.orbit,
             "theta_deg": s.theta_deg, "alpha_deg": s.alpha_deg,
             "a_m": s.params.a.astype(float), "r_m": s.params.r.astype(float),
-            "k": s.params.k.astype(float), "g_m_s2": s.params.g.astype(float),
+            # a machine has inertias, not the paper's one factor k
+            "k": np.asarray(getattr(s.params, "k", nan), dtype=float), "g_m_s2": s.params.g.astype(float),
             "omega_rad_s": s.rate, "omega3_rad_s": s.omega3, "speed_m_s": s.speed, "period_s": period,
             "perturb_deg": s.perturb_deg.astype(float), "perturb_theta_deg": s.perturb_theta_deg.astype(float),
             "mu_available": np.where(np.isinf(mu), np.nan, mu),
@@ -136,4 +141,6 @@ class Ledger:
             "n_fev": np.full(n, self.n_fev, dtype=np.int64),
             "wall_time_s": np.full(n, wall),
         }
-        return Table({name: cols[name] for name in SUMMARY_COLUMNS})
+        cols.update(self.model.summary_echo(s.params))
+        cols.update({key: acc[key] for key, _, _ in self.model.extremes})
+        return Table({name: cols[name] for name in SUMMARY_COLUMNS + tuple(self.model.summary_extras)})

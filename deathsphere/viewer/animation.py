@@ -46,9 +46,13 @@ _TRAIL = "#1f9bd1"
 _NORMAL = "#1e8449"
 _FRICTION = "#e67e22"
 _SPOKE = "#d62728"
+_RIDER = "#8e44ad"
+_COM = "#e91e9c"
+#: a machine's frame points (simulation.frames): centre of mass, head
+_MACHINE = ("com", "head")
 _EVENT = "#c0392b"
 #: colours the GIF's palette must hold although the first frame may lack them
-_SWATCHES = (_WHEEL, _TRAIL, _NORMAL, _FRICTION, _SPOKE, _EVENT, "#333333", "#8796b0", "#d4a017", "#9a7400",
+_SWATCHES = (_WHEEL, _TRAIL, _NORMAL, _FRICTION, _SPOKE, _EVENT, _RIDER, _COM, "#333333", "#8796b0", "#d4a017", "#9a7400",
              "#555555", "#ffffff", "#000000")
 
 
@@ -102,9 +106,10 @@ def _between(scene, t):
     f = 0.0 if j == i else float(np.clip((t - scene.t[i]) / (scene.t[j] - scene.t[i]), 0.0, 1.0))
     geo = scene.geometry
     out = {k: (1 - f) * geo[k][:, i] + f * geo[k][:, j]
-           for k in ("centre", "axis", "e3", "contact", "normal_force", "friction_force", "spoke")}
+           for k in ("centre", "axis", "e3", "contact", "normal_force", "friction_force", "spoke", *_MACHINE)
+           if k in geo}
     out["axis"] = _unit(out["axis"])
-    if scene.body == "wheel":
+    if scene.body != "sphere":
         e3 = out["e3"] - np.dot(out["e3"], out["axis"]) * out["axis"]
         out["e3"] = _unit(e3)
         psi = (1 - f) * geo["spin"][i] + f * geo["spin"][j]
@@ -157,7 +162,7 @@ def number(x, digits=3) -> str:
 
 def title_text(scene: BodyScene, title: str = "") -> str:
     """The line above the view: body, side, orbit and its start."""
-    what = f"{'wheel' if scene.body == 'wheel' else 'ball'} {scene.side} the sphere, {scene.orbit} orbit"
+    what = f"{'ball' if scene.body == 'sphere' else scene.body} {scene.side} the sphere, {scene.orbit} orbit"
     start = (f"\u03b8 = {scene.theta0_deg:.1f}\u00b0" if scene.orbit == "vertical"
              else f"\u03b8\u2080 = {scene.theta0_deg:.1f}\u00b0, \u03b1\u2080 = {scene.alpha0_deg:.1f}\u00b0")
     return (f"{title}: " if title else "") + f"{what} ({start}, a = {scene.a:g} m, r = {scene.r:g} m)"
@@ -305,7 +310,7 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
     drawn = [s for s in scenes if s.n_frames]
     artists = []
     for s in drawn:
-        body = Poly3DCollection([], facecolor=_WHEEL, edgecolor="#333333" if s.body == "wheel" else "none",
+        body = Poly3DCollection([], facecolor=_WHEEL, edgecolor="none" if s.body == "sphere" else "#333333",
                                 linewidths=1.5, alpha=0.95)
         ax.add_collection3d(body)
         spoke, = ax.plot([], [], [], color=_SPOKE, lw=3)
@@ -314,13 +319,24 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
         friction, = ax.plot([], [], [], color=_FRICTION, lw=2.5)
         label = ax.text(0, 0, 0, "", color=_EVENT, fontsize=13, fontweight="bold", ha="center",
                         bbox=dict(boxstyle="round", fc="white", ec=_EVENT))
-        artists.append((s, body, spoke, trail, normal, friction, label))
+        rider = None
+        if "com" in s.geometry:     # a machine: contact - hub - head, the centre of mass and the head marked
+            rider = (ax.plot([], [], [], color=_RIDER, lw=3.5)[0],
+                     ax.plot([], [], [], "o", color=_COM, ms=9, mec="#1a1a1a")[0],
+                     ax.plot([], [], [], "o", color="white", ms=12, mec=_RIDER, mew=2.5)[0])
+        artists.append((s, body, spoke, trail, normal, friction, label, rider))
 
     def draw(t):
-        for s, body, spoke, trail, normal, friction, label in artists:
+        for s, body, spoke, trail, normal, friction, label, rider in artists:
             _, now = _between(s, t)
             c, e1, e3, p = now["centre"], now["axis"], now["e3"], now["contact"]
-            if s.body == "wheel":
+            if rider is not None:
+                frame, com, head = rider
+                g, h = now["com"], now["head"]
+                frame.set_data_3d([p[0], c[0], h[0]], [p[1], c[1], h[1]], [p[2], c[2], h[2]])
+                com.set_data_3d([g[0]], [g[1]], [g[2]])
+                head.set_data_3d([h[0]], [h[1]], [h[2]])
+            if s.body != "sphere":
                 body.set_verts([_disc(c, e1, e3, s.a)])
                 tip = c + 0.95 * s.a * now["spoke"]
             else:

@@ -20,13 +20,16 @@ import numpy as np
 
 from deathsphere.viewer.scene import PLAYBACK_FACTORS, BodyScene, playback_factor
 
-__all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "SCALAR_KEYS",
-           "PANEL_KEYS", "SCREEN_INTERVAL_S"]
+__all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "MACHINE_KEYS",
+           "SCALAR_KEYS", "PANEL_KEYS", "SCREEN_INTERVAL_S"]
 
 #: where the template takes the data (a JavaScript expression)
 DATA_MARK = "/*__DEATHSPHERE_DATA__*/null"
 #: frame vectors stored, (3, F) each, frame-major x, y, z
 VECTOR_KEYS = ("centre", "axis", "e3", "contact", "normal_force", "friction_force")
+#: a machine's frame vectors, stored when its frames have them: the centre
+#: of mass and the top of the rider's head (simulation.frames)
+MACHINE_KEYS = ("com", "head")
 #: frame scalars stored, (F,) each
 SCALAR_KEYS = ("spin",)
 PANEL_KEYS = ("theta", "alpha", "speed", "speed_km_h", "g_load", "mu", "normal", "friction", "force_angle")
@@ -58,6 +61,9 @@ def _body(scene: BodyScene) -> dict:
     }
     for key in VECTOR_KEYS:
         out[key] = _encode(scene.geometry[key].T) if scene.n_frames else ""
+    for key in MACHINE_KEYS:
+        if key in scene.geometry:
+            out[key] = _encode(scene.geometry[key].T) if scene.n_frames else ""
     for key in SCALAR_KEYS:
         out[key] = _encode(scene.geometry[key]) if scene.n_frames else ""
     out["panel"] = {key: (_encode(scene.panel[key]) if scene.n_frames else "") for key in PANEL_KEYS}

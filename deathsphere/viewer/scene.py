@@ -171,6 +171,9 @@ def build_scenes(series: Table, summary: Table, frames: dict, *, max_frames: int
             scene.panel = {k: np.interp(scene.t, t_rows, np.asarray(series[col], dtype=np.float64)[sel])
                            for k, col in PANEL_COLUMNS.items()}
             scene.panel.update({k: scene.geometry[key] for k, key in FRAME_PANEL.items()})
+            if "rider_speed" in scene.geometry:  # a machine reads out its centre of mass's speed (ride's v_cm)
+                v = scene.geometry["rider_speed"]
+                scene.panel.update({"speed": v, "speed_km_h": v * 3.6})
             on_row = np.isin(geo["t"], t_rows)
             trail_t, trail = geo["t"][on_row], geo["contact"][:, on_row]
             pick = frame_indices(trail_t.size, TRAIL_POINTS)

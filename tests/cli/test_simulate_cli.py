@@ -57,3 +57,34 @@ def test_simulate_table_on_a_terminal(run):
 def test_simulate_usage_errors(run, args, words):
     res = run("simulate", *args)
     assert res.exit_code == 2 and words in res.stderr and len(res.stderr.strip().splitlines()) == 1
+
+
+def test_a_machine_simulated_on_the_command_line(run):
+    """--machine with ride's machine options: the series (CSV) gains the
+    machine's columns, the summary has its status and name."""
+    res = run("simulate", "--machine", "stunt125", "--theta", "20", "--alpha", "-10.34", "--diameter", "16ft",
+              "--perturb", "1e-4", "--periods", "1", "--points-per-period", "4", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    out = rows(res.stdout)
+    assert len(out) == 5 and list(out[0])[-2:] == ["v_cm_m_s", "head_clearance_m"]
+    assert "completed" in res.stderr
+    summary = rows(run("simulate", "--machine", "stunt125", "--theta", "90", "--alpha", "15", "--diameter", "16ft",
+                       "--mass", "200", "-a", "0.32", "--perturb", "1e-3", "--periods", "1", "--summary-only",
+                       "--format", "csv").stdout)
+    (row,) = summary
+    assert row["status"] == "completed" and row["machine"] == "stunt125 (modified)"
+    assert row["body"] == "machine" and float(row["a_m"]) == 0.32 and float(row["min_head_clearance_m"]) > 0
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--machine", "stunt125", "--theta", "60", "--alpha", "10", "-k", "0.3"], "k not allowed"),
+    (["--machine", "stunt125", "--theta", "60", "--alpha", "10", "--body", "sphere"], "body not allowed"),
+    (["--machine", "stunt125", "--vertical", "--theta", "90", "--v-top", "9"], "not simulated"),
+    (["--machine", "stunt125", "--theta", "60"], "Missing option '--alpha'"),
+    (["--theta", "60", "--alpha", "10", "--mass", "100"], "--mass is a machine option"),
+    (["--machine", "bicycle", "--theta", "60", "--alpha", "10"], "'bicycle' is not one of"),
+])
+def test_a_machine_with_a_bad_combination_is_one_line(run, args, words):
+    res = run("simulate", *args)
+    assert res.exit_code == 2 and words in res.stderr and len(res.stderr.strip().splitlines()) == 1
+    assert "Traceback" not in res.stderr and res.stdout == ""

@@ -117,7 +117,7 @@ def test_the_reduced_jacobian_is_reversible(machine):
 def _simulate(theta_deg, alpha_deg, p, periods, kick=1e-6):
     from scipy.integrate import solve_ivp
 
-    from deathsphere.physics.machine_dynamics import _geometry
+    from deathsphere.physics.machine_dynamics import machine_geometry
 
     th, al = np.radians([theta_deg]), np.radians([alpha_deg])
     X0, om = machine_orbit_state(th, al, p)
@@ -128,7 +128,7 @@ def _simulate(theta_deg, alpha_deg, p, periods, kick=1e-6):
                     dense_output=True)
     ts = np.linspace(0, T, 400)
     Y = sol.sol(ts)
-    _, e3, _, P = _geometry(Y[0:3], Y[3:6], p.a, p.t)
+    _, e3, _, P = machine_geometry(Y[0:3], Y[3:6], p.a, p.t)
     dtheta = np.arccos(P[2] / np.linalg.norm(P, axis=0)) - th[0]
     dalpha = np.arcsin(-e3[2]) - al[0]
     return ts, np.hypot(dtheta, dalpha), machine_stability(th, al, p)

@@ -1,0 +1,227 @@
+"""The body dynamics a simulation integrates, as one pluggable object
+(beyond the paper; docs/simulation.md, "Bodies").
+
+The runner, the events, the time series, the summary and the 3-D view's
+frames ask a *body model* for everything that depends on what rolls: the
+right-hand side, the contact point and force, the tilt's axes, the speed,
+the energy, the constraints.  Two models:
+
+* :data:`PAPER` -- the paper's wheel and sphere, :mod:`deathsphere.physics.dynamics`
+  (parameters :class:`~deathsphere.physics.dynamics.BodyParams`);
+* :data:`MACHINE` -- a machine (motorcycle and rider), the exact equations
+  M16-M19 of :mod:`deathsphere.physics.machine_dynamics` (parameters
+  :class:`MachineBodies`).
+
+Both states are (C, e1, w) in the same 9 rows, so the integrator's driver
+is the same.  :func:`model_of` picks the model from the parameters' type.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from deathsphere.physics import dynamics as dyn
+from deathsphere.physics import machine_motion as mm
+from deathsphere.physics.machine_dynamics import MachineParams, machine_rhs
+
+__all__ = ["MachineBodies", "PAPER", "MACHINE", "model_of", "take", "concat_params"]
+
+
+class MachineBodies(NamedTuple):
+    """Per-body parameters of simulated machines, arrays (n,): wheel radius
+    ``a``, tyre crown radius ``t``, sphere radius ``r``, centre-of-mass
+    height ``h``, ``g``, ``mass``, inertias ``roll``, ``pitch``, ``yaw``,
+    ``spin`` (docs/machine.md sec. 1), the head height ``head`` and the
+    machine's ``name`` (object)."""
+
+    a: np.ndarray
+    t: np.ndarray
+    r: np.ndarray
+    h: np.ndarray
+    g: np.ndarray
+    mass: np.ndarray
+    roll: np.ndarray
+    pitch: np.ndarray
+    yaw: np.ndarray
+    spin: np.ndarray
+    head: np.ndarray
+    name: np.ndarray
+
+    def physics(self) -> MachineParams:
+        """The :class:`MachineParams` of the equations of motion."""
+        return MachineParams(*self[:10])
+
+
+def take(params, index):
+    """The bodies ``index`` of per-body parameters (either kind; beyond the paper)."""
+    return type(params)(*(np.asarray(x)[index] for x in params))
+
+
+def concat_params(parts):
+    """Per-body parameters of one kind, joined in order (beyond the paper)."""
+    kinds = {type(p) for p in parts}
+    if len(kinds) != 1:
+        raise ValueError("one run simulates one kind of body (wheels and spheres, or machines)")
+    return type(parts[0])(*(np.concatenate([np.asarray(x) for x in xs]) for xs in zip(*parts)))
+
+
+def _dot(u, v):
+    return np.sum(u * v, axis=0)
+
+
+class _Paper:
+    """The paper's wheel and sphere (:mod:`deathsphere.physics.dynamics`)."""
+
+    name = "paper"
+    #: series and summary columns beyond the shared ones
+    series_extras: tuple = ()
+    summary_extras: tuple = ()
+    #: (summary column, reduction, series column) folded over the samples
+    extremes: tuple = ()
+
+    def summary_echo(self, p) -> dict:
+        return {}
+
+    def ode(self, p, frame_rate):
+        return dyn.ode(p, frame_rate)
+
+    def rhs(self, y, p):
+        return dyn.rhs(y, p)
+
+    def scalar_events(self, p):
+        """(coefficients, g) of the one-body float path of the events, or None."""
+        return dyn.scalar_coefficients(p), float(np.reshape(p.g, -1)[0])
+
+    def contact_values(self, y, scalar):
+        return dyn.contact_values(y, *scalar)
+
+    def contact_force(self, y, p):
+        return dyn.contact_force(y, p)
+
+    def contact_point(self, y, p):
+        return dyn.contact_point(y, p)
+
+    def marker(self, p):
+        """Rows 3-5 carry a marker outside the dynamics (a sphere's)."""
+        return np.asarray(p.sphere, dtype=bool)
+
+    def project(self, y, p):
+        return dyn.project(y, p)
+
+    def energy(self, y, p):
+        return dyn.energy(y, p)
+
+    def energy_scale(self, y, p, e0):
+        """The drift's scale: the kinetic part of e0 plus g r."""
+        return np.abs(e0 - p.g * y[2]) + p.g * p.r
+
+    def tilt_angle(self, y, p, pvec, zp):
+        """atan2 of the tilt (eq. 11): z' = -cos(alpha) e1 - sin(alpha) e3;
+        a sphere's equivalent alpha of sec. 4 (axis 3 along the radius)."""
+        c, e1 = y[dyn.C], y[dyn.E1]
+        e3 = (pvec - c) / p.a
+        e1h = e1 / np.sqrt(np.sum(e1 * e1, axis=0))
+        z3 = np.sum(zp * e3, axis=0)
+        z1 = np.sum(zp * e1h, axis=0)
+        cos_sphere = np.where(p.outside, -1.0, 1.0) * np.sqrt(np.maximum(1.0 - z3 * z3, 0.0))
+        return np.arctan2(-z3, np.where(p.sphere, cos_sphere, -z1))
+
+    def centre_speed(self, y, pvec):
+        """|a e3 x w| (eq. 6), a e3 = p - c."""
+        return np.sqrt(np.sum(np.cross(pvec - y[dyn.C], y[dyn.W], axis=0) ** 2, axis=0))
+
+    def residual(self, y, p):
+        res = dyn.constraint_residuals(y, p)
+        return np.maximum(np.where(p.sphere, 0.0, np.abs(res["axis"])), np.abs(res["contact"]) / p.r)
+
+    def extras(self, y, p) -> dict:
+        return {}
+
+
+class _Machine:
+    """A machine: eqs. M16-M19 (:mod:`deathsphere.physics.machine_dynamics`)."""
+
+    name = "machine"
+    #: appended to the wheel's columns: the centre of mass's speed and the
+    #: head's clearance from the globe (r - |H|), as ``ride`` names them
+    series_extras = ("v_cm_m_s", "head_clearance_m")
+    summary_extras = ("machine", "min_head_clearance_m")
+    extremes = (("min_head_clearance_m", np.fmin, "head_clearance_m"),)
+
+    def summary_echo(self, p: MachineBodies) -> dict:
+        return {"machine": np.asarray(p.name, dtype=object)}
+
+    def ode(self, p: MachineBodies, frame_rate):
+        n = int(np.size(p.a))
+        mp = p.physics()
+        fr = np.broadcast_to(np.asarray(frame_rate, dtype=float), (n,))
+        mcol = MachineParams(*(np.asarray(x)[:, None] for x in mp))
+
+        def fun(t, y):
+            y = np.asarray(y)
+            if y.ndim == 1:
+                return machine_rhs(y.reshape(9, n), mp, fr).reshape(-1)
+            m = y.shape[1]
+            return machine_rhs(y.reshape(9, n, m), mcol, fr[:, None]).reshape(9 * n, m)
+
+        return fun
+
+    def rhs(self, y, p: MachineBodies):
+        return machine_rhs(y, p.physics())
+
+    def scalar_events(self, p):
+        return None
+
+    def contact_values(self, y, scalar):
+        raise NotImplementedError
+
+    def contact_force(self, y, p: MachineBodies):
+        return mm.machine_contact_force(y, p.physics())
+
+    def contact_point(self, y, p: MachineBodies):
+        return mm.machine_points(y, p.physics())["P"]
+
+    def marker(self, p):
+        return np.zeros(np.shape(p.a), dtype=bool)
+
+    def project(self, y, p: MachineBodies):
+        return mm.machine_project(y, p.physics())
+
+    def energy(self, y, p: MachineBodies):
+        return mm.machine_energy(y, p.physics())[0]
+
+    def energy_scale(self, y, p: MachineBodies, e0):
+        return np.abs(mm.machine_energy(y, p.physics())[1]) + p.g * p.r
+
+    def tilt_angle(self, y, p: MachineBodies, pvec, zp):
+        """The tilt of the up-axis -e3 above the orbit plane (docs/machine.md
+        sec. 1), on the paper's convention z' = -cos(alpha) e1 - sin(alpha) e3."""
+        pts = mm.machine_points(y, p.physics())
+        return np.arctan2(-np.sum(zp * pts["e3"], axis=0), -np.sum(zp * pts["e1"], axis=0))
+
+    def centre_speed(self, y, pvec):
+        """The wheel centre's speed |dC/dt| = |w x (P - C)| (eq. M16)."""
+        return np.sqrt(np.sum(np.cross(y[6:9], pvec - y[0:3], axis=0) ** 2, axis=0))
+
+    def residual(self, y, p: MachineBodies):
+        res = mm.machine_residuals(y, p.physics())
+        return np.maximum(np.abs(res["axis"]), np.abs(res["contact"]) / p.r)
+
+    def extras(self, y, p: MachineBodies) -> dict:
+        mp = p.physics()
+        vG = mm.machine_rates(y, mp)["vG"]
+        H = mm.machine_points(y, mp, head=p.head)["H"]
+        return {"v_cm_m_s": np.sqrt(_dot(vG, vG)), "head_clearance_m": p.r - np.sqrt(_dot(H, H))}
+
+
+PAPER = _Paper()
+MACHINE = _Machine()
+
+
+def model_of(params):
+    """The body model of per-body parameters (beyond the paper):
+    :data:`MACHINE` for :class:`MachineBodies` (docs/machine.md eqs.
+    M16-M19), else :data:`PAPER` (eqs. 2-7b in general form)."""
+    return MACHINE if isinstance(params, MachineBodies) else PAPER
