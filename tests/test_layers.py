@@ -60,6 +60,7 @@ ALLOWED = {
     "parallel": {"cluster"},
     "cluster": {"errors", "memory"},
     "memory": set(),
+    "threads": set(),
     "topics": set(),
     "model": {"physics", "table", "params", "constants", "errors"},
     "inputs": {"model", "params", "errors", "units", "table"},
@@ -73,7 +74,7 @@ ALLOWED = {
             "parallel", "cluster", "units", "errors"},
     "__main__": {"cli"},
     "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",
-            "memory"},
+            "memory", "threads"},
 }
 
 

@@ -27,6 +27,7 @@ import click
 from deathsphere import __version__
 from deathsphere.exitcodes import ExitCode
 from deathsphere.memory import reuse_freed_memory
+from deathsphere.threads import leave_a_core_to_the_evaluation
 from deathsphere.params import ParameterError
 from deathsphere.writers.stream import write_csv, write_json, write_ndjson
 
@@ -400,4 +401,5 @@ def cli():
 def main(argv=None) -> None:
     """Console-script entry point (see :class:`DeathsphereGroup` for exit codes)."""
     reuse_freed_memory()
+    leave_a_core_to_the_evaluation()
     cli.main(args=argv)

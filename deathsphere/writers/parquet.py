@@ -11,6 +11,7 @@ import importlib.util
 from typing import Iterable
 
 from deathsphere.table import frames
+from deathsphere.writers.behind import WriteBehind
 
 
 def parquet_available() -> bool:
@@ -23,14 +24,24 @@ def write_parquet(chunks: Iterable, path: str) -> int:
     <deathsphere.table.Table.to_arrow>` with the first chunk's schema:
     undefined values (NaN, empty text) are nulls; text columns are strings,
     ``input_row`` and ``branch`` int64, the rest float64."""
-    import pyarrow as pa
-    import pyarrow.parquet as pq
+    import threading
 
+    # pyarrow's import and its first conversion (which imports pandas, if
+    # installed: ~0.25 s together) on a thread while the first chunk is evaluated
+    warm = threading.Thread(target=_warm_up_pyarrow, name="deathsphere-pyarrow", daemon=True)
+    warm.start()
     rows = 0
     writer = schema = None
+    # the row groups are encoded, compressed and written on a thread while
+    # the next chunk is evaluated (pyarrow does it without Python's lock)
+    behind = WriteBehind()
     try:
         for table in chunks:
             if schema is None:
+                warm.join()
+                import pyarrow as pa
+                import pyarrow.parquet as pq
+
                 schema = frames.arrow_schema(table)
                 # dictionaries for the text columns only: a float column of
                 # distinct results would be dictionary-encoded in vain (pyarrow
@@ -39,11 +50,29 @@ def write_parquet(chunks: Iterable, path: str) -> int:
                 writer = pq.ParquetWriter(path, schema, use_dictionary=text)
             if len(table) == 0:
                 continue
-            writer.write_table(frames.arrow_table(table, schema), row_group_size=len(table))
+            behind.put(writer.write_table, frames.arrow_table(table, schema), row_group_size=len(table))
             rows += len(table)
+        behind.wait()
     finally:
+        behind.close()
         if writer is not None:
             writer.close()
     if writer is None:  # no chunk at all: still a valid, empty file
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
         pq.write_table(pa.table({}), path)
     return rows
+
+
+def _warm_up_pyarrow() -> None:
+    """Import what :func:`write_parquet` needs; a failure is left for the
+    writer's own import to report (a thread would print a traceback)."""
+    try:
+        import numpy as np
+        import pyarrow as pa
+        import pyarrow.parquet  # noqa: F401
+
+        pa.array(np.zeros(1), mask=np.zeros(1, dtype=bool))
+    except Exception:
+        pass

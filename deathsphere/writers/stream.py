@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import IO, Iterable
 
 from deathsphere.table.cells import csv_text, json_records
+from deathsphere.writers.behind import WriteBehind
 
 FORMATS = ("table", "csv", "json", "ndjson")
 
@@ -71,8 +72,8 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
             else:
                 if behind is None:
                     out.flush()  # what the text layer holds goes first
-                    behind = _WriteBehind()
-                behind.put(text, table, i == 0, binary)
+                    behind = WriteBehind()
+                behind.put(text, table, header=i == 0, sink=binary)
             rows += len(table)
             written += len(table)
         if behind is not None:
@@ -81,33 +82,6 @@ def write_csv(chunks: Iterable, out: IO[str], compiled: bool | None = None, expe
         if behind is not None:
             behind.close()
     return written
-
-
-class _WriteBehind:
-    """The compiled writer on one thread: a chunk is formatted and written
-    there while the caller evaluates the next one.  polars formats and the
-    OS writes without holding the GIL, so on two cores the two overlap.  One
-    chunk at most is in the thread's hands, so the chunks stay in order and
-    memory grows by one chunk; a failed write (a reader gone) is raised
-    here at the next chunk or at the end."""
-
-    def __init__(self):
-        from concurrent.futures import ThreadPoolExecutor
-
-        self.pool = ThreadPoolExecutor(1, thread_name_prefix="deathsphere-writer")
-        self.pending = None
-
-    def put(self, text, table, header: bool, sink) -> None:
-        self.wait()
-        self.pending = self.pool.submit(text, table, header=header, sink=sink)
-
-    def wait(self) -> None:
-        if self.pending is not None:
-            done, self.pending = self.pending, None
-            done.result()
-
-    def close(self) -> None:
-        self.pool.shutdown(wait=True, cancel_futures=True)
 
 
 def _warm_up_polars() -> None:
