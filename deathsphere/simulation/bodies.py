@@ -175,7 +175,9 @@ class _Machine:
         return None
 
     def contact_values(self, y, scalar):
-        raise NotImplementedError
+        """Not reached: with :meth:`scalar_events` None the events take the
+        vector path (:meth:`contact_force`) for a machine."""
+        raise TypeError("a machine's events use its contact force, not the paper's scalar path")
 
     def contact_force(self, y, p: MachineBodies):
         return mm.machine_contact_force(y, p.physics())
