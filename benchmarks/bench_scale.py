@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -177,9 +178,7 @@ def main():
         r = timed([sys.executable, "-m", "deathsphere", "orbit", "--input", requests, "--format", "csv"], env=env)
         print(f"{prefix}orbit --input of {n:,} requests with stability: peak RSS {r['rss']:.1f} MB (goal < 150), "
               f"{r['wall']:.2f} s, {r['faults']:,} minor faults")
-    for name in os.listdir(folder):
-        os.remove(os.path.join(folder, name))
-    os.rmdir(folder)
+    shutil.rmtree(folder)
 
 
 if __name__ == "__main__":

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -110,9 +111,7 @@ def main():
         size = os.path.getsize(os.path.join(folder, "big.parquet")) / 1e6
         print(f"peak RSS, sweep of {side * side:>12,} orbits to Parquet (--no-stability): {to_parquet[0]:7.1f} MB "
               f"({to_parquet[1]:.1f} s, file {size:.0f} MB)")
-    for name in os.listdir(folder):
-        os.remove(os.path.join(folder, name))
-    os.rmdir(folder)
+    shutil.rmtree(folder)
 
 
 if __name__ == "__main__":

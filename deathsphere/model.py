@@ -472,8 +472,8 @@ def evaluate(req: dict, stability: bool = True) -> Table:
 
 #: Statuses of a steady orbit that exists with contact (it may need more
 #: friction or g-load than allowed): its stability is analysed.
-LIVE_STATUSES = ("ok", "slips", "over_g")
 LIVE_CODES = (Status.OK, Status.SLIPS, Status.OVER_G)
+LIVE_STATUSES = tuple(code.label for code in LIVE_CODES)
 #: Request fields a row prints as given, and their columns (docs/contract.md,
 #: "Inputs are echoed as given").
 ECHOED = {"speed": "v_cm_m_s", "omega": "omega_rad_s", "omega3": "omega3_rad_s"}

@@ -19,7 +19,7 @@ from deathsphere.api.arguments import (
     sphere_radius,
 )
 from deathsphere.api.machines import Machine, as_machine
-from deathsphere.params import ParameterError
+from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.table import Table
@@ -112,7 +112,10 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
         cols[key] = np.full(n, np.nan)
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
     if rows.size:
-        from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
+        from deathsphere.physics.machine_dynamics import (
+            MachineParams,
+            machine_stability,
+        )
         from deathsphere.physics.stability.verdict import VERDICT_LABELS
 
         rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
@@ -225,7 +228,7 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
         th = np.radians(flat["theta"])
     g_, mu_, xg = flat["g"], flat["mu"], flat["max_g"]
     if alpha is not None:
-        al = np.radians(_reduced(flat["alpha"]))
+        al = np.radians(reduce_angle(flat["alpha"]))
         res = _evaluate(th, al, rr, g_, mu_, xg, m)
         given = {"alpha_deg": flat["alpha"].astype(float)}
         if height is None:
@@ -240,10 +243,6 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
-
-
-def _reduced(deg):
-    return 180.0 - np.mod(180.0 - deg, 360.0)
 
 
 def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None, height=None) -> Table:

@@ -43,6 +43,8 @@ from deathsphere.physics.stability.reduction import (
     householder_complement,
     spectrum_from_invariants,
 )
+from deathsphere.physics.vectors import cross as _cross
+from deathsphere.physics.vectors import dot as _dot
 from deathsphere.physics.vectors import zcross
 
 __all__ = ["MachineParams", "GeometryRates", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
@@ -98,19 +100,11 @@ class _Jet:
 
 
 def _jdot(u: _Jet, v: _Jet) -> _Jet:
-    return _Jet(np.sum(u.x0 * v.x0, axis=0), np.sum(u.x1 * v.x0 + u.x0 * v.x1, axis=0))
-
-
-def _cross(u, v):
-    return np.stack((u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]))
+    return _Jet(_dot(u.x0, v.x0), _dot(u.x1, v.x0) + _dot(u.x0, v.x1))
 
 
 def _jcross(u: _Jet, v: _Jet) -> _Jet:
     return _Jet(_cross(u.x0, v.x0), _cross(u.x1, v.x0) + _cross(u.x0, v.x1))
-
-
-def _dot(u, v):
-    return np.sum(u * v, axis=0)
 
 
 def machine_geometry(C, E, a, t):
@@ -118,43 +112,46 @@ def machine_geometry(C, E, a, t):
     axle e1, the unit vector e3 from the wheel centre towards the crown
     (the up-axis is -e3), the crown point Q and the contact point P (3, ...)
     from the wheel centre C and the axle vector E (3, ...)."""
-    h1 = E / np.sqrt(_dot(E, E))
-    cperp = C - h1 * _dot(C, h1)
-    e3 = cperp / np.sqrt(_dot(cperp, cperp))
-    Q = C + e3 * (a - t)
-    P = Q + Q * (t / np.sqrt(_dot(Q, Q)))
-    return h1, e3, Q, P
+    g = GeometryRates(C, E, a, t)
+    return g.h1, g.e3, g.Q, g.P
 
 
 class GeometryRates:
-    """The geometry of :func:`machine_geometry` and its first time
-    derivatives (suffix 1) for rates vC = dC/dt, Ed = dE/dt (eq. M16), with
-    the intermediate norms kept, so that the second derivative of e3 for
-    many trial accelerations (:meth:`e3_second`) reuses them."""
+    """The geometry of :func:`machine_geometry` (eq. M16), and with
+    :meth:`rates` its first time derivatives (suffix 1) for rates
+    vC = dC/dt, Ed = dE/dt, the intermediate norms kept so that the second
+    derivative of e3 for many trial accelerations (:meth:`e3_second`)
+    reuses them."""
 
-    __slots__ = ("C1", "E1", "sE", "sE1", "h1", "h1_1", "d", "d1", "cp", "cp1", "sc", "sc1", "e3", "e3_1",
-                 "P", "P1")
+    __slots__ = ("C", "E", "a_t", "t", "C1", "E1", "sE", "sE1", "h1", "h1_1", "d", "d1", "cp", "cp1", "sc",
+                 "sc1", "e3", "e3_1", "Q", "sQ", "P", "P1")
 
-    def __init__(self, C, E, vC, Ed, a, t):
-        self.C1, self.E1 = vC, Ed
+    def __init__(self, C, E, a, t):
+        self.C, self.E, self.a_t, self.t = C, E, a - t, t
         self.sE = np.sqrt(_dot(E, E))
-        self.sE1 = _dot(E, Ed) / self.sE
         self.h1 = E / self.sE
-        self.h1_1 = (Ed - self.h1 * self.sE1) / self.sE
         self.d = _dot(C, self.h1)
-        self.d1 = _dot(vC, self.h1) + _dot(C, self.h1_1)
         self.cp = C - self.h1 * self.d
-        self.cp1 = vC - (self.h1_1 * self.d + self.h1 * self.d1)
         self.sc = np.sqrt(_dot(self.cp, self.cp))
-        self.sc1 = _dot(self.cp, self.cp1) / self.sc
         self.e3 = self.cp / self.sc
+        self.Q = C + self.e3 * self.a_t
+        self.sQ = np.sqrt(_dot(self.Q, self.Q))
+        self.P = self.Q + self.Q * (t / self.sQ)
+
+    def rates(self, vC, Ed):
+        """The first derivatives for dC/dt = vC, dE/dt = Ed (returns self)."""
+        C, E, t, Q, sQ = self.C, self.E, self.t, self.Q, self.sQ
+        self.C1, self.E1 = vC, Ed
+        self.sE1 = _dot(E, Ed) / self.sE
+        self.h1_1 = (Ed - self.h1 * self.sE1) / self.sE
+        self.d1 = _dot(vC, self.h1) + _dot(C, self.h1_1)
+        self.cp1 = vC - (self.h1_1 * self.d + self.h1 * self.d1)
+        self.sc1 = _dot(self.cp, self.cp1) / self.sc
         self.e3_1 = (self.cp1 - self.e3 * self.sc1) / self.sc
-        Q = C + self.e3 * (a - t)
-        Q1 = vC + self.e3_1 * (a - t)
-        sQ = np.sqrt(_dot(Q, Q))
+        Q1 = vC + self.e3_1 * self.a_t
         sQ1 = _dot(Q, Q1) / sQ
-        self.P = Q + Q * (t / sQ)
         self.P1 = Q1 + Q1 * (t / sQ) - Q * (t * sQ1 / (sQ * sQ))
+        return self
 
     def e3_second(self, C, E, Cdd, Edd):
         """d2e3/dt2 for second derivatives Cdd, Edd (3, k, ...) of C and E
@@ -177,13 +174,15 @@ def _residuals(state, p: MachineParams, Wd):
     is affine in (dw/dt, M_p): R = b + A dw/dt - (e1, 0) M_p."""
     C, E, W = state[0:3], state[3:6], state[6:9]
     a, t, h, g, m = p.a, p.t, p.h, p.g, p.mass
-    # velocities (rolling): P from the geometry, C moves as the wheel rolls on P
-    *_, P = machine_geometry(C, E, a, t)
-    vC = -_cross(W, P - C)
-    Edot = _cross(W, E)
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
-    C_, E_, W_, vC_, Ed_, P_ = (x[add] for x in (C, E, W, vC, Edot, P))
-    geo = GeometryRates(C_, E_, vC_, Ed_, a, t)
+    C_, E_, W_ = C[add], E[add], W[add]
+    geo = GeometryRates(C_, E_, a, t)
+    # velocities (rolling): C moves as the wheel rolls on the contact P
+    P_ = geo.P
+    vC_ = -_cross(W_, P_ - C_)
+    Ed_ = _cross(W_, E_)
+    geo.rates(vC_, Ed_)
+    vC, Edot = vC_[:, 0], Ed_[:, 0]
     # accelerations of C and E for each trial dw/dt
     Cdd = -_cross(Wd, P_ - C_) - _cross(W_, geo.P1 - vC_)
     Edd = _cross(Wd, E_) + _cross(W_, Ed_)

@@ -20,17 +20,12 @@ from deathsphere.physics.machine_dynamics import (
     machine_orbit_state,
     machine_rhs,
 )
+from deathsphere.physics.vectors import cross
+from deathsphere.physics.vectors import dot as _dot
+from deathsphere.physics.vectors import norm as _norm
 
 __all__ = ["machine_points", "machine_rates", "machine_contact_force", "machine_energy", "machine_residuals",
            "machine_project", "machine_start"]
-
-
-def _dot(u, v):
-    return np.sum(u * v, axis=0)
-
-
-def _norm(u):
-    return np.sqrt(_dot(u, u))
 
 
 def machine_points(state, p: MachineParams, head=None) -> dict:
@@ -57,11 +52,12 @@ def machine_rates(state, p: MachineParams) -> dict:
     ``e3``."""
     state = np.asarray(state)
     C, E, W = state[0:3], state[3:6], state[6:9]
-    e1, e3, _, P = machine_geometry(C, E, p.a, p.t)
-    vC = -np.cross(W, P - C, axis=0)
-    Edot = np.cross(W, E, axis=0)
-    e3dot = GeometryRates(C, E, vC, Edot, p.a, p.t).e3_1
-    e2 = np.cross(e3, e1, axis=0)
+    geo = GeometryRates(C, E, p.a, p.t)
+    e1, e3 = geo.h1, geo.e3
+    vC = -cross(W, geo.P - C)
+    Edot = cross(W, E)
+    e3dot = geo.rates(vC, Edot).e3_1
+    e2 = cross(e3, e1)
     psi = -_dot(e3dot, e2)
     w1 = _dot(W, e1)
     omega_f = W - (w1 - psi) * e1

@@ -25,6 +25,7 @@ import numpy as np
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import machine_motion as mm
 from deathsphere.physics.machine_dynamics import MachineParams, machine_rhs
+from deathsphere.physics.vectors import dot as _dot
 
 __all__ = ["MachineBodies", "PAPER", "MACHINE", "model_of", "take", "concat_params"]
 
@@ -65,10 +66,6 @@ def concat_params(parts):
     if len(kinds) != 1:
         raise ValueError("one run simulates one kind of body (wheels and spheres, or machines)")
     return type(parts[0])(*(np.concatenate([np.asarray(x) for x in xs]) for xs in zip(*parts)))
-
-
-def _dot(u, v):
-    return np.sum(u * v, axis=0)
 
 
 class _Paper:

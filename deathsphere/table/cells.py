@@ -18,6 +18,25 @@ import math
 import numpy as np
 
 
+def one_float_text(values: np.ndarray) -> bool:
+    """Whether every float of a column writes the same text: the same bits
+    (not ==: -0.0 == 0.0, yet repr tells them apart), or all NaN.  A grid's
+    chunk holds several such columns (its a, r, k, g, empty limits), which
+    the writers build from one value."""
+    bits = values.view(np.int64)
+    # the first and last values differ in most columns: only the others are compared in full
+    return bool((bits[0] == bits[-1] and (bits[0] == bits).all())
+                or (values[0] != values[0] and np.isnan(values).all()))
+
+
+def one_text(values: np.ndarray) -> bool:
+    """Whether an object column holds one text (or None) in every row (a
+    grid's body and side, blank stability columns), which the writers build
+    from one value instead of converting each row's string."""
+    first = values[0]
+    return (first is None or isinstance(first, str)) and bool(np.all(values == first))
+
+
 def is_text(values: np.ndarray) -> bool:
     """Whether a column holds text (or None): object, str or bytes arrays.
     An object column of ints (``branch``) counts as text here too: its cells
@@ -139,10 +158,9 @@ def column_strings(name: str, values: np.ndarray) -> list[str]:
     if values.dtype.kind in "iub":
         return list(map(str, values.tolist()))
     values = values.astype(np.float64, copy=False)
-    # values compared by their bits: -0.0 == 0.0, yet repr tells them apart
-    bits = values.view(np.int64)
-    if (bits[0] == bits).all() or np.isnan(values).all():
+    if one_float_text(values):
         return [float_text(float(values[0]))] * n
+    bits = values.view(np.int64)
     if name in REPEATING_COLUMNS:
         unique, inverse = np.unique(bits, return_inverse=True)
         text = list(map(float_text, unique.view(np.float64).tolist()))

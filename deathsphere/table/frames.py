@@ -19,7 +19,13 @@ import importlib
 
 import numpy as np
 
-from deathsphere.table.cells import column_kind, is_undefined_text, text_cells, undefined_text_mask
+from deathsphere.table.cells import (
+    column_kind,
+    is_undefined_text,
+    one_text,
+    text_cells,
+    undefined_text_mask,
+)
 
 #: The extra that installs every library below.
 EXTRA = "dataframes"
@@ -47,15 +53,12 @@ def arrow_schema(table, method: str = "Table.to_arrow"):
 
 
 def _arrow_column(pa, values: np.ndarray, kind):
-    if values.dtype.kind == "O" and len(values):
-        first = values[0]
-        if (first is None or isinstance(first, str)) and bool(np.all(values == first)):
-            # one value in every row (a grid's body and side, blank stability
-            # columns, branch None): made in Arrow, not converted row by row
-            if is_undefined_text(first):
-                return pa.nulls(len(values), type=kind)
-            if pa.types.is_string(kind):
-                return pa.repeat(pa.scalar(first, type=kind), len(values))
+    if values.dtype.kind == "O" and len(values) and one_text(values):
+        # made in Arrow from one value, not converted row by row (branch None too)
+        if is_undefined_text(values[0]):
+            return pa.nulls(len(values), type=kind)
+        if pa.types.is_string(kind):
+            return pa.repeat(pa.scalar(values[0], type=kind), len(values))
     if pa.types.is_string(kind):
         if values.dtype.kind in "US" or values.dtype.kind == "O":
             try:

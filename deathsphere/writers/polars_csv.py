@@ -29,14 +29,14 @@ pyarrow take a noticeable time to import.
 from __future__ import annotations
 
 import importlib.util
+import math
 import os
 import re
-import math
 import threading
 
 import numpy as np
 
-from deathsphere.table.cells import column_strings, float_text
+from deathsphere.table.cells import column_strings, float_text, one_float_text, one_text
 
 #: polars writes |x| in this range differently from repr (exponent
 #: 'e-9' for 'e-09'; positional below 1e-4 where repr switches to an exponent).
@@ -108,13 +108,7 @@ def _series(pl, name: str, values: np.ndarray):
     kind = values.dtype.kind
     if kind == "f":
         values = values.astype(np.float64, copy=False)
-        # one value in every row (a sweep's a, r, k, g; an empty limit):
-        # its text once, repeated, instead of formatting every cell.  Bits,
-        # not ==, decide it: -0.0 == 0.0, yet repr tells them apart
-        bits = values.view(np.int64)
-        # the first and last values differ in most columns: only the others are compared in full
-        if len(values) > 1 and ((bits[0] == bits[-1] and (bits[0] == bits).all())
-                                or (values[0] != values[0] and np.isnan(values).all())):
+        if len(values) > 1 and one_float_text(values):
             return _repeated(pl, name, float_text(float(values[0])) or None, len(values))
         s = pl.Series(name, values, nan_to_null=True)
         size = np.abs(values)
@@ -124,12 +118,8 @@ def _series(pl, name: str, values: np.ndarray):
         return s
     if kind in "iu":
         return pl.Series(name, values)
-    if kind == "O" and len(values):
-        first = values[0]
-        if (first is None or isinstance(first, str)) and bool(np.all(values == first)):
-            # one value in every row (a sweep's body and side; blank stability
-            # columns): no per-row conversion of Python strings
-            return _quote(pl, _repeated(pl, name, first, len(values)), (first,))
+    if kind == "O" and len(values) and one_text(values):
+        return _quote(pl, _repeated(pl, name, values[0], len(values)), (values[0],))
     if kind == "O" or kind in "US":
         items = values.tolist()
         try:

@@ -53,6 +53,10 @@ def test_the_page_holds_the_machines_frame_and_rider(machine_page):
     # the readout's speed is the rider's: the centre of mass's, as ride's v_cm and the series' v_cm_m_s
     speed = decode_array(body["panel"]["speed"])
     np.testing.assert_allclose(speed[rows], series["v_cm_m_s"], rtol=1e-5)
+    # and against ride's closed form (eq. M8), independent of the simulation's
+    # rates: the 0.01 deg kick moves it by 5e-4 relative
+    steady = float(deathsphere.ride(60, 14.05, machine="stunt125", diameter="16ft", stability=False)["v_cm_m_s"])
+    np.testing.assert_allclose(speed[rows], steady, rtol=2e-3)
 
 
 def test_a_wheels_page_has_no_machine():
