@@ -59,14 +59,14 @@ def _deviation(series, theta, alpha):
 
 
 def test_an_unstable_stunt125_orbit_grows_at_rides_growth_rate():
-    """The equator of a 16-ft globe at alpha = 15 deg (docs/machine.md sec.
-    5): ride says unstable at 3.69 /s; the simulated tilt kick grows by
-    orders of magnitude, at that rate."""
-    ride = deathsphere.ride(90, 15, machine="stunt125", diameter="16ft", stability=True)
+    """The equator of a 16-ft globe at alpha = 10 deg (docs/machine.md sec.
+    5): ride says unstable at 3.62 /s (a capsize: a real pair); the
+    simulated tilt kick grows by orders of magnitude, at that rate."""
+    ride = deathsphere.ride(90, 10, machine="stunt125", diameter="16ft", stability=True)
     assert str(ride["stability"]) == "unstable"
-    series, summary = deathsphere.simulate(90, 15, machine="stunt125", diameter="16ft", perturb=1e-6, periods=2,
+    series, summary = deathsphere.simulate(90, 10, machine="stunt125", diameter="16ft", perturb=1e-6, periods=2,
                                            points_per_period=40)
-    t, dev = _deviation(series, 90, 15)
+    t, dev = _deviation(series, 90, 10)
     assert dev[-1] > 1e4 * dev[0]
     late = t > t[-1] / 2
     rate = np.polyfit(t[late], np.log(dev[late]), 1)[0]
@@ -77,12 +77,12 @@ def test_an_unstable_stunt125_orbit_grows_at_rides_growth_rate():
 
 def test_a_stable_stunt125_orbit_stays_bounded():
     """High on the wall (theta 20, alpha -10.34 deg): ride says stable, its
-    slow nutation 2.357 rad/s (a 2.7-s period, 16 orbit periods); over two
-    nutations the tilt kick's deviation does not grow."""
+    slow nutation 12.1 rad/s (a 0.52-s period, 3 orbit periods); over
+    three nutations the tilt kick's deviation does not grow."""
     ride = deathsphere.ride(20, -10.34, machine="stunt125", diameter="16ft", stability=True)
     assert str(ride["stability"]) == "stable"
     series, summary = deathsphere.simulate(20, -10.34, machine="stunt125", diameter="16ft", perturb=1e-4,
-                                           periods=32, points_per_period=10)
+                                           periods=12, points_per_period=20)
     assert str(summary["status"][0]) == "completed"
     t, dev = _deviation(series, 20, -10.34)
     first = t <= t[-1] / 2
@@ -127,3 +127,34 @@ def test_a_machine_that_does_not_fit_is_not_integrated():
     assert str(ride["status"]) == "no_fit"
     assert str(summary["status"][0]) == "no_fit" and str(summary["reason"][0]) == str(ride["reason"])
     assert len(series) == 0
+
+
+def test_a_fall_from_an_unstable_orbit_says_why():
+    """A kicked machine on an orbit its linearisation calls unstable
+    (equator of a 16-ft globe, alpha = 10 deg: a capsize at 3.62 /s) slips
+    within a second; the summary's reason says the orbit is unstable, with
+    ride's growth rate, and that a rider steers.  A stable orbit's reason
+    says no such thing."""
+    ride = deathsphere.ride(90, 10, machine="stunt125", diameter="16ft", stability=True)
+    _, summary = deathsphere.simulate(90, 10, machine="stunt125", diameter="16ft", perturb=0.05, mu=0.4,
+                                      periods=3, points_per_period=20)
+    reason = str(summary["reason"][0])
+    assert str(summary["status"][0]) == "slips"
+    assert "unstable" in reason and "steer" in reason
+    assert f"growth rate {float(ride['growth_rate_1_s']):.3g} /s" in reason
+    assert "," not in reason and "\n" not in reason
+    _, calm = deathsphere.simulate(20, -10.34, machine="stunt125", diameter="16ft", perturb=0.01, mu=0.05,
+                                   periods=1, points_per_period=20)
+    assert str(calm["status"][0]) == "slips" and "unstable" not in str(calm["reason"][0])
+
+
+def test_a_point_mass_machine_rides_but_has_no_equations_of_motion():
+    """The point-mass limit (no yaw inertia, no spinning wheels): its steady
+    orbits are eq. M8's, its yaw is undetermined, so ride leaves the
+    stability empty and says why, and simulate refuses it before any work."""
+    m = deathsphere.Machine(mass=100, h=0.8, a=0.3)
+    row = deathsphere.ride(90, 20, machine=m, r=3.0)
+    assert str(row["status"]) == "ok" and row[0]["stability"] is None
+    assert "undetermined" in str(row["stability_method"])
+    with pytest.raises(deathsphere.ParameterError, match="yaw inertia"):
+        deathsphere.simulate(90, 20, machine=m, r=3.0)

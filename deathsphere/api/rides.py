@@ -113,12 +113,17 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
     if rows.size:
         from deathsphere.physics.machine_dynamics import (
+            YAW_UNDETERMINED,
             MachineParams,
             machine_stability,
+            yaw_is_determined,
         )
         from deathsphere.physics.stability.verdict import VERDICT_LABELS
 
         rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
+        if not yaw_is_determined(MachineParams(m.a, m.t, 1.0, m.h, 1.0, m.mass, *m.inertia, m.spin_inertia)):
+            cols["stability_method"][rows] = "not analysed: " + YAW_UNDETERMINED
+            rows = rows[:0]
         for start in range(0, rows.size, STABILITY_CHUNK):
             idx = rows[start:start + STABILITY_CHUNK]
             p = MachineParams(m.a, m.t, rr[idx], m.h, gg[idx], m.mass, *m.inertia, m.spin_inertia)

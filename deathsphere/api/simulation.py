@@ -221,7 +221,12 @@ def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
     from deathsphere.api.machines import as_machine
     from deathsphere.simulation.machine_starts import machine_bodies, machine_starts
 
+    from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, MachineParams, yaw_is_determined
+
     m = as_machine(machine)
+    if not yaw_is_determined(MachineParams(m.a, m.t, 1.0, m.h, 1.0, m.mass, *m.inertia, m.spin_inertia)):
+        raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
+                             "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
     theta = checked_scalar("theta", theta)
     r, g, mu = checked_scalar("r", r), checked_scalar("g", g), checked_scalar("mu", mu)
     if not r > m.a:

@@ -47,7 +47,7 @@ from deathsphere.physics.vectors import cross as _cross
 from deathsphere.physics.vectors import dot as _dot
 from deathsphere.physics.vectors import zcross
 
-__all__ = ["MachineParams", "GeometryRates", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
+__all__ = ["MachineParams", "GeometryRates", "yaw_is_determined", "YAW_UNDETERMINED", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
 
 
 class MachineParams(tuple):
@@ -204,10 +204,35 @@ def _residuals(state, p: MachineParams, Wd):
     Ldot = L.x1
     G = C_ - (h - a) * e3j.x0
     torque = _cross(Pj.x0 - G, F)
-    euler = Ldot - torque                                         # = M_p e1
-    axial = p.spin * _dot(Wd, h1j.x0) - _dot(_cross(Pj.x0 - C_, F), h1j.x0)
+    euler = Ldot - torque                                         # = lambda k_E
+    axial = p.spin * _dot(Wd, h1j.x0) - _dot(_cross(Pj.x0 - C_, F), h1j.x0)   # = lambda k_A
     R = np.concatenate((euler, axial[None]), axis=0)             # (4, k, ...)
-    return R, F, vC, Edot, h1j.x0[:, 0]
+    return R, F, vC, Edot, _pitch_reaction(geo)
+
+
+def _pitch_reaction(geo: GeometryRates):
+    """The pitch constraint's reaction per unit multiplier (eq. M18):
+    ``(k, f)`` with k (4, ...) its column in the residual (Euler's three
+    rows, the axial row) and f (3, ...) the force it puts on the frame at
+    the crown point.
+
+    The neglected wheelbase holds n.e2 = 0 (n = Q/|Q| the sphere's normal
+    through the crown point, e2 the frame's direction of travel), the limit
+    of two tyres a wheelbase apart both on the sphere.  Its ideal reaction
+    (the gradient of the constraint: no work on any motion that keeps it)
+    is a couple lambda (e2 x n) and a force lambda (e2 - (n.e2) n)/|Q| at
+    Q (docs/machine.md sec. 5).  With the contact force F_c = m (d2G/dt2 +
+    g z) - f, Euler about G reads dL_G/dt - (P - G) x m (d2G/dt2 + g z) =
+    lambda (1 + t/|Q|) (e2 x n) (P - Q = t n) and the wheels' axial
+    balance J dw/dt.e1 - ((P - C) x m (d2G/dt2 + g z)).e1 = lambda
+    ((P - C).e3)/|Q| (the rolling radius over |Q|)."""
+    e1, e3, Q, sQ = geo.h1[:, 0], geo.e3[:, 0], geo.Q[:, 0], geo.sQ[0]
+    n = Q / sQ
+    e2 = _cross(e3, e1)
+    k_euler = _cross(e2, n) * (1.0 + geo.t / sQ)
+    k_axial = _dot(geo.P[:, 0] - geo.C[:, 0], e3) / sQ
+    force = (e2 - n * _dot(n, e2)) / sQ
+    return np.concatenate((k_euler, k_axial[None]), axis=0), force
 
 
 def _trial_accelerations(shape, dtype):
@@ -224,14 +249,13 @@ def _acceleration_system(state, p: MachineParams):
     of the trials (3, 4, ...) and the rates dC/dt, dE/dt, e1."""
     shape = np.broadcast_shapes(state.shape[1:], np.shape(p.a))
     Wd = _trial_accelerations(shape, state.dtype if np.iscomplexobj(state) else float)
-    R, F, vC, Edot, e1 = _residuals(state, p, Wd)
+    R, F, vC, Edot, (kcol, fpitch) = _residuals(state, p, Wd)
     base = R[:, 0]
     A = R[:, 1:] - base[:, None]                                  # (4, 3, ...) columns for dw/dt
-    Mcol = np.concatenate((-e1, np.zeros_like(e1[:1])), axis=0)   # M_p: -e1 in euler, 0 in axial
-    Afull = np.concatenate((A, Mcol[:, None]), axis=1)            # (4, 4, ...)
+    Afull = np.concatenate((A, -kcol[:, None]), axis=1)           # (4, 4, ...): R - lambda k = 0
     Am = np.moveaxis(Afull, (0, 1), (-2, -1))
     bm = np.moveaxis(-base, 0, -1)
-    return Am, bm, F, vC, Edot
+    return Am, bm, F, vC, Edot, fpitch
 
 
 def _turning(out, state, frame_rate):
@@ -251,14 +275,15 @@ def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
     ``frame_rate`` [rad/s]: components in a frame turning at that rate about
     +z.  With ``forces`` also returns (F/m (3, ...), M_p / m)."""
     state = np.asarray(state)
-    Am, bm, F, vC, Edot = _acceleration_system(state, p)
+    Am, bm, F, vC, Edot, fpitch = _acceleration_system(state, p)
     x = np.moveaxis(np.linalg.solve(Am, bm[..., None])[..., 0], -1, 0)   # (4, ...)
     Wdot = x[:3]
     out = _turning(np.concatenate((vC, Edot, Wdot)), state, frame_rate)
     if not forces:
         return out
-    # the force for the solved accelerations (affine in dw/dt: combine the trials)
-    Fsol = F[:, 0] + np.sum((F[:, 1:] - F[:, :1]) * Wdot[None], axis=1)
+    # m (d2G/dt2 + g z) for the solved accelerations (affine in dw/dt:
+    # combine the trials), less the pitch reaction's force: the contact's
+    Fsol = F[:, 0] + np.sum((F[:, 1:] - F[:, :1]) * Wdot[None], axis=1) - x[3] * fpitch
     return out, Fsol / p.mass, x[3] / p.mass
 
 
@@ -269,14 +294,13 @@ def _rhs_directional(X0, dirs, p: MachineParams, frame_rate, step=COMPLEX_STEP):
     the residual R(X, x) held at the solved x.  One complex evaluation of
     the residual at that x replaces complex trials of all four (the same
     derivative, in a quarter of the second-order work)."""
-    Am, bm, _, _, _ = _acceleration_system(X0, p)
+    Am, bm, _, _, _, _ = _acceleration_system(X0, p)
     Ainv = np.linalg.inv(Am)                                      # (n, 4, 4): one LU for x and 4 directions
     x = (Ainv @ bm[..., None])[..., 0].T                          # (4, n)
     pc = MachineParams(*(np.asarray(v)[None] for v in p))
     Xc = X0[:, None, :] + 1j * step * dirs                       # (9, d, n)
-    R, _, vC, Edot, e1 = _residuals(Xc, pc, x[:3, None, None, :])
-    R = R[:, 0]
-    R[:3] = R[:3] - e1 * x[3][None, None, :]
+    R, _, vC, Edot, (kcol, _) = _residuals(Xc, pc, x[:3, None, None, :])
+    R = R[:, 0] - kcol * x[3][None, None, :]
     dR = np.imag(R) / step                                        # (4, d, n)
     dx = -Ainv[:, :3] @ dR.transpose(2, 0, 1)                   # (n, 3, d)
     out = np.concatenate((np.imag(vC) / step, np.imag(Edot) / step, dx.transpose(1, 2, 0)))
@@ -309,6 +333,24 @@ def machine_orbit_state(theta, alpha, p: MachineParams):
     E = np.stack((-sa + zero, zero, -ca + zero))
     W = np.stack((0 * one, zero, om * one)) + sigma * om * E
     return np.concatenate((C, E, W)), om
+
+
+#: Why a machine without yaw inertia and without spinning wheels has no
+#: equations of motion (:func:`yaw_is_determined`).
+YAW_UNDETERMINED = ("no yaw inertia and no spinning wheels: a turn about the up-axis moves no mass and the "
+                    "equations of motion leave the yaw undetermined (the point-mass limit; docs/machine.md sec. 5)")
+
+
+def yaw_is_determined(p: MachineParams):
+    """Whether eqs. M16-M19 determine the accelerations (beyond the paper;
+    docs/machine.md sec. 5): a machine with I_yaw = 0 and J = 0 (the point
+    mass on massless wheels of sec. 4) has nothing that resists or drives a
+    turn about its up-axis -- it moves neither the centre of mass (on that
+    axis) nor, to first order, the contact -- so the 4x4 system is singular
+    and its yaw is arbitrary.  Its steady orbits (eq. M8) are well defined;
+    their stability and motion are not.  Boolean array of the parameters'
+    broadcast shape."""
+    return (np.asarray(p.yaw) > 0) | (np.asarray(p.spin) > 0)
 
 
 def _params_flat(p: MachineParams, n):

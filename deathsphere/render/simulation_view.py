@@ -19,6 +19,7 @@ SIMULATION_FIELDS = (
     ("max_mu_required", "most friction needed μ", ""),
     ("max_abs_energy_drift", "max |energy drift| (relative)", ""),
     ("max_constraint_residual", "max constraint residual", ""),
+    ("min_head_clearance_m", "least head clearance", "m"),
     ("n_steps", "steps", ""),
     ("wall_time_s", "wall time", "s"),
 )

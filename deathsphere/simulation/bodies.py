@@ -81,6 +81,12 @@ class _Paper:
     def summary_echo(self, p) -> dict:
         return {}
 
+
+    def fall_note(self, p, theta, alpha):
+        """No words beyond the status's own for the paper's bodies (their
+        stability is the orbit's columns; docs/stability.md)."""
+        return np.full(int(np.size(theta)), "", dtype=object)
+
     def ode(self, p, frame_rate):
         return dyn.ode(p, frame_rate)
 
@@ -149,6 +155,31 @@ class _Machine:
 
     def summary_echo(self, p: MachineBodies) -> dict:
         return {"machine": np.asarray(p.name, dtype=object)}
+
+    def fall_note(self, p: MachineBodies, theta, alpha):
+        """Words appended to the reason of a body whose run ended in a fall
+        (contact lost, slips): why, when its steady orbit (theta, alpha
+        [rad]) is unstable -- the linearisation's growth rate
+        (docs/machine.md sec. 5) -- and that a rider steers.  '' where the
+        orbit is stable or not analysed."""
+        from deathsphere.physics.machine_dynamics import machine_stability, yaw_is_determined
+        from deathsphere.physics.stability.verdict import Verdict
+
+        n = int(np.size(theta))
+        notes = np.full(n, "", dtype=object)
+        mp = MachineParams(*(np.broadcast_to(np.asarray(x, dtype=float), (n,)) for x in p.physics()))
+        ok = np.isfinite(theta) & np.isfinite(alpha) & np.broadcast_to(yaw_is_determined(mp), (n,))
+        if not ok.any():
+            return notes
+        idx = np.flatnonzero(ok)
+        st = machine_stability(np.asarray(theta, dtype=float)[idx], np.asarray(alpha, dtype=float)[idx],
+                               MachineParams(*(x[idx] for x in mp)))
+        for i, verdict, rate in zip(idx, st["verdict"], st["growth_rate"]):
+            if verdict == Verdict.UNSTABLE:
+                notes[i] = (f"; its steady orbit is unstable (growth rate {rate:.3g} /s with the steering "
+                            "locked; docs/machine.md sec. 5): a kick grows until the machine falls -- a rider "
+                            "holds such a lap by steering")
+        return notes
 
     def ode(self, p: MachineBodies, frame_rate):
         n = int(np.size(p.a))

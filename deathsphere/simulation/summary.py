@@ -141,6 +141,11 @@ class Ledger:
             "n_fev": np.full(n, self.n_fev, dtype=np.int64),
             "wall_time_s": np.full(n, wall),
         }
+        fell = (self.status == RunStatus.CONTACT_LOST) | (self.status == RunStatus.SLIPS)
+        if fell.any():
+            idx = np.flatnonzero(fell)
+            note = self.model.fall_note(take(s.params, idx), s.theta[idx], s.alpha[idx])
+            cols["reason"][idx] = cols["reason"][idx] + note
         cols.update(self.model.summary_echo(s.params))
         cols.update({key: acc[key] for key, _, _ in self.model.extremes})
         return Table({name: cols[name] for name in SUMMARY_COLUMNS + tuple(self.model.summary_extras)})

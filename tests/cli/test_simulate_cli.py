@@ -88,3 +88,11 @@ def test_a_machine_with_a_bad_combination_is_one_line(run, args, words):
     res = run("simulate", *args)
     assert res.exit_code == 2 and words in res.stderr and len(res.stderr.strip().splitlines()) == 1
     assert "Traceback" not in res.stderr and res.stdout == ""
+
+
+def test_a_machine_without_yaw_inertia_is_refused_in_one_line(run):
+    result = run("simulate", "--machine", "stunt125", "--roll-inertia", "10", "--pitch-inertia", "10",
+                 "--yaw-inertia", "0", "--spin-inertia", "0", "--theta", "90", "--alpha", "20")
+    assert result.exit_code == 2
+    assert len(result.stderr.strip().splitlines()) == 1 and "yaw inertia" in result.stderr
+    assert "Traceback" not in result.stderr and result.stdout == ""

@@ -137,27 +137,113 @@ def _simulate(theta_deg, alpha_deg, p, periods, kick=1e-6):
 STUNT = MachineParams(0.3, 0.045, 2.4384, 0.8, G, 165.0, 25.0, 40.0, 20.0, 0.8)
 
 
-def test_simulation_confirms_an_unstable_machine_orbit():
-    """The equator of a 16-ft globe at alpha = 15 deg: the full nonlinear
-    equations grow a small kick at the linearisation's growth rate."""
-    ts, dev, st = _simulate(90.0, 15.0, STUNT, periods=1.5)    # e^(3.7 * 1.9 s) ~ 1e3: still linear
+@pytest.mark.parametrize("alpha_deg", [10.0, 18.0])
+def test_simulation_confirms_an_unstable_machine_orbit(alpha_deg):
+    """The equator of a 16-ft globe: at alpha = 10 deg a real pair of
+    eigenvalues (capsize), at 18 deg a complex quartet (a growing
+    nutation); the full nonlinear equations grow a small kick at the
+    linearisation's growth rate."""
+    ts, dev, st = _simulate(90.0, alpha_deg, STUNT, periods=2.5 if alpha_deg < 15 else 6)
     lam = st["growth_rate"][0]
     assert st["verdict"][0] == Verdict.UNSTABLE and lam > 1.0
     late = ts > ts[-1] / 2
-    rate = np.polyfit(ts[late], np.log(dev[late]), 1)[0]
-    assert rate == pytest.approx(lam, rel=0.02)
+    # the envelope of the deviation: a growing nutation oscillates within it
+    t_peaks = [ts[late][i] for i in range(1, late.sum() - 1)
+               if dev[late][i] >= dev[late][i - 1] and dev[late][i] >= dev[late][i + 1]]
+    d_peaks = [dev[late][i] for i in range(1, late.sum() - 1)
+               if dev[late][i] >= dev[late][i - 1] and dev[late][i] >= dev[late][i + 1]]
+    if len(t_peaks) >= 2:
+        rate = np.polyfit(t_peaks, np.log(d_peaks), 1)[0]
+    else:
+        rate = np.polyfit(ts[late], np.log(dev[late]), 1)[0]
+    assert rate == pytest.approx(lam, rel=0.03)
+
+
+def test_a_narrow_stable_band_on_the_equator_is_stable_in_the_full_equations():
+    """Between the capsize pair's passage through zero (alpha ~ 14.6 deg)
+    and the collision of the two nutations (~ 15.8 deg) the equator's
+    orbits are stable: at alpha = 15 deg a kick stays bounded over six
+    periods (an unstable orbit with the growth rate of its neighbours, 2 /s,
+    would grow 10^6-fold)."""
+    ts, dev, st = _simulate(90.0, 15.0, STUNT, periods=6)
+    assert st["verdict"][0] == Verdict.STABLE
+    first = ts <= ts[-1] / 2
+    assert dev[~first].max() < 3 * dev[first].max()
+    assert dev.max() < 1e-3
+
+
+def _energy_run(theta_deg, alpha_deg, p, duration, kick):
+    from scipy.integrate import solve_ivp
+
+    from deathsphere.physics.machine_motion import machine_energy, machine_residuals, machine_start
+
+    X, om = machine_start(np.radians([theta_deg]), np.radians([alpha_deg]), np.radians(kick), p)
+    sol = solve_ivp(lambda t, y: machine_rhs(y[:, None], p)[:, 0], (0, duration), X[:, 0], rtol=1e-10,
+                    atol=1e-12, dense_output=True, method="DOP853")
+    Y = sol.sol(np.linspace(0, duration, 200))
+    energy, kinetic = machine_energy(Y, p)
+    res = machine_residuals(Y, p)
+    return energy, kinetic, res, Y
+
+
+@pytest.mark.parametrize("theta_deg, alpha_deg, machine, duration", [
+    (90.0, 10.0, STUNT, 1.5),                                                      # round tyre, spinning wheels
+    (120.0, 25.0, MachineParams(0.35, 0.08, 3.0, 1.1, G, 120.0, 30.0, 22.0, 14.0, 1.5), 1.0),   # I_p > I_y
+    (60.0, 30.0, MachineParams(0.3, 0.0, 2.5, 0.9, G, 90.0, 12.0, 18.0, 9.0, 0.4), 1.0),       # knife edge
+])
+def test_a_kicked_machine_conserves_energy(theta_deg, alpha_deg, machine, duration):
+    """The pitch constraint's reaction is the ideal one (docs/machine.md
+    sec. 5): it does no work, so the energy of the full equations is
+    conserved to the integrator's tolerance (rtol 1e-10) while a kick
+    changes the kinetic energy by 0.3-25 %.  A reaction that did work -- a
+    pure moment about the axle, M_p e1 -- changed the energy by as much as
+    the kinetic energy changed."""
+    energy, kinetic, res, Y = _energy_run(theta_deg, alpha_deg, machine, duration, kick=0.01)
+    assert np.ptp(kinetic) > 2e-3 * kinetic.mean()           # the motion really changed
+    assert np.max(np.abs(energy - energy[0])) < 1e-8 * kinetic.mean()
+    assert np.max(np.abs(res["contact"])) < 1e-8 and np.max(np.abs(res["axis"])) < 1e-9
+
+
+def test_the_pitch_reaction_does_no_work_on_any_admissible_motion():
+    """At random states and angular velocities (not only near orbits): the
+    rate of the energy from the full equations is zero -- the contact's
+    reaction does no work by rolling, the pitch constraint's by being
+    ideal, gravity is in the energy.  Checked by a complex-step derivative
+    of the energy along the equations' own rates."""
+    from deathsphere.physics.machine_motion import machine_energy, machine_project
+
+    rng = np.random.default_rng(11)
+    n = 200
+    p = MachineParams(0.3, rng.uniform(0, 0.1, n), rng.uniform(2, 5, n), rng.uniform(0.4, 1.2, n), G, 150.0,
+                      rng.uniform(5, 30, n), rng.uniform(20, 40, n), rng.uniform(5, 30, n), rng.uniform(0, 2, n))
+    th = np.radians(rng.uniform(40, 150, n))
+    al = np.radians(rng.uniform(0, 40, n))
+    with np.errstate(invalid="ignore"):             # some random (theta, alpha) have no orbit: dropped
+        X, _ = machine_orbit_state(th, al, p)
+    keep = np.all(np.isfinite(X), axis=0)
+    p = MachineParams(*(np.broadcast_to(x, (n,))[keep] for x in p))
+    X = X[:, keep]
+    X[0:6] += 0.02 * rng.standard_normal((6, keep.sum()))
+    X[6:9] += 2.0 * rng.standard_normal((3, keep.sum()))
+    X = machine_project(X, p)
+    rates = machine_rhs(X, p)
+    h = 1e-30
+    e_rate = np.imag(machine_energy(X + 1j * h * rates, p)[0]) / h
+    kinetic = machine_energy(X, p)[1]
+    scale = kinetic * np.sqrt(np.sum(X[6:9] ** 2, axis=0))
+    assert np.max(np.abs(e_rate) / scale) < 1e-10
 
 
 def test_simulation_confirms_a_stable_machine_orbit():
     """High on the wall (theta = 20 deg, alpha = -10.34 deg, ~10 g): the
-    kick stays bounded (the linearisation: all eigenvalues imaginary, the
-    slow one 2.36 rad/s, a 2.7 s nutation = 16 orbit periods): over two
-    nutations the second is no larger than the first."""
-    ts, dev, st = _simulate(20.0, -10.34, STUNT, periods=32)
+    linearisation's eigenvalues are all imaginary (nutations of 12.1 and
+    37.4 rad/s); the full equations keep a kick bounded over three slow
+    nutations: the second half no larger than the first."""
+    ts, dev, st = _simulate(20.0, -10.34, STUNT, periods=12)
     assert st["verdict"][0] == Verdict.STABLE
-    assert st["freq_slow"][0] == pytest.approx(2.357, abs=1e-3)
+    assert ts[-1] > 3 * 2 * np.pi / st["freq_slow"][0]
     first = ts <= ts[-1] / 2
-    assert dev[~first].max() < 1.1 * dev[first].max()
+    assert dev[~first].max() < 1.5 * dev[first].max()
     assert dev.max() < 1e-3
 
 
@@ -170,7 +256,8 @@ def test_flat_ground_capsize_mode(v):
     from deathsphere.physics.machine import solve_alpha_for_speed
 
     m, h, a, t, i_r, i_p, i_y, j = 165.0, 0.8, 0.3, 0.0, 25.0, 40.0, 20.0, 0.8
-    r, R = 1e6, 2000.0
+    # the turn wide enough that the lean (v^2 / g R) stays below 1 %: M20 is upright running's
+    r, R = 1e6, max(2000.0, 12.0 * v * v)
     th = np.pi - np.arcsin(R / r)
     roots = solve_alpha_for_speed([th], [v], r, G, m, h, a, t, i_p, i_y, j)[0]
     al = roots[np.isfinite(roots) & (roots > 0) & (roots < np.pi / 2)]
