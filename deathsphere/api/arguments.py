@@ -200,7 +200,7 @@ def checked_segment(name: str, item) -> Segment:
             seg = parse_segment(number, name)
         except RangeError as exc:
             raise ParameterError(str(exc).split(": ", 1)[-1], name) from None
-        if scale != 1.0:  # the range in the unit written, each value converted
+        if scale != 1:  # the range in the unit written, each value converted
             seg = Segment(seg.start, seg.step, seg.n, seg.decimals, scale)
     else:
         seg = Segment(float(checked_array(name, item)), 0.0, 1, None)
