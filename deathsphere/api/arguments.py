@@ -235,6 +235,54 @@ def one_default(name: str, value) -> float | None:
     return float(axis.take(np.zeros(1, dtype=np.int64))[0])
 
 
+#: At most this many tilts give a machine one speed: eq. M12 has at most 8
+#: zeros per period (:func:`deathsphere.physics.machine.solve_alpha_for_speed`).
+TILTS_PER_SPEED = 8
+
+
+def value_counts(options: dict) -> dict[str, int]:
+    """How many values each given option holds (the command line's repeated
+    values and ``start:stop:step`` ranges, with units), counted from start,
+    stop and step: nothing is built.  Options not given are left out."""
+    return {name: len(checked_axis(name, list(v) if isinstance(v, tuple) else v))
+            for name, v in options.items() if is_given(v)}
+
+
+def grid_shape(arrays: dict) -> tuple[int, ...]:
+    """The broadcast shape of ``arrays`` from their shapes alone (nothing is
+    allocated); ParameterError if they do not broadcast."""
+    try:
+        return np.broadcast_shapes(*(np.shape(v) for v in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{n} {np.shape(v)}" for n, v in arrays.items() if np.ndim(v))
+        raise ParameterError(f"the arguments cannot be broadcast together (shapes: {shapes})") from None
+
+
+#: What to do instead when a command that holds its rows cannot stream them.
+SPLIT = "split the ranges into several runs"
+
+
+def refuse_large_grid(counts, *, command: str, limit: int, instead: str = SPLIT, per_point: int = 1) -> int:
+    """The number of grid points of ``counts`` (option -> number of values,
+    their product; or a broadcast shape), or one line of ParameterError when
+    the rows they may give (``per_point`` at most per point) exceed
+    ``limit``, the rows ``command`` holds in memory; ``instead`` says what to
+    run instead.  Checked from the counts alone, before anything is built:
+    the one check of every command whose results are held in memory."""
+    sizes = list(counts.values()) if isinstance(counts, dict) else list(counts)
+    points = math.prod(int(n) for n in sizes)
+    if points * per_point <= limit:
+        return points
+    if isinstance(counts, dict) and len(counts) > 1:
+        spelled = " x ".join(f"{n} {name.replace('_', '-')}" for name, n in counts.items())
+        points_text = f"{points:.3g} orbits ({spelled} values)"
+    else:
+        points_text = f"{points:.3g} orbits"
+    each = f", up to {per_point} rows each," if per_point > 1 else ""
+    raise ParameterError(f"the grid has {points_text}{each} and {command} holds at most {limit:.3g} rows in "
+                         f"memory: {instead}")
+
+
 def checked_grid_size(axes: dict) -> int:
     try:
         return grid_size(axes)
