@@ -162,8 +162,11 @@ def _what_it_is(unit) -> str:
         return _BASE_WORDS.get(next(iter(dims)), f"a {next(iter(dims)).strip('[]')}")
     # spelled out here: pint's own formatting fails on the exact registry's
     # Fraction exponents (TypeError from Fraction.__format__)
-    terms = [name.strip("[]") + ("" if p == 1 else f"^{p}") for name, p in dims.items()]
-    return f"of dimension {' * '.join(terms)}"
+    def power(name, p):
+        return name.strip("[]") + ("" if abs(p) == 1 else f"^{abs(p)}")
+    up = " ".join(power(n, p) for n, p in dims.items() if p > 0) or "1"
+    down = " ".join(power(n, p) for n, p in dims.items() if p < 0)
+    return f"of dimension {up}/{down}" if down else f"of dimension {up}"
 
 
 def allowed_text(kind: str) -> str:
