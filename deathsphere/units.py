@@ -29,6 +29,8 @@ KINDS: dict[str, str] = {
     "rate": "rad/s",
     "angle": "deg",
     "acceleration": "m/s^2",
+    "mass": "kg",
+    "load": "g",
     "none": "",
 }
 
@@ -40,15 +42,18 @@ COMMON: dict[str, tuple[str, ...]] = {
     "rate": ("rad/s", "rpm", "deg/s"),
     "angle": ("deg", "rad"),
     "acceleration": ("m/s^2", "ft/s^2", "g"),
+    "mass": ("kg", "lb"),
+    "load": ("g", "m/s^2"),
     "none": (),
 }
 
 _NOUN = {"length": "a length", "speed": "a speed", "rate": "an angular rate", "angle": "an angle",
-         "acceleration": "an acceleration", "none": "a plain number"}
+         "acceleration": "an acceleration", "mass": "a mass", "load": "a g-load",
+         "none": "a plain number"}
 
 #: pint's spelling of each API unit, for the conversion and the dimension check.
 _PINT_API = {"length": "meter", "speed": "meter / second", "rate": "radian / second", "angle": "degree",
-             "acceleration": "meter / second ** 2"}
+             "acceleration": "meter / second ** 2", "mass": "kilogram", "load": "standard_gravity"}
 
 #: pint has no angle dimension (a radian is 1), so it would take ``2Hz`` or
 #: ``3%`` for an angular rate or an angle; angles are recognised by name.
@@ -57,7 +62,7 @@ _ANGLE_UNITS = frozenset({"radian", "degree", "turn", "revolution", "milliradian
 _NAMED_RATES = frozenset({"revolutions_per_minute", "revolutions_per_second"})
 
 #: A rider's spellings pint reads otherwise: ``g`` is a gram to pint.
-_ALIASES = {("acceleration", "g"): "standard_gravity"}
+_ALIASES = {("acceleration", "g"): "standard_gravity", ("load", "g"): "standard_gravity"}
 
 #: Minus signs and dashes that text copied from a PDF or a word processor
 #: uses for a minus; float() refuses all of them.

@@ -40,3 +40,13 @@ def test_a_length_cell_in_feet_and_a_typographic_minus():
     r, _ = _column("theta,r\n90,8ft\n", "r")
     alpha, _ = _column("theta,alpha\n90,\u221210\n", "alpha")
     assert r[0] == 2.4384 and alpha[0] == -10.0
+
+
+def test_a_body_cell_with_a_comma_is_echoed_without_it(tmp_path):
+    body, _ = _column('theta,alpha,body\n90,10,"bi,ke"\n', "body")
+    assert body[0] == "bi;ke"
+    f = tmp_path / "in.csv"
+    f.write_text('theta,alpha,body\n90,10,"bi,ke"\n')
+    t = next(iter(deathsphere.api.orbit_input(f)))
+    assert str(t["status"][0]) == "invalid"
+    assert "," not in str(t["body"][0]) and "," not in str(t["reason"][0])

@@ -23,6 +23,8 @@ UNIT_HINTS = {
     "rate": "rad/s; or rpm, deg/s: 30rpm",
     "angle": "deg; or rad: 0.2rad",
     "acceleration": "m/s^2",
+    "mass": "kg; or lb: 350lb",
+    "load": "g; a trailing g is allowed: 5g",
 }
 
 
