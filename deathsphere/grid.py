@@ -75,7 +75,7 @@ class Segment:
             return v
         from deathsphere.units import scale_array
 
-        if self.decimals is None or not np.all(np.abs(v) < 2.0**52 / 10.0**self.decimals):
+        if self.decimals is None or self.decimals > 15 or not np.all(np.abs(v) < 2.0**52 / 10.0**self.decimals):
             return scale_array(v, Fraction(self.scale))
         # the decimal written is the integer k / 10^d: converted exactly from k
         k = np.round(v * 10.0**self.decimals)

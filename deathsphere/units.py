@@ -18,6 +18,7 @@ way except within 2**-100 of a tie.
 from __future__ import annotations
 
 import functools
+import math
 import re
 from fractions import Fraction
 
@@ -236,7 +237,6 @@ def convert(number, scale: Fraction) -> float:
     "length"))`` is ``0.3048``.  Text is read as the decimal written, so
     ``0.1ft`` is the float nearest 0.03048 m.
 
-    >>> import math
     >>> convert("30", exact_factor("rpm", "rate")) == math.pi
     True
     """
@@ -244,8 +244,11 @@ def convert(number, scale: Fraction) -> float:
         return float(number)
     try:
         exact = Fraction(number.replace("_", "")) if isinstance(number, str) else Fraction(number)
-    except (ValueError, OverflowError):  # inf and nan: no fraction, and no round-off either
-        return float(number) * float(scale)
+    except (ValueError, OverflowError):
+        value = float(number)  # full-width digits (as float reads them), inf, nan
+        if not math.isfinite(value):
+            return value * float(scale)
+        exact = Fraction(value)
     return float(exact * scale)
 
 
