@@ -49,7 +49,7 @@ import numpy as np
 
 from deathsphere.model import REQUEST_FIELDS
 from deathsphere.params import CHUNK
-from deathsphere.table.reasons import echo, reason_text
+from deathsphere.table.reasons import echo
 
 ALIASES = {
     "theta_deg": "theta", "alpha_deg": "alpha", "a_m": "a", "r_m": "r", "g_m_s2": "g",
@@ -478,10 +478,8 @@ class RequestReader:
         n = len(column)
         default = self._defaults[name]
         if name in TEXT_FIELDS:
-            # echoed in the output's body/side column and in the reason: a
-            # comma becomes ';' so that CSV rows still split at each comma
             out = np.empty(n, dtype=object)
-            out[:] = [reason_text(cell.strip().lower()) or default for cell in column]
+            out[:] = [cell.strip().lower() or default for cell in column]
             return out
         default = math.nan if default is None else float(default)
         infinite_ok = name in INFINITE_OK
