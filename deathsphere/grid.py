@@ -17,7 +17,6 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from fractions import Fraction
 
 import numpy as np
 
@@ -58,28 +57,20 @@ def _decimals(text: str) -> int | None:
 @dataclass(frozen=True)
 class Segment:
     """``n`` values ``start + i * step``, rounded to ``decimals`` (None: not
-    rounded), times ``scale`` (a unit's exact factor, a Fraction: the range
-    is written, and rounded, in the user's unit, and each value converted
-    with one rounding, as one number with that unit is)."""
+    rounded), times ``scale`` (a unit's factor: the range is written, and
+    rounded, in the user's unit; :mod:`deathsphere.api.arguments` converts
+    with the exact factor instead)."""
 
     start: float
     step: float
     n: int
     decimals: int | None
-    scale: Fraction | float = 1.0
+    scale: float = 1.0
 
     def take(self, i: np.ndarray) -> np.ndarray:
         v = self.start + self.step * i.astype(float)
         v = v if self.decimals is None else np.round(v, self.decimals)
-        if self.scale == 1:
-            return v
-        from deathsphere.units import scale_array
-
-        if self.decimals is None or self.decimals > 15 or not np.all(np.abs(v) < 2.0**52 / 10.0**self.decimals):
-            return scale_array(v, Fraction(self.scale))
-        # the decimal written is the integer k / 10^d: converted exactly from k
-        k = np.round(v * 10.0**self.decimals)
-        return scale_array(k, Fraction(self.scale) / 10**self.decimals)
+        return v if self.scale == 1.0 else v * self.scale
 
     @property
     def first(self) -> float:

@@ -286,6 +286,20 @@ def scale_array(values, scale: Fraction):
         return np.where(inside, out, v * head)
 
 
+def scale_written(values, decimals: int | None, scale: Fraction):
+    """Values of a range as written (each rounded to ``decimals``, None: in
+    exponent notation) times the exact ``scale``, rounded once: the decimal
+    written is the integer ``k / 10**decimals``, so it is ``k`` that is
+    converted (``0.1ft`` is the float nearest 0.03048, not 0.1's float times
+    a foot).  Beyond 15 decimals or 2**52 in ``k``, the float is converted."""
+    import numpy as np
+
+    v = np.asarray(values, dtype=np.float64)
+    if decimals is None or decimals > 15 or not np.all(np.abs(v) < 2.0**52 / 10.0**decimals):
+        return scale_array(v, scale)
+    return scale_array(np.round(v * 10.0**decimals), scale / 10**decimals)
+
+
 def to_api_unit(value, unit: str | None, kind: str, param: str | None = None):
     """``value`` (a number or an array) in ``unit`` converted to the API's
     unit for ``kind``, as float64; ``unit`` None means it is already.

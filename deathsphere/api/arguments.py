@@ -187,6 +187,20 @@ class ValuesAxis(Axis):
         return self._values[np.asarray(index, dtype=np.int64)]
 
 
+class UnitSegment(Segment):
+    """A range written with a unit: each value converted from the decimal
+    written with the unit's exact factor (``scale``, a Fraction), rounded
+    once (:func:`deathsphere.units.scale_written`), as one number with that
+    unit is: ``0:8:2ft`` gives 0.6096, 1.2192, ..., not their round-off."""
+
+    def take(self, i: np.ndarray) -> np.ndarray:
+        from deathsphere import units
+
+        v = self.start + self.step * i.astype(float)
+        written = v if self.decimals is None else np.round(v, self.decimals)
+        return units.scale_written(written, self.decimals, self.scale)
+
+
 def checked_segment(name: str, item) -> Segment:
     """One value or ``start:stop:step`` range of ``name``, every value allowed
     (a range is monotone: its ends decide, and it is never built)."""
@@ -201,7 +215,7 @@ def checked_segment(name: str, item) -> Segment:
         except RangeError as exc:
             raise ParameterError(str(exc).split(": ", 1)[-1], name) from None
         if scale != 1:  # the range in the unit written, each value converted
-            seg = Segment(seg.start, seg.step, seg.n, seg.decimals, scale)
+            seg = UnitSegment(seg.start, seg.step, seg.n, seg.decimals, scale)
     else:
         seg = Segment(float(checked_array(name, item)), 0.0, 1, None)
     reason = params.first_problem(name, [seg.first, seg.last])

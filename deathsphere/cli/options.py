@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import click
 
-from deathsphere.cluster import CONNECT_TIMEOUT_S
 from deathsphere.constants import BODIES, SIDES
 from deathsphere.params import PARAMS
 from deathsphere.writers.stream import FORMATS
@@ -131,7 +130,7 @@ def scheduler_option():
         "--scheduler", default=None, metavar="ADDRESS",
         help="Evaluate on the dask.distributed cluster whose scheduler is at ADDRESS (tcp://host:8786; the "
              "distributed extra); the output is that of a local run.  Not with --jobs.  A scheduler that does "
-             f"not answer within {CONNECT_TIMEOUT_S} s is a usage error (importing distributed adds a few "
+             "not answer within 5 s is a usage error (importing distributed adds a few "
              "seconds before that).")
 
 
