@@ -42,9 +42,8 @@ def test_every_value_of_a_range_is_converted_as_one_value_is():
 
 
 @settings(max_examples=300, deadline=None)
-@given(st.floats(-1e6, 1e6, allow_nan=False).filter(lambda v: v == 0 or abs(v) > 1e-200), st.sampled_from([("in", "length"), ("mph", "speed"),
-                                                               ("rpm", "rate"), ("rad", "angle"),
-                                                               ("g", "acceleration")]))
+@given(st.floats(-1e6, 1e6, allow_nan=False).filter(lambda v: v == 0 or abs(v) > 1e-200),
+       st.sampled_from([("in", "length"), ("mph", "speed"), ("rpm", "rate"), ("rad", "angle"), ("g", "acceleration")]))
 def test_arrays_are_rounded_once_like_fractions(value, unit_kind):
     scale = units.exact_factor(*unit_kind)
     assert units.scale_array(np.array([value]), scale)[0] == float(Fraction(value) * scale)

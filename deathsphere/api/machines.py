@@ -307,8 +307,9 @@ def _machine_text(raw: bytes, name: str) -> str:
     try:
         return raw.decode(encoding)
     except UnicodeDecodeError as exc:
-        raise ParameterError(f"machine file {name}: not {encoding.upper().replace('-SIG', '')} text (byte "
-                             f"{exc.start}: {raw[exc.start:exc.start + 1]!r}); save it as UTF-8", "machine_file") from None
+        shown = encoding.upper().replace("-SIG", "")
+        raise ParameterError(f"machine file {name}: not {shown} text (byte {exc.start}: "
+                             f"{raw[exc.start:exc.start + 1]!r}); save it as UTF-8", "machine_file") from None
 
 
 def machines_table():

@@ -211,7 +211,8 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     given = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "r": r, "g": g, "mu": mu,
              "max_g": max_g}
     checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
-    refuse_large_grid(grid_shape(checked), command="ride", limit=MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed is not None else 1)
+    refuse_large_grid(grid_shape(checked), command="ride", limit=MAX_RIDE_ROWS,
+                      per_point=TILTS_PER_SPEED if speed is not None else 1)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     if n > MAX_RIDE_ROWS:
