@@ -276,12 +276,13 @@ def grid_shape(arrays: dict) -> tuple[int, ...]:
 SPLIT = "split the ranges into several runs"
 
 
-def refuse_large_grid(counts, *, command: str, limit: int, instead: str = SPLIT, per_point: int = 1) -> int:
+def refuse_large_grid(counts, *, command: str, limit: int, instead: str = SPLIT, per_point: int = 1,
+                      param: str | None = None) -> int:
     """The number of grid points of ``counts`` (option -> number of values,
     their product; or a broadcast shape), or one line of ParameterError when
     the rows they may give (``per_point`` at most per point) exceed
     ``limit``, the rows ``command`` holds in memory; ``instead`` says what to
-    run instead.  Checked from the counts alone, before anything is built:
+    run instead, ``param`` names the option to blame (None: the grid).  Checked from the counts alone, before anything is built:
     the one check of every command whose results are held in memory."""
     sizes = list(counts.values()) if isinstance(counts, dict) else list(counts)
     points = math.prod(int(n) for n in sizes)
@@ -294,7 +295,7 @@ def refuse_large_grid(counts, *, command: str, limit: int, instead: str = SPLIT,
         points_text = f"{points:.3g} orbits"
     each = f", up to {per_point} rows each," if per_point > 1 else ""
     raise ParameterError(f"the grid has {points_text}{each} and {command} holds at most {limit:.3g} rows in "
-                         f"memory: {instead}")
+                         f"memory: {instead}", param)
 
 
 def checked_grid_size(axes: dict) -> int:

@@ -30,6 +30,7 @@ PEAK_KB = 300_000
     ("ride --vertical --theta 0:180:0.01 --v-top 0:100:0.01", "ride --vertical holds at most"),
     ("stability --theta 0:180:0.0000002 --alpha 10", "use 'deathsphere sweep'"),
     ("ride --theta 90 --speed 1:1000000:0.001", "up to 8 rows each"),
+    ("limits --theta 0:180:0.0000002", "split the theta range"),
 ])
 def test_a_grid_too_large_is_refused_in_one_line_before_it_is_built(args, words):
     env = dict(os.environ, NO_COLOR="1")
@@ -47,11 +48,12 @@ def test_a_grid_too_large_is_refused_in_one_line_before_it_is_built(args, words)
     lambda: deathsphere.ride(90, speed=np.ones(300_000), machine="stunt125"),
     lambda: deathsphere.ride(np.zeros((200_000, 1)), vertical=True, v_top=np.ones((1, 100_000)),
                              machine="stunt125"),
+    lambda: deathsphere.limits(theta=np.zeros((200_000, 1)), a=np.full((1, 100_000), 0.3)),
 ])
 def test_the_api_refuses_from_the_shapes_alone(call):
     tracemalloc.start()
     try:
-        with pytest.raises(ParameterError, match="ride.* holds at most"):
+        with pytest.raises(ParameterError, match="(ride|limits).* holds at most"):
             call()
         _, peak = tracemalloc.get_traced_memory()
     finally:
