@@ -52,10 +52,36 @@ def connect(scheduler, timeout: float | None = None):
     try:
         client = Client(scheduler.strip(), timeout=timeout, set_as_default=False)
     except Exception as exc:  # OSError, TimeoutError, a malformed address: one line, no traceback
-        words = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-        raise ParameterError(f"cannot reach the dask scheduler at {scheduler!r} within {timeout:g} s: {words}",
-                             "scheduler") from None
+        _abandon(exc, Client)
+        raise ParameterError(_unreachable(scheduler, timeout, exc), "scheduler") from None
     return client, True
+
+
+def _unreachable(scheduler: str, timeout: float, exc: BaseException) -> str:
+    """Why the scheduler at ``scheduler`` was not reached, in one line."""
+    words = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+    if isinstance(exc, MemoryError):  # a service that is not a scheduler answered with bytes read as a length
+        return f"{scheduler!r} answered, but not as a dask scheduler does (is it the scheduler's port?)"
+    if isinstance(exc, ValueError):  # distributed's parser: no port, an unknown scheme
+        return f"{scheduler!r} is not a scheduler address such as tcp://host:8786: {words}"
+    return f"cannot reach the dask scheduler at {scheduler!r} within {timeout:g} s: {words}"
+
+
+def _abandon(exc: BaseException, client_type) -> None:
+    """Stop the Client a failed constructor left half built.  Found in the
+    traceback's frames, it would otherwise be closed by its ``__del__`` at
+    exit, which waits for a scheduler that never answered (10 s) and then
+    prints an "Exception ignored" traceback after the one-line error."""
+    tb = exc.__traceback__
+    while tb is not None:
+        half = tb.tb_frame.f_locals.get("self")
+        if isinstance(half, client_type):
+            half.status = "closed"  # its close() (and so __del__) is then a no-op
+            try:
+                half._loop_runner.stop()
+            except Exception:  # an internal of distributed: the exit goes on without it
+                pass
+        tb = tb.tb_next
 
 
 def workers(client) -> int:

@@ -58,7 +58,8 @@ def _decimals(text: str) -> int | None:
 class Segment:
     """``n`` values ``start + i * step``, rounded to ``decimals`` (None: not
     rounded), times ``scale`` (a unit's factor: the range is written, and
-    rounded, in the user's unit)."""
+    rounded, in the user's unit; :mod:`deathsphere.api.arguments` converts
+    with the exact factor instead)."""
 
     start: float
     step: float

@@ -508,16 +508,25 @@ class RequestReader:
 
     @staticmethod
     def _convert_cells(name, column, invalid, default, infinite_ok) -> np.ndarray:
+        """Cells one by one (some are not plain numbers): a unit suffix or a
+        typographic minus is read as the command line's option reads it."""
+        from deathsphere import units
+        from deathsphere.params import PARAMS
+
+        kind = PARAMS[name].kind if name in PARAMS else "none"
         out = np.empty(len(column))
         for i, cell in enumerate(column):
             if not cell:
                 out[i] = default
                 continue
             try:
-                number = float(cell)
-            except ValueError:
+                number = units.parse_value(cell, kind, name)
+            except ValueError as exc:
                 if not invalid[i]:
-                    invalid[i] = f"{name}: {echo(cell)} is not a number"
+                    # a unit of the wrong kind: the units' own words; else the cell is no number
+                    words = str(exc)
+                    invalid[i] = (f"{name}: {echo(cell)} is not a number" if "must be a number" in words
+                                  or "takes no unit" in words or "unknown unit" in words else words)
                 number = math.nan
             else:
                 if math.isnan(number) or (math.isinf(number) and not infinite_ok):

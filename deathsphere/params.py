@@ -138,7 +138,7 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("mu", "", "friction coefficient", 0.0, math.inf, allow_inf=True, symbol="μ", metavar="MU",
           default=math.inf, column="mu_available",
           help="Friction coefficient available; an orbit needing more has status slips."),
-    Param("max_g", "g", "largest g-load", TINY, math.inf, allow_inf=True, metavar="G", default=math.inf,
+    Param("max_g", "g", "largest g-load", TINY, math.inf, allow_inf=True, kind="load", metavar="G", default=math.inf,
           column="max_accel_g",
           help="Largest g-load (centre acceleration in g) the rider takes; an orbit over it has status "
                "over_g."),
@@ -175,7 +175,7 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("max_steps", "", "step budget", 1, 1e15, integer=True, metavar="N", default=1_000_000,
           help="Refuse, before it starts, a run estimated to need more integration steps."),
     # the machine of `deathsphere ride` (docs/machine.md): a motorcycle and rider as one gyrostat
-    Param("mass", "kg", "machine mass", TINY, HUGE, symbol="m", metavar="KG",
+    Param("mass", "kg", "machine mass", TINY, HUGE, symbol="m", kind="mass", metavar="KG",
           help="Ride: total mass of machine, rider and wheels."),
     _length("com_height", "centre-of-mass height", "h", lo=0.0,
             help="Ride: height of the centre of mass above the contact along the up-axis (upright on flat "

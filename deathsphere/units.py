@@ -6,15 +6,21 @@ A plain number never imports pint: the registry is built the first time a
 suffix appears (importing pint and building it costs 0.3-0.5 s) and kept.  The API's
 own unit spelled out (``60deg``, ``3m``, ``7m/s``) needs no pint either.
 
-The factors are pint's definitions evaluated in exact rational arithmetic
-and rounded to float64 once, so a foot is exactly ``0.3048`` (pint's float
-registry gets ``0.30479999999999996`` by chaining yard -> inch -> foot).
+The factors are pint's definitions as exact fractions, and a value is
+converted by multiplying the number as written by the exact factor and
+rounding once: ``12in`` is ``0.3048`` and ``30rpm`` is ``math.pi`` to the
+last bit (a float product of the number and a rounded factor gets
+``0.30479999999999996`` and ``3.1415926535897936``).  Arrays (the values of
+a range) are multiplied in double-double arithmetic, which rounds the same
+way except within 2**-100 of a tie.
 """
 
 from __future__ import annotations
 
 import functools
+import math
 import re
+from fractions import Fraction
 
 #: The physical kinds an input can have, and the unit the API takes each in
 #: (angles are degrees in the API, as on the command line).
@@ -24,6 +30,8 @@ KINDS: dict[str, str] = {
     "rate": "rad/s",
     "angle": "deg",
     "acceleration": "m/s^2",
+    "mass": "kg",
+    "load": "g",
     "none": "",
 }
 
@@ -35,15 +43,18 @@ COMMON: dict[str, tuple[str, ...]] = {
     "rate": ("rad/s", "rpm", "deg/s"),
     "angle": ("deg", "rad"),
     "acceleration": ("m/s^2", "ft/s^2", "g"),
+    "mass": ("kg", "lb"),
+    "load": ("g", "m/s^2"),
     "none": (),
 }
 
 _NOUN = {"length": "a length", "speed": "a speed", "rate": "an angular rate", "angle": "an angle",
-         "acceleration": "an acceleration", "none": "a plain number"}
+         "acceleration": "an acceleration", "mass": "a mass", "load": "a g-load",
+         "none": "a plain number"}
 
 #: pint's spelling of each API unit, for the conversion and the dimension check.
 _PINT_API = {"length": "meter", "speed": "meter / second", "rate": "radian / second", "angle": "degree",
-             "acceleration": "meter / second ** 2"}
+             "acceleration": "meter / second ** 2", "mass": "kilogram", "load": "standard_gravity"}
 
 #: pint has no angle dimension (a radian is 1), so it would take ``2Hz`` or
 #: ``3%`` for an angular rate or an angle; angles are recognised by name.
@@ -52,7 +63,7 @@ _ANGLE_UNITS = frozenset({"radian", "degree", "turn", "revolution", "milliradian
 _NAMED_RATES = frozenset({"revolutions_per_minute", "revolutions_per_second"})
 
 #: A rider's spellings pint reads otherwise: ``g`` is a gram to pint.
-_ALIASES = {("acceleration", "g"): "standard_gravity"}
+_ALIASES = {("acceleration", "g"): "standard_gravity", ("load", "g"): "standard_gravity"}
 
 #: Minus signs and dashes that text copied from a PDF or a word processor
 #: uses for a minus; float() refuses all of them.
@@ -155,7 +166,13 @@ def _what_it_is(unit) -> str:
         return "a frequency with no angle (write rpm, turn/s or rad/s)"
     if len(dims) == 1 and next(iter(dims.values())) == 1:
         return _BASE_WORDS.get(next(iter(dims)), f"a {next(iter(dims)).strip('[]')}")
-    return f"of dimension {unit.dimensionality}"
+    # spelled out here: pint's own formatting fails on the exact registry's
+    # Fraction exponents (TypeError from Fraction.__format__)
+    def power(name, p):
+        return name.strip("[]") + ("" if abs(p) == 1 else f"^{abs(p)}")
+    up = " ".join(power(n, p) for n, p in dims.items() if p > 0) or "1"
+    down = " ".join(power(n, p) for n, p in dims.items() if p < 0)
+    return f"of dimension {up}/{down}" if down else f"of dimension {up}"
 
 
 def allowed_text(kind: str) -> str:
@@ -165,9 +182,9 @@ def allowed_text(kind: str) -> str:
 
 
 @functools.lru_cache(maxsize=256)
-def _factor_or_reason(unit: str, kind: str) -> float | str:
+def _factor_or_reason(unit: str, kind: str) -> Fraction | str:
     if unit == KINDS[kind]:
-        return 1.0
+        return Fraction(1)
     if kind == "none":
         return "takes no unit"
     ureg = registry()
@@ -177,14 +194,14 @@ def _factor_or_reason(unit: str, kind: str) -> float | str:
         return f"unknown unit {unit!r}"
     if not _is_kind(parsed, kind):
         return f"{unit} is {_what_it_is(parsed)}"
-    return float(ureg.Quantity(1, parsed).to(_PINT_API[kind]).magnitude)
+    return Fraction(ureg.Quantity(1, parsed).to(_PINT_API[kind]).magnitude)
 
 
-def _factor(unit: str, kind: str, param: str | None, given: str) -> float:
+def _factor(unit: str, kind: str, param: str | None, given: str) -> Fraction:
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; one of {', '.join(KINDS)}")
     got = _factor_or_reason(unit.strip(), kind)
-    if isinstance(got, float):
+    if isinstance(got, Fraction):
         return got
     name = param or kind
     if kind == "none":
@@ -192,16 +209,95 @@ def _factor(unit: str, kind: str, param: str | None, given: str) -> float:
     raise _error(f"{name} must be {_NOUN[kind]} in {allowed_text(kind)} (got {given!r}: {got})", param)
 
 
-def factor(unit: str, kind: str, param: str | None = None) -> float:
+def exact_factor(unit: str, kind: str, param: str | None = None) -> Fraction:
     """What a value in ``unit`` is multiplied by to be in the API's unit
-    for ``kind`` (1.0 for the API's unit itself); ParameterError for a
-    unit pint does not know or one of another dimension.  ``param`` names
-    the option in the message (default: the kind).
+    for ``kind``, as an exact fraction (1 for the API's unit itself);
+    ParameterError for a unit pint does not know or one of another
+    dimension.  ``param`` names the option in the message (default: the kind).
+
+    >>> exact_factor("in", "length")
+    Fraction(127, 5000)
+    """
+    return _factor(unit, kind, param, unit)
+
+
+def factor(unit: str, kind: str, param: str | None = None) -> float:
+    """:func:`exact_factor` rounded to float64 (for display; a conversion
+    multiplies by the exact factor, :func:`convert`).
 
     >>> factor("km/h", "speed") * 36
     10.0
     """
-    return _factor(unit, kind, param, unit)
+    return float(exact_factor(unit, kind, param))
+
+
+def convert(number, scale: Fraction) -> float:
+    """``number`` (its text as written, or a float) times the exact
+    ``scale``, rounded to float64 once: ``convert("12", exact_factor("in",
+    "length"))`` is ``0.3048``.  Text is read as the decimal written, so
+    ``0.1ft`` is the float nearest 0.03048 m.
+
+    >>> convert("30", exact_factor("rpm", "rate")) == math.pi
+    True
+    """
+    if scale == 1:
+        return float(number)
+    try:
+        exact = Fraction(number.replace("_", "")) if isinstance(number, str) else Fraction(number)
+    except (ValueError, OverflowError):
+        value = float(number)  # full-width digits (as float reads them), inf, nan
+        if not math.isfinite(value):
+            return value * float(scale)
+        exact = Fraction(value)
+    return float(exact * scale)
+
+
+def _split(x):
+    """Veltkamp's split of float64 ``x`` into two halves of 26 bits, whose
+    products are exact."""
+    c = 134217729.0 * x
+    hi = c - (c - x)
+    return hi, x - hi
+
+
+def scale_array(values, scale: Fraction):
+    """float64 ``values`` times the exact ``scale``, each rounded once: the
+    product in double-double arithmetic (Dekker's exact product with the
+    scale's head, plus the scale's tail), so ``np.arange(5) * 12in`` gives
+    ``0.3048`` for 12 where ``12 * 0.0254`` gives ``0.30479999999999996``.
+    Values beyond 1e290 or below 1e-250 in magnitude (out of every
+    parameter's range anyway) are multiplied plainly: the split overflows
+    there, and the error terms underflow."""
+    import numpy as np
+
+    v = np.asarray(values, dtype=np.float64)
+    head = float(scale)
+    if scale == 1:
+        return v
+    tail = float(scale - Fraction(head))
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        inside = (np.abs(v) < 1e290) & (np.abs(v) > 1e-250)
+        safe = np.where(inside, v, 0.0)
+        p = safe * head
+        vh, vl = _split(safe)
+        hh, hl = _split(head)
+        err = ((vh * hh - p) + vh * hl + vl * hh) + vl * hl
+        out = p + (err + safe * tail)
+        return np.where(inside, out, v * head)
+
+
+def scale_written(values, decimals: int | None, scale: Fraction):
+    """Values of a range as written (each rounded to ``decimals``, None: in
+    exponent notation) times the exact ``scale``, rounded once: the decimal
+    written is the integer ``k / 10**decimals``, so it is ``k`` that is
+    converted (``0.1ft`` is the float nearest 0.03048, not 0.1's float times
+    a foot).  Beyond 15 decimals or 2**52 in ``k``, the float is converted."""
+    import numpy as np
+
+    v = np.asarray(values, dtype=np.float64)
+    if decimals is None or decimals > 15 or not np.all(np.abs(v) < 2.0**52 / 10.0**decimals):
+        return scale_array(v, scale)
+    return scale_array(np.round(v * 10.0**decimals), scale / 10**decimals)
 
 
 def to_api_unit(value, unit: str | None, kind: str, param: str | None = None):
@@ -211,23 +307,22 @@ def to_api_unit(value, unit: str | None, kind: str, param: str | None = None):
     >>> to_api_unit(8, "ft", "length")
     2.4384
     """
-    scale = 1.0 if unit is None else factor(unit, kind, param)
+    scale = Fraction(1) if unit is None else exact_factor(unit, kind, param)
     if isinstance(value, (int, float)):
-        return float(value) * scale
-    import numpy as np
-
-    return np.asarray(value, dtype=np.float64) * scale
+        return convert(value, scale)
+    return scale_array(value, scale)
 
 
-def parse_suffix(text: str, kind: str, param: str | None = None) -> tuple[str, float]:
+def parse_suffix(text: str, kind: str, param: str | None = None) -> tuple[str, Fraction]:
     """``(number_text, factor)`` of a number or range with an optional unit:
-    the caller parses ``number_text`` as before and multiplies by ``factor``
-    (1.0 without a unit; a range scales linearly, so once for the whole).
+    the caller parses ``number_text`` as before and converts with the exact
+    ``factor`` (1 without a unit; a range scales linearly, so once for the
+    whole): :func:`convert` for one number, :func:`scale_array` for many.
 
     >>> parse_suffix("30:70:5km/h", "speed")
-    ('30:70:5', 0.2777777777777778)
+    ('30:70:5', Fraction(5, 18))
     >>> parse_suffix("\u221210", "angle")
-    ('-10', 1.0)
+    ('-10', Fraction(1, 1))
     """
     try:
         number, unit = split_unit(text)
@@ -235,7 +330,7 @@ def parse_suffix(text: str, kind: str, param: str | None = None) -> tuple[str, f
         if hasattr(exc, "param") and exc.param is None:
             exc.param = param
         raise
-    return number, (1.0 if unit is None else _factor(unit, kind, param, normalize_number_text(text)))
+    return number, (Fraction(1) if unit is None else _factor(unit, kind, param, normalize_number_text(text)))
 
 
 def parse_value(text: str, kind: str, param: str | None = None) -> float:
@@ -245,4 +340,4 @@ def parse_value(text: str, kind: str, param: str | None = None) -> float:
         value = float(number)
     except ValueError:
         raise _error(f"{param or kind} must be a number (got {text!r})", param) from None
-    return value * scale
+    return value if scale == 1 else convert(number, scale)

@@ -187,6 +187,20 @@ class ValuesAxis(Axis):
         return self._values[np.asarray(index, dtype=np.int64)]
 
 
+class UnitSegment(Segment):
+    """A range written with a unit: each value converted from the decimal
+    written with the unit's exact factor (``scale``, a Fraction), rounded
+    once (:func:`deathsphere.units.scale_written`), as one number with that
+    unit is: ``0:8:2ft`` gives 0.6096, 1.2192, ..., not their round-off."""
+
+    def take(self, i: np.ndarray) -> np.ndarray:
+        from deathsphere import units
+
+        v = self.start + self.step * i.astype(float)
+        written = v if self.decimals is None else np.round(v, self.decimals)
+        return units.scale_written(written, self.decimals, self.scale)
+
+
 def checked_segment(name: str, item) -> Segment:
     """One value or ``start:stop:step`` range of ``name``, every value allowed
     (a range is monotone: its ends decide, and it is never built)."""
@@ -200,8 +214,8 @@ def checked_segment(name: str, item) -> Segment:
             seg = parse_segment(number, name)
         except RangeError as exc:
             raise ParameterError(str(exc).split(": ", 1)[-1], name) from None
-        if scale != 1.0:  # the range in the unit written, each value converted
-            seg = Segment(seg.start, seg.step, seg.n, seg.decimals, scale)
+        if scale != 1:  # the range in the unit written, each value converted
+            seg = UnitSegment(seg.start, seg.step, seg.n, seg.decimals, scale)
     else:
         seg = Segment(float(checked_array(name, item)), 0.0, 1, None)
     reason = params.first_problem(name, [seg.first, seg.last])
@@ -233,6 +247,55 @@ def one_default(name: str, value) -> float | None:
     if len(axis) != 1:
         raise ParameterError(f"with an input file, {name} may give one default value, not a list or range", name)
     return float(axis.take(np.zeros(1, dtype=np.int64))[0])
+
+
+#: At most this many tilts give a machine one speed: eq. M12 has at most 8
+#: zeros per period (:func:`deathsphere.physics.machine.solve_alpha_for_speed`).
+TILTS_PER_SPEED = 8
+
+
+def value_counts(options: dict) -> dict[str, int]:
+    """How many values each given option holds (the command line's repeated
+    values and ``start:stop:step`` ranges, with units), counted from start,
+    stop and step: nothing is built.  Options not given are left out."""
+    return {name: len(checked_axis(name, list(v) if isinstance(v, tuple) else v))
+            for name, v in options.items() if is_given(v)}
+
+
+def grid_shape(arrays: dict) -> tuple[int, ...]:
+    """The broadcast shape of ``arrays`` from their shapes alone (nothing is
+    allocated); ParameterError if they do not broadcast."""
+    try:
+        return np.broadcast_shapes(*(np.shape(v) for v in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{n} {np.shape(v)}" for n, v in arrays.items() if np.ndim(v))
+        raise ParameterError(f"the arguments cannot be broadcast together (shapes: {shapes})") from None
+
+
+#: What to do instead when a command that holds its rows cannot stream them.
+SPLIT = "split the ranges into several runs"
+
+
+def refuse_large_grid(counts, *, command: str, limit: int, instead: str = SPLIT, per_point: int = 1,
+                      param: str | None = None) -> int:
+    """The number of grid points of ``counts`` (option -> number of values,
+    their product; or a broadcast shape), or one line of ParameterError when
+    the rows they may give (``per_point`` at most per point) exceed
+    ``limit``, the rows ``command`` holds in memory; ``instead`` says what to
+    run instead, ``param`` names the option to blame (None: the grid).  Checked from the counts alone, before anything is built:
+    the one check of every command whose results are held in memory."""
+    sizes = list(counts.values()) if isinstance(counts, dict) else list(counts)
+    points = math.prod(int(n) for n in sizes)
+    if points * per_point <= limit:
+        return points
+    if isinstance(counts, dict) and len(counts) > 1:
+        spelled = " x ".join(f"{n} {name.replace('_', '-')}" for name, n in counts.items())
+        points_text = f"{points:.3g} orbits ({spelled} values)"
+    else:
+        points_text = f"{points:.3g} orbits"
+    each = f", up to {per_point} rows each," if per_point > 1 else ""
+    raise ParameterError(f"the grid has {points_text}{each} and {command} holds at most {limit:.3g} rows in "
+                         f"memory: {instead}", param)
 
 
 def checked_grid_size(axes: dict) -> int:

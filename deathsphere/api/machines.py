@@ -34,6 +34,24 @@ def _number(field: str, value) -> float:
     return float(value)
 
 
+#: Characters an echoed text may not hold: the CSV output promises that
+#: ``awk -F,`` splits every row (docs/contract.md, "Output columns").
+UNECHOABLE = (",", "\n", "\r")
+
+
+def echoable_text(what: str, value) -> str:
+    """``value`` if it is text that can be echoed in every output row (no
+    comma, no line break); else ParameterError naming the character."""
+    if not isinstance(value, str):
+        raise ParameterError(f"{what} must be text (got {value!r})", "machine")
+    bad = next((c for c in UNECHOABLE if c in value), None)
+    if bad is not None:
+        shown = "a comma" if bad == "," else "a line break"
+        raise ParameterError(f"{what} {value!r} holds {shown}: every output row echoes it and CSV rows must split "
+                             "at each comma (write ';' or a space instead)", "machine")
+    return value
+
+
 @dataclass(frozen=True, kw_only=True)
 class Machine:
     """A machine: a rigid frame (motorcycle and rider, wheels locked) with
@@ -66,6 +84,8 @@ class Machine:
 
     def __post_init__(self):
         set_ = object.__setattr__
+        for field in ("name", "source"):
+            set_(self, field, echoable_text(f"machine {field}", getattr(self, field)))
         for field, pname in FIELD_PARAMS.items():
             value = getattr(self, field)
             if field == "head" and value is None:
@@ -240,9 +260,10 @@ def machine_file(path, base=DEFAULT_MACHINE) -> Machine:
 
     p = pathlib.Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
+        raw = p.read_bytes()
     except OSError as exc:
         raise ParameterError(f"cannot read the machine file {str(path)!r}: {exc.strerror}", "machine_file") from None
+    text = _machine_text(raw, p.name)
     if p.suffix.lower() == ".toml":
         try:
             data = tomllib.loads(text)
@@ -253,7 +274,12 @@ def machine_file(path, base=DEFAULT_MACHINE) -> Machine:
         if len(rows) != 2 or len(rows[0]) != len(rows[1]):
             raise ParameterError(f"machine file {p.name}: a CSV machine file is a header and one row of values",
                                  "machine_file")
-        data = {k.strip(): v.strip() for k, v in zip(*rows)}
+        keys = [k.strip() for k in rows[0]]
+        twice = next((k for i, k in enumerate(keys) if k in keys[:i]), None)
+        if twice is not None:
+            raise ParameterError(f"machine file {p.name}: key {twice!r} is given twice (which one is meant?)",
+                                 "machine_file")
+        data = dict(zip(keys, (v.strip() for v in rows[1])))
     unknown = sorted(set(data) - set(FILE_KEYS) - {"name", "source", "base"})
     if unknown:
         raise ParameterError(f"machine file {p.name}: unknown key {unknown[0]!r} (known: name, source, base, "
@@ -261,7 +287,29 @@ def machine_file(path, base=DEFAULT_MACHINE) -> Machine:
     start = as_machine(str(data.get("base", base)))
     values = {FILE_KEYS[k]: v for k, v in data.items() if k in FILE_KEYS}
     machine = start.with_overrides(**values)
-    return replace(machine, name=str(data.get("name", p.stem)), source=str(data.get("source", f"file {p.name}")))
+    if "name" not in data and any(c in p.stem for c in UNECHOABLE):
+        raise ParameterError(f"machine file {p.name}: its name (the file's name: {p.stem!r}) holds a comma or a line "
+                             "break, which the CSV output cannot echo; give a name key", "machine_file")
+    from deathsphere.table.reasons import reason_text
+
+    # the file's name as the default source, written as a reason is (no comma, one line)
+    return replace(machine, name=str(data.get("name", p.stem)),
+                   source=str(data.get("source", reason_text(f"file {p.name}"))))
+
+
+def _machine_text(raw: bytes, name: str) -> str:
+    """A machine file's text: UTF-8, its byte-order mark dropped (a
+    spreadsheet's export), or UTF-16 with a byte-order mark; anything else
+    is refused in one line."""
+    import codecs
+
+    encoding = "utf-16" if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)) else "utf-8-sig"
+    try:
+        return raw.decode(encoding)
+    except UnicodeDecodeError as exc:
+        shown = encoding.upper().replace("-SIG", "")
+        raise ParameterError(f"machine file {name}: not {shown} text (byte {exc.start}: "
+                             f"{raw[exc.start:exc.start + 1]!r}); save it as UTF-8", "machine_file") from None
 
 
 def machines_table():

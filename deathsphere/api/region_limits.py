@@ -16,9 +16,11 @@ from deathsphere.api.arguments import (
     checked_choice,
     checked_scalar,
     checked_setup,
+    grid_shape,
     is_given,
     one_default,
     raise_if_all_invalid,
+    refuse_large_grid,
     sphere_radius,
 )
 from deathsphere.api.streams import Chunks, cluster_of, input_requests, request_reader
@@ -222,19 +224,21 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
         thetas = theta
         if isinstance(theta, str) or (isinstance(theta, (list, tuple)) and any(isinstance(v, str) for v in theta)):
             thetas = checked_axis("theta", theta).values() if len(checked_axis("theta", theta)) <= MAX_LIMIT_THETAS \
-                else _too_many(len(checked_axis("theta", theta)))
+                else _too_many([len(checked_axis("theta", theta))])
         given["theta"] = thetas
-    shape, flat = broadcast_flat({name: checked_array(name, v) for name, v in given.items() if v is not None})
+    checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    _too_many(grid_shape(checked))
+    shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
-    if n > MAX_LIMIT_THETAS:
-        _too_many(n)
     req = make_requests(n, body=body, side=side, **flat)
     table = limits_rows(req, highest=not is_given(theta))
     return raise_if_all_invalid(table)
 
 
-def _too_many(n: int):
-    raise ParameterError(f"theta: {n} requests, more than {MAX_LIMIT_THETAS} (each is a root search)", "theta")
+def _too_many(counts):
+    """Refuse, from the counts alone, more thetas than one call searches."""
+    return refuse_large_grid(counts, command="limits", limit=MAX_LIMIT_THETAS, param="theta",
+                             instead="each is a root search; split the theta range into several runs")
 
 
 def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=None, g=None, mu=None, max_g=None,

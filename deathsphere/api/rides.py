@@ -10,12 +10,15 @@ import numpy as np
 
 from deathsphere.api.arguments import (
     INF,
+    TILTS_PER_SPEED,
     G,
     R,
     broadcast_flat,
     checked_array,
     checked_flag,
     checked_statuses,
+    grid_shape,
+    refuse_large_grid,
     sphere_radius,
 )
 from deathsphere.api.machines import Machine, as_machine
@@ -213,6 +216,8 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     given = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "r": r, "g": g, "mu": mu,
              "max_g": max_g}
     checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    refuse_large_grid(grid_shape(checked), command="ride", limit=MAX_RIDE_ROWS,
+                      per_point=TILTS_PER_SPEED if speed is not None else 1)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     if n > MAX_RIDE_ROWS:
@@ -350,6 +355,7 @@ def _loop(theta, v_top, m: Machine, r, g) -> Table:
         raise ParameterError("a vertical loop needs theta (its cone angle) and v_top", "v_top", missing=True)
     checked = {name: checked_array(name, v) for name, v in
                (("theta", theta), ("v_top", v_top), ("r", r), ("g", g))}
+    refuse_large_grid(grid_shape(checked), command="ride --vertical", limit=MAX_RIDE_ROWS)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     th = np.radians(flat["theta"])

@@ -162,6 +162,7 @@ def prepare_simulation(theta, alpha=None, *, body: str | None = None, side: str 
     vertical = checked_flag("vertical", vertical)
     run = _run_options(perturb, periods, points_per_period, method, rtol, atol, frame, record_states, max_steps)
     perturb = run.pop("perturb")
+    requested = {"speed": speed, "rate": omega, "omega3": omega3}
     if setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None):
         # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved), the root ``branch``
         alpha = _tilt_for(setup, theta, speed, omega, branch)
@@ -196,10 +197,20 @@ def prepare_simulation(theta, alpha=None, *, body: str | None = None, side: str 
         else:
             starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
                                                   perturb_deg=perturb)
-        sim = simulation.Simulation(starts, **run)
+        sim = simulation.Simulation(_echo_requested(starts, **requested), **run)
     except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
         raise ParameterError(str(exc)) from None
     return sim
+
+
+def _echo_requested(starts, **requested):
+    """``starts`` with the values the request fixed (the speed, Omega or
+    omega3 it gave) echoed as given: recomputed from the tilt they were
+    solved for, they come back a few ulps off (7 m/s as 6.999999999999994).
+    Rows without an orbit keep their NaN."""
+    given = {field: np.where(np.isfinite(getattr(starts, field)), value, getattr(starts, field))
+             for field, value in requested.items() if value is not None}
+    return dataclasses.replace(starts, **given) if given else starts
 
 
 def _run_options(perturb, periods, points_per_period, method, rtol, atol, frame, record_states, max_steps) -> dict:
@@ -236,7 +247,8 @@ def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
         raise ParameterError("a machine's steady orbit needs exactly one of alpha (deg) and speed (its centre of "
                              "mass's, m/s)", "alpha", missing=alpha is None)
     if speed is not None:
-        alpha = _machine_tilt_for(m, theta, checked_scalar("speed", speed), branch, r, g)
+        speed = checked_scalar("speed", speed)
+        alpha = _machine_tilt_for(m, theta, speed, branch, r, g)
     elif isinstance(branch, bool) or branch != 0:
         raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
                              "branch")
@@ -249,7 +261,7 @@ def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
         starts = machine_starts(bodies, theta, params.reduce_angle(alpha), perturb_deg=perturb, mu=mu)
         # the tilt is echoed as given, as a wheel's
         starts = dataclasses.replace(starts, alpha_deg=np.full(len(starts), alpha))
-        return simulation.Simulation(starts, **run)
+        return simulation.Simulation(_echo_requested(starts, speed=speed), **run)
     except ValueError as exc:
         raise ParameterError(str(exc)) from None
 

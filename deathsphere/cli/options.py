@@ -23,6 +23,8 @@ UNIT_HINTS = {
     "rate": "rad/s; or rpm, deg/s: 30rpm",
     "angle": "deg; or rad: 0.2rad",
     "acceleration": "m/s^2",
+    "mass": "kg; or lb: 350lb",
+    "load": "g; a trailing g is allowed: 5g",
 }
 
 
@@ -127,7 +129,9 @@ def scheduler_option():
     return single(
         "--scheduler", default=None, metavar="ADDRESS",
         help="Evaluate on the dask.distributed cluster whose scheduler is at ADDRESS (tcp://host:8786; the "
-             "distributed extra); the output is that of a local run.  Not with --jobs.")
+             "distributed extra); the output is that of a local run.  Not with --jobs.  A scheduler that does "
+             "not answer within 5 s is a usage error (importing distributed adds a few "
+             "seconds before that).")
 
 
 def only_option(statuses):

@@ -71,6 +71,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
     """
+    from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
+
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
@@ -78,6 +80,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     if vertical:
         if not theta or not v_top or height or alpha or speed or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
+        refuse_large_grid(value_counts({"theta": theta, "v_top": v_top}), command="ride --vertical",
+                          limit=api.rides.MAX_RIDE_ROWS)
         table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
                          machine=chosen, only=only or None, **setup)
         emit([table], choose_format(fmt), f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)")
@@ -90,6 +94,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed, not both")
     if not alpha and not speed:
         raise click.UsageError("give --alpha or --speed")
+    refuse_large_grid(value_counts({"theta": theta, "height": height, "alpha": alpha, "speed": speed}), command="ride",
+                      limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
     where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
     how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
     setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))

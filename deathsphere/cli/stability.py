@@ -71,8 +71,12 @@ def _grid(orbit: dict) -> dict:
     """The command line's values (text, perhaps ranges or with units) as the
     API's arrays: theta down, the orbit's other input across (every
     combination, as orbit evaluates them)."""
-    from deathsphere.api.arguments import checked_axis
+    from deathsphere.api.arguments import checked_axis, refuse_large_grid, value_counts
+    from deathsphere.api.orbits import MAX_ORBIT_ROWS
 
+    refuse_large_grid(value_counts(orbit), command="stability", limit=MAX_ORBIT_ROWS,
+                      instead="use 'deathsphere sweep' (it streams the orbits, stability columns included) or "
+                              "split the ranges into several runs")
     grid = {name: checked_axis(name, list(values)).values() for name, values in orbit.items()}
     return {name: (values[:, None] if name == "theta" else values[None, :]) for name, values in grid.items()}
 

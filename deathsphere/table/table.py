@@ -22,6 +22,10 @@ from deathsphere.table.frames import (
 )
 from deathsphere.table.reasons import reason_column
 
+#: Text columns that pass the gate of :func:`reason_column`: the reasons, and
+#: the texts a row echoes as its request gave them (an ``--input`` cell).
+ECHOED_TEXT = frozenset({"reason", "body", "side", "machine"})
+
 
 class Table:
     """Ordered named columns of equal-length arrays (the result type).
@@ -79,10 +83,11 @@ class Table:
             raise ValueError(f"columns of unequal length: {lengths}")
         for col in columns.values():
             col.flags.writeable = False
-        if "reason" in columns:
-            # the one gate of every reason text (docs/contract.md: no comma)
-            columns["reason"] = reason_column(columns["reason"])
-            columns["reason"].flags.writeable = False
+        for name in ECHOED_TEXT.intersection(columns):
+            # the one gate of every reason and every text a row echoes from
+            # its request (docs/contract.md: no comma, no line break)
+            columns[name] = reason_column(columns[name])
+            columns[name].flags.writeable = False
         self.columns = columns
         n = len(self)
         shape = (n,) if shape is None else tuple(int(s) for s in shape)

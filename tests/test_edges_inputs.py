@@ -1,0 +1,52 @@
+"""Units of a compound dimension are refused in one line by the API, and an
+--input cell reads a unit suffix or a typographic minus as the option does."""
+
+import io
+import math
+
+import pytest
+
+import deathsphere
+from deathsphere.inputs import RequestReader
+from deathsphere.model import REQUEST_FIELDS
+from deathsphere.params import ParameterError
+
+
+@pytest.mark.parametrize("kw, words", [
+    ({"theta": 90, "speed": "40km/h km/h"}, "length^2/time^2"),
+    ({"theta": 90, "alpha": 10, "r": "3 m^2"}, "length^2"),
+    ({"theta": 90, "alpha": 10, "g": "1N"}, "mass length/time^2"),
+])
+def test_a_unit_of_a_compound_dimension_is_a_parameter_error(kw, words):
+    with pytest.raises(ParameterError, match="must be") as caught:
+        deathsphere.orbit(**kw)
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+
+
+def _column(text: str, name: str):
+    data = io.BytesIO(text.encode())
+    chunk = next(RequestReader(data, REQUEST_FIELDS, {}).chunks())
+    return chunk.values[name], chunk.invalid
+
+
+def test_cells_with_units_read_as_the_options_read_them():
+    speed, invalid = _column("theta,speed\n90,40km/h\n90,7\n90,40km\n", "speed")
+    assert speed[0] == deathsphere.api.arguments.number_from_text("speed", "40km/h") == 40 / 3.6
+    assert speed[1] == 7.0 and math.isnan(speed[2])
+    assert list(invalid[:2]) == ["", ""] and "km is a length" in invalid[2]
+
+
+def test_a_length_cell_in_feet_and_a_typographic_minus():
+    r, _ = _column("theta,r\n90,8ft\n", "r")
+    alpha, _ = _column("theta,alpha\n90,\u221210\n", "alpha")
+    assert r[0] == 2.4384 and alpha[0] == -10.0
+
+
+def test_a_body_cell_with_a_comma_is_echoed_without_it(tmp_path):
+    f = tmp_path / "in.csv"
+    f.write_text('theta,alpha,body,side\n90,10,"bi,ke",inside\n90,10,wheel,"in,side"\n')
+    t = next(iter(deathsphere.api.orbit_input(f)))
+    assert list(t["status"]) == ["invalid", "invalid"]
+    assert list(t["body"]) == ["bi;ke", "wheel"] and list(t["side"]) == ["inside", "in;side"]
+    # the reason still shows the text typed, recoverably (a comma as \x2c)
+    assert "(got 'bi\\x2cke')" in t["reason"][0]
