@@ -195,7 +195,7 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     if checked_flag("vertical", vertical):
         if alpha is not None or speed is not None or height is not None:
             raise ParameterError("a vertical loop takes theta and v_top (not alpha, speed or height)", "v_top")
-        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g)
+        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g, mu, max_g)
         return table if keep is None else table[np.isin(table["status"], keep)]
     if v_top is not None:
         raise ParameterError("v_top is for a vertical loop: pass vertical=True", "v_top")
@@ -334,22 +334,23 @@ def ride_summary(table: Table) -> Table:
 #: The columns of ``deathsphere ride --vertical``.
 LOOP_COLUMNS = ("input_row", "machine", "theta_deg", "r_m", "g_m_s2", "v_top_m_s", "status", "reason",
                 "v_top_min_m_s", "v_bottom_m_s", "omega_top_rad_s", "omega_bottom_rad_s", "com_loop_radius_m",
-                "load_top_g", "load_bottom_g", "head_clearance_m")
+                "load_top_g", "load_bottom_g", "head_clearance_m", "mu_available", "max_g", "mu_required",
+                "phi_worst_deg")
 
 
-def _loop(theta, v_top, m: Machine, r, g) -> Table:
-    """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M23)."""
+def _loop(theta, v_top, m: Machine, r, g, mu=INF, max_g=INF) -> Table:
+    """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M24)."""
     from deathsphere.physics.machine import vertical_loop
 
     if theta is None or v_top is None:
         raise ParameterError("a vertical loop needs theta (its cone angle) and v_top", "v_top", missing=True)
     checked = {name: checked_array(name, v) for name, v in
-               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g))}
+               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g), ("mu", mu), ("max_g", max_g))}
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     th = np.radians(flat["theta"])
     res = vertical_loop(th, flat["v_top"], flat["r"], flat["g"], m.mass, m.h, m.a, m.t, m.inertia[1],
-                        m.spin_inertia, m.head)
+                        m.spin_inertia, m.head, flat["mu"], flat["max_g"])
     res = {k: np.asarray(v).reshape(-1) for k, v in res.items()}
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),
             "theta_deg": flat["theta"], "r_m": flat["r"], "g_m_s2": flat["g"], "v_top_m_s": flat["v_top"],
@@ -357,5 +358,9 @@ def _loop(theta, v_top, m: Machine, r, g) -> Table:
             "v_top_min_m_s": res["v_top_min"], "v_bottom_m_s": res["v_bottom"], "omega_top_rad_s": res["omega_top"],
             "omega_bottom_rad_s": res["omega_bottom"], "com_loop_radius_m": res["r_g"],
             "load_top_g": res["load_top"], "load_bottom_g": res["load_bottom"],
-            "head_clearance_m": res["head_clearance"]}
+            "head_clearance_m": res["head_clearance"],
+            # inf ("no limit") is empty, as in every table
+            "mu_available": np.where(np.isinf(flat["mu"]), np.nan, flat["mu"]),
+            "max_g": np.where(np.isinf(flat["max_g"]), np.nan, flat["max_g"]),
+            "mu_required": res["mu_required"], "phi_worst_deg": np.degrees(res["phi_worst"])}
     return Table({c: cols[c] for c in LOOP_COLUMNS}, shape=shape)

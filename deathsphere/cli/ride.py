@@ -74,7 +74,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
-    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g)) if v is not None}
+    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))
+             if v is not None}
     if vertical:
         if not theta or not v_top or height or alpha or speed or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
@@ -92,8 +93,6 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed")
     where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
     how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
-    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))
-             if v is not None}
     table = api.ride(**where, **how, machine=chosen, stability=stability, only=None if summary else (only or None),
                      **setup)
     fmt = choose_format(fmt)

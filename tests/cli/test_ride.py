@@ -80,3 +80,16 @@ def test_ride_rows_echo_their_inputs_and_never_hold_inf(run):
     assert all(r["mu_available"] == "" and r["max_g"] == "" for r in rows) and "inf" not in text
     tilted = _rows(run("ride", "--theta", "60.1", "--alpha", "10.3", "--format", "csv").stdout)
     assert (tilted[0]["theta_deg"], tilted[0]["alpha_deg"]) == ("60.1", "10.3")
+
+
+def test_a_vertical_loop_obeys_mu_and_max_g(run):
+    """A loop that exceeds the load (here 7.8 g at the bottom) or slips
+    somewhere says so in its status, as a horizontal orbit does."""
+    args = ("ride", "--vertical", "--theta", "90", "--v-top", "30km/h", "--format", "csv")
+    (free,) = _rows(run(*args).stdout)
+    assert free["status"] == "ok" and float(free["load_bottom_g"]) > 7
+    (limited,) = _rows(run(*args, "--mu", "0.1", "--max-g", "2").stdout)
+    assert limited["status"] == "over_g" and "load_bottom_g" in limited["reason"]
+    need = float(free["mu_required"])
+    (slips,) = _rows(run(*args, "--mu", str(need * 0.99)).stdout)
+    assert slips["status"] == "slips" and float(slips["mu_available"]) < need
