@@ -132,7 +132,7 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
 
 
 def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None, height=None,
-         only=None, stability: bool = True, vertical: bool = False, v_top=None) -> Table:
+         only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -162,7 +162,11 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     height : float or array_like
         Height of the contact point above the globe's floor [m] instead of
         theta: theta = arccos(height / r - 1).
-    only : status or list of statuses to keep.
+    only : status or list of statuses to keep (not with ``summary``).
+    summary : bool
+        The rider's table instead (:func:`ride_summary`, ``ride
+        --summary``): one row per contact point asked for, over the speeds
+        (or tilts) tried there.
     stability : bool
         Fill the stability columns (see ``stability_method``).
     vertical, v_top : bool, float or array_like
@@ -192,7 +196,14 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     """
     m = as_machine(machine)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    summary = checked_flag("summary", summary)
+    if summary and keep is not None:
+        raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
+                             "only")
     if checked_flag("vertical", vertical):
+        if summary:
+            raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop",
+                                 "summary")
         if alpha is not None or speed is not None or height is not None:
             raise ParameterError("a vertical loop takes theta and v_top (not alpha, speed or height)", "v_top")
         table = _loop(theta, v_top, m, sphere_radius(r, diameter), g, mu, max_g)
@@ -240,9 +251,31 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
         table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
                           theta_deg=None if height is not None else flat["theta"].astype(float),
                           height=None if height is None else flat["height"].astype(float))
+    if summary:
+        how = "alpha" if alpha is not None else "speed"
+        return ride_summary(table, groups=_contact_groups(checked, shape, how),
+                            tried="tilts" if how == "alpha" else "speeds")
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
+
+
+def _contact_groups(checked: dict, shape: tuple, how: str) -> np.ndarray:
+    """Each request's contact point (0, 1, ...): the requests that differ
+    only along the axes of ``how`` (the speeds or tilts tried) share one,
+    whatever their values; any other input varying splits them."""
+    ndim = len(shape)
+    padded = {k: (1,) * (ndim - v.ndim) + v.shape for k, v in checked.items()}
+    tried = [d for d in range(ndim) if padded[how][d] > 1
+             and not any(p[d] > 1 for k, p in padded.items() if k != how)]
+    index = np.indices(shape).reshape(ndim, -1)
+    index[tried] = 0
+    key = np.ravel_multi_index(index, shape) if ndim else np.zeros(1, dtype=np.int64)
+    _, first, group = np.unique(key, return_index=True, return_inverse=True)
+    # numbered in the order the contact points were asked for
+    rank = np.empty(first.size, dtype=np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(first.size)
+    return rank[group.reshape(-1)]
 
 
 def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None, height=None) -> Table:
@@ -286,35 +319,76 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
     return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability, given=given)
 
 
-#: Columns of the rider's table (:func:`ride_summary`).
+#: Columns of the rider's table (:func:`ride_summary`): ``speeds_tried``
+#: and ``speeds_ok`` are ``tilts_tried`` and ``tilts_ok`` where tilts were
+#: tried (``alpha``); the counts of failing speeds by cause are appended.
 SUMMARY_COLUMNS = ("height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_min_km_h", "v_max_km_h",
                    "lean_min_deg", "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m",
-                   "limits")
+                   "limits", "mu_available", "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit")
+#: Why a speed fails, as counted in the rider's table: column -> (status,
+#: and the reason when one status has several causes).
+FAILURES = {"slips": ("slips", None), "over_g": ("over_g", None), "head_hits": ("no_fit", Reason.HEAD_HITS),
+            "no_contact": ("no_contact", None), "no_orbit": (("no_orbit", "no_fit"), None)}
 
 
-def ride_summary(table: Table) -> Table:
-    """The rider's question answered per height (one row per contact
-    height of a ``ride`` table given speeds): the speeds that are ``ok``
-    (feasible with the friction and g limit given), and over them the lean
-    from the vertical, the load, the friction needed and the least head
-    clearance; ``limits`` names what stops the other speeds."""
-    height = np.round(np.asarray(table["height_m"], dtype=float), 9)
-    rows = {c: [] for c in SUMMARY_COLUMNS}
-    for hv in np.unique(height):
-        sel = height == hv
-        status = np.asarray(table["status"])[sel]
+def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
+    """The rider's question answered per contact point (one row per contact
+    point asked for, in order): how many speeds (or tilts) were tried, which
+    are ``ok`` (feasible with the friction and the load limit given), and
+    over those the speed range, the lean from the vertical, the load, the
+    friction needed and the least head clearance; ``limits`` names the
+    statuses that stop the others, and ``slips``, ``over_g``,
+    ``head_hits``, ``no_contact`` and ``no_orbit`` (no tilt gives the speed,
+    or the wheel does not fit) count them by cause.
+
+    ``groups`` numbers each request's contact point (``ride(...,
+    summary=True)`` passes the grid's: the requests that differ only in the
+    speed or tilt tried); without it, a grid table (``table.shape`` of two
+    axes or more) groups along its last axis, and any other groups its rows
+    by their contact inputs as given (``theta_deg`` or ``height_m``, ``r_m``,
+    ``g_m_s2``, ``mu_available``, ``max_g``), never by a rounded value.
+    ``tried``: ``"speeds"`` or ``"tilts"`` (a table of tilts given), which
+    names the counts ``speeds_tried``/``speeds_ok`` or
+    ``tilts_tried``/``tilts_ok``.  A speed (or tilt) is counted once
+    under each cause among its rows when none of them is ok."""
+    if tried not in ("speeds", "tilts"):
+        raise ParameterError(f"tried must be 'speeds' or 'tilts' (got {tried!r})", "tried")
+    req = np.asarray(table["input_row"], dtype=np.int64).reshape(-1) - 1
+    if groups is not None:
+        row_group = np.asarray(groups, dtype=np.int64).reshape(-1)[req]
+    elif len(table.shape) >= 2:
+        row_group = req // table.shape[-1]
+    else:
+        keys = [np.asarray(table[c], dtype=float).reshape(-1) for c in
+                ("theta_deg", "height_m", "r_m", "g_m_s2", "mu_available", "max_g")]
+        as_rows = np.stack(keys, axis=1) if len(table) else np.zeros((0, len(keys)))
+        _, first, row_group = np.unique(np.nan_to_num(as_rows, nan=-np.inf), axis=0, return_index=True,
+                                        return_inverse=True)
+        row_group = np.argsort(np.argsort(first, kind="stable"), kind="stable")[row_group.reshape(-1)]
+    tried, ok_name = f"{tried}_tried", f"{tried}_ok"
+    names = [tried if c == "speeds_tried" else ok_name if c == "speeds_ok" else c for c in SUMMARY_COLUMNS]
+    rows = {c: [] for c in names}
+    status_all = np.asarray(table["status"]).reshape(-1)
+    reason_all = np.asarray(table["reason"]).reshape(-1)
+    head_text = REASON_TEXT[Reason.HEAD_HITS]
+    order = np.unique(row_group)
+    for gv in order:
+        sel = row_group == gv
+        status = status_all[sel]
         ok = status == "ok"
-        speeds = np.asarray(table["v_cm_km_h"])[sel]
-        req = np.asarray(table["input_row"])[sel]
-        rows["height_m"].append(float(hv))
-        rows["theta_deg"].append(float(np.asarray(table["theta_deg"])[sel][0]))
-        rows["speeds_tried"].append(int(np.unique(req).size))
-        rows["speeds_ok"].append(int(np.unique(req[ok]).size))
+        rq = req[sel]
+
+        def first(col):
+            return float(np.asarray(table[col], dtype=float).reshape(-1)[sel][0])
 
         def span(col, fn, mask=ok):
-            vals = np.asarray(table[col], dtype=float)[sel][mask]
+            vals = np.asarray(table[col], dtype=float).reshape(-1)[sel][mask]
             return float(fn(vals)) if vals.size else math.nan
 
+        rows["height_m"].append(first("height_m"))
+        rows["theta_deg"].append(first("theta_deg"))
+        rows[tried].append(int(np.unique(rq).size))
+        rows[ok_name].append(int(np.unique(rq[ok]).size))
         rows["v_min_km_h"].append(span("v_cm_km_h", np.min))
         rows["v_max_km_h"].append(span("v_cm_km_h", np.max))
         rows["lean_min_deg"].append(span("lean_deg", np.min))
@@ -325,9 +399,20 @@ def ride_summary(table: Table) -> Table:
         rows["head_clearance_min_m"].append(span("head_clearance_m", np.min))
         failed = sorted(set(status[~ok].tolist()))
         rows["limits"].append(" ".join(failed) if failed else "")
-        del speeds
-    kinds = {"limits": object, "speeds_tried": np.int64, "speeds_ok": np.int64}
-    cols = {c: np.array(v, dtype=kinds.get(c, float)) for c, v in rows.items()}
+        rows["mu_available"].append(first("mu_available"))
+        rows["max_g"].append(first("max_g"))
+        head = reason_all[sel] == head_text
+        for col, (st, _) in FAILURES.items():
+            hit = np.isin(status, st)
+            if col == "head_hits":
+                hit &= head
+            elif col == "no_orbit":
+                hit &= ~head
+            failing = ~np.isin(rq, rq[ok])
+            rows[col].append(int(np.unique(rq[hit & failing]).size))
+    counts = {tried, ok_name, *FAILURES}
+    cols = {c: np.array(v, dtype=np.int64 if c in counts else object if c == "limits" else float)
+            for c, v in rows.items()}
     return Table(cols)
 
 

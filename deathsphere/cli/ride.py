@@ -93,11 +93,10 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed")
     where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
     how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
-    table = api.ride(**where, **how, machine=chosen, stability=stability, only=None if summary else (only or None),
-                     **setup)
+    table = api.ride(**where, **how, machine=chosen, stability=stability and not summary, only=only or None,
+                     summary=summary, **setup)
     fmt = choose_format(fmt)
     if summary:
-        table = api.ride_summary(table)
         title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"
     else:
         title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"

@@ -93,3 +93,33 @@ def test_a_vertical_loop_obeys_mu_and_max_g(run):
     need = float(free["mu_required"])
     (slips,) = _rows(run(*args, "--mu", str(need * 0.99)).stdout)
     assert slips["status"] == "slips" and float(slips["mu_available"]) < need
+
+
+def test_the_riders_table_groups_by_the_contact_point_asked_for(run):
+    """Two contact points whose heights round alike (179.999 and 180 deg:
+    4.6e-10 m apart) are two rows, each of the speeds tried there."""
+    rows = _rows(run("ride", "--theta", "179.999", "--theta", "180", "--speed", "10:20:5", "--summary",
+                     "--format", "csv").stdout)
+    assert [r["theta_deg"] for r in rows] == ["179.999", "180.0"]
+    assert [r["speeds_tried"] for r in rows] == ["3", "3"]
+
+
+def test_the_riders_table_counts_why_speeds_fail(run):
+    rows = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed", "10:35:5km/h",
+                     "--mu", "1", "--max-g", "5", "--summary", "--format", "csv").stdout)
+    detail = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed",
+                       "10:35:5km/h", "--mu", "1", "--max-g", "5", "--no-stability", "--format", "csv").stdout)
+    for row, height in zip(rows, ("0.4", "2.4")):
+        mine = [d for d in detail if d["height_m"] == height]
+        fails = {c: sum(d["status"] == s for d in mine) for c, s in (("slips", "slips"), ("over_g", "over_g"),
+                                                                      ("no_contact", "no_contact"))}
+        fails["head_hits"] = sum("head" in d["reason"] for d in mine)
+        assert {c: int(row[c]) for c in fails} == fails
+        assert int(row["speeds_ok"]) + sum(fails.values()) + int(row["no_orbit"]) == int(row["speeds_tried"]) == 6
+        assert float(row["mu_available"]) == 1 and float(row["max_g"]) == 5
+    assert int(rows[1]["head_hits"]) >= 1 and int(rows[0]["slips"]) >= 1
+
+
+def test_the_riders_table_of_tilts_names_its_counts_for_tilts(run):
+    (row,) = _rows(run("ride", "--theta", "90", "--alpha", "5:25:5", "--summary", "--format", "csv").stdout)
+    assert row["tilts_tried"] == "5" and "speeds_tried" not in row
