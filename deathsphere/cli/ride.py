@@ -18,6 +18,16 @@ from deathsphere.cli.options import (
     stability_option,
 )
 
+
+def _view(name: str, **kwargs):
+    """A terminal view of render.ride_views, imported only when a table is drawn."""
+    def view(table, total_rows=None):
+        from deathsphere.render import ride_views
+
+        return getattr(ride_views, name)(table, total_rows=total_rows, **kwargs)
+    return view
+
+
 def _axis(name: str, values):
     """The values of a repeated option (values and start:stop:step ranges,
     with unit suffixes), as one flat array."""
@@ -45,8 +55,8 @@ def _axis(name: str, values):
                    "speed of the centre of mass at the top.")
 @param_option("v_top", multiple=True, help="Vertical loop: speed of the centre of mass at the top, >= 0.")
 @click.option("--summary", is_flag=True, default=False,
-              help="The rider's table: per height (or theta), the speeds that are ok with lean, load, "
-                   "friction and head clearance.")
+              help="The rider's table: per contact point (height or theta), how many speeds are ok, their "
+                   "range, lean, load, friction needed and least head clearance, and why the others fail.")
 @only_option(api.STATUSES)
 @stability_option()
 @output_options()
@@ -66,7 +76,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     Examples:
       deathsphere ride --theta 90 --speed 40km/h --diameter 16ft
       deathsphere ride --height 1.2m --alpha 10:30:5 --machine benchmark-bicycle
-      deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 30:70:5km/h \\
+      deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
@@ -81,7 +91,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
         table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
                          machine=chosen, only=only or None, **setup)
-        emit([table], choose_format(fmt), f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)")
+        title = f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)"
+        emit([table], choose_format(fmt), title, view=_view("loop_view", title=title,
+                                                          speed_unit=api.rides.typed_speed_unit(v_top)))
         return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
@@ -100,7 +112,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"
     else:
         title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
-    emit([table], fmt, title)
+    emit([table], fmt, title, view=_view("ride_view", title=title))
 
 
 @cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")
@@ -115,4 +127,5 @@ def machines_command(fmt):
       deathsphere machines
       deathsphere machines --format csv
     """
-    emit([api.machines_table()], choose_format(fmt), "Preset machines (docs/machine.md sec. 7)")
+    title = "Preset machines (docs/machine.md sec. 7)"
+    emit([api.machines_table()], choose_format(fmt), title, view=_view("machines_view", title=title))
