@@ -18,7 +18,7 @@ from deathsphere.api.arguments import (
     checked_statuses,
     sphere_radius,
 )
-from deathsphere.api.machines import Machine, as_machine
+from deathsphere.api.machines import DEFAULT_MACHINE, Machine, as_machine
 from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
@@ -73,7 +73,7 @@ def _evaluate(theta, alpha, r, g, mu, max_g, m: Machine) -> dict:
 
 
 def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability: bool, shape=None,
-           given: dict | None = None) -> Table:
+           given: dict | None = None, axes=None) -> Table:
     """The rows of ``ride``.  ``given`` holds the requested inputs per row
     (``theta_deg``, ``alpha_deg``, ``v_cm_m_s``, NaN where not given), echoed
     as typed rather than as recomputed (docs/contract.md)."""
@@ -128,11 +128,13 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
             cols["growth_rate_1_s"][idx] = st["growth_rate"]
             cols["freq_slow_rad_s"][idx] = st["freq_slow"]
             cols["freq_fast_rad_s"][idx] = st["freq_fast"]
-    return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape)
+    return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape, axes=axes)
 
 
-def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None, height=None,
-         only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False) -> Table:
+def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None,
+         height=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
+         mass=None, com_height=None, wheel_radius=None, tyre_radius=None, roll_inertia=None, pitch_inertia=None,
+         yaw_inertia=None, spin_inertia=None, head_height=None) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -151,7 +153,12 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
         Give exactly one of ``alpha`` and ``speed``.
     machine : Machine or str
         A :class:`deathsphere.Machine` or a preset's name
-        (``deathsphere.api.machines.PRESETS``).
+        (``deathsphere.api.machines.PRESETS``; ``deathsphere machines``),
+        ``"stunt125"`` by default, as the command's.
+    mass, com_height, wheel_radius, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height
+        The machine's overrides, named as the command line's options
+        (``--mass`` ...), numbers in SI or text with a unit (``"16in"``):
+        the machine with these replaced (:meth:`Machine.with_overrides`).
     r, diameter : sphere radius or diameter [m] (one of them).
     g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
         (|contact force| / (m g), what the rider feels) allowed.
@@ -177,8 +184,11 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     Returns
     -------
     Table
-        Columns :data:`RIDE_COLUMNS`; with ``alpha`` its shape is the
-        broadcast shape, with ``speed`` it is flat.
+        Columns :data:`RIDE_COLUMNS`, or :data:`SUMMARY_COLUMNS` with
+        ``summary``.  Its shape is the broadcast shape (a grid keeps its
+        axes: ``to_xarray()`` gives height x speed), except where one speed
+        has several tilts: then it is flat, one row per tilt (as
+        :func:`deathsphere.orbit`'s); one speed asked for gives a flat row.
 
     Raises
     ------
@@ -193,8 +203,13 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     >>> t = deathsphere.ride(90, 15, machine="stunt125", diameter="16ft")
     >>> str(t["status"]), round(float(t["v_cm_km_h"]), 1), round(float(t["load_g"]), 2)
     ('ok', 29.9, 4.34)
+    >>> row = deathsphere.ride(90, speed="30km/h", diameter="16ft", mass=150)[0]
+    >>> row["machine"], row["status"], round(row["lean_deg"], 1)
+    ('stunt125 (modified)', 'ok', 75.0)
     """
-    m = as_machine(machine)
+    m = as_machine(machine).with_overrides(
+        mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,
+        pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     summary = checked_flag("summary", summary)
     if summary and keep is not None:
@@ -246,11 +261,14 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
             given["theta_deg"] = flat["theta"].astype(float)
         else:
             given["height_m"] = flat["height"].astype(float)
-        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given)
+        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given,
+                       axes=_axes(checked, shape))
     else:
         table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
                           theta_deg=None if height is not None else flat["theta"].astype(float),
                           height=None if height is None else flat["height"].astype(float))
+        if len(table) == n and shape:   # one row per request: a grid keeps its shape (one request stays a row)
+            table = Table(table.columns, shape=shape, axes=_axes(checked, shape))
     if summary:
         how = "alpha" if alpha is not None else "speed"
         return ride_summary(table, groups=_contact_groups(checked, shape, how),
@@ -258,6 +276,22 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
+
+
+#: The input -> the column that echoes it (a grid's axes are named after them).
+_ECHO = {"theta": "theta_deg", "height": "height_m", "alpha": "alpha_deg", "speed": "v_cm_m_s", "r": "r_m",
+         "g": "g_m_s2", "mu": "mu_available", "max_g": "max_g"}
+
+
+def _axes(checked: dict, shape: tuple) -> tuple:
+    """Each axis's input column: the one input that varies along it (None
+    where none or several do)."""
+    ndim = len(shape)
+    out = []
+    for d in range(ndim):
+        along = [k for k, v in checked.items() if ((1,) * (ndim - v.ndim) + v.shape)[d] > 1]
+        out.append(_ECHO[along[0]] if len(along) == 1 else None)
+    return tuple(out)
 
 
 def _contact_groups(checked: dict, shape: tuple, how: str) -> np.ndarray:
