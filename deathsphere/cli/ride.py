@@ -37,6 +37,17 @@ def _axis(name: str, values):
     return axis.take(np.arange(len(axis)))
 
 
+def _grid(where, how, mus):
+    """The grid of a ride: the contact points (outer), each value of --mu,
+    and the speeds, tilts or top speeds tried (inner); one --mu value
+    leaves the grid two-dimensional."""
+    if mus is None:
+        return where[:, None], how[None, :], {}
+    if mus.size == 1:
+        return where[:, None], how[None, :], {"mu": float(mus[0])}
+    return where[:, None, None], how[None, None, :], {"mu": mus[None, :, None]}
+
+
 @cli.command("ride", short_help="A motorcycle and rider on horizontal orbits: lean, speed, load, clearance.")
 @param_option("theta", multiple=True)
 @param_option("height", multiple=True)
@@ -47,7 +58,8 @@ def _axis(name: str, values):
 @param_option("r")
 @param_option("diameter")
 @param_option("g")
-@param_option("mu")
+@param_option("mu", multiple=True, help="Friction coefficient available (e.g. 0.8:1:0.1: each value a set of "
+              "rows; the rider's table a row per height and value).")
 @param_option("max_g", help="Largest load_g (|contact force| / (m g), what the rider feels); an orbit over "
               "it has status over_g.")
 @click.option("--vertical", is_flag=True, default=False,
@@ -79,18 +91,19 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
+      deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
     """
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
-    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))
-             if v is not None}
+    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("max_g", max_g)) if v is not None}
+    mus = _axis("mu", mu) if mu else None
     if vertical:
         if not theta or not v_top or height or alpha or speed or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
-        table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
-                         machine=chosen, only=only or None, **setup)
+        where, how, friction = _grid(_axis("theta", theta), _axis("v_top", v_top), mus)
+        table = api.ride(where, vertical=True, v_top=how, machine=chosen, only=only or None, **friction, **setup)
         title = f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)"
         emit([table], choose_format(fmt), title, view=_view("loop_view", title=title,
                                                           speed_unit=api.rides.typed_speed_unit(v_top)))
@@ -103,10 +116,10 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed, not both")
     if not alpha and not speed:
         raise click.UsageError("give --alpha or --speed")
-    where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
-    how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
-    table = api.ride(**where, **how, machine=chosen, stability=stability and not summary, only=only or None,
-                     summary=summary, **setup)
+    at, by = ("theta", theta) if theta else ("height", height), ("alpha", alpha) if alpha else ("speed", speed)
+    where, how, friction = _grid(_axis(*at), _axis(*by), mus)
+    table = api.ride(**{at[0]: where, by[0]: how}, machine=chosen, stability=stability and not summary,
+                     only=only or None, summary=summary, **friction, **setup)
     fmt = choose_format(fmt)
     if summary:
         title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"

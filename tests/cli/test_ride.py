@@ -123,3 +123,23 @@ def test_the_riders_table_counts_why_speeds_fail(run):
 def test_the_riders_table_of_tilts_names_its_counts_for_tilts(run):
     (row,) = _rows(run("ride", "--theta", "90", "--alpha", "5:25:5", "--summary", "--format", "csv").stdout)
     assert row["tilts_tried"] == "5" and "speeds_tried" not in row
+
+
+def test_mu_takes_a_range_like_the_other_axes(run):
+    """A crew asks "mu 0.8 to 1": each value its rows (contact point outer,
+    then mu, then speed), each judged against its own mu."""
+    rows = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "1.2", "--speed", "10:20:5km/h",
+                     "--mu", "0.6:1:0.2", "--no-stability", "--format", "csv").stdout)
+    assert [r["mu_available"] for r in rows] == ["0.6"] * 3 + ["0.8"] * 3 + ["1.0"] * 3 + ["0.6"] * 3 + \
+        ["0.8"] * 3 + ["1.0"] * 3
+    assert [r["input_row"] for r in rows] == [str(i) for i in range(1, 19)]
+    for r in rows:
+        assert (r["status"] == "slips") == (float(r["mu_required"]) > float(r["mu_available"]))
+    assert {r["status"] for r in rows} >= {"ok", "slips"}
+    table = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--speed", "10:20:5km/h", "--mu",
+                      "0.6:1:0.2", "--summary", "--format", "csv").stdout)
+    assert [r["mu_available"] for r in table] == ["0.6", "0.8", "1.0"]
+    assert [int(r["speeds_ok"]) for r in table] == sorted(int(r["speeds_ok"]) for r in table)
+    loops = _rows(run("ride", "--vertical", "--theta", "60", "--v-top", "30km/h", "--mu", "0.5", "--mu", "0.7",
+                      "--machine", "benchmark-bicycle", "--format", "csv").stdout)
+    assert [(r["mu_available"], r["status"]) for r in loops] == [("0.5", "slips"), ("0.7", "ok")]
