@@ -215,3 +215,13 @@ def test_the_functions_api_md_names_exist_where_it_says():
     assert missing == []
     commands = names - {"horizontal_orbit", "Setup", "docs_topics", "doc_text"}
     assert sorted(n for n in commands if not hasattr(deathsphere.api, n)) == []
+
+
+def test_the_riders_table_of_one_request_and_of_paired_arrays():
+    one = deathsphere.ride(90, speed=10, summary=True)
+    assert len(one) == 1 and one[0]["speeds_tried"] == 1
+    # theta and speed paired along one axis: each request is its own contact point
+    paired = deathsphere.ride([60, 90], speed=[8, 10], summary=True)
+    assert paired["theta_deg"].tolist() == [60.0, 90.0] and paired["speeds_tried"].tolist() == [1, 1]
+    grid = deathsphere.ride([[60], [90]], [5, 10, 15], summary=True)
+    assert grid["tilts_tried"].tolist() == [3, 3]

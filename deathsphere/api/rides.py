@@ -212,6 +212,7 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     summary = checked_flag("summary", summary)
+    stability = stability and not summary       # the rider's table has no stability column
     if summary and keep is not None:
         raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
                              "only")
@@ -299,12 +300,14 @@ def _contact_groups(checked: dict, shape: tuple, how: str) -> np.ndarray:
     only along the axes of ``how`` (the speeds or tilts tried) share one,
     whatever their values; any other input varying splits them."""
     ndim = len(shape)
+    if ndim == 0:
+        return np.zeros(1, dtype=np.int64)
     padded = {k: (1,) * (ndim - v.ndim) + v.shape for k, v in checked.items()}
     tried = [d for d in range(ndim) if padded[how][d] > 1
              and not any(p[d] > 1 for k, p in padded.items() if k != how)]
     index = np.indices(shape).reshape(ndim, -1)
     index[tried] = 0
-    key = np.ravel_multi_index(index, shape) if ndim else np.zeros(1, dtype=np.int64)
+    key = np.ravel_multi_index(index, shape)
     _, first, group = np.unique(key, return_index=True, return_inverse=True)
     # numbered in the order the contact points were asked for
     rank = np.empty(first.size, dtype=np.int64)
