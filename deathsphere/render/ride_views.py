@@ -73,9 +73,21 @@ def _limit(value) -> str:
     return "∞" if is_undefined(value) else format_number(value)
 
 
-def _setup_line(get: dict) -> str:
+def _setup_line(get: dict, mu: bool = True) -> str:
+    friction = f"μ available {_limit(get['mu_available'])}, " if mu else ""
     return (f"r = {format_number(get['r_m'])} m, g = {format_number(get['g_m_s2'], 6)} m/s², "
-            f"μ available {_limit(get['mu_available'])}, max load {_limit(get['max_g'])} g")
+            f"{friction}max load {_limit(get['max_g'])} g")
+
+
+def _mu_varies(table: Table) -> bool:
+    """Several values of μ among the rows (``--mu 0.8:1:0.1``): a column, not a line under the table."""
+    return len({_limit(v) for v in table.columns["mu_available"].tolist()}) > 1
+
+
+def _with_mu_column(columns: list, head: Table, after: str) -> list:
+    at = next(i for i, c in enumerate(columns) if c.key == after) + 1
+    return [*columns[:at], Column("mu_available", "μ", [_limit(v) for v in head.columns["mu_available"].tolist()]),
+            *columns[at:]]
 
 
 def _stability_rows(get: dict) -> dict:
@@ -114,9 +126,11 @@ def many_orbits_view(table: Table, title: str | None = None, total_rows: int | N
                if not (col == "stability" and not any(head.columns[col].tolist()))
                and not (col == "growth_rate_1_s" and not any(head.columns["stability"].tolist()))]
     footer = [row_cap_line(len(head), total)] if total > len(head) else []
-    first = row_record(head)
+    first, several = row_record(head), _mu_varies(head)
+    if several:
+        columns = _with_mu_column(columns, head, "theta_deg")
     return FitTable(columns, MANY_DROP_ORDER, title=title, footer=footer,
-                    notes=[f"[dim]{first['machine']}: {_setup_line(first)}[/dim]", *status_legend(head)])
+                    notes=[f"[dim]{first['machine']}: {_setup_line(first, not several)}[/dim]", *status_legend(head)])
 
 
 def _span(lo, hi, digits: int = 3) -> str:
@@ -241,9 +255,11 @@ def loop_view(table: Table, total_rows: int | None = None, speed_unit: tuple[str
     # the head clearance is a safety column: it stays longest
     drop = (("v_bottom_m_s", f"v_bottom_m_s:{unit}"), ("v_top_min_m_s", f"v_top_min_m_s:{unit}"), "head_clearance_m")
     footer = [row_cap_line(len(head), total)] if total > len(head) else []
-    first = row_record(head)
+    first, several = row_record(head), _mu_varies(head)
+    if several:
+        columns = _with_mu_column(columns, head, "theta_deg")
     return FitTable(columns, drop, title=title, footer=footer,
-                    notes=[f"[dim]{first['machine']}: {_setup_line(first)}[/dim]", *status_legend(head)])
+                    notes=[f"[dim]{first['machine']}: {_setup_line(first, not several)}[/dim]", *status_legend(head)])
 
 
 def ride_view(table: Table, total_rows: int | None = None, title: str | None = None) -> FitTable:

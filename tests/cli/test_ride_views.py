@@ -72,3 +72,12 @@ def test_a_loop_shows_its_bottom_load_and_speeds_in_the_unit_typed(run):
     many = _screen(run, LOOPS, 80)
     assert "mph" in many and "m/s" in many
     assert re.search(r"\s20\s", next(ln for ln in many.splitlines() if ln.split()[:1] == ["1"]))
+
+
+def test_several_values_of_mu_are_a_column_not_one_line(run):
+    text = _screen(run, (*MANY[:-4], "--mu", "0.6", "--mu", "1"), 80)
+    assert "μ available" not in text
+    rows = [ln.split() for ln in text.splitlines() if ln.split()[:1] in (["1"], ["7"])]   # six speeds a mu
+    assert [r[3] for r in rows] == ["0.6", "1"]      # #, height, θ, μ
+    loops = _screen(run, (*LOOPS, "--mu", "0.5", "--mu", "0.7"), 80)
+    assert "μ available" not in loops and "slips" in loops
