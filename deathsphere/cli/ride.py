@@ -91,7 +91,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
-      deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h --mu 0.8:1:0.1 --summary
+      deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h \\
+          --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
     """
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
