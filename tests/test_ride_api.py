@@ -225,3 +225,15 @@ def test_the_riders_table_of_one_request_and_of_paired_arrays():
     assert paired["theta_deg"].tolist() == [60.0, 90.0] and paired["speeds_tried"].tolist() == [1, 1]
     grid = deathsphere.ride([[60], [90]], [5, 10, 15], summary=True)
     assert grid["tilts_tried"].tolist() == [3, 3]
+
+
+def test_ride_summary_of_a_table_groups_by_the_inputs_as_given():
+    """Given a table only: a grid groups along its last axis, a flat table
+    by its contact inputs exactly as given (never a rounded height)."""
+    t = deathsphere.ride([[179.999], [180]], speed=[10, 15, 20], stability=False)
+    flat = t[np.arange(len(t))]
+    for table in (t, flat):
+        s = deathsphere.ride_summary(table)
+        assert s["theta_deg"].tolist() == [179.999, 180.0] and s["speeds_tried"].tolist() == [3, 3]
+    with pytest.raises(ParameterError, match="tried"):
+        deathsphere.ride_summary(t, tried="laps")
