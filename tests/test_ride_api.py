@@ -83,7 +83,7 @@ def test_ride_reproduces_orbit_for_the_papers_wheel():
 def test_every_tilt_for_a_speed_and_the_rows_verify():
     t = deathsphere.ride(height=[[0.3], [1.2], [2.4]], speed=["25km/h", "40km/h"], machine="stunt125", diameter="16ft",
                          stability=False)
-    assert t.shape == (len(t),)
+    assert t.shape == (3, 2) and len(t) == 6      # one tilt per speed here: the grid keeps its axes
     assert set(t["input_row"].tolist()) == set(range(1, 7))
     found = np.isfinite(t["alpha_deg"])
     np.testing.assert_allclose(t["v_cm_m_s"][found], np.array([25 / 3.6, 40 / 3.6])[
@@ -164,3 +164,76 @@ def test_a_height_is_echoed_as_typed(target):
     rows = t["input_row"].ravel()
     assert set(rows.tolist()) == {1, 2}
     assert t["height_m"].ravel().tolist() == np.array([0.6, 1.2])[rows - 1].tolist()
+
+
+def test_the_api_speaks_the_commands_language():
+    """The command's default machine, its overrides by the options' names,
+    units as text, and the rider's table."""
+    t = deathsphere.ride(90, speed="30km/h", diameter="16ft")
+    assert t[0]["machine"] == "stunt125" and t[0]["status"] == "ok"
+    heavy = deathsphere.ride(90, speed="30km/h", diameter="16ft", mass=150, com_height=0.7, wheel_radius="12in",
+                             tyre_radius=0.04, head_height=1.6, roll_inertia=20, pitch_inertia=35, yaw_inertia=18,
+                             spin_inertia=0.7)
+    same = deathsphere.ride(90, speed="30km/h", diameter="16ft", machine=Machine(
+        mass=150, h=0.7, a=0.3048, t=0.04, inertia=(20, 35, 18), spin_inertia=0.7, head=1.6))
+    assert heavy[0]["lean_deg"] == same[0]["lean_deg"] != t[0]["lean_deg"]
+    with pytest.raises(ParameterError, match="mass"):
+        deathsphere.ride(90, speed="30km/h", mass=0)
+    summary = deathsphere.ride(height=[[0.4], [2.4]], speed=["10km/h", "20km/h", "30km/h"], diameter="16ft", mu=1,
+                               max_g=5, summary=True)
+    assert summary["height_m"].tolist() == [0.4, 2.4] and summary["speeds_tried"].tolist() == [3, 3]
+
+
+def test_a_speed_grid_keeps_its_axes_in_xarray_with_units():
+    pytest.importorskip("xarray")
+    t = deathsphere.ride(height=[[0.8], [1.6], [2.4]], speed=["15km/h", "20km/h", "25km/h", "30km/h"],
+                         diameter="16ft", stability=False)
+    ds = t.to_xarray()
+    assert ds["load_g"].dims == ("height_m", "v_cm_m_s") and ds.sizes == {"height_m": 3, "v_cm_m_s": 4}
+    np.testing.assert_allclose(ds["height_m"].values, [0.8, 1.6, 2.4])
+    np.testing.assert_allclose(ds["v_cm_km_h"].sel(height_m=1.6).values, [15, 20, 25, 30])
+    assert (ds["load_g"].attrs["units"], ds["height_m"].attrs["units"], ds["v_cm_km_h"].attrs["units"],
+            ds["mu_required"].attrs["units"], ds["omega_rad_s"].attrs["units"]) == ("g", "m", "km/h", "1", "rad/s")
+    assert "units" not in ds["status"].attrs
+    by_theta = deathsphere.ride([60, 90], [[5], [15]], diameter="16ft", stability=False).to_xarray()
+    assert by_theta["v_cm_m_s"].dims == ("alpha_deg", "theta_deg")
+
+
+def test_the_functions_api_md_names_exist_where_it_says():
+    """Every function of docs/api.md's table of commands is in deathsphere
+    (and in deathsphere.api), as the page says."""
+    import re
+    from pathlib import Path
+
+    text = (Path(deathsphere.__file__).parent / "docs" / "api.md").read_text(encoding="utf-8")
+    table = text[text.index("## Commands and functions"):text.index("## Results")]
+    names = set(re.findall(r"`([A-Za-z_][A-Za-z0-9_]*)\(", table))
+    assert {"ride", "ride_summary", "Machine", "machines_table", "machine_file", "limits_input",
+            "stability_input"} <= names
+    # horizontal_orbit is named as what Setup.orbit replaced
+    missing = sorted(n for n in names - {"horizontal_orbit"} if not hasattr(deathsphere, n))
+    assert missing == []
+    commands = names - {"horizontal_orbit", "Setup", "docs_topics", "doc_text"}
+    assert sorted(n for n in commands if not hasattr(deathsphere.api, n)) == []
+
+
+def test_the_riders_table_of_one_request_and_of_paired_arrays():
+    one = deathsphere.ride(90, speed=10, summary=True)
+    assert len(one) == 1 and one[0]["speeds_tried"] == 1
+    # theta and speed paired along one axis: each request is its own contact point
+    paired = deathsphere.ride([60, 90], speed=[8, 10], summary=True)
+    assert paired["theta_deg"].tolist() == [60.0, 90.0] and paired["speeds_tried"].tolist() == [1, 1]
+    grid = deathsphere.ride([[60], [90]], [5, 10, 15], summary=True)
+    assert grid["tilts_tried"].tolist() == [3, 3]
+
+
+def test_ride_summary_of_a_table_groups_by_the_inputs_as_given():
+    """Given a table only: a grid groups along its last axis, a flat table
+    by its contact inputs exactly as given (never a rounded height)."""
+    t = deathsphere.ride([[179.999], [180]], speed=[10, 15, 20], stability=False)
+    flat = t[np.arange(len(t))]
+    for table in (t, flat):
+        s = deathsphere.ride_summary(table)
+        assert s["theta_deg"].tolist() == [179.999, 180.0] and s["speeds_tried"].tolist() == [3, 3]
+    with pytest.raises(ParameterError, match="tried"):
+        deathsphere.ride_summary(t, tried="laps")

@@ -21,7 +21,7 @@ from deathsphere.api.arguments import (
     refuse_large_grid,
     sphere_radius,
 )
-from deathsphere.api.machines import Machine, as_machine
+from deathsphere.api.machines import DEFAULT_MACHINE, Machine, as_machine
 from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
@@ -76,7 +76,7 @@ def _evaluate(theta, alpha, r, g, mu, max_g, m: Machine) -> dict:
 
 
 def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability: bool, shape=None,
-           given: dict | None = None) -> Table:
+           given: dict | None = None, axes=None) -> Table:
     """The rows of ``ride``.  ``given`` holds the requested inputs per row
     (``theta_deg``, ``alpha_deg``, ``v_cm_m_s``, NaN where not given), echoed
     as typed rather than as recomputed (docs/contract.md)."""
@@ -136,11 +136,13 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
             cols["growth_rate_1_s"][idx] = st["growth_rate"]
             cols["freq_slow_rad_s"][idx] = st["freq_slow"]
             cols["freq_fast_rad_s"][idx] = st["freq_fast"]
-    return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape)
+    return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape, axes=axes)
 
 
-def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None, height=None,
-         only=None, stability: bool = True, vertical: bool = False, v_top=None) -> Table:
+def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None,
+         height=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
+         mass=None, com_height=None, wheel_radius=None, tyre_radius=None, roll_inertia=None, pitch_inertia=None,
+         yaw_inertia=None, spin_inertia=None, head_height=None) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -159,7 +161,12 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
         Give exactly one of ``alpha`` and ``speed``.
     machine : Machine or str
         A :class:`deathsphere.Machine` or a preset's name
-        (``deathsphere.api.machines.PRESETS``).
+        (``deathsphere.api.machines.PRESETS``; ``deathsphere machines``),
+        ``"stunt125"`` by default, as the command's.
+    mass, com_height, wheel_radius, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height
+        The machine's overrides, named as the command line's options
+        (``--mass`` ...), numbers in SI or text with a unit (``"16in"``):
+        the machine with these replaced (:meth:`Machine.with_overrides`).
     r, diameter : sphere radius or diameter [m] (one of them).
     g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
         (|contact force| / (m g), what the rider feels) allowed.
@@ -170,7 +177,11 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     height : float or array_like
         Height of the contact point above the globe's floor [m] instead of
         theta: theta = arccos(height / r - 1).
-    only : status or list of statuses to keep.
+    only : status or list of statuses to keep (not with ``summary``).
+    summary : bool
+        The rider's table instead (:func:`ride_summary`, ``ride
+        --summary``): one row per contact point asked for, over the speeds
+        (or tilts) tried there.
     stability : bool
         Fill the stability columns (see ``stability_method``).
     vertical, v_top : bool, float or array_like
@@ -181,8 +192,11 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     Returns
     -------
     Table
-        Columns :data:`RIDE_COLUMNS`; with ``alpha`` its shape is the
-        broadcast shape, with ``speed`` it is flat.
+        Columns :data:`RIDE_COLUMNS`, or :data:`SUMMARY_COLUMNS` with
+        ``summary``.  Its shape is the broadcast shape (a grid keeps its
+        axes: ``to_xarray()`` gives height x speed), except where one speed
+        has several tilts: then it is flat, one row per tilt (as
+        :func:`deathsphere.orbit`'s); one speed asked for gives a flat row.
 
     Raises
     ------
@@ -197,13 +211,26 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
     >>> t = deathsphere.ride(90, 15, machine="stunt125", diameter="16ft")
     >>> str(t["status"]), round(float(t["v_cm_km_h"]), 1), round(float(t["load_g"]), 2)
     ('ok', 29.9, 4.34)
+    >>> row = deathsphere.ride(90, speed="30km/h", diameter="16ft", mass=150)[0]
+    >>> row["machine"], row["status"], round(row["lean_deg"], 1)
+    ('stunt125 (modified)', 'ok', 75.0)
     """
-    m = as_machine(machine)
+    m = as_machine(machine).with_overrides(
+        mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,
+        pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    summary = checked_flag("summary", summary)
+    stability = stability and not summary       # the rider's table has no stability column
+    if summary and keep is not None:
+        raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
+                             "only")
     if checked_flag("vertical", vertical):
+        if summary:
+            raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop",
+                                 "summary")
         if alpha is not None or speed is not None or height is not None:
             raise ParameterError("a vertical loop takes theta and v_top (not alpha, speed or height)", "v_top")
-        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g)
+        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g, mu, max_g)
         return table if keep is None else table[np.isin(table["status"], keep)]
     if v_top is not None:
         raise ParameterError("v_top is for a vertical loop: pass vertical=True", "v_top")
@@ -245,14 +272,57 @@ def ride(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=
             given["theta_deg"] = flat["theta"].astype(float)
         else:
             given["height_m"] = flat["height"].astype(float)
-        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given)
+        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given,
+                       axes=_axes(checked, shape))
     else:
         table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
                           theta_deg=None if height is not None else flat["theta"].astype(float),
                           height=None if height is None else flat["height"].astype(float))
+        if len(table) == n and shape:   # one row per request: a grid keeps its shape (one request stays a row)
+            table = Table(table.columns, shape=shape, axes=_axes(checked, shape))
+    if summary:
+        how = "alpha" if alpha is not None else "speed"
+        return ride_summary(table, groups=_contact_groups(checked, shape, how),
+                            tried="tilts" if how == "alpha" else "speeds")
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
+
+
+#: The input -> the column that echoes it (a grid's axes are named after them).
+_ECHO = {"theta": "theta_deg", "height": "height_m", "alpha": "alpha_deg", "speed": "v_cm_m_s", "r": "r_m",
+         "g": "g_m_s2", "mu": "mu_available", "max_g": "max_g"}
+
+
+def _axes(checked: dict, shape: tuple) -> tuple:
+    """Each axis's input column: the one input that varies along it (None
+    where none or several do)."""
+    ndim = len(shape)
+    out = []
+    for d in range(ndim):
+        along = [k for k, v in checked.items() if ((1,) * (ndim - v.ndim) + v.shape)[d] > 1]
+        out.append(_ECHO[along[0]] if len(along) == 1 else None)
+    return tuple(out)
+
+
+def _contact_groups(checked: dict, shape: tuple, how: str) -> np.ndarray:
+    """Each request's contact point (0, 1, ...): the requests that differ
+    only along the axes of ``how`` (the speeds or tilts tried) share one,
+    whatever their values; any other input varying splits them."""
+    ndim = len(shape)
+    if ndim == 0:
+        return np.zeros(1, dtype=np.int64)
+    padded = {k: (1,) * (ndim - v.ndim) + v.shape for k, v in checked.items()}
+    tried = [d for d in range(ndim) if padded[how][d] > 1
+             and not any(p[d] > 1 for k, p in padded.items() if k != how)]
+    index = np.indices(shape).reshape(ndim, -1)
+    index[tried] = 0
+    key = np.ravel_multi_index(index, shape)
+    _, first, group = np.unique(key, return_index=True, return_inverse=True)
+    # numbered in the order the contact points were asked for
+    rank = np.empty(first.size, dtype=np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(first.size)
+    return rank[group.reshape(-1)]
 
 
 def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None, height=None) -> Table:
@@ -296,35 +366,76 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
     return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability, given=given)
 
 
-#: Columns of the rider's table (:func:`ride_summary`).
+#: Columns of the rider's table (:func:`ride_summary`): ``speeds_tried``
+#: and ``speeds_ok`` are ``tilts_tried`` and ``tilts_ok`` where tilts were
+#: tried (``alpha``); the counts of failing speeds by cause are appended.
 SUMMARY_COLUMNS = ("height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_min_km_h", "v_max_km_h",
                    "lean_min_deg", "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m",
-                   "limits")
+                   "limits", "mu_available", "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit")
+#: Why a speed fails, as counted in the rider's table: column -> (status,
+#: and the reason when one status has several causes).
+FAILURES = {"slips": ("slips", None), "over_g": ("over_g", None), "head_hits": ("no_fit", Reason.HEAD_HITS),
+            "no_contact": ("no_contact", None), "no_orbit": (("no_orbit", "no_fit"), None)}
 
 
-def ride_summary(table: Table) -> Table:
-    """The rider's question answered per height (one row per contact
-    height of a ``ride`` table given speeds): the speeds that are ``ok``
-    (feasible with the friction and g limit given), and over them the lean
-    from the vertical, the load, the friction needed and the least head
-    clearance; ``limits`` names what stops the other speeds."""
-    height = np.round(np.asarray(table["height_m"], dtype=float), 9)
-    rows = {c: [] for c in SUMMARY_COLUMNS}
-    for hv in np.unique(height):
-        sel = height == hv
-        status = np.asarray(table["status"])[sel]
+def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
+    """The rider's question answered per contact point (one row per contact
+    point asked for, in order): how many speeds (or tilts) were tried, which
+    are ``ok`` (feasible with the friction and the load limit given), and
+    over those the speed range, the lean from the vertical, the load, the
+    friction needed and the least head clearance; ``limits`` names the
+    statuses that stop the others, and ``slips``, ``over_g``,
+    ``head_hits``, ``no_contact`` and ``no_orbit`` (no tilt gives the speed,
+    or the wheel does not fit) count them by cause.
+
+    ``groups`` numbers each request's contact point (``ride(...,
+    summary=True)`` passes the grid's: the requests that differ only in the
+    speed or tilt tried); without it, a grid table (``table.shape`` of two
+    axes or more) groups along its last axis, and any other groups its rows
+    by their contact inputs as given (``theta_deg`` or ``height_m``, ``r_m``,
+    ``g_m_s2``, ``mu_available``, ``max_g``), never by a rounded value.
+    ``tried``: ``"speeds"`` or ``"tilts"`` (a table of tilts given), which
+    names the counts ``speeds_tried``/``speeds_ok`` or
+    ``tilts_tried``/``tilts_ok``.  A speed (or tilt) is counted once
+    under each cause among its rows when none of them is ok."""
+    if tried not in ("speeds", "tilts"):
+        raise ParameterError(f"tried must be 'speeds' or 'tilts' (got {tried!r})", "tried")
+    req = np.asarray(table["input_row"], dtype=np.int64).reshape(-1) - 1
+    if groups is not None:
+        row_group = np.asarray(groups, dtype=np.int64).reshape(-1)[req]
+    elif len(table.shape) >= 2:
+        row_group = req // table.shape[-1]
+    else:
+        keys = [np.asarray(table[c], dtype=float).reshape(-1) for c in
+                ("theta_deg", "height_m", "r_m", "g_m_s2", "mu_available", "max_g")]
+        as_rows = np.stack(keys, axis=1) if len(table) else np.zeros((0, len(keys)))
+        _, first, row_group = np.unique(np.nan_to_num(as_rows, nan=-np.inf), axis=0, return_index=True,
+                                        return_inverse=True)
+        row_group = np.argsort(np.argsort(first, kind="stable"), kind="stable")[row_group.reshape(-1)]
+    tried, ok_name = f"{tried}_tried", f"{tried}_ok"
+    names = [tried if c == "speeds_tried" else ok_name if c == "speeds_ok" else c for c in SUMMARY_COLUMNS]
+    rows = {c: [] for c in names}
+    status_all = np.asarray(table["status"]).reshape(-1)
+    reason_all = np.asarray(table["reason"]).reshape(-1)
+    head_text = REASON_TEXT[Reason.HEAD_HITS]
+    order = np.unique(row_group)
+    for gv in order:
+        sel = row_group == gv
+        status = status_all[sel]
         ok = status == "ok"
-        speeds = np.asarray(table["v_cm_km_h"])[sel]
-        req = np.asarray(table["input_row"])[sel]
-        rows["height_m"].append(float(hv))
-        rows["theta_deg"].append(float(np.asarray(table["theta_deg"])[sel][0]))
-        rows["speeds_tried"].append(int(np.unique(req).size))
-        rows["speeds_ok"].append(int(np.unique(req[ok]).size))
+        rq = req[sel]
+
+        def first(col):
+            return float(np.asarray(table[col], dtype=float).reshape(-1)[sel][0])
 
         def span(col, fn, mask=ok):
-            vals = np.asarray(table[col], dtype=float)[sel][mask]
+            vals = np.asarray(table[col], dtype=float).reshape(-1)[sel][mask]
             return float(fn(vals)) if vals.size else math.nan
 
+        rows["height_m"].append(first("height_m"))
+        rows["theta_deg"].append(first("theta_deg"))
+        rows[tried].append(int(np.unique(rq).size))
+        rows[ok_name].append(int(np.unique(rq[ok]).size))
         rows["v_min_km_h"].append(span("v_cm_km_h", np.min))
         rows["v_max_km_h"].append(span("v_cm_km_h", np.max))
         rows["lean_min_deg"].append(span("lean_deg", np.min))
@@ -335,32 +446,57 @@ def ride_summary(table: Table) -> Table:
         rows["head_clearance_min_m"].append(span("head_clearance_m", np.min))
         failed = sorted(set(status[~ok].tolist()))
         rows["limits"].append(" ".join(failed) if failed else "")
-        del speeds
-    kinds = {"limits": object, "speeds_tried": np.int64, "speeds_ok": np.int64}
-    cols = {c: np.array(v, dtype=kinds.get(c, float)) for c, v in rows.items()}
+        rows["mu_available"].append(first("mu_available"))
+        rows["max_g"].append(first("max_g"))
+        head = reason_all[sel] == head_text
+        for col, (st, _) in FAILURES.items():
+            hit = np.isin(status, st)
+            if col == "head_hits":
+                hit &= head
+            elif col == "no_orbit":
+                hit &= ~head
+            failing = ~np.isin(rq, rq[ok])
+            rows[col].append(int(np.unique(rq[hit & failing]).size))
+    counts = {tried, ok_name, *FAILURES}
+    cols = {c: np.array(v, dtype=np.int64 if c in counts else object if c == "limits" else float)
+            for c, v in rows.items()}
     return Table(cols)
+
+
+def typed_speed_unit(values) -> tuple[str, float] | None:
+    """The unit the first of the speeds ``values`` (texts such as
+    ``"20:40:5km/h"``) with one was typed in, and how many of it make one
+    m/s, for a view to show the speeds as typed; None when none has a unit."""
+    from deathsphere.units import factor, split_unit
+
+    for text in values:
+        unit = split_unit(str(text))[1] if isinstance(text, str) else None
+        if unit:
+            return unit, 1.0 / factor(unit, "speed", "v_top")
+    return None
 
 
 #: The columns of ``deathsphere ride --vertical``.
 LOOP_COLUMNS = ("input_row", "machine", "theta_deg", "r_m", "g_m_s2", "v_top_m_s", "status", "reason",
                 "v_top_min_m_s", "v_bottom_m_s", "omega_top_rad_s", "omega_bottom_rad_s", "com_loop_radius_m",
-                "load_top_g", "load_bottom_g", "head_clearance_m")
+                "load_top_g", "load_bottom_g", "head_clearance_m", "mu_available", "max_g", "mu_required",
+                "phi_worst_deg")
 
 
-def _loop(theta, v_top, m: Machine, r, g) -> Table:
-    """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M23)."""
+def _loop(theta, v_top, m: Machine, r, g, mu=INF, max_g=INF) -> Table:
+    """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M24)."""
     from deathsphere.physics.machine import vertical_loop
 
     if theta is None or v_top is None:
         raise ParameterError("a vertical loop needs theta (its cone angle) and v_top", "v_top", missing=True)
     checked = {name: checked_array(name, v) for name, v in
-               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g))}
+               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g), ("mu", mu), ("max_g", max_g))}
     refuse_large_grid(grid_shape(checked), command="ride --vertical", limit=MAX_RIDE_ROWS)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     th = np.radians(flat["theta"])
     res = vertical_loop(th, flat["v_top"], flat["r"], flat["g"], m.mass, m.h, m.a, m.t, m.inertia[1],
-                        m.spin_inertia, m.head)
+                        m.spin_inertia, m.head, flat["mu"], flat["max_g"])
     res = {k: np.asarray(v).reshape(-1) for k, v in res.items()}
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),
             "theta_deg": flat["theta"], "r_m": flat["r"], "g_m_s2": flat["g"], "v_top_m_s": flat["v_top"],
@@ -368,5 +504,9 @@ def _loop(theta, v_top, m: Machine, r, g) -> Table:
             "v_top_min_m_s": res["v_top_min"], "v_bottom_m_s": res["v_bottom"], "omega_top_rad_s": res["omega_top"],
             "omega_bottom_rad_s": res["omega_bottom"], "com_loop_radius_m": res["r_g"],
             "load_top_g": res["load_top"], "load_bottom_g": res["load_bottom"],
-            "head_clearance_m": res["head_clearance"]}
+            "head_clearance_m": res["head_clearance"],
+            # inf ("no limit") is empty, as in every table
+            "mu_available": np.where(np.isinf(flat["mu"]), np.nan, flat["mu"]),
+            "max_g": np.where(np.isinf(flat["max_g"]), np.nan, flat["max_g"]),
+            "mu_required": res["mu_required"], "phi_worst_deg": np.degrees(res["phi_worst"])}
     return Table({c: cols[c] for c in LOOP_COLUMNS}, shape=shape)

@@ -18,6 +18,16 @@ from deathsphere.cli.options import (
     stability_option,
 )
 
+
+def _view(name: str, **kwargs):
+    """A terminal view of render.ride_views, imported only when a table is drawn."""
+    def view(table, total_rows=None):
+        from deathsphere.render import ride_views
+
+        return getattr(ride_views, name)(table, total_rows=total_rows, **kwargs)
+    return view
+
+
 def _axis(name: str, values):
     """The values of a repeated option (values and start:stop:step ranges,
     with unit suffixes), as one flat array."""
@@ -25,6 +35,17 @@ def _axis(name: str, values):
 
     axis = checked_axis(name, list(values))
     return axis.take(np.arange(len(axis)))
+
+
+def _grid(where, how, mus):
+    """The grid of a ride: the contact points (outer), each value of --mu,
+    and the speeds, tilts or top speeds tried (inner); one --mu value
+    leaves the grid two-dimensional."""
+    if mus is None:
+        return where[:, None], how[None, :], {}
+    if mus.size == 1:
+        return where[:, None], how[None, :], {"mu": float(mus[0])}
+    return where[:, None, None], how[None, None, :], {"mu": mus[None, :, None]}
 
 
 @cli.command("ride", short_help="A motorcycle and rider on horizontal orbits: lean, speed, load, clearance.")
@@ -37,7 +58,8 @@ def _axis(name: str, values):
 @param_option("r")
 @param_option("diameter")
 @param_option("g")
-@param_option("mu")
+@param_option("mu", multiple=True, help="Friction coefficient available (e.g. 0.8:1:0.1: each value a set of "
+              "rows; the rider's table a row per height and value).")
 @param_option("max_g", help="Largest load_g (|contact force| / (m g), what the rider feels); an orbit over "
               "it has status over_g.")
 @click.option("--vertical", is_flag=True, default=False,
@@ -45,8 +67,8 @@ def _axis(name: str, values):
                    "speed of the centre of mass at the top.")
 @param_option("v_top", multiple=True, help="Vertical loop: speed of the centre of mass at the top, >= 0.")
 @click.option("--summary", is_flag=True, default=False,
-              help="The rider's table: per height (or theta), the speeds that are ok with lean, load, "
-                   "friction and head clearance.")
+              help="The rider's table: per contact point (height or theta), how many speeds are ok, their "
+                   "range, lean, load, friction needed and least head clearance, and why the others fail.")
 @only_option(api.STATUSES)
 @stability_option()
 @output_options()
@@ -66,9 +88,11 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     Examples:
       deathsphere ride --theta 90 --speed 40km/h --diameter 16ft
       deathsphere ride --height 1.2m --alpha 10:30:5 --machine benchmark-bicycle
-      deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 30:70:5km/h \\
+      deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
+      deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h \\
+          --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
     """
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
@@ -76,15 +100,18 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
-    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g)) if v is not None}
+    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("max_g", max_g)) if v is not None}
+    mus = _axis("mu", mu) if mu else None
     if vertical:
         if not theta or not v_top or height or alpha or speed or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
-        refuse_large_grid(value_counts({"theta": theta, "v_top": v_top}), command="ride --vertical",
+        refuse_large_grid(value_counts({"theta": theta, "mu": mu, "v_top": v_top}), command="ride --vertical",
                           limit=api.rides.MAX_RIDE_ROWS)
-        table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
-                         machine=chosen, only=only or None, **setup)
-        emit([table], choose_format(fmt), f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)")
+        where, how, friction = _grid(_axis("theta", theta), _axis("v_top", v_top), mus)
+        table = api.ride(where, vertical=True, v_top=how, machine=chosen, only=only or None, **friction, **setup)
+        title = f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)"
+        emit([table], choose_format(fmt), title, view=_view("loop_view", title=title,
+                                                          speed_unit=api.rides.typed_speed_unit(v_top)))
         return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
@@ -94,21 +121,18 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed, not both")
     if not alpha and not speed:
         raise click.UsageError("give --alpha or --speed")
-    refuse_large_grid(value_counts({"theta": theta, "height": height, "alpha": alpha, "speed": speed}), command="ride",
-                      limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
-    where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
-    how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
-    setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))
-             if v is not None}
-    table = api.ride(**where, **how, machine=chosen, stability=stability, only=None if summary else (only or None),
-                     **setup)
+    refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, "alpha": alpha, "speed": speed}),
+                      command="ride", limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
+    at, by = ("theta", theta) if theta else ("height", height), ("alpha", alpha) if alpha else ("speed", speed)
+    where, how, friction = _grid(_axis(*at), _axis(*by), mus)
+    table = api.ride(**{at[0]: where, by[0]: how}, machine=chosen, stability=stability and not summary,
+                     only=only or None, summary=summary, **friction, **setup)
     fmt = choose_format(fmt)
     if summary:
-        table = api.ride_summary(table)
         title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"
     else:
         title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
-    emit([table], fmt, title)
+    emit([table], fmt, title, view=_view("ride_view", title=title))
 
 
 @cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")
@@ -123,4 +147,5 @@ def machines_command(fmt):
       deathsphere machines
       deathsphere machines --format csv
     """
-    emit([api.machines_table()], choose_format(fmt), "Preset machines (docs/machine.md sec. 7)")
+    title = "Preset machines (docs/machine.md sec. 7)"
+    emit([api.machines_table()], choose_format(fmt), title, view=_view("machines_view", title=title))

@@ -254,7 +254,7 @@ def polynomial_values(coef, alpha):
 # vertical loops (docs/machine.md sec. 10, eqs. M21-M23)
 # ---------------------------------------------------------------------------
 
-def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head):
+def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head, mu=np.inf, max_g=np.inf):
     """A machine looping in the vertical plane at distance r cos(theta) from
     the sphere's centre, its up-axis towards the loop's centre (docs/machine.md
     sec. 10).  Loop radius rho = r sin(theta), centre-of-mass radius
@@ -262,16 +262,27 @@ def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia
     energy (M21): (1/2) M phidot^2 + m g r_G cos(phi) = const with
     M = m r_G^2 + I_pitch + J (rho^2 - 2 rho a) / a^2; contact at the top
     (M22): v_top^2 >= g r_G; at the bottom (M23) phidot_b^2 = phidot_t^2 +
-    4 m g r_G / M and the load is phidot_b^2 r_G / g + 1.  A knife edge (t = 0)
-    stays in any loop's plane; a round tyre only on a great circle (theta =
-    90 deg).  ``v_top`` is the centre of mass's speed at the top.
+    4 m g r_G / M and the load is phidot_b^2 r_G / g + 1, the most round the
+    loop.  The friction needed (M24, beyond the paper; the machine's eqs.
+    (27)-(28b) of the wheel): with q = m r_G^2 / M the in-plane force is
+    (D - B cos(phi)) inwards and -c g sin(phi) along the path, D = v_top^2 /
+    r_G + 2 q g, B = (1 + 2 q) g, c = 1 - q, so that mu(phi) = hypot(c g
+    sin(phi), (D - B cos(phi)) cos(theta)) / ((D - B cos(phi)) sin(theta)),
+    largest at cos(phi*) = B / D:  mu_max = sqrt(cos^2(theta) + c^2 g^2 /
+    (D^2 - B^2)) / sin(theta).  A knife edge (t = 0) stays in any loop's
+    plane; a round tyre only on a great circle (theta = 90 deg).  ``v_top``
+    is the centre of mass's speed at the top; ``mu`` the friction available
+    and ``max_g`` the largest load allowed (status slips / over_g).
 
     Returns dict of arrays: ``r_g``, ``v_top_min``, ``v_bottom``,
     ``omega_top``, ``omega_bottom``, ``load_top``, ``load_bottom``,
-    ``head_clearance`` (r - |head point| at the top), ``status``, ``reason``.
+    ``head_clearance`` (r - |head point| at the top), ``mu_required`` (the
+    most round the loop), ``phi_worst`` [rad] (where, from the top; also at
+    -phi_worst), ``status``, ``reason``.
     """
-    theta, v_top, r, g, mass, h, a, t, ip, js, head = (
-        np.asarray(x, dtype=float) for x in (theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head))
+    theta, v_top, r, g, mass, h, a, t, ip, js, head, mu, max_g = (
+        np.asarray(x, dtype=float) for x in
+        (theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head, mu, max_g))
     st, ct = np.sin(theta), np.cos(theta)
     rho = r * st
     r_g = rho - h
@@ -285,14 +296,28 @@ def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia
         v_min = np.sqrt(g * safe)
     hx = np.abs(rho - head)                       # the head point in the plane, distance from the loop's centre
     clearance = r - np.sqrt(hx * hx + (r * ct) ** 2)
+    load_bottom = om_b2 * safe / g + 1.0
+    # M24: N_in/m = D - B cos(phi) from M21, F_along/m = -c g sin(phi)
+    q = mass * safe * safe / meff
+    d = v_top * v_top / safe + 2 * q * g
+    b = (1 + 2 * q) * g
+    c = 1 - q
+    touches = (d > b) & ~small
+    d_s = np.where(touches, d, 2.0 * b)
+    sin_s = np.where(touches & (st > 0), st, 1.0)
+    mu_max = np.sqrt(ct * ct + (c * g) ** 2 / ((d_s - b) * (d_s + b))) / sin_s
+    phi_worst = np.arccos(b / d_s)
     status, reason = first_failure([
         (small, Status.NO_FIT, Reason.LOOP_TOO_SMALL),
         (off_plane, Status.NO_ORBIT, Reason.LOOP_ROUND_TYRE_OFF_PLANE),
         (~(clearance > 0), Status.NO_FIT, Reason.HEAD_HITS),
         (v_top < v_min * (1 - 1e-12), Status.NO_CONTACT, Reason.LOOP_TOP_TOO_SLOW),
+        (np.where(touches, mu_max, np.inf) > mu, Status.SLIPS, Reason.LOOP_SLIPS),   # diverges at M22's limit
+        (load_bottom > max_g, Status.OVER_G, Reason.LOOP_OVER_G),
     ])
     bad = small | off_plane
     nan = np.nan
+    no_mu = bad | ~touches
     out = {
         "r_g": np.where(small, nan, r_g),
         "v_top_min": np.where(bad, nan, v_min),
@@ -300,8 +325,10 @@ def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia
         "omega_top": np.where(bad, nan, om_t),
         "omega_bottom": np.where(bad, nan, np.sqrt(om_b2)),
         "load_top": np.where(bad, nan, np.abs(om_t * om_t * safe - g) / g),
-        "load_bottom": np.where(bad, nan, om_b2 * safe / g + 1.0),
+        "load_bottom": np.where(bad, nan, load_bottom),
         "head_clearance": clearance,
+        "mu_required": np.where(no_mu, nan, mu_max),
+        "phi_worst": np.where(no_mu, nan, phi_worst),
         "status": status,
         "reason": reason,
     }

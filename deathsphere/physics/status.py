@@ -67,6 +67,8 @@ class Reason(IntEnum):
     LOOP_TOO_SMALL = 34
     LOOP_ROUND_TYRE_OFF_PLANE = 35
     LOOP_TOP_TOO_SLOW = 36
+    LOOP_SLIPS = 37
+    LOOP_OVER_G = 38
 
 
 REASONS = {
@@ -107,6 +109,8 @@ REASONS = {
     Reason.LOOP_TOO_SMALL: "the loop is too small for the machine (machine.md sec. 10 needs r sin(theta) > a and > h)",
     Reason.LOOP_ROUND_TYRE_OFF_PLANE: "a round tyre off a great circle touches the sphere t cos(theta) out of the loop's plane: the machine cannot stay in the plane (it must lean and steer; machine.md sec. 10)",
     Reason.LOOP_TOP_TOO_SLOW: "the machine leaves the wall at the top of the loop (machine.md eq. M22 needs v_top^2 >= g r_G)",
+    Reason.LOOP_SLIPS: "somewhere round the loop rolling needs more friction than given: mu_required (the most round the loop; machine.md eq. M24) exceeds mu_available",
+    Reason.LOOP_OVER_G: "the load at the bottom of the loop load_bottom_g (the most round it; machine.md eq. M23) exceeds the largest given (max_g)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

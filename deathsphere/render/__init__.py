@@ -7,7 +7,9 @@ the file writers (CSV, JSON, Parquet) are :mod:`deathsphere.writers`.
   (:class:`~deathsphere.render.terminal_table.FitTable`, number text, the row cap);
   the views: :mod:`~deathsphere.render.orbit_views` (orbits, vertical orbits,
   any table), :mod:`~deathsphere.render.paper_views` (Table 1, the checklist,
-  stability), :mod:`~deathsphere.render.simulation_view`.
+  stability), :mod:`~deathsphere.render.simulation_view`,
+  :mod:`~deathsphere.render.ride_views` (``ride``, the rider's table,
+  ``machines``).
 * :mod:`~deathsphere.render.charplot`: the terminal character map of the
   allowed region.
 * :mod:`~deathsphere.render.figures` (the optional matplotlib),

@@ -149,6 +149,7 @@ def axis_names(table) -> tuple[list[str], dict[str, int]]:
     column of :data:`AXIS_COLUMNS` varies, and nothing else of them, is
     named after it; any other axis is ``dim_<i>``."""
     shape = table.shape
+    named = table.axes or (None,) * len(shape)
     along: dict[int, list[str]] = {}
     for name in AXIS_COLUMNS:
         if name in table and table.columns[name].dtype.kind == "f":
@@ -158,10 +159,30 @@ def axis_names(table) -> tuple[list[str], dict[str, int]]:
     dims = [f"dim_{d}" for d in range(len(shape))]
     coords = {}
     for d, names in along.items():
-        if len(names) == 1:
+        if len(names) == 1 and named[d] is None:
             dims[d] = names[0]
             coords[names[0]] = d
+    for d, name in enumerate(named):
+        if name is not None and name in table and _varies_along(table.grid(name)) in (d, None):
+            dims[d] = name
+            coords[name] = d
     return dims, coords
+
+
+#: Column-name endings that are units, longest first (the names' convention:
+#: docs/contract.md, "units in the names").
+UNIT_SUFFIXES = (("_kg_m2", "kg m^2"), ("_m_s2", "m/s^2"), ("_rad_s", "rad/s"), ("_km_h", "km/h"),
+                 ("_m_s", "m/s"), ("_1_s", "1/s"), ("_deg", "deg"), ("_kg", "kg"), ("_s", "s"), ("_m", "m"),
+                 ("_g", "g"))
+
+
+def column_unit(name: str) -> str:
+    """The unit a column's name ends with; ``"1"`` (dimensionless, as CF
+    and pint write it) for a plain number (``mu_required``, ``k``)."""
+    for suffix, unit in UNIT_SUFFIXES:
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return unit
+    return "1"
 
 
 def _xarray_values(name: str, values: np.ndarray) -> np.ndarray:
@@ -192,11 +213,12 @@ def xarray_dataset(table, method: str = "Table.to_xarray"):
     data_vars, coord_vars = {}, {}
     for name in table.names:
         values = _xarray_values(name, table.columns[name])
+        attrs = {"units": column_unit(name)} if values.dtype.kind in "fiu" else {}
         if name in coords:
             d = coords[name]
             index = tuple(slice(None) if i == d else 0 for i in range(len(shape)))
-            coord_vars[name] = (name, values.reshape(shape)[index].copy())
+            coord_vars[name] = (name, values.reshape(shape)[index].copy(), attrs)
         else:
             # a copy: the dataset is the caller's to change, the table's columns are not
-            data_vars[name] = (dims, values.reshape(shape).copy())
+            data_vars[name] = (dims, values.reshape(shape).copy(), attrs)
     return xr.Dataset(data_vars, coords=coord_vars)

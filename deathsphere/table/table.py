@@ -76,7 +76,8 @@ class Table:
     #: Rows shown by ``repr`` (a notebook cell) and ``_repr_html_``.
     REPR_ROWS = 5
 
-    def __init__(self, columns: dict[str, np.ndarray], shape: tuple[int, ...] | None = None):
+    def __init__(self, columns: dict[str, np.ndarray], shape: tuple[int, ...] | None = None,
+                 axes: tuple[str | None, ...] | None = None):
         columns = {name: np.asarray(col) for name, col in columns.items()}
         lengths = {len(v) for v in columns.values()}
         if len(lengths) > 1:
@@ -94,6 +95,16 @@ class Table:
         if math.prod(shape) != n:
             raise ValueError(f"shape {shape} does not hold {n} rows")
         self._shape = shape
+        # the input column along each axis, where the producer knows it (a
+        # column derived from an input varies along the same axis)
+        self._axes = tuple(axes) if axes is not None and len(axes) == len(shape) else None
+
+    @property
+    def axes(self) -> tuple[str | None, ...] | None:
+        """The input column given along each axis of :attr:`shape` (None
+        where the producer did not say): the names :meth:`to_xarray` gives
+        the dimensions."""
+        return getattr(self, "_axes", None)
 
     def __setstate__(self, state: dict) -> None:
         # unpickled arrays (a table back from a --jobs worker) are writable again
@@ -206,10 +217,13 @@ class Table:
     def to_xarray(self):
         """An ``xarray.Dataset``.  A grid (:attr:`shape` of two axes or more)
         keeps its axes as dimensions, each named after the one input column
-        that varies along it (``theta_deg``, ``alpha_deg``, ...), which
-        becomes its coordinate, else ``dim_0``, ``dim_1``, ...; any other
-        table has one dimension, ``row``.  Text is object (None where
-        undefined), ``branch`` float64 (NaN where undefined)."""
+        that varies along it (``theta_deg``, ``alpha_deg``, ...) or after
+        the input its producer names (:attr:`axes`), which becomes its
+        coordinate, else ``dim_0``, ``dim_1``, ...; any other table has one
+        dimension, ``row``.  Text is object (None where undefined),
+        ``branch`` float64 (NaN where undefined); a number's variable has
+        its unit, read off its name, in the attribute ``units`` (``"m/s"``
+        for ``v_cm_m_s``, ``"1"`` for a plain number)."""
         return xarray_dataset(self)
 
     def _summary_line(self) -> str:

@@ -80,3 +80,66 @@ def test_ride_rows_echo_their_inputs_and_never_hold_inf(run):
     assert all(r["mu_available"] == "" and r["max_g"] == "" for r in rows) and "inf" not in text
     tilted = _rows(run("ride", "--theta", "60.1", "--alpha", "10.3", "--format", "csv").stdout)
     assert (tilted[0]["theta_deg"], tilted[0]["alpha_deg"]) == ("60.1", "10.3")
+
+
+def test_a_vertical_loop_obeys_mu_and_max_g(run):
+    """A loop that exceeds the load (here 7.8 g at the bottom) or slips
+    somewhere says so in its status, as a horizontal orbit does."""
+    args = ("ride", "--vertical", "--theta", "90", "--v-top", "30km/h", "--format", "csv")
+    (free,) = _rows(run(*args).stdout)
+    assert free["status"] == "ok" and float(free["load_bottom_g"]) > 7
+    (limited,) = _rows(run(*args, "--mu", "0.1", "--max-g", "2").stdout)
+    assert limited["status"] == "over_g" and "load_bottom_g" in limited["reason"]
+    need = float(free["mu_required"])
+    (slips,) = _rows(run(*args, "--mu", str(need * 0.99)).stdout)
+    assert slips["status"] == "slips" and float(slips["mu_available"]) < need
+
+
+def test_the_riders_table_groups_by_the_contact_point_asked_for(run):
+    """Two contact points whose heights round alike (179.999 and 180 deg:
+    4.6e-10 m apart) are two rows, each of the speeds tried there."""
+    rows = _rows(run("ride", "--theta", "179.999", "--theta", "180", "--speed", "10:20:5", "--summary",
+                     "--format", "csv").stdout)
+    assert [r["theta_deg"] for r in rows] == ["179.999", "180.0"]
+    assert [r["speeds_tried"] for r in rows] == ["3", "3"]
+
+
+def test_the_riders_table_counts_why_speeds_fail(run):
+    rows = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed", "10:35:5km/h",
+                     "--mu", "1", "--max-g", "5", "--summary", "--format", "csv").stdout)
+    detail = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed",
+                       "10:35:5km/h", "--mu", "1", "--max-g", "5", "--no-stability", "--format", "csv").stdout)
+    for row, height in zip(rows, ("0.4", "2.4")):
+        mine = [d for d in detail if d["height_m"] == height]
+        fails = {c: sum(d["status"] == s for d in mine) for c, s in (("slips", "slips"), ("over_g", "over_g"),
+                                                                      ("no_contact", "no_contact"))}
+        fails["head_hits"] = sum("head" in d["reason"] for d in mine)
+        assert {c: int(row[c]) for c in fails} == fails
+        assert int(row["speeds_ok"]) + sum(fails.values()) + int(row["no_orbit"]) == int(row["speeds_tried"]) == 6
+        assert float(row["mu_available"]) == 1 and float(row["max_g"]) == 5
+    assert int(rows[1]["head_hits"]) >= 1 and int(rows[0]["slips"]) >= 1
+
+
+def test_the_riders_table_of_tilts_names_its_counts_for_tilts(run):
+    (row,) = _rows(run("ride", "--theta", "90", "--alpha", "5:25:5", "--summary", "--format", "csv").stdout)
+    assert row["tilts_tried"] == "5" and "speeds_tried" not in row
+
+
+def test_mu_takes_a_range_like_the_other_axes(run):
+    """A crew asks "mu 0.8 to 1": each value its rows (contact point outer,
+    then mu, then speed), each judged against its own mu."""
+    rows = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "1.2", "--speed", "10:20:5km/h",
+                     "--mu", "0.6:1:0.2", "--no-stability", "--format", "csv").stdout)
+    assert [r["mu_available"] for r in rows] == ["0.6"] * 3 + ["0.8"] * 3 + ["1.0"] * 3 + ["0.6"] * 3 + \
+        ["0.8"] * 3 + ["1.0"] * 3
+    assert [r["input_row"] for r in rows] == [str(i) for i in range(1, 19)]
+    for r in rows:
+        assert (r["status"] == "slips") == (float(r["mu_required"]) > float(r["mu_available"]))
+    assert {r["status"] for r in rows} >= {"ok", "slips"}
+    table = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--speed", "10:20:5km/h", "--mu",
+                      "0.6:1:0.2", "--summary", "--format", "csv").stdout)
+    assert [r["mu_available"] for r in table] == ["0.6", "0.8", "1.0"]
+    assert [int(r["speeds_ok"]) for r in table] == sorted(int(r["speeds_ok"]) for r in table)
+    loops = _rows(run("ride", "--vertical", "--theta", "60", "--v-top", "30km/h", "--mu", "0.5", "--mu", "0.7",
+                      "--machine", "benchmark-bicycle", "--format", "csv").stdout)
+    assert [(r["mu_available"], r["status"]) for r in loops] == [("0.5", "slips"), ("0.7", "ok")]

@@ -289,3 +289,61 @@ def test_a_round_tyre_only_loops_on_a_great_circle():
     res = vertical_loop(np.radians([90.0, 70.0]), 8.0, 2.45, G, 165.0, 0.8, 0.3, 0.045, 40.0, 0.8, 1.65)
     assert res["status"].tolist() == [Status.OK, Status.NO_ORBIT]
     assert res["reason"][1] == Reason.LOOP_ROUND_TYRE_OFF_PLANE
+
+
+def test_the_papers_wheel_needs_the_friction_of_vertical():
+    """The friction needed round the loop (eq. M24) for the paper's wheel is
+    `vertical`'s mu_required and worst point (eqs. 27-28b), and its slip verdict."""
+    from deathsphere.api import vertical
+    from deathsphere.physics.machine import vertical_loop
+
+    a, r, k, m = 0.3, 3.0, 0.5, 2.0
+    i = k * m * a * a
+    theta = np.array([90.0, 60.0, 45.0, 120.0])
+    res = vertical_loop(np.radians(theta), 6.0, r, G, m, a, a, 0.0, 2 * i, 2 * i, a, mu=0.9)
+    ref = vertical(theta, v_top=6.0, r=r, mu=0.9, stability=False)
+    np.testing.assert_allclose(res["mu_required"], ref["mu_required"], rtol=1e-12)
+    np.testing.assert_allclose(np.degrees(res["phi_worst"]), ref["phi_worst_deg"], rtol=1e-12)
+    assert [s == Status.SLIPS for s in res["status"]] == [s == "slips" for s in ref["status"]]
+
+
+def _loop_by_newton(theta, v_top, r, m, h, a, ip, js, n=20001):
+    """mu needed round a loop from Newton's law sampled point by point: the
+    rate from the energy (M21), the angular acceleration by differencing it,
+    the force m a_G - m g in 3-D split along the sphere's normal."""
+    phi = np.linspace(0.0, 2 * np.pi, n)
+    rho = r * np.sin(theta)
+    rg = rho - h
+    big_m = m * rg * rg + ip + js * (rho * rho - 2 * rho * a) / (a * a)
+    w2 = (v_top / rg) ** 2 + 2 * m * G * rg * (1 - np.cos(phi)) / big_m
+    wdd = np.gradient(0.5 * w2, phi)                  # phi'' = d(phi'^2 / 2) / d phi
+    out = np.stack((np.sin(phi), np.zeros_like(phi), np.cos(phi)))      # loop plane: x, z; y across
+    along = np.stack((np.cos(phi), np.zeros_like(phi), -np.sin(phi)))
+    acc = -rg * w2 * out + rg * wdd * along
+    force = acc - np.array([0.0, 0.0, -G])[:, None]
+    contact = np.array([0.0, r * np.cos(theta), 0.0])[:, None] + rho * out
+    n_in = -contact / r
+    normal = (force * n_in).sum(axis=0)
+    friction = np.linalg.norm(force - normal * n_in, axis=0)
+    load = np.linalg.norm(force, axis=0) / G
+    return (friction / normal).max(), load.max()
+
+
+@pytest.mark.parametrize("theta, v_top, h, a, ip, js", [
+    (90.0, 8.0, 0.8, 0.3, 40.0, 0.8),          # stunt125's numbers on a great circle
+    (65.0, 7.0, 0.86, 0.325, 16.1, 0.39),      # the benchmark bicycle off a great circle (knife edge)
+    (90.0, 6.0, 0.3, 0.3, 0.2, 0.19),          # a small rider-less wheel: large friction along the path
+])
+def test_the_loops_friction_and_load_against_newton(theta, v_top, h, a, ip, js):
+    from deathsphere.physics.machine import vertical_loop
+
+    r, m = 2.4384, 100.0
+    mu, load = _loop_by_newton(np.radians(theta), v_top, r, m, h, a, ip, js)
+    res = vertical_loop(np.radians(theta), v_top, r, G, m, h, a, 0.0, ip, js, h + 0.5)
+    assert res["mu_required"] == pytest.approx(mu, rel=1e-6)
+    assert res["load_bottom"] == pytest.approx(load, rel=1e-9)
+    # the limits act on these numbers: just below either, the loop fails with its reason
+    tight = vertical_loop(np.radians(theta), v_top, r, G, m, h, a, 0.0, ip, js, h + 0.5,
+                          mu=[mu * 0.999, mu * 1.001, np.inf], max_g=[np.inf, load * 0.999, load * 1.001])
+    assert tight["status"].tolist() == [Status.SLIPS, Status.OVER_G, Status.OK]
+    assert tight["reason"][:2].tolist() == [Reason.LOOP_SLIPS, Reason.LOOP_OVER_G]
