@@ -8,10 +8,13 @@ from the click group itself, so a new command is covered without a word
 here; a command whose terminal view no example exercises fails
 :func:`test_every_command_shows_its_terminal_view`.
 
-The runs are in-process (a second or two in all, where a fresh interpreter
-per case would take minutes): stdout is a text stream that says it is a
+The runs are in-process (a fresh interpreter per case would pay its
+start-up some 300 times): stdout is a text stream that says it is a
 terminal and ``COLUMNS`` gives its width, which is all the CLI and rich
-consult.  :func:`test_in_process_terminal_is_the_real_one` proves the
+consult.  Long work is run smaller (:func:`bounded`), an example that draws
+a figure or an animation is parsed rather than drawn (:data:`DRAWN_FILES`),
+and what a person supplies (a machine file, a scheduler) is provided
+(:func:`provided`).  :func:`test_in_process_terminal_is_the_real_one` proves the
 route by drawing a few of the same views through a real pseudo-terminal
 (its window size set by TIOCSWINSZ, no ``COLUMNS``) and comparing the text.
 """
@@ -231,7 +234,7 @@ def run_on_terminal(args, columns: int, monkeypatch, stdin: str | None = None, t
             cli.main(args=list(args), prog_name="deathsphere")
         except SystemExit as exc:
             status = exc.code if exc.code is not None else 0
-        except BaseException:  # noqa: BLE001 - what would reach the person as a traceback
+        except Exception:  # noqa: BLE001 - what would reach the person as a traceback
             status, trace = "traceback", traceback.format_exc()
         out.flush()
     return Shown(status, out_bytes.getvalue().decode("utf-8"), err.getvalue(), trace)
