@@ -15,8 +15,7 @@ about a second to import, which no local command should pay.
 
 from __future__ import annotations
 
-from collections import deque
-from typing import Callable, Iterable, Iterator
+from typing import Callable
 
 from deathsphere.errors import ParameterError
 from deathsphere.memory import reuse_freed_memory
@@ -108,30 +107,27 @@ class OnWorker:
         return self.work(item)
 
 
-def ordered_map(work: Callable, items: Iterable, client, close: bool = False) -> Iterator:
-    """``work(item)`` for each item on the cluster of ``client``, handed
-    back in input order.  Items are drawn lazily, at most
-    :data:`AHEAD_PER_WORKER` per worker ahead of the one being handed back.
-    Leaving early (a reader gone, a failed write, Ctrl-C) cancels the tasks
-    still pending on the cluster; ``close`` closes the client at the end."""
-    pending = deque()
-    work = OnWorker(work)
-    try:
-        ahead = AHEAD_PER_WORKER * workers(client)
-        for item in items:
-            # pure=False: two equal chunks are two tasks (dask would otherwise
-            # hash the requests to decide, which costs more than it saves)
-            pending.append(client.submit(work, item, pure=False))
-            if len(pending) >= ahead:
-                yield pending.popleft().result()
-        while pending:
-            yield pending.popleft().result()
-    finally:
+class ClusterPool:
+    """The cluster of ``client`` as a pool for
+    :func:`deathsphere.parallel.ordered_map`: each item one task,
+    :data:`AHEAD_PER_WORKER` per worker in flight; ``close`` closes the
+    client when the map ends."""
+
+    def __init__(self, work: Callable, client, close: bool = False):
+        self.work, self.client, self.close = OnWorker(work), client, close
+        self.ahead = AHEAD_PER_WORKER * workers(client)
+
+    def submit(self, item):
+        # pure=False: two equal chunks are two tasks (dask would otherwise
+        # hash the requests to decide, which costs more than it saves)
+        return self.client.submit(self.work, item, pure=False)
+
+    def stop(self, pending) -> None:
         # release, not Client.cancel: cancel waits for the scheduler's answer,
         # and after a KeyboardInterrupt inside a wait that answer never came
         # (the command hung); a released task nobody wants is dropped by the
         # scheduler (queued ones are never run)
         while pending:
             pending.popleft().release()
-        if close:
-            client.close(timeout=CONNECT_TIMEOUT_S)
+        if self.close:
+            self.client.close(timeout=CONNECT_TIMEOUT_S)

@@ -6,7 +6,8 @@ output is the same as with one process.  The items are drawn lazily and at
 most two per process are in flight: enough to keep every process busy while
 the caller consumes (writes) results, and memory stays flat however long the
 stream.  Leaving the loop early (a reader gone, a failed write, Ctrl-C)
-cancels the work still queued.
+cancels the work still queued.  A dask.distributed cluster is one more
+pool for the same loop (:class:`deathsphere.cluster.ClusterPool`).
 """
 
 from __future__ import annotations
@@ -22,36 +23,50 @@ def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int, client=No
                 close: bool = False) -> Iterator[R]:
     """``work(item)`` for each item, in input order, on ``jobs`` processes
     (or, given a ``distributed.Client``, on its cluster:
-    :func:`deathsphere.cluster.ordered_map`, which ``close`` is passed to).
+    :class:`deathsphere.cluster.ClusterPool`, which ``close`` is passed to).
 
     ``work`` and the items must be picklable (a module-level function and
     plain data); each item's result is computed exactly as in one process.
-    With ``jobs`` <= 1 the items are evaluated here, one at a time, without
-    a pool.  At most ``2 * jobs`` items are submitted ahead of the one being
-    handed back; closing the generator early drops the queued ones (running
-    ones finish) before it returns.
+    With ``jobs`` <= 1 and no client the items are evaluated here, one at a
+    time, without a pool.  At most ``pool.ahead`` items (two per process or
+    worker) are submitted ahead of the one being handed back; closing the
+    generator early drops the queued ones before it returns.
     """
-    if client is not None:
-        from deathsphere.cluster import ordered_map as on_cluster
-
-        yield from on_cluster(work, items, client, close=close)
-        return
-    if jobs <= 1:
+    if client is None and jobs <= 1:
         for item in items:
             yield work(item)
         return
+    if client is not None:
+        from deathsphere.cluster import ClusterPool
 
-    from concurrent.futures import ProcessPoolExecutor
-
+        pool = ClusterPool(work, client, close=close)
+    else:
+        pool = ProcessPool(work, jobs)
     pending = deque()
-    pool = ProcessPoolExecutor(jobs)
     try:
         for item in items:
-            pending.append(pool.submit(work, item))
-            if len(pending) >= 2 * jobs:
+            pending.append(pool.submit(item))
+            if len(pending) >= pool.ahead:
                 yield pending.popleft().result()
         while pending:
             yield pending.popleft().result()
     finally:
         # a reader gone (`| head`), a failed write or Ctrl-C: drop queued work
-        pool.shutdown(wait=True, cancel_futures=True)
+        pool.stop(pending)
+
+
+class ProcessPool:
+    """Local processes for :func:`ordered_map`: two items in flight per process."""
+
+    def __init__(self, work: Callable, jobs: int):
+        from concurrent.futures import ProcessPoolExecutor
+
+        self.work, self.ahead = work, 2 * jobs
+        self.pool = ProcessPoolExecutor(jobs)
+
+    def submit(self, item):
+        return self.pool.submit(self.work, item)
+
+    def stop(self, pending) -> None:
+        """Queued items are dropped, running ones finish."""
+        self.pool.shutdown(wait=True, cancel_futures=True)

@@ -12,6 +12,7 @@ import pytest
 
 import deathsphere
 from deathsphere import cluster
+from deathsphere.parallel import ordered_map
 from deathsphere.params import ParameterError
 from deathsphere.writers.stream import write_csv
 
@@ -76,7 +77,7 @@ def test_look_ahead_is_bounded_and_leaving_early_cancels(client):
             drawn.append(n)
             yield n
 
-    results = cluster.ordered_map(abs, items(), client)
+    results = ordered_map(abs, items(), 1, client=client)
     assert next(results) == 0
     # two workers, two chunks each in flight: never the whole stream
     assert len(drawn) <= 2 * cluster.AHEAD_PER_WORKER + 1

@@ -257,8 +257,10 @@ def test_vertical_reads_its_points_output_back(tmp_path):
     assert {r["theta_deg"] for r in rows} == {p["theta_deg"] for p in points} == {"90.0"}
     # the speed at phi is not the top speed: it is not read as one
     assert {r["v_cm_m_s"] for r in rows} == {"6.0"} and {r["status"] for r in rows} == {"ok"}
+    # without --v-top each point's own speed asks for its orbit (eq. 27 back to the top)
     res, rows = run("vertical", "--input", str(path), "--format", "csv", "--no-stability")
-    assert res.exit_code == 1 and len(rows) == 5 and "v_top" in rows[0]["reason"]
+    assert res.exit_code == 0 and len(rows) == 5 and {r["status"] for r in rows} == {"ok"}
+    assert [float(r["v_cm_m_s"]) for r in rows] == pytest.approx([6.0] * 5, rel=1e-12)
 
 
 def test_vertical_reads_its_summary_output_back(tmp_path):

@@ -41,16 +41,51 @@ from deathsphere.table import Table
 
 #: Output columns of ``vertical`` that echo an input, read back under that
 #: input's name when a result CSV is fed to :func:`vertical_input` (every
-#: other output column is ignored; ``v_cm_m_s`` is the speed at the top).
+#: other output column is ignored).  ``v_cm_m_s`` is the speed at the
+#: azimuth ``phi_deg``: the top in the summary (which has no ``phi_deg``),
+#: each point's own in the point-by-point output.
 #: ``orbit``'s are :data:`deathsphere.inputs.ALIASES`.
 VERTICAL_ECHO = {"theta_deg": "theta", "a_m": "a", "r_m": "r", "g_m_s2": "g", "mu_available": "mu",
-                 "v_cm_m_s": "v_top"}
+                 "v_cm_m_s": "v_top", "phi_deg": "phi"}
 
-#: In the point-by-point output (its ``phi_deg`` column tells it apart)
-#: ``v_cm_m_s`` is the speed at phi, not at the top: it is ignored there,
-#: like every other output column, and the top speed comes from
-#: ``--v-top``/``--phidot-top`` (or a ``v_top`` column).
-POINTS_ONLY_ECHO = {"v_cm_m_s": "phi_deg"}
+#: The azimuth from the top at which a row's speed or rate is given: a
+#: point of the point-by-point output read back (0, the top, otherwise).
+PHI_FIELD = {"phi": (0.0, "deg", "azimuth from the top at which v_top or phidot_top is given")}
+
+#: A speed at phi no top speed gives (eq. 27: the wheel gains speed on the way down).
+SLOWER_THAN_FROM_REST = "the speed at phi is below that of a wheel starting from rest at the top (eq. 27)"
+
+
+def requests_at_phi(n: int, invalid=None, input_row=None, phi=None, **fields) -> dict:
+    """:func:`~deathsphere.results.vertical.vertical_requests` from rows that
+    give the speed (``v_top``) or rate (``phidot_top``) at azimuth ``phi``
+    [deg] from the top: taken back to the top by energy conservation,
+    eq. (27), phidot_top^2 = phidot(phi)^2 - 4 g sin^2(phi/2) / ((2k+1) r').
+    A point read back from ``vertical --points`` is a request for its orbit."""
+    from deathsphere.physics.vertical_orbit import rate_squared, vertical_r_prime
+    from deathsphere.results.vertical import vertical_requests
+
+    req = vertical_requests(n, invalid=invalid, input_row=input_row, **fields)
+    phi = np.broadcast_to(np.asarray(0.0 if phi is None else phi, dtype=float), (n,))
+    rows = np.flatnonzero(np.nan_to_num(phi) != 0.0)
+    if rows.size == 0:
+        return req
+    theta, outside = np.deg2rad(req["theta"][rows]), req["side"][rows] == "outside"
+    a, r, k, g = (req[name][rows] for name in ("a", "r", "k", "g"))
+    with np.errstate(all="ignore"):  # unchecked values: the evaluation gives their reasons
+        gain = rate_squared(np.deg2rad(phi[rows]), theta, 0.0, a, r, k, g, outside)
+        rp = vertical_r_prime(theta, a, r, outside)
+        most = rate_squared(np.pi, theta, 0.0, a, r, k, g, outside)  # top to bottom
+        gained = {"phidot_top": (gain, most), "v_top": (gain * rp ** 2, most * rp ** 2)}
+        top = {name: req[name][rows] ** 2 - gained[name][0] for name in gained}
+    for name, squared in top.items():
+        given = np.isfinite(squared)
+        # rounding in the output read back leaves a point a hair below the top's speed
+        tolerance = 1e-9 * (req[name][rows] ** 2 + np.nan_to_num(gained[name][1]))
+        req[name][rows] = np.where(given & (squared >= -tolerance), np.sqrt(np.maximum(squared, 0.0)), np.nan)
+        slow = given & (squared < -tolerance) & (req["invalid"][rows] == "")
+        req["invalid"][rows[slow]] = SLOWER_THAN_FROM_REST
+    return req
 
 
 #: Peak bytes per row of :func:`vertical`, measured with tracemalloc: a
@@ -247,11 +282,7 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     ['ok', 'invalid']
     """
     from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
-    from deathsphere.results.vertical import (
-        POINT_COLUMNS,
-        VERTICAL_FIELDS,
-        vertical_requests,
-    )
+    from deathsphere.results.vertical import POINT_COLUMNS, VERTICAL_FIELDS
 
     points = None if points is None else int(checked_scalar("points", points))
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
@@ -261,8 +292,10 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
         value = one_default(name, value)
         if value is not None:
             overrides[name] = value
+    if "v_top" in overrides or "phidot_top" in overrides:
+        overrides["phi"] = 0.0  # an option's speed is the top's, whatever the file's phi
     # both outputs can be fed back: the summary and the orbit point by point
     outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
-    reader = request_reader(source, VERTICAL_FIELDS, overrides, VERTICAL_ECHO, outputs, POINTS_ONLY_ECHO)
-    batches = input_requests(reader, _vertical_chunk(points), vertical_requests)
+    reader = request_reader(source, {**VERTICAL_FIELDS, **PHI_FIELD}, overrides, VERTICAL_ECHO, outputs)
+    batches = input_requests(reader, _vertical_chunk(points), requests_at_phi)
     return Chunks(_vertical_work(points, stability, keep)(batches))

@@ -381,16 +381,16 @@ def cli():
 
     \b
     Examples:
-      deathsphere orbit --theta 60 --alpha 10          one orbit, every quantity
+      deathsphere orbit --theta 60 --alpha 10     one orbit, every quantity
       deathsphere orbit --theta 30:90:15 --alpha 10 --format csv
-      deathsphere vertical --theta 90 --v-top 6         a vertical loop
+      deathsphere vertical --theta 90 --v-top 6   a vertical loop
       deathsphere orbit --body sphere --theta 60 --omega3 80
       deathsphere sweep --theta 5:175:1 --alpha 1:89:1 --only ok
-      deathsphere map                                   the allowed region (paper's figure)
-      deathsphere limits --mu 1 --max-g 5               the highest orbit a rider can hold
-      deathsphere table1                                the paper's Table 1, checked
-      deathsphere verify                                every claim of the paper, checked
-      deathsphere simulate --theta 60 --alpha 10        integrate the exact equations
+      deathsphere map                             the allowed region
+      deathsphere limits --mu 1 --max-g 5         the highest orbit possible
+      deathsphere table1                          the paper's Table 1
+      deathsphere verify                          the paper's claims
+      deathsphere simulate --theta 60 --alpha 10  the exact equations
     """
 
 

@@ -31,6 +31,9 @@ def docs_command(topic):
 
     if topic is None:
         topics = docs_topics()
+        if _isatty(sys.stdout):
+            stdout_console().print(topics_view(topics))
+            return
         width = max(map(len, topics))
         for name, title in topics.items():
             click.echo(f"{name:<{width}}  {title}")
@@ -45,3 +48,17 @@ def docs_command(topic):
         stdout_console().print(Markdown(text))
     else:
         click.echo(text, nl=not text.endswith("\n"))
+
+
+def topics_view(topics: dict):
+    """The topics on a terminal: a title longer than the line wraps under
+    itself, so that the names stay one column to read down."""
+    from rich.table import Table
+    from rich.text import Text
+
+    grid = Table.grid(padding=(0, 2))
+    grid.add_column(no_wrap=True)
+    grid.add_column(overflow="fold")
+    for name, title in topics.items():
+        grid.add_row(Text(name), Text(title))  # titles are text, not markup
+    return grid

@@ -22,7 +22,7 @@ from deathsphere.cli.options import (
 @params_options("v_top", "phidot_top", multiple=("v_top", "phidot_top"))
 @setup_options()
 @param_option("points")
-@input_option("theta, v_top or phidot_top, side, a, r, k, g, mu")
+@input_option("theta, v_top or phidot_top, phi (where that speed is: deg from the top, 0), side, a, r, k, g, mu")
 @only_option(api.STATUSES)
 @stability_option(help="Exact stability by Floquet analysis over one lap (docs/stability.md).")
 @output_options()

@@ -307,14 +307,22 @@ def _constant(values: np.ndarray) -> bool:
     return all(str(v) == first for v in values.tolist())
 
 
+#: The columns that make a table one of orbits, and every column the orbit
+#: views read without asking: a table that lacks one (the limits, a
+#: region's boundaries) is shown column by column, never half as an orbit.
+ORBIT_VIEW_COLUMNS = frozenset({"input_row", "body", "side", "theta_deg", "alpha_deg", "a_m", "r_m", "k", "g_m_s2",
+                                "status", "reason", "omega_rad_s"})
+
+
 def rich_table(table: Table, title: str | None = None, total_rows: int | None = None):
     """Terminal view: every quantity for one orbit, a summary row per orbit
-    for many; any other table column by column.  At most MAX_TERMINAL_ROWS
+    for many (a table with every column of :data:`ORBIT_VIEW_COLUMNS`);
+    any other table column by column.  At most MAX_TERMINAL_ROWS
     rows are formatted, with a line saying how many there are
     (``total_rows`` when the caller hands over only the first rows of a
     longer result)."""
     total = row_total(table, total_rows)
-    if "body" not in table or "status" not in table:
+    if not ORBIT_VIEW_COLUMNS <= set(table.names):
         return generic_table(table, title, total)
     if len(table) == 1 and total == 1:
         return one_orbit_table(table)
