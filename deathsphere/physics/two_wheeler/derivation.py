@@ -331,6 +331,7 @@ def main(argv=None) -> int:
     docs/two-wheeler.md sec. 5)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--write", action="store_true", help="rewrite _generated.py")
+    parser.add_argument("--output", type=Path, default=GENERATED, help="where --write writes")
     parser.add_argument("--surface", action="append", choices=SURFACES,
                         help="a surface to generate (repeatable; default: all)")
     args = parser.parse_args(argv)
@@ -342,8 +343,8 @@ def main(argv=None) -> int:
     text = generated_source(surfaces, derivations)
     print(f"generated in {time.perf_counter() - start:.1f} s in all, {len(text.splitlines())} lines")
     if args.write:
-        GENERATED.write_text(text, encoding="utf-8")
-        print(f"wrote {GENERATED.name}")
+        args.output.write_text(text, encoding="utf-8")
+        print(f"wrote {args.output}")
     return 0
 
 
