@@ -36,7 +36,10 @@ def main():
     rng = np.random.default_rng(1)
     q = rng.uniform(-0.3, 0.3, (8, args.n))
     u = rng.uniform(-2.0, 2.0, (8, args.n))
+    q_wall = q + np.array([np.pi / 2] + [0.0] * 7)[:, None]    # around the equator of a 3 m sphere
+    p_wall = motion.parameter_values(bicycle, "sphere", 3.0)
     for name, fn in (("flat_equations", lambda: _generated.flat_equations(q, u, p, 0.0)),
+                     ("sphere_equations", lambda: _generated.sphere_equations(q_wall, u, p_wall, 0.0)),
                      ("accelerations", lambda: motion.accelerations(q, u, p)),
                      ("pitch (Newton)", lambda: motion.pitch(q, p))):
         seconds = best_of(fn, args.repeat)

@@ -157,3 +157,42 @@ def test_the_shipped_code_is_a_fresh_derivation():
                        (_generated.flat_energy(q, u, tuple(p)), (d.kinetic, d.potential))):
         for value, expr in zip(got, exprs):
             assert value[0] == pytest.approx(float(fresh([expr])[0, 0]), rel=1e-12, abs=1e-12)
+
+
+def _sphere_state(r, theta, heading, lean, steer, speed, lean_rate=0.0):
+    p = motion.parameter_values(benchmark_bicycle(), "sphere", r)
+    q = np.zeros(8)
+    q[0], q[motion.HEADING], q[motion.LEAN], q[motion.STEER] = theta, heading, lean, steer
+    q = motion.pitch(q, p, "sphere")
+    u = motion.dependent_speeds(q, np.array([lean_rate, -speed / 0.3, 0.0]), p, "sphere")
+    return p, np.concatenate([q, u])
+
+
+def test_energy_is_conserved_on_the_wall_of_a_sphere():
+    """Inside a sphere of radius 3 m, on the equator, heading along it and
+    leaning into the wall: free motion keeps T + V."""
+    p, x0 = _sphere_state(r=3.0, theta=np.pi / 2, heading=np.pi / 2, lean=-1.0, steer=0.05, speed=8.0)
+    h, _ = _generated.sphere_holonomic(x0[:8], p)
+    assert abs(h[0]) < 1e-12
+    sol = solve_ivp(lambda t, x: motion.state_rates(x, p, surface="sphere"), (0.0, 0.3), x0,
+                    method="DOP853", rtol=1e-12, atol=1e-12)
+    assert sol.success
+    e = motion.energy(sol.y[:8], sol.y[8:], p, "sphere")
+    assert np.abs(e - e[0]).max() < 1e-8 * abs(e[0])
+    # it moved along the wall and its height changed (energy was exchanged)
+    assert np.ptp(sol.y[1]) > 0.3 and np.ptp(sol.y[0]) > 1e-3
+
+
+def test_a_huge_sphere_near_its_floor_is_flat_ground():
+    """The sphere's equations tend to the flat ground's as r grows: at the
+    floor of a sphere of 1e5 m, lean, rear wheel and steer accelerations
+    agree with flat ground's to the curvature's order (w / r = 1e-5); the
+    pitch differs by the sag of the floor under the wheel base, w / (2 r)."""
+    p_flat, x_flat = _initial_state(lean=0.1, steer=0.2, speed=4.0, lean_rate=0.3)
+    p, x = _sphere_state(r=1e5, theta=np.pi - 1e-7, heading=0.0, lean=0.1, steer=0.2, speed=4.0,
+                         lean_rate=0.3)
+    sag = 1.02 / (2 * 1e5)
+    assert abs(x[motion.PITCH] - x_flat[motion.PITCH] - sag) < 0.05 * sag
+    flat = motion.state_rates(x_flat, p_flat)[8:][list(motion.INDEPENDENT)]
+    sphere = motion.state_rates(x, p, surface="sphere")[8:][list(motion.INDEPENDENT)]
+    np.testing.assert_allclose(sphere, flat, rtol=1e-4, atol=1e-4 * np.abs(flat).max())

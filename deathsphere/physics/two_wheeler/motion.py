@@ -21,11 +21,11 @@ import numpy as np
 from deathsphere.physics.two_wheeler import _generated
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["INDEPENDENT", "DEPENDENT", "LEAN", "PITCH", "REAR", "STEER", "parameter_values", "pitch",
+__all__ = ["INDEPENDENT", "DEPENDENT", "HEADING", "LEAN", "PITCH", "REAR", "STEER", "parameter_values", "pitch",
            "dependent_speeds", "full_speeds", "accelerations", "reduced_residual", "energy", "state_rates"]
 
 #: Indices in q and u (both surfaces): heading 2, lean 3, pitch 4, rear wheel 5, steer 6, front wheel 7.
-LEAN, PITCH, REAR, STEER = 3, 4, 5, 6
+HEADING, LEAN, PITCH, REAR, STEER = 2, 3, 4, 5, 6
 #: The independent speeds (lean rate, rear wheel rate, steer rate) and the dependent ones.
 INDEPENDENT = (LEAN, REAR, STEER)
 DEPENDENT = (0, 1, 2, PITCH, 7)
