@@ -15,14 +15,14 @@ from scipy.integrate import solve_ivp
 from deathsphere.physics.two_wheeler import _generated, linear, motion
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES, PRESETS, benchmark_bicycle
 
-# Meijaard et al. (2007), eq. (5.4): the benchmark bicycle's matrices, to 14 digits.
+# Meijaard et al. (2007), numerical results for Table 1: the benchmark bicycle's matrices, to 14 digits.
 PUBLISHED = {
     "M": [[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]],
     "C1": [[0.0, 33.86641391492494], [-0.85035641456978, 1.68540397397560]],
     "K0": [[-80.95, -2.59951685249872], [-2.59951685249872, -0.80329488458618]],
     "K2": [[0.0, 76.59734589573222], [0.0, 2.65431523794604]],
 }
-# Meijaard et al. (2007), sec. 5: the weave and capsize speeds, m/s.
+# Meijaard et al. (2007), numerical results for Table 1: the weave and capsize speeds, m/s.
 WEAVE, CAPSIZE = 4.29238253634111, 6.02426201538837
 # Meijaard et al. (2007), Table 2: eigenvalues at speeds of 0, 4, 5 and 10 m/s.
 TABLE2 = {

@@ -1,8 +1,8 @@
 """Linearisation of the Whipple bicycle's nonlinear equations about upright
 straight running on flat ground: the benchmark's M, C1, K0, K2, the
 eigenvalues against speed and the weave and capsize speeds (Meijaard,
-Papadopoulos, Ruina & Schwab 2007, eqs. (5.2)-(5.4) and sec. 5; here
-computed from the project's own equations, docs/two-wheeler.md sec. 7).
+Papadopoulos, Ruina & Schwab 2007, the linearised equations and their
+numerical results for Table 1; here computed from the project's own equations, docs/two-wheeler.md sec. 7).
 
 The matrices are the derivatives of Kane's reduced equations
 (``motion.reduced_residual``) at lean = steer = 0, rear wheel rate -v/rR,
@@ -32,7 +32,7 @@ _LEAN_STEER = [0, 2]
 
 @dataclass(frozen=True)
 class BenchmarkMatrices:
-    """M, C1, K0, K2 of Meijaard et al. (2007) eq. (5.3), each (2, 2), rows
+    """M, C1, K0, K2 of Meijaard et al. (2007) (the linearised equations), each (2, 2), rows
     and columns (lean, steer); g the gravity they were taken with."""
 
     M: np.ndarray
@@ -61,7 +61,7 @@ def _jacobian(parameters: BicycleParameters, speed: float) -> np.ndarray:
 
 
 def benchmark_matrices(parameters: BicycleParameters) -> BenchmarkMatrices:
-    """M, C1, K0, K2 (Meijaard et al. 2007, eq. (5.3)) from the project's
+    """M, C1, K0, K2 (Meijaard et al. 2007, the linearised equations) from the project's
     nonlinear equations (docs/two-wheeler.md sec. 7).
 
     K0 is the stiffness at rest per unit g, K2 the stiffness at 1 m/s
@@ -86,7 +86,7 @@ def _state_matrix(m: BenchmarkMatrices, speed):
 
 
 def eigenvalues(m: BenchmarkMatrices, speed) -> np.ndarray:
-    """The four eigenvalues at each speed (Meijaard et al. 2007, sec. 5,
+    """The four eigenvalues at each speed (Meijaard et al. 2007,
     Table 2), sorted by real part then imaginary part: (..., 4) complex."""
     values = np.linalg.eigvals(_state_matrix(m, speed))
     order = np.lexsort((values.imag, values.real), axis=-1)
@@ -123,13 +123,13 @@ def _root(function, low, high, samples=200):
 
 def weave_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
     """The speed where the weave pair crosses into the left half plane
-    (Meijaard et al. 2007, sec. 5: 4.29238253634111 m/s for Table 1), by
+    (Meijaard et al. 2007: 4.29238253634111 m/s for Table 1), by
     Brent's method on the Hurwitz determinant; nan if none in [low, high]."""
     return _root(lambda v: _hurwitz(m, v), low, high)
 
 
 def capsize_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
     """The speed where the capsize eigenvalue crosses zero (Meijaard et al.
-    2007, sec. 5: 6.02426201538837 m/s for Table 1): the root of
+    2007: 6.02426201538837 m/s for Table 1): the root of
     det(g K0 + v^2 K2) by Brent's method; nan if none in [low, high]."""
     return _root(lambda v: np.linalg.det(m.g * m.K0 + v**2 * m.K2), low, high)
