@@ -39,7 +39,7 @@ import sympy.physics.mechanics as me
 
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
 
-__all__ = ["SURFACES", "Derivation", "COORDINATES", "derive", "generated_source", "main"]
+__all__ = ["SURFACES", "COORDINATES", "GENERATED", "Derivation", "derive", "generated_functions", "generated_source", "main"]
 
 #: The surfaces: flat ground, and the inside of a sphere of radius r.
 SURFACES = ("flat", "sphere")
@@ -202,10 +202,10 @@ common subexpressions eliminated (sympy.cse), then printed as numpy code.
 Beyond the paper; docs/two-wheeler.md sec. 3-5 documents the coordinates,
 the constraints and every sign.
 
-Every function takes q (8, ...) and u (8, ...) -- the generalised
-coordinates and speeds, a trailing batch axis broadcast -- the parameters p
-in PARAMETER_NAMES order (then the sphere's radius r), each a float or an
-array broadcasting against the batch.  Only functions analytic in their
+Every function takes q (8, ...) and, where it needs them, u (8, ...) -- the
+generalised coordinates and speeds, a trailing batch axis broadcast -- the
+parameters p in PARAMETER_NAMES order (then the sphere's radius r), each a
+float or an array broadcasting against the batch.  Only functions analytic in their
 arguments are used (sin, cos, sqrt, powers), so complex-step derivatives
 pass through.
 """
