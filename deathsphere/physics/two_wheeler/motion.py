@@ -1,0 +1,149 @@
+"""The Whipple bicycle's constrained motion, numerically, from the
+generated equations (beyond the paper; docs/two-wheeler.md sec. 4).
+
+The generated code (``_generated.py``) gives Kane's equations with all
+eight speeds free, M u' = f, and the rolling constraints B u = 0.  Here they
+are imposed: the pitch from the front contact's holonomic constraint, the
+five dependent speeds from the three independent ones (lean rate, rear
+wheel rate, steer rate), and the accelerations either of the whole system
+with the contact forces' multipliers, or of Kane's reduced equations
+A^T (M u' - f) = 0.
+
+Arrays carry the coordinate (or speed) index on axis 0 and a batch on the
+trailing axes, and every step (Newton's iteration included) is analytic, so
+complex-step derivatives pass through.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere.physics.two_wheeler import _generated
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+__all__ = ["INDEPENDENT", "DEPENDENT", "HEADING", "LEAN", "PITCH", "REAR", "STEER", "parameter_values", "pitch",
+           "dependent_speeds", "full_speeds", "accelerations", "reduced_residual", "energy", "state_rates"]
+
+#: Indices in q and u (both surfaces): heading 2, lean 3, pitch 4, rear wheel 5, steer 6, front wheel 7.
+HEADING, LEAN, PITCH, REAR, STEER = 2, 3, 4, 5, 6
+#: The independent speeds (lean rate, rear wheel rate, steer rate) and the dependent ones.
+INDEPENDENT = (LEAN, REAR, STEER)
+DEPENDENT = (0, 1, 2, PITCH, 7)
+
+#: Newton iterations for the pitch: quadratic convergence from the upright
+#: pitch reaches float64 in 5 for leans and steers below 1 rad; 3 spare.
+_NEWTON = 8
+
+
+def parameter_values(parameters: BicycleParameters, surface: str = "flat", r=None) -> tuple:
+    """The generated code's parameter tuple: Table 1 of Meijaard et al.
+    (2007) in order, then the sphere's radius (beyond the paper;
+    docs/two-wheeler.md sec. 1)."""
+    values = parameters.values()
+    if surface == "sphere":
+        if r is None:
+            raise ValueError("the sphere needs its radius r")
+        return values + (r,)
+    return values
+
+
+def _functions(surface):
+    return (getattr(_generated, f"{surface}_equations"), getattr(_generated, f"{surface}_holonomic"),
+            getattr(_generated, f"{surface}_energy"))
+
+
+def pitch(q, p, surface: str = "flat"):
+    """q with its pitch solved from the front contact's holonomic constraint
+    by Newton's method from the given pitch (beyond the paper;
+    docs/two-wheeler.md sec. 3.2)."""
+    _, holonomic, _ = _functions(surface)
+    q = np.array(q, dtype=np.result_type(q, float), copy=True)
+    for _ in range(_NEWTON):
+        h, dh = holonomic(q, p)
+        q[PITCH] = q[PITCH] - h[0] / dh[0]
+    return q
+
+
+def _split(B):
+    """B (5, 8, ...) -> its dependent (..., 5, 5) and independent (..., 5, 3) columns, batch first."""
+    B = np.moveaxis(B, (0, 1), (-2, -1))
+    return B[..., list(DEPENDENT)], B[..., list(INDEPENDENT)]
+
+
+def _null_space(B):
+    """A (..., 8, 3) with u = A u_ind satisfying B u = 0."""
+    dep, ind = _split(B)
+    A = np.zeros(dep.shape[:-2] + (8, 3), dtype=dep.dtype)
+    A[..., list(INDEPENDENT), :] = np.eye(3)
+    A[..., list(DEPENDENT), :] = -np.linalg.solve(dep, ind)
+    return A
+
+
+def dependent_speeds(q, u_ind, p, surface: str = "flat"):
+    """All eight speeds from the three independent ones (lean, rear wheel,
+    steer rates) through the rolling constraints B u = 0 (beyond the paper;
+    docs/two-wheeler.md sec. 3.3)."""
+    return full_speeds(q, u_ind, p, surface)[0]
+
+
+def full_speeds(q, u_ind, p, surface: str = "flat"):
+    """(u, A): the eight speeds and the null-space map A (..., 8, 3) of the
+    rolling constraints at q (beyond the paper; docs/two-wheeler.md sec. 4)."""
+    equations, _, _ = _functions(surface)
+    zero_u = np.zeros((8,) + np.shape(q)[1:])
+    B = equations(q, zero_u, p, 0.0)[2]
+    A = _null_space(B)
+    u = np.einsum("...ij,j...->i...", A, u_ind)
+    return u, A
+
+
+def accelerations(q, u, p, steer_torque=0.0, surface: str = "flat"):
+    """(u', lambda): the accelerations of all eight speeds and the
+    multipliers of the five rolling constraints, from M u' - f = B^T lambda,
+    B u' = -B' u (beyond the paper; docs/two-wheeler.md sec. 4)."""
+    equations, _, _ = _functions(surface)
+    M, f, B, bias = equations(q, u, p, steer_torque)
+    M = np.moveaxis(M, (0, 1), (-2, -1))
+    Bt = np.moveaxis(B, (0, 1), (-2, -1))
+    n = M.shape[:-2]
+    K = np.zeros(n + (13, 13), dtype=np.result_type(M, Bt))
+    K[..., :8, :8] = M
+    K[..., :8, 8:] = -np.swapaxes(Bt, -1, -2)
+    K[..., 8:, :8] = Bt
+    rhs = np.concatenate([np.moveaxis(f, 0, -1), -np.moveaxis(bias, 0, -1)], axis=-1)
+    x = np.linalg.solve(K, rhs[..., None])[..., 0]
+    x = np.moveaxis(x, -1, 0)
+    return x[:8], x[8:]
+
+
+def reduced_residual(q, u_ind, udot_ind, p, steer_torque=0.0, surface: str = "flat"):
+    """Kane's equations of the constrained bicycle, A^T (M u' - f) with
+    u = A u_ind and u' = A u_ind' + a (B a = -B' u), for the independent
+    speeds (lean, rear wheel, steer): shape (3, ...) (beyond the paper;
+    docs/two-wheeler.md sec. 4)."""
+    equations, _, _ = _functions(surface)
+    u, A = full_speeds(q, u_ind, p, surface)
+    M, f, B, bias = equations(q, u, p, steer_torque)
+    dep, _ = _split(B)
+    a = np.zeros(A.shape[:-1], dtype=np.result_type(A, bias))
+    a[..., list(DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
+    udot = np.einsum("...ij,j...->...i", A, udot_ind) + a
+    M = np.moveaxis(M, (0, 1), (-2, -1))
+    force = np.einsum("...ij,...j->...i", M, udot) - np.moveaxis(f, 0, -1)
+    return np.moveaxis(np.einsum("...ij,...i->...j", A, force), -1, 0)
+
+
+def energy(q, u, p, surface: str = "flat"):
+    """Kinetic plus potential energy, J (beyond the paper;
+    docs/two-wheeler.md sec. 6)."""
+    _, _, energies = _functions(surface)
+    kinetic, potential = energies(q, u, p)
+    return kinetic[0] + potential[0]
+
+
+def state_rates(x, p, steer_torque=0.0, surface: str = "flat"):
+    """d/dt of the state x = (q, u) (16, ...): q' = u and u' from
+    :func:`accelerations` (beyond the paper; docs/two-wheeler.md sec. 4)."""
+    q, u = x[:8], x[8:]
+    udot, _ = accelerations(q, u, p, steer_torque, surface)
+    return np.concatenate([u, udot])
