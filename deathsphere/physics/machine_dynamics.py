@@ -16,14 +16,16 @@ Equations (docs/machine.md sec. 5):
 * rolling: dC/dt = -w x (P - C);  de1/dt = w x e1;
 * frame rate: omega_f = w - (w.e1) e1 + psi e1,  psi = -(de3/dt).e2;
 * wheels' spin relative to the frame: s = w.e1 - psi;
-* Newton: F = m (d2G/dt2 + g z);
-* Euler about G: dL_G/dt = (P - G) x F + M_p e1,
+* Newton: F + lambda f = m (d2G/dt2 + g z), F the contact force;
+* Euler about G: dL_G/dt = (P - G) x F + lambda (e2 x n) + (Q - G) x lambda f,
   L_G = I_roll e2 (e2.omega_f) + I_pitch e1 (e1.omega_f) + I_yaw e3 (e3.omega_f) + J s e1,
-  M_p the pitch moment of the constraint that holds the frame's pitch;
+  lambda (e2 x n) and lambda f, f = (e2 - (n.e2) n)/|Q| at the crown point,
+  the ideal reaction of the constraint n.e2 = 0 (n = Q/|Q|) that holds the
+  frame's pitch (:func:`_pitch_reaction`);
 * the wheels' axial balance: J dw/dt . e1 = ((P - C) x F) . e1 (free axle).
 
 The accelerations enter through d2G/dt2 and dL_G/dt affinely in (dw/dt,
-M_p): the residual of the four equations is evaluated for four trial
+lambda): the residual of the four equations is evaluated for four trial
 accelerations (the geometry's derivatives written out in :class:`GeometryRates`,
 the angular momentum's rate by first-order Taylor arithmetic, :class:`_Jet`)
 and solved as a 4x4 linear system per body.  Only +, -, *, / and sqrt are
@@ -171,7 +173,8 @@ def _residuals(state, p: MachineParams, Wd):
     ``state`` for k trial wheel accelerations ``Wd`` (3, k, ...) and zero
     pitch moment, with the contact forces F (3, k, ...) [N] they need, the
     rates dC/dt and dE/dt (3, ...) and the axle e1 (3, ...).  The residual
-    is affine in (dw/dt, M_p): R = b + A dw/dt - (e1, 0) M_p."""
+    is affine in (dw/dt, lambda): R = b + A dw/dt - k lambda, k the pitch
+    reaction's column (:func:`_pitch_reaction`, returned with its force)."""
     C, E, W = state[0:3], state[3:6], state[6:9]
     a, t, h, g, m = p.a, p.t, p.h, p.g, p.mass
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
@@ -245,7 +248,7 @@ def _trial_accelerations(shape, dtype):
 
 def _acceleration_system(state, p: MachineParams):
     """(A, b) of the accelerations: A (..., 4, 4) x = b (..., 4) for
-    x = (dw/dt, M_p), from the residual at the four trials, with the forces
+    x = (dw/dt, lambda), from the residual at the four trials, with the forces
     of the trials (3, 4, ...) and the rates dC/dt, dE/dt, e1."""
     shape = np.broadcast_shapes(state.shape[1:], np.shape(p.a))
     Wd = _trial_accelerations(shape, state.dtype if np.iscomplexobj(state) else float)
@@ -273,7 +276,8 @@ def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
     """d(state)/dt of the machine's exact equations (module docstring;
     docs/machine.md eqs. M16-M19); ``state`` (9, ...) real or complex.
     ``frame_rate`` [rad/s]: components in a frame turning at that rate about
-    +z.  With ``forces`` also returns (F/m (3, ...), M_p / m)."""
+    +z.  With ``forces`` also returns (F/m (3, ...), lambda / m): the contact
+    force per unit mass and the pitch constraint's multiplier."""
     state = np.asarray(state)
     Am, bm, F, vC, Edot, fpitch = _acceleration_system(state, p)
     x = np.moveaxis(np.linalg.solve(Am, bm[..., None])[..., 0], -1, 0)   # (4, ...)
@@ -290,7 +294,7 @@ def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
 def _rhs_directional(X0, dirs, p: MachineParams, frame_rate, step=COMPLEX_STEP):
     """The Jacobian of :func:`machine_rhs` at the real states X0 (9, n)
     along ``dirs`` (9, d, n), exactly (complex step): the accelerations x =
-    (dw/dt, M_p) solve A(X) x = b(X), so along dX, A dx = -dR/dX . dX with
+    (dw/dt, lambda) solve A(X) x = b(X), so along dX, A dx = -dR/dX . dX with
     the residual R(X, x) held at the solved x.  One complex evaluation of
     the residual at that x replaces complex trials of all four (the same
     derivative, in a quarter of the second-order work)."""

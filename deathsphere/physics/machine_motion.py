@@ -66,8 +66,8 @@ def machine_rates(state, p: MachineParams) -> dict:
 
 
 def machine_contact_force(state, p: MachineParams) -> dict:
-    """The contact force per unit mass from eq. M18, F/m = d2G/dt2 + g z,
-    with the same keys as :func:`deathsphere.physics.dynamics.contact_force`:
+    """The contact force per unit mass from eq. M18, F/m = d2G/dt2 + g z
+    less the pitch constraint's force lambda f/m, with the same keys as :func:`deathsphere.physics.dynamics.contact_force`:
     ``force`` (3, ...), ``normal`` (the part pressing tyre and sphere
     together, -F.n with n = P/|P|; > 0 while contact holds), ``friction``
     (3, ...) the tangential part, ``friction_magnitude`` and ``mu_required``
@@ -93,9 +93,8 @@ def machine_energy(state, p: MachineParams):
     (the locked inertia I holds the wheels' polar moments, so their spin
     relative to the frame adds the last two terms), E = T + m g G_z.
 
-    Conserved on the paper's wheel; for a machine off its steady orbits the
-    pitch moment M_p of eq. M18 does work (docs/machine.md sec. 5), so E
-    drifts: a limit of one contact, not of the integration."""
+    Conserved: the contact rolls and the pitch constraint's reaction is
+    ideal (docs/machine.md sec. 5), so its drift is the integrator's error."""
     state = np.asarray(state)
     rt = machine_rates(state, p)
     om = rt["omega_f"]
