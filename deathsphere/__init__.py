@@ -41,6 +41,7 @@ _HOME = {
     "vertical_input": "api",
     "vertical_sweep": "api",
     "ride": "api",
+    "ride_sweep": "api",
     "Machine": "api",
     "Setup": "model",
     "Table": "model",

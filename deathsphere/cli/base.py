@@ -227,6 +227,20 @@ def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
     return tally
 
 
+def collect(chunks, label: str):
+    """Every table of an :class:`~deathsphere.api.Chunks` joined into one
+    (a result needed whole, e.g. to summarise it), with the progress bar
+    of :func:`stream` while they are evaluated."""
+    from deathsphere.table import Table
+
+    tables = []
+    with progress(label, chunks.total) as bar:
+        for table in chunks:
+            tables.append(table)
+            bar.update(chunks.done, chunks.total)
+    return Table.concat(tables)
+
+
 def finish(tally: Tally) -> None:
     """Exit status 1, with a note on stderr, when some rows were invalid."""
     if tally.invalid:

@@ -8,15 +8,20 @@ import click
 import numpy as np
 
 from deathsphere import api
-from deathsphere.cli.base import choose_format, cli, emit
+from deathsphere.cli.base import OutputPath, choose_format, cli, collect, emit, finish, stream
 from deathsphere.cli.options import (
+    jobs_option,
     machine_from_options,
     machine_options,
     only_option,
     output_options,
     param_option,
+    scheduler_option,
+    single,
     stability_option,
 )
+from deathsphere.cli.orbit import SWEEP_FORMATS, sweep_format
+from deathsphere.writers.stream import FORMATS
 
 def _axis(name: str, values):
     """The values of a repeated option (values and start:stop:step ranges,
@@ -49,10 +54,15 @@ def _axis(name: str, values):
                    "friction and head clearance.")
 @only_option(api.STATUSES)
 @stability_option()
-@output_options()
+@jobs_option()
+@scheduler_option()
+@single("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
+        help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
+             "of stdout.  Parquet needs the fast extra.")
+@output_options(FORMATS + ("parquet",))
 def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
                  roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
-                 vertical, v_top, summary, only, stability, fmt):
+                 vertical, v_top, summary, only, stability, jobs, scheduler, output, fmt):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
     Every combination of the --theta (or --height) and --alpha (or --speed)
@@ -70,7 +80,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
+      deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 --output ride.parquet
     """
+    fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
@@ -80,7 +92,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
         table = api.ride(_axis("theta", theta)[:, None], vertical=True, v_top=_axis("v_top", v_top)[None, :],
                          machine=chosen, only=only or None, **setup)
-        emit([table], choose_format(fmt), f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)")
+        emit([table], fmt, f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)", output=output)
         return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
@@ -90,19 +102,18 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed, not both")
     if not alpha and not speed:
         raise click.UsageError("give --alpha or --speed")
-    where = {"theta": _axis("theta", theta)[:, None]} if theta else {"height": _axis("height", height)[:, None]}
-    how = {"alpha": _axis("alpha", alpha)[None, :]} if alpha else {"speed": _axis("speed", speed)[None, :]}
+    where = {"theta": list(theta)} if theta else {"height": list(height)}
+    how = {"alpha": list(alpha)} if alpha else {"speed": list(speed)}
     setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("mu", mu), ("max_g", max_g))
              if v is not None}
-    table = api.ride(**where, **how, machine=chosen, stability=stability, only=None if summary else (only or None),
-                     **setup)
-    fmt = choose_format(fmt)
+    chunks = api.ride_sweep(**where, **how, machine=chosen, stability=stability,
+                            only=None if summary else (only or None), jobs=jobs or 1, scheduler=scheduler, **setup)
     if summary:
-        table = api.ride_summary(table)
-        title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"
-    else:
-        title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
-    emit([table], fmt, title)
+        table = api.ride_summary(collect(chunks, "ride"))
+        emit([table], fmt, f"Feasible speeds by height: {chosen.name} (docs/machine.md)", output=output)
+        return
+    title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
+    finish(stream(chunks, fmt, label="ride", title=title, output=output))
 
 
 @cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")
