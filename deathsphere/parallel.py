@@ -44,7 +44,7 @@ def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int, client=No
     from concurrent.futures import ProcessPoolExecutor
 
     pending = deque()
-    pool = ProcessPoolExecutor(jobs)
+    pool = ProcessPoolExecutor(jobs, initializer=_leave_stops_to_the_caller)
     try:
         for item in items:
             pending.append(pool.submit(work, item))
@@ -55,3 +55,17 @@ def ordered_map(work: Callable[[T], R], items: Iterable[T], jobs: int, client=No
     finally:
         # a reader gone (`| head`), a failed write or Ctrl-C: drop queued work
         pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _leave_stops_to_the_caller() -> None:
+    """In a worker: Ctrl-C (which the terminal sends to every process of the
+    group) and SIGTERM sent to the group are the caller's to act on: it
+    stops the pool itself, the chunk in hand finished.  A worker that raised
+    KeyboardInterrupt or inherited the caller's SIGTERM handler would print
+    a traceback each; one that died of SIGTERM would leave the pool's
+    shutdown waiting for it."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+

@@ -72,16 +72,21 @@ def test_a_table_file_that_fails_midway_is_status_3_and_named(run, tmp_path, mon
     assert os.listdir(tmp_path) == []
 
 
-def _stop_when_writing(tmp_path, args, sig):
-    """Start the command, send ``sig`` once its temporary file exists;
+def _stop_when_writing(tmp_path, args, sig, group=False):
+    """Start the command, send ``sig`` once its temporary file exists (to
+    its whole process group with ``group``, as a terminal's Ctrl-C does);
     (status, stderr)."""
     proc = subprocess.Popen([sys.executable, "-m", "deathsphere", *args], cwd=tmp_path, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=subprocess.PIPE, text=True, start_new_session=group)
     try:
-        while not _leftovers(tmp_path) and proc.poll() is None:
+        # with ``group``: once rows are written, so that the workers are running
+        while proc.poll() is None and not (_leftovers(tmp_path) and (not group or _written(tmp_path))):
             time.sleep(0.02)
         assert proc.poll() is None, "the command ended before it wrote anything"
-        proc.send_signal(sig)
+        if group:
+            os.killpg(proc.pid, sig)
+        else:
+            proc.send_signal(sig)
         _, err = proc.communicate(timeout=60)
     finally:
         proc.kill()
@@ -96,6 +101,25 @@ def test_a_stopped_parquet_sweep_leaves_no_file(tmp_path, sig, status, word):
         tmp_path, ["sweep", "--theta", "0:180:0.01", "--alpha", "-90:90:0.05", "--output", "big.parquet"], sig)
     assert code == status
     assert err.splitlines() == [f"deathsphere: {word}; not written: big.parquet"]
+    assert os.listdir(tmp_path) == []
+
+
+def _written(folder):
+    try:
+        return any(os.path.getsize(temp) for temp in _leftovers(folder))
+    except OSError:
+        return False
+
+
+@pytest.mark.parametrize("sig, status, word", [(signal.SIGINT, 130, "interrupted"),
+                                               (signal.SIGTERM, 143, "terminated")])
+def test_a_stop_sent_to_every_process_of_a_parallel_sweep_is_one_line(tmp_path, sig, status, word):
+    # the worker processes get the signal too: the caller alone acts on it
+    code, err = _stop_when_writing(
+        tmp_path, ["sweep", "--theta", "0:180:0.01", "--alpha", "-90:90:0.05", "--jobs", "2", "--output", "big.csv"],
+        sig, group=True)
+    assert code == status
+    assert err.splitlines() == [f"deathsphere: {word}; not written: big.csv"]
     assert os.listdir(tmp_path) == []
 
 
