@@ -3,6 +3,8 @@ and a stopped command exits with the contract's status, in one line."""
 
 import glob
 import os
+import pathlib
+import re
 import signal
 import subprocess
 import sys
@@ -10,7 +12,24 @@ import time
 
 import pytest
 
+import deathsphere
 from deathsphere.writers.atomic import atomic_file, atomic_path, not_written
+
+
+#: What writes a file (or starts an encoder that does), outside a docstring's example.
+WRITES = re.compile(r"""savefig\(|ParquetWriter\(|\.write_table\(|write_bytes\(|write_text\(|Popen\(|"""
+                    r"""open\([^)]*["'][wax]b?["']""")
+
+
+def test_every_module_that_writes_a_file_writes_it_through_atomic():
+    package = pathlib.Path(deathsphere.__file__).parent
+    unguarded = []
+    for path in package.rglob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        lines = [line for line in text.splitlines() if WRITES.search(line) and ">>>" not in line]
+        if lines and path.name != "atomic.py" and "deathsphere.writers.atomic" not in text:
+            unguarded.append(f"{path.relative_to(package)}: {lines[0].strip()}")
+    assert unguarded == []
 
 
 def _leftovers(folder):
@@ -89,6 +108,11 @@ def _stop_when_writing(tmp_path, args, sig, group=False):
             proc.send_signal(sig)
         _, err = proc.communicate(timeout=60)
     finally:
+        if group:  # the workers too, should the test fail
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
         proc.kill()
     return proc.returncode, err
 
