@@ -174,3 +174,22 @@ def _encoders_writing_in(folder):
         if str(folder) in text and "ffmpeg" in text:
             found.append(text)
     return found
+
+
+def test_a_stop_inside_the_import_machinery_is_deferred_not_lost():
+    """Raised inside importlib's own code the exception would be swallowed
+    (and could leave a module lock held): it is retried once out of it."""
+    from types import SimpleNamespace
+
+    import deathsphere.cli.base as base
+
+    inside = SimpleNamespace(f_code=SimpleNamespace(co_filename="<frozen importlib._bootstrap>"))
+    try:
+        base._raise_or_defer(base.Terminated, inside)
+        assert base._DEFERRED == [base.Terminated]
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+    outside = SimpleNamespace(f_code=SimpleNamespace(co_filename=__file__))
+    with pytest.raises(base.Terminated):
+        base._retry_deferred(signal.SIGALRM, outside)
+    assert base._DEFERRED == []

@@ -350,7 +350,7 @@ class DeathsphereGroup(click.Group):
             sys.exit(ExitCode.OK)
         _unwritten()  # only this command's files are named (an API caller's earlier ones are not)
         try:
-            with _terminate_as_exception():
+            with _stops_as_exceptions():
                 code = super().main(args=args, prog_name=prog_name or "deathsphere",
                                     complete_var=complete_var, standalone_mode=False, **extra)
         except click.exceptions.UsageError as exc:
@@ -386,33 +386,69 @@ class Terminated(BaseException):
     partial file).  A BaseException, so that no ``except Exception`` takes it."""
 
 
-def _raise_terminated(signum, frame):
-    raise Terminated()
+#: Stops that arrived inside the import machinery, to raise once out of it.
+_DEFERRED: list[type[BaseException]] = []
+
+
+def _stop_handler(stop: type[BaseException]):
+    """A signal handler raising ``stop`` where the program is, except inside
+    importlib's own code (a module lock's clean-up, run at any moment): an
+    exception raised there is swallowed ("Exception ignored in ...") and
+    can leave the module locks held, so that a thread importing at the
+    same time (Parquet's warm-up) and the command waiting for it hang.
+    There the stop is deferred and retried 10 ms later (SIGALRM)."""
+    def handler(signum, frame):
+        _raise_or_defer(stop, frame)
+    return handler
+
+
+def _raise_or_defer(stop, frame):
+    import signal
+
+    if frame is not None and frame.f_code.co_filename.startswith("<frozen importlib"):
+        _DEFERRED.append(stop)
+        signal.setitimer(signal.ITIMER_REAL, 0.01)
+        return
+    raise stop()
+
+
+def _retry_deferred(signum, frame):
+    if _DEFERRED:
+        stop = _DEFERRED[0]
+        _DEFERRED.clear()
+        _raise_or_defer(stop, frame)
 
 
 @contextmanager
-def _terminate_as_exception():
-    """SIGTERM raises :class:`Terminated` while a command runs (only the main
-    thread can set a handler: under a test runner's thread nothing changes)."""
+def _stops_as_exceptions():
+    """While a command runs, Ctrl-C raises KeyboardInterrupt and SIGTERM
+    :class:`Terminated` (never inside the import machinery: see
+    :func:`_stop_handler`).  Only the main thread can set a handler: under
+    a test runner's thread nothing changes."""
     import signal
     import threading
 
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous = signal.signal(signal.SIGTERM, _raise_terminated)
+    handlers = {signal.SIGINT: _stop_handler(KeyboardInterrupt), signal.SIGTERM: _stop_handler(Terminated),
+                signal.SIGALRM: _retry_deferred}
+    previous = {sig: signal.signal(sig, handler) for sig, handler in handlers.items()}
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        _DEFERRED.clear()
+        for sig, handler in previous.items():
+            signal.signal(sig, signal.SIG_DFL if handler is None else handler)
 
 
 def _unwritten() -> str:
     """'' or, after a failed or stopped write, the note that names the
     file(s) left unwritten (nothing is under their name)."""
-    from deathsphere.writers.atomic import not_written
-
-    names = not_written()
+    # a command that wrote no file never imported the writer: nothing to say, nothing to import
+    atomic = sys.modules.get("deathsphere.writers.atomic")
+    names = atomic.not_written() if atomic is not None else []
     return f"; not written: {', '.join(names)}" if names else ""
 
 

@@ -49,17 +49,22 @@ def atomic_path(path) -> Iterator[str]:
     final = os.fspath(path)
     folder, name = os.path.split(os.path.abspath(final))
     ext = os.path.splitext(name)[1]
-    # created empty and private (mkstemp's 0600); the final mode is set at the rename
-    fd, temp = tempfile.mkstemp(prefix=f".{name}.", suffix=PART + ext, dir=folder)
-    os.close(fd)
+    temp = None
     try:
+        # created empty and private (mkstemp's 0600; the final mode is set
+        # at the rename), with the signals held: a stop cannot fall between
+        # the file's creation and its name being known to the clean-up
+        with signals_held():
+            fd, temp = tempfile.mkstemp(prefix=f".{name}.", suffix=PART + ext, dir=folder)
+            os.close(fd)
         yield temp
         _sync(temp)
         os.chmod(temp, _mode(final))
         os.replace(temp, final)
     except BaseException:
         with signals_held():
-            _remove(temp)
+            if temp is not None:
+                _remove(temp)
             _abandoned.append(final)
         raise
     _sync_folder(folder)
