@@ -155,7 +155,7 @@ def test_an_interrupted_mp4_leaves_no_file_and_no_encoder(tmp_path):
         pytest.skip("ffmpeg is not installed")
     code, err = _stop_when_writing(
         tmp_path, ["simulate", "--theta", "60", "--alpha", "10", "--periods", "1", "--output", "run.mp4"],
-        signal.SIGINT)
+        signal.SIGINT, group=True)  # as a terminal's Ctrl-C: ffmpeg is sent it too
     assert code == 130
     assert err.splitlines() == ["deathsphere: interrupted; not written: run.mp4"]
     assert os.listdir(tmp_path) == []
