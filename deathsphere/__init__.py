@@ -42,6 +42,7 @@ _HOME = {
     "vertical_sweep": "api",
     "ride": "api",
     "ride_summary": "api",
+    "ride_sweep": "api",
     "Machine": "api",
     "machines_table": "api",
     "machine_file": "api",
