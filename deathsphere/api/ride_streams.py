@@ -10,10 +10,19 @@ from functools import partial
 
 import numpy as np
 
-from deathsphere.api.arguments import INF, G, R, checked_axis, checked_scalar, sphere_radius
+from deathsphere.api.arguments import (
+    INF,
+    TILTS_PER_SPEED,
+    G,
+    R,
+    checked_axis,
+    checked_scalar,
+    refuse_large_grid,
+    sphere_radius,
+)
 from deathsphere.api.machines import as_machine
 from deathsphere.api.orbits import MAX_CHUNK_ROWS
-from deathsphere.api.rides import ride
+from deathsphere.api.rides import MAX_RIDE_ROWS, ride
 from deathsphere.api.streams import Chunks, cluster_of, evaluated
 from deathsphere.params import CHUNK, ParameterError
 from deathsphere.table import Table
@@ -73,6 +82,11 @@ def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, 
     setup = {"r": checked_scalar("r", sphere_radius(r, diameter)), "g": checked_scalar("g", g),
              "mu": checked_scalar("mu", mu), "max_g": checked_scalar("max_g", max_g)}
     fixed = dict(machine=m, only=only, stability=stability, **setup)
+    # each axis is checked whole below (held in memory once): refuse, from
+    # its count alone, one longer than ride holds; the grid itself streams
+    for name, values in (where, how):
+        refuse_large_grid({name: len(values)}, command="ride", limit=MAX_RIDE_ROWS, param=name,
+                          per_point=TILTS_PER_SPEED if name == "speed" else 1)
     # every value of each axis is checked now, by ride's own rules (a
     # height above the globe, a wheel that does not fit): along one line
     # and one column of the grid, without the stability analysis
