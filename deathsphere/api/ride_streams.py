@@ -86,7 +86,7 @@ def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, 
     # its count alone, one longer than ride holds; the grid itself streams
     for name, values in (where, how):
         refuse_large_grid({name: len(values)}, command="ride", limit=MAX_RIDE_ROWS, param=name,
-                          per_point=TILTS_PER_SPEED if name == "speed" else 1)
+                          per_point=TILTS_PER_SPEED if how[0] == "speed" else 1)
     # every value of each axis is checked now, by ride's own rules (a
     # height above the globe, a wheel that does not fit): along one line
     # and one column of the grid, without the stability analysis
