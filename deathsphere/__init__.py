@@ -33,6 +33,7 @@ _HOME = {
     "region_cells": "api",
     "region_curves": "api",
     "simulate": "api",
+    "animation_options": "api",
     "stability": "api",
     "sweep": "api",
     "table1": "api",

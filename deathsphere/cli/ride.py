@@ -104,7 +104,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h \\
           --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
-      deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 --output ride.parquet
+      deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 \\
+          --output ride.parquet
     """
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 

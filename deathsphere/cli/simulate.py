@@ -114,7 +114,8 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
       deathsphere simulate --machine stunt125 --theta 60 --speed 30km/h -r 8ft
       deathsphere simulate --machine stunt125 --theta 90 --alpha 15 --output v.gif
-      deathsphere simulate --theta 60 --alpha 10 --output run.mp4 --loop-seconds 4 --playback 0.5
+      deathsphere simulate --theta 60 --alpha 10 --output run.mp4 \\
+          --loop-seconds 4 --playback 0.5
     """
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
