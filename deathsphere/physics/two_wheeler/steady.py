@@ -1,0 +1,340 @@
+"""Steady turns of the Whipple bicycle: inside a sphere, the bicycle turning
+about the vertical axis through the sphere's centre at a constant rate, every
+coordinate but the azimuth and the wheel angles constant; on flat ground, a
+circle of given curvature (beyond the paper; docs/two-wheeler.md sec. 8).
+
+A steady turn has heading pi/2 (the rear contact runs along its parallel,
+the rider's right towards the floor; the mirror image runs the other way
+with lean and steer negated) and three conditions on (lean, steer, rate):
+
+* kinematic: the heading stays constant on the sphere (the front axle lies in
+  the meridian plane of the front contact), on flat ground the heading rate
+  is the curvature times the speed: ``condition(lean, steer) = 0``;
+* Kane's lean row: G_lean + w^2 H_lean = 0, w the rear wheel rate: Kane's
+  equations are quadratic in the speeds, and every speed of a steady turn is
+  proportional to w, so each row is G(q) + w^2 H(q);
+* the steer row gives the steady steer torque T = G_steer + w^2 H_steer.
+
+The rear wheel row then holds by itself (power balance: the height, the
+kinetic energy and the steer angle are constant).  So at a lane every turn
+is a point of one curve lean -> (steer, w^2, T); a speed or a torque picks
+isolated points on it, found by a scan in lean and refined by Newton's
+method in (lean, steer).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere.physics.two_wheeler import _generated, geometry, motion
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+__all__ = ["LEAN_GRID", "configuration", "turn_coefficients", "solve_steer", "lean_curve", "turns_for_speed",
+           "turns_for_torque", "turn_state"]
+
+#: The scan in lean (rad): 0.5 degree steps, up to 89 degrees either side.
+LEAN_GRID = np.deg2rad(np.arange(-89.0, 89.0 + 1e-9, 0.5))
+#: Complex step for derivatives inside Newton's method.
+_STEP = 1e-30
+_NEWTON = 30
+_TOL = 1e-13
+
+
+def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
+    """q (8, ...) of a steady turn: sphere, lane = theta (rear contact's
+    polar angle from the upward vertical); flat, lane = the path's curvature
+    (ignored here); heading pi/2, pitch from the holonomic constraint
+    (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    lane, lean, steer = np.broadcast_arrays(*(np.asarray(x) for x in (lane, lean, steer)))
+    dtype = np.result_type(lane, lean, steer, float)
+    q = np.zeros((8,) + lane.shape, dtype=dtype)
+    if surface == "sphere":
+        q[0] = lane
+    q[motion.HEADING] = np.pi / 2
+    q[motion.LEAN], q[motion.STEER] = lean, steer
+    return motion.pitch(q, motion.parameter_values(parameters, surface, r), surface)
+
+
+def _pitch_holds(q, p, surface):
+    """Where Newton's pitch converged (|constraint| below 1e-10 m, pitch
+    within a radian): elsewhere the configuration does not exist."""
+    h, _ = getattr(_generated, f"{surface}_holonomic")(q.real, p)
+    return (np.abs(h[0]) < 1e-10) & (np.abs(q[motion.PITCH].real) < 1.0)
+
+
+def _condition(lane, q, p, surface):
+    """The kinematic condition per unit rear wheel rate: sphere, the heading
+    rate; flat, heading rate minus curvature times forward speed."""
+    u = motion.dependent_speeds(q, np.stack(np.broadcast_arrays(0.0, -1.0, 0.0 * q[0])), p, surface)
+    return u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - lane * u[1]
+
+
+def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
+    """(condition, G, H) at (lane, lean, steer): Kane's reduced equations of a
+    steady turn are G + w^2 H (rows lean, rear wheel, steer; no steer torque),
+    w the rear wheel rate (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    p = motion.parameter_values(parameters, surface, r)
+    q = configuration(lane, lean, steer, parameters, surface, r)
+    zero = np.zeros((3,) + q.shape[1:])
+    unit = zero.copy()
+    unit[1] = 1.0
+    both = np.concatenate([q, q], axis=-1) if q.ndim > 1 else np.stack([q, q], axis=-1)
+    speeds = np.concatenate([zero, unit], axis=-1) if q.ndim > 1 else np.stack([zero, unit], axis=-1)
+    R = motion.reduced_residual(both, speeds, np.zeros_like(speeds), p, 0.0, surface)
+    n = R.shape[-1] // 2
+    G, R1 = R[..., :n], R[..., n:]
+    if q.ndim == 1:
+        G, R1 = G[..., 0], R1[..., 0]
+    holds = _pitch_holds(q, p, surface)
+    return tuple(np.where(holds, x, np.nan) for x in (_condition(lane, q, p, surface), G, R1 - G))
+
+
+def _initial_steer(lane, lean, parameters, surface, r):
+    """The flat-ground guess: tan(steer) = w kappa cos(lean) / cos(lam),
+    kappa the geodesic curvature of the lane (-cot(theta)/r on the sphere)."""
+    kappa = lane if surface == "flat" else -np.cos(lane) / (r * np.sin(lane))
+    return np.arctan(parameters.w * kappa * np.cos(lean) / np.cos(parameters.lam))
+
+
+def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=None, steer=None):
+    """The steer of a steady turn at each lean (the kinematic condition, by
+    Newton's method with complex-step derivatives from the flat-ground
+    guess); NaN where it does not converge below 1e-12 rad or leaves
+    |steer| < 80 degrees (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    lane, lean = np.broadcast_arrays(np.asarray(lane, float), np.asarray(lean, float))
+    p = motion.parameter_values(parameters, surface, r)
+    delta = _initial_steer(lane, lean, parameters, surface, r) if steer is None else np.array(steer, float)
+    step = np.ones_like(delta)
+    failed = ~np.isfinite(delta)
+    for _ in range(_NEWTON):
+        q = configuration(lane, lean, np.where(failed, 0.0, delta) + 1j * _STEP, parameters, surface, r)
+        c = _condition(lane, q, p, surface)
+        slope = c.imag / _STEP
+        ok = (np.abs(slope) > 1e-300) & np.isfinite(c) & ~failed & _pitch_holds(q, p, surface)
+        step = np.where(ok, c.real / np.where(ok, slope, 1.0), 0.0)
+        failed |= ~ok
+        delta = np.where(failed, 0.0, np.clip(delta - step, -1.5, 1.5))
+        if np.all(failed | ~(np.abs(step) > 1e-14)):
+            break
+    good = ~failed & (np.abs(step) < 1e-12) & (np.abs(delta) < np.deg2rad(80.0))
+    return np.where(good, delta, np.nan)
+
+
+def lean_curve(lane, parameters: BicycleParameters, surface="sphere", r=None, lean=LEAN_GRID):
+    """Every steady turn of each lane as a function of lean: steer, G, H on
+    the grid ``lean`` (lanes (n,), result (n, m); G and H (3, n, m)) (beyond
+    the paper; docs/two-wheeler.md sec. 8)."""
+    lane = np.asarray(lane, float).reshape(-1)
+    L = np.broadcast_to(lean, (lane.size, np.size(lean)))
+    X = np.broadcast_to(lane[:, None], L.shape)
+    steer = solve_steer(X.ravel(), L.ravel(), parameters, surface, r).reshape(L.shape)
+    ok = np.isfinite(steer)
+    _, G, H = turn_coefficients(X.ravel(), L.ravel(), np.where(ok, steer, 0.0).ravel(), parameters, surface, r)
+    G = np.where(ok, G.reshape((3,) + L.shape), np.nan)
+    H = np.where(ok, H.reshape((3,) + L.shape), np.nan)
+    return {"lean": np.array(L), "steer": steer, "G": G, "H": H}
+
+
+def _target(G, H, w2, torque):
+    """The function whose zeros are the turns: for a speed (w2 given) the
+    lean row; for a torque, G_s H_l - G_l H_s - T H_l (w2 eliminated)."""
+    if torque is None:
+        return G[0] + w2 * H[0]
+    return G[2] * H[0] - G[0] * H[2] - torque * H[0]
+
+
+def _brackets(f, lean):
+    """Brackets of the zeros of f sampled on lean (n, m): sign changes, and
+    near tangencies where a parabola through a local minimum of |f| and its
+    neighbours crosses zero between samples (two zeros closer than a step).
+    Returns (row, lean0) starting points."""
+    fin = np.isfinite(f)
+    change = fin[:, :-1] & fin[:, 1:] & (np.sign(f[:, :-1]) != np.sign(f[:, 1:]))
+    rows, cols = np.nonzero(change)
+    a, b = f[rows, cols], f[rows, cols + 1]
+    start = [lean[rows, cols] + a / (a - b) * (lean[rows, cols + 1] - lean[rows, cols])]
+    out_rows = [rows]
+    # tangencies: |f| locally smallest without a sign change
+    mid = fin[:, 1:-1] & fin[:, :-2] & fin[:, 2:]
+    f0, f1, f2 = f[:, :-2], f[:, 1:-1], f[:, 2:]
+    same = (np.sign(f0) == np.sign(f1)) & (np.sign(f1) == np.sign(f2))
+    curv = f0 - 2 * f1 + f2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        vertex = f1 - (f2 - f0) ** 2 / (8 * curv)
+        x = 0.5 * (f0 - f2) / curv
+    near = mid & same & (np.abs(f1) <= np.abs(f0)) & (np.abs(f1) <= np.abs(f2)) & (np.sign(vertex) != np.sign(f1))
+    near &= np.isfinite(x) & (np.abs(x) <= 1)
+    r2, c2 = np.nonzero(near)
+    h = lean[r2, c2 + 2] - lean[r2, c2 + 1]
+    for side in (-1, 1):
+        # the two zeros of the parabola, either side of its vertex
+        disc = np.sqrt(np.maximum(-2 * vertex[r2, c2] / curv[r2, c2], 0.0))
+        start.append(lean[r2, c2 + 1] + (x[r2, c2] + side * disc) * h)
+        out_rows.append(r2)
+    return np.concatenate(out_rows), np.concatenate(start)
+
+
+def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
+    """Newton's method in (lean, steer) on (condition, target), the Jacobian
+    by complex steps; returns lean, steer, converged."""
+    for _ in range(_NEWTON):
+        values = []
+        for dl, ds in ((1j * _STEP, 0.0), (0.0, 1j * _STEP)):
+            c, G, H = turn_coefficients(lane, lean + dl, steer + ds, parameters, surface, r)
+            values.append((c, _target(G, H, w2, torque)))
+        (c, t), (c_s, t_s) = values
+        # scale the condition to the target's size so one tolerance serves both
+        J = np.stack([np.stack([c.imag, c_s.imag], -1), np.stack([t.imag, t_s.imag], -1)], -2) / _STEP
+        rhs = np.stack([c.real, t.real], -1)
+        det = J[..., 0, 0] * J[..., 1, 1] - J[..., 0, 1] * J[..., 1, 0]
+        ok = np.abs(det) > 0
+        det = np.where(ok, det, 1.0)
+        d_lean = (J[..., 1, 1] * rhs[..., 0] - J[..., 0, 1] * rhs[..., 1]) / det
+        d_steer = (J[..., 0, 0] * rhs[..., 1] - J[..., 1, 0] * rhs[..., 0]) / det
+        d_lean, d_steer = np.where(ok, d_lean, np.nan), np.where(ok, d_steer, np.nan)
+        moving = np.isfinite(d_lean) & np.isfinite(d_steer)
+        lean = np.where(moving, lean - np.clip(np.where(moving, d_lean, 0.0), -0.1, 0.1), lean)
+        steer = np.where(moving, steer - np.clip(np.where(moving, d_steer, 0.0), -0.1, 0.1), steer)
+        if not np.any(np.abs(d_lean) + np.abs(d_steer) > _TOL):
+            break
+    return lean, steer, np.abs(d_lean) + np.abs(d_steer) < 1e-10
+
+
+def _solve(lane, curve, w2, torque, parameters, surface, r):
+    """All turns of each lane picked by a speed (w2) or a torque, (n, k)
+    NaN-padded lean and steer, sorted by lean, duplicates merged."""
+    n = np.size(lane)
+    f = _target(curve["G"], curve["H"], w2[:, None] if torque is None else None,
+                None if torque is None else torque[:, None])
+    rows, start = _brackets(f, curve["lean"])
+    lane_r = np.asarray(lane, float)[rows]
+    steer0 = solve_steer(lane_r, start, parameters, surface, r)
+    ok0 = np.isfinite(steer0)
+    rows, start, steer0, lane_r = rows[ok0], start[ok0], steer0[ok0], lane_r[ok0]
+    lean, steer, conv = _refine(lane_r, start, steer0, w2[rows] if torque is None else None,
+                                None if torque is None else torque[rows], parameters, surface, r)
+    _, G, H = turn_coefficients(lane_r, np.where(conv, lean, 0.0), np.where(conv, steer, 0.0), parameters, surface, r)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rate2 = w2[rows] if torque is None else -G[0] / H[0]
+    keep = conv & np.isfinite(rate2) & (rate2 > 0) & (np.abs(lean) < np.pi / 2)
+    rows, lean, steer = rows[keep], lean[keep], steer[keep]
+    order = np.lexsort((lean, rows))
+    rows, lean, steer = rows[order], lean[order], steer[order]
+    dup = np.zeros(rows.size, bool)
+    dup[1:] = (rows[1:] == rows[:-1]) & (np.abs(lean[1:] - lean[:-1]) < 1e-9)
+    rows, lean, steer = rows[~dup], lean[~dup], steer[~dup]
+    counts = np.bincount(rows, minlength=n)
+    k = max(int(counts.max(initial=0)), 1)
+    slot = np.arange(rows.size) - np.repeat(np.cumsum(counts) - counts, counts)
+    L, S = np.full((n, k), np.nan), np.full((n, k), np.nan)
+    L[rows, slot], S[rows, slot] = lean, steer
+    return L, S, counts
+
+
+def turns_for_speed(lane, speed, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+    """Every steady turn of each lane (theta on the sphere, curvature on flat
+    ground) at the rear contact's speed ``speed`` (m/s, what a rear-wheel
+    speedometer reads): (n, k) NaN-padded arrays of :func:`turn_state`, sorted
+    by lean, and ``count`` (n,) (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    lane, speed = (np.asarray(x, float).reshape(-1) for x in np.broadcast_arrays(lane, speed))
+    unique, inverse = np.unique(lane, return_inverse=True)
+    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
+    w2 = (speed / parameters.rR) ** 2
+    L, S, counts = _solve(lane, curve, w2, None, parameters, surface, r)
+    return turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head) | {"count": counts}
+
+
+def turns_for_torque(lane, torque, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+    """Every steady turn of each lane held with the steer torque ``torque``
+    (N m; 0: hands-free), as :func:`turns_for_speed` (beyond the paper;
+    docs/two-wheeler.md sec. 8)."""
+    lane, torque = (np.asarray(x, float).reshape(-1) for x in np.broadcast_arrays(lane, torque))
+    unique, inverse = np.unique(lane, return_inverse=True)
+    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
+    L, S, counts = _solve(lane, curve, None, torque, parameters, surface, r)
+    return turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head) | {"count": counts}
+
+
+def _horizontal(v):
+    return np.stack([v[0], v[1], np.zeros_like(v[2])])
+
+
+def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+    """Everything about the steady turn at (lane, lean, steer), any shape,
+    NaN in gives NaN out (beyond the paper; docs/two-wheeler.md sec. 8):
+    ``omega`` (rad/s, about the vertical; on flat ground the heading rate),
+    ``pitch``, ``steer_torque`` (N m), speeds ``v_rear``, ``v_front``,
+    ``v_cm`` (m/s), per wheel ``normal_*`` and ``friction_*`` (the contact
+    force per total mass, m/s^2: along the inward normal, positive when
+    pushing; the tangential part's magnitude), ``mu_required_*``,
+    ``load_g`` (|total contact force| / weight), ``head_clearance`` (m,
+    r - |head|; +inf on flat ground), ``theta_rear``, ``theta_front``
+    (polar angles of the contacts from the upward vertical), ``q``, ``u``.
+    """
+    p = parameters
+    lane, lean, steer = np.broadcast_arrays(*(np.asarray(x, float) for x in (lane, lean, steer)))
+    shape = lane.shape
+    lane, lean, steer = lane.ravel(), lean.ravel(), steer.ravel()
+    valid = np.isfinite(lean) & np.isfinite(steer) & np.isfinite(lane)
+    lane0, lean0, steer0 = (np.where(valid, x, d) for x, d in ((lane, np.pi / 2 if surface == "sphere" else 0.0),
+                                                                 (lean, 0.0), (steer, 0.0)))
+    values = motion.parameter_values(p, surface, r)
+    _, G, H = turn_coefficients(lane0, lean0, steer0, p, surface, r)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        w2 = np.where(valid, -G[0] / H[0], np.nan)
+    valid &= np.isfinite(w2) & (w2 > 0)
+    w2 = np.where(valid, w2, 0.0)
+    torque = G[2] + w2 * H[2]
+    q = configuration(lane0, lean0, steer0, p, surface, r)
+    u_ind = np.stack([np.zeros_like(w2), -np.sqrt(w2), np.zeros_like(w2)])
+    u = motion.dependent_speeds(q, u_ind, values, surface)
+    _, lam = motion.accelerations(q, u, values, torque, surface)
+    pts = geometry.points(q, p, r, surface, head)
+    Y = pts["frames"]["Y"]
+    v_rear = np.sqrt(w2) * p.rR
+    if surface == "sphere":
+        omega = u[1]
+        n_rear = -pts["frames"]["T"][2]
+        n_front = -pts["Q"] / np.linalg.norm(pts["Q"], axis=0)
+        clearance = r - np.linalg.norm(pts["head"], axis=0)
+        theta_front = np.arccos(np.clip(-pts["Q"][2] / np.linalg.norm(pts["Q"], axis=0), -1, 1))
+
+        def swept(x):
+            return omega * _horizontal(x)
+    else:
+        omega = u[motion.HEADING]
+        n_rear = n_front = np.stack([np.zeros_like(w2), np.zeros_like(w2), -np.ones_like(w2)])
+        clearance = np.full_like(w2, np.inf)
+        theta_front = np.full_like(w2, np.pi)
+
+        def swept(x):
+            # omega (x - centre), the centre P + Y.y / kappa: regular at kappa = 0 (straight)
+            return omega * _horizontal(x - pts["P"]) - v_rear * Y[1]
+
+    bodies = ((p.mB, "rear_frame"), (p.mR, "rear_wheel"), (p.mH, "front_frame"), (p.mF, "front_wheel"))
+    mass = sum(m for m, _ in bodies)
+    # every point turns about the vertical axis: velocity z x swept(x), acceleration -omega swept(x)
+    momentum_rate = sum(-m * omega * swept(pts[k]) for m, k in bodies)
+    gravity = np.stack([np.zeros_like(w2), np.zeros_like(w2), p.g * mass * np.ones_like(w2)])
+    total = momentum_rate - gravity                         # the contact forces on the bicycle
+    front = lam[2] * Y[0] + lam[3] * Y[1] + lam[4] * Y[2]
+    rear = total - front
+    g_cm = sum(m * pts[k] for m, k in bodies) / mass
+    out = {"omega": omega, "pitch": q[motion.PITCH], "steer_torque": torque, "v_rear": v_rear,
+           "v_front": np.linalg.norm(swept(pts["Q"]), axis=0), "v_cm": np.linalg.norm(swept(g_cm), axis=0),
+           "load_g": np.linalg.norm(total, axis=0) / (mass * p.g), "head_clearance": clearance,
+           "theta_rear": lane0 if surface == "sphere" else np.full_like(w2, np.pi), "theta_front": theta_front,
+           "rear_tangential_check": np.stack([np.sum(rear * Y[0], 0) - lam[0], np.sum(rear * Y[1], 0) - lam[1]])}
+    for name, force, n in (("rear", rear, n_rear), ("front", front, n_front)):
+        normal = np.sum(force * n, axis=0)
+        tangential = np.linalg.norm(force - normal * n, axis=0)
+        out[f"normal_{name}"] = normal / mass
+        out[f"friction_{name}"] = tangential / mass
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[f"mu_required_{name}"] = np.where(normal > 0, tangential / np.where(normal > 0, normal, 1.0), np.inf)
+    out = {k: np.where(valid, v, np.nan) for k, v in out.items()}
+    out = {k: v.reshape(v.shape[:-1] + shape) if v.ndim > 1 else v.reshape(shape) for k, v in out.items()}
+    out["q"] = np.where(valid, q, np.nan).reshape((8,) + shape)
+    out["u"] = np.where(valid, u, np.nan).reshape((8,) + shape)
+    out["lean"], out["steer"] = lean.reshape(shape), steer.reshape(shape)
+    return out
