@@ -52,14 +52,23 @@ def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sph
         q[0] = lane
     q[motion.HEADING] = np.pi / 2
     q[motion.LEAN], q[motion.STEER] = lean, steer
-    return motion.pitch(q, motion.parameter_values(parameters, surface, r), surface)
+    # Newton's pitch can run away where no configuration exists (lean near 90
+    # degrees, a vanishing wheel base): those are masked by _pitch_holds
+    p = motion.parameter_values(parameters, surface, r)
+    with np.errstate(over="ignore", invalid="ignore"):
+        q = motion.pitch(q, p, surface)
+    # where it ran away, pitch 0: finite, and _pitch_holds still says no
+    q[motion.PITCH] = np.where(_pitch_holds(q, p, surface), q[motion.PITCH], 0.0)
+    return q
 
 
 def _pitch_holds(q, p, surface):
     """Where Newton's pitch converged (|constraint| below 1e-10 m, pitch
     within a radian): elsewhere the configuration does not exist."""
-    h, _ = getattr(_generated, f"{surface}_holonomic")(q.real, p)
-    return (np.abs(h[0]) < 1e-10) & (np.abs(q[motion.PITCH].real) < 1.0)
+    pitch = q[motion.PITCH].real
+    finite = np.isfinite(pitch) & (np.abs(pitch) < 1.0)
+    h, _ = getattr(_generated, f"{surface}_holonomic")(np.where(finite, q.real, 0.0), p)
+    return finite & (np.abs(h[0]) < 1e-10)
 
 
 def _condition(lane, q, p, surface):

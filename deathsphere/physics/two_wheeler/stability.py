@@ -1,0 +1,104 @@
+"""Self-stability of the Whipple bicycle's steady turns: the eigenvalues of
+the nonlinear equations linearised about a steady turn in the frame turning
+with it (beyond the paper; docs/two-wheeler.md sec. 8.3).
+
+The state in the turning frame: on the sphere (theta, heading, lean, steer,
+lean rate, rear wheel rate, steer rate); on flat ground (lean, steer, lean
+rate, rear wheel rate, steer rate).  Dropped as trivial, because the
+equations do not depend on them: the azimuth (the sphere's symmetry about
+its vertical axis; on flat ground x, y and the heading), the wheel angles
+(round wheels); the pitch is fixed by the other coordinates (holonomic).
+With the steer locked, the steer and the steer rate are dropped too (the
+steer held at its steady value by whatever torque it takes).
+
+One more direction is trivial: E - T steer (energy less the work of the
+constant steer torque) is conserved, so the neighbouring steady turns form a
+family and the Jacobian J has a zero eigenvalue along it; its image is the
+level set of that integral.  The eigenvalues reported are those of J
+restricted to its image (the leading singular vectors): every eigenvalue
+of J but that zero.  Seven states give six eigenvalues on the sphere (free
+steer; four locked), five give four on flat ground (the benchmark's four
+in straight running; two locked).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere.physics.two_wheeler import motion
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "eigenvalues", "verdict"]
+
+_STEP = 1e-30
+#: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).
+STABLE_BELOW = 1e-9
+
+
+def _layout(surface, steer):
+    """Indices of the state's coordinates in q and of its speeds in u_ind."""
+    coords = [0, motion.HEADING] if surface == "sphere" else []
+    coords += [motion.LEAN] + ([motion.STEER] if steer == "free" else [])
+    speeds = [0, 1] + ([2] if steer == "free" else [])
+    return coords, speeds
+
+
+def turn_state_vector(q, u, surface="sphere", steer="free"):
+    """The state (k, ...) of a steady turn from its q, u (8, ...)."""
+    coords, speeds = _layout(surface, steer)
+    ind = np.asarray(u)[list(motion.INDEPENDENT)]
+    return np.concatenate([np.asarray(q)[coords], ind[speeds]])
+
+
+def _rates(x, q_steady, p, torque, surface, steer):
+    """d/dt of the state x (k, n) with the other coordinates at their steady
+    values q_steady (8, n) and, locked, the steer rate 0."""
+    coords, speeds = _layout(surface, steer)
+    q = np.array(q_steady, dtype=np.result_type(x, q_steady))
+    q[coords] = x[:len(coords)]
+    q = motion.pitch(q, p, surface)
+    u_ind = np.zeros((3,) + x.shape[1:], dtype=q.dtype)
+    u_ind[speeds] = x[len(coords):]
+    mass, forcing, u = motion.reduced_mass_and_forcing(q, u_ind, p, torque, surface)
+    mass = mass[..., speeds, :][..., :, speeds]
+    forcing = forcing[..., speeds]
+    udot = np.linalg.solve(mass, forcing[..., None])[..., 0]
+    qdot = u[coords]
+    return np.concatenate([qdot, np.moveaxis(udot, -1, 0)])
+
+
+def jacobian(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None, steer="free"):
+    """The Jacobian (n, k, k) of the state's rates at steady turns (q, u
+    (8, n), the steady steer torque (n,) held constant), by complex steps
+    (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    p = motion.parameter_values(parameters, surface, r)
+    q, u = np.asarray(q, float).reshape(8, -1), np.asarray(u, float).reshape(8, -1)
+    x0 = turn_state_vector(q, u, surface, steer)
+    k, n = x0.shape
+    x = np.repeat(x0[:, :, None], k, axis=2).astype(complex)
+    x[np.arange(k), :, np.arange(k)] += 1j * _STEP
+    qs = np.repeat(q[:, :, None], k, axis=2)
+    torque = np.repeat(np.broadcast_to(np.asarray(torque, float).reshape(-1), (n,))[:, None], k, axis=1)
+    rates = _rates(x.reshape(k, -1), qs.reshape(8, -1), p, torque.reshape(-1), surface, steer)
+    return np.moveaxis(rates.imag.reshape(k, n, k) / _STEP, 1, 0)
+
+
+def eigenvalues(J):
+    """The eigenvalues of J restricted to its image (every eigenvalue but
+    the trivial zero along the family of steady turns), sorted by real part,
+    largest first, ties by imaginary part: (n, k - 1) (beyond the paper;
+    docs/two-wheeler.md sec. 8.3)."""
+    U = np.linalg.svd(J)[0][..., :, :-1]
+    reduced = np.swapaxes(U, -1, -2) @ J @ U
+    values = np.linalg.eigvals(reduced)
+    order = np.lexsort((-values.imag, -values.real), axis=-1)
+    return np.take_along_axis(values, order, axis=-1)
+
+
+def verdict(values):
+    """'stable' where every real part is below -STABLE_BELOW, 'unstable'
+    where one is above it, 'marginal' otherwise, and the growth rate (the
+    largest real part, 1/s) (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    growth = values.real.max(axis=-1)
+    out = np.where(growth < -STABLE_BELOW, "stable", np.where(growth > STABLE_BELOW, "unstable", "marginal"))
+    return out, growth
