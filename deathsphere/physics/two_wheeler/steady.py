@@ -84,18 +84,25 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface=
     w the rear wheel rate (beyond the paper; docs/two-wheeler.md sec. 8)."""
     p = motion.parameter_values(parameters, surface, r)
     q = configuration(lane, lean, steer, parameters, surface, r)
-    zero = np.zeros((3,) + q.shape[1:])
-    unit = zero.copy()
+    q1 = q.reshape(8, -1)
+    n = q1.shape[1]
+    unit = np.zeros((3, n))
     unit[1] = 1.0
-    both = np.concatenate([q, q], axis=-1) if q.ndim > 1 else np.stack([q, q], axis=-1)
-    speeds = np.concatenate([zero, unit], axis=-1) if q.ndim > 1 else np.stack([zero, unit], axis=-1)
-    R = motion.reduced_residual(both, speeds, np.zeros_like(speeds), p, 0.0, surface)
-    n = R.shape[-1] // 2
-    G, R1 = R[..., :n], R[..., n:]
-    if q.ndim == 1:
-        G, R1 = G[..., 0], R1[..., 0]
-    holds = _pitch_holds(q, p, surface)
-    return tuple(np.where(holds, x, np.nan) for x in (_condition(lane, q, p, surface), G, R1 - G))
+    u, A = motion.full_speeds(q1, unit, p, surface)
+    kappa = np.broadcast_to(lane, np.shape(q)[1:]).ravel()
+    condition = u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - kappa * u[1]
+    # both speed sets in one call of the equations: at rest (G) and at unit wheel rate (G + H)
+    M, f, B, bias = getattr(_generated, f"{surface}_equations")(
+        np.concatenate([q1, q1], axis=1), np.concatenate([0 * u, u], axis=1), p, 0.0)
+    dep = np.moveaxis(B, (0, 1), (-2, -1))[..., list(motion.DEPENDENT)]
+    a = np.zeros((2 * n, 8), dtype=np.result_type(u, bias))
+    a[:, list(motion.DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
+    force = np.einsum("ij...,...j->...i", M, a) - np.moveaxis(f, 0, -1)
+    R = np.einsum("...ij,...i->j...", np.concatenate([A, A]), force)
+    G, H = R[:, :n], R[:, n:] - R[:, :n]
+    holds = _pitch_holds(q1, p, surface)
+    shape = np.shape(q)[1:]
+    return tuple(np.where(holds, x, np.nan).reshape(x.shape[:-1] + shape) for x in (condition, G, H))
 
 
 def _initial_steer(lane, lean, parameters, surface, r):
@@ -187,11 +194,12 @@ def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
     """Newton's method in (lean, steer) on (condition, target), the Jacobian
     by complex steps; returns lean, steer, converged."""
     for _ in range(_NEWTON):
-        values = []
-        for dl, ds in ((1j * _STEP, 0.0), (0.0, 1j * _STEP)):
-            c, G, H = turn_coefficients(lane, lean + dl, steer + ds, parameters, surface, r)
-            values.append((c, _target(G, H, w2, torque)))
-        (c, t), (c_s, t_s) = values
+        m = lean.size
+        c, G, H = turn_coefficients(np.concatenate([lane, lane]), np.concatenate([lean + 1j * _STEP, lean + 0j]),
+                                    np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, surface, r)
+        both = _target(G, H, None if w2 is None else np.concatenate([w2, w2]),
+                       None if torque is None else np.concatenate([torque, torque]))
+        c, c_s, t, t_s = c[:m], c[m:], both[:m], both[m:]
         # scale the condition to the target's size so one tolerance serves both
         J = np.stack([np.stack([c.imag, c_s.imag], -1), np.stack([t.imag, t_s.imag], -1)], -2) / _STEP
         rhs = np.stack([c.real, t.real], -1)
