@@ -29,7 +29,7 @@ import numpy as np
 from deathsphere.physics.two_wheeler import _generated, geometry, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["LEAN_GRID", "configuration", "turn_coefficients", "solve_steer", "lean_curve", "turns_for_speed",
+__all__ = ["LEAN_GRID", "MAX_SPEED", "configuration", "turn_coefficients", "solve_steer", "lean_curve", "turns_for_speed",
            "turns_for_torque", "turn_state"]
 
 #: The scan in lean (rad): 0.5 degree steps, up to 89 degrees either side.
@@ -37,6 +37,10 @@ LEAN_GRID = np.deg2rad(np.arange(-89.0, 89.0 + 1e-9, 0.5))
 #: Complex step for derivatives inside Newton's method.
 _STEP = 1e-30
 _NEWTON = 30
+#: Turns faster than this (rear contact, m/s) are not sought: where the lean
+#: row's speed coefficient vanishes the torque equation has roots at
+#: unbounded speeds (1e7 m/s), the limit of gyroscopic balance, not a lane.
+MAX_SPEED = 100.0
 _TOL = 1e-13
 
 
@@ -120,19 +124,23 @@ def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=N
     lane, lean = np.broadcast_arrays(np.asarray(lane, float), np.asarray(lean, float))
     p = motion.parameter_values(parameters, surface, r)
     delta = _initial_steer(lane, lean, parameters, surface, r) if steer is None else np.array(steer, float)
-    step = np.ones_like(delta)
-    failed = ~np.isfinite(delta)
+    delta = np.array(np.broadcast_to(delta, lane.shape), dtype=float)
+    step = np.full(lane.shape, np.inf)
+    active = np.isfinite(delta)
     for _ in range(_NEWTON):
-        q = configuration(lane, lean, np.where(failed, 0.0, delta) + 1j * _STEP, parameters, surface, r)
-        c = _condition(lane, q, p, surface)
-        slope = c.imag / _STEP
-        ok = (np.abs(slope) > 1e-300) & np.isfinite(c) & ~failed & _pitch_holds(q, p, surface)
-        step = np.where(ok, c.real / np.where(ok, slope, 1.0), 0.0)
-        failed |= ~ok
-        delta = np.where(failed, 0.0, np.clip(delta - step, -1.5, 1.5))
-        if np.all(failed | ~(np.abs(step) > 1e-14)):
+        # only the unconverged points are evaluated: the equations cost per point
+        idx = np.nonzero(active)
+        if idx[0].size == 0:
             break
-    good = ~failed & (np.abs(step) < 1e-12) & (np.abs(delta) < np.deg2rad(80.0))
+        q = configuration(lane[idx], lean[idx], delta[idx] + 1j * _STEP, parameters, surface, r)
+        c = _condition(lane[idx], q, p, surface)
+        slope = c.imag / _STEP
+        ok = (np.abs(slope) > 1e-300) & np.isfinite(c) & _pitch_holds(q, p, surface)
+        d = np.where(ok, c.real / np.where(ok, slope, 1.0), np.inf)
+        step[idx] = d
+        delta[idx] = np.where(ok, np.clip(delta[idx] - np.where(ok, d, 0.0), -1.5, 1.5), np.nan)
+        active[idx] = ok & (np.abs(d) > 1e-14)
+    good = np.isfinite(delta) & (np.abs(step) < 1e-12) & (np.abs(np.nan_to_num(delta)) < np.deg2rad(80.0))
     return np.where(good, delta, np.nan)
 
 
@@ -233,7 +241,8 @@ def _solve(lane, curve, w2, torque, parameters, surface, r):
     _, G, H = turn_coefficients(lane_r, np.where(conv, lean, 0.0), np.where(conv, steer, 0.0), parameters, surface, r)
     with np.errstate(invalid="ignore", divide="ignore"):
         rate2 = w2[rows] if torque is None else -G[0] / H[0]
-    keep = conv & np.isfinite(rate2) & (rate2 > 0) & (np.abs(lean) < np.pi / 2)
+    keep = conv & np.isfinite(rate2) & (rate2 > 0) & (rate2 * parameters.rR**2 < MAX_SPEED**2)
+    keep &= np.abs(lean) < np.pi / 2
     rows, lean, steer = rows[keep], lean[keep], steer[keep]
     order = np.lexsort((lean, rows))
     rows, lean, steer = rows[order], lean[order], steer[order]
