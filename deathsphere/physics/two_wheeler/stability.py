@@ -25,10 +25,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.two_wheeler import motion
+from deathsphere.physics.two_wheeler import motion, steady
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "eigenvalues", "verdict"]
+__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "eigenvalues", "verdict", "turns_with_stability"]
 
 _STEP = 1e-30
 #: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).
@@ -102,3 +102,37 @@ def verdict(values):
     growth = values.real.max(axis=-1)
     out = np.where(growth < -STABLE_BELOW, "stable", np.where(growth > STABLE_BELOW, "unstable", "marginal"))
     return out, growth
+
+
+def turns_with_stability(lane, parameters: BicycleParameters, speed=None, torque=None, surface="sphere", r=None,
+                         head=(0.3, -1.7)):
+    """Every steady turn of each lane (theta on the sphere, curvature on flat
+    ground) at the rear contact's ``speed`` or held with the steer
+    ``torque``, and its stability with the steer free under the steady
+    torque held constant and with the steer locked: the arrays of
+    ``steady.turns_for_speed`` (n, k) plus ``eigenvalues_free`` (n, k, 6 on
+    the sphere, 4 on flat ground), ``eigenvalues_locked`` (n, k, 4 or 2),
+    ``stability_free``, ``stability_locked`` ('stable', 'marginal',
+    'unstable', '' where no turn), ``growth_free``, ``growth_locked`` (1/s)
+    (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    if (speed is None) == (torque is None):
+        raise ValueError("give either speed or torque")
+    if speed is not None:
+        out = steady.turns_for_speed(lane, speed, parameters, surface, r, head)
+    else:
+        out = steady.turns_for_torque(lane, torque, parameters, surface, r, head)
+    found = np.isfinite(out["lean"])
+    rows, cols = np.nonzero(found)
+    for mode in ("free", "locked"):
+        size = (6 if surface == "sphere" else 4) - (2 if mode == "locked" else 0)
+        values = np.full(found.shape + (size,), np.nan + 0j)
+        verdicts = np.full(found.shape, "", dtype="<U8")
+        growth = np.full(found.shape, np.nan)
+        if rows.size:
+            J = jacobian(out["q"][:, rows, cols], out["u"][:, rows, cols], out["steer_torque"][rows, cols],
+                         parameters, surface, r, mode)
+            ev = eigenvalues(J)
+            values[rows, cols] = ev
+            verdicts[rows, cols], growth[rows, cols] = verdict(ev)
+        out[f"eigenvalues_{mode}"], out[f"stability_{mode}"], out[f"growth_{mode}"] = values, verdicts, growth
+    return out
