@@ -1,7 +1,7 @@
 """Where the Whipple bicycle's points are, numerically: the frames of
 docs/two-wheeler.md sec. 2 as numpy vectors in the inertial frame N (z down),
 for steady-turn forces, speeds and the rider's head (beyond the paper;
-docs/two-wheeler.md sec. 2 and 9).
+docs/two-wheeler.md sec. 2 and 8).
 
 The derivation (``derivation.py``) builds the same frames in sympy; the
 generated code exports only the front contact, which a test compares with

@@ -295,7 +295,9 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere
     pushing; the tangential part's magnitude), ``mu_required_*``,
     ``load_g`` (|total contact force| / weight), ``head_clearance`` (m,
     r - |head|; +inf on flat ground), ``theta_rear``, ``theta_front``
-    (polar angles of the contacts from the upward vertical), ``q``, ``u``.
+    (polar angles of the contacts from the upward vertical), ``contact``
+    (1 where both normal forces push, 0 where a wheel would lift), ``q``,
+    ``u``.
     """
     p = parameters
     lane, lean, steer = np.broadcast_arrays(*(np.asarray(x, float) for x in (lane, lean, steer)))
@@ -358,6 +360,8 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere
         out[f"friction_{name}"] = tangential / mass
         with np.errstate(divide="ignore", invalid="ignore"):
             out[f"mu_required_{name}"] = np.where(normal > 0, tangential / np.where(normal > 0, normal, 1.0), np.inf)
+    # both wheels must push on the surface for the turn to be ridden
+    out["contact"] = ((out["normal_rear"] > 0) & (out["normal_front"] > 0)).astype(float)
     out = {k: np.where(valid, v, np.nan) for k, v in out.items()}
     out = {k: v.reshape(v.shape[:-1] + shape) if v.ndim > 1 else v.reshape(shape) for k, v in out.items()}
     out["q"] = np.where(valid, q, np.nan).reshape((8,) + shape)
