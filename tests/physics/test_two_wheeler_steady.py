@@ -58,6 +58,8 @@ def test_the_ground_carries_the_weight_and_the_rear_force_agrees_with_kanes_mult
     assert np.nanmax(np.abs(out["rear_tangential_check"])) < 1e-9
     total = out["normal_rear"] + out["normal_front"]
     assert np.nanmax(np.abs(total - b.g)) < 1e-9
+    found = np.isfinite(out["lean"])
+    assert np.all(out["contact"][found] == 1)
 
 
 def test_a_huge_sphere_near_its_floor_is_flat_ground():
@@ -173,3 +175,13 @@ def test_a_huge_spheres_turn_has_flat_grounds_modes_and_the_drift_of_its_circle(
     rate = speed / radius
     want = np.concatenate([ev_flat, [1j * rate, -1j * rate]])
     np.testing.assert_allclose(np.sort_complex(ev), np.sort_complex(want), atol=5e-3)
+
+
+def test_a_gentle_circle_is_as_stable_as_straight_running():
+    """The batch route (every turn of a lane with its stability): a circle of
+    10 km radius at 5 m/s has Table 2's eigenvalues to the order of its
+    curvature, and the benchmark's verdict (self-stable at 5 m/s)."""
+    b = benchmark_bicycle()
+    out = stability.turns_with_stability(1e-4, b, speed=5.0, surface="flat")
+    assert out["count"].tolist() == [1] and out["stability_free"][0, 0] == "stable"
+    np.testing.assert_allclose(np.sort_complex(out["eigenvalues_free"][0, 0]), np.sort_complex(TABLE2_5), atol=1e-3)

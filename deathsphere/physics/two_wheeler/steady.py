@@ -112,7 +112,12 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface=
 def _initial_steer(lane, lean, parameters, surface, r):
     """The flat-ground guess: tan(steer) = w kappa cos(lean) / cos(lam),
     kappa the geodesic curvature of the lane (-cot(theta)/r on the sphere)."""
-    kappa = lane if surface == "flat" else -np.cos(lane) / (r * np.sin(lane))
+    if surface == "flat":
+        kappa = lane
+    else:
+        # at the poles the guess is a quarter turn; Newton's step then says no
+        with np.errstate(divide="ignore", invalid="ignore"):
+            kappa = np.nan_to_num(-np.cos(lane) / (r * np.sin(lane)), posinf=1e300, neginf=-1e300)
     return np.arctan(parameters.w * kappa * np.cos(lean) / np.cos(parameters.lam))
 
 
