@@ -203,31 +203,42 @@ def _brackets(f, lean):
     return np.concatenate(out_rows), np.concatenate(start)
 
 
+def _newton_step(lane, lean, steer, w2, torque, parameters, surface, r):
+    """One Newton step in (lean, steer) on (condition, target), the
+    Jacobian by complex steps (both in one batch); NaN where singular."""
+    m = lean.size
+    c, G, H = turn_coefficients(np.concatenate([lane, lane]), np.concatenate([lean + 1j * _STEP, lean + 0j]),
+                                np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, surface, r)
+    both = _target(G, H, None if w2 is None else np.concatenate([w2, w2]),
+                   None if torque is None else np.concatenate([torque, torque]))
+    c, c_s, t, t_s = c[:m], c[m:], both[:m], both[m:]
+    j00, j01, j10, j11 = c.imag / _STEP, c_s.imag / _STEP, t.imag / _STEP, t_s.imag / _STEP
+    det = j00 * j11 - j01 * j10
+    ok = np.abs(det) > 0
+    det = np.where(ok, det, 1.0)
+    d_lean = np.where(ok, (j11 * c.real - j01 * t.real) / det, np.nan)
+    d_steer = np.where(ok, (j00 * t.real - j10 * c.real) / det, np.nan)
+    return d_lean, d_steer
+
+
 def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
-    """Newton's method in (lean, steer) on (condition, target), the Jacobian
-    by complex steps; returns lean, steer, converged."""
+    """Newton's method in (lean, steer) on (condition, target), iterating
+    only the unconverged turns; returns lean, steer, converged."""
+    lean, steer = np.array(lean, float), np.array(steer, float)
+    size = np.full(lean.shape, np.inf)
+    active = np.ones(lean.shape, bool)
     for _ in range(_NEWTON):
-        m = lean.size
-        c, G, H = turn_coefficients(np.concatenate([lane, lane]), np.concatenate([lean + 1j * _STEP, lean + 0j]),
-                                    np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, surface, r)
-        both = _target(G, H, None if w2 is None else np.concatenate([w2, w2]),
-                       None if torque is None else np.concatenate([torque, torque]))
-        c, c_s, t, t_s = c[:m], c[m:], both[:m], both[m:]
-        # scale the condition to the target's size so one tolerance serves both
-        J = np.stack([np.stack([c.imag, c_s.imag], -1), np.stack([t.imag, t_s.imag], -1)], -2) / _STEP
-        rhs = np.stack([c.real, t.real], -1)
-        det = J[..., 0, 0] * J[..., 1, 1] - J[..., 0, 1] * J[..., 1, 0]
-        ok = np.abs(det) > 0
-        det = np.where(ok, det, 1.0)
-        d_lean = (J[..., 1, 1] * rhs[..., 0] - J[..., 0, 1] * rhs[..., 1]) / det
-        d_steer = (J[..., 0, 0] * rhs[..., 1] - J[..., 1, 0] * rhs[..., 0]) / det
-        d_lean, d_steer = np.where(ok, d_lean, np.nan), np.where(ok, d_steer, np.nan)
-        moving = np.isfinite(d_lean) & np.isfinite(d_steer)
-        lean = np.where(moving, lean - np.clip(np.where(moving, d_lean, 0.0), -0.1, 0.1), lean)
-        steer = np.where(moving, steer - np.clip(np.where(moving, d_steer, 0.0), -0.1, 0.1), steer)
-        if not np.any(np.abs(d_lean) + np.abs(d_steer) > _TOL):
+        idx = np.nonzero(active)[0]
+        if idx.size == 0:
             break
-    return lean, steer, np.abs(d_lean) + np.abs(d_steer) < 1e-10
+        d_lean, d_steer = _newton_step(lane[idx], lean[idx], steer[idx], None if w2 is None else w2[idx],
+                                       None if torque is None else torque[idx], parameters, surface, r)
+        moving = np.isfinite(d_lean) & np.isfinite(d_steer)
+        lean[idx] -= np.clip(np.where(moving, d_lean, 0.0), -0.1, 0.1)
+        steer[idx] -= np.clip(np.where(moving, d_steer, 0.0), -0.1, 0.1)
+        size[idx] = np.where(moving, np.abs(d_lean) + np.abs(d_steer), np.inf)
+        active[idx] = moving & (size[idx] > _TOL)
+    return lean, steer, size < 1e-10
 
 
 def _solve(lane, curve, w2, torque, parameters, surface, r):
