@@ -44,7 +44,8 @@ def _layout(surface, steer):
 
 
 def turn_state_vector(q, u, surface="sphere", steer="free"):
-    """The state (k, ...) of a steady turn from its q, u (8, ...)."""
+    """The state (k, ...) of a steady turn from its q, u (8, ...) (beyond
+    the paper; docs/two-wheeler.md sec. 8.3)."""
     coords, speeds = _layout(surface, steer)
     ind = np.asarray(u)[list(motion.INDEPENDENT)]
     return np.concatenate([np.asarray(q)[coords], ind[speeds]])

@@ -41,7 +41,7 @@ _NEWTON = 30
 #: row's speed coefficient vanishes the torque equation has roots at
 #: unbounded speeds (1e7 m/s), the limit of gyroscopic balance, not a lane.
 MAX_SPEED = 100.0
-_TOL = 1e-13
+_TOL = 1e-12
 
 
 def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
