@@ -256,8 +256,11 @@ def _solve(lane, curve, w2, torque, parameters, surface, r):
                                 None if torque is None else torque[rows], parameters, surface, r)
     _, G, H = turn_coefficients(lane_r, np.where(conv, lean, 0.0), np.where(conv, steer, 0.0), parameters, surface, r)
     with np.errstate(invalid="ignore", divide="ignore"):
-        rate2 = w2[rows] if torque is None else -G[0] / H[0]
+        rate2 = -G[0] / H[0]
     keep = conv & np.isfinite(rate2) & (rate2 > 0) & (rate2 * parameters.rR**2 < MAX_SPEED**2)
+    if torque is None:
+        # the speed turn_state will recover from the lean row must be the one asked for
+        keep &= np.abs(rate2 - w2[rows]) <= 1e-6 * w2[rows]
     keep &= np.abs(lean) < np.pi / 2
     rows, lean, steer = rows[keep], lean[keep], steer[keep]
     order = np.lexsort((lean, rows))
