@@ -186,3 +186,13 @@ def test_a_gentle_circle_is_as_stable_as_straight_running():
     out = stability.turns_with_stability(1e-4, b, speed=5.0, surface="flat")
     assert out["count"].tolist() == [1] and out["stability_free"][0, 0] == "stable"
     np.testing.assert_allclose(np.sort_complex(out["eigenvalues_free"][0, 0]), np.sort_complex(TABLE2_5), atol=1e-3)
+
+
+def test_lanes_that_cannot_be_ridden_get_a_reason_and_no_row():
+    """The poles (no lap, singular coordinates), a non-finite lane, a speed
+    that is not positive: one output row each, no turn, the reason, and no
+    warning on the way."""
+    b = benchmark_bicycle()
+    out = steady.turns_for_speed([0.0, np.pi, np.nan, np.pi / 2], [5.0, 5.0, 5.0, -1.0], b, "sphere", GLOBE)
+    assert out["count"].tolist() == [0, 0, 0, 0] and np.isnan(out["lean"]).all()
+    assert out["reason"].tolist() == [steady.REASONS["lane"]] * 3 + [steady.REASONS["speed"]]

@@ -29,7 +29,7 @@ import numpy as np
 from deathsphere.physics.two_wheeler import _generated, geometry, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["LEAN_GRID", "MAX_SPEED", "configuration", "turn_coefficients", "solve_steer", "lean_curve", "turns_for_speed",
+__all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "configuration", "turn_coefficients", "solve_steer", "lean_curve", "turns_for_speed",
            "turns_for_torque", "turn_state"]
 
 #: The scan in lean (rad): 0.5 degree steps, up to 89 degrees either side.
@@ -276,28 +276,59 @@ def _solve(lane, curve, w2, torque, parameters, surface, r):
     return L, S, counts
 
 
+#: Why a lane has no row: ``reason`` of :func:`turns_for_speed` and :func:`turns_for_torque`.
+REASONS = {
+    "ok": "",
+    "lane": "theta must be finite and strictly between 0 and 180 degrees (the poles have no lap); "
+            "on flat ground the curvature must be finite",
+    "speed": "the speed must be finite and positive",
+    "torque": "the steer torque must be finite",
+    "none": "no steady turn at this lane and speed or torque",
+}
+#: Lanes closer to a pole than this (rad) are refused: the sphere's coordinates are singular there.
+POLE = 1e-6
+
+
+def _turns(lane, value, kind, parameters, surface, r, head):
+    """The common body of turns_for_speed and turns_for_torque: lanes that
+    cannot be computed are replaced by a harmless one and blanked after."""
+    lane, value = (np.array(x, float).reshape(-1) for x in np.broadcast_arrays(lane, value))
+    good_lane = np.isfinite(lane)
+    if surface == "sphere":
+        good_lane &= (lane > POLE) & (lane < np.pi - POLE)
+    good_value = np.isfinite(value) & ((value > 0) if kind == "speed" else True)
+    good = good_lane & good_value
+    lane[~good] = np.pi / 2 if surface == "sphere" else 0.1
+    value[~good] = 1.0
+    unique, inverse = np.unique(lane, return_inverse=True)
+    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
+    if kind == "speed":
+        L, S, counts = _solve(lane, curve, (value / parameters.rR) ** 2, None, parameters, surface, r)
+    else:
+        L, S, counts = _solve(lane, curve, None, value, parameters, surface, r)
+    L[~good], S[~good], counts[~good] = np.nan, np.nan, 0
+    out = turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head)
+    reason = np.where(counts > 0, REASONS["ok"], REASONS["none"])
+    reason = np.where(good_value, reason, REASONS[kind])
+    reason = np.where(good_lane, reason, REASONS["lane"])
+    return out | {"count": counts, "reason": reason}
+
+
 def turns_for_speed(lane, speed, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
     """Every steady turn of each lane (theta on the sphere, curvature on flat
     ground) at the rear contact's speed ``speed`` (m/s, what a rear-wheel
     speedometer reads): (n, k) NaN-padded arrays of :func:`turn_state`, sorted
-    by lean, and ``count`` (n,) (beyond the paper; docs/two-wheeler.md sec. 8)."""
-    lane, speed = (np.asarray(x, float).reshape(-1) for x in np.broadcast_arrays(lane, speed))
-    unique, inverse = np.unique(lane, return_inverse=True)
-    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
-    w2 = (speed / parameters.rR) ** 2
-    L, S, counts = _solve(lane, curve, w2, None, parameters, surface, r)
-    return turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head) | {"count": counts}
+    by lean, ``count`` (n,) and ``reason`` (n,: empty where a turn was
+    found, else why not, :data:`REASONS`) (beyond the paper;
+    docs/two-wheeler.md sec. 8)."""
+    return _turns(lane, speed, "speed", parameters, surface, r, head)
 
 
 def turns_for_torque(lane, torque, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
     """Every steady turn of each lane held with the steer torque ``torque``
     (N m; 0: hands-free), as :func:`turns_for_speed` (beyond the paper;
     docs/two-wheeler.md sec. 8)."""
-    lane, torque = (np.asarray(x, float).reshape(-1) for x in np.broadcast_arrays(lane, torque))
-    unique, inverse = np.unique(lane, return_inverse=True)
-    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
-    L, S, counts = _solve(lane, curve, None, torque, parameters, surface, r)
-    return turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head) | {"count": counts}
+    return _turns(lane, torque, "torque", parameters, surface, r, head)
 
 
 def _horizontal(v):
