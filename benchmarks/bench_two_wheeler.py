@@ -69,19 +69,20 @@ def globe():
     print("\nturns with the steady steer torque held, rear speeds 1-20 m/s")
     print("height_m stable_free stable_locked least_growth_free_1_s at_v_m_s lean_deg steer_torque_n_m "
           "torque_range_n_m")
-    growth = out["growth_free"][:, 0].reshape(H.shape)
-    locked = out["growth_locked"][:, 0].reshape(H.shape)
-    torque = out["steer_torque"][:, 0].reshape(H.shape)
-    lean = out["lean"][:, 0].reshape(H.shape)
+    # every turn of every lane: (heights, speeds, turns)
+    shape = H.shape + (out["lean"].shape[1],)
+    growth, locked = (np.where(np.isfinite(out[k]), out[k], np.inf).reshape(shape)
+                      for k in ("growth_free", "growth_locked"))
+    torque, lean = out["steer_torque"].reshape(shape), out["lean"].reshape(shape)
+    print(f"(at most {shape[2]} turns per lane)")
     for i, h in enumerate(heights):
-        ok = np.isfinite(growth[i])
-        if not ok.any():
+        if not np.isfinite(growth[i]).any():
             print(f"{h:4.1f} no turn")
             continue
-        k = np.nanargmin(growth[i])
+        k, t = np.unravel_index(np.argmin(growth[i]), growth[i].shape)
         print(f"{h:4.1f} {int((growth[i] < -stability.STABLE_BELOW).sum()):3d} "
-              f"{int((locked[i] < -stability.STABLE_BELOW).sum()):3d} {growth[i, k]:7.3f} {speeds[k]:5.1f} "
-              f"{np.rad2deg(lean[i, k]):6.1f} {torque[i, k]:6.2f} "
+              f"{int((locked[i] < -stability.STABLE_BELOW).sum()):3d} {growth[i, k, t]:7.3f} {speeds[k]:5.1f} "
+              f"{np.rad2deg(lean[i, k, t]):6.1f} {torque[i, k, t]:6.2f} "
               f"{np.nanmin(torque[i]):6.2f}..{np.nanmax(torque[i]):6.2f}")
 
 
