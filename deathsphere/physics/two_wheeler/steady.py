@@ -172,16 +172,19 @@ def _target(G, H, w2, torque):
     return G[2] * H[0] - G[0] * H[2] - torque * H[0]
 
 
-def _brackets(f, lean):
+def _brackets(f, lean, steer):
     """Brackets of the zeros of f sampled on lean (n, m): sign changes, and
     near tangencies where a parabola through a local minimum of |f| and its
     neighbours crosses zero between samples (two zeros closer than a step).
-    Returns (row, lean0) starting points."""
+    Returns (row, lean0, steer0) starting points, the steer interpolated
+    along the curve."""
     fin = np.isfinite(f)
     change = fin[:, :-1] & fin[:, 1:] & (np.sign(f[:, :-1]) != np.sign(f[:, 1:]))
     rows, cols = np.nonzero(change)
     a, b = f[rows, cols], f[rows, cols + 1]
-    start = [lean[rows, cols] + a / (a - b) * (lean[rows, cols + 1] - lean[rows, cols])]
+    frac = a / (a - b)
+    start = [lean[rows, cols] + frac * (lean[rows, cols + 1] - lean[rows, cols])]
+    start_steer = [steer[rows, cols] + frac * (steer[rows, cols + 1] - steer[rows, cols])]
     out_rows = [rows]
     # tangencies: |f| locally smallest without a sign change
     mid = fin[:, 1:-1] & fin[:, :-2] & fin[:, 2:]
@@ -199,8 +202,9 @@ def _brackets(f, lean):
         # the two zeros of the parabola, either side of its vertex
         disc = np.sqrt(np.maximum(-2 * vertex[r2, c2] / curv[r2, c2], 0.0))
         start.append(lean[r2, c2 + 1] + (x[r2, c2] + side * disc) * h)
+        start_steer.append(steer[r2, c2 + 1])
         out_rows.append(r2)
-    return np.concatenate(out_rows), np.concatenate(start)
+    return np.concatenate(out_rows), np.concatenate(start), np.concatenate(start_steer)
 
 
 def _newton_step(lane, lean, steer, w2, torque, parameters, surface, r):
@@ -247,10 +251,9 @@ def _solve(lane, curve, w2, torque, parameters, surface, r):
     n = np.size(lane)
     f = _target(curve["G"], curve["H"], w2[:, None] if torque is None else None,
                 None if torque is None else torque[:, None])
-    rows, start = _brackets(f, curve["lean"])
+    rows, start, steer0 = _brackets(f, curve["lean"], curve["steer"])
     lane_r = np.asarray(lane, float)[rows]
-    steer0 = solve_steer(lane_r, start, parameters, surface, r)
-    ok0 = np.isfinite(steer0)
+    ok0 = np.isfinite(steer0) & np.isfinite(start)
     rows, start, steer0, lane_r = rows[ok0], start[ok0], steer0[ok0], lane_r[ok0]
     lean, steer, conv = _refine(lane_r, start, steer0, w2[rows] if torque is None else None,
                                 None if torque is None else torque[rows], parameters, surface, r)
