@@ -123,25 +123,30 @@ def _initial_steer(lane, lean, parameters, surface, r):
 
 def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=None, steer=None):
     """The steer of a steady turn at each lean (the kinematic condition, by
-    Newton's method with complex-step derivatives from the flat-ground
-    guess); NaN where it does not converge below 1e-12 rad or leaves
+    Newton's method, its slope by a complex step renewed every third step,
+    from the flat-ground guess); NaN where it does not converge below 1e-12 rad or leaves
     |steer| < 80 degrees (beyond the paper; docs/two-wheeler.md sec. 8)."""
     lane, lean = np.broadcast_arrays(np.asarray(lane, float), np.asarray(lean, float))
     p = motion.parameter_values(parameters, surface, r)
     delta = _initial_steer(lane, lean, parameters, surface, r) if steer is None else np.array(steer, float)
     delta = np.array(np.broadcast_to(delta, lane.shape), dtype=float)
     step = np.full(lane.shape, np.inf)
+    slope = np.zeros(lane.shape)
     active = np.isfinite(delta)
-    for _ in range(_NEWTON):
+    for k in range(_NEWTON):
         # only the unconverged points are evaluated: the equations cost per point
         idx = np.nonzero(active)
         if idx[0].size == 0:
             break
-        q = configuration(lane[idx], lean[idx], delta[idx] + 1j * _STEP, parameters, surface, r)
+        # a complex step (value and slope) every third iteration, real chord steps between: half the cost
+        fresh = k % 3 == 0
+        q = configuration(lane[idx], lean[idx], delta[idx] + (1j * _STEP if fresh else 0.0), parameters, surface, r)
         c = _condition(lane[idx], q, p, surface)
-        slope = c.imag / _STEP
-        ok = (np.abs(slope) > 1e-300) & np.isfinite(c) & _pitch_holds(q, p, surface)
-        d = np.where(ok, c.real / np.where(ok, slope, 1.0), np.inf)
+        if fresh:
+            slope[idx] = c.imag / _STEP
+        c = c.real
+        ok = (np.abs(slope[idx]) > 1e-300) & np.isfinite(c) & _pitch_holds(q, p, surface)
+        d = np.where(ok, c / np.where(ok, slope[idx], 1.0), np.inf)
         step[idx] = d
         delta[idx] = np.where(ok, np.clip(delta[idx] - np.where(ok, d, 0.0), -1.5, 1.5), np.nan)
         active[idx] = ok & (np.abs(d) > 1e-14)
