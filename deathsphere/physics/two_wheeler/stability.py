@@ -28,7 +28,7 @@ import numpy as np
 from deathsphere.physics.two_wheeler import motion, steady
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "eigenvalues", "verdict", "turns_with_stability"]
+__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "jacobians", "eigenvalues", "verdict", "turns_with_stability"]
 
 _STEP = 1e-30
 #: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).
@@ -51,37 +51,57 @@ def turn_state_vector(q, u, surface="sphere", steer="free"):
     return np.concatenate([np.asarray(q)[coords], ind[speeds]])
 
 
-def _rates(x, q_steady, p, torque, surface, steer):
-    """d/dt of the state x (k, n) with the other coordinates at their steady
-    values q_steady (8, n) and, locked, the steer rate 0."""
-    coords, speeds = _layout(surface, steer)
+def _rates(x, q_steady, p, torque, surface):
+    """d/dt of the free-steer state x (k, n), the other coordinates at their
+    steady values q_steady (8, n); and, from the same evaluation, the
+    locked-steer state's rates (the steer row dropped, steer rate 0)."""
+    coords, speeds = _layout(surface, "free")
     q = np.array(q_steady, dtype=np.result_type(x, q_steady))
     q[coords] = x[:len(coords)]
     q = motion.pitch(q, p, surface)
     u_ind = np.zeros((3,) + x.shape[1:], dtype=q.dtype)
     u_ind[speeds] = x[len(coords):]
     mass, forcing, u = motion.reduced_mass_and_forcing(q, u_ind, p, torque, surface)
-    mass = mass[..., speeds, :][..., :, speeds]
-    forcing = forcing[..., speeds]
-    udot = np.linalg.solve(mass, forcing[..., None])[..., 0]
-    qdot = u[coords]
-    return np.concatenate([qdot, np.moveaxis(udot, -1, 0)])
+    out = []
+    for mode in ("free", "locked"):
+        c, sp = _layout(surface, mode)
+        udot = np.linalg.solve(mass[..., sp, :][..., :, sp], forcing[..., sp][..., None])[..., 0]
+        out.append(np.concatenate([u[c], np.moveaxis(udot, -1, 0)]))
+    return out
 
 
-def jacobian(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None, steer="free"):
-    """The Jacobian (n, k, k) of the state's rates at steady turns (q, u
-    (8, n), the steady steer torque (n,) held constant), by complex steps
-    (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+def _locked_columns(surface):
+    """Where the locked state's directions sit among the free state's."""
+    free_c, free_s = _layout(surface, "free")
+    locked_c, locked_s = _layout(surface, "locked")
+    return [free_c.index(i) for i in locked_c] + [len(free_c) + free_s.index(i) for i in locked_s]
+
+
+def jacobians(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None):
+    """The Jacobians (n, k, k) of the state's rates at steady turns (q, u
+    (8, n), the steady steer torque (n,) held constant), steer free and
+    steer locked, by complex steps from one batch of evaluations (beyond
+    the paper; docs/two-wheeler.md sec. 8.3)."""
     p = motion.parameter_values(parameters, surface, r)
     q, u = np.asarray(q, float).reshape(8, -1), np.asarray(u, float).reshape(8, -1)
-    x0 = turn_state_vector(q, u, surface, steer)
+    x0 = turn_state_vector(q, u, surface, "free")
     k, n = x0.shape
     x = np.repeat(x0[:, :, None], k, axis=2).astype(complex)
     x[np.arange(k), :, np.arange(k)] += 1j * _STEP
     qs = np.repeat(q[:, :, None], k, axis=2)
     torque = np.repeat(np.broadcast_to(np.asarray(torque, float).reshape(-1), (n,))[:, None], k, axis=1)
-    rates = _rates(x.reshape(k, -1), qs.reshape(8, -1), p, torque.reshape(-1), surface, steer)
-    return np.moveaxis(rates.imag.reshape(k, n, k) / _STEP, 1, 0)
+    free, locked = _rates(x.reshape(k, -1), qs.reshape(8, -1), p, torque.reshape(-1), surface)
+    J_free = np.moveaxis(free.imag.reshape(k, n, k) / _STEP, 1, 0)
+    J_locked = np.moveaxis(locked.imag.reshape(-1, n, k) / _STEP, 1, 0)[..., _locked_columns(surface)]
+    return J_free, J_locked
+
+
+def jacobian(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None, steer="free"):
+    """The Jacobian (n, k, k) of the state's rates at steady turns, steer
+    ``free`` (under the steady torque held constant) or ``locked``
+    (:func:`jacobians`; beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    J_free, J_locked = jacobians(q, u, torque, parameters, surface, r)
+    return J_free if steer == "free" else J_locked
 
 
 def eigenvalues(J):
@@ -124,15 +144,16 @@ def turns_with_stability(lane, parameters: BicycleParameters, speed=None, torque
         out = steady.turns_for_torque(lane, torque, parameters, surface, r, head)
     found = np.isfinite(out["lean"])
     rows, cols = np.nonzero(found)
+    if rows.size:
+        both = jacobians(out["q"][:, rows, cols], out["u"][:, rows, cols], out["steer_torque"][rows, cols],
+                         parameters, surface, r)
     for mode in ("free", "locked"):
         size = (6 if surface == "sphere" else 4) - (2 if mode == "locked" else 0)
         values = np.full(found.shape + (size,), np.nan + 0j)
         verdicts = np.full(found.shape, "", dtype="<U8")
         growth = np.full(found.shape, np.nan)
         if rows.size:
-            J = jacobian(out["q"][:, rows, cols], out["u"][:, rows, cols], out["steer_torque"][rows, cols],
-                         parameters, surface, r, mode)
-            ev = eigenvalues(J)
+            ev = eigenvalues(both[0] if mode == "free" else both[1])
             values[rows, cols] = ev
             verdicts[rows, cols], growth[rows, cols] = verdict(ev)
         out[f"eigenvalues_{mode}"], out[f"stability_{mode}"], out[f"growth_{mode}"] = values, verdicts, growth
