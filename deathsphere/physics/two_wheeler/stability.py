@@ -28,7 +28,8 @@ import numpy as np
 from deathsphere.physics.two_wheeler import motion, steady
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "jacobians", "eigenvalues", "verdict", "turns_with_stability"]
+__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "jacobians", "eigenvalues", "verdict",
+           "turns_with_stability"]
 
 _STEP = 1e-30
 #: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).

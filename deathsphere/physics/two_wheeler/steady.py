@@ -29,8 +29,8 @@ import numpy as np
 from deathsphere.physics.two_wheeler import _generated, geometry, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "configuration", "turn_coefficients", "solve_steer", "lean_curve", "turns_for_speed",
-           "turns_for_torque", "turn_state"]
+__all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "configuration", "turn_coefficients", "solve_steer",
+           "lean_curve", "turns_for_speed", "turns_for_torque", "turn_state"]
 
 #: The scan in lean (rad): 0.5 degree steps, up to 89 degrees either side.
 LEAN_GRID = np.deg2rad(np.arange(-89.0, 89.0 + 1e-9, 0.5))
