@@ -196,3 +196,24 @@ def test_lanes_that_cannot_be_ridden_get_a_reason_and_no_row():
     out = steady.turns_for_speed([0.0, np.pi, np.nan, np.pi / 2], [5.0, 5.0, 5.0, -1.0], b, "sphere", GLOBE)
     assert out["count"].tolist() == [0, 0, 0, 0] and np.isnan(out["lean"]).all()
     assert out["reason"].tolist() == [steady.REASONS["lane"]] * 3 + [steady.REASONS["speed"]]
+
+
+def test_a_steady_turn_is_an_equilibrium_of_the_full_constrained_equations():
+    """The turns come from Kane's reduced rows; the full equations with the
+    contact multipliers (M u' - f = B^T lambda, B u' = -B' u) must give
+    every acceleration zero there, with the steady steer torque, and no
+    drift of the lane (theta and heading rates zero)."""
+    from deathsphere.physics.two_wheeler import motion
+
+    b = benchmark_bicycle()
+    theta = np.arccos(np.array([1.0, 2.4]) / GLOBE - 1)
+    out = steady.turns_for_speed(theta, [5.0, 10.0], b, "sphere", GLOBE)
+    assert out["count"].tolist() == [1, 1]
+    q, u, torque = out["q"][:, :, 0], out["u"][:, :, 0], out["steer_torque"][:, 0]
+    p = motion.parameter_values(b, "sphere", GLOBE)
+    udot, _ = motion.accelerations(q, u, p, torque, "sphere")
+    assert np.abs(udot).max() < 1e-9 * np.abs(u).max() ** 2
+    assert np.abs(u[[0, 2, 3, 4, 6]]).max() < 1e-12
+    # and without the torque it is not (the torque is needed): the steer accelerates
+    udot0, _ = motion.accelerations(q, u, p, 0.0, "sphere")
+    assert np.abs(udot0[motion.STEER]).min() > 1e-3
