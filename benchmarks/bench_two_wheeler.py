@@ -2,9 +2,14 @@
 sec. 5): time per state of the generated equations, of the constrained
 accelerations and of the pitch's Newton solve over a batch of states, and
 of the benchmark's matrices; with --derive, the symbolic derivation too
-(needs sympy).
+(needs sympy).  With --lanes N, steady turns with their stability for a grid
+of about N lanes (heights x speeds) on a 16-foot globe (sec. 8.4); with
+--globe, the tables of sec. 8.5 (hands-free turns per height, and the
+stability of the turns with the steer torque held).
 
     PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py [--n 10000] [--repeat 5] [--derive]
+    PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py --lanes 10000
+    PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py --globe
 """
 
 import argparse
@@ -12,8 +17,10 @@ import time
 
 import numpy as np
 
-from deathsphere.physics.two_wheeler import _generated, linear, motion
+from deathsphere.physics.two_wheeler import _generated, linear, motion, stability
 from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
+
+GLOBE = 2.4384      # 16 ft
 
 
 def best_of(fn, repeat):
@@ -25,12 +32,111 @@ def best_of(fn, repeat):
     return best
 
 
+def lanes(n):
+    """Steady turns and stability (steer free and locked) for a grid of
+    about n lanes: sqrt(n) heights x sqrt(n) rear speeds."""
+    side = int(round(np.sqrt(n)))
+    heights = np.linspace(0.2, 4.6, side)
+    speeds = np.linspace(1.0, 15.0, side)
+    H, V = np.meshgrid(heights, speeds, indexing="ij")
+    theta = np.arccos(H.ravel() / GLOBE - 1)
+    t0, c0 = time.perf_counter(), time.process_time()
+    out = stability.turns_with_stability(theta, benchmark_bicycle(), speed=V.ravel(), r=GLOBE)
+    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    turns = int(np.isfinite(out["lean"]).sum())
+    print(f"lanes {theta.size} ({side} heights x {side} speeds), turns {turns}: {wall:.1f} s wall, {cpu:.1f} s CPU, "
+          f"{wall / theta.size * 1e3:.2f} ms per lane")
+
+
+def globe():
+    """The tables of docs/two-wheeler.md sec. 8.5."""
+    b = benchmark_bicycle()
+    heights = np.round(np.arange(0.2, 4.61, 0.4), 1)
+    theta = np.arccos(heights / GLOBE - 1)
+    out = stability.turns_with_stability(theta, b, torque=0.0, r=GLOBE)
+    print("hands-free turns (steer torque 0), 16-ft globe, benchmark bicycle, head (0.3, -1.7) m")
+    print("height_m lean_deg steer_deg v_rear v_front v_cm normal_rear normal_front mu_rear mu_front head_m "
+          "growth_free growth_locked")
+    for i, j in zip(*np.nonzero(np.isfinite(out["lean"]))):
+        print(f"{heights[i]:4.1f} {np.rad2deg(out['lean'][i, j]):7.1f} {np.rad2deg(out['steer'][i, j]):6.1f} "
+              f"{out['v_rear'][i, j]:6.2f} {out['v_front'][i, j]:6.2f} {out['v_cm'][i, j]:6.2f} "
+              f"{out['normal_rear'][i, j]:6.2f} {out['normal_front'][i, j]:6.2f} "
+              f"{out['mu_required_rear'][i, j]:5.2f} {out['mu_required_front'][i, j]:5.2f} "
+              f"{out['head_clearance'][i, j]:5.2f} {out['growth_free'][i, j]:6.2f} {out['growth_locked'][i, j]:6.2f}")
+    speeds = np.arange(1.0, 20.01, 0.5)
+    H, V = np.meshgrid(heights, speeds, indexing="ij")
+    out = stability.turns_with_stability(np.arccos(H.ravel() / GLOBE - 1), b, speed=V.ravel(), r=GLOBE)
+    print("\nturns with the steady steer torque held, rear speeds 1-20 m/s")
+    print("height_m stable_free stable_locked least_growth_free_1_s at_v_m_s lean_deg steer_torque_n_m "
+          "torque_range_n_m")
+    # every turn of every lane: (heights, speeds, turns)
+    shape = H.shape + (out["lean"].shape[1],)
+    growth, locked = (np.where(np.isfinite(out[k]), out[k], np.inf).reshape(shape)
+                      for k in ("growth_free", "growth_locked"))
+    torque, lean = out["steer_torque"].reshape(shape), out["lean"].reshape(shape)
+    print(f"(at most {shape[2]} turns per lane)")
+    for i, h in enumerate(heights):
+        if not np.isfinite(growth[i]).any():
+            print(f"{h:4.1f} no turn")
+            continue
+        k, t = np.unravel_index(np.argmin(growth[i]), growth[i].shape)
+        print(f"{h:4.1f} {int((growth[i] < -stability.STABLE_BELOW).sum()):3d} "
+              f"{int((locked[i] < -stability.STABLE_BELOW).sum()):3d} {growth[i, k, t]:7.3f} {speeds[k]:5.1f} "
+              f"{np.rad2deg(lean[i, k, t]):6.1f} {torque[i, k, t]:6.2f} "
+              f"{np.nanmin(torque[i]):6.2f}..{np.nanmax(torque[i]):6.2f}")
+
+
+def single_contact():
+    """ride's single-contact machine with the benchmark bicycle's mass, mass
+    centre height and locked inertia (products and the mass centre's offset
+    ahead of the rear contact dropped): its neutral speed bands per height."""
+    from deathsphere.physics.machine import ride_orbit
+    from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
+
+    b = benchmark_bicycle()
+    bodies = [(b.mR, 0.0, -b.rR, b.IRxx, b.IRyy, b.IRxx), (b.mB, b.xB, b.zB, b.IBxx, b.IByy, b.IBzz),
+              (b.mH, b.xH, b.zH, b.IHxx, b.IHyy, b.IHzz), (b.mF, b.w, -b.rF, b.IFxx, b.IFyy, b.IFxx)]
+    m = sum(body[0] for body in bodies)
+    xg = sum(mb * x for mb, x, *_ in bodies) / m
+    zg = sum(mb * z for mb, _, z, *_ in bodies) / m
+    roll = sum(ix + mb * (z - zg) ** 2 for mb, x, z, ix, iy, iz in bodies)
+    pitch = sum(iy + mb * ((x - xg) ** 2 + (z - zg) ** 2) for mb, x, z, ix, iy, iz in bodies)
+    yaw = sum(iz + mb * (x - xg) ** 2 for mb, x, z, ix, iy, iz in bodies)
+    spin, a, h = b.IRyy + b.IFyy, b.rR, -zg
+    print(f"\nsingle-contact machine: mass {m} kg, h {h:.4f} m, I_roll {roll:.3f}, I_pitch {pitch:.3f}, "
+          f"I_yaw {yaw:.3f} kg m^2, J {spin}, a {a} m (mass centre {xg:.3f} m ahead of the contact, dropped)")
+    print("height_m orbits_1_20_m_s neutral v_contact_m_s")
+    params = MachineParams(a, 0.0, GLOBE, h, b.g, m, roll, pitch, yaw, spin)
+    alpha = np.deg2rad(np.linspace(-89.0, 179.0, 2000))
+    for height in np.round(np.arange(0.2, 4.61, 0.4), 1):
+        theta = np.arccos(height / GLOBE - 1)
+        orbit = ride_orbit(theta, alpha, GLOBE, b.g, m, h, a, 0.0, pitch, yaw, spin, 1.7)
+        ok = np.isfinite(orbit["omega"]) & (orbit["status"] == 0)
+        ok &= (orbit["v_contact"] > 1.0) & (orbit["v_contact"] < 20.0)
+        if not ok.any():
+            print(f"{height:4.1f} no orbit")
+            continue
+        growth = machine_stability(np.full(ok.sum(), theta), alpha[ok], params)["growth_rate"]
+        v = orbit["v_contact"][ok][growth < stability.STABLE_BELOW]
+        band = f"{v.min():.2f}..{v.max():.2f}" if v.size else "none"
+        print(f"{height:4.1f} {int(ok.sum()):4d} {v.size:3d} {band}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=10_000)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--derive", action="store_true", help="time the symbolic derivation (sympy)")
+    ap.add_argument("--lanes", type=int, default=0, help="time steady turns with stability for about this many lanes")
+    ap.add_argument("--globe", action="store_true", help="print the 16-foot globe's tables")
     args = ap.parse_args()
+    if args.lanes:
+        lanes(args.lanes)
+        return
+    if args.globe:
+        globe()
+        single_contact()
+        return
     bicycle = benchmark_bicycle()
     p = motion.parameter_values(bicycle)
     rng = np.random.default_rng(1)

@@ -22,7 +22,8 @@ from deathsphere.physics.two_wheeler import _generated
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
 __all__ = ["INDEPENDENT", "DEPENDENT", "HEADING", "LEAN", "PITCH", "REAR", "STEER", "parameter_values", "pitch",
-           "dependent_speeds", "full_speeds", "accelerations", "reduced_residual", "energy", "state_rates"]
+           "dependent_speeds", "full_speeds", "accelerations", "reduced_residual", "reduced_mass_and_forcing", "energy",
+           "state_rates"]
 
 #: Indices in q and u (both surfaces): heading 2, lean 3, pitch 4, rear wheel 5, steer 6, front wheel 7.
 HEADING, LEAN, PITCH, REAR, STEER = 2, 3, 4, 5, 6
@@ -147,3 +148,19 @@ def state_rates(x, p, steer_torque=0.0, surface: str = "flat"):
     q, u = x[:8], x[8:]
     udot, _ = accelerations(q, u, p, steer_torque, surface)
     return np.concatenate([u, udot])
+
+
+def reduced_mass_and_forcing(q, u_ind, p, steer_torque=0.0, surface: str = "flat"):
+    """(A^T M A, A^T (f - M a), u): Kane's reduced equations solved form,
+    A^T M A u_ind' = A^T (f - M a), batch first (..., 3, 3), (..., 3), and
+    the eight speeds (beyond the paper; docs/two-wheeler.md sec. 4)."""
+    equations, _, _ = _functions(surface)
+    u, A = full_speeds(q, u_ind, p, surface)
+    M, f, B, bias = equations(q, u, p, steer_torque)
+    dep, _ = _split(B)
+    a = np.zeros(A.shape[:-1], dtype=np.result_type(A, bias))
+    a[..., list(DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
+    M = np.moveaxis(M, (0, 1), (-2, -1))
+    At = np.swapaxes(A, -1, -2)
+    force = np.moveaxis(f, 0, -1) - np.einsum("...ij,...j->...i", M, a)
+    return At @ M @ A, np.einsum("...ij,...j->...i", At, force), u

@@ -1,0 +1,161 @@
+"""Self-stability of the Whipple bicycle's steady turns: the eigenvalues of
+the nonlinear equations linearised about a steady turn in the frame turning
+with it (beyond the paper; docs/two-wheeler.md sec. 8.3).
+
+The state in the turning frame: on the sphere (theta, heading, lean, steer,
+lean rate, rear wheel rate, steer rate); on flat ground (lean, steer, lean
+rate, rear wheel rate, steer rate).  Dropped as trivial, because the
+equations do not depend on them: the azimuth (the sphere's symmetry about
+its vertical axis; on flat ground x, y and the heading), the wheel angles
+(round wheels); the pitch is fixed by the other coordinates (holonomic).
+With the steer locked, the steer and the steer rate are dropped too (the
+steer held at its steady value by whatever torque it takes).
+
+One more direction is trivial: E - T steer (energy less the work of the
+constant steer torque) is conserved, so the neighbouring steady turns form a
+family and the Jacobian J has a zero eigenvalue along it; its image is the
+level set of that integral.  The eigenvalues reported are those of J
+restricted to its image (the leading singular vectors): every eigenvalue
+of J but that zero.  Seven states give six eigenvalues on the sphere (free
+steer; four locked), five give four on flat ground (the benchmark's four
+in straight running; two locked).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere.physics.two_wheeler import motion, steady
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "jacobians", "eigenvalues", "verdict",
+           "turns_with_stability"]
+
+_STEP = 1e-30
+#: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).
+STABLE_BELOW = 1e-9
+
+
+def _layout(surface, steer):
+    """Indices of the state's coordinates in q and of its speeds in u_ind."""
+    coords = [0, motion.HEADING] if surface == "sphere" else []
+    coords += [motion.LEAN] + ([motion.STEER] if steer == "free" else [])
+    speeds = [0, 1] + ([2] if steer == "free" else [])
+    return coords, speeds
+
+
+def turn_state_vector(q, u, surface="sphere", steer="free"):
+    """The state (k, ...) of a steady turn from its q, u (8, ...) (beyond
+    the paper; docs/two-wheeler.md sec. 8.3)."""
+    coords, speeds = _layout(surface, steer)
+    ind = np.asarray(u)[list(motion.INDEPENDENT)]
+    return np.concatenate([np.asarray(q)[coords], ind[speeds]])
+
+
+def _rates(x, q_steady, p, torque, surface):
+    """d/dt of the free-steer state x (k, n), the other coordinates at their
+    steady values q_steady (8, n); and, from the same evaluation, the
+    locked-steer state's rates (the steer row dropped, steer rate 0)."""
+    coords, speeds = _layout(surface, "free")
+    q = np.array(q_steady, dtype=np.result_type(x, q_steady))
+    q[coords] = x[:len(coords)]
+    q = motion.pitch(q, p, surface)
+    u_ind = np.zeros((3,) + x.shape[1:], dtype=q.dtype)
+    u_ind[speeds] = x[len(coords):]
+    mass, forcing, u = motion.reduced_mass_and_forcing(q, u_ind, p, torque, surface)
+    out = []
+    for mode in ("free", "locked"):
+        c, sp = _layout(surface, mode)
+        udot = np.linalg.solve(mass[..., sp, :][..., :, sp], forcing[..., sp][..., None])[..., 0]
+        out.append(np.concatenate([u[c], np.moveaxis(udot, -1, 0)]))
+    return out
+
+
+def _locked_columns(surface):
+    """Where the locked state's directions sit among the free state's."""
+    free_c, free_s = _layout(surface, "free")
+    locked_c, locked_s = _layout(surface, "locked")
+    return [free_c.index(i) for i in locked_c] + [len(free_c) + free_s.index(i) for i in locked_s]
+
+
+def jacobians(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None):
+    """The Jacobians (n, k, k) of the state's rates at steady turns (q, u
+    (8, n), the steady steer torque (n,) held constant), steer free and
+    steer locked, by complex steps from one batch of evaluations (beyond
+    the paper; docs/two-wheeler.md sec. 8.3)."""
+    p = motion.parameter_values(parameters, surface, r)
+    q, u = np.asarray(q, float).reshape(8, -1), np.asarray(u, float).reshape(8, -1)
+    x0 = turn_state_vector(q, u, surface, "free")
+    k, n = x0.shape
+    x = np.repeat(x0[:, :, None], k, axis=2).astype(complex)
+    x[np.arange(k), :, np.arange(k)] += 1j * _STEP
+    qs = np.repeat(q[:, :, None], k, axis=2)
+    torque = np.repeat(np.broadcast_to(np.asarray(torque, float).reshape(-1), (n,))[:, None], k, axis=1)
+    free, locked = _rates(x.reshape(k, -1), qs.reshape(8, -1), p, torque.reshape(-1), surface)
+    J_free = np.moveaxis(free.imag.reshape(k, n, k) / _STEP, 1, 0)
+    J_locked = np.moveaxis(locked.imag.reshape(-1, n, k) / _STEP, 1, 0)[..., _locked_columns(surface)]
+    return J_free, J_locked
+
+
+def jacobian(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None, steer="free"):
+    """The Jacobian (n, k, k) of the state's rates at steady turns, steer
+    ``free`` (under the steady torque held constant) or ``locked``
+    (:func:`jacobians`; beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    J_free, J_locked = jacobians(q, u, torque, parameters, surface, r)
+    return J_free if steer == "free" else J_locked
+
+
+def eigenvalues(J):
+    """The eigenvalues of J restricted to its image (every eigenvalue but
+    the trivial zero along the family of steady turns), sorted by real part,
+    largest first, ties by imaginary part: (n, k - 1) (beyond the paper;
+    docs/two-wheeler.md sec. 8.3)."""
+    U = np.linalg.svd(J)[0][..., :, :-1]
+    reduced = np.swapaxes(U, -1, -2) @ J @ U
+    values = np.linalg.eigvals(reduced)
+    order = np.lexsort((-values.imag, -values.real), axis=-1)
+    return np.take_along_axis(values, order, axis=-1)
+
+
+def verdict(values):
+    """'stable' where every real part is below -STABLE_BELOW, 'unstable'
+    where one is above it, 'marginal' otherwise, and the growth rate (the
+    largest real part, 1/s) (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    growth = values.real.max(axis=-1)
+    out = np.where(growth < -STABLE_BELOW, "stable", np.where(growth > STABLE_BELOW, "unstable", "marginal"))
+    return out, growth
+
+
+def turns_with_stability(lane, parameters: BicycleParameters, speed=None, torque=None, surface="sphere", r=None,
+                         head=(0.3, -1.7)):
+    """Every steady turn of each lane (theta on the sphere, curvature on flat
+    ground) at the rear contact's ``speed`` or held with the steer
+    ``torque``, and its stability with the steer free under the steady
+    torque held constant and with the steer locked: the arrays of
+    ``steady.turns_for_speed`` (n, k) plus ``eigenvalues_free`` (n, k, 6 on
+    the sphere, 4 on flat ground), ``eigenvalues_locked`` (n, k, 4 or 2),
+    ``stability_free``, ``stability_locked`` ('stable', 'marginal',
+    'unstable', '' where no turn), ``growth_free``, ``growth_locked`` (1/s)
+    (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    if (speed is None) == (torque is None):
+        raise ValueError("give either speed or torque")
+    if speed is not None:
+        out = steady.turns_for_speed(lane, speed, parameters, surface, r, head)
+    else:
+        out = steady.turns_for_torque(lane, torque, parameters, surface, r, head)
+    found = np.isfinite(out["lean"])
+    rows, cols = np.nonzero(found)
+    if rows.size:
+        both = jacobians(out["q"][:, rows, cols], out["u"][:, rows, cols], out["steer_torque"][rows, cols],
+                         parameters, surface, r)
+    for mode in ("free", "locked"):
+        size = (6 if surface == "sphere" else 4) - (2 if mode == "locked" else 0)
+        values = np.full(found.shape + (size,), np.nan + 0j)
+        verdicts = np.full(found.shape, "", dtype="<U8")
+        growth = np.full(found.shape, np.nan)
+        if rows.size:
+            ev = eigenvalues(both[0] if mode == "free" else both[1])
+            values[rows, cols] = ev
+            verdicts[rows, cols], growth[rows, cols] = verdict(ev)
+        out[f"eigenvalues_{mode}"], out[f"stability_{mode}"], out[f"growth_{mode}"] = values, verdicts, growth
+    return out

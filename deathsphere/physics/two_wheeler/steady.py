@@ -1,0 +1,428 @@
+"""Steady turns of the Whipple bicycle: inside a sphere, the bicycle turning
+about the vertical axis through the sphere's centre at a constant rate, every
+coordinate but the azimuth and the wheel angles constant; on flat ground, a
+circle of given curvature (beyond the paper; docs/two-wheeler.md sec. 8).
+
+A steady turn has heading pi/2 (the rear contact runs along its parallel,
+the rider's right towards the floor; the mirror image runs the other way
+with lean and steer negated) and three conditions on (lean, steer, rate):
+
+* kinematic: the heading stays constant on the sphere (the front axle lies in
+  the meridian plane of the front contact), on flat ground the heading rate
+  is the curvature times the speed: ``condition(lean, steer) = 0``;
+* Kane's lean row: G_lean + w^2 H_lean = 0, w the rear wheel rate: Kane's
+  equations are quadratic in the speeds, and every speed of a steady turn is
+  proportional to w, so each row is G(q) + w^2 H(q);
+* the steer row gives the steady steer torque T = G_steer + w^2 H_steer.
+
+The rear wheel row then holds by itself (power balance: the height, the
+kinetic energy and the steer angle are constant).  So at a lane every turn
+is a point of one curve lean -> (steer, w^2, T); a speed or a torque picks
+isolated points on it, found by a scan in lean and refined by Newton's
+method in (lean, steer).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere.physics.two_wheeler import _generated, geometry, motion
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+__all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "configuration", "turn_coefficients", "solve_steer",
+           "lean_curve", "turns_for_speed", "turns_for_torque", "turn_state"]
+
+#: The scan in lean (rad): 0.5 degree steps, up to 89 degrees either side.
+LEAN_GRID = np.deg2rad(np.arange(-89.0, 89.0 + 1e-9, 0.5))
+#: Complex step for derivatives inside Newton's method.
+_STEP = 1e-30
+_NEWTON = 30
+#: Turns faster than this (rear contact, m/s) are not sought: where the lean
+#: row's speed coefficient vanishes the torque equation has roots at
+#: unbounded speeds (1e7 m/s), the limit of gyroscopic balance, not a lane.
+MAX_SPEED = 100.0
+_TOL = 1e-12
+
+
+def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
+    """q (8, ...) of a steady turn: sphere, lane = theta (rear contact's
+    polar angle from the upward vertical); flat, lane = the path's curvature
+    (ignored here); heading pi/2, pitch from the holonomic constraint
+    (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    lane, lean, steer = np.broadcast_arrays(*(np.asarray(x) for x in (lane, lean, steer)))
+    dtype = np.result_type(lane, lean, steer, float)
+    q = np.zeros((8,) + lane.shape, dtype=dtype)
+    if surface == "sphere":
+        q[0] = lane
+    q[motion.HEADING] = np.pi / 2
+    q[motion.LEAN], q[motion.STEER] = lean, steer
+    # Newton's pitch can run away where no configuration exists (lean near 90
+    # degrees, a vanishing wheel base): those are masked by _pitch_holds
+    p = motion.parameter_values(parameters, surface, r)
+    with np.errstate(over="ignore", invalid="ignore"):
+        q = motion.pitch(q, p, surface)
+    # where it ran away, pitch 0: finite, and _pitch_holds still says no
+    q[motion.PITCH] = np.where(_pitch_holds(q, p, surface), q[motion.PITCH], 0.0)
+    return q
+
+
+def _pitch_holds(q, p, surface):
+    """Where Newton's pitch converged (|constraint| below 1e-10 m, pitch
+    within a radian): elsewhere the configuration does not exist."""
+    pitch = q[motion.PITCH].real
+    finite = np.isfinite(pitch) & (np.abs(pitch) < 1.0)
+    h, _ = getattr(_generated, f"{surface}_holonomic")(np.where(finite, q.real, 0.0), p)
+    return finite & (np.abs(h[0]) < 1e-10)
+
+
+def _condition(lane, q, p, surface):
+    """The kinematic condition per unit rear wheel rate: sphere, the heading
+    rate; flat, heading rate minus curvature times forward speed."""
+    u = motion.dependent_speeds(q, np.stack(np.broadcast_arrays(0.0, -1.0, 0.0 * q[0])), p, surface)
+    return u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - lane * u[1]
+
+
+def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
+    """(condition, G, H) at (lane, lean, steer): Kane's reduced equations of a
+    steady turn are G + w^2 H (rows lean, rear wheel, steer; no steer torque),
+    w the rear wheel rate (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    p = motion.parameter_values(parameters, surface, r)
+    q = configuration(lane, lean, steer, parameters, surface, r)
+    q1 = q.reshape(8, -1)
+    n = q1.shape[1]
+    unit = np.zeros((3, n))
+    unit[1] = 1.0
+    u, A = motion.full_speeds(q1, unit, p, surface)
+    kappa = np.broadcast_to(lane, np.shape(q)[1:]).ravel()
+    condition = u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - kappa * u[1]
+    # both speed sets in one call of the equations: at rest (G) and at unit wheel rate (G + H)
+    M, f, B, bias = getattr(_generated, f"{surface}_equations")(
+        np.concatenate([q1, q1], axis=1), np.concatenate([0 * u, u], axis=1), p, 0.0)
+    dep = np.moveaxis(B, (0, 1), (-2, -1))[..., list(motion.DEPENDENT)]
+    a = np.zeros((2 * n, 8), dtype=np.result_type(u, bias))
+    a[:, list(motion.DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
+    force = np.einsum("ij...,...j->...i", M, a) - np.moveaxis(f, 0, -1)
+    R = np.einsum("...ij,...i->j...", np.concatenate([A, A]), force)
+    G, H = R[:, :n], R[:, n:] - R[:, :n]
+    holds = _pitch_holds(q1, p, surface)
+    shape = np.shape(q)[1:]
+    return tuple(np.where(holds, x, np.nan).reshape(x.shape[:-1] + shape) for x in (condition, G, H))
+
+
+def _initial_steer(lane, lean, parameters, surface, r):
+    """The flat-ground guess: tan(steer) = w kappa cos(lean) / cos(lam),
+    kappa the geodesic curvature of the lane (-cot(theta)/r on the sphere)."""
+    if surface == "flat":
+        kappa = lane
+    else:
+        # at the poles the guess is a quarter turn; Newton's step then says no
+        with np.errstate(divide="ignore", invalid="ignore"):
+            kappa = np.nan_to_num(-np.cos(lane) / (r * np.sin(lane)), posinf=1e300, neginf=-1e300)
+    return np.arctan(parameters.w * kappa * np.cos(lean) / np.cos(parameters.lam))
+
+
+def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=None, steer=None):
+    """The steer of a steady turn at each lean (the kinematic condition, by
+    Newton's method, its slope by a complex step renewed every third step,
+    from the flat-ground guess); NaN where it does not converge below 1e-12 rad or leaves
+    |steer| < 80 degrees (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    lane, lean = np.broadcast_arrays(np.asarray(lane, float), np.asarray(lean, float))
+    p = motion.parameter_values(parameters, surface, r)
+    delta = _initial_steer(lane, lean, parameters, surface, r) if steer is None else np.array(steer, float)
+    delta = np.array(np.broadcast_to(delta, lane.shape), dtype=float)
+    step = np.full(lane.shape, np.inf)
+    slope = np.zeros(lane.shape)
+    active = np.isfinite(delta)
+    for k in range(_NEWTON):
+        # only the unconverged points are evaluated: the equations cost per point
+        idx = np.nonzero(active)
+        if idx[0].size == 0:
+            break
+        # a complex step (value and slope) every third iteration, real chord steps between: half the cost
+        fresh = k % 3 == 0
+        q = configuration(lane[idx], lean[idx], delta[idx] + (1j * _STEP if fresh else 0.0), parameters, surface, r)
+        c = _condition(lane[idx], q, p, surface)
+        if fresh:
+            slope[idx] = c.imag / _STEP
+        c = c.real
+        ok = (np.abs(slope[idx]) > 1e-300) & np.isfinite(c) & _pitch_holds(q, p, surface)
+        d = np.where(ok, c / np.where(ok, slope[idx], 1.0), np.inf)
+        step[idx] = d
+        delta[idx] = np.where(ok, np.clip(delta[idx] - np.where(ok, d, 0.0), -1.5, 1.5), np.nan)
+        active[idx] = ok & (np.abs(d) > 1e-14)
+    good = np.isfinite(delta) & (np.abs(step) < 1e-12) & (np.abs(np.nan_to_num(delta)) < np.deg2rad(80.0))
+    return np.where(good, delta, np.nan)
+
+
+def lean_curve(lane, parameters: BicycleParameters, surface="sphere", r=None, lean=LEAN_GRID):
+    """Every steady turn of each lane as a function of lean: steer, G, H on
+    the grid ``lean`` (lanes (n,), result (n, m); G and H (3, n, m)) (beyond
+    the paper; docs/two-wheeler.md sec. 8)."""
+    lane = np.asarray(lane, float).reshape(-1)
+    L = np.broadcast_to(lean, (lane.size, np.size(lean)))
+    X = np.broadcast_to(lane[:, None], L.shape)
+    steer = solve_steer(X.ravel(), L.ravel(), parameters, surface, r).reshape(L.shape)
+    ok = np.isfinite(steer)
+    _, G, H = turn_coefficients(X.ravel(), L.ravel(), np.where(ok, steer, 0.0).ravel(), parameters, surface, r)
+    G = np.where(ok, G.reshape((3,) + L.shape), np.nan)
+    H = np.where(ok, H.reshape((3,) + L.shape), np.nan)
+    return {"lean": np.array(L), "steer": steer, "G": G, "H": H}
+
+
+def _target(G, H, w2, torque):
+    """The function whose zeros are the turns: for a speed (w2 given) the
+    lean row; for a torque, G_s H_l - G_l H_s - T H_l (w2 eliminated)."""
+    if torque is None:
+        return G[0] + w2 * H[0]
+    return G[2] * H[0] - G[0] * H[2] - torque * H[0]
+
+
+def _brackets(f, lean, steer):
+    """Brackets of the zeros of f sampled on lean (n, m): sign changes, and
+    near tangencies where a parabola through a local minimum of |f| and its
+    neighbours crosses zero between samples (two zeros closer than a step).
+    Returns (row, lean0, steer0) starting points, the steer interpolated
+    along the curve."""
+    fin = np.isfinite(f)
+    change = fin[:, :-1] & fin[:, 1:] & (np.sign(f[:, :-1]) != np.sign(f[:, 1:]))
+    rows, cols = np.nonzero(change)
+    a, b = f[rows, cols], f[rows, cols + 1]
+    frac = a / (a - b)
+    start = [lean[rows, cols] + frac * (lean[rows, cols + 1] - lean[rows, cols])]
+    start_steer = [steer[rows, cols] + frac * (steer[rows, cols + 1] - steer[rows, cols])]
+    out_rows = [rows]
+    # tangencies: |f| locally smallest without a sign change
+    mid = fin[:, 1:-1] & fin[:, :-2] & fin[:, 2:]
+    f0, f1, f2 = f[:, :-2], f[:, 1:-1], f[:, 2:]
+    same = (np.sign(f0) == np.sign(f1)) & (np.sign(f1) == np.sign(f2))
+    curv = f0 - 2 * f1 + f2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        vertex = f1 - (f2 - f0) ** 2 / (8 * curv)
+        x = 0.5 * (f0 - f2) / curv
+    near = mid & same & (np.abs(f1) <= np.abs(f0)) & (np.abs(f1) <= np.abs(f2)) & (np.sign(vertex) != np.sign(f1))
+    near &= np.isfinite(x) & (np.abs(x) <= 1)
+    r2, c2 = np.nonzero(near)
+    h = lean[r2, c2 + 2] - lean[r2, c2 + 1]
+    for side in (-1, 1):
+        # the two zeros of the parabola, either side of its vertex
+        disc = np.sqrt(np.maximum(-2 * vertex[r2, c2] / curv[r2, c2], 0.0))
+        start.append(lean[r2, c2 + 1] + (x[r2, c2] + side * disc) * h)
+        start_steer.append(steer[r2, c2 + 1])
+        out_rows.append(r2)
+    return np.concatenate(out_rows), np.concatenate(start), np.concatenate(start_steer)
+
+
+def _newton_step(lane, lean, steer, w2, torque, parameters, surface, r):
+    """One Newton step in (lean, steer) on (condition, target), the
+    Jacobian by complex steps (both in one batch); NaN where singular."""
+    m = lean.size
+    c, G, H = turn_coefficients(np.concatenate([lane, lane]), np.concatenate([lean + 1j * _STEP, lean + 0j]),
+                                np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, surface, r)
+    both = _target(G, H, None if w2 is None else np.concatenate([w2, w2]),
+                   None if torque is None else np.concatenate([torque, torque]))
+    c, c_s, t, t_s = c[:m], c[m:], both[:m], both[m:]
+    j00, j01, j10, j11 = c.imag / _STEP, c_s.imag / _STEP, t.imag / _STEP, t_s.imag / _STEP
+    det = j00 * j11 - j01 * j10
+    ok = np.abs(det) > 0
+    det = np.where(ok, det, 1.0)
+    d_lean = np.where(ok, (j11 * c.real - j01 * t.real) / det, np.nan)
+    d_steer = np.where(ok, (j00 * t.real - j10 * c.real) / det, np.nan)
+    return d_lean, d_steer
+
+
+def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
+    """Newton's method in (lean, steer) on (condition, target), iterating
+    only the unconverged turns; returns lean, steer, converged."""
+    lean, steer = np.array(lean, float), np.array(steer, float)
+    size = np.full(lean.shape, np.inf)
+    active = np.ones(lean.shape, bool)
+    for _ in range(_NEWTON):
+        idx = np.nonzero(active)[0]
+        if idx.size == 0:
+            break
+        d_lean, d_steer = _newton_step(lane[idx], lean[idx], steer[idx], None if w2 is None else w2[idx],
+                                       None if torque is None else torque[idx], parameters, surface, r)
+        moving = np.isfinite(d_lean) & np.isfinite(d_steer)
+        lean[idx] -= np.clip(np.where(moving, d_lean, 0.0), -0.1, 0.1)
+        steer[idx] -= np.clip(np.where(moving, d_steer, 0.0), -0.1, 0.1)
+        size[idx] = np.where(moving, np.abs(d_lean) + np.abs(d_steer), np.inf)
+        active[idx] = moving & (size[idx] > _TOL)
+    return lean, steer, size < 1e-10
+
+
+def _solve(lane, curve, w2, torque, parameters, surface, r):
+    """All turns of each lane picked by a speed (w2) or a torque, (n, k)
+    NaN-padded lean and steer, sorted by lean, duplicates merged."""
+    n = np.size(lane)
+    f = _target(curve["G"], curve["H"], w2[:, None] if torque is None else None,
+                None if torque is None else torque[:, None])
+    rows, start, steer0 = _brackets(f, curve["lean"], curve["steer"])
+    lane_r = np.asarray(lane, float)[rows]
+    ok0 = np.isfinite(steer0) & np.isfinite(start)
+    rows, start, steer0, lane_r = rows[ok0], start[ok0], steer0[ok0], lane_r[ok0]
+    lean, steer, conv = _refine(lane_r, start, steer0, w2[rows] if torque is None else None,
+                                None if torque is None else torque[rows], parameters, surface, r)
+    _, G, H = turn_coefficients(lane_r, np.where(conv, lean, 0.0), np.where(conv, steer, 0.0), parameters, surface, r)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rate2 = -G[0] / H[0]
+    keep = conv & np.isfinite(rate2) & (rate2 > 0) & (rate2 * parameters.rR**2 < MAX_SPEED**2)
+    if torque is None:
+        # the speed turn_state will recover from the lean row must be the one asked for
+        keep &= np.abs(rate2 - w2[rows]) <= 1e-6 * w2[rows]
+    keep &= np.abs(lean) < np.pi / 2
+    rows, lean, steer = rows[keep], lean[keep], steer[keep]
+    order = np.lexsort((lean, rows))
+    rows, lean, steer = rows[order], lean[order], steer[order]
+    dup = np.zeros(rows.size, bool)
+    dup[1:] = (rows[1:] == rows[:-1]) & (np.abs(lean[1:] - lean[:-1]) < 1e-9)
+    rows, lean, steer = rows[~dup], lean[~dup], steer[~dup]
+    counts = np.bincount(rows, minlength=n)
+    k = max(int(counts.max(initial=0)), 1)
+    slot = np.arange(rows.size) - np.repeat(np.cumsum(counts) - counts, counts)
+    L, S = np.full((n, k), np.nan), np.full((n, k), np.nan)
+    L[rows, slot], S[rows, slot] = lean, steer
+    return L, S, counts
+
+
+#: Why a lane has no row: ``reason`` of :func:`turns_for_speed` and :func:`turns_for_torque`.
+REASONS = {
+    "ok": "",
+    "lane": "theta must be finite and strictly between 0 and 180 degrees (the poles have no lap); "
+            "on flat ground the curvature must be finite",
+    "speed": "the speed must be finite and positive",
+    "torque": "the steer torque must be finite",
+    "none": "no steady turn at this lane and speed or torque",
+}
+#: Lanes closer to a pole than this (rad) are refused: the sphere's coordinates are singular there.
+POLE = 1e-6
+
+
+def _turns(lane, value, kind, parameters, surface, r, head):
+    """The common body of turns_for_speed and turns_for_torque: lanes that
+    cannot be computed are replaced by a harmless one and blanked after."""
+    lane, value = (np.array(x, float).reshape(-1) for x in np.broadcast_arrays(lane, value))
+    good_lane = np.isfinite(lane)
+    if surface == "sphere":
+        good_lane &= (lane > POLE) & (lane < np.pi - POLE)
+    good_value = np.isfinite(value) & ((value > 0) if kind == "speed" else True)
+    good = good_lane & good_value
+    lane[~good] = np.pi / 2 if surface == "sphere" else 0.1
+    value[~good] = 1.0
+    unique, inverse = np.unique(lane, return_inverse=True)
+    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
+    if kind == "speed":
+        L, S, counts = _solve(lane, curve, (value / parameters.rR) ** 2, None, parameters, surface, r)
+    else:
+        L, S, counts = _solve(lane, curve, None, value, parameters, surface, r)
+    L[~good], S[~good], counts[~good] = np.nan, np.nan, 0
+    out = turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head)
+    reason = np.where(counts > 0, REASONS["ok"], REASONS["none"])
+    reason = np.where(good_value, reason, REASONS[kind])
+    reason = np.where(good_lane, reason, REASONS["lane"])
+    return out | {"count": counts, "reason": reason}
+
+
+def turns_for_speed(lane, speed, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+    """Every steady turn of each lane (theta on the sphere, curvature on flat
+    ground) at the rear contact's speed ``speed`` (m/s, what a rear-wheel
+    speedometer reads): (n, k) NaN-padded arrays of :func:`turn_state`, sorted
+    by lean, ``count`` (n,) and ``reason`` (n,: empty where a turn was
+    found, else why not, :data:`REASONS`) (beyond the paper;
+    docs/two-wheeler.md sec. 8)."""
+    return _turns(lane, speed, "speed", parameters, surface, r, head)
+
+
+def turns_for_torque(lane, torque, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+    """Every steady turn of each lane held with the steer torque ``torque``
+    (N m; 0: hands-free), as :func:`turns_for_speed` (beyond the paper;
+    docs/two-wheeler.md sec. 8)."""
+    return _turns(lane, torque, "torque", parameters, surface, r, head)
+
+
+def _horizontal(v):
+    return np.stack([v[0], v[1], np.zeros_like(v[2])])
+
+
+def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+    """Everything about the steady turn at (lane, lean, steer), any shape,
+    NaN in gives NaN out (beyond the paper; docs/two-wheeler.md sec. 8):
+    ``omega`` (rad/s, about the vertical; on flat ground the heading rate),
+    ``pitch``, ``steer_torque`` (N m), speeds ``v_rear``, ``v_front``,
+    ``v_cm`` (m/s), per wheel ``normal_*`` and ``friction_*`` (the contact
+    force per total mass, m/s^2: along the inward normal, positive when
+    pushing; the tangential part's magnitude), ``mu_required_*``,
+    ``load_g`` (|total contact force| / weight), ``head_clearance`` (m,
+    r - |head|; +inf on flat ground), ``theta_rear``, ``theta_front``
+    (polar angles of the contacts from the upward vertical), ``contact``
+    (1 where both normal forces push, 0 where a wheel would lift), ``q``,
+    ``u``.
+    """
+    p = parameters
+    lane, lean, steer = np.broadcast_arrays(*(np.asarray(x, float) for x in (lane, lean, steer)))
+    shape = lane.shape
+    lane, lean, steer = lane.ravel(), lean.ravel(), steer.ravel()
+    valid = np.isfinite(lean) & np.isfinite(steer) & np.isfinite(lane)
+    lane0, lean0, steer0 = (np.where(valid, x, d) for x, d in ((lane, np.pi / 2 if surface == "sphere" else 0.0),
+                                                                 (lean, 0.0), (steer, 0.0)))
+    values = motion.parameter_values(p, surface, r)
+    _, G, H = turn_coefficients(lane0, lean0, steer0, p, surface, r)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        w2 = np.where(valid, -G[0] / H[0], np.nan)
+    valid &= np.isfinite(w2) & (w2 > 0)
+    w2 = np.where(valid, w2, 0.0)
+    torque = G[2] + w2 * H[2]
+    q = configuration(lane0, lean0, steer0, p, surface, r)
+    u_ind = np.stack([np.zeros_like(w2), -np.sqrt(w2), np.zeros_like(w2)])
+    u = motion.dependent_speeds(q, u_ind, values, surface)
+    _, lam = motion.accelerations(q, u, values, torque, surface)
+    pts = geometry.points(q, p, r, surface, head)
+    Y = pts["frames"]["Y"]
+    v_rear = np.sqrt(w2) * p.rR
+    if surface == "sphere":
+        omega = u[1]
+        n_rear = -pts["frames"]["T"][2]
+        n_front = -pts["Q"] / np.linalg.norm(pts["Q"], axis=0)
+        clearance = r - np.linalg.norm(pts["head"], axis=0)
+        theta_front = np.arccos(np.clip(-pts["Q"][2] / np.linalg.norm(pts["Q"], axis=0), -1, 1))
+
+        def swept(x):
+            return omega * _horizontal(x)
+    else:
+        omega = u[motion.HEADING]
+        n_rear = n_front = np.stack([np.zeros_like(w2), np.zeros_like(w2), -np.ones_like(w2)])
+        clearance = np.full_like(w2, np.inf)
+        theta_front = np.full_like(w2, np.pi)
+
+        def swept(x):
+            # omega (x - centre), the centre P + Y.y / kappa: regular at kappa = 0 (straight)
+            return omega * _horizontal(x - pts["P"]) - v_rear * Y[1]
+
+    bodies = ((p.mB, "rear_frame"), (p.mR, "rear_wheel"), (p.mH, "front_frame"), (p.mF, "front_wheel"))
+    mass = sum(m for m, _ in bodies)
+    # every point turns about the vertical axis: velocity z x swept(x), acceleration -omega swept(x)
+    momentum_rate = sum(-m * omega * swept(pts[k]) for m, k in bodies)
+    gravity = np.stack([np.zeros_like(w2), np.zeros_like(w2), p.g * mass * np.ones_like(w2)])
+    total = momentum_rate - gravity                         # the contact forces on the bicycle
+    front = lam[2] * Y[0] + lam[3] * Y[1] + lam[4] * Y[2]
+    rear = total - front
+    g_cm = sum(m * pts[k] for m, k in bodies) / mass
+    out = {"omega": omega, "pitch": q[motion.PITCH], "steer_torque": torque, "v_rear": v_rear,
+           "v_front": np.linalg.norm(swept(pts["Q"]), axis=0), "v_cm": np.linalg.norm(swept(g_cm), axis=0),
+           "load_g": np.linalg.norm(total, axis=0) / (mass * p.g), "head_clearance": clearance,
+           "theta_rear": lane0 if surface == "sphere" else np.full_like(w2, np.pi), "theta_front": theta_front,
+           "rear_tangential_check": np.stack([np.sum(rear * Y[0], 0) - lam[0], np.sum(rear * Y[1], 0) - lam[1]])}
+    for name, force, n in (("rear", rear, n_rear), ("front", front, n_front)):
+        normal = np.sum(force * n, axis=0)
+        tangential = np.linalg.norm(force - normal * n, axis=0)
+        out[f"normal_{name}"] = normal / mass
+        out[f"friction_{name}"] = tangential / mass
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[f"mu_required_{name}"] = np.where(normal > 0, tangential / np.where(normal > 0, normal, 1.0), np.inf)
+    # both wheels must push on the surface for the turn to be ridden
+    out["contact"] = ((out["normal_rear"] > 0) & (out["normal_front"] > 0)).astype(float)
+    out = {k: np.where(valid, v, np.nan) for k, v in out.items()}
+    out = {k: v.reshape(v.shape[:-1] + shape) if v.ndim > 1 else v.reshape(shape) for k, v in out.items()}
+    out["q"] = np.where(valid, q, np.nan).reshape((8,) + shape)
+    out["u"] = np.where(valid, u, np.nan).reshape((8,) + shape)
+    out["lean"], out["steer"] = lean.reshape(shape), steer.reshape(shape)
+    return out
