@@ -73,9 +73,8 @@ class ShowResult:
         raise NotImplementedError("ShowResult.falls waits for deathsphere.physics.fall")
 
 
-def _rider_row(lane: Lane, rider, globe) -> dict:
+def _rider_row(lane: Lane, rider, band) -> dict:
     """The riders table's row of one lane (ride's row, the speed band)."""
-    from deathsphere.show.margins import speed_band
     from deathsphere.show.pairs import contact_angles
 
     row, nan = lane.row, math.nan
@@ -95,7 +94,7 @@ def _rider_row(lane: Lane, rider, globe) -> dict:
                    load_g=row["load_bottom_g"], v_top_m_s=planned, v_top_min_m_s=row["v_top_min_m_s"],
                    v_bottom_m_s=row["v_bottom_m_s"], load_bottom_g=row["load_bottom_g"])
     out["v_cm_km_h"] = round(out["v_cm_m_s"] * 3.6, 9)
-    low, high = speed_band(lane, globe, planned)
+    low, high = band
     out.update(speed_low_m_s=low, speed_high_m_s=high, margin_low_pct=100.0 * (planned - low) / planned,
                margin_high_pct=100.0 * (high - planned) / planned)
     return out
@@ -103,7 +102,11 @@ def _rider_row(lane: Lane, rider, globe) -> dict:
 
 def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
     """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per rider in the plan's order."""
-    rows = [_rider_row(lane, rider, plan.globe) for lane, rider in zip(lanes, plan.riders)]
+    from deathsphere.show.margins import speed_bands
+
+    planned = [r.speed if r.lane == "horizontal" else r.v_top for r in plan.riders]
+    bands = speed_bands(lanes, plan.globe, planned)
+    rows = [_rider_row(lane, rider, band) for lane, rider, band in zip(lanes, plan.riders, bands)]
     text = {"name", "lane", "status", "reason", "machine"}
     return Table({c: np.array([r[c] for r in rows], dtype=object if c in text else float) for c in RIDER_COLUMNS})
 
@@ -112,13 +115,16 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
     """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
     b in the plan), its least clearance over the act, when and where, the
     verdict and the drift time (NaN: never)."""
-    from deathsphere.show.pairs import contact_angles, least_clearance, verdict
+    from deathsphere.show.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict
     from deathsphere.show.timing import drift_time
 
+    over_time = act_pairs(lanes)
+    found = dict(zip(over_time, ((c, t, "act") for c, t in least_clearances(lanes, over_time, duration))))
     rows = []
     for i, a in enumerate(lanes):
-        for b in lanes[i + 1:]:
-            c, t, basis = least_clearance(a, b, duration)
+        for j in range(i + 1, len(lanes)):
+            b = lanes[j]
+            c, t, basis = found[(i, j)] if (i, j) in found else least_clearance(a, b, duration)
             (ta, pa), (tb, pb) = contact_angles(a, t), contact_angles(b, t)
             v = verdict(c, min_clearance)
             dt = drift_time(a, b, min_clearance) if drift and v == "clear" else math.nan

@@ -74,6 +74,24 @@ class Lane:
         out["phi" if self.kind == "horizontal" else "psi"] = angle
         return out
 
+    def ends(self, t, clock: float = 1.0):
+        """(contact, head) (3, n) [m]: the envelope's segment at the times t."""
+        t = np.asarray(t, dtype=float).reshape(-1) * clock
+        if self.kind == "horizontal":
+            angle = self.phase + self.rate * t
+            c, s = np.cos(angle), np.sin(angle)
+            mer = self._meridian()
+            out = []
+            for key in ("contact", "head"):
+                rho, z = mer[key]
+                pts = np.empty((3, t.size))
+                pts[0], pts[1], pts[2] = rho * c, rho * s, z
+                out.append(pts)
+            return out[0], out[1]
+        angle = _loop_angle(self._u(t), self.rate_bottom, self._m())[0]
+        n = np.sin(angle) * self._e() + np.cos(angle) * _Z
+        return self.r * n, (self.r - self.machine.head) * n
+
     def at_angle(self, angle) -> dict:
         """'contact', 'head', 'com' (3, n) [m] with the lane's angle (phi or
         psi [rad], (n,)) at ``angle``."""
