@@ -268,13 +268,15 @@ def _energy(psi0, psi_dot0, r_g, M_eff, m, g):
     return s, u0, w0, kappa, c, ok
 
 
-def _travel_time(u0, u1, c, kappa):
+def _travel_time(u0, u1, c, kappa, turns=False):
     """t = int_{u0}^{u1} du / sqrt(c - kappa cos u), 0 <= u0 <= u1 < 2 pi,
     where the integrand is real (eq. M21 solved for the time; beyond the
     paper).  With x = (pi - u)/2, c - kappa cos u = (c + kappa)(1 - m sin^2 x),
     m = 2 kappa / (c + kappa):  t = 2 [F(x0|m) - F(x1|m)] / sqrt(c + kappa);
     for m > 1 (no lap over the top) the reciprocal-modulus form with
-    sin(beta) = sqrt(m) sin(x):  t = sqrt(2/kappa) [F(beta0|1/m) - F(beta1|1/m)]."""
+    sin(beta) = sqrt(m) sin(x):  t = sqrt(2/kappa) [F(beta0|1/m) - F(beta1|1/m)].
+    ``turns``: u1 is a turning point (beta1 = -pi/2 exactly, not through an
+    arcsine that loses half the digits there)."""
     x0 = 0.5 * (np.pi - u0)
     x1 = 0.5 * (np.pi - u1)
     total = c + kappa                                   # >= 0: the speed squared at the bottom
@@ -285,7 +287,7 @@ def _travel_time(u0, u1, c, kappa):
     mr = np.where(laps, 0.5, total / (2 * kappa))       # 1/m in [0, 1)
     mr_s = np.where(mr > 0, mr, 1.0)
     b0 = np.arcsin(np.clip(np.sin(x0) / np.sqrt(mr_s), -1.0, 1.0))
-    b1 = np.arcsin(np.clip(np.sin(x1) / np.sqrt(mr_s), -1.0, 1.0))
+    b1 = np.where(turns, -0.5 * np.pi, np.arcsin(np.clip(np.sin(x1) / np.sqrt(mr_s), -1.0, 1.0)))
     t_swing = np.sqrt(2.0 / kappa) * (_ellip_f(b0, mr) - _ellip_f(b1, mr))
     t_swing = np.where(mr > 0, t_swing, 0.0)            # at rest at the bottom
     return np.where(laps, t_lap, t_swing)
@@ -344,14 +346,14 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     c_star = np.where(swings, c / kappa, big_a / big_b)
     u_e = 2 * np.pi - np.arccos(np.clip(c_star, -1.0, 1.0))
     u_e = np.where(at_once | rides | ~ok, u0, np.maximum(u_e, u0))
-    t_event = _travel_time(u0, u_e, c, kappa)
+    t_event = _travel_time(u0, u_e, c, kappa, turns=swings)
     psi_event = psi0 + s * (u_e - u0)
     w_e = np.sqrt(np.maximum(c - kappa * np.cos(u_e), 0.0))
     highest = np.abs(np.mod(psi_event + np.pi, 2 * np.pi) - np.pi)   # angle from the top in [0, pi]
     nan = np.full(outcome.shape, np.nan)
-    # a full swing: from one turning point through the bottom to the other and back
-    u_turn = np.where(swings, 2 * np.pi - u_e, 0.0)
-    half = _travel_time(np.where(swings, u_turn, 0.0), np.where(swings, u_e, 0.0), c, kappa)
+    # a full swing, turning point to turning point and back: 4 K(1/m) sqrt(2/kappa)
+    mr = np.where(swings, (c + kappa) / (2 * kappa), 0.0)
+    half = 2.0 * np.sqrt(2.0 / kappa) * _ellip_f(np.full(mr.shape, 0.5 * np.pi), mr)
     return {
         "outcome": outcome,
         "t_lost": np.where(falls, t_event, nan),
