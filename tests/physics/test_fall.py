@@ -262,3 +262,34 @@ def test_a_hundred_thousand_loop_departures_in_one_call():
     lost = out["outcome"] == fall.FALLS
     assert np.isfinite(out["t_lost"][lost]).all() and (out["t_lost"][lost] >= 0).all()
     assert np.isfinite(out["swing_period"][out["outcome"] == fall.SWINGS]).all()
+
+
+# ---------------------------------------------------------------------------
+# a horizontal lane after the drop
+# ---------------------------------------------------------------------------
+
+MACHINE = dict(mass=190.0, h=0.55, a=0.3, t=0.05, inertia_pitch=35.0, inertia_yaw=30.0, spin_inertia=1.1, head=1.6)
+
+
+def test_a_horizontal_lane_holds_where_a_scan_of_every_tilt_finds_one():
+    from deathsphere.physics.machine import fit_window, ride_orbit
+
+    theta = np.radians([60.0, 90.0, 100.0, 120.0])
+    speeds = np.array([0.0, 2.0, 4.0, 6.0, 9.0, 13.0])
+    th, v = (x.ravel() for x in np.meshgrid(theta, speeds, indexing="ij"))
+    out = fall.horizontal_holds(th, v, 0.2, R, G, mu=0.9, **MACHINE)
+    # brute force: a sign change of v_cm - v between neighbouring tilts that both hold
+    lo, hi = fit_window(th, R, MACHINE["a"], MACHINE["t"])
+    alpha = lo[:, None] + (hi - lo)[:, None] * np.linspace(1e-6, 1 - 1e-6, 20001)[None]
+    orb = ride_orbit(th[:, None], alpha, R, G, head=MACHINE["head"], mu=0.9,
+                     **{k: x for k, x in MACHINE.items() if k != "head"})
+    ok = orb["status"] == 0
+    gap = np.where(ok, orb["v_cm"] - v[:, None], np.nan)
+    with np.errstate(invalid="ignore"):
+        crossing = ok[:, 1:] & ok[:, :-1] & (np.sign(gap[:, 1:]) != np.sign(gap[:, :-1]))
+    np.testing.assert_array_equal(out["holds"], crossing.any(axis=1) & (v > 0))
+    assert out["holds"].any() and not out["holds"].all()
+    held = out["holds"]
+    check = ride_orbit(th[held], out["alpha"][held], R, G, head=MACHINE["head"], mu=0.9,
+                       **{k: x for k, x in MACHINE.items() if k != "head"})
+    np.testing.assert_allclose(check["v_cm"], v[held], rtol=1e-6)
