@@ -154,7 +154,7 @@ def ballistic_landing(x0, v0, r, g):
     leaving a loop, where the parabola osculates the circle: three times), so
     a start on the surface moving inward is never reported as landing at
     t = 0; moving outward (into the steel) it lands at t = 0.  The zeros of
-    the derivative of what is left (companion-matrix eigenvalues) cut
+    the derivative of what is left (closed forms, Newton-polished) cut
     [0, T] into pieces on which it is monotone, T a time by which the centre
     of mass is below the globe's floor; the first piece whose right end is
     outside the globe (or within ``GRAZE`` of it) holds the landing, found by
@@ -169,6 +169,10 @@ def ballistic_landing(x0, v0, r, g):
     v0 = np.asarray(v0, dtype=float)
     x0, v0 = np.broadcast_arrays(x0.reshape(3, -1), v0.reshape(3, -1))
     n = x0.shape[1]
+    if n == 0:
+        empty = np.zeros(0)
+        return {"t_land": empty, "x_land": x0.copy(), "v_land": v0.copy(), "impact_speed": empty,
+                "impact_normal": empty, "status": np.zeros(0, dtype=np.int8)}
     r = np.broadcast_to(np.asarray(r, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
     z0, vz = x0[2], v0[2]
@@ -245,13 +249,14 @@ def _rf(x, y, z):
     return (1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0) / np.sqrt(mu)
 
 
-def _ellip_f(phi, m):
+def _ellip_f(phi, m, m1):
     """Incomplete elliptic integral of the first kind F(phi | m) for |phi| <=
-    pi/2 and m sin^2 phi <= 1 (not both = 1): sin(phi) R_F(cos^2 phi,
-    1 - m sin^2 phi, 1) (DLMF 19.25.5)."""
+    pi/2, 0 <= m <= 1 (not phi = +-pi/2 with m = 1), m1 = 1 - m given
+    apart so that 1 - m sin^2 phi = cos^2 phi + m1 sin^2 phi keeps its
+    digits near m = 1: sin(phi) R_F(cos^2 phi, 1 - m sin^2 phi, 1) (DLMF 19.25.5)."""
     s = np.sin(phi)
     cc = np.cos(phi) ** 2
-    return s * _rf(cc, np.maximum(1.0 - m * s * s, 0.0), np.ones_like(s))
+    return s * _rf(cc, cc + np.maximum(m1, 0.0) * s * s, np.ones_like(s))
 
 
 def _energy(psi0, psi_dot0, r_g, M_eff, m, g):
@@ -286,12 +291,14 @@ def _travel_time(u0, u1, c, kappa, turns=False):
     laps = c >= kappa
     tot_s = np.where(total > 0, total, 1.0)
     m = np.where(laps, 2 * kappa / tot_s, 0.5)
-    t_lap = 2.0 * (_ellip_f(x0, m) - _ellip_f(x1, m)) / np.sqrt(tot_s)
+    m1 = np.where(laps, (c - kappa) / tot_s, 0.5)
+    t_lap = 2.0 * (_ellip_f(x0, m, m1) - _ellip_f(x1, m, m1)) / np.sqrt(tot_s)
     mr = np.where(laps, 0.5, total / (2 * kappa))       # 1/m in [0, 1)
+    mr1 = np.where(laps, 0.5, (kappa - c) / (2 * kappa))
     mr_s = np.where(mr > 0, mr, 1.0)
     b0 = np.arcsin(np.clip(np.sin(x0) / np.sqrt(mr_s), -1.0, 1.0))
     b1 = np.where(turns, -0.5 * np.pi, np.arcsin(np.clip(np.sin(x1) / np.sqrt(mr_s), -1.0, 1.0)))
-    t_swing = np.sqrt(2.0 / kappa) * (_ellip_f(b0, mr) - _ellip_f(b1, mr))
+    t_swing = np.sqrt(2.0 / kappa) * (_ellip_f(b0, mr, mr1) - _ellip_f(b1, mr, mr1))
     t_swing = np.where(mr > 0, t_swing, 0.0)            # at rest at the bottom
     return np.where(laps, t_lap, t_swing)
 
@@ -356,7 +363,8 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     nan = np.full(outcome.shape, np.nan)
     # a full swing, turning point to turning point and back: 4 K(1/m) sqrt(2/kappa)
     mr = np.where(swings, (c + kappa) / (2 * kappa), 0.0)
-    half = 2.0 * np.sqrt(2.0 / kappa) * _ellip_f(np.full(mr.shape, 0.5 * np.pi), mr)
+    mr1 = np.where(swings, (kappa - c) / (2 * kappa), 1.0)
+    half = 2.0 * np.sqrt(2.0 / kappa) * _ellip_f(np.full(mr.shape, 0.5 * np.pi), mr, mr1)
     return {
         "outcome": outcome,
         "t_lost": np.where(falls, t_event, nan),
@@ -411,7 +419,7 @@ def loop_speed_profile(t, psi0, psi_dot0, r_g, M_eff, m, g):
     root = np.sqrt(total)
     x0 = 0.5 * (np.pi - u0)
     big_k = ellipk(mm)
-    phase = _ellip_f(x0, mm) - 0.5 * t * root
+    phase = _ellip_f(x0, mm, np.where(laps, (c - kappa) / total, 0.5)) - 0.5 * t * root
     turns = np.floor(phase / (2 * big_k) + 0.5)
     _sn, _cn, _dn, am = ellipj(phase - 2 * turns * big_k, mm)
     x = am + np.pi * turns
