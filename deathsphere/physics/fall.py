@@ -21,6 +21,17 @@ The model, in three stages:
 3. **Flight.**  From contact loss the centre of mass flies on a parabola
    until it meets the globe's surface (:func:`ballistic_landing`).
 
+A check with pencil and paper (the tests run it): a point mass on a great
+circle of radius rho = r leaves it at psi before the top where the normal
+force vanishes, g cos psi = v^2/rho.  There the parabola osculates the
+circle: with x0 = rho (-sin psi, cos psi) and v0 = v (cos psi, sin psi) in
+the loop's plane the landing quartic's three lowest coefficients vanish
+(|x0| = rho; x0 . v0 = 0; v^2 - g z0 = v^2 - g rho cos psi = 0), so
+f(t) = t^3 (g^2 t/4 - g v sin psi) and the flight lasts t = 4 v sin(psi)/g.
+Then, with v^2 = g rho cos psi, x = rho sin(psi) (4 cos^2 psi - 1) =
+rho sin(3 psi) and z = rho cos(psi) (1 - 4 sin^2 psi) = rho cos(3 psi): he
+lands 3 psi past the top, whatever psi.
+
 Limits of the model (say them wherever its numbers are shown): the body is
 a point at its centre of mass in flight -- it tumbles, and its extremities
 (head, handlebar) reach the steel or another rider before or after the
@@ -313,7 +324,9 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     ``r_g`` [m] in the loop of radius ``rho`` [m] (0 < r_g <= rho);
     ``M_eff`` [kg m^2] the loop's effective inertia M = m r_G^2 + I_pitch +
     J (rho^2 - 2 rho a)/a^2 (M21; a point mass: m r_G^2), ``m`` [kg],
-    ``g`` [m/s^2]; all broadcast.
+    ``g`` [m/s^2]; all broadcast.  Where only the loop's rates at the top
+    and the bottom are at hand, M23 gives M = 4 m g r_G / (psidot_b^2 -
+    psidot_t^2).
 
     Energy (M21) gives psidot^2 = C - kappa cos psi with kappa = 2 m g r_G / M
     and C = psi_dot0^2 + kappa cos psi0; the in-plane normal force per unit
