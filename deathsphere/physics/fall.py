@@ -118,7 +118,8 @@ def _cubic_roots(a, b, c, d):
     trig = np.stack([rad * np.cos(ang - 2 * np.pi * k / 3) for k in range(3)], axis=-1)
     sq = np.sqrt(np.maximum(disc, 0.0))
     one = np.cbrt(-q / 2.0 + sq) + np.cbrt(-q / 2.0 - sq)
-    roots = np.where(three[:, None], trig, np.stack([one, np.full_like(one, np.nan), np.full_like(one, np.nan)], -1))
+    lone = np.stack([one, np.full_like(one, np.nan), np.full_like(one, np.nan)], -1)
+    roots = np.where(three[:, None], trig, lone)
     roots = roots - shift[:, None]
     for _ in range(2):                                   # Newton polish, skipped at a double zero
         f = ((roots + b[:, None]) * roots + c[:, None]) * roots + d[:, None]
@@ -142,7 +143,8 @@ def _critical_points(c, degree):
     qa_s = np.where(qa != 0, qa, 1.0)
     sq = np.sqrt(np.maximum(qd, 0.0))
     real = qd >= 0
-    quad = np.stack([np.where(real, (-qb - sq) / (2 * qa_s), nan), np.where(real, (-qb + sq) / (2 * qa_s), nan), nan], -1)
+    quad = np.stack([np.where(real, (-qb - sq) / (2 * qa_s), nan),
+                     np.where(real, (-qb + sq) / (2 * qa_s), nan), nan], -1)
     # degree 2: p' = 2 c2 t + c1
     lin_a = np.where(c[2] != 0, c[2], 1.0)
     line = np.stack([-c[1] / (2 * lin_a), nan, nan], -1)
