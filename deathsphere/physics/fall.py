@@ -51,7 +51,7 @@ from deathsphere.physics.status import Status
 
 __all__ = [
     "RIDES_ON", "SWINGS", "FALLS", "NO_LOOP", "OUTCOMES",
-    "LANDS", "STARTS_OUTSIDE",
+    "LANDS", "STARTS_OUTSIDE", "NOT_FLOWN",
     "ballistic_landing", "loop_departure", "loop_time", "loop_state",
     "loop_speed_profile", "drop_velocity", "horizontal_holds",
 ]
@@ -62,8 +62,9 @@ __all__ = [
 RIDES_ON, SWINGS, FALLS, NO_LOOP = 0, 1, 2, -1
 OUTCOMES = ("rides_on", "swings", "falls")
 
-#: Status codes of :func:`ballistic_landing` (int8).
-LANDS, STARTS_OUTSIDE = 0, 1
+#: Status codes of :func:`ballistic_landing` (int8): NOT_FLOWN marks a row
+#: with a non-finite input, r <= 0 or g <= 0.
+LANDS, STARTS_OUTSIDE, NOT_FLOWN = 0, 1, 2
 
 #: A start within this fraction of r of the surface starts on it; a
 #: coefficient of the landing quartic below this (relative to its terms) is a
@@ -176,7 +177,8 @@ def ballistic_landing(x0, v0, r, g):
     Returns dict: ``t_land`` (n,) [s], ``x_land`` (3, n) [m], ``v_land``
     (3, n) [m/s], ``impact_speed`` (n,) [m/s] (|v_land|), ``impact_normal``
     (n,) [m/s] (the outward radial component of v_land), int8 ``status``
-    (LANDS, or STARTS_OUTSIDE where |x0| > r (1 + ON_SURFACE): then NaN).
+    (LANDS; STARTS_OUTSIDE where |x0| > r (1 + ON_SURFACE), NOT_FLOWN
+    where an input is not finite or r or g not positive: then NaN).
     """
     x0 = np.asarray(x0, dtype=float)
     v0 = np.asarray(v0, dtype=float)
@@ -188,6 +190,11 @@ def ballistic_landing(x0, v0, r, g):
                 "impact_normal": empty, "status": np.zeros(0, dtype=np.int8)}
     r = np.broadcast_to(np.asarray(r, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
+    bad = ~(np.isfinite(x0).all(axis=0) & np.isfinite(v0).all(axis=0) & (r > 0) & (g > 0) & np.isfinite(r * g))
+    x0 = np.where(bad, 0.0, x0)
+    v0 = np.where(bad, 0.0, v0)
+    r = np.where(bad, 1.0, r)
+    g = np.where(bad, 1.0, g)
     z0, vz = x0[2], v0[2]
     xx = np.einsum("in,in->n", x0, x0)
     xv = np.einsum("in,in->n", x0, v0)
@@ -228,7 +235,7 @@ def ballistic_landing(x0, v0, r, g):
         hi = np.where(inside, hi, mid)
     t = np.where(touch, hi, 0.5 * (lo + hi))
     t = np.where(at_once, 0.0, t)
-    t = np.where(outside, np.nan, t)
+    t = np.where(outside | bad, np.nan, t)
     zhat = np.array([0.0, 0.0, 1.0])[:, None]
     x_land = x0 + v0 * t - 0.5 * g * t * t * zhat
     v_land = v0 - g * t * zhat
@@ -236,7 +243,7 @@ def ballistic_landing(x0, v0, r, g):
     rad = np.sqrt(np.einsum("in,in->n", x_land, x_land))
     rad_safe = np.where(rad > 0, rad, 1.0)
     normal = np.einsum("in,in->n", x_land, v_land) / rad_safe
-    status = np.where(outside, STARTS_OUTSIDE, LANDS).astype(np.int8)
+    status = np.where(bad, NOT_FLOWN, np.where(outside, STARTS_OUTSIDE, LANDS)).astype(np.int8)
     return {"t_land": t, "x_land": x_land, "v_land": v_land, "impact_speed": speed,
             "impact_normal": normal, "status": status}
 
