@@ -39,7 +39,12 @@ centre of mass does; bike and rider may separate, and each then flies its
 own parabola; after contact loss friction and the wall's touch are ignored
 until the centre of mass reaches the surface; a machine that leaves the
 wall while its wheels still spin carries their angular momentum, which
-changes nothing on the parabola of the centre of mass.
+changes nothing on the parabola of the centre of mass.  On the loop the
+friction is not checked after the drop: a machine (c > 0 in eq. M24) needs
+friction c g |sin psi| / (A - B cos psi), which grows without bound as the
+normal force goes to zero, so a real tyre slips shortly before the
+departure point; the model keeps it rolling, energy conserved, until the
+normal force is zero.  The other riders do not react.
 """
 
 from __future__ import annotations
@@ -357,7 +362,9 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     [rad] (the highest point reached with contact, as an angle from the top
     in [0, pi]: the turning point for SWINGS, the departure for FALLS, 0 for
     RIDES_ON), ``t_turn`` [s] (SWINGS: time to the first turning point) and
-    ``swing_period`` [s] (SWINGS: a full swing, back and forth).
+    ``swing_period`` [s] (SWINGS: a full swing, back and forth; the swing
+    covers the arc through the bottom between psi = +-psi_max, the lanes it
+    crosses are those that meet that arc).
     """
     psi0, psi_dot0, rho, r_g, M_eff, m, g = np.broadcast_arrays(
         *(np.asarray(x, dtype=float) for x in (psi0, psi_dot0, rho, r_g, M_eff, m, g)))
