@@ -21,6 +21,15 @@ The model, in three stages:
 3. **Flight.**  From contact loss the centre of mass flies on a parabola
    until it meets the globe's surface (:func:`ballistic_landing`).
 
+A fall, put together (n falls at once): a looper's state (psi, psidot)
+just before the drop gives ``loop_departure(psi, f * psidot, r, r - h, M, m,
+g)``; where it FALLS, ``loop_state(psi_lost, psi_dot_lost, r - h, azimuth)``
+is the start of the flight and :func:`ballistic_landing` its end.  A
+horizontal rider whose lane does not hold at the new speed
+(:func:`horizontal_holds`, or the lane's lowest feasible speed where its
+feasible speeds form one band) flies from his centre of mass with
+``drop_velocity(v_com, f)``.
+
 A check with pencil and paper (the tests run it): a point mass on a great
 circle of radius rho = r leaves it at psi before the top where the normal
 force vanishes, g cos psi = v^2/rho.  There the parabola osculates the
