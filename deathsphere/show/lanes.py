@@ -51,6 +51,7 @@ class Lane:
     width_m: float
     period_s: float
     r: float
+    g: float
     phase: float
     row: dict = field(repr=False)
     theta: float = math.nan           # horizontal: contact's polar angle [rad]
@@ -167,7 +168,7 @@ def horizontal_lane(rider: Rider, globe: Globe) -> Lane:
         raise ParameterError(f"rider {rider.name!r}: speed: no steady orbit at this height and speed ({reason})",
                              "speed")
     return Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
-                period_s=float(row["period_s"]), r=globe.r, phase=math.radians(rider.phase_deg), row=row,
+                period_s=float(row["period_s"]), r=globe.r, g=globe.g, phase=math.radians(rider.phase_deg), row=row,
                 theta=math.radians(rider.theta_deg), alpha=math.radians(row["alpha_deg"]),
                 rate=rider.direction * float(row["omega_rad_s"]))
 
@@ -184,7 +185,8 @@ def vertical_lane(rider: Rider, globe: Globe) -> Lane:
     top, bottom = float(row["omega_top_rad_s"]), float(row["omega_bottom_rad_s"])
     m = 1.0 - (top / bottom) ** 2
     return Lane(name=rider.name, kind="vertical", machine=rider.machine, width_m=rider.width,
-                period_s=float(4.0 * ellipk(m) / bottom), r=globe.r, phase=math.radians(rider.phase_deg), row=row,
+                period_s=float(4.0 * ellipk(m) / bottom), r=globe.r, g=globe.g, phase=math.radians(rider.phase_deg),
+                row=row,
                 rate=top, rate_bottom=bottom, azimuth=math.radians(rider.azimuth_deg))
 
 
