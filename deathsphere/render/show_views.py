@@ -189,30 +189,16 @@ def _pair_notes(head: Table, result) -> list[str]:
     different periods meet at every relative phase) and the vertical
     riders' safe windows of phase."""
     notes = []
-    if result is None:
-        return notes
-    riders = getattr(result, "riders", None)
-    if riders is not None and {"name", "lane", "period_s"} <= set(riders.names):
-        lanes = dict(zip(riders.columns["name"].tolist(), riders.columns["lane"].tolist()))
-        periods = dict(zip(riders.columns["name"].tolist(), riders.columns["period_s"].tolist()))
-        geometric = [f"{a} – {b}" for a, b in zip(_column(head, "rider_a"), _column(head, "rider_b"))
-                     if lanes.get(a) == lanes.get(b) == "horizontal"
-                     and not _same(periods.get(a), periods.get(b))]
-        if geometric:
-            notes.append(f"[dim]{escape(', '.join(geometric))}: horizontal lanes of different periods pass at "
-                         "every relative phase; their least clearance is the geometric one, whatever the "
-                         "phases[/dim]")
+    geometric = [f"{a} – {b}" for a, b, basis in zip(_column(head, "rider_a"), _column(head, "rider_b"),
+                                                       _column(head, "basis")) if basis == "geometric"]
+    if geometric:
+        notes.append(f"[dim]{escape(', '.join(geometric))}: horizontal lanes of different periods pass at every "
+                     "relative phase; their least clearance is the geometric one (both riders in one meridian "
+                     "plane), whatever the phases[/dim]")
     windows = getattr(result, "phase_windows", None) or {}
     for name, window in dict(windows).items():
         notes.append(f"[dim]{escape(str(name))}: safe phases {escape(_window_text(window))}[/dim]")
     return notes
-
-
-def _same(a, b) -> bool:
-    try:
-        return abs(float(a) - float(b)) <= 1e-9 * max(abs(float(a)), abs(float(b)))
-    except (TypeError, ValueError):
-        return False
 
 
 def _window_text(window) -> str:
