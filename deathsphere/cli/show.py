@@ -148,9 +148,9 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
         help="The table to write: riders (each lane, checked), pairs (every pair's least clearance over the "
              "act), falls (of --fail or --monte-carlo), summary (the Monte Carlo's) [default: on a terminal "
              "riders and pairs (and the falls); piped, falls with --fail or --monte-carlo, else riders].")
-@single("--duration", default=None, metavar="TIME",
-        help="The act's length [s; or min: 2min] when the riders' periods are not commensurate "
-             "[default: the plan's].")
+@single("--duration", type=click.FloatRange(0, None, min_open=True), default=None, metavar="SECONDS",
+        help="The act's length [s] when the riders' periods are not commensurate [default: the plan's "
+             "duration].")
 @single("--phase", type=click.Choice(("plan", "auto"), case_sensitive=False), default=None,
         help="auto: each vertical rider's phase, in plan order, that maximises the least clearance (the "
              "safe window is reported) [default: plan, the phases as written].")
