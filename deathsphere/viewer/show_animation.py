@@ -18,7 +18,7 @@ from deathsphere.viewer.show_scene import COLOURS, ActScene
 __all__ = ["loop_times", "write_act_animation", "MAX_SECONDS", "CAMERA"]
 
 #: the most seconds of loop (shown time)
-MAX_SECONDS = 12.0
+MAX_SECONDS = 10.0
 #: (elevation, azimuth) [deg] of the fixed camera
 CAMERA = (22.0, -52.0)
 _PAIR = "#ff3b30"
