@@ -73,12 +73,100 @@ class ShowResult:
         raise NotImplementedError("ShowResult.falls waits for deathsphere.physics.fall")
 
 
+def _rider_row(lane: Lane, rider, globe) -> dict:
+    """The riders table's row of one lane (ride's row, the speed band)."""
+    from deathsphere.show.margins import speed_band
+    from deathsphere.show.pairs import contact_angles
+
+    row, nan = lane.row, math.nan
+    theta0, phi0 = contact_angles(lane, 0.0)
+    out = {"name": lane.name, "lane": lane.kind, "theta_deg": theta0, "phi0_deg": phi0, "machine": lane.machine.name,
+           "width_m": lane.width_m, "status": row["status"], "reason": row["reason"],
+           "mu_required": row["mu_required"], "head_clearance_m": row["head_clearance_m"], "period_s": lane.period_s}
+    if lane.kind == "horizontal":
+        planned = rider.speed
+        out.update(alpha_deg=row["alpha_deg"], lean_deg=row["lean_deg"], v_cm_m_s=row["v_cm_m_s"],
+                   v_contact_m_s=row["v_contact_m_s"], load_g=row["load_g"], v_top_m_s=nan, v_top_min_m_s=nan,
+                   v_bottom_m_s=nan, load_bottom_g=nan)
+    else:
+        planned = rider.v_top
+        r_g = row["com_loop_radius_m"]
+        out.update(alpha_deg=nan, lean_deg=0.0, v_cm_m_s=planned, v_contact_m_s=planned * lane.r / r_g,
+                   load_g=row["load_bottom_g"], v_top_m_s=planned, v_top_min_m_s=row["v_top_min_m_s"],
+                   v_bottom_m_s=row["v_bottom_m_s"], load_bottom_g=row["load_bottom_g"])
+    out["v_cm_km_h"] = round(out["v_cm_m_s"] * 3.6, 9)
+    low, high = speed_band(lane, globe, planned)
+    out.update(speed_low_m_s=low, speed_high_m_s=high, margin_low_pct=100.0 * (planned - low) / planned,
+               margin_high_pct=100.0 * (high - planned) / planned)
+    return out
+
+
+def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
+    """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per rider in the plan's order."""
+    rows = [_rider_row(lane, rider, plan.globe) for lane, rider in zip(lanes, plan.riders)]
+    text = {"name", "lane", "status", "reason", "machine"}
+    return Table({c: np.array([r[c] for r in rows], dtype=object if c in text else float) for c in RIDER_COLUMNS})
+
+
+def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift: bool = True) -> Table:
+    """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
+    b in the plan), its least clearance over the act, when and where, the
+    verdict and the drift time (NaN: never)."""
+    from deathsphere.show.pairs import contact_angles, least_clearance, verdict
+    from deathsphere.show.timing import drift_time
+
+    rows = []
+    for i, a in enumerate(lanes):
+        for b in lanes[i + 1:]:
+            c, t, basis = least_clearance(a, b, duration)
+            (ta, pa), (tb, pb) = contact_angles(a, t), contact_angles(b, t)
+            v = verdict(c, min_clearance)
+            dt = drift_time(a, b, min_clearance) if drift and v == "clear" else math.nan
+            rows.append({"rider_a": a.name, "rider_b": b.name, "min_clearance_m": c, "t_s": t, "theta_a_deg": ta,
+                         "phi_a_deg": pa, "theta_b_deg": tb, "phi_b_deg": pb, "verdict": v,
+                         "drift_time_s": dt if math.isfinite(dt) else math.nan, "basis": basis})
+    text = {"rider_a", "rider_b", "verdict", "basis"}
+    return Table({c: np.array([r[c] for r in rows], dtype=object if c in text else float) for c in PAIR_COLUMNS})
+
+
 def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
     """Plan an act (docs/show.md): ``plan`` a path to a TOML file or a dict
     ({"globe": {...}, "rider": [...]}); ``duration`` [s] the act's length
-    when the riders' periods are not commensurate (over the plan's);
-    ``phase`` 'plan' (the plan's phases) or 'auto' (each vertical rider's
-    phase, in plan order, maximising the least clearance).  A bad plan
-    raises ParameterError, one line naming the rider and the key, before
-    any work.  Not yet implemented."""
-    raise NotImplementedError("deathsphere.api.show.show is being written")
+    when the riders' periods are not commensurate (over the plan's
+    ``duration``; the common period is used whenever they are); ``phase``
+    'plan' (the plan's phases) or 'auto' (each vertical rider's phase, in
+    plan order, maximising his least clearance; ``phase_windows`` then holds
+    the safe phases).  A bad plan raises ParameterError, one line naming the
+    rider and the key, before any work.
+
+    >>> import deathsphere
+    >>> act = deathsphere.show({"globe": {"diameter": "16ft", "mu": 0.9}, "rider": [
+    ...     {"name": "Ana", "lane": "horizontal", "height": "2m", "speed": "32km/h"}]})
+    >>> str(act.riders["status"][0]), act.pairs.columns["rider_a"].size
+    ('ok', 0)
+    """
+    from deathsphere.show.pairs import act_duration
+    from deathsphere.show.timing import auto_phases
+
+    if phase not in PHASES:
+        raise ParameterError(f"phase must be plan or auto (got {phase!r})", "phase")
+    plan = read_plan(plan)
+    if duration is not None:
+        if isinstance(duration, bool) or not isinstance(duration, (int, float)) or not 0 < duration < math.inf:
+            raise ParameterError(f"duration must be a number of seconds > 0 (got {duration!r})", "duration")
+    lanes = build_lanes(plan)
+    try:
+        span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
+    except ValueError as exc:
+        raise ParameterError(str(exc), "duration") from None
+    if duration is not None:
+        span = float(duration)
+    windows = {}
+    if phase == "auto":
+        phases, windows = auto_phases(lanes, span, plan.globe.min_clearance)
+        plan = plan.with_phases(phases)
+        lanes = build_lanes(plan)
+    riders = riders_table(plan, lanes)
+    pairs = pairs_table(lanes, span, plan.globe.min_clearance)
+    return ShowResult(plan=plan, lanes=lanes, riders=riders, pairs=pairs, duration_s=span,
+                      commensurate=commensurate, phase_windows=windows)

@@ -35,6 +35,7 @@ from deathsphere.show.plan import Globe, Plan, Rider
 
 #: Statuses with which a vertical lane is not ridden at all (the plan is refused).
 LOOP_REFUSED = ("no_fit", "no_orbit", "no_contact")
+_Z = np.array([0.0, 0.0, 1.0])[:, None]
 
 
 @dataclass
@@ -64,29 +65,44 @@ class Lane:
         or 'psi' (vertical) (n,) [rad] at the times t (n,) [s]; ``clock``
         scales the lane's time (1.01: the rider 1 % fast)."""
         t = np.asarray(t, dtype=float).reshape(-1) * clock
-        return self._horizontal(t) if self.kind == "horizontal" else self._vertical(t)
-
-    def angle(self, t) -> np.ndarray:
-        """phi (horizontal) or psi (vertical) [rad] at the times t."""
-        t = np.asarray(t, dtype=float)
         if self.kind == "horizontal":
-            return self.phase + self.rate * t
-        return _loop_angle(self._u(t), self.rate_bottom, self._m())[0]
-
-    def _horizontal(self, t):
-        m = self.machine
-        st, ct, sa, ca = math.sin(self.theta), math.cos(self.theta), math.sin(self.alpha), math.cos(self.alpha)
-        # meridian-plane coordinates (rho, z) of contact, centre of mass and head (eq. M2)
-        pts = {"contact": (self.r * st, self.r * ct),
-               "com": ((self.r - m.t) * st - (m.h - m.t) * ca, (self.r - m.t) * ct + (m.h - m.t) * sa),
-               "head": ((self.r - m.t) * st - (m.head - m.t) * ca, (self.r - m.t) * ct + (m.head - m.t) * sa)}
-        phi = self.phase + self.rate * t
-        c, s = np.cos(phi), np.sin(phi)
-        out = {k: np.stack((rho * c, rho * s, np.full_like(t, z))) for k, (rho, z) in pts.items()}
-        rg = pts["com"][0]
-        out["v_com"] = np.stack((-self.rate * rg * s, self.rate * rg * c, np.zeros_like(t)))
-        out["phi"] = phi
+            angle, rate = self.phase + self.rate * t, np.full_like(t, self.rate)
+        else:
+            angle, rate = _loop_angle(self._u(t), self.rate_bottom, self._m())
+        out = self.at_angle(angle)
+        out["v_com"] = rate * self._along(angle)
+        out["phi" if self.kind == "horizontal" else "psi"] = angle
         return out
+
+    def at_angle(self, angle) -> dict:
+        """'contact', 'head', 'com' (3, n) [m] with the lane's angle (phi or
+        psi [rad], (n,)) at ``angle``."""
+        angle = np.asarray(angle, dtype=float).reshape(-1)
+        m = self.machine
+        if self.kind == "vertical":
+            n = np.sin(angle) * self._e() + np.cos(angle) * _Z
+            return {"contact": self.r * n, "com": (self.r - m.h) * n, "head": (self.r - m.head) * n}
+        c, s = np.cos(angle), np.sin(angle)
+        return {k: np.stack((rho * c, rho * s, np.full_like(angle, z))) for k, (rho, z) in self._meridian().items()}
+
+    def _meridian(self) -> dict:
+        """(rho, z) [m] of contact, centre of mass and head in the contact's
+        meridian plane (eq. M2)."""
+        m, r = self.machine, self.r
+        st, ct, sa, ca = math.sin(self.theta), math.cos(self.theta), math.sin(self.alpha), math.cos(self.alpha)
+        return {"contact": (r * st, r * ct),
+                "com": ((r - m.t) * st - (m.h - m.t) * ca, (r - m.t) * ct + (m.h - m.t) * sa),
+                "head": ((r - m.t) * st - (m.head - m.t) * ca, (r - m.t) * ct + (m.head - m.t) * sa)}
+
+    def _e(self):
+        return np.array([math.cos(self.azimuth), math.sin(self.azimuth), 0.0])[:, None]
+
+    def _along(self, angle):
+        """d(com)/d(angle) (3, n): the centre of mass's velocity per unit rate."""
+        if self.kind == "vertical":
+            return (self.r - self.machine.h) * (np.cos(angle) * self._e() - np.sin(angle) * _Z)
+        rg = self._meridian()["com"][0]
+        return np.stack((-rg * np.sin(angle), rg * np.cos(angle), np.zeros_like(angle)))
 
     def _m(self) -> float:
         return 1.0 - (self.rate / self.rate_bottom) ** 2
@@ -97,16 +113,6 @@ class Lane:
         beta0 = 0.5 * (math.pi - self.phase)
         t0 = 2.0 / self.rate_bottom * (ellipk(m) - ellipkinc(beta0, m))   # time from the top to the phase
         return ellipk(m) - 0.5 * self.rate_bottom * (t + t0)
-
-    def _vertical(self, t):
-        m = self.machine
-        psi, psidot = _loop_angle(self._u(t), self.rate_bottom, self._m())
-        e = np.array([math.cos(self.azimuth), math.sin(self.azimuth), 0.0])[:, None]
-        z = np.array([0.0, 0.0, 1.0])[:, None]
-        n = np.sin(psi) * e + np.cos(psi) * z
-        along = np.cos(psi) * e - np.sin(psi) * z
-        return {"contact": self.r * n, "com": (self.r - m.h) * n, "head": (self.r - m.head) * n,
-                "v_com": (self.r - m.h) * psidot * along, "psi": psi}
 
     def speed_bound(self) -> float:
         """The greatest speed [m/s] of any point of the envelope's segment
