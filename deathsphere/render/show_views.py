@@ -162,7 +162,8 @@ def pairs_view(table: Table, total_rows: int | None = None, result=None) -> FitT
         Column("verdict", "verdict", [_styled(v, VERDICT_STYLE) for v in verdicts], "left"),
         Column("min_clearance_m", "least\nclear\nm", clearance),
         Column("t_s", "at t\ns", [format_number(v, 4) for v in _column(head, "t_s")]),
-        Column("drift_time_s", "drift\ntime s", [_drift(v) for v in _column(head, "drift_time_s")]),
+        Column("drift_time_s", "drift\ntime s", [_drift(v) if verdict == "clear" else "—"
+                                                 for v, verdict in zip(_column(head, "drift_time_s"), verdicts)]),
         Column("where_a", "A θ°/φ°", [_where(t, p) for t, p in zip(_column(head, "theta_a_deg"),
                                                                    _column(head, "phi_a_deg"))]),
         Column("where_b", "B θ°/φ°", [_where(t, p) for t, p in zip(_column(head, "theta_b_deg"),
