@@ -35,11 +35,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from deathsphere.physics.status import Status
+
 __all__ = [
     "RIDES_ON", "SWINGS", "FALLS", "NO_LOOP", "OUTCOMES",
     "LANDS", "STARTS_OUTSIDE",
     "ballistic_landing", "loop_departure", "loop_time", "loop_state",
-    "loop_speed_profile", "drop_velocity",
+    "loop_speed_profile", "drop_velocity", "horizontal_holds",
 ]
 
 #: Outcome codes of :func:`loop_departure` (int8), and their names;
@@ -151,7 +154,7 @@ def ballistic_landing(x0, v0, r, g):
     leaving a loop, where the parabola osculates the circle: three times), so
     a start on the surface moving inward is never reported as landing at
     t = 0; moving outward (into the steel) it lands at t = 0.  The zeros of
-    the derivative of what is left (companion-matrix eigenvalues) cut
+    the derivative of what is left (closed forms, Newton-polished) cut
     [0, T] into pieces on which it is monotone, T a time by which the centre
     of mass is below the globe's floor; the first piece whose right end is
     outside the globe (or within ``GRAZE`` of it) holds the landing, found by
@@ -166,6 +169,10 @@ def ballistic_landing(x0, v0, r, g):
     v0 = np.asarray(v0, dtype=float)
     x0, v0 = np.broadcast_arrays(x0.reshape(3, -1), v0.reshape(3, -1))
     n = x0.shape[1]
+    if n == 0:
+        empty = np.zeros(0)
+        return {"t_land": empty, "x_land": x0.copy(), "v_land": v0.copy(), "impact_speed": empty,
+                "impact_normal": empty, "status": np.zeros(0, dtype=np.int8)}
     r = np.broadcast_to(np.asarray(r, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
     z0, vz = x0[2], v0[2]
@@ -242,13 +249,14 @@ def _rf(x, y, z):
     return (1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0) / np.sqrt(mu)
 
 
-def _ellip_f(phi, m):
+def _ellip_f(phi, m, m1):
     """Incomplete elliptic integral of the first kind F(phi | m) for |phi| <=
-    pi/2 and m sin^2 phi <= 1 (not both = 1): sin(phi) R_F(cos^2 phi,
-    1 - m sin^2 phi, 1) (DLMF 19.25.5)."""
+    pi/2, 0 <= m <= 1 (not phi = +-pi/2 with m = 1), m1 = 1 - m given
+    apart so that 1 - m sin^2 phi = cos^2 phi + m1 sin^2 phi keeps its
+    digits near m = 1: sin(phi) R_F(cos^2 phi, 1 - m sin^2 phi, 1) (DLMF 19.25.5)."""
     s = np.sin(phi)
     cc = np.cos(phi) ** 2
-    return s * _rf(cc, np.maximum(1.0 - m * s * s, 0.0), np.ones_like(s))
+    return s * _rf(cc, cc + np.maximum(m1, 0.0) * s * s, np.ones_like(s))
 
 
 def _energy(psi0, psi_dot0, r_g, M_eff, m, g):
@@ -268,25 +276,29 @@ def _energy(psi0, psi_dot0, r_g, M_eff, m, g):
     return s, u0, w0, kappa, c, ok
 
 
-def _travel_time(u0, u1, c, kappa):
+def _travel_time(u0, u1, c, kappa, turns=False):
     """t = int_{u0}^{u1} du / sqrt(c - kappa cos u), 0 <= u0 <= u1 < 2 pi,
     where the integrand is real (eq. M21 solved for the time; beyond the
     paper).  With x = (pi - u)/2, c - kappa cos u = (c + kappa)(1 - m sin^2 x),
     m = 2 kappa / (c + kappa):  t = 2 [F(x0|m) - F(x1|m)] / sqrt(c + kappa);
     for m > 1 (no lap over the top) the reciprocal-modulus form with
-    sin(beta) = sqrt(m) sin(x):  t = sqrt(2/kappa) [F(beta0|1/m) - F(beta1|1/m)]."""
+    sin(beta) = sqrt(m) sin(x):  t = sqrt(2/kappa) [F(beta0|1/m) - F(beta1|1/m)].
+    ``turns``: u1 is a turning point (beta1 = -pi/2 exactly, not through an
+    arcsine that loses half the digits there)."""
     x0 = 0.5 * (np.pi - u0)
     x1 = 0.5 * (np.pi - u1)
     total = c + kappa                                   # >= 0: the speed squared at the bottom
     laps = c >= kappa
     tot_s = np.where(total > 0, total, 1.0)
     m = np.where(laps, 2 * kappa / tot_s, 0.5)
-    t_lap = 2.0 * (_ellip_f(x0, m) - _ellip_f(x1, m)) / np.sqrt(tot_s)
+    m1 = np.where(laps, (c - kappa) / tot_s, 0.5)
+    t_lap = 2.0 * (_ellip_f(x0, m, m1) - _ellip_f(x1, m, m1)) / np.sqrt(tot_s)
     mr = np.where(laps, 0.5, total / (2 * kappa))       # 1/m in [0, 1)
+    mr1 = np.where(laps, 0.5, (kappa - c) / (2 * kappa))
     mr_s = np.where(mr > 0, mr, 1.0)
     b0 = np.arcsin(np.clip(np.sin(x0) / np.sqrt(mr_s), -1.0, 1.0))
-    b1 = np.arcsin(np.clip(np.sin(x1) / np.sqrt(mr_s), -1.0, 1.0))
-    t_swing = np.sqrt(2.0 / kappa) * (_ellip_f(b0, mr) - _ellip_f(b1, mr))
+    b1 = np.where(turns, -0.5 * np.pi, np.arcsin(np.clip(np.sin(x1) / np.sqrt(mr_s), -1.0, 1.0)))
+    t_swing = np.sqrt(2.0 / kappa) * (_ellip_f(b0, mr, mr1) - _ellip_f(b1, mr, mr1))
     t_swing = np.where(mr > 0, t_swing, 0.0)            # at rest at the bottom
     return np.where(laps, t_lap, t_swing)
 
@@ -344,14 +356,15 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     c_star = np.where(swings, c / kappa, big_a / big_b)
     u_e = 2 * np.pi - np.arccos(np.clip(c_star, -1.0, 1.0))
     u_e = np.where(at_once | rides | ~ok, u0, np.maximum(u_e, u0))
-    t_event = _travel_time(u0, u_e, c, kappa)
+    t_event = _travel_time(u0, u_e, c, kappa, turns=swings)
     psi_event = psi0 + s * (u_e - u0)
     w_e = np.sqrt(np.maximum(c - kappa * np.cos(u_e), 0.0))
     highest = np.abs(np.mod(psi_event + np.pi, 2 * np.pi) - np.pi)   # angle from the top in [0, pi]
     nan = np.full(outcome.shape, np.nan)
-    # a full swing: from one turning point through the bottom to the other and back
-    u_turn = np.where(swings, 2 * np.pi - u_e, 0.0)
-    half = _travel_time(np.where(swings, u_turn, 0.0), np.where(swings, u_e, 0.0), c, kappa)
+    # a full swing, turning point to turning point and back: 4 K(1/m) sqrt(2/kappa)
+    mr = np.where(swings, (c + kappa) / (2 * kappa), 0.0)
+    mr1 = np.where(swings, (kappa - c) / (2 * kappa), 1.0)
+    half = 2.0 * np.sqrt(2.0 / kappa) * _ellip_f(np.full(mr.shape, 0.5 * np.pi), mr, mr1)
     return {
         "outcome": outcome,
         "t_lost": np.where(falls, t_event, nan),
@@ -406,7 +419,7 @@ def loop_speed_profile(t, psi0, psi_dot0, r_g, M_eff, m, g):
     root = np.sqrt(total)
     x0 = 0.5 * (np.pi - u0)
     big_k = ellipk(mm)
-    phase = _ellip_f(x0, mm) - 0.5 * t * root
+    phase = _ellip_f(x0, mm, np.where(laps, (c - kappa) / total, 0.5)) - 0.5 * t * root
     turns = np.floor(phase / (2 * big_k) + 0.5)
     _sn, _cn, _dn, am = ellipj(phase - 2 * turns * big_k, mm)
     x = am + np.pi * turns
@@ -437,3 +450,35 @@ def drop_velocity(v, speed_fraction):
     the velocity ``v`` (3, n) before, along the direction of travel (the
     position is unchanged; stage 1 of the model above)."""
     return np.asarray(v, dtype=float) * np.asarray(speed_fraction, dtype=float)
+
+
+def horizontal_holds(theta, speed, alpha_before, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia,
+                     head, mu):
+    """Whether a horizontal lane still holds a machine after the drop: some
+    tilt alpha at the same contact height (``theta`` [rad]) gives a steady
+    orbit whose centre of mass moves at ``speed`` [m/s] with contact, the
+    friction within ``mu`` and the head clear (docs/machine.md eqs. M8-M12:
+    every tilt for the speed, :func:`deathsphere.physics.machine.solve_alpha_for_speed`,
+    checked by :func:`deathsphere.physics.machine.ride_orbit`).  Machine
+    parameters as there; all broadcast to (n,).
+
+    Returns dict: ``holds`` (n,) bool (False where speed <= 0: a stall holds
+    on no lane), ``alpha`` (n,) [rad] the tilt that holds closest to
+    ``alpha_before`` (NaN where none does).  Where it does not hold the rider
+    leaves the wall at once (stage 2 of the model above).
+    """
+    args = np.broadcast_arrays(*(np.asarray(x, dtype=float).reshape(-1) for x in (
+        theta, speed, alpha_before, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia, head, mu)))
+    theta, speed, alpha_before, r, g, mass, h, a, t, ip, iy, js, head, mu = args
+    moving = speed > 0
+    roots = solve_alpha_for_speed(theta, np.where(moving, speed, 1.0), r, g, mass, h, a, t, ip, iy, js)
+    found = np.isfinite(roots) & moving[:, None]
+    col = (slice(None), None)
+    orb = ride_orbit(theta[col], np.where(found, roots, 0.0), r[col], g[col], mass[col], h[col], a[col], t[col],
+                     ip[col], iy[col], js[col], head[col], mu[col])
+    ok = found & (orb["status"] == Status.OK)
+    dist = np.where(ok, np.abs(np.where(ok, roots, 0.0) - alpha_before[col]), np.inf)
+    best = np.argmin(dist, axis=1) if dist.shape[1] else np.zeros(theta.shape, dtype=int)
+    holds = ok.any(axis=1) if ok.shape[1] else np.zeros(theta.shape, dtype=bool)
+    alpha = np.where(holds, roots[np.arange(theta.size), best] if roots.shape[1] else np.nan, np.nan)
+    return {"holds": holds, "alpha": alpha}
