@@ -1,7 +1,8 @@
 """The act as a GIF or MP4 loop from a fixed camera, for slides
 (docs/show.md, section 8): every rider's envelope moving with the clock,
 the pair of least clearance in red around its closest moment, the fall's
-path and landing point.  Drawn with matplotlib (the ``plot`` extra) and
+path and landing point, from the scene of
+:func:`deathsphere.viewer.show_scene.act_scene`.  Drawn with matplotlib (the ``plot`` extra) and
 written frame by frame through the simulate view's streams
 (:mod:`deathsphere.viewer.animation`), so the memory stays flat."""
 
@@ -13,7 +14,6 @@ import numpy as np
 
 from deathsphere.viewer.animation import FPS, SIZE_PX, _GifStream, _Mp4Stream, _sphere_lines, frame_delays_ms
 from deathsphere.viewer.scene import slow_motion_words
-from deathsphere.viewer.show_scene import COLOURS, ActScene
 
 __all__ = ["loop_times", "write_act_animation", "MAX_SECONDS", "CAMERA"]
 
@@ -25,7 +25,7 @@ _PAIR = "#ff3b30"
 _FALL = "#ff6b5b"
 
 
-def loop_times(scene: ActScene, fps: int = FPS, max_seconds: float = MAX_SECONDS) -> tuple[np.ndarray, float]:
+def loop_times(scene, fps: int = FPS, max_seconds: float = MAX_SECONDS) -> tuple[np.ndarray, float]:
     """(times [s], playback factor): frames 1/fps of shown time apart at
     half speed (riders at 10 m/s move 0.2 m a frame), over the act from
     its start, or over ``max_seconds`` of loop centred on the fall or, with
@@ -43,7 +43,7 @@ def loop_times(scene: ActScene, fps: int = FPS, max_seconds: float = MAX_SECONDS
     return start + np.arange(n) * step, factor
 
 
-def _at(scene: ActScene, name: str, key: str, t: float) -> np.ndarray:
+def _at(scene, name: str, key: str, t: float) -> np.ndarray:
     p = scene.points[name][key]
     return np.array([np.interp(t, scene.t, p[k]) for k in range(3)])
 
@@ -52,7 +52,7 @@ def _fall_point(fall: dict, t: float) -> np.ndarray:
     return np.array([np.interp(t, fall["path_t"], fall["path"][k]) for k in range(3)])
 
 
-def write_act_animation(output, scene: ActScene, *, fps: int = FPS, max_seconds: float = MAX_SECONDS,
+def write_act_animation(output, scene, *, fps: int = FPS, max_seconds: float = MAX_SECONDS,
                         size_px=SIZE_PX, dpi: int = 90) -> int:
     """Write the loop to ``output`` (.gif or .mp4), each frame as it is
     drawn; returns the number of frames."""
@@ -81,7 +81,7 @@ def write_act_animation(output, scene: ActScene, *, fps: int = FPS, max_seconds:
     for k, name in enumerate(scene.names):
         width = max(2.0, 2 * scene.radii[k] * points_per_m)
         halo, = ax.plot([], [], [], color=_PAIR, lw=width + 5, alpha=0.0, solid_capstyle="round")
-        body, = ax.plot([], [], [], color=COLOURS[k % len(COLOURS)], lw=width, alpha=0.9, solid_capstyle="round")
+        body, = ax.plot([], [], [], color=scene.colours[k], lw=width, alpha=0.9, solid_capstyle="round")
         label = ax.text(0, 0, 0, name, fontsize=9, color="#222222")
         artists[name] = (halo, body, label)
     fall = scene.fall if scene.fall and "path" in scene.fall else None

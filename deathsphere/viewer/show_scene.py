@@ -59,6 +59,7 @@ class ActScene:
     pair: dict | None = None
     fall: dict | None = None
     title: str = ""
+    colours: list = field(default_factory=list)
 
 
 def _plan_number(result, *path, default=None):
@@ -176,6 +177,7 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
                                     for k in ("contact", "head", "com")} for name in names},
                      pair=pair, fall=_fall(result, falls, r, g) if falls is not None else None)
     scene.title = _title(scene)
+    scene.colours = [COLOURS[k % len(COLOURS)] for k in range(len(names))]
     return scene
 
 
@@ -206,7 +208,7 @@ def act_data(scene: ActScene) -> dict:
     riders = []
     for k, name in enumerate(scene.names):
         p = scene.points[name]
-        riders.append({"name": name, "colour": COLOURS[k % len(COLOURS)], "radius": scene.radii[k],
+        riders.append({"name": name, "colour": scene.colours[k], "radius": scene.radii[k],
                        "lane": scene.lanes[k], **{key: _encode(p[key].T) for key in ("contact", "head", "com")}})
     fall = None
     if scene.fall is not None:
