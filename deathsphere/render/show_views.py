@@ -139,8 +139,16 @@ def _drift(value) -> str:
     return format_number(float(value), 3)
 
 
+def _angle(value, wrap: bool = False) -> str:
+    """An angle to a tenth of a degree (an azimuth of 359.96° reads 0.0)."""
+    if is_undefined(value):
+        return "—"
+    value = round(float(value), 1)
+    return f"{value % 360.0 if wrap else value:.1f}"
+
+
 def _where(theta, phi) -> str:
-    return f"{format_number(theta, 3)}/{format_number(phi, 3)}"
+    return f"{_angle(theta)}/{_angle(phi, wrap=True)}"
 
 
 #: Left out first on a narrow console.
@@ -222,9 +230,9 @@ def _fall_line(get: dict) -> str:
     if get["outcome"] != "falls":
         return who
     return (f"{who}; leaves the wall at t = {format_number(get['t_contact_lost_s'], 4)} s "
-            f"(θ {format_number(get['theta_lost_deg'], 3)}°, φ {format_number(get['phi_lost_deg'], 3)}°), "
-            f"lands at t = {format_number(get['t_land_s'], 4)} s (θ {format_number(get['theta_land_deg'], 3)}°, "
-            f"φ {format_number(get['phi_land_deg'], 3)}°) after {format_number(get['fall_time_s'], 3)} s at "
+            f"(θ {_angle(get['theta_lost_deg'])}°, φ {_angle(get['phi_lost_deg'], wrap=True)}°), "
+            f"lands at t = {format_number(get['t_land_s'], 4)} s (θ {_angle(get['theta_land_deg'])}°, "
+            f"φ {_angle(get['phi_land_deg'], wrap=True)}°) after {format_number(get['fall_time_s'], 3)} s at "
             f"{speed_cell(get['impact_speed_m_s'])} km/h (m/s)")
 
 
