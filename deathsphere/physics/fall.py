@@ -21,6 +21,17 @@ The model, in three stages:
 3. **Flight.**  From contact loss the centre of mass flies on a parabola
    until it meets the globe's surface (:func:`ballistic_landing`).
 
+A check with pencil and paper (the tests run it): a point mass on a great
+circle of radius rho = r leaves it at psi before the top where the normal
+force vanishes, g cos psi = v^2/rho.  There the parabola osculates the
+circle: with x0 = rho (-sin psi, cos psi) and v0 = v (cos psi, sin psi) in
+the loop's plane the landing quartic's three lowest coefficients vanish
+(|x0| = rho; x0 . v0 = 0; v^2 - g z0 = v^2 - g rho cos psi = 0), so
+f(t) = t^3 (g^2 t/4 - g v sin psi) and the flight lasts t = 4 v sin(psi)/g.
+Then, with v^2 = g rho cos psi, x = rho sin(psi) (4 cos^2 psi - 1) =
+rho sin(3 psi) and z = rho cos(psi) (1 - 4 sin^2 psi) = rho cos(3 psi): he
+lands 3 psi past the top, whatever psi.
+
 Limits of the model (say them wherever its numbers are shown): the body is
 a point at its centre of mass in flight -- it tumbles, and its extremities
 (head, handlebar) reach the steel or another rider before or after the
@@ -107,7 +118,8 @@ def _cubic_roots(a, b, c, d):
     trig = np.stack([rad * np.cos(ang - 2 * np.pi * k / 3) for k in range(3)], axis=-1)
     sq = np.sqrt(np.maximum(disc, 0.0))
     one = np.cbrt(-q / 2.0 + sq) + np.cbrt(-q / 2.0 - sq)
-    roots = np.where(three[:, None], trig, np.stack([one, np.full_like(one, np.nan), np.full_like(one, np.nan)], -1))
+    lone = np.stack([one, np.full_like(one, np.nan), np.full_like(one, np.nan)], -1)
+    roots = np.where(three[:, None], trig, lone)
     roots = roots - shift[:, None]
     for _ in range(2):                                   # Newton polish, skipped at a double zero
         f = ((roots + b[:, None]) * roots + c[:, None]) * roots + d[:, None]
@@ -131,7 +143,8 @@ def _critical_points(c, degree):
     qa_s = np.where(qa != 0, qa, 1.0)
     sq = np.sqrt(np.maximum(qd, 0.0))
     real = qd >= 0
-    quad = np.stack([np.where(real, (-qb - sq) / (2 * qa_s), nan), np.where(real, (-qb + sq) / (2 * qa_s), nan), nan], -1)
+    quad = np.stack([np.where(real, (-qb - sq) / (2 * qa_s), nan),
+                     np.where(real, (-qb + sq) / (2 * qa_s), nan), nan], -1)
     # degree 2: p' = 2 c2 t + c1
     lin_a = np.where(c[2] != 0, c[2], 1.0)
     line = np.stack([-c[1] / (2 * lin_a), nan, nan], -1)
@@ -313,7 +326,9 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     ``r_g`` [m] in the loop of radius ``rho`` [m] (0 < r_g <= rho);
     ``M_eff`` [kg m^2] the loop's effective inertia M = m r_G^2 + I_pitch +
     J (rho^2 - 2 rho a)/a^2 (M21; a point mass: m r_G^2), ``m`` [kg],
-    ``g`` [m/s^2]; all broadcast.
+    ``g`` [m/s^2]; all broadcast.  Where only the loop's rates at the top
+    and the bottom are at hand, M23 gives M = 4 m g r_G / (psidot_b^2 -
+    psidot_t^2).
 
     Energy (M21) gives psidot^2 = C - kappa cos psi with kappa = 2 m g r_G / M
     and C = psi_dot0^2 + kappa cos psi0; the in-plane normal force per unit

@@ -262,7 +262,8 @@ diameter = "16ft"          # or radius
 mu = 0.9                   # tyre on steel mesh
 max_g = 8                  # a loop's bottom is at least 6 g even for a point mass
 min_clearance = "0.15m"    # the crew's rule: closer than this is a conflict
-# duration = 60            # seconds; used when the riders' periods are not commensurate
+# duration = 60            # seconds; the act's length when the riders' periods are not commensurate
+                           # (here every lap takes 1.274 s: the act is one lap)
 
 # A horizontal lane: the contact at height above the floor (or theta from the
 # top), phi = phase + Omega t (ccw) or phase - Omega t (cw), ride's steady orbit.
@@ -270,8 +271,8 @@ min_clearance = "0.15m"    # the crew's rule: closer than this is a conflict
 name = "Ana"
 machine = "stunt125"       # a preset, a machine file, or an inline table of its parameters
 lane = "horizontal"
-height = "2.4m"            # of the contact above the globe's floor (or theta)
-speed = "32km/h"           # of the centre of mass, as for ride
+height = "2.0m"            # of the contact above the globe's floor (or theta)
+speed = "28.86km/h"        # of the centre of mass, as for ride: a lap in the loopers' 1.274 s
 direction = "ccw"          # seen from above
 phase = 0                  # deg: azimuth of the contact at t = 0
 
@@ -279,8 +280,8 @@ phase = 0                  # deg: azimuth of the contact at t = 0
 name = "Cal"
 machine = "stunt125"
 lane = "horizontal"
-height = "1.2m"
-speed = "32km/h"
+height = "2.8m"
+speed = "29.14km/h"
 direction = "ccw"
 phase = 180
 
@@ -288,8 +289,8 @@ phase = 180
 name = "Dee"
 machine = "stunt125"
 lane = "horizontal"
-height = "3.6m"
-speed = "32km/h"
+height = "1.6m"
+speed = "26.99km/h"
 direction = "ccw"
 phase = 90
 
