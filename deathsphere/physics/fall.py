@@ -21,6 +21,15 @@ The model, in three stages:
 3. **Flight.**  From contact loss the centre of mass flies on a parabola
    until it meets the globe's surface (:func:`ballistic_landing`).
 
+A fall, put together (n falls at once): a looper's state (psi, psidot)
+just before the drop gives ``loop_departure(psi, f * psidot, r, r - h, M, m,
+g)``; where it FALLS, ``loop_state(psi_lost, psi_dot_lost, r - h, azimuth)``
+is the start of the flight and :func:`ballistic_landing` its end.  A
+horizontal rider whose lane does not hold at the new speed
+(:func:`horizontal_holds`, or the lane's lowest feasible speed where its
+feasible speeds form one band) flies from his centre of mass with
+``drop_velocity(v_com, f)``.
+
 A check with pencil and paper (the tests run it): a point mass on a great
 circle of radius rho = r leaves it at psi before the top where the normal
 force vanishes, g cos psi = v^2/rho.  There the parabola osculates the
@@ -39,7 +48,12 @@ centre of mass does; bike and rider may separate, and each then flies its
 own parabola; after contact loss friction and the wall's touch are ignored
 until the centre of mass reaches the surface; a machine that leaves the
 wall while its wheels still spin carries their angular momentum, which
-changes nothing on the parabola of the centre of mass.
+changes nothing on the parabola of the centre of mass.  On the loop the
+friction is not checked after the drop: a machine (c > 0 in eq. M24) needs
+friction c g |sin psi| / (A - B cos psi), which grows without bound as the
+normal force goes to zero, so a real tyre slips shortly before the
+departure point; the model keeps it rolling, energy conserved, until the
+normal force is zero.  The other riders do not react.
 """
 
 from __future__ import annotations
@@ -51,7 +65,7 @@ from deathsphere.physics.status import Status
 
 __all__ = [
     "RIDES_ON", "SWINGS", "FALLS", "NO_LOOP", "OUTCOMES",
-    "LANDS", "STARTS_OUTSIDE",
+    "LANDS", "STARTS_OUTSIDE", "NOT_FLOWN",
     "ballistic_landing", "loop_departure", "loop_time", "loop_state",
     "loop_speed_profile", "drop_velocity", "horizontal_holds",
 ]
@@ -62,8 +76,9 @@ __all__ = [
 RIDES_ON, SWINGS, FALLS, NO_LOOP = 0, 1, 2, -1
 OUTCOMES = ("rides_on", "swings", "falls")
 
-#: Status codes of :func:`ballistic_landing` (int8).
-LANDS, STARTS_OUTSIDE = 0, 1
+#: Status codes of :func:`ballistic_landing` (int8): NOT_FLOWN marks a row
+#: with a non-finite input, r <= 0 or g <= 0.
+LANDS, STARTS_OUTSIDE, NOT_FLOWN = 0, 1, 2
 
 #: A start within this fraction of r of the surface starts on it; a
 #: coefficient of the landing quartic below this (relative to its terms) is a
@@ -176,7 +191,8 @@ def ballistic_landing(x0, v0, r, g):
     Returns dict: ``t_land`` (n,) [s], ``x_land`` (3, n) [m], ``v_land``
     (3, n) [m/s], ``impact_speed`` (n,) [m/s] (|v_land|), ``impact_normal``
     (n,) [m/s] (the outward radial component of v_land), int8 ``status``
-    (LANDS, or STARTS_OUTSIDE where |x0| > r (1 + ON_SURFACE): then NaN).
+    (LANDS; STARTS_OUTSIDE where |x0| > r (1 + ON_SURFACE), NOT_FLOWN
+    where an input is not finite or r or g not positive: then NaN).
     """
     x0 = np.asarray(x0, dtype=float)
     v0 = np.asarray(v0, dtype=float)
@@ -188,6 +204,11 @@ def ballistic_landing(x0, v0, r, g):
                 "impact_normal": empty, "status": np.zeros(0, dtype=np.int8)}
     r = np.broadcast_to(np.asarray(r, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
+    bad = ~(np.isfinite(x0).all(axis=0) & np.isfinite(v0).all(axis=0) & (r > 0) & (g > 0) & np.isfinite(r * g))
+    x0 = np.where(bad, 0.0, x0)
+    v0 = np.where(bad, 0.0, v0)
+    r = np.where(bad, 1.0, r)
+    g = np.where(bad, 1.0, g)
     z0, vz = x0[2], v0[2]
     xx = np.einsum("in,in->n", x0, x0)
     xv = np.einsum("in,in->n", x0, v0)
@@ -228,7 +249,7 @@ def ballistic_landing(x0, v0, r, g):
         hi = np.where(inside, hi, mid)
     t = np.where(touch, hi, 0.5 * (lo + hi))
     t = np.where(at_once, 0.0, t)
-    t = np.where(outside, np.nan, t)
+    t = np.where(outside | bad, np.nan, t)
     zhat = np.array([0.0, 0.0, 1.0])[:, None]
     x_land = x0 + v0 * t - 0.5 * g * t * t * zhat
     v_land = v0 - g * t * zhat
@@ -236,7 +257,7 @@ def ballistic_landing(x0, v0, r, g):
     rad = np.sqrt(np.einsum("in,in->n", x_land, x_land))
     rad_safe = np.where(rad > 0, rad, 1.0)
     normal = np.einsum("in,in->n", x_land, v_land) / rad_safe
-    status = np.where(outside, STARTS_OUTSIDE, LANDS).astype(np.int8)
+    status = np.where(bad, NOT_FLOWN, np.where(outside, STARTS_OUTSIDE, LANDS)).astype(np.int8)
     return {"t_land": t, "x_land": x_land, "v_land": v_land, "impact_speed": speed,
             "impact_normal": normal, "status": status}
 
@@ -350,7 +371,9 @@ def loop_departure(psi0, psi_dot0, rho, r_g, M_eff, m, g):
     [rad] (the highest point reached with contact, as an angle from the top
     in [0, pi]: the turning point for SWINGS, the departure for FALLS, 0 for
     RIDES_ON), ``t_turn`` [s] (SWINGS: time to the first turning point) and
-    ``swing_period`` [s] (SWINGS: a full swing, back and forth).
+    ``swing_period`` [s] (SWINGS: a full swing, back and forth; the swing
+    covers the arc through the bottom between psi = +-psi_max, the lanes it
+    crosses are those that meet that arc).
     """
     psi0, psi_dot0, rho, r_g, M_eff, m, g = np.broadcast_arrays(
         *(np.asarray(x, dtype=float) for x in (psi0, psi_dot0, rho, r_g, M_eff, m, g)))

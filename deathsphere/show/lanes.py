@@ -51,6 +51,7 @@ class Lane:
     width_m: float
     period_s: float
     r: float
+    g: float
     phase: float
     row: dict = field(repr=False)
     theta: float = math.nan           # horizontal: contact's polar angle [rad]
@@ -73,6 +74,24 @@ class Lane:
         out["v_com"] = rate * self._along(angle)
         out["phi" if self.kind == "horizontal" else "psi"] = angle
         return out
+
+    def ends(self, t, clock: float = 1.0):
+        """(contact, head) (3, n) [m]: the envelope's segment at the times t."""
+        t = np.asarray(t, dtype=float).reshape(-1) * clock
+        if self.kind == "horizontal":
+            angle = self.phase + self.rate * t
+            c, s = np.cos(angle), np.sin(angle)
+            mer = self._meridian()
+            out = []
+            for key in ("contact", "head"):
+                rho, z = mer[key]
+                pts = np.empty((3, t.size))
+                pts[0], pts[1], pts[2] = rho * c, rho * s, z
+                out.append(pts)
+            return out[0], out[1]
+        angle = _loop_angle(self._u(t), self.rate_bottom, self._m())[0]
+        n = np.sin(angle) * self._e() + np.cos(angle) * _Z
+        return self.r * n, (self.r - self.machine.head) * n
 
     def at_angle(self, angle) -> dict:
         """'contact', 'head', 'com' (3, n) [m] with the lane's angle (phi or
@@ -149,7 +168,7 @@ def horizontal_lane(rider: Rider, globe: Globe) -> Lane:
         raise ParameterError(f"rider {rider.name!r}: speed: no steady orbit at this height and speed ({reason})",
                              "speed")
     return Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
-                period_s=float(row["period_s"]), r=globe.r, phase=math.radians(rider.phase_deg), row=row,
+                period_s=float(row["period_s"]), r=globe.r, g=globe.g, phase=math.radians(rider.phase_deg), row=row,
                 theta=math.radians(rider.theta_deg), alpha=math.radians(row["alpha_deg"]),
                 rate=rider.direction * float(row["omega_rad_s"]))
 
@@ -166,7 +185,8 @@ def vertical_lane(rider: Rider, globe: Globe) -> Lane:
     top, bottom = float(row["omega_top_rad_s"]), float(row["omega_bottom_rad_s"])
     m = 1.0 - (top / bottom) ** 2
     return Lane(name=rider.name, kind="vertical", machine=rider.machine, width_m=rider.width,
-                period_s=float(4.0 * ellipk(m) / bottom), r=globe.r, phase=math.radians(rider.phase_deg), row=row,
+                period_s=float(4.0 * ellipk(m) / bottom), r=globe.r, g=globe.g, phase=math.radians(rider.phase_deg),
+                row=row,
                 rate=top, rate_bottom=bottom, azimuth=math.radians(rider.azimuth_deg))
 
 

@@ -12,8 +12,6 @@ ride per step."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from deathsphere.api.rides import ride
@@ -24,42 +22,62 @@ GRID = np.geomspace(1 / 16, 16, 145)
 STEPS = 14
 
 
-def feasible(lane, globe, speeds) -> np.ndarray:
-    """bool per speed [m/s]: the lane stays feasible at that speed (module docstring)."""
-    speeds = np.asarray(speeds, dtype=float).reshape(-1)
+def feasible(lanes, globe, speeds) -> np.ndarray:
+    """bool (n, k): lane i stays feasible at speeds[i, j] [m/s] (module
+    docstring); the lanes share one kind and one machine: one call to ride."""
+    speeds = np.asarray(speeds, dtype=float)
+    lane = lanes[0]
     if lane.kind == "vertical":
-        t = ride(90.0, vertical=True, v_top=speeds, machine=lane.machine, r=globe.r, g=globe.g, mu=globe.mu,
-                 max_g=globe.max_g)
-        return np.asarray(t["status"]).reshape(-1) == "ok"
-    t = ride(math.degrees(lane.theta), speed=speeds, machine=lane.machine, r=globe.r, g=globe.g, mu=globe.mu,
-             max_g=globe.max_g, stability=False)
+        t = ride(90.0, vertical=True, v_top=speeds.reshape(-1), machine=lane.machine, r=globe.r, g=globe.g,
+                 mu=globe.mu, max_g=globe.max_g)
+        return (np.asarray(t["status"]).reshape(-1) == "ok").reshape(speeds.shape)
+    theta = np.degrees([ln.theta for ln in lanes])[:, None]
+    t = ride(np.broadcast_to(theta, speeds.shape).reshape(-1), speed=speeds.reshape(-1), machine=lane.machine,
+             r=globe.r, g=globe.g, mu=globe.mu, max_g=globe.max_g, stability=False)
     ok = np.zeros(speeds.size, dtype=bool)
     rows = np.asarray(t["input_row"]).reshape(-1) - 1
     ok[rows[np.asarray(t["status"]).reshape(-1) == "ok"]] = True
-    return ok
+    return ok.reshape(speeds.shape)
 
 
-def speed_band(lane, globe, speed: float) -> tuple[float, float]:
-    """(low, high) [m/s]: the run of feasible speeds holding ``speed``; NaN
-    where ``speed`` itself is not feasible, or an edge lies beyond the grid."""
-    if not feasible(lane, globe, [speed])[0]:
-        return math.nan, math.nan
-    grid = speed * GRID
-    ok = feasible(lane, globe, grid)
-    k = int(np.searchsorted(grid, speed))
-    below = np.flatnonzero(~ok[:k])
-    above = np.flatnonzero(~ok[k:]) + k
-    # brackets (feasible, infeasible) for each edge; NaN where the grid found none
-    lo_in, lo_out = (grid[below[-1] + 1] if below[-1] + 1 < k else speed, grid[below[-1]]) if below.size else (
-        math.nan, math.nan)
-    hi_in, hi_out = (grid[above[0] - 1] if above[0] - 1 >= k else speed, grid[above[0]]) if above.size else (
-        math.nan, math.nan)
-    inside, outside = np.array([lo_in, hi_in]), np.array([lo_out, hi_out])
+def _bands(lanes, globe, planned) -> np.ndarray:
+    """(n, 2) [m/s] low and high edges for lanes of one kind and machine."""
+    planned = np.asarray(planned, dtype=float)
+    grid = planned[:, None] * GRID
+    ok = feasible(lanes, globe, np.concatenate((planned[:, None], grid), axis=1))
+    here, ok = ok[:, 0], ok[:, 1:]
+    k = np.searchsorted(GRID, 1.0)                      # grid[:, k] is the first at or above the planned speed
+    inside = np.full((planned.size, 2), np.nan)
+    outside = np.full((planned.size, 2), np.nan)
+    for i in np.flatnonzero(here):
+        below = np.flatnonzero(~ok[i, :k])
+        above = np.flatnonzero(~ok[i, k:]) + k
+        if below.size:
+            j = below[-1]
+            inside[i, 0], outside[i, 0] = (grid[i, j + 1] if j + 1 < k else planned[i]), grid[i, j]
+        if above.size:
+            j = above[0]
+            inside[i, 1], outside[i, 1] = (grid[i, j - 1] if j - 1 >= k else planned[i]), grid[i, j]
     found = np.isfinite(inside)
     if found.any():
         for _ in range(STEPS):
-            mid = 0.5 * (inside + outside)
-            good = feasible(lane, globe, np.where(found, mid, speed))
+            mid = np.where(found, 0.5 * (inside + outside), planned[:, None])
+            good = feasible(lanes, globe, mid)
             inside, outside = np.where(good, mid, inside), np.where(good, outside, mid)
-    edge = np.where(found, inside, np.nan)
-    return float(edge[0]), float(edge[1])
+    return np.where(found, inside, np.nan)
+
+
+def speed_bands(lanes, globe, planned) -> np.ndarray:
+    """(n, 2) [m/s]: for each lane the run of feasible speeds (horizontal:
+    the centre of mass's; vertical: at the top) holding the planned one,
+    low and high; NaN where the planned speed itself is not feasible or an
+    edge lies beyond 1/16..16 times it.  The lanes of one kind and machine
+    are searched together."""
+    planned = np.asarray(planned, dtype=float)
+    out = np.full((len(lanes), 2), np.nan)
+    groups = {}
+    for i, lane in enumerate(lanes):
+        groups.setdefault((lane.kind, lane.machine), []).append(i)
+    for idx in groups.values():
+        out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx])
+    return out

@@ -10,7 +10,8 @@ is below the least sample so far (less :data:`TOLERANCE_M`) is split and
 sampled again, until none is left: the least sample is then within 1 mm of
 the true least clearance (branch and bound on a Lipschitz bound).
 
-Two horizontal lanes of different rates sweep every relative azimuth
+Two horizontal lanes of one rate turn as one rigid body: their clearance is
+constant, taken at t = 0.  Two horizontal lanes of different rates sweep every relative azimuth
 (their angle apart grows linearly in time), so their least clearance is the
 geometric one over the relative azimuth (found the same way, with the
 distance from the axis bounding the rate), whatever the phases: ``basis``
@@ -24,10 +25,12 @@ from fractions import Fraction
 
 import numpy as np
 
-from deathsphere.show.envelope import clearance
+from deathsphere.show.envelope import clearance, segment_distance
 
 #: Every least clearance is found to this [m].
 TOLERANCE_M = 1e-3
+#: Clearances closer than this [m] are equal (the earliest is reported).
+TIE_M = 1e-9
 #: The first samples are this far apart in clearance (L dt) [m].
 FIRST_STEP_M = 0.05
 #: Each interval kept is split into this many.
@@ -44,12 +47,20 @@ def minimise(f, lo: float, hi: float, lipschitz: float, tol: float = TOLERANCE_M
     """(c, x): the least value of f over [lo, hi] to ``tol`` and where, for a
     vectorised f whose rate of change is at most ``lipschitz`` (module
     docstring).  Samples f at about (hi - lo) L / FIRST_STEP_M points first."""
-    n = max(2, int(math.ceil((hi - lo) * lipschitz / FIRST_STEP_M)))
-    x = np.linspace(lo, hi, n + 1)
-    c = f(x)
-    k = int(np.argmin(c))
+    x = np.linspace(lo, hi, _samples(hi - lo, lipschitz) + 1)
+    return refine(f, x, f(x), lipschitz, tol)
+
+
+def _samples(span: float, lipschitz: float) -> int:
+    return max(2, int(math.ceil(span * lipschitz / FIRST_STEP_M)))
+
+
+def refine(f, x, c, lipschitz: float, tol: float = TOLERANCE_M):
+    """(c, x): the least value of f to ``tol`` and where, given its samples c
+    at the evenly spaced x (branch and bound: module docstring)."""
+    k = int(np.argmax(c <= c.min() + TIE_M))               # the first of equal least samples
     best, where = float(c[k]), float(x[k])
-    left, width, cl, cr = x[:-1], (hi - lo) / n, c[:-1], c[1:]
+    left, width, cl, cr = x[:-1], float(x[1] - x[0]), c[:-1], c[1:]
     while left.size:
         keep = 0.5 * (cl + cr) - 0.5 * lipschitz * width < best - tol
         if not keep.any():
@@ -59,7 +70,7 @@ def minimise(f, lo: float, hi: float, lipschitz: float, tol: float = TOLERANCE_M
         inner = left[:, None] + width * np.arange(1, SPLIT)
         ci = f(inner.reshape(-1)).reshape(inner.shape)
         k = np.unravel_index(int(np.argmin(ci)), ci.shape)
-        if ci[k] < best:
+        if ci[k] < best - TIE_M:
             best, where = float(ci[k]), float(inner[k])
         values = np.concatenate((cl[:, None], ci, cr[:, None]), axis=1)
         left = (left[:, None] + width * np.arange(SPLIT)).reshape(-1)
@@ -86,6 +97,12 @@ def common_period(periods, rtol: float = COMMENSURATE_RTOL, max_laps: int = MAX_
     return None
 
 
+def is_rigid(a, b) -> bool:
+    """Two horizontal lanes of one rate: the pair turns as one rigid body
+    about the vertical, its clearance constant in time."""
+    return a.kind == b.kind == "horizontal" and not is_geometric(a, b)
+
+
 def act_pairs(lanes) -> list[tuple[int, int]]:
     """The pairs (i < j) searched over the act's times (not geometric)."""
     n = len(lanes)
@@ -93,15 +110,43 @@ def act_pairs(lanes) -> list[tuple[int, int]]:
 
 
 def _clearance_at(a, b, clock_a=1.0):
+    radii = 0.5 * (a.width_m + b.width_m)
+
     def f(t):
-        return clearance(a.kinematics(t, clock_a), b.kinematics(t), a.width_m, b.width_m)
+        return segment_distance(*a.ends(t, clock_a), *b.ends(t))[0] - radii
     return f
+
+
+def least_clearances(lanes, pairs, duration: float) -> list[tuple[float, float]]:
+    """[(least clearance [m], when [s])] of the pairs (i, j) of ``lanes``
+    searched over the act's times [0, duration]: every lane sampled once on
+    one grid fine enough for the fastest pair, all pairs' distances at once,
+    then each pair refined (:func:`refine`)."""
+    rigid = [p for p in pairs if is_rigid(lanes[p[0]], lanes[p[1]])]
+    if rigid:
+        moving = [p for p in pairs if p not in rigid]
+        found = dict(zip(moving, least_clearances(lanes, moving, duration)))
+        return [found[p] if p in found else least_clearance(lanes[p[0]], lanes[p[1]], duration)[:2] for p in pairs]
+    if not pairs:
+        return []
+    bound = [lane.speed_bound() for lane in lanes]
+    fastest = max(bound[i] + bound[j] for i, j in pairs)
+    x = np.linspace(0.0, float(duration), _samples(float(duration), fastest) + 1)
+    ends = [lane.ends(x) for lane in lanes]
+    first, second = np.array([i for i, _ in pairs]), np.array([j for _, j in pairs])
+    stack = [np.stack([ends[k][e] for k in idx], axis=1) for idx in (first, second) for e in (0, 1)]
+    radii = np.array([0.5 * (lanes[i].width_m + lanes[j].width_m) for i, j in pairs])
+    c = segment_distance(*stack)[0] - radii[:, None]
+    return [refine(_clearance_at(lanes[i], lanes[j]), x, c[p], bound[i] + bound[j])
+            for p, (i, j) in enumerate(pairs)]
 
 
 def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[float, float, str]:
     """(least clearance [m], when [s], basis) of the lanes a and b over the
     act [0, duration] (``clock_a`` scales a's time); the geometric least
     clearance for two horizontal lanes of different rates (module docstring)."""
+    if is_rigid(a, b) and clock_a == 1.0:
+        return float(_clearance_at(a, b)(np.zeros(1))[0]), 0.0, "act"
     if is_geometric(a, b) and clock_a == 1.0:
         meridian_b = b.at_angle(np.zeros(1))
 

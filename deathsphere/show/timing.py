@@ -32,12 +32,16 @@ from dataclasses import replace
 import numpy as np
 
 from deathsphere.show.envelope import segment_distance
-from deathsphere.show.pairs import FIRST_STEP_M, SAME_RATE_RTOL, SPLIT, TOLERANCE_M, is_geometric
+from deathsphere.show.pairs import SAME_RATE_RTOL, SPLIT, TOLERANCE_M, is_geometric
 
 #: Candidate phases per lap of a vertical rider (and samples per lap of the act).
 PHASE_STEPS = 180
 #: The speed error of the drift (1 %).
 DRIFT_ERROR = 0.01
+#: The drift's first samples are this far apart in clearance [m]: a pair
+#: rarely comes near min_clearance, so coarse samples decide most of the
+#: time, and the bound refines where it does.
+DRIFT_FIRST_STEP_M = 0.25
 #: Act samples per slice of the phase search (memory stays bounded).
 SLICE = 2048
 
@@ -113,10 +117,13 @@ def auto_phases(lanes, duration: float, min_clearance: float):
     return phases, windows
 
 
-def first_below(f, lo: float, hi: float, lipschitz: float, level: float, tol: float = TOLERANCE_M) -> float:
+def first_below(f, lo: float, hi: float, lipschitz: float, level: float, tol: float = TOLERANCE_M,
+                first_step: float = DRIFT_FIRST_STEP_M) -> float:
     """The first x in [lo, hi] with f(x) < level, for a vectorised f changing
-    at most at ``lipschitz`` (no dip below level - tol missed); inf if none."""
-    n = max(2, int(math.ceil((hi - lo) * lipschitz / FIRST_STEP_M)))
+    at most at ``lipschitz`` (no dip below level - tol missed); inf if none.
+    The first samples are ``first_step`` / lipschitz apart (only where f
+    comes within first_step / 2 of the level are they refined)."""
+    n = max(2, int(math.ceil((hi - lo) * lipschitz / first_step)))
     x = np.linspace(lo, hi, n + 1)
     c = f(x)
     below = np.flatnonzero(c < level)
@@ -160,10 +167,11 @@ def drift_time(a, b, min_clearance: float, error: float = DRIFT_ERROR) -> float:
             soonest = min(soonest, first_below(apart, 0.0, 2 * math.pi, a.r, min_clearance) / rate)
         return soonest
     horizon = (1.0 / error + 1.0) * max(a.period_s, b.period_s)
+    radii = 0.5 * (a.width_m + b.width_m)
     soonest = math.inf
     for clock in (1.0 + error, 1.0 - error):
         def gap(t, clock=clock):
-            return clearance(a.kinematics(t, clock), b.kinematics(t), a.width_m, b.width_m)
+            return segment_distance(*a.ends(t, clock), *b.ends(t))[0] - radii
         lipschitz = clock * a.speed_bound() + b.speed_bound()
         soonest = min(soonest, first_below(gap, 0.0, min(horizon, soonest), lipschitz, min_clearance))
     return soonest

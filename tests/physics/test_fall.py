@@ -87,9 +87,11 @@ def test_a_start_on_the_surface_moving_inward_does_not_land_at_once():
     assert out["t_land"][2] == 0.0                  # moving outward: into the steel at once
 
 
-def test_a_start_outside_the_globe_is_marked_not_flown():
-    out = fall.ballistic_landing(np.array([[0.0], [0.0], [1.01 * R]]), np.zeros((3, 1)), R, G)
-    assert out["status"][0] == fall.STARTS_OUTSIDE and np.isnan(out["t_land"][0])
+def test_a_start_outside_the_globe_or_a_bad_row_is_marked_not_flown():
+    x0 = np.array([[0.0, np.nan, 0.0], [0.0, 0.0, 0.0], [1.01 * R, 0.0, 0.0]])
+    out = fall.ballistic_landing(x0, np.zeros((3, 3)), R, np.array([G, G, 0.0]))
+    np.testing.assert_array_equal(out["status"], [fall.STARTS_OUTSIDE, fall.NOT_FLOWN, fall.NOT_FLOWN])
+    assert np.isnan(out["t_land"]).all() and np.isnan(out["x_land"]).all()
 
 
 def test_a_hundred_thousand_falls_in_one_call():
