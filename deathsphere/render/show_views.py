@@ -222,11 +222,10 @@ def _window_text(window) -> str:
 
 
 def _fall_line(get: dict) -> str:
-    """One fall in words: who, when, the outcome, where he leaves the wall
-    and lands, how long and how hard."""
-    who = (f"{escape(str(get['rider']))} at t = {format_number(get['t_fail_s'], 4)} s drops to "
-           f"{100 * float(get['speed_fraction']):.0f} % of his speed: "
-           f"{_styled(str(get['outcome']), OUTCOME_STYLE)}")
+    """One fall in words (plain text: it is the view's title): who, when,
+    the outcome, where he leaves the wall and lands, how long and how hard."""
+    who = (f"{get['rider']} at t = {format_number(get['t_fail_s'], 4)} s drops to "
+           f"{100 * float(get['speed_fraction']):.0f} % of the speed: {str(get['outcome']).replace('_', ' ')}")
     if get["outcome"] != "falls":
         return who
     return (f"{who}; leaves the wall at t = {format_number(get['t_contact_lost_s'], 4)} s "
@@ -236,7 +235,10 @@ def _fall_line(get: dict) -> str:
             f"{speed_cell(get['impact_speed_m_s'])} km/h (m/s)")
 
 
-def _hit_cell(value) -> str:
+def _hit_cell(value, clearance=None) -> str:
+    """HIT in red, clear in green; — when there was no flight to check."""
+    if clearance is not None and is_undefined(clearance):
+        return "—"
     hit = bool(value) and str(value).lower() not in ("false", "0", "")
     return "[bold red]HIT[/bold red]" if hit else "[green]clear[/green]"
 
@@ -261,7 +263,8 @@ def falls_view(table: Table, total_rows: int | None = None, result=None) -> FitT
         Column("rider", "rider", [escape(str(v)) for v in _column(head, "rider")], "left"),
         Column("victim", "other rider", [escape(str(v)) if v else "(alone)" for v in _column(head, "victim")],
                "left"),
-        Column("hit", "", [_hit_cell(v) for v in _column(head, "hit")], "left"),
+        Column("hit", "", [_hit_cell(v, c) for v, c in zip(_column(head, "hit"), _column(head, "min_clearance_m"))],
+               "left"),
         Column("min_clearance_m", "least\nclear\nm", [_fixed(v, 3) for v in _column(head, "min_clearance_m")]),
         Column("t_min_s", "at t\ns", [format_number(v, 4) for v in _column(head, "t_min_s")]),
     ]
@@ -278,7 +281,8 @@ def _falls_list(head: Table, total: int) -> FitTable:
         Column("speed_fraction", "speed\nleft", [format_number(v, 2) for v in _column(head, "speed_fraction")]),
         Column("outcome", "outcome", [_styled(str(v), OUTCOME_STYLE) for v in _column(head, "outcome")], "left"),
         Column("victim", "other", [escape(str(v)) for v in _column(head, "victim")], "left"),
-        Column("hit", "", [_hit_cell(v) for v in _column(head, "hit")], "left"),
+        Column("hit", "", [_hit_cell(v, c) for v, c in zip(_column(head, "hit"), _column(head, "min_clearance_m"))],
+               "left"),
         Column("min_clearance_m", "least\nclear m", [_fixed(v, 3) for v in _column(head, "min_clearance_m")]),
         Column("impact_speed_m_s", "impact km/h\n(m/s)", [speed_cell(v) for v in _column(head, "impact_speed_m_s")]),
         Column("fall_time_s", "fall\ns", [format_number(v, 3) for v in _column(head, "fall_time_s")]),
@@ -287,18 +291,35 @@ def _falls_list(head: Table, total: int) -> FitTable:
     return FitTable(columns, ("fall_time_s", "t_fail_s"), title="Falls", footer=footer)
 
 
+#: The Monte Carlo summary's columns on screen: (column, header).
+SUMMARY_HEADERS = {"rider": "falling\nrider", "victim": "other\nrider", "falls": "falls", "hits": "hits",
+                   "hit_fraction": "hit\n%", "impact_speed_max_m_s": "worst impact\nkm/h (m/s)"}
+
+
+def _summary_cells(name: str, values: list, blank: str) -> list[str]:
+    if name in ("rider", "victim"):
+        return [escape(str(v)) if v else blank for v in values]
+    if name == "hit_fraction":
+        return [_fixed(100 * float(v), 1) if not is_undefined(v) else "—" for v in values]
+    if name == "impact_speed_max_m_s":
+        return [speed_cell(v) for v in values]
+    return [escape(str(v)) if isinstance(v, str) else format_number(v, 4) for v in values]
+
+
 def summary_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
-    """The Monte Carlo's summary, column by column as the API names them
-    (fractions and speeds as numbers; the first column identifies the row)."""
+    """The Monte Carlo's summary: per falling rider (and over all of
+    them), how many falls, how many hit another rider (per other rider,
+    and anyone), and the worst landing speed."""
     total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     columns = []
-    for k, name in enumerate(head.names):
+    for name in head.names:
         values = _column(head, name)
-        text = [escape(str(v)) if isinstance(v, str) else format_number(v, 4) for v in values]
-        numeric = not all(isinstance(v, str) for v in values)
-        columns.append(Column(name, name.replace("_", "\n", 1) if k else name, text,
-                              "right" if numeric else "left"))
+        blank = "(any)" if name == "rider" else "(anyone)"
+        columns.append(Column(name, SUMMARY_HEADERS.get(name, name), _summary_cells(name, values, blank),
+                              "left" if name in ("rider", "victim") else "right"))
     footer = [row_cap_line(len(head), total)] if total > len(head) else []
+    notes = ["[dim]random riders at random times of the act, each dropping to a random fraction of his speed "
+             "in [0, 1); a hit: the falling rider's ball meets another's envelope in flight[/dim]"]
     drop = tuple(reversed([c.key for c in columns[2:]]))
-    return FitTable(columns, drop, title="The odds: random falls in the act", footer=footer)
+    return FitTable(columns, drop, title="The odds: random falls in the act", footer=footer, notes=notes)
