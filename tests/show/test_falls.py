@@ -90,3 +90,22 @@ def test_the_monte_carlo_on_a_cluster_gives_the_same_rows():
         remote, _ = act.falls(50, seed=3, scheduler=client)
     for col in ("rider", "outcome", "t_land_s", "victim", "min_clearance_m"):
         assert list(map(str, local[col])) == list(map(str, remote[col]))
+
+
+def test_a_looper_who_swings_reports_how_high_and_whose_lanes_he_crosses():
+    act = _act(ANA, CAL, {"name": "Ben", "lane": "vertical", "azimuth": 20, "v_top": "6.5m/s", "phase": 180},
+               duration=3)
+    rows = act.fall("Ben", 0.0, 0.3)          # at the bottom, 30 % of his speed: below the equator he swings
+    by_victim = {r["victim"]: r for r in rows}
+    row = rows[0]
+    assert row["outcome"] == "swings"
+    # energy (M21) from the bottom: (1/2) M psidot^2 = m g dz, with M from ride's rates at top and bottom
+    # (M23: M = 4 m g r_G / (psidot_b^2 - psidot_t^2)); the contact rises r / r_G times the centre of mass
+    loop = deathsphere.ride(90, vertical=True, v_top=6.5, machine="stunt125", r=R)[0]
+    r_g = R - 0.8
+    m_eff = 4 * 165 * G * r_g / (loop["omega_bottom_rad_s"] ** 2 - loop["omega_top_rad_s"] ** 2)
+    psidot = 0.3 * loop["omega_bottom_rad_s"]
+    rise = 0.5 * m_eff * psidot ** 2 / (165 * G)
+    assert row["swing_height_m"] == pytest.approx(rise * R / r_g, rel=1e-9)
+    assert by_victim["Cal"]["crosses_lane"] == (1.4 <= row["swing_height_m"])
+    assert not by_victim["Ana"]["crosses_lane"]                # 3.2 m: above any swing below the equator
