@@ -36,6 +36,8 @@ MAX_FRAMES = 20_000
 MAX_MOVE_R = 0.05
 #: points of a fall's drawn path
 PATH_POINTS = 64
+#: the clock runs this long past a fall's landing [s]
+FALL_AFTER_S = 0.3
 #: standard gravity [m/s^2], when the result does not say its own
 G0 = 9.80665
 #: the riders' colours (the pair of least clearance is drawn in red over them)
@@ -159,6 +161,10 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
     r = _globe_radius(probe)
     g = _plan_number(result, "plan", "globe", "g", default=G0)
     step = frame_step(probe, probe_t, r)
+    fall = _fall(result, falls, r, g) if falls is not None else None
+    if fall is not None and "t_land" in fall:
+        # a fall may land after the act's end: the clock runs on to the landing
+        duration = max(duration, fall["t_land"] + FALL_AFTER_S)
     n = int(min(max_frames, max(2, math.ceil(duration / step) + 1)))
     t = np.linspace(0.0, duration, n)
     pair = _least_pair(result.pairs)
@@ -175,7 +181,7 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
                      lanes=[str(x) for x in riders["lane"]],
                      points={name: {k: np.asarray(positions[name][k], dtype=np.float64)
                                     for k in ("contact", "head", "com")} for name in names},
-                     pair=pair, fall=_fall(result, falls, r, g) if falls is not None else None)
+                     pair=pair, fall=fall)
     scene.title = _title(scene)
     scene.colours = [COLOURS[k % len(COLOURS)] for k in range(len(names))]
     return scene
