@@ -240,6 +240,7 @@ def test_html_view_is_written(run, plan_file, tmp_path):
     (("PLAN", "--table", "falls"), ["--fail"]),
     (("PLAN", "--table", "summary"), ["--monte-carlo"]),
     (("PLAN", "--seed", "3"), ["--monte-carlo"]),
+    (("PLAN", "--scheduler", "tcp://127.0.0.1:8786"), ["--monte-carlo"]),
     (("PLAN", "--format", "parquet"), ["--output"]),
     (("PLAN", "--output", "act.html", "--table", "pairs"), ["--table"]),
     (("PLAN", "--output", "act.html", "--format", "csv"), ["--format"]),
