@@ -29,10 +29,13 @@ RIDER_COLUMNS = ("name", "lane", "theta_deg", "phi0_deg", "alpha_deg", "lean_deg
 #: riders in one meridian plane).
 PAIR_COLUMNS = ("rider_a", "rider_b", "min_clearance_m", "t_s", "theta_a_deg", "phi_a_deg", "theta_b_deg",
                 "phi_b_deg", "verdict", "drift_time_s", "basis")
-#: The columns of ``fall``, in order.
+#: The columns of ``fall``, in order: a looper who swings reaches
+#: ``swing_height_m`` (his contact's height above the floor at the swing's
+#: highest point) and ``crosses_lane`` says whether the victim's lane meets
+#: the arc he swings on (a horizontal lane no higher, every loop).
 FALL_COLUMNS = ("rider", "t_fail_s", "speed_fraction", "outcome", "t_contact_lost_s", "theta_lost_deg",
                 "phi_lost_deg", "t_land_s", "theta_land_deg", "phi_land_deg", "fall_time_s", "impact_speed_m_s",
-                "victim", "min_clearance_m", "t_min_s", "hit")
+                "victim", "min_clearance_m", "t_min_s", "hit", "swing_height_m", "crosses_lane")
 #: The columns of the summary of ``falls``.
 FALLS_SUMMARY_COLUMNS = ("rider", "victim", "falls", "hits", "hit_fraction", "impact_speed_max_m_s")
 PHASES = ("plan", "auto")
@@ -89,9 +92,10 @@ class ShowResult:
                 c, when = refine_victim(self.lanes[k], victim, res["x0"][:, 0], res["v0"][:, 0],
                                         float(res["t_lost"][0]), float(res["fall_time"][0]), self.plan.globe.g)
             rows.append({**base, "victim": victim.name, "min_clearance_m": c, "t_min_s": when,
-                         "hit": bool(c < 0)})
+                         "hit": bool(c < 0), "crosses_lane": _crosses(victim, base["swing_height_m"])})
         if not rows:
-            rows.append({**base, "victim": "", "min_clearance_m": math.nan, "t_min_s": math.nan, "hit": False})
+            rows.append({**base, "victim": "", "min_clearance_m": math.nan, "t_min_s": math.nan, "hit": False,
+                         "crosses_lane": False})
         return _rows_table(rows, FALL_COLUMNS)
 
     def falls(self, n: int, seed: int = 0, scheduler=None) -> tuple[Table, Table]:
@@ -151,7 +155,20 @@ def _fall_base(res: dict, i: int, name: str, t: float, fraction: float) -> dict:
             **{col: float(res[key][i]) for col, key in (
                 ("t_contact_lost_s", "t_lost"), ("theta_lost_deg", "theta_lost"), ("phi_lost_deg", "phi_lost"),
                 ("t_land_s", "t_land"), ("theta_land_deg", "theta_land"), ("phi_land_deg", "phi_land"),
-                ("fall_time_s", "fall_time"), ("impact_speed_m_s", "impact_speed"))}}
+                ("fall_time_s", "fall_time"), ("impact_speed_m_s", "impact_speed"),
+                ("swing_height_m", "swing_height"))}}
+
+
+def _crosses(victim: Lane, swing_height: float) -> bool:
+    """Whether a swing up to ``swing_height`` [m] (NaN: no swing) meets the
+    victim's lane: the arc through the floor reaches every height up to it on
+    both sides of the loop, where every horizontal lane no higher and every
+    loop (through the floor) pass."""
+    if not math.isfinite(swing_height):
+        return False
+    if victim.kind == "vertical":
+        return True
+    return victim.r * (1.0 + math.cos(victim.theta)) <= swing_height
 
 
 _TEXT = {"name", "lane", "status", "reason", "machine", "rider_a", "rider_b", "verdict", "basis", "rider", "outcome",
@@ -159,8 +176,9 @@ _TEXT = {"name", "lane", "status", "reason", "machine", "rider_a", "rider_b", "v
 
 
 def _rows_table(rows: list[dict], columns) -> Table:
-    return Table({c: np.array([r[c] for r in rows], dtype=object if c in _TEXT else bool if c == "hit" else float)
-                  for c in columns})
+    def kind(c):
+        return object if c in _TEXT else bool if c in ("hit", "crosses_lane") else float
+    return Table({c: np.array([r[c] for r in rows], dtype=kind(c)) for c in columns})
 
 
 def _outcomes_table(result: ShowResult, res: dict, rider, t, fraction) -> Table:
@@ -178,8 +196,21 @@ def _outcomes_table(result: ShowResult, res: dict, rider, t, fraction) -> Table:
             "t_land_s": res["t_land"], "theta_land_deg": res["theta_land"], "phi_land_deg": res["phi_land"],
             "fall_time_s": res["fall_time"], "impact_speed_m_s": res["impact_speed"],
             "victim": np.where(flying, names[closest], ""), "min_clearance_m": least,
-            "t_min_s": np.where(flying, res["t_min"][rows, closest], np.nan), "hit": flying & (least < 0)}
+            "t_min_s": np.where(flying, res["t_min"][rows, closest], np.nan), "hit": flying & (least < 0),
+            "swing_height_m": res["swing_height"],
+            "crosses_lane": _crosses_any(result.lanes, rider, res["swing_height"])}
     return Table({c: np.asarray(cols[c], dtype=object if c in _TEXT else None) for c in FALL_COLUMNS})
+
+
+def _crosses_any(lanes, rider, swing_height) -> np.ndarray:
+    """Per fall of the Monte Carlo: his swing meets another rider's lane (:func:`_crosses`)."""
+    swings = np.isfinite(swing_height)
+    reach = np.where(swings, swing_height, -np.inf)
+    out = np.zeros(rider.size, dtype=bool)
+    for k, lane in enumerate(lanes):
+        low = -np.inf if lane.kind == "vertical" else lane.r * (1.0 + math.cos(lane.theta))
+        out |= swings & (rider != k) & (low <= reach)
+    return out
 
 
 def _summary_table(result: ShowResult, res: dict, rider) -> Table:

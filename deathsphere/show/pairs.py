@@ -178,10 +178,16 @@ def verdict(c: float, min_clearance: float) -> str:
 def act_duration(lanes, duration: float | None) -> tuple[float, bool]:
     """(the act's duration [s], commensurate): the common period of the
     lanes in a pair searched over time, when commensurate; else
-    ``duration`` (None: ValueError); with no such pair, the longest lap."""
+    ``duration`` (None: ValueError).  With no such pair (every pair rigid or
+    geometric) the common period of all lanes, else ``duration``, else the
+    longest lap (the falls' times are drawn over it)."""
     involved = sorted({k for pair in act_pairs(lanes) for k in pair})
     if not involved:
-        return max(lane.period_s for lane in lanes), True
+        # nothing depends on the clock: the common period of all, else the plan's duration, else the longest lap
+        common = common_period([lane.period_s for lane in lanes])
+        if common is not None:
+            return common, True
+        return (float(duration) if duration is not None else max(lane.period_s for lane in lanes)), False
     common = common_period([lanes[k].period_s for k in involved])
     if common is not None:
         return common, True

@@ -90,3 +90,42 @@ def test_the_monte_carlo_on_a_cluster_gives_the_same_rows():
         remote, _ = act.falls(50, seed=3, scheduler=client)
     for col in ("rider", "outcome", "t_land_s", "victim", "min_clearance_m"):
         assert list(map(str, local[col])) == list(map(str, remote[col]))
+
+
+def test_a_looper_who_swings_reports_how_high_and_whose_lanes_he_crosses():
+    act = _act(ANA, CAL, {"name": "Ben", "lane": "vertical", "azimuth": 20, "v_top": "6.5m/s", "phase": 180},
+               duration=3)
+    rows = act.fall("Ben", 0.0, 0.3)          # at the bottom, 30 % of his speed: below the equator he swings
+    by_victim = {r["victim"]: r for r in rows}
+    row = rows[0]
+    assert row["outcome"] == "swings"
+    # energy (M21) from the bottom: (1/2) M psidot^2 = m g dz, with M from ride's rates at top and bottom
+    # (M23: M = 4 m g r_G / (psidot_b^2 - psidot_t^2)); the contact rises r / r_G times the centre of mass
+    loop = deathsphere.ride(90, vertical=True, v_top=6.5, machine="stunt125", r=R)[0]
+    r_g = R - 0.8
+    m_eff = 4 * 165 * G * r_g / (loop["omega_bottom_rad_s"] ** 2 - loop["omega_top_rad_s"] ** 2)
+    psidot = 0.3 * loop["omega_bottom_rad_s"]
+    rise = 0.5 * m_eff * psidot ** 2 / (165 * G)
+    assert row["swing_height_m"] == pytest.approx(rise * R / r_g, rel=1e-9)
+    assert by_victim["Cal"]["crosses_lane"] == (1.4 <= row["swing_height_m"])
+    assert not by_victim["Ana"]["crosses_lane"]                # 3.2 m: above any swing below the equator
+
+
+def test_a_point_mass_looper_leaves_where_the_normal_force_vanishes_and_lands_three_times_as_far():
+    point_mass = {"base": "paper-wheel", "com_height": 0, "roll_inertia": 0, "pitch_inertia": 0, "yaw_inertia": 0,
+                  "spin_inertia": 0}
+    act = _act({"name": "P", "lane": "vertical", "machine": point_mass, "azimuth": 30, "v_top": "6m/s",
+                "phase": 180})
+    row = act.fall("P", 0.0, 0.7)[0]          # at the bottom, 70 % of his speed
+    assert row["outcome"] == "falls"
+    # energy: v^2 = v_b^2 - 2 g r (1 + cos beta) at beta from the top; the normal force vanishes where
+    # v^2 = g r cos beta, so cos beta = (v_b^2 / (g r) - 2) / 3; he leaves beta before the top ...
+    v_b = 0.7 * math.sqrt(6.0 ** 2 + 4 * G * R)
+    beta = math.acos((v_b ** 2 / (G * R) - 2) / 3)
+    assert row["theta_lost_deg"] == pytest.approx(math.degrees(beta), abs=1e-6)
+    assert row["phi_lost_deg"] == pytest.approx(210.0, abs=1e-6)
+    # ... and lands 3 beta past the top, in the loop's plane
+    land = R * np.array([math.sin(3 * beta) * math.cos(math.radians(30)), math.sin(3 * beta) * math.sin(
+        math.radians(30)), math.cos(3 * beta)])
+    assert row["theta_land_deg"] == pytest.approx(math.degrees(math.acos(land[2] / R)), abs=1e-6)
+    assert row["phi_land_deg"] == pytest.approx(math.degrees(math.atan2(land[1], land[0])) % 360, abs=1e-6)
