@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from deathsphere.table import Table
+from deathsphere.writers.atomic import atomic_file
 
 __all__ = ["ActScene", "act_scene", "act_data", "render_act_html", "write_act_view", "frame_step", "MAX_FRAMES",
            "DATA_MARK"]
@@ -245,7 +246,8 @@ def write_act_view(output, result, falls: Table | None = None) -> int:
     scene = act_scene(result, falls)
     if fmt == "html":
         data = render_act_html(scene).encode("utf-8")
-        Path(output).write_bytes(data)
+        with atomic_file(output, "wb") as out:       # whole or not at all
+            out.write(data)
         return len(data)
     from deathsphere.viewer.show_animation import write_act_animation
 
