@@ -270,45 +270,50 @@ min_clearance = "0.15m"    # the crew's rule: closer than this is a conflict
 [[rider]]
 name = "Ana"
 machine = "stunt125"       # a preset, a machine file, or an inline table of its parameters
+width = "0.6m"             # handlebar or shoulders, the wider (here narrowed bars; else the machine's)
 lane = "horizontal"
-height = "2.0m"            # of the contact above the globe's floor (or theta)
-speed = "28.86km/h"        # of the centre of mass, as for ride: a lap in the loopers' 1.274 s
+height = "1.4m"            # of the contact above the globe's floor (or theta)
+speed = "25.58km/h"        # of the centre of mass, as for ride: a lap in the loopers' 1.274 s
 direction = "ccw"          # seen from above
 phase = 0                  # deg: azimuth of the contact at t = 0
 
 [[rider]]
 name = "Cal"
 machine = "stunt125"
+width = "0.6m"
 lane = "horizontal"
-height = "2.8m"
-speed = "29.14km/h"
+height = "2.0m"
+speed = "28.86km/h"
 direction = "ccw"
-phase = 180
+phase = 40
 
 [[rider]]
 name = "Dee"
 machine = "stunt125"
+width = "0.6m"
 lane = "horizontal"
-height = "1.6m"
-speed = "26.99km/h"
+height = "2.7m"
+speed = "29.35km/h"
 direction = "ccw"
-phase = 90
+phase = 0
 
 # A vertical lane: a great circle in the plane of the vertical and the
 # direction azimuth; psi from the top, psi(0) = phase; ride --vertical's loop.
 [[rider]]
 name = "Ben"
 machine = "stunt125"
+width = "0.6m"
 lane = "vertical"
 azimuth = 90               # deg: the loop's plane holds the vertical and this direction
 v_top = "6.5m/s"           # the centre of mass's speed at the top
-phase = 180                # deg along the loop, from the top, at t = 0
+phase = 178                # deg along the loop, from the top, at t = 0 (--phase auto's choice)
 
 [[rider]]
 name = "Eve"
 machine = "stunt125"
+width = "0.6m"
 lane = "vertical"
 azimuth = 0
 v_top = "6.5m/s"
-phase = 0
+phase = 282
 '''
