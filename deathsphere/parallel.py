@@ -62,7 +62,7 @@ class ProcessPool:
         from concurrent.futures import ProcessPoolExecutor
 
         self.work, self.ahead = work, 2 * jobs
-        self.pool = ProcessPoolExecutor(jobs)
+        self.pool = ProcessPoolExecutor(jobs, initializer=_leave_stops_to_the_caller)
 
     def submit(self, item):
         return self.pool.submit(self.work, item)
@@ -70,3 +70,17 @@ class ProcessPool:
     def stop(self, pending) -> None:
         """Queued items are dropped, running ones finish."""
         self.pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _leave_stops_to_the_caller() -> None:
+    """In a worker: Ctrl-C (which the terminal sends to every process of the
+    group) and SIGTERM sent to the group are the caller's to act on: it
+    stops the pool itself, the chunk in hand finished.  A worker that raised
+    KeyboardInterrupt or inherited the caller's SIGTERM handler would print
+    a traceback each; one that died of SIGTERM would leave the pool's
+    shutdown waiting for it."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+

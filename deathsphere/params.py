@@ -174,6 +174,12 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
           help="Absolute tolerance per scaled component, 1e-16..1."),
     Param("max_steps", "", "step budget", 1, 1e15, integer=True, metavar="N", default=1_000_000,
           help="Refuse, before it starts, a run estimated to need more integration steps."),
+    Param("loop_seconds", "s", "loop length", 0.0, 600.0, lo_open=True, metavar="S", default=10.0,
+          help="A .gif or .mp4 3-D view: the most seconds of loop (shown time; the run's last part if it is "
+               "longer), > 0 and <= 600; the last frame is then held 1.5 s."),
+    Param("playback", "", "playback factor", 1e-6, 1e6, metavar="X", default_text="chosen",
+          help="A .gif or .mp4 3-D view: simulated seconds shown per second of loop (1 real time, 0.1 ten "
+               "times slower), 1e-6..1e6; by default real time, or the slow motion in which nothing aliases between frames."),
     # the machine of `deathsphere ride` (docs/machine.md): a motorcycle and rider as one gyrostat
     Param("mass", "kg", "machine mass", TINY, HUGE, symbol="m", kind="mass", metavar="KG",
           help="Ride: total mass of machine, rider and wheels."),

@@ -197,7 +197,7 @@ def test_stability_labels_stay_on_one_line(width, theta, alpha):
     text = show(stability_view(deathsphere.stability(theta, alpha)), width)
     assert_fits(text, width)
     lines = text.splitlines()
-    for label in ("growth rate, max Re(eigenvalue)", "slow nutation frequency", "slow nutation, rad/s",
+    for label in ("growth rate (max Re of the eigenvalues)", "slow nutation frequency", "slow nutation, rad/s",
                   "fast nutation, rad/s", "verdict"):
         assert any(label in line for line in lines), label
     for case in ("equator", "small wheel", "near pole"):

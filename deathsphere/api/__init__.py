@@ -16,6 +16,7 @@ command                function
 ``limits``             :func:`limits`
 ``stability``          :func:`stability`
 ``simulate``           :func:`simulate` (series and summary)
+``ride``               :func:`ride`; streamed: :func:`ride_sweep`
 ``table1``             :func:`table1`
 ``verify``             :func:`verify`
 =====================  =======================================
@@ -37,19 +38,19 @@ _HOME = {
     "region": "region_limits", "region_cells": "region_limits", "region_curves": "region_limits", "limits": "region_limits", "limits_input": "region_limits",
     "MAX_LIMIT_THETAS": "region_limits",
     "stability": "orbit_stability", "stability_input": "orbit_stability",
-    "simulate": "simulation", "prepare_simulation": "simulation", "METHODS": "simulation", "FRAMES": "simulation",
+    "simulate": "simulation", "prepare_simulation": "simulation", "animation_options": "simulation", "METHODS": "simulation", "FRAMES": "simulation",
     "table1": "paper", "verify": "paper", "n_claims": "paper", "verify_counts": "paper",
     "table1_printed": "paper",
     "Chunks": "streams",
     "A": "arguments", "R": "arguments", "G": "arguments", "INF": "arguments", "CHUNK": "arguments",
     "STATUSES": "arguments", "ParameterError": "arguments",
-    "ride": "rides", "ride_summary": "rides", "Machine": "machines", "machines_table": "machines",
+    "ride": "rides", "ride_summary": "rides", "ride_sweep": "ride_streams", "Machine": "machines", "machines_table": "machines",
     "machine_file": "machines", "PRESETS": "machines",
 }
 _MODULES = ("arguments", "streams", "orbits", "vertical_orbits", "region_limits", "orbit_stability", "simulation",
-            "paper", "rides", "machines")
+            "paper", "rides", "ride_streams", "machines")
 
 __all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
-           "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "table1",
-           "verify", "Chunks", "ParameterError", "ride", "ride_summary", "Machine", "machines_table", "machine_file"]
+           "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "animation_options", "table1",
+           "verify", "Chunks", "ParameterError", "ride", "ride_sweep", "ride_summary", "Machine", "machines_table", "machine_file"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

@@ -297,3 +297,34 @@ def _tilt_for(setup, theta: float, speed, omega, branch) -> float:
         raise ParameterError(f"branch must be one of the {len(found)} tilts that give this {what} "
                              f"(0..{len(found) - 1}; got {branch!r})", "branch")
     return float(found[int(branch)]["alpha_deg"])
+
+
+#: the 3-D views that are loops of frames (the options of :func:`animation_options`)
+LOOP_FORMATS = ("gif", "mp4")
+
+
+def animation_options(output, *, loop_seconds=None, playback=None) -> dict:
+    """The checked loop options of a 3-D view written to ``output``
+    (``simulate --output run.gif --loop-seconds S --playback X``; beyond the
+    paper, docs/simulation.md "3-D view"): ``loop_seconds``, the most
+    seconds of loop, and ``playback``, simulated seconds per second of loop
+    (None: the viewer's default, real time or the slow motion in which
+    nothing aliases between frames).  Returns the keywords of
+    :func:`deathsphere.viewer.write_view`.
+
+    Raises
+    ------
+    ParameterError
+        A value outside its range, or either given for an output that is
+        not a .gif or .mp4 loop.
+    """
+    options = {"loop_seconds": None if loop_seconds is None else checked_scalar("loop_seconds", loop_seconds),
+               "playback": None if playback is None else checked_scalar("playback", playback)}
+    chosen = [name for name, value in options.items() if value is not None]
+    ext = str(output).lower().rsplit(".", 1)[-1] if output is not None and "." in str(output) else ""
+    if chosen and ext not in LOOP_FORMATS:
+        got = "no output file" if output is None else f"the output is {str(output)!r}"
+        raise ParameterError(f"{' and '.join(chosen)} shape{'s' if len(chosen) == 1 else ''} a .gif or .mp4 loop "
+                             f"({got})", chosen[0])
+    return options
+

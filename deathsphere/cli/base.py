@@ -227,6 +227,20 @@ def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
     return tally
 
 
+def collect(chunks, label: str):
+    """Every table of an :class:`~deathsphere.api.Chunks` joined into one
+    (a result needed whole, e.g. to summarise it), with the progress bar
+    of :func:`stream` while they are evaluated."""
+    from deathsphere.table import Table
+
+    tables = []
+    with progress(label, chunks.total) as bar:
+        for table in chunks:
+            tables.append(table)
+            bar.update(chunks.done, chunks.total)
+    return Table.concat(tables)
+
+
 def finish(tally: Tally) -> None:
     """Exit status 1, with a note on stderr, when some rows were invalid."""
     if tally.invalid:
@@ -254,7 +268,9 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
     if writer is write_csv:
         writer = partial(write_csv, expected=expected)
     if writer is not None and output is not None:
-        with open(output, "w", encoding="utf-8", newline="") as out:
+        from deathsphere.writers.atomic import atomic_file
+
+        with atomic_file(output, "w", encoding="utf-8", newline="") as out:
             return writer(chunks, out)
     if writer is not None:
         return writer(chunks, sys.stdout)
@@ -292,13 +308,21 @@ class _OutputFailed(Exception):
     """An OSError met while writing the results (not an input problem)."""
 
 
+class _Interrupted(Exception):
+    """Ctrl-C in a command, carried past click (which would print an empty
+    line before its Abort) to :meth:`DeathsphereGroup.main`."""
+
+
 class DeathsphereGroup(click.Group):
     """A click group whose ``main`` is the one place where failures become
     exit statuses (docs/contract.md, "Exit status"): a usage error is one
     line on stderr and status 2; a failed write of the results (stdout
     closed, disk full) one line and status 3; a reader that stops reading
-    (``| head``) a quiet status 0; Ctrl-C status 130.  (Done here rather
-    than in a wrapper so that click's CliRunner sees it.)"""
+    (``| head``) a quiet status 0; Ctrl-C status 130 and SIGTERM 143, one
+    line each.  A file output left unwritten by any of these (it is written
+    under a temporary name, :mod:`deathsphere.writers.atomic`) is named on
+    the same line.  (Done here rather than in a wrapper so that click's
+    CliRunner sees it.)"""
 
     command_class = Command
 
@@ -307,6 +331,8 @@ class DeathsphereGroup(click.Group):
             rv = super().invoke(ctx)
             sys.stdout.flush()  # a full disk shows at the flush: report it here, not at exit
             return rv
+        except KeyboardInterrupt:
+            raise _Interrupted() from None
         except OSError as exc:
             # click swallows EPIPE itself (exit 1) if this reaches it; input
             # problems are turned into usage errors where the input is read,
@@ -322,27 +348,108 @@ class DeathsphereGroup(click.Group):
             with self.make_context(prog_name or "deathsphere", ["--help"], resilient_parsing=True) as ctx:
                 click.echo(self.get_help(ctx))
             sys.exit(ExitCode.OK)
+        _unwritten()  # only this command's files are named (an API caller's earlier ones are not)
         try:
-            code = super().main(args=args, prog_name=prog_name or "deathsphere",
-                                complete_var=complete_var, standalone_mode=False, **extra)
+            with _stops_as_exceptions():
+                code = super().main(args=args, prog_name=prog_name or "deathsphere",
+                                    complete_var=complete_var, standalone_mode=False, **extra)
         except click.exceptions.UsageError as exc:
             command = exc.ctx.command_path if exc.ctx is not None else "deathsphere"
-            fail(f"{one_line(exc.format_message())} (see '{command} --help')")
+            fail(f"{one_line(exc.format_message())} (see '{command} --help'){_unwritten()}")
         except ParameterError as exc:  # the API's validation, reached through a command
-            fail(f"{one_line(str(exc))} (see 'deathsphere {_command_name(args)} --help')")
+            fail(f"{one_line(str(exc))} (see 'deathsphere {_command_name(args)} --help'){_unwritten()}")
         except click.exceptions.ClickException as exc:
-            fail(one_line(exc.format_message()))
-        except (click.exceptions.Abort, KeyboardInterrupt):
-            click.echo("deathsphere: interrupted", err=True)
+            fail(one_line(exc.format_message()) + _unwritten())
+        except (click.exceptions.Abort, KeyboardInterrupt, _Interrupted):
+            # on a terminal the line goes below the echoed ^C
+            start = "\n" if _isatty(sys.stderr) else ""
+            click.echo(f"{start}deathsphere: interrupted{_unwritten()}", err=True)
             sys.exit(ExitCode.INTERRUPTED)
+        except Terminated:
+            click.echo(f"deathsphere: terminated{_unwritten()}", err=True)
+            sys.exit(ExitCode.TERMINATED)
         except _OutputFailed as failed:
             exc = failed.args[0]
             _silence_stdout()
             if exc.errno == errno.EPIPE or isinstance(exc, BrokenPipeError):
                 sys.exit(ExitCode.OK)  # the reader went away (`| head`): not an error
-            click.echo(f"deathsphere: error: cannot write the results: {exc.strerror or exc}", err=True)
+            click.echo(f"deathsphere: error: cannot write the results: {exc.strerror or exc}{_unwritten()}",
+                       err=True)
             sys.exit(ExitCode.OUTPUT)
         sys.exit(code or 0)
+
+
+class Terminated(BaseException):
+    """SIGTERM, raised where the program is, as Ctrl-C raises
+    KeyboardInterrupt: every ``finally`` and the file writers' clean-up run
+    (the default action would end the process on the spot, leaving a
+    partial file).  A BaseException, so that no ``except Exception`` takes it."""
+
+
+#: Stops that arrived inside the import machinery, to raise once out of it.
+_DEFERRED: list[type[BaseException]] = []
+
+
+def _stop_handler(stop: type[BaseException]):
+    """A signal handler raising ``stop`` where the program is, except inside
+    importlib's own code (a module lock's clean-up, run at any moment): an
+    exception raised there is swallowed ("Exception ignored in ...") and
+    can leave the module locks held, so that a thread importing at the
+    same time (Parquet's warm-up) and the command waiting for it hang.
+    There the stop is deferred and retried 10 ms later (SIGALRM)."""
+    def handler(signum, frame):
+        _raise_or_defer(stop, frame)
+    return handler
+
+
+def _raise_or_defer(stop, frame):
+    import signal
+
+    if frame is not None and frame.f_code.co_filename.startswith("<frozen importlib"):
+        _DEFERRED.append(stop)
+        signal.setitimer(signal.ITIMER_REAL, 0.01)
+        return
+    raise stop()
+
+
+def _retry_deferred(signum, frame):
+    if _DEFERRED:
+        stop = _DEFERRED[0]
+        _DEFERRED.clear()
+        _raise_or_defer(stop, frame)
+
+
+@contextmanager
+def _stops_as_exceptions():
+    """While a command runs, Ctrl-C raises KeyboardInterrupt and SIGTERM
+    :class:`Terminated` (never inside the import machinery: see
+    :func:`_stop_handler`).  Only the main thread can set a handler: under
+    a test runner's thread nothing changes."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    handlers = {signal.SIGINT: _stop_handler(KeyboardInterrupt), signal.SIGTERM: _stop_handler(Terminated),
+                signal.SIGALRM: _retry_deferred}
+    previous = {sig: signal.signal(sig, handler) for sig, handler in handlers.items()}
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        _DEFERRED.clear()
+        for sig, handler in previous.items():
+            signal.signal(sig, signal.SIG_DFL if handler is None else handler)
+
+
+def _unwritten() -> str:
+    """'' or, after a failed or stopped write, the note that names the
+    file(s) left unwritten (nothing is under their name)."""
+    # a command that wrote no file never imported the writer: nothing to say, nothing to import
+    atomic = sys.modules.get("deathsphere.writers.atomic")
+    names = atomic.not_written() if atomic is not None else []
+    return f"; not written: {', '.join(names)}" if names else ""
 
 
 def _command_name(args) -> str:

@@ -8,15 +8,20 @@ import click
 import numpy as np
 
 from deathsphere import api
-from deathsphere.cli.base import choose_format, cli, emit
+from deathsphere.cli.base import OutputPath, choose_format, cli, emit, finish, stream
 from deathsphere.cli.options import (
+    jobs_option,
     machine_from_options,
     machine_options,
     only_option,
     output_options,
     param_option,
+    scheduler_option,
+    single,
     stability_option,
 )
+from deathsphere.cli.orbit import SWEEP_FORMATS, sweep_format
+from deathsphere.writers.stream import FORMATS
 
 
 def _view(name: str, **kwargs):
@@ -71,10 +76,15 @@ def _grid(where, how, mus):
                    "range, lean, load, friction needed and least head clearance, and why the others fail.")
 @only_option(api.STATUSES)
 @stability_option()
-@output_options()
+@jobs_option()
+@scheduler_option()
+@single("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
+        help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
+             "of stdout.  Parquet needs the fast extra.")
+@output_options(FORMATS + ("parquet",))
 def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
                  roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
-                 vertical, v_top, summary, only, stability, fmt):
+                 vertical, v_top, summary, only, stability, jobs, scheduler, output, fmt):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
     Every combination of the --theta (or --height) and --alpha (or --speed)
@@ -94,9 +104,12 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h \\
           --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
+      deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 \\
+          --output ride.parquet
     """
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
+    fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
@@ -110,8 +123,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         where, how, friction = _grid(_axis("theta", theta), _axis("v_top", v_top), mus)
         table = api.ride(where, vertical=True, v_top=how, machine=chosen, only=only or None, **friction, **setup)
         title = f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)"
-        emit([table], choose_format(fmt), title, view=_view("loop_view", title=title,
-                                                          speed_unit=api.rides.typed_speed_unit(v_top)))
+        emit([table], fmt, title, view=_view("loop_view", title=title,
+                                             speed_unit=api.rides.typed_speed_unit(v_top)), output=output)
         return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
@@ -121,18 +134,25 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --alpha or --speed, not both")
     if not alpha and not speed:
         raise click.UsageError("give --alpha or --speed")
-    refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, "alpha": alpha, "speed": speed}),
-                      command="ride", limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
     at, by = ("theta", theta) if theta else ("height", height), ("alpha", alpha) if alpha else ("speed", speed)
-    where, how, friction = _grid(_axis(*at), _axis(*by), mus)
-    table = api.ride(**{at[0]: where, by[0]: how}, machine=chosen, stability=stability and not summary,
-                     only=only or None, summary=summary, **friction, **setup)
-    fmt = choose_format(fmt)
-    if summary:
-        title = f"Feasible speeds by height: {chosen.name} (docs/machine.md)"
-    else:
-        title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
-    emit([table], fmt, title, view=_view("ride_view", title=title))
+    if summary or (mus is not None and mus.size > 1):
+        # the rider's table and a range of mu keep the request's grid in memory (grouped by request)
+        refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, "alpha": alpha,
+                                        "speed": speed}),
+                          command="ride", limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
+        where, how, friction = _grid(_axis(*at), _axis(*by), mus)
+        table = api.ride(**{at[0]: where, by[0]: how}, machine=chosen, stability=stability and not summary,
+                         only=only or None, summary=summary, **friction, **setup)
+        title = (f"Feasible speeds by height: {chosen.name} (docs/machine.md)" if summary
+                 else f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)")
+        emit([table], fmt, title, view=_view("ride_view", title=title), output=output)
+        return
+    # one orbit per grid point and one mu: streamed chunk by chunk, as sweep (flat memory, --jobs, --scheduler)
+    friction = {"mu": float(mus[0])} if mus is not None else {}
+    chunks = api.ride_sweep(**{at[0]: list(at[1]), by[0]: list(by[1])}, machine=chosen, stability=stability,
+                            only=only or None, jobs=jobs or 1, scheduler=scheduler, **friction, **setup)
+    title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
+    finish(stream(chunks, fmt, label="ride", title=title, view=_view("ride_view", title=title), output=output))
 
 
 @cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")

@@ -18,7 +18,6 @@ from deathsphere.cli.base import (
     emit,
     fail,
     one_line,
-    progress,
     stderr_console,
     stdout_console,
 )
@@ -131,11 +130,8 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
     from deathsphere.table import Table
 
     if monte_carlo is not None:
-        with progress("falls", 1) as bar:
-            outcomes, summary = result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
-                                             **({"scheduler": scheduler} if scheduler is not None else {}))
-            bar.update(1, 1)
-        return outcomes, summary
+        return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
+                            **({"scheduler": scheduler} if scheduler is not None else {}))
     tables = [result.fall(name, t, **({"speed_fraction": f} if f is not None else {})) for name, t, f in fails]
     return Table.concat(tables), None
 

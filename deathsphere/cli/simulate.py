@@ -78,6 +78,7 @@ def _preflight_output(output) -> bool:
         help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), write "
              "the 3-D view: .html (interactive, self-contained), .gif (plot extra), .mp4 (plot extra and "
              "ffmpeg), or the time series: .csv/.json/.ndjson.  Nothing is printed on stdout then.")
+@params_options("loop_seconds", "playback")
 @body_option(("wheel", "sphere"))
 @machine_options(without=("a",), machine_help="Simulate a machine (motorcycle and rider) instead: a preset (see "
                  "'deathsphere machines'), its wheel radius -a, changed by the machine options "
@@ -85,7 +86,8 @@ def _preflight_output(output) -> bool:
 @setup_options()
 @output_options()
 def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
-                     points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, body, machine,
+                     points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, loop_seconds,
+                     playback, body, machine,
                      machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
                      spin_inertia, head_height, side, a, r, diameter, k, g, mu, fmt):
     """Integrate the exact equations of motion from a steady orbit (beyond the paper).
@@ -112,6 +114,8 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
       deathsphere simulate --machine stunt125 --theta 60 --speed 30km/h -r 8ft
       deathsphere simulate --machine stunt125 --theta 90 --alpha 15 --output v.gif
+      deathsphere simulate --theta 60 --alpha 10 --output run.mp4 \\
+          --loop-seconds 4 --playback 0.5
     """
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
@@ -127,6 +131,7 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
         flags = [MACHINE_OPTIONS[name] for name in given(**overrides)]
         what = "is a machine option" if len(flags) == 1 else "are machine options"
         raise click.UsageError(f"{', '.join(flags)} {what}: give --machine (or --machine-file)")
+    loop = api.animation_options(output, **given(loop_seconds=loop_seconds, playback=playback))
     view = output is not None and _preflight_output(output)
     sim = api.prepare_simulation(
         theta, branch=branch, vertical=vertical, method=method, frame=frame, record_states=view,
@@ -174,7 +179,8 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
     elif view:
         from deathsphere.viewer import write_view
 
-        size = write_view(output, Table.concat(series), summary, sim.view_frames())
+        with progress("frames", None) as bar:
+            size = write_view(output, Table.concat(series), summary, sim.view_frames(), progress=bar.update, **loop)
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
     elif output is not None:
         from deathsphere.render.figures import PlotExtraMissing

@@ -38,3 +38,13 @@ def figure_format(output) -> str:
     if suffix not in FORMATS:
         raise ValueError(f"output must end in .png, .svg or .pdf, got {str(output)!r}")
     return suffix
+
+
+def save_figure(fig, output, fmt: str, dpi: int) -> None:
+    """Save ``fig`` to ``output`` whole or not at all (a failed or
+    interrupted save leaves no file under that name:
+    :mod:`deathsphere.writers.atomic`)."""
+    from deathsphere.writers.atomic import atomic_path
+
+    with atomic_path(output) as temp:
+        fig.savefig(temp, format=fmt, dpi=dpi)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.constants import BOUNDARY_LABELS
-from deathsphere.render.figures import figure_format, import_matplotlib
+from deathsphere.render.figures import figure_format, import_matplotlib, save_figure
 
 #: name -> (legend label inside, legend label outside, matplotlib style)
 CURVES = {
@@ -162,5 +162,5 @@ def plot_map(curves, *, output=None, points=None, points_label="orbits", title=N
     ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncols=3,
               fontsize=8, frameon=False)
     if output is not None:
-        fig.savefig(output, format=fmt, dpi=dpi)
+        save_figure(fig, output, fmt, dpi)
     return fig

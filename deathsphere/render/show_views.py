@@ -226,6 +226,8 @@ def _fall_line(get: dict) -> str:
     the outcome, where he leaves the wall and lands, how long and how hard."""
     who = (f"{get['rider']} at t = {format_number(get['t_fail_s'], 4)} s drops to "
            f"{100 * float(get['speed_fraction']):.0f} % of the speed: {str(get['outcome']).replace('_', ' ')}")
+    if get["outcome"] == "swings" and not is_undefined(get.get("swing_height_m")):
+        return f"{who} on the wall, up to {get['swing_height_m']:.2f} m above the floor"
     if get["outcome"] != "falls":
         return who
     return (f"{who}; leaves the wall at t = {format_number(get['t_contact_lost_s'], 4)} s "
@@ -235,12 +237,16 @@ def _fall_line(get: dict) -> str:
             f"{speed_cell(get['impact_speed_m_s'])} km/h (m/s)")
 
 
-def _hit_cell(value, clearance=None) -> str:
-    """HIT in red, clear in green; — when there was no flight to check."""
+def _hit_cell(value, clearance=None, crosses=None) -> str:
+    """HIT in red, clear in green; a swing that crosses the rider's lane
+    in yellow; — when there was no flight to check."""
     if clearance is not None and is_undefined(clearance):
-        return "—"
-    hit = bool(value) and str(value).lower() not in ("false", "0", "")
-    return "[bold red]HIT[/bold red]" if hit else "[green]clear[/green]"
+        return "[yellow]crosses his lane[/yellow]" if _true(crosses) else "—"
+    return "[bold red]HIT[/bold red]" if _true(value) else "[green]clear[/green]"
+
+
+def _true(value) -> bool:
+    return value is not None and not is_undefined(value) and bool(value) and str(value).lower() not in ("false", "0")
 
 
 #: More falls than this are a list (a Monte Carlo's), one line each.
@@ -263,8 +269,8 @@ def falls_view(table: Table, total_rows: int | None = None, result=None) -> FitT
         Column("rider", "rider", [escape(str(v)) for v in _column(head, "rider")], "left"),
         Column("victim", "other rider", [escape(str(v)) if v else "(alone)" for v in _column(head, "victim")],
                "left"),
-        Column("hit", "", [_hit_cell(v, c) for v, c in zip(_column(head, "hit"), _column(head, "min_clearance_m"))],
-               "left"),
+        Column("hit", "", [_hit_cell(v, c, x) for v, c, x in zip(_column(head, "hit"), _column(head, "min_clearance_m"),
+                                                              _column(head, "crosses_lane"))], "left"),
         Column("min_clearance_m", "least\nclear\nm", [_fixed(v, 3) for v in _column(head, "min_clearance_m")]),
         Column("t_min_s", "at t\ns", [format_number(v, 4) for v in _column(head, "t_min_s")]),
     ]

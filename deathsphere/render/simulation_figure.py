@@ -17,6 +17,7 @@ from deathsphere.render.figures import (
     PlotExtraMissing,
     figure_format,
     import_matplotlib,
+    save_figure,
 )
 from deathsphere.table import Table
 
@@ -118,7 +119,7 @@ def plot_simulation(series: Table, summary: Table | None = None, *, output=None,
         title = _default_title(summary, bodies.size)
     fig.suptitle(title, fontsize=11)
     if output is not None:
-        fig.savefig(output, format=fmt, dpi=dpi)
+        save_figure(fig, output, fmt, dpi)
     return fig
 
 

@@ -25,7 +25,7 @@ COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", 
 _VERDICT = exact_stability.VERDICT_LABELS
 
 #: The exact rows: (quantity, orbit-table column, units).
-_EXACT = (("growth rate, max Re(eigenvalue)", "growth_rate_1_s", "1/s"),
+_EXACT = (("growth rate (max Re of the eigenvalues)", "growth_rate_1_s", "1/s"),
           ("slow nutation frequency", "freq_slow_rad_s", "rad/s"),
           ("fast nutation frequency", "freq_fast_rad_s", "rad/s"),
           ("verdict", "stability", ""))
@@ -66,7 +66,7 @@ def stability_report(orbits: Table) -> Table:
     why_not = np.where(live, orbits["stability_method"].astype(object),
                        [f"no steady orbit with contact here ({s}: {w})" for s, w in zip(status, reason)])
     blank = np.full(n, None, dtype=object)
-    kinds = [dict(source="exact", equation="0, 29, 33", quantity="orbit status", units="", applies=np.ones(n, bool),
+    kinds = [dict(source="exact", equation="0 29 33", quantity="orbit status", units="", applies=np.ones(n, bool),
                   validity=blank, paper=blank, corrected=blank, exact=status, deviation=blank,
                   note=np.where(reason == "", "a steady orbit with contact", reason), validity_limit=blank,
                   present=np.ones(n, bool))]

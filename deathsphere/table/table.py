@@ -189,8 +189,11 @@ class Table:
         if hasattr(path_or_buf, "write"):
             path_or_buf.write(text)
         else:
-            # newline="": the CLI's line ends, whatever the platform
-            with open(path_or_buf, "w", encoding="utf-8", newline="") as out:
+            from deathsphere.writers.atomic import atomic_file
+
+            # newline="": the CLI's line ends, whatever the platform; the
+            # file appears only when complete, as every file written here
+            with atomic_file(path_or_buf, "w", encoding="utf-8", newline="") as out:
                 out.write(text)
         return None
 

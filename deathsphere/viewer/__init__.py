@@ -73,13 +73,19 @@ def check_view_output(output) -> str:
     return fmt
 
 
-def write_view(output, series: Table, summary: Table, frames: dict, *, title: str = "") -> int:
+def write_view(output, series: Table, summary: Table, frames: dict, *, title: str = "",
+               loop_seconds: float | None = None, playback: float | None = None, progress=None) -> int:
     """Write the 3-D view of a run to ``output`` (.html, .gif or .mp4, by
     its extension); returns the file's size in bytes.
 
     ``series``, ``summary`` and ``frames`` are the run's time series, its
     summary and :meth:`deathsphere.simulation.Simulation.view_frames` (the
     geometry to draw, computed by the simulation: the viewer only draws).
+    A GIF or MP4 loop lasts at most ``loop_seconds`` (None: the default
+    :data:`~deathsphere.viewer.animation.MAX_SECONDS`) and plays the run
+    ``playback`` times real time (None: chosen so that nothing aliases);
+    ``progress(k, n)`` is called after each of its frames.  The checked
+    values come from :func:`deathsphere.api.animation_options`.
     """
     from deathsphere.viewer.scene import build_scenes
 
@@ -89,7 +95,8 @@ def write_view(output, series: Table, summary: Table, frames: dict, *, title: st
         from deathsphere.viewer.html import write_html
 
         return write_html(output, scenes, title)
-    from deathsphere.viewer.animation import write_animation
+    from deathsphere.viewer.animation import MAX_SECONDS, write_animation
 
-    write_animation(output, scenes, title=title)
+    write_animation(output, scenes, title=title, max_seconds=MAX_SECONDS if loop_seconds is None else loop_seconds,
+                    playback=playback, progress=progress)
     return Path(output).stat().st_size

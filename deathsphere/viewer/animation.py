@@ -24,6 +24,7 @@ import textwrap
 import numpy as np
 
 from deathsphere.viewer.scene import BodyScene, playback_factor, slow_motion_words
+from deathsphere.writers.atomic import atomic_path, signals_held
 
 __all__ = ["frame_times", "loop_plan", "frame_delays_ms", "write_animation", "CAMERA", "FPS", "MAX_SECONDS",
            "SIZE_PX", "END_HOLD_S"]
@@ -56,27 +57,31 @@ _SWATCHES = (_WHEEL, _TRAIL, _NORMAL, _FRICTION, _SPOKE, _EVENT, _RIDER, _COM, "
              "#555555", "#ffffff", "#000000")
 
 
-def loop_plan(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MAX_SECONDS) -> tuple[np.ndarray, float]:
+def loop_plan(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MAX_SECONDS,
+              playback: float | None = None) -> tuple[np.ndarray, float]:
     """(times [s], playback factor) of the loop's frames: one every
     factor / fps simulated seconds, ending on the run's end, at most
-    ``max_seconds`` of loop.  The factor is chosen from the fastest
+    ``max_seconds`` of loop.  The factor is ``playback`` (simulated
+    seconds per second of loop) if given, else chosen from the fastest
     rotation and motion in the last ``max_seconds`` of the run, which
     holds any stretch a slower loop shows."""
     drawn = [s for s in scenes if s.n_frames]
     if not drawn:
-        return np.zeros(1), 1.0
+        return np.zeros(1), 1.0 if playback is None else float(playback)
     t_end = max(float(s.t[-1]) for s in drawn)
     t_start = min(float(s.t[0]) for s in drawn)
-    factor = playback_factor(drawn, 1.0 / fps, t_from=t_end - max_seconds)
+    factor = (playback_factor(drawn, 1.0 / fps, t_from=t_end - max_seconds) if playback is None
+              else float(playback))
     step = factor / fps
     span = min(t_end - t_start, max_seconds * factor)
     n = int(np.floor(span / step + 1e-9)) + 1
     return t_end - np.arange(n)[::-1] * step, factor
 
 
-def frame_times(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MAX_SECONDS) -> np.ndarray:
+def frame_times(scenes: list[BodyScene], fps: int = FPS, max_seconds: float = MAX_SECONDS,
+                playback: float | None = None) -> np.ndarray:
     """Times [s] of the loop's frames (:func:`loop_plan`)."""
-    return loop_plan(scenes, fps, max_seconds)[0]
+    return loop_plan(scenes, fps, max_seconds, playback)[0]
 
 
 def frame_delays_ms(n: int, fps: int = FPS, hold_s: float = END_HOLD_S) -> list[int]:
@@ -198,9 +203,13 @@ class _GifStream:
     palette): nothing is held but the palette and the open file."""
 
     def __init__(self, path):
-        self._fp = open(path, "wb")
+        self._path = path
+        self._fp = None
         self._palette = None
         self._previous = None
+
+    def start(self):
+        self._fp = open(self._path, "wb")
 
     def add(self, rgb, duration_ms: int):
         from PIL import GifImagePlugin, Image
@@ -240,6 +249,10 @@ class _GifStream:
         self._fp.write(b";")
         self._fp.close()
 
+    def abort(self):
+        if self._fp is not None:
+            self._fp.close()
+
 
 class _Mp4Stream:
     """Raw RGB frames piped to ffmpeg (H.264, yuv420p, playable in slide
@@ -255,31 +268,63 @@ class _Mp4Stream:
         self._ms = 1000.0 / fps
         self._shown = 0.0
         self._sent = 0
-        self._proc = subprocess.Popen(
-            [binary, "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{size[0]}x{size[1]}",
-             "-r", str(fps), "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
-             str(path)], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        self._command = [binary, "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s",
+                         f"{size[0]}x{size[1]}", "-r", str(fps), "-i", "-", "-c:v", "libx264", "-pix_fmt",
+                         "yuv420p", "-movflags", "+faststart", str(path)]
+        self._proc = None
+
+    def start(self):
+        # a session of its own: Ctrl-C at the terminal reaches this process
+        # only, which stops the encoder itself (abort) before the partial
+        # file is removed; an encoder stopped first would look like a reader
+        # gone away (a broken pipe).  Started with the signals held, so
+        # that an encoder started is always one recorded to be stopped.
+        with signals_held():
+            self._proc = subprocess.Popen(self._command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                                          stderr=subprocess.PIPE, start_new_session=True)
 
     def add(self, rgb, duration_ms: int):
         self._shown += duration_ms
         data = np.ascontiguousarray(rgb).tobytes()
         while (self._sent + 1) * self._ms <= self._shown + 1e-6:
-            self._proc.stdin.write(data)
+            try:
+                self._proc.stdin.write(data)
+            except BrokenPipeError:
+                # the encoder ended early: its own failure, not a reader gone
+                self._proc.wait()
+                raise RuntimeError(f"ffmpeg failed: {self._errors()}") from None
             self._sent += 1
+
+    def _errors(self) -> str:
+        return self._proc.stderr.read().decode(errors="replace").strip()[-500:]
 
     def close(self):
         self._proc.stdin.close()
-        err = self._proc.stderr.read().decode(errors="replace")
+        err = self._errors()
         if self._proc.wait() != 0:
-            raise RuntimeError(f"ffmpeg failed: {err.strip()[-500:]}")
+            raise RuntimeError(f"ffmpeg failed: {err}")
+
+    def abort(self):
+        if self._proc is None:
+            return
+        self._proc.kill()
+        self._proc.wait()
+        for pipe in (self._proc.stdin, self._proc.stderr):
+            try:
+                pipe.close()
+            except OSError:
+                pass
 
 
 def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: int = FPS,
-                    max_seconds: float = MAX_SECONDS, size_px=SIZE_PX, dpi: int = 90, progress=None) -> int:
+                    max_seconds: float = MAX_SECONDS, playback: float | None = None, size_px=SIZE_PX,
+                    dpi: int = 90, progress=None) -> int:
     """Write the loop to ``output`` (.gif with Pillow, .mp4 with ffmpeg),
     each frame as it is drawn; returns the number of frames.  Needs
-    matplotlib (the ``plot`` extra).  ``progress(k, n)``, if given, is
-    called after each frame."""
+    matplotlib (the ``plot`` extra).  ``max_seconds`` and ``playback``:
+    see :func:`loop_plan`.  ``progress(k, n)``, if given, is called after
+    each frame.  The file appears under ``output`` only when complete
+    (:mod:`deathsphere.writers.atomic`)."""
     from deathsphere.render.figures import import_matplotlib
 
     import_matplotlib()
@@ -305,7 +350,7 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
                      bbox=dict(boxstyle="round", fc="white", ec="#999999", alpha=0.9))
     fig.text(0.985, 0.015, "arrows: normal force (green), friction (orange), 0.1 r per g", ha="right",
              fontsize=9, color="#555555")
-    times, factor = loop_plan(scenes, fps, max_seconds)
+    times, factor = loop_plan(scenes, fps, max_seconds, playback)
     delays = frame_delays_ms(times.size, fps)
     drawn = [s for s in scenes if s.n_frames]
     artists = []
@@ -363,12 +408,16 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
         return np.asarray(canvas.buffer_rgba())[..., :3]
 
     fmt = str(output).lower().rsplit(".", 1)[-1]
-    stream = _GifStream(output) if fmt == "gif" else _Mp4Stream(output, size_px, fps)
-    try:
-        for k, t in enumerate(times):
-            stream.add(draw(float(t)), delays[k])
-            if progress is not None:
-                progress(k + 1, times.size)
-    finally:
+    with atomic_path(output) as temp:
+        stream = _GifStream(temp) if fmt == "gif" else _Mp4Stream(temp, size_px, fps)
+        try:
+            stream.start()
+            for k, t in enumerate(times):
+                stream.add(draw(float(t)), delays[k])
+                if progress is not None:
+                    progress(k + 1, times.size)
+        except BaseException:
+            stream.abort()
+            raise
         stream.close()
     return int(times.size)

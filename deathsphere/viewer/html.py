@@ -14,11 +14,11 @@ from __future__ import annotations
 import base64
 import json
 from importlib import resources
-from pathlib import Path
 
 import numpy as np
 
 from deathsphere.viewer.scene import PLAYBACK_FACTORS, BodyScene, playback_factor
+from deathsphere.writers.atomic import atomic_file
 
 __all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "MACHINE_KEYS",
            "SCALAR_KEYS", "PANEL_KEYS", "SCREEN_INTERVAL_S"]
@@ -102,5 +102,6 @@ def render_html(scenes: list[BodyScene], title: str = "") -> str:
 def write_html(output, scenes: list[BodyScene], title: str = "") -> int:
     """Write the page to ``output``; returns its size in bytes."""
     data = render_html(scenes, title).encode("utf-8")
-    Path(output).write_bytes(data)
+    with atomic_file(output, "wb") as out:
+        out.write(data)
     return len(data)

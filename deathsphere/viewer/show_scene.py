@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from deathsphere.table import Table
+from deathsphere.writers.atomic import atomic_file
 
 __all__ = ["ActScene", "act_scene", "act_data", "render_act_html", "write_act_view", "frame_step", "MAX_FRAMES",
            "DATA_MARK"]
@@ -36,6 +37,8 @@ MAX_FRAMES = 20_000
 MAX_MOVE_R = 0.05
 #: points of a fall's drawn path
 PATH_POINTS = 64
+#: the clock runs this long past a fall's landing [s]
+FALL_AFTER_S = 0.3
 #: standard gravity [m/s^2], when the result does not say its own
 G0 = 9.80665
 #: the riders' colours (the pair of least clearance is drawn in red over them)
@@ -159,6 +162,10 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
     r = _globe_radius(probe)
     g = _plan_number(result, "plan", "globe", "g", default=G0)
     step = frame_step(probe, probe_t, r)
+    fall = _fall(result, falls, r, g) if falls is not None else None
+    if fall is not None and "t_land" in fall:
+        # a fall may land after the act's end: the clock runs on to the landing
+        duration = max(duration, fall["t_land"] + FALL_AFTER_S)
     n = int(min(max_frames, max(2, math.ceil(duration / step) + 1)))
     t = np.linspace(0.0, duration, n)
     pair = _least_pair(result.pairs)
@@ -175,7 +182,7 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
                      lanes=[str(x) for x in riders["lane"]],
                      points={name: {k: np.asarray(positions[name][k], dtype=np.float64)
                                     for k in ("contact", "head", "com")} for name in names},
-                     pair=pair, fall=_fall(result, falls, r, g) if falls is not None else None)
+                     pair=pair, fall=fall)
     scene.title = _title(scene)
     scene.colours = [COLOURS[k % len(COLOURS)] for k in range(len(names))]
     return scene
@@ -239,7 +246,8 @@ def write_act_view(output, result, falls: Table | None = None) -> int:
     scene = act_scene(result, falls)
     if fmt == "html":
         data = render_act_html(scene).encode("utf-8")
-        Path(output).write_bytes(data)
+        with atomic_file(output, "wb") as out:       # whole or not at all
+            out.write(data)
         return len(data)
     from deathsphere.viewer.show_animation import write_act_animation
 

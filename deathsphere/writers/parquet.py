@@ -11,6 +11,7 @@ import importlib.util
 from typing import Iterable
 
 from deathsphere.table import frames
+from deathsphere.writers.atomic import atomic_path
 from deathsphere.writers.behind import WriteBehind
 
 
@@ -23,7 +24,13 @@ def write_parquet(chunks: Iterable, path: str) -> int:
     memory stays that of a chunk.  Each chunk is :meth:`Table.to_arrow
     <deathsphere.table.Table.to_arrow>` with the first chunk's schema:
     undefined values (NaN, empty text) are nulls; text columns are strings,
-    ``input_row`` and ``branch`` int64, the rest float64."""
+    ``input_row`` and ``branch`` int64, the rest float64.  The file
+    appears under ``path`` only when complete (:mod:`deathsphere.writers.atomic`)."""
+    with atomic_path(path) as temp:
+        return _write_parquet(chunks, temp)
+
+
+def _write_parquet(chunks: Iterable, path: str) -> int:
     import threading
 
     # pyarrow's import and its first conversion (which imports pandas, if

@@ -240,6 +240,7 @@ def test_html_view_is_written(run, plan_file, tmp_path):
     (("PLAN", "--table", "falls"), ["--fail"]),
     (("PLAN", "--table", "summary"), ["--monte-carlo"]),
     (("PLAN", "--seed", "3"), ["--monte-carlo"]),
+    (("PLAN", "--scheduler", "tcp://127.0.0.1:8786"), ["--monte-carlo"]),
     (("PLAN", "--format", "parquet"), ["--output"]),
     (("PLAN", "--output", "act.html", "--table", "pairs"), ["--table"]),
     (("PLAN", "--output", "act.html", "--format", "csv"), ["--format"]),
@@ -313,7 +314,8 @@ def _screen(run, args, width, color=False):
 
 @pytest.mark.parametrize("width", [80, 100])
 @pytest.mark.parametrize("extra", [(), ("--fail", "Ben@1.2:0.3"), ("--monte-carlo", "40", "--seed", "1"),
-                                   ("--table", "pairs")], ids=["act", "fail", "odds", "pairs"])
+                                   ("--monte-carlo", "40", "--seed", "1", "--table", "falls"), ("--table", "pairs")],
+                         ids=["act", "fail", "odds", "falls", "pairs"])
 def test_no_line_is_wider_than_the_terminal(run, plan_file, width, extra):
     text = ANSI.sub("", _screen(run, ("show", plan_file, *extra), width))
     assert max(cell_len(line) for line in text.splitlines()) <= width
@@ -336,3 +338,14 @@ def test_conflicts_are_red(run, tmp_path):
     verdict = re.search(r"(conflict|collision)", ANSI.sub("", line))
     assert verdict, line
     assert re.search(r"\x1b\[(1;)?31m" + verdict.group(1), line), repr(line)
+
+
+def test_a_hit_is_red_on_the_line_of_the_rider_fallen_into(run, plan_file):
+    """The view says HIT, in red, exactly for the riders the table marks hit."""
+    data = json.loads(run("show", plan_file, "--fail", "Ana@0.5:0", "--format", "json").stdout)
+    hit = {r["victim"]: r["hit"] for r in data}
+    assert any(hit.values()) and not all(hit.values())      # the case shows both
+    text = _screen(run, ("show", plan_file, "--fail", "Ana@0.5:0", "--table", "falls"), 100, color=True)
+    for victim, was_hit in hit.items():
+        line = next(line for line in text.splitlines() if re.search(rf"Ana\S*\s+\S*{victim}\b", ANSI.sub("", line)))
+        assert bool(re.search(r"\x1b\[(1;)?31mHIT", line)) == was_hit, repr(line)

@@ -101,3 +101,12 @@ def test_a_gif_is_written(act, tmp_path):
     out = tmp_path / "act.gif"
     frames = write_act_animation(out, act_scene(act[0], falls), max_seconds=0.12, size_px=(320, 240))
     assert frames >= 2 and out.read_bytes()[:6] == b"GIF89a"
+
+
+def test_the_clock_runs_on_to_a_late_landing(act):
+    result, _ = act
+    falls = result.fall("Eve", 0.6, 0.6)
+    assert falls["outcome"][0] == "falls" and float(falls["t_land_s"][0]) > result.duration_s
+    late = act_scene(result, falls)
+    assert late.t[-1] > float(falls["t_land_s"][0])
+    assert late.fall["path_t"][-1] == pytest.approx(float(falls["t_land_s"][0]))

@@ -343,7 +343,10 @@ def main(argv=None) -> int:
     text = generated_source(surfaces, derivations)
     print(f"generated in {time.perf_counter() - start:.1f} s in all, {len(text.splitlines())} lines")
     if args.write:
-        args.output.write_text(text, encoding="utf-8")
+        from deathsphere.writers.atomic import atomic_file
+
+        with atomic_file(args.output, "w", encoding="utf-8") as out:    # whole or not at all
+            out.write(text)
         print(f"wrote {args.output}")
     return 0
 
