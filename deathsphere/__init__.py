@@ -57,7 +57,7 @@ _HOME = {
 }
 
 #: Submodules reachable as attributes, as when this package imported them.
-_MODULES = ("api", "model", "params", "constants", "physics")
+_MODULES = ("api", "model", "params", "constants", "physics", "show")
 
 __all__ = [*_HOME, "__version__"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

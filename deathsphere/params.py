@@ -201,6 +201,9 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
           help="Ride: sum of the wheels' polar moments of inertia about their axles."),
     _length("head_height", "head height", "head", lo=0.0,
             help="Ride: height of the top of the rider's head above the contact along the up-axis."),
+    _length("width", "machine width", "w", lo=0.0,
+            help="Show: the machine's width, handlebar or rider's shoulders, whichever is wider: the diameter "
+                 "of the rider's envelope (docs/show.md)."),
     _length("height", "contact height", "z", lo=0.0,
             help="Ride: height of the contact point above the globe's floor instead of --theta (0 .. the "
                  "diameter)."),

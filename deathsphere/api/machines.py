@@ -8,6 +8,7 @@ A machine is validated once, at construction: a bad one raises
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -18,7 +19,7 @@ from deathsphere.params import ParameterError
 
 #: Machine field -> registry parameter (its unit, bounds and option name).
 FIELD_PARAMS = {"mass": "mass", "h": "com_height", "a": "a", "t": "tyre_radius", "spin_inertia": "spin_inertia",
-                "head": "head_height"}
+                "head": "head_height", "width": "width"}
 INERTIA_PARAMS = ("roll_inertia", "pitch_inertia", "yaw_inertia")
 #: Relative slack of the rigid-body inequalities (round-off of published numbers).
 INERTIA_RTOL = 1e-9
@@ -64,7 +65,10 @@ class Machine:
     (I_roll, I_pitch, I_yaw), principal moments of the whole machine with its
     wheels locked about its centre of mass; spin_inertia [kg m^2] the sum of
     the wheels' polar moments; head [m] the top of the rider's head above
-    the contact along the up-axis (default h); name and source describe it.
+    the contact along the up-axis (default h); width [m] handlebar or the
+    rider's shoulders, whichever is wider: the diameter of the rider's
+    envelope in a show (None: not known; a show refuses it); name and
+    source describe it.
 
     >>> Machine(mass=0, h=0.8, a=0.3, inertia=(1, 1, 1), spin_inertia=0.5)
     Traceback (most recent call last):
@@ -79,6 +83,7 @@ class Machine:
     inertia: tuple[float, float, float] = (0.0, 0.0, 0.0)
     spin_inertia: float = 0.0
     head: float | None = None
+    width: float | None = None
     name: str = "custom"
     source: str = ""
 
@@ -90,6 +95,8 @@ class Machine:
             value = getattr(self, field)
             if field == "head" and value is None:
                 value = self.h
+            if field == "width" and value is None:
+                continue
             value = _number(field, value)
             reason = params.problems(pname, [value])[0]
             if reason:
@@ -159,16 +166,17 @@ class Machine:
         return {"name": self.name, "mass_kg": self.mass, "com_height_m": self.h, "wheel_radius_m": self.a,
                 "tyre_radius_m": self.t, "roll_inertia_kg_m2": self.inertia[0],
                 "pitch_inertia_kg_m2": self.inertia[1], "yaw_inertia_kg_m2": self.inertia[2],
-                "spin_inertia_kg_m2": self.spin_inertia, "head_height_m": self.head, "source": self.source}
+                "spin_inertia_kg_m2": self.spin_inertia, "head_height_m": self.head, "source": self.source,
+                "width_m": math.nan if self.width is None else self.width}
 
 
 def paper_wheel(a: float = TABLE1_WHEEL_RADIUS, k: float = 0.5, mass: float = 1.0) -> Machine:
     """McDonald's wheel as a machine: h = a, t = 0, inertia (k, 2k, k) m a^2,
     spin inertia 2 k m a^2, the head at the hub (docs/machine.md sec. 4)."""
     i = k * mass * a * a
-    return Machine(mass=mass, h=a, a=a, t=0.0, inertia=(i, 2 * i, i), spin_inertia=2 * i, head=a,
+    return Machine(mass=mass, h=a, a=a, t=0.0, inertia=(i, 2 * i, i), spin_inertia=2 * i, head=a, width=0.0,
                    name="paper-wheel", source="McDonald (1993) Table 1: a = 0.3 m k = 1/2 (mass 1 kg: any mass gives "
-                   "the same orbits)")
+                   "the same orbits); width 0: the paper's thin wheel")
 
 
 #: Meijaard, Papadopoulos, Ruina and Schwab (2007), Proc. R. Soc. A 463,
@@ -185,6 +193,9 @@ BENCHMARK_BODIES = {
 BENCHMARK_WHEELS = ((0.3, 0.12), (0.35, 0.28))
 #: Estimate (not in the benchmark): top of a seated adult rider's head [m].
 BENCHMARK_HEAD_ESTIMATE = 1.75
+#: Estimate (not in the benchmark): a city bicycle's handlebar, wider than
+#: an adult's shoulders (about 0.45 m) [m].
+BENCHMARK_WIDTH_ESTIMATE = 0.60
 
 
 def benchmark_totals():
@@ -213,16 +224,16 @@ def benchmark_bicycle() -> Machine:
     (r_r, i_r), (r_f, i_f) = BENCHMARK_WHEELS
     a = 0.5 * (r_r + r_f)
     return Machine(mass=mt, h=h, a=a, t=0.0, inertia=(ixx, iyy, izz), spin_inertia=a * (i_r / r_r + i_f / r_f),
-                   head=BENCHMARK_HEAD_ESTIMATE, name="benchmark-bicycle",
-                   source="Meijaard Papadopoulos Ruina Schwab (2007) Table 1; head height an estimate")
+                   head=BENCHMARK_HEAD_ESTIMATE, width=BENCHMARK_WIDTH_ESTIMATE, name="benchmark-bicycle",
+                   source="Meijaard Papadopoulos Ruina Schwab (2007) Table 1; head height and width estimates")
 
 
 def stunt125() -> Machine:
     """A light 125 cc trail/stunt motorcycle with rider: every number an
     estimate (docs/machine.md sec. 7)."""
     return Machine(mass=165.0, h=0.80, a=0.30, t=0.045, inertia=(25.0, 40.0, 20.0), spin_inertia=0.8, head=1.65,
-                   name="stunt125", source="estimates (docs/machine.md sec. 7): 90 kg bike + 75 kg rider; tyres "
-                   "70/100-19 and 90/100-16")
+                   width=0.80, name="stunt125", source="estimates (docs/machine.md sec. 7): 90 kg bike + 75 kg rider; "
+                   "tyres 70/100-19 and 90/100-16; handlebar 0.8 m")
 
 
 #: The presets of ``--machine``, by name.
@@ -246,7 +257,7 @@ def as_machine(machine) -> Machine:
 #: Keys of a machine file (TOML or CSV) -> registry parameter.
 FILE_KEYS = {"mass": "mass", "com_height": "com_height", "wheel_radius": "a", "tyre_radius": "tyre_radius",
              "roll_inertia": "roll_inertia", "pitch_inertia": "pitch_inertia", "yaw_inertia": "yaw_inertia",
-             "spin_inertia": "spin_inertia", "head_height": "head_height"}
+             "spin_inertia": "spin_inertia", "head_height": "head_height", "width": "width"}
 
 
 def machine_file(path, base=DEFAULT_MACHINE) -> Machine:

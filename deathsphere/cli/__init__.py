@@ -6,6 +6,7 @@ from deathsphere.cli import (  # noqa: F401  (register the commands)
     orbit,
     paper,
     ride,
+    show,
     simulate,
     stability,
     vertical,

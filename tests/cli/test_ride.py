@@ -57,7 +57,7 @@ def test_machines_lists_the_presets(run):
     assert [r["name"] for r in rows] == ["paper-wheel", "benchmark-bicycle", "stunt125"]
     assert list(rows[0]) == ["name", "mass_kg", "com_height_m", "wheel_radius_m", "tyre_radius_m",
                              "roll_inertia_kg_m2", "pitch_inertia_kg_m2", "yaw_inertia_kg_m2", "spin_inertia_kg_m2",
-                             "head_height_m", "source"]
+                             "head_height_m", "source", "width_m"]
     assert all(r["source"] for r in rows)
 
 

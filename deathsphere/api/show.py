@@ -1,0 +1,352 @@
+"""The show: several riders sharing one globe (``deathsphere show``;
+docs/show.md): lanes, clearance, timing, drift, and where a rider who loses
+speed falls.  Beyond the paper; the machine's physics is ``ride``'s
+(docs/machine.md)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from deathsphere.errors import ParameterError
+from deathsphere.show.lanes import Lane, build_lanes
+from deathsphere.show.plan import EXAMPLE_PLAN, Plan, read_plan
+from deathsphere.table import Table
+
+__all__ = ["show", "ShowResult", "EXAMPLE_PLAN", "RIDER_COLUMNS", "PAIR_COLUMNS", "FALL_COLUMNS",
+           "FALLS_SUMMARY_COLUMNS"]
+
+#: The columns of ``riders``, in order.  ``theta_deg`` and ``phi0_deg``
+#: are the contact's at t = 0 (a horizontal lane's theta throughout); a
+#: vertical lane has no alpha, leans 0 (upright in its loop's plane), its
+#: v_cm the centre of mass's speed at the top and its load_g the bottom's,
+#: and fills ``v_top_m_s`` .. ``load_bottom_g``; the speed band is of the
+#: centre of mass's speed (horizontal) or of v_top (vertical), empty where
+#: the planned speed is not feasible or an edge lies beyond 1/16..16 times it.
+RIDER_COLUMNS = ("name", "lane", "theta_deg", "phi0_deg", "alpha_deg", "lean_deg", "v_cm_m_s", "v_cm_km_h",
+                 "v_contact_m_s", "period_s", "load_g", "mu_required", "head_clearance_m", "status", "reason",
+                 "speed_low_m_s", "speed_high_m_s", "margin_low_pct", "margin_high_pct", "v_top_m_s",
+                 "v_top_min_m_s", "v_bottom_m_s", "load_bottom_g", "machine", "width_m")
+#: The columns of ``pairs``, in order; ``basis`` says how the least
+#: clearance was found ('act': over the act's times; 'geometric': two
+#: horizontal lanes of different rates sweep every relative phase, so both
+#: riders in one meridian plane).
+PAIR_COLUMNS = ("rider_a", "rider_b", "min_clearance_m", "t_s", "theta_a_deg", "phi_a_deg", "theta_b_deg",
+                "phi_b_deg", "verdict", "drift_time_s", "basis")
+#: The columns of ``fall``, in order: a looper who swings reaches
+#: ``swing_height_m`` (his contact's height above the floor at the swing's
+#: highest point) and ``crosses_lane`` says whether the victim's lane meets
+#: the arc he swings on (a horizontal lane no higher, every loop).
+FALL_COLUMNS = ("rider", "t_fail_s", "speed_fraction", "outcome", "t_contact_lost_s", "theta_lost_deg",
+                "phi_lost_deg", "t_land_s", "theta_land_deg", "phi_land_deg", "fall_time_s", "impact_speed_m_s",
+                "victim", "min_clearance_m", "t_min_s", "hit", "swing_height_m", "crosses_lane")
+#: The columns of the summary of ``falls``.
+FALLS_SUMMARY_COLUMNS = ("rider", "victim", "falls", "hits", "hit_fraction", "impact_speed_max_m_s")
+PHASES = ("plan", "auto")
+
+
+@dataclass
+class ShowResult:
+    """An act planned: ``riders`` and ``pairs`` tables, the act's
+    ``duration_s``, whether the riders' periods are ``commensurate``, each
+    vertical rider's ``phase_windows`` (name -> list of (from, to) [deg] of
+    safe phases; filled with phase='auto'), the checked ``plan`` and the
+    ``lanes``."""
+
+    plan: Plan
+    lanes: list[Lane]
+    riders: Table
+    pairs: Table
+    duration_s: float
+    commensurate: bool
+    phase_windows: dict = field(default_factory=dict)
+
+    def positions(self, t) -> dict:
+        """Each rider's 'contact', 'head' and 'com' points (3, n) [m, the
+        globe's frame] at the times t (n,) [s], by name."""
+        t = np.asarray(t, dtype=float).reshape(-1)
+        return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
+                for lane in self.lanes}
+
+    def fall(self, rider: str, t: float, speed_fraction: float = 0.5) -> Table:
+        """At time t [s] the rider's speed drops to ``speed_fraction`` (0 = a
+        dead stop .. 1) of his speed at that instant, along his direction of
+        travel: where he loses contact, where and when he lands, and for
+        every other rider the least clearance [m] (to 1 mm) between the
+        falling rider (a sphere of radius width/2 about his centre of mass)
+        and that rider's envelope during the flight (docs/show.md).  Columns
+        :data:`FALL_COLUMNS`, one row per other rider (one row with an empty
+        victim when he is alone)."""
+        from deathsphere.show.falls import refine_victim, simulate
+
+        names = [lane.name for lane in self.lanes]
+        if rider not in names:
+            raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
+        t = _number("t", t, 0.0, math.inf)
+        speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
+        k = names.index(rider)
+        res = simulate(self.lanes, self.plan.globe, [k], [t], [speed_fraction])
+        base = _fall_base(res, 0, self.lanes[k].name, t, speed_fraction)
+        rows = []
+        for j, victim in enumerate(self.lanes):
+            if j == k:
+                continue
+            c, when = float(res["clearance"][0, j]), float(res["t_min"][0, j])
+            if math.isfinite(res["fall_time"][0]):
+                c, when = refine_victim(self.lanes[k], victim, res["x0"][:, 0], res["v0"][:, 0],
+                                        float(res["t_lost"][0]), float(res["fall_time"][0]), self.plan.globe.g)
+            rows.append({**base, "victim": victim.name, "min_clearance_m": c, "t_min_s": when,
+                         "hit": bool(c < 0), "crosses_lane": _crosses(victim, base["swing_height_m"])})
+        if not rows:
+            rows.append({**base, "victim": "", "min_clearance_m": math.nan, "t_min_s": math.nan, "hit": False,
+                         "crosses_lane": False})
+        return _rows_table(rows, FALL_COLUMNS)
+
+    def falls(self, n: int, seed: int = 0, scheduler=None) -> tuple[Table, Table]:
+        """Monte Carlo of ``n`` falls: a random rider, a random time in the
+        act, a random speed fraction in [0, 1), drawn from ``seed``;
+        evaluated vectorised, in chunks, on a dask.distributed cluster with
+        ``scheduler`` (an address or a Client; the same rows in the same
+        order as here).  Returns (outcomes, summary): outcomes one row per
+        fall with :data:`FALL_COLUMNS`, its victim the rider he comes
+        closest to (sampled at FLIGHT_SAMPLES instants of the flight);
+        summary :data:`FALLS_SUMMARY_COLUMNS`: per falling rider and victim
+        (an empty victim: any), how many falls, how many hit, the fraction,
+        and the worst landing speed; the last row (both empty) all falls."""
+        from deathsphere.parallel import ordered_map
+        from deathsphere.show.falls import fall_chunk
+
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= MAX_FALLS:
+            raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
+        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise ParameterError(f"seed must be a whole number >= 0 (got {seed!r})", "seed")
+        rng = np.random.default_rng(int(seed))
+        rider = rng.integers(0, len(self.lanes), int(n))
+        t = rng.uniform(0.0, self.duration_s, int(n))
+        fraction = rng.uniform(0.0, 1.0, int(n))
+        client, own = (None, False)
+        if scheduler is not None:
+            from deathsphere.cluster import connect
+
+            client, own = connect(scheduler)
+        items = ((self.lanes, self.plan.globe, rider[s:s + FALLS_CHUNK], t[s:s + FALLS_CHUNK],
+                  fraction[s:s + FALLS_CHUNK]) for s in range(0, int(n), FALLS_CHUNK))
+        parts = list(ordered_map(fall_chunk, items, jobs=1, client=client, close=own))
+        # (n,) and (3, n) arrays join along the falls, (n, riders) ones along their rows
+        res = {key: np.concatenate([p[key] for p in parts], axis=0 if key in ("clearance", "t_min") else -1)
+               for key in parts[0]}
+        return _outcomes_table(self, res, rider, t, fraction), _summary_table(self, res, rider)
+
+
+#: The most falls one Monte Carlo draws, and how many are evaluated at once.
+MAX_FALLS = 10_000_000
+FALLS_CHUNK = 4096
+
+
+def _number(name: str, value, lo: float, hi: float) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) or not (
+            lo <= value <= hi):
+        raise ParameterError(f"{name} must be a number in [{lo:g}, {hi:g}] (got {value!r})", name)
+    return float(value)
+
+
+def _fall_base(res: dict, i: int, name: str, t: float, fraction: float) -> dict:
+    """The columns of a fall before the victim's, for fall i of ``res``."""
+    from deathsphere.show.falls import outcome_names
+
+    return {"rider": name, "t_fail_s": t, "speed_fraction": fraction,
+            "outcome": str(outcome_names(res["outcome"][i:i + 1])[0]),
+            **{col: float(res[key][i]) for col, key in (
+                ("t_contact_lost_s", "t_lost"), ("theta_lost_deg", "theta_lost"), ("phi_lost_deg", "phi_lost"),
+                ("t_land_s", "t_land"), ("theta_land_deg", "theta_land"), ("phi_land_deg", "phi_land"),
+                ("fall_time_s", "fall_time"), ("impact_speed_m_s", "impact_speed"),
+                ("swing_height_m", "swing_height"))}}
+
+
+def _crosses(victim: Lane, swing_height: float) -> bool:
+    """Whether a swing up to ``swing_height`` [m] (NaN: no swing) meets the
+    victim's lane: the arc through the floor reaches every height up to it on
+    both sides of the loop, where every horizontal lane no higher and every
+    loop (through the floor) pass."""
+    if not math.isfinite(swing_height):
+        return False
+    if victim.kind == "vertical":
+        return True
+    return victim.r * (1.0 + math.cos(victim.theta)) <= swing_height
+
+
+_TEXT = {"name", "lane", "status", "reason", "machine", "rider_a", "rider_b", "verdict", "basis", "rider", "outcome",
+         "victim"}
+
+
+def _rows_table(rows: list[dict], columns) -> Table:
+    def kind(c):
+        return object if c in _TEXT else bool if c in ("hit", "crosses_lane") else float
+    return Table({c: np.array([r[c] for r in rows], dtype=kind(c)) for c in columns})
+
+
+def _outcomes_table(result: ShowResult, res: dict, rider, t, fraction) -> Table:
+    """One row per fall of the Monte Carlo, its victim the closest rider."""
+    from deathsphere.show.falls import outcome_names
+
+    names = np.array([lane.name for lane in result.lanes], dtype=object)
+    clear = res["clearance"]
+    flying = np.isfinite(clear).any(axis=1)
+    closest = np.argmin(np.where(np.isfinite(clear), clear, np.inf), axis=1)
+    rows = np.arange(rider.size)
+    least = np.where(flying, clear[rows, closest], np.nan)
+    cols = {"rider": names[rider], "t_fail_s": t, "speed_fraction": fraction, "outcome": outcome_names(res["outcome"]),
+            "t_contact_lost_s": res["t_lost"], "theta_lost_deg": res["theta_lost"], "phi_lost_deg": res["phi_lost"],
+            "t_land_s": res["t_land"], "theta_land_deg": res["theta_land"], "phi_land_deg": res["phi_land"],
+            "fall_time_s": res["fall_time"], "impact_speed_m_s": res["impact_speed"],
+            "victim": np.where(flying, names[closest], ""), "min_clearance_m": least,
+            "t_min_s": np.where(flying, res["t_min"][rows, closest], np.nan), "hit": flying & (least < 0),
+            "swing_height_m": res["swing_height"],
+            "crosses_lane": _crosses_any(result.lanes, rider, res["swing_height"])}
+    return Table({c: np.asarray(cols[c], dtype=object if c in _TEXT else None) for c in FALL_COLUMNS})
+
+
+def _crosses_any(lanes, rider, swing_height) -> np.ndarray:
+    """Per fall of the Monte Carlo: his swing meets another rider's lane (:func:`_crosses`)."""
+    swings = np.isfinite(swing_height)
+    reach = np.where(swings, swing_height, -np.inf)
+    out = np.zeros(rider.size, dtype=bool)
+    for k, lane in enumerate(lanes):
+        low = -np.inf if lane.kind == "vertical" else lane.r * (1.0 + math.cos(lane.theta))
+        out |= swings & (rider != k) & (low <= reach)
+    return out
+
+
+def _summary_table(result: ShowResult, res: dict, rider) -> Table:
+    """Per falling rider and victim: falls, hits, their fraction, the worst
+    landing speed (the falls of that rider that fly)."""
+    names = [lane.name for lane in result.lanes]
+    hits = np.where(np.isfinite(res["clearance"]), res["clearance"], np.inf) < 0      # (n, riders)
+    speed = res["impact_speed"]
+    rows = []
+
+    def add(who, victim, sel, hit):
+        count, n_hit = int(sel.sum()), int((hit & sel).sum())
+        worst = speed[sel & np.isfinite(speed)]
+        rows.append({"rider": who, "victim": victim, "falls": count, "hits": n_hit,
+                     "hit_fraction": n_hit / count if count else math.nan,
+                     "impact_speed_max_m_s": float(worst.max()) if worst.size else math.nan})
+
+    anyone = hits.any(axis=1)
+    for k, name in enumerate(names):
+        mine = rider == k
+        add(name, "", mine, anyone)
+        for j, victim in enumerate(names):
+            if j != k:
+                add(name, victim, mine, hits[:, j])
+    everyone = np.ones(rider.size, dtype=bool)
+    for j, victim in enumerate(names):
+        add("", victim, everyone, hits[:, j])
+    add("", "", everyone, anyone)
+    return Table({c: np.array([r[c] for r in rows], dtype=object if c in ("rider", "victim") else
+                              np.int64 if c in ("falls", "hits") else float) for c in FALLS_SUMMARY_COLUMNS})
+
+
+def _rider_row(lane: Lane, rider, band) -> dict:
+    """The riders table's row of one lane (ride's row, the speed band)."""
+    from deathsphere.show.pairs import contact_angles
+
+    row, nan = lane.row, math.nan
+    theta0, phi0 = contact_angles(lane, 0.0)
+    out = {"name": lane.name, "lane": lane.kind, "theta_deg": theta0, "phi0_deg": phi0, "machine": lane.machine.name,
+           "width_m": lane.width_m, "status": row["status"], "reason": row["reason"],
+           "mu_required": row["mu_required"], "head_clearance_m": row["head_clearance_m"], "period_s": lane.period_s}
+    if lane.kind == "horizontal":
+        planned = rider.speed
+        out.update(alpha_deg=row["alpha_deg"], lean_deg=row["lean_deg"], v_cm_m_s=row["v_cm_m_s"],
+                   v_contact_m_s=row["v_contact_m_s"], load_g=row["load_g"], v_top_m_s=nan, v_top_min_m_s=nan,
+                   v_bottom_m_s=nan, load_bottom_g=nan)
+    else:
+        planned = rider.v_top
+        r_g = row["com_loop_radius_m"]
+        out.update(alpha_deg=nan, lean_deg=0.0, v_cm_m_s=planned, v_contact_m_s=planned * lane.r / r_g,
+                   load_g=row["load_bottom_g"], v_top_m_s=planned, v_top_min_m_s=row["v_top_min_m_s"],
+                   v_bottom_m_s=row["v_bottom_m_s"], load_bottom_g=row["load_bottom_g"])
+    out["v_cm_km_h"] = round(out["v_cm_m_s"] * 3.6, 9)
+    low, high = band
+    out.update(speed_low_m_s=low, speed_high_m_s=high, margin_low_pct=100.0 * (planned - low) / planned,
+               margin_high_pct=100.0 * (high - planned) / planned)
+    return out
+
+
+def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
+    """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per rider in the plan's order."""
+    from deathsphere.show.margins import speed_bands
+
+    planned = [r.speed if r.lane == "horizontal" else r.v_top for r in plan.riders]
+    bands = speed_bands(lanes, plan.globe, planned)
+    rows = [_rider_row(lane, rider, band) for lane, rider, band in zip(lanes, plan.riders, bands)]
+    return _rows_table(rows, RIDER_COLUMNS)
+
+
+def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift: bool = True) -> Table:
+    """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
+    b in the plan), its least clearance over the act, when and where, the
+    verdict and the drift time (NaN: never)."""
+    from deathsphere.show.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict
+    from deathsphere.show.timing import drift_time
+
+    over_time = act_pairs(lanes)
+    found = dict(zip(over_time, ((c, t, "act") for c, t in least_clearances(lanes, over_time, duration))))
+    rows = []
+    for i, a in enumerate(lanes):
+        for j in range(i + 1, len(lanes)):
+            b = lanes[j]
+            c, t, basis = found[(i, j)] if (i, j) in found else least_clearance(a, b, duration)
+            (ta, pa), (tb, pb) = contact_angles(a, t), contact_angles(b, t)
+            v = verdict(c, min_clearance)
+            dt = drift_time(a, b, min_clearance) if drift and v == "clear" else math.nan
+            rows.append({"rider_a": a.name, "rider_b": b.name, "min_clearance_m": c, "t_s": t, "theta_a_deg": ta,
+                         "phi_a_deg": pa, "theta_b_deg": tb, "phi_b_deg": pb, "verdict": v,
+                         "drift_time_s": dt if math.isfinite(dt) else math.nan, "basis": basis})
+    return _rows_table(rows, PAIR_COLUMNS)
+
+
+def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
+    """Plan an act (docs/show.md): ``plan`` a path to a TOML file or a dict
+    ({"globe": {...}, "rider": [...]}); ``duration`` [s] the act's length
+    when the riders' periods are not commensurate (over the plan's
+    ``duration``; the common period is used whenever they are); ``phase``
+    'plan' (the plan's phases) or 'auto' (each vertical rider's phase, in
+    plan order, maximising his least clearance; ``phase_windows`` then holds
+    the safe phases).  A bad plan raises ParameterError, one line naming the
+    rider and the key, before any work.
+
+    >>> import deathsphere
+    >>> act = deathsphere.show({"globe": {"diameter": "16ft", "mu": 0.9}, "rider": [
+    ...     {"name": "Ana", "lane": "horizontal", "height": "2m", "speed": "32km/h"}]})
+    >>> str(act.riders["status"][0]), act.pairs.columns["rider_a"].size
+    ('ok', 0)
+    """
+    from deathsphere.show.pairs import act_duration
+    from deathsphere.show.timing import auto_phases
+
+    if phase not in PHASES:
+        raise ParameterError(f"phase must be plan or auto (got {phase!r})", "phase")
+    plan = read_plan(plan)
+    if duration is not None:
+        if isinstance(duration, bool) or not isinstance(duration, (int, float)) or not 0 < duration < math.inf:
+            raise ParameterError(f"duration must be a number of seconds > 0 (got {duration!r})", "duration")
+    lanes = build_lanes(plan)
+    try:
+        span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
+    except ValueError as exc:
+        raise ParameterError(str(exc), "duration") from None
+    if duration is not None:
+        span = float(duration)
+    windows = {}
+    if phase == "auto":
+        phases, windows = auto_phases(lanes, span, plan.globe.min_clearance)
+        plan = plan.with_phases(phases)
+        lanes = build_lanes(plan)
+    riders = riders_table(plan, lanes)
+    pairs = pairs_table(lanes, span, plan.globe.min_clearance)
+    return ShowResult(plan=plan, lanes=lanes, riders=riders, pairs=pairs, duration_s=span,
+                      commensurate=commensurate, phase_windows=windows)

@@ -1,0 +1,206 @@
+"""The least clearance of every pair of riders over the act (beyond the
+paper; docs/show.md, "Clearance").
+
+No minimum is missed between samples: a clearance c(t) changes no faster
+than L, the greatest relative speed of the two envelopes (each point of a
+rider's segment moves at most at his lane's rate times its distance from
+the rotation axis: :meth:`Lane.speed_bound`), so between samples c_i and
+c_j a step dt apart c >= (c_i + c_j)/2 - L dt/2.  Every interval whose bound
+is below the least sample so far (less :data:`TOLERANCE_M`) is split and
+sampled again, until none is left: the least sample is then within 1 mm of
+the true least clearance (branch and bound on a Lipschitz bound).
+
+Two horizontal lanes of one rate turn as one rigid body: their clearance is
+constant, taken at t = 0.  Two horizontal lanes of different rates sweep every relative azimuth
+(their angle apart grows linearly in time), so their least clearance is the
+geometric one over the relative azimuth (found the same way, with the
+distance from the axis bounding the rate), whatever the phases: ``basis``
+'geometric'; it happens first at the time the lanes reach that angle apart.
+Every other pair is searched over the act's times: ``basis`` 'act'."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from deathsphere.show.envelope import clearance, segment_distance
+
+#: Every least clearance is found to this [m].
+TOLERANCE_M = 1e-3
+#: Clearances closer than this [m] are equal (the earliest is reported).
+TIE_M = 1e-9
+#: The first samples are this far apart in clearance (L dt) [m].
+FIRST_STEP_M = 0.05
+#: Each interval kept is split into this many.
+SPLIT = 8
+#: Periods are commensurate when n_i T_i agree to this relative tolerance
+#: for whole numbers of laps n_i of at most :data:`MAX_LAPS`.
+COMMENSURATE_RTOL = 1e-3
+MAX_LAPS = 24
+#: Pair-samples evaluated at once by :func:`least_clearances`.
+BATCH_SAMPLES = 1 << 20
+#: Two rates [rad/s] closer than this (relative) are the same.
+SAME_RATE_RTOL = COMMENSURATE_RTOL
+
+
+def minimise(f, lo: float, hi: float, lipschitz: float, tol: float = TOLERANCE_M):
+    """(c, x): the least value of f over [lo, hi] to ``tol`` and where, for a
+    vectorised f whose rate of change is at most ``lipschitz`` (module
+    docstring).  Samples f at about (hi - lo) L / FIRST_STEP_M points first."""
+    x = np.linspace(lo, hi, _samples(hi - lo, lipschitz) + 1)
+    return refine(f, x, f(x), lipschitz, tol)
+
+
+def _samples(span: float, lipschitz: float) -> int:
+    return max(2, int(math.ceil(span * lipschitz / FIRST_STEP_M)))
+
+
+def refine(f, x, c, lipschitz: float, tol: float = TOLERANCE_M):
+    """(c, x): the least value of f to ``tol`` and where, given its samples c
+    at the evenly spaced x (branch and bound: module docstring)."""
+    k = int(np.argmax(c <= c.min() + TIE_M))               # the first of equal least samples
+    best, where = float(c[k]), float(x[k])
+    left, width, cl, cr = x[:-1], float(x[1] - x[0]), c[:-1], c[1:]
+    while left.size:
+        keep = 0.5 * (cl + cr) - 0.5 * lipschitz * width < best - tol
+        if not keep.any():
+            break
+        left, cl, cr = left[keep], cl[keep], cr[keep]
+        width /= SPLIT
+        inner = left[:, None] + width * np.arange(1, SPLIT)
+        ci = f(inner.reshape(-1)).reshape(inner.shape)
+        k = np.unravel_index(int(np.argmin(ci)), ci.shape)
+        if ci[k] < best - TIE_M:
+            best, where = float(ci[k]), float(inner[k])
+        values = np.concatenate((cl[:, None], ci, cr[:, None]), axis=1)
+        left = (left[:, None] + width * np.arange(SPLIT)).reshape(-1)
+        cl, cr = values[:, :-1].reshape(-1), values[:, 1:].reshape(-1)
+    return best, where
+
+
+def is_geometric(a, b) -> bool:
+    """Two horizontal lanes of different (signed) rates: every relative azimuth."""
+    return a.kind == b.kind == "horizontal" and abs(a.rate - b.rate) > SAME_RATE_RTOL * max(abs(a.rate), abs(b.rate))
+
+
+def common_period(periods, rtol: float = COMMENSURATE_RTOL, max_laps: int = MAX_LAPS) -> float | None:
+    """The least T = n_1 T_1 that is a whole number (<= max_laps) of every
+    period to ``rtol``, or None (not commensurate)."""
+    periods = [float(p) for p in periods]
+    if not periods:
+        return None
+    for n1 in range(1, max_laps + 1):
+        span = n1 * periods[0]
+        laps = [span / p for p in periods]
+        if all(round(q) >= 1 and round(q) <= max_laps and abs(q - round(q)) <= rtol * q for q in laps):
+            return span
+    return None
+
+
+def is_rigid(a, b) -> bool:
+    """Two horizontal lanes of one rate: the pair turns as one rigid body
+    about the vertical, its clearance constant in time."""
+    return a.kind == b.kind == "horizontal" and not is_geometric(a, b)
+
+
+def act_pairs(lanes) -> list[tuple[int, int]]:
+    """The pairs (i < j) searched over the act's times (not geometric)."""
+    n = len(lanes)
+    return [(i, j) for i in range(n) for j in range(i + 1, n) if not is_geometric(lanes[i], lanes[j])]
+
+
+def _clearance_at(a, b, clock_a=1.0):
+    radii = 0.5 * (a.width_m + b.width_m)
+
+    def f(t):
+        return segment_distance(*a.ends(t, clock_a), *b.ends(t))[0] - radii
+    return f
+
+
+def least_clearances(lanes, pairs, duration: float) -> list[tuple[float, float]]:
+    """[(least clearance [m], when [s])] of the pairs (i, j) of ``lanes``
+    searched over the act's times [0, duration]: every lane sampled once on
+    one grid fine enough for the fastest pair, all pairs' distances at once,
+    then each pair refined (:func:`refine`)."""
+    rigid = [p for p in pairs if is_rigid(lanes[p[0]], lanes[p[1]])]
+    if rigid:
+        moving = [p for p in pairs if p not in rigid]
+        found = dict(zip(moving, least_clearances(lanes, moving, duration)))
+        return [found[p] if p in found else least_clearance(lanes[p[0]], lanes[p[1]], duration)[:2] for p in pairs]
+    if not pairs:
+        return []
+    bound = [lane.speed_bound() for lane in lanes]
+    fastest = max(bound[i] + bound[j] for i, j in pairs)
+    x = np.linspace(0.0, float(duration), _samples(float(duration), fastest) + 1)
+    ends = [lane.ends(x) for lane in lanes]
+    out = []
+    per_batch = max(1, BATCH_SAMPLES // x.size)       # memory stays bounded however long the act
+    for start in range(0, len(pairs), per_batch):
+        batch = pairs[start:start + per_batch]
+        first, second = np.array([i for i, _ in batch]), np.array([j for _, j in batch])
+        stack = [np.stack([ends[k][e] for k in idx], axis=1) for idx in (first, second) for e in (0, 1)]
+        radii = np.array([0.5 * (lanes[i].width_m + lanes[j].width_m) for i, j in batch])
+        c = segment_distance(*stack)[0] - radii[:, None]
+        out += [refine(_clearance_at(lanes[i], lanes[j]), x, c[p], bound[i] + bound[j])
+                for p, (i, j) in enumerate(batch)]
+    return out
+
+
+def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[float, float, str]:
+    """(least clearance [m], when [s], basis) of the lanes a and b over the
+    act [0, duration] (``clock_a`` scales a's time); the geometric least
+    clearance for two horizontal lanes of different rates (module docstring)."""
+    if is_rigid(a, b) and clock_a == 1.0:
+        return float(_clearance_at(a, b)(np.zeros(1))[0]), 0.0, "act"
+    if is_geometric(a, b) and clock_a == 1.0:
+        meridian_b = b.at_angle(np.zeros(1))
+
+        def apart(delta):
+            return clearance(a.at_angle(delta), meridian_b, a.width_m, b.width_m)
+
+        # phi_a - phi_b = delta0 + (Omega_a - Omega_b) t; a point moves r per radian at most
+        c, delta = minimise(apart, 0.0, 2 * math.pi, a.r)
+        rel = a.rate - b.rate
+        t = ((delta - (a.phase - b.phase)) / rel) % (2 * math.pi / abs(rel))
+        return c, t, "geometric"
+    lipschitz = clock_a * a.speed_bound() + b.speed_bound()
+    c, t = minimise(_clearance_at(a, b, clock_a), 0.0, float(duration), lipschitz)
+    return c, t, "act"
+
+
+def contact_angles(lane, t: float) -> tuple[float, float]:
+    """theta and phi [deg] of the lane's contact at time t (phi 0..360)."""
+    p = lane.kinematics(np.array([t]))["contact"][:, 0]
+    theta = math.degrees(math.acos(max(-1.0, min(1.0, p[2] / lane.r))))
+    return theta, math.degrees(math.atan2(p[1], p[0])) % 360.0
+
+
+def verdict(c: float, min_clearance: float) -> str:
+    """'collision' below zero, 'conflict' below the crew's least clearance, else 'clear'."""
+    return "collision" if c < 0 else "conflict" if c < min_clearance else "clear"
+
+
+def act_duration(lanes, duration: float | None) -> tuple[float, bool]:
+    """(the act's duration [s], commensurate): the common period of the
+    lanes in a pair searched over time, when commensurate; else
+    ``duration`` (None: ValueError).  With no such pair (every pair rigid or
+    geometric) the common period of all lanes, else ``duration``, else the
+    longest lap (the falls' times are drawn over it)."""
+    involved = sorted({k for pair in act_pairs(lanes) for k in pair})
+    if not involved:
+        # nothing depends on the clock: the common period of all, else the plan's duration, else the longest lap
+        common = common_period([lane.period_s for lane in lanes])
+        if common is not None:
+            return common, True
+        return (float(duration) if duration is not None else max(lane.period_s for lane in lanes)), False
+    common = common_period([lanes[k].period_s for k in involved])
+    if common is not None:
+        return common, True
+    if duration is None:
+        shown = ", ".join(f"{lanes[k].name} {Fraction(lanes[k].period_s).limit_denominator(1000)!s:.8}"
+                          for k in involved[:4])
+        raise ValueError(f"the riders' periods are not commensurate to {COMMENSURATE_RTOL:g} within {MAX_LAPS} "
+                         f"laps ({shown} s ...): give the act's duration")
+    return float(duration), False

@@ -1,0 +1,319 @@
+"""The plan of a show (docs/show.md): a globe and its riders, read from a
+TOML file or a dict and checked once, before any work.  Every fault is one
+line naming the rider (or the globe) and the key; every dimensional value
+takes the command line's unit suffixes ("16ft", "32km/h")."""
+
+from __future__ import annotations
+
+import math
+import pathlib
+from dataclasses import dataclass, replace
+
+from deathsphere import params, units
+from deathsphere.api.arguments import G
+from deathsphere.api.machines import FILE_KEYS, PRESETS, Machine, as_machine, machine_file
+from deathsphere.errors import ParameterError
+
+#: The keys of the ``[globe]`` table.
+GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "duration")
+#: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
+RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "direction", "phase", "azimuth", "v_top",
+              "width")
+#: Keys that belong to one lane only.
+HORIZONTAL_ONLY = ("height", "theta", "speed", "direction")
+VERTICAL_ONLY = ("azimuth", "v_top")
+#: The crew's rule when the plan gives none [m] (the spacing quoted for an
+#: eight-rider act is 10-15 cm).
+DEFAULT_MIN_CLEARANCE = 0.15
+LANES = ("horizontal", "vertical")
+DIRECTIONS = {"ccw": 1, "cw": -1}
+
+
+@dataclass(frozen=True)
+class Globe:
+    """The globe: radius r [m], gravity g [m/s^2], the friction available
+    mu, the largest load max_g [g], the crew's least clearance [m] and the
+    act's duration [s] when the plan gives one (None: not given)."""
+
+    r: float
+    g: float = G
+    mu: float = math.inf
+    max_g: float = math.inf
+    min_clearance: float = DEFAULT_MIN_CLEARANCE
+    duration: float | None = None
+
+
+@dataclass(frozen=True)
+class Rider:
+    """One rider of the plan, checked: lane 'horizontal' (theta_deg of the
+    contact, speed of the centre of mass [m/s], direction +1 ccw / -1 cw
+    seen from above, phase_deg the contact's azimuth at t = 0) or
+    'vertical' (azimuth_deg of the loop's plane, v_top [m/s] the centre of
+    mass's speed at the top, phase_deg the angle psi from the top at t = 0)."""
+
+    name: str
+    machine: Machine
+    lane: str
+    phase_deg: float = 0.0
+    theta_deg: float = math.nan
+    speed: float = math.nan
+    direction: int = 1
+    azimuth_deg: float = math.nan
+    v_top: float = math.nan
+
+    @property
+    def width(self) -> float:
+        return self.machine.width
+
+
+@dataclass(frozen=True)
+class Plan:
+    """A checked plan: the globe and its riders, in the plan's order."""
+
+    globe: Globe
+    riders: tuple[Rider, ...]
+
+    def names(self) -> list[str]:
+        return [r.name for r in self.riders]
+
+    def with_phases(self, phases: dict) -> Plan:
+        """The plan with some riders' phases [deg] replaced, by name."""
+        return replace(self, riders=tuple(replace(r, phase_deg=float(phases.get(r.name, r.phase_deg)))
+                                          for r in self.riders))
+
+
+def _fail(where: str, key: str | None, what: str):
+    raise ParameterError(f"{where}: {key}: {what}" if key else f"{where}: {what}", key)
+
+
+def _value(where: str, key: str, raw, kind: str, param: str | None = None, lo=None, hi=None,
+           lo_open=False) -> float:
+    """One number of the plan: a number, or text with a unit of ``kind``;
+    within the registry's bounds of ``param`` or [lo, hi]."""
+    if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+        _fail(where, key, f"must be a number or text with a unit (got {raw!r})")
+    try:
+        value = units.parse_value(raw, kind, key) if isinstance(raw, str) else float(raw)
+    except ParameterError as exc:
+        _fail(where, key, str(exc))
+    if param is not None:
+        reason = params.problems(param, [value])[0]
+        if reason:
+            _fail(where, key, reason)
+    if not math.isfinite(value) and not (param in ("mu", "max_g") and value == math.inf):
+        _fail(where, key, f"must be a finite number (got {raw!r})")
+    if lo is not None and (value < lo or (lo_open and value == lo)):
+        _fail(where, key, f"must be {'above' if lo_open else 'at least'} {lo:g} (got {raw!r})")
+    if hi is not None and value > hi:
+        _fail(where, key, f"must be at most {hi:g} (got {raw!r})")
+    return value
+
+
+def _unknown(where: str, table: dict, known) -> None:
+    extra = [k for k in table if k not in known]
+    if extra:
+        _fail(where, extra[0], f"unknown key (known: {', '.join(known)})")
+
+
+def _globe(raw) -> Globe:
+    where = "globe"
+    if not isinstance(raw, dict):
+        _fail(where, None, "the plan needs a [globe] table (diameter or radius, mu, max_g, min_clearance)")
+    _unknown(where, raw, GLOBE_KEYS)
+    if ("diameter" in raw) == ("radius" in raw):
+        _fail(where, "diameter", "give exactly one of diameter and radius")
+    if "diameter" in raw:
+        r = _value(where, "diameter", raw["diameter"], "length", "diameter") / 2
+    else:
+        r = _value(where, "radius", raw["radius"], "length", "r")
+    g = _value(where, "g", raw.get("g", G), "acceleration", "g")
+    mu = _value(where, "mu", raw.get("mu", math.inf), "none", "mu")
+    max_g = _value(where, "max_g", raw.get("max_g", math.inf), "load", "max_g")
+    clear = _value(where, "min_clearance", raw.get("min_clearance", DEFAULT_MIN_CLEARANCE), "length", lo=0.0)
+    duration = None
+    if "duration" in raw:
+        duration = _value(where, "duration", raw["duration"], "none", lo=0.0, lo_open=True)
+    return Globe(r=r, g=g, mu=mu, max_g=max_g, min_clearance=clear, duration=duration)
+
+
+def _machine(where: str, raw, base_dir: pathlib.Path | None) -> Machine:
+    """A preset's name, a machine file (TOML or CSV, relative to the plan)
+    or the machine's parameters inline (the keys of a machine file)."""
+    if isinstance(raw, dict):
+        known = ("name", "source", "base", *FILE_KEYS)
+        _unknown(where, raw, known)
+        try:
+            start = as_machine(str(raw.get("base", "stunt125")))
+            m = start.with_overrides(**{FILE_KEYS[k]: v for k, v in raw.items() if k in FILE_KEYS})
+            return replace(m, name=str(raw.get("name", m.name)), source=str(raw.get("source", "the plan")))
+        except ParameterError as exc:
+            _fail(where, f"machine.{exc.param or 'base'}", str(exc))
+    if not isinstance(raw, str):
+        _fail(where, "machine", f"must be a preset's name, a machine file or a table of parameters (got {raw!r})")
+    if raw.strip().lower() in PRESETS:
+        return PRESETS[raw.strip().lower()]
+    path = pathlib.Path(raw)
+    if base_dir is not None and not path.is_absolute():
+        path = base_dir / path
+    if path.suffix.lower() in (".toml", ".csv") and path.is_file():
+        try:
+            return machine_file(path)
+        except ParameterError as exc:
+            _fail(where, "machine", str(exc))
+    _fail(where, "machine", f"unknown machine {raw!r} (a preset: {' | '.join(PRESETS)}; or a .toml/.csv machine "
+                            "file; or an inline table)")
+
+
+def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
+    if not isinstance(raw, dict):
+        _fail(f"rider {i + 1}", None, f"must be a table (got {raw!r})")
+    name = raw.get("name")
+    if not isinstance(name, str) or not name.strip() or any(c in name for c in ",\n\r"):
+        _fail(f"rider {i + 1}", "name", f"must be a non-empty text without a comma or line break (got {name!r})")
+    where = f"rider {name!r}"
+    _unknown(where, raw, RIDER_KEYS)
+    lane = raw.get("lane")
+    if lane not in LANES:
+        _fail(where, "lane", f"must be horizontal or vertical (got {lane!r})")
+    machine = _machine(where, raw.get("machine", "stunt125"), base_dir)
+    if "width" in raw:
+        machine = replace(machine, width=_value(where, "width", raw["width"], "length", "width"))
+    if machine.width is None:
+        _fail(where, "width", f"machine {machine.name!r} has no width: give width (handlebar or shoulders)")
+    phase = _value(where, "phase", raw.get("phase", 0.0), "angle")
+    wrong = [k for k in (VERTICAL_ONLY if lane == "horizontal" else HORIZONTAL_ONLY) if k in raw]
+    if wrong:
+        _fail(where, wrong[0], f"is not a key of a {lane} lane")
+    r = globe.r
+    if lane == "vertical":
+        if "v_top" not in raw:
+            _fail(where, "v_top", "a vertical lane needs v_top (the centre of mass's speed at the top)")
+        return Rider(name=name, machine=machine, lane=lane, phase_deg=phase,
+                     azimuth_deg=_value(where, "azimuth", raw.get("azimuth", 0.0), "angle"),
+                     v_top=_value(where, "v_top", raw["v_top"], "speed", "v_top"))
+    if ("height" in raw) == ("theta" in raw):
+        _fail(where, "height", "give exactly one of height (of the contact above the floor) and theta")
+    if "height" in raw:
+        h = _value(where, "height", raw["height"], "length", "height")
+        if h > 2 * r:
+            _fail(where, "height", f"is outside the globe: at most its diameter {2 * r:g} m (got {h:g} m)")
+        theta = math.degrees(math.acos(min(max(h / r - 1.0, -1.0), 1.0)))
+    else:
+        theta = _value(where, "theta", raw["theta"], "angle", "theta")
+    if "speed" not in raw:
+        _fail(where, "speed", "a horizontal lane needs speed (of the centre of mass)")
+    direction = raw.get("direction", "ccw")
+    if direction not in DIRECTIONS:
+        _fail(where, "direction", f"must be ccw or cw, seen from above (got {direction!r})")
+    return Rider(name=name, machine=machine, lane=lane, phase_deg=phase, theta_deg=theta,
+                 speed=_value(where, "speed", raw["speed"], "speed", "speed"), direction=DIRECTIONS[direction])
+
+
+def read_plan(plan) -> Plan:
+    """A checked :class:`Plan` from a path to a TOML file (str or
+    pathlib.Path) or a dict of the same tables ({"globe": {...}, "rider":
+    [{...}, ...]}).  Raises ParameterError, one line naming the rider (or
+    the globe) and the key: an unknown key, an unknown machine, a rider
+    outside the globe, duplicate names, no riders, a value outside its
+    range or of the wrong unit.  (A vertical lane that is not feasible at
+    all is refused when the lanes are built: :func:`deathsphere.show.lanes.build_lanes`.)"""
+    import tomllib
+
+    base_dir = None
+    if isinstance(plan, (str, pathlib.Path)):
+        path = pathlib.Path(plan)
+        try:
+            text = path.read_text(encoding="utf-8-sig")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise ParameterError(f"plan: cannot read {str(plan)!r}: {getattr(exc, 'strerror', None) or exc}",
+                                 "plan") from None
+        try:
+            plan = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise ParameterError(f"plan: {path.name} is not TOML ({exc})", "plan") from None
+        base_dir = path.parent
+    if not isinstance(plan, dict):
+        raise ParameterError(f"plan must be a path to a TOML file or a dict (got {type(plan).__name__})", "plan")
+    _unknown("plan", plan, ("globe", "rider"))
+    globe = _globe(plan.get("globe"))
+    raw = plan.get("rider", [])
+    if isinstance(raw, dict):
+        raw = [raw]
+    if not isinstance(raw, list) or not raw:
+        _fail("plan", "rider", "no riders: give at least one [[rider]] table")
+    riders = tuple(_rider(i, r, globe, base_dir) for i, r in enumerate(raw))
+    seen = set()
+    for rider in riders:
+        if rider.name in seen:
+            _fail(f"rider {rider.name!r}", "name", "is given twice (names must differ)")
+        seen.add(rider.name)
+    return Plan(globe=globe, riders=riders)
+
+
+#: A commented plan to start from (``deathsphere show --example``): a
+#: 16-foot globe, three horizontal lanes and two loopers timed through them.
+EXAMPLE_PLAN = '''\
+# A show's plan for `deathsphere show PLAN.toml` (docs/show.md).
+# Every dimensional value takes a unit: "16ft", "2.0m", "32km/h".
+# The globe is centred at the origin, z up; angles in degrees.
+
+[globe]
+diameter = "16ft"          # or radius
+mu = 0.9                   # tyre on steel mesh
+max_g = 8                  # a loop's bottom is at least 6 g even for a point mass
+min_clearance = "0.15m"    # the crew's rule: closer than this is a conflict
+# duration = 60            # seconds; the act's length when the riders' periods are not commensurate
+                           # (here every lap takes 1.274 s: the act is one lap)
+
+# A horizontal lane: the contact at height above the floor (or theta from the
+# top), phi = phase + Omega t (ccw) or phase - Omega t (cw), ride's steady orbit.
+[[rider]]
+name = "Ana"
+machine = "stunt125"       # a preset, a machine file, or an inline table of its parameters
+width = "0.6m"             # handlebar or shoulders, the wider (here narrowed bars; else the machine's)
+lane = "horizontal"
+height = "1.4m"            # of the contact above the globe's floor (or theta)
+speed = "25.58km/h"        # of the centre of mass, as for ride: a lap in the loopers' 1.274 s
+direction = "ccw"          # seen from above
+phase = 0                  # deg: azimuth of the contact at t = 0
+
+[[rider]]
+name = "Cal"
+machine = "stunt125"
+width = "0.6m"
+lane = "horizontal"
+height = "2.0m"
+speed = "28.86km/h"
+direction = "ccw"
+phase = 40
+
+[[rider]]
+name = "Dee"
+machine = "stunt125"
+width = "0.6m"
+lane = "horizontal"
+height = "2.7m"
+speed = "29.35km/h"
+direction = "ccw"
+phase = 0
+
+# A vertical lane: a great circle in the plane of the vertical and the
+# direction azimuth; psi from the top, psi(0) = phase; ride --vertical's loop.
+[[rider]]
+name = "Ben"
+machine = "stunt125"
+width = "0.6m"
+lane = "vertical"
+azimuth = 90               # deg: the loop's plane holds the vertical and this direction
+v_top = "6.5m/s"           # the centre of mass's speed at the top
+phase = 178                # deg along the loop, from the top, at t = 0 (--phase auto's choice)
+
+[[rider]]
+name = "Eve"
+machine = "stunt125"
+width = "0.6m"
+lane = "vertical"
+azimuth = 0
+v_top = "6.5m/s"
+phase = 282
+'''

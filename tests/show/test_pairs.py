@@ -1,0 +1,103 @@
+"""The pairs' least clearance against independent derivations."""
+
+import math
+
+import numpy as np
+import pytest
+
+import deathsphere
+from deathsphere.show.lanes import build_lanes
+from deathsphere.show.pairs import FIRST_STEP_M, common_period, least_clearance
+from deathsphere.show.plan import read_plan
+
+R = 16 * 0.3048 / 2
+
+
+def _plan(*riders, **globe):
+    return {"globe": {"radius": R, "mu": 0.9, "max_g": 8, **globe}, "rider": list(riders)}
+
+
+def _horizontal(name, phase, height="2m", speed="30km/h", direction="ccw"):
+    return {"name": name, "lane": "horizontal", "height": height, "speed": speed, "phase": phase,
+            "direction": direction}
+
+
+@pytest.mark.parametrize("delta", [25.0, 60.0, 180.0])
+def test_two_riders_one_lane_phases_apart_closed_form(delta):
+    act = deathsphere.show(_plan(_horizontal("A", 10.0), _horizontal("B", 10.0 + delta)))
+    row = deathsphere.ride(height=2.0, speed=30 / 3.6, machine="stunt125", r=R, mu=0.9, max_g=8,
+                           stability=False)
+    lane = act.lanes[0]
+    alpha = lane.alpha
+    m = lane.machine
+    # both segments in meridian planes delta apart, congruent: with rho1, rho2 >= rho_min, the distance^2
+    # (rho1 - rho2)^2 + (z1 - z2)^2 + 4 rho1 rho2 sin^2(delta/2) is least at the point nearest the axis on both
+    rho_contact = R * math.sin(lane.theta)
+    rho_head = (R - m.t) * math.sin(lane.theta) - (m.head - m.t) * math.cos(alpha)
+    assert any(r["alpha_deg"] == pytest.approx(math.degrees(alpha)) for r in row)
+    expect = 2 * min(rho_contact, rho_head) * math.sin(math.radians(delta) / 2) - m.width
+    got = act.pairs[0]
+    assert got["min_clearance_m"] == pytest.approx(expect, abs=1e-9)
+    assert got["basis"] == "act"
+    assert got["verdict"] == ("clear" if expect >= 0.15 else "conflict" if expect >= 0 else "collision")
+
+
+def _brute_distance(p0, p1, q0, q1):
+    """Segment distance the long way: the four endpoint-to-segment distances
+    and, where both feet fall inside, the distance of the two lines."""
+    def point_seg(x, a, b):
+        d = b - a
+        s = np.clip(np.sum((x - a) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
+        return np.linalg.norm(x - a - s * d, axis=0)
+
+    best = np.minimum.reduce([point_seg(p0, q0, q1), point_seg(p1, q0, q1), point_seg(q0, p0, p1),
+                              point_seg(q1, p0, p1)])
+    u, v, w = p1 - p0, q1 - q0, p0 - q0
+    a, b, c, d, e = (np.sum(x * y, axis=0) for x, y in ((u, u), (u, v), (v, v), (u, w), (v, w)))
+    den = a * c - b * b
+    s, t = (b * e - c * d) / den, (a * e - b * d) / den
+    inside = (s > 0) & (s < 1) & (t > 0) & (t < 1)
+    line = np.linalg.norm(w + s * u - t * v, axis=0)
+    return np.where(inside, np.minimum(best, line), best)
+
+
+def test_a_looper_and_a_horizontal_rider_against_sampling_ten_times_finer():
+    plan = _plan(_horizontal("H", 40.0, height="2.2m", speed="29km/h"),
+                 {"name": "V", "lane": "vertical", "azimuth": 30, "v_top": "6.5m/s", "phase": 200})
+    h, v = build_lanes(read_plan(plan))
+    span = 3.0
+    c, t, basis = least_clearance(h, v, span)
+    lipschitz = h.speed_bound() + v.speed_bound()
+    times = np.linspace(0, span, int(math.ceil(10 * span * lipschitz / FIRST_STEP_M)) + 1)
+    a, b = h.kinematics(times), v.kinematics(times)
+    brute = _brute_distance(a["contact"], a["head"], b["contact"], b["head"]) - 0.5 * (h.width_m + v.width_m)
+    k = int(np.argmin(brute))
+    assert basis == "act"
+    assert c <= brute[k] + 1e-12                  # never above a sample: no minimum missed
+    assert c >= brute[k] - 1e-3 - 0.5 * lipschitz * (times[1] - times[0])
+    assert abs(t - times[k]) < 0.05 or brute[np.abs(times - t).argmin()] < c + 2e-3
+
+
+def test_horizontal_lanes_of_different_rates_take_the_geometric_least_clearance():
+    act = deathsphere.show(_plan(_horizontal("A", 0.0, height="2m", speed="30km/h"),
+                                 _horizontal("B", 137.0, height="2.6m", speed="30km/h")), duration=5)
+    row = act.pairs[0]
+    assert row["basis"] == "geometric"
+    a, b = act.lanes
+    # every relative azimuth is swept: brute force over it, both meridian planes
+    delta = np.linspace(0, 2 * np.pi, 20001)
+    pa, pb = a.at_angle(delta), b.at_angle(np.zeros_like(delta))
+    brute = _brute_distance(pa["contact"], pa["head"], pb["contact"], pb["head"]) - 0.5 * (a.width_m + b.width_m)
+    assert brute.min() - 1e-3 <= row["min_clearance_m"] <= brute.min() + 1e-12
+    # whatever the phases
+    other = deathsphere.show(_plan(_horizontal("A", 50.0, height="2m", speed="30km/h"),
+                                   _horizontal("B", 0.0, height="2.6m", speed="30km/h")), duration=5)
+    assert other.pairs[0]["min_clearance_m"] == pytest.approx(row["min_clearance_m"], abs=1e-3)
+
+
+def test_the_common_period_and_its_tolerance():
+    assert common_period([1.0, 1.5]) == pytest.approx(3.0)
+    assert common_period([1.0, 1.0005]) == pytest.approx(1.0)       # within 1e-3
+    assert common_period([1.0, math.sqrt(2)]) is None
+    with pytest.raises(deathsphere.ParameterError, match="duration"):
+        deathsphere.show(_plan(_horizontal("A", 0.0), {"name": "V", "lane": "vertical", "v_top": "6.1m/s"}))

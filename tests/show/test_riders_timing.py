@@ -1,0 +1,90 @@
+"""The riders table against ride's own rows, the speed band's edges against
+ride's statuses, the drift against the chord's closed form, and phase auto
+against trying the phases one by one."""
+
+import math
+
+import numpy as np
+import pytest
+
+import deathsphere
+
+R = 16 * 0.3048 / 2
+GLOBE = {"radius": R, "mu": 0.9, "max_g": 8, "min_clearance": "0.15m"}
+
+
+def _act(*riders, **kw):
+    return deathsphere.show({"globe": GLOBE, "rider": list(riders)}, **kw)
+
+
+def _h(name, phase, height="2.2m", speed="29km/h"):
+    return {"name": name, "lane": "horizontal", "height": height, "speed": speed, "phase": phase}
+
+
+def test_the_riders_table_is_rides_rows():
+    act = _act(_h("A", 0), {"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s"}, duration=2)
+    a, v = act.riders[0], act.riders[1]
+    rows = deathsphere.ride(height=2.2, speed=29 / 3.6, machine="stunt125", r=R, mu=0.9, max_g=8, stability=False)
+    (mine,) = [r for r in rows if r["alpha_deg"] == a["alpha_deg"]]
+    for col in ("theta_deg", "lean_deg", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s", "period_s", "load_g",
+                "mu_required", "head_clearance_m", "status"):
+        assert a[col] == mine[col]
+    loop = deathsphere.ride(90, vertical=True, v_top=6.5, machine="stunt125", r=R, mu=0.9, max_g=8)[0]
+    for col, theirs in (("v_top_min_m_s", "v_top_min_m_s"), ("v_bottom_m_s", "v_bottom_m_s"),
+                        ("load_bottom_g", "load_bottom_g"), ("mu_required", "mu_required"), ("status", "status")):
+        assert v[col] == loop[theirs]
+    assert v["lane"] == "vertical" and a["lane"] == "horizontal"
+
+
+@pytest.mark.parametrize("rider", [0, 1])
+def test_the_speed_band_edges_are_where_ride_changes_its_verdict(rider):
+    act = _act(_h("A", 0), {"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s"}, duration=2)
+    row = act.riders[rider]
+    for edge, inside in (("speed_low_m_s", 1.001), ("speed_high_m_s", 0.999)):
+        v = row[edge]
+        if rider == 0:
+            def ok(speed):
+                t = deathsphere.ride(height=2.2, speed=speed, machine="stunt125", r=R, mu=0.9, max_g=8,
+                                     stability=False)
+                return bool(np.any(np.asarray(t["status"]) == "ok"))
+        else:
+            def ok(speed):
+                return deathsphere.ride(90, vertical=True, v_top=speed, machine="stunt125", r=R, mu=0.9,
+                                        max_g=8)[0]["status"] == "ok"
+        assert ok(v * inside) and not ok(v * (2 - inside))
+    planned = 29 / 3.6 if rider == 0 else 6.5
+    assert row["margin_low_pct"] == pytest.approx(100 * (planned - row["speed_low_m_s"]) / planned)
+
+
+def test_drift_of_two_riders_in_one_lane_closed_form():
+    act = _act(_h("A", 0), _h("B", 100))
+    lane = act.lanes[0]
+    m = lane.machine
+    rho = min(R * math.sin(lane.theta), (R - m.t) * math.sin(lane.theta) - (m.head - m.t) * math.cos(lane.alpha))
+    # the chord 2 rho sin(delta/2) - width reaches 0.15 m at delta*; A 1 % off closes the 100 deg gap at 0.01 Omega
+    delta = 2 * math.asin((0.15 + m.width) / (2 * rho))
+    expect = (math.radians(100) - delta) / (0.01 * abs(lane.rate))
+    row = act.pairs[0]
+    assert row["verdict"] == "clear"
+    assert row["drift_time_s"] == pytest.approx(expect, abs=0.05)
+
+
+def test_phase_auto_is_at_least_as_good_as_every_phase_tried():
+    from deathsphere.show.lanes import build_lanes
+    from deathsphere.show.pairs import least_clearance
+    from deathsphere.show.plan import read_plan
+
+    looper = {"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s", "phase": 0}
+    # the horizontal lap equal to the loop's (1.274 s): commensurate, one lap is the act
+    rider = _h("A", 0, height="2.0m", speed="28.86km/h")
+    auto = _act(rider, looper, phase="auto")
+    assert auto.commensurate
+    best = auto.pairs[0]["min_clearance_m"]
+    tried = []
+    for phase in range(0, 360, 30):
+        lanes = build_lanes(read_plan({"globe": GLOBE, "rider": [rider, {**looper, "phase": phase}]}))
+        tried.append(least_clearance(*lanes, auto.duration_s)[0])
+    assert best >= max(tried) - 0.02
+    chosen = auto.plan.riders[1].phase_deg
+    assert any(a <= chosen <= b if a <= b else (chosen >= a or chosen <= b) for a, b in auto.phase_windows["V"])
+    assert best >= 0.15
