@@ -18,7 +18,13 @@ from deathsphere.table import Table
 __all__ = ["show", "ShowResult", "EXAMPLE_PLAN", "RIDER_COLUMNS", "PAIR_COLUMNS", "FALL_COLUMNS",
            "FALLS_SUMMARY_COLUMNS"]
 
-#: The columns of ``riders``, in order (vertical lanes fill the last four).
+#: The columns of ``riders``, in order.  ``theta_deg`` and ``phi0_deg``
+#: are the contact's at t = 0 (a horizontal lane's theta throughout); a
+#: vertical lane has no alpha, leans 0 (upright in its loop's plane), its
+#: v_cm the centre of mass's speed at the top and its load_g the bottom's,
+#: and fills ``v_top_m_s`` .. ``load_bottom_g``; the speed band is of the
+#: centre of mass's speed (horizontal) or of v_top (vertical), empty where
+#: the planned speed is not feasible or an edge lies beyond 1/16..16 times it.
 RIDER_COLUMNS = ("name", "lane", "theta_deg", "phi0_deg", "alpha_deg", "lean_deg", "v_cm_m_s", "v_cm_km_h",
                  "v_contact_m_s", "period_s", "load_g", "mu_required", "head_clearance_m", "status", "reason",
                  "speed_low_m_s", "speed_high_m_s", "margin_low_pct", "margin_high_pct", "v_top_m_s",

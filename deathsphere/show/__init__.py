@@ -12,7 +12,7 @@ import types
 
 class _CallableShow(types.ModuleType):
     """The package, callable as :func:`deathsphere.api.show.show` so that
-    ``deathsphere.show(plan)`` reads as the issue's API."""
+    ``deathsphere.show(plan)`` plans an act as the other commands' functions do."""
 
     def __call__(self, plan, **options):
         from deathsphere.api.show import show

@@ -39,6 +39,8 @@ SPLIT = 8
 #: for whole numbers of laps n_i of at most :data:`MAX_LAPS`.
 COMMENSURATE_RTOL = 1e-3
 MAX_LAPS = 24
+#: Pair-samples evaluated at once by :func:`least_clearances`.
+BATCH_SAMPLES = 1 << 20
 #: Two rates [rad/s] closer than this (relative) are the same.
 SAME_RATE_RTOL = COMMENSURATE_RTOL
 
@@ -133,12 +135,17 @@ def least_clearances(lanes, pairs, duration: float) -> list[tuple[float, float]]
     fastest = max(bound[i] + bound[j] for i, j in pairs)
     x = np.linspace(0.0, float(duration), _samples(float(duration), fastest) + 1)
     ends = [lane.ends(x) for lane in lanes]
-    first, second = np.array([i for i, _ in pairs]), np.array([j for _, j in pairs])
-    stack = [np.stack([ends[k][e] for k in idx], axis=1) for idx in (first, second) for e in (0, 1)]
-    radii = np.array([0.5 * (lanes[i].width_m + lanes[j].width_m) for i, j in pairs])
-    c = segment_distance(*stack)[0] - radii[:, None]
-    return [refine(_clearance_at(lanes[i], lanes[j]), x, c[p], bound[i] + bound[j])
-            for p, (i, j) in enumerate(pairs)]
+    out = []
+    per_batch = max(1, BATCH_SAMPLES // x.size)       # memory stays bounded however long the act
+    for start in range(0, len(pairs), per_batch):
+        batch = pairs[start:start + per_batch]
+        first, second = np.array([i for i, _ in batch]), np.array([j for _, j in batch])
+        stack = [np.stack([ends[k][e] for k in idx], axis=1) for idx in (first, second) for e in (0, 1)]
+        radii = np.array([0.5 * (lanes[i].width_m + lanes[j].width_m) for i, j in batch])
+        c = segment_distance(*stack)[0] - radii[:, None]
+        out += [refine(_clearance_at(lanes[i], lanes[j]), x, c[p], bound[i] + bound[j])
+                for p, (i, j) in enumerate(batch)]
+    return out
 
 
 def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[float, float, str]:

@@ -73,3 +73,19 @@ def test_a_machine_without_width_is_refused(tmp_path):
     assert machine.width is None
     plan = _with(lambda p: p["rider"][0].update(machine={"base": "paper-wheel"}))
     assert read_plan(plan).riders[0].width == 0.0   # the paper's wheel is thin
+
+
+def test_the_act_duration_and_the_results_arguments_are_checked_in_one_line():
+    incommensurate = _with(lambda p: p["rider"][0].update(speed="31km/h"))
+    with pytest.raises(deathsphere.ParameterError, match="duration"):
+        deathsphere.show(incommensurate)
+    act = deathsphere.show(_with(lambda p: (p["rider"][0].update(speed="31km/h"), p["globe"].update(duration=4))))
+    assert act.duration_s == 4 and not act.commensurate
+    assert deathsphere.show(incommensurate, duration=2.5).duration_s == 2.5
+    for call, name in ((lambda: act.fall("Zed", 0.1), "rider"), (lambda: act.fall("Ana", -1.0), "t"),
+                       (lambda: act.fall("Ana", 0.1, 1.5), "speed_fraction"), (lambda: act.falls(0), "n"),
+                       (lambda: act.falls(5, seed=-2), "seed"), (lambda: deathsphere.show(BASE, phase="best"), "phase"),
+                       (lambda: deathsphere.show(BASE, duration=-1), "duration")):
+        with pytest.raises(deathsphere.ParameterError) as err:
+            call()
+        assert err.value.param == name and "\n" not in str(err.value)
