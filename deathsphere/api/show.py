@@ -79,7 +79,7 @@ class ShowResult:
         and that rider's envelope during the flight (docs/show.md).  Columns
         :data:`FALL_COLUMNS`, one row per other rider (one row with an empty
         victim when he is alone)."""
-        from deathsphere.show.falls import refine_victim, simulate
+        from deathsphere.show.falls import refine_victim, simulate_falls
 
         names = [lane.name for lane in self.lanes]
         if rider not in names:
@@ -87,7 +87,7 @@ class ShowResult:
         t = _number("t", t, 0.0, math.inf)
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
         k = names.index(rider)
-        res = simulate(self.lanes, self.plan.globe, [k], [t], [speed_fraction])
+        res = simulate_falls(self.lanes, self.plan.globe, [k], [t], [speed_fraction])
         base = _fall_base(res, 0, self.lanes[k].name, t, speed_fraction)
         rows = []
         for j, victim in enumerate(self.lanes):

@@ -122,7 +122,7 @@ def _view(name: str, **kwargs):
     return view
 
 
-VIEW_OF = {"riders": "riders_view", "pairs": "pairs_view", "falls": "falls_view", "summary": "summary_view"}
+VIEW_OF = {"riders": "riders_view", "pairs": "pairs_view", "falls": "falls_view", "summary": "falls_summary_view"}
 
 
 def _falls(result, fails, monte_carlo, seed, scheduler):

@@ -312,7 +312,7 @@ def _summary_cells(name: str, values: list, blank: str) -> list[str]:
     return [escape(str(v)) if isinstance(v, str) else format_number(v, 4) for v in values]
 
 
-def summary_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
+def falls_summary_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
     """The Monte Carlo's summary: per falling rider (and over all of
     them), how many falls, how many hit another rider (per other rider,
     and anyone), and the worst landing speed."""

@@ -84,7 +84,7 @@ def _one_lane(lane, globe, t, fraction) -> dict:
     return out
 
 
-def simulate(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPLES) -> dict:
+def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPLES) -> dict:
     """Falls of the riders ``rider`` (indices into lanes, (n,)) at the times
     t (n,) [s] with the speed fractions (n,): dict of (n,) arrays
     ``outcome`` (int8 codes of OUTCOMES), ``t_lost``, ``theta_lost``,
@@ -179,9 +179,9 @@ def outcome_names(codes) -> np.ndarray:
 def fall_chunk(item):
     """One chunk of a Monte Carlo (a picklable work item for
     :func:`deathsphere.parallel.ordered_map`): (lanes, globe, rider, t,
-    fraction) -> :func:`simulate`'s dict."""
+    fraction) -> :func:`simulate_falls`'s dict."""
     lanes, globe, rider, t, fraction = item
-    return simulate(lanes, globe, rider, t, fraction)
+    return simulate_falls(lanes, globe, rider, t, fraction)
 
 
-__all__ = ["simulate", "refine_victim", "fall_chunk", "outcome_names", "FLIGHT_SAMPLES"]
+__all__ = ["simulate_falls", "refine_victim", "fall_chunk", "outcome_names", "FLIGHT_SAMPLES"]

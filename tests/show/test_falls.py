@@ -50,9 +50,9 @@ def test_the_victim_clearance_against_sampling_the_flight():
     assert rows[0]["outcome"] == "falls"
     lane = {x.name: x for x in act.lanes}
     start, flight = rows[0]["t_contact_lost_s"], rows[0]["fall_time_s"]
-    from deathsphere.show.falls import simulate
+    from deathsphere.show.falls import simulate_falls
 
-    res = simulate(act.lanes, act.plan.globe, [2], [0.1], [0.2])
+    res = simulate_falls(act.lanes, act.plan.globe, [2], [0.1], [0.2])
     x0, v0 = res["x0"][:, 0], res["v0"][:, 0]
     s = np.linspace(0, flight, 40001)
     point = x0[:, None] + v0[:, None] * s - 0.5 * G * s * s * np.array([0, 0, 1.0])[:, None]
