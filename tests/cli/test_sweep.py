@@ -43,27 +43,38 @@ def test_sweep_into_head_ends_quietly():
 
 
 def _with_stderr_on_a_terminal(*args):
-    """Run the command with stderr on a pseudo-terminal; (process, what the terminal saw)."""
+    """Run the command with stderr on a pseudo-terminal; (process, what the terminal saw).
+
+    The terminal is read while the command runs, as a terminal would: a
+    pseudo-terminal holds a few kB, and a progress bar that redraws for
+    longer than that (a slow, shared machine) would otherwise block on it."""
     import os
     import pty
+    import threading
 
     leader, follower = pty.openpty()
-    try:
-        proc = subprocess.run([sys.executable, "-m", "deathsphere", *args], stdout=subprocess.PIPE, stderr=follower,
-                              timeout=120, env={**os.environ, "COLUMNS": "80"})
-        os.close(follower)
-        seen = b""
+    chunks = []
+
+    def read():
         while True:
             try:
                 data = os.read(leader, 65536)
             except OSError:
-                break
+                return
             if not data:
-                break
-            seen += data
+                return
+            chunks.append(data)
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    try:
+        proc = subprocess.run([sys.executable, "-m", "deathsphere", *args], stdout=subprocess.PIPE, stderr=follower,
+                              timeout=300, env={**os.environ, "COLUMNS": "80"})
+        os.close(follower)
+        reader.join(timeout=10)
     finally:
         os.close(leader)
-    return proc, seen
+    return proc, b"".join(chunks)
 
 
 def test_progress_bar_on_a_terminal_never_swallows_stdout():
