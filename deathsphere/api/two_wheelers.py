@@ -154,10 +154,11 @@ class TwoWheeler:
 
 
 def _benchmark_bicycle() -> TwoWheeler:
-    from deathsphere.physics.two_wheeler.parameters import SOURCE, benchmark_bicycle
+    from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
 
     return TwoWheeler(**asdict(benchmark_bicycle()), head=DEFAULT_HEAD, name="benchmark-bicycle",
-                      source=SOURCE.replace(",", ";") + "; head point an assumption")
+                      source="Meijaard Papadopoulos Ruina & Schwab (2007) Proc. R. Soc. A 463:1955-1982 Table 1 "
+                             "exactly; head point (0.3; -1.7) m an assumption")
 
 
 #: The two-wheeler presets, by name (``--machine`` with ``--flat`` or ``--steer``).
@@ -290,6 +291,8 @@ def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, sta
     if speed is not None and steer_torque is not None:
         raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
     by_torque = steer_torque is not None
+    if speed is None and steer_torque is None:
+        raise ParameterError("give speed (the rear contact's, m/s) or steer_torque (N m; 0: hands-free)", "speed")
     value = _torques(steer_torque) if by_torque else _speeds(speed)
     lanes, values = (x.reshape(-1) for x in np.meshgrid(lane, value, indexing="ij"))
     given = np.repeat(lane_given, value.size)
