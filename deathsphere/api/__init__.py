@@ -44,7 +44,7 @@ _HOME = {
     "Chunks": "streams",
     "A": "arguments", "R": "arguments", "G": "arguments", "INF": "arguments", "CHUNK": "arguments",
     "STATUSES": "arguments", "ParameterError": "arguments",
-    "ride": "rides", "ride_summary": "rides", "ride_sweep": "ride_streams", "Machine": "machines", "TwoWheeler": "two_wheelers", "machines_table": "machines",
+    "ride": "rides", "ride_summary": "rides", "ride_sweep": "ride_streams", "Machine": "machines", "TwoWheeler": "two_wheelers", "machines_table": "two_wheelers",
     "machine_file": "machines", "PRESETS": "machines",
 }
 _MODULES = ("arguments", "streams", "orbits", "vertical_orbits", "region_limits", "orbit_stability", "simulation",

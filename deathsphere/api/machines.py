@@ -310,20 +310,3 @@ def _machine_text(raw: bytes, name: str) -> str:
         shown = encoding.upper().replace("-SIG", "")
         raise ParameterError(f"machine file {name}: not {shown} text (byte {exc.start}: "
                              f"{raw[exc.start:exc.start + 1]!r}); save it as UTF-8", "machine_file") from None
-
-
-def machines_table():
-    """``deathsphere machines``: the presets, one row each: the
-    single-contact machines, then the two-wheelers (kind ``two-wheeler``,
-    their geometry in the appended columns; docs/two-wheeler.md sec. 10)."""
-    from deathsphere.api.two_wheelers import TWO_WHEELERS
-    from deathsphere.table import Table
-
-    two = [t.row() for t in TWO_WHEELERS.values()]
-    blank = {k: np.nan for k in list(two[0])[list(two[0]).index("kind") + 1:]}
-    rows = [m.row() | {"kind": "single-contact"} | blank for m in PRESETS.values()] + two
-    cols = {}
-    for key in rows[0]:
-        vals = [r[key] for r in rows]
-        cols[key] = np.array(vals, dtype=object if isinstance(vals[0], str) else float)
-    return Table(cols)

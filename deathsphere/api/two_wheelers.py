@@ -16,11 +16,11 @@ from dataclasses import asdict, dataclass, fields
 import numpy as np
 
 from deathsphere.api.arguments import G, R, checked_array, checked_axis, sphere_radius
-from deathsphere.api.machines import echoable_text
+from deathsphere.api.machines import PRESETS, echoable_text
 from deathsphere.params import ParameterError
 from deathsphere.table import Table
 
-__all__ = ["TwoWheeler", "TWO_WHEELERS", "as_two_wheeler", "is_two_wheeler", "two_wheeler_ride", "STRAIGHT_COLUMNS",
+__all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_ride", "STRAIGHT_COLUMNS",
            "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "EIGENVALUES"]
 
 #: How the steer is held in the stability analysis (docs/two-wheeler.md sec. 8.3).
@@ -163,6 +163,20 @@ def _benchmark_bicycle() -> TwoWheeler:
 
 #: The two-wheeler presets, by name (``--machine`` with ``--flat`` or ``--steer``).
 TWO_WHEELERS = {t.name: t for t in (_benchmark_bicycle(),)}
+
+
+def machines_table():
+    """``deathsphere machines``: the presets, one row each: the
+    single-contact machines, then the two-wheelers (kind ``two-wheeler``,
+    their geometry in the appended columns; docs/two-wheeler.md sec. 10)."""
+    two = [t.row() for t in TWO_WHEELERS.values()]
+    blank = {k: np.nan for k in list(two[0])[list(two[0]).index("kind") + 1:]}
+    rows = [m.row() | {"kind": "single-contact"} | blank for m in PRESETS.values()] + two
+    cols = {}
+    for key in rows[0]:
+        vals = [r[key] for r in rows]
+        cols[key] = np.array(vals, dtype=object if isinstance(vals[0], str) else float)
+    return Table(cols)
 
 
 def is_two_wheeler(machine) -> bool:
