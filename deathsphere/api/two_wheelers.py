@@ -32,6 +32,12 @@ EIGENVALUES = {("flat", "free"): 4, ("flat", "locked"): 2, ("sphere", "free"): 6
 #: (an assumption: the benchmark has no head).
 DEFAULT_HEAD = (0.3, -1.7)
 
+#: Steady-turn requests (lanes x speeds or torques) one call answers: each
+#: costs some 2 ms of CPU (docs/two-wheeler.md sec. 8.6), so this is a minute.
+MAX_TURN_REQUESTS = 30_000
+#: Speeds of straight running one call answers (a few microseconds each).
+MAX_STRAIGHT_SPEEDS = 2_000_000
+
 _LENGTHS = ("w", "rR", "rF")
 _MASSES = ("mR", "mB", "mH", "mF")
 _MOMENTS = ("IRxx", "IRyy", "IBxx", "IByy", "IBzz", "IHxx", "IHyy", "IHzz", "IFxx", "IFyy")
@@ -227,15 +233,25 @@ def _eig_cols(values, k) -> dict:
     return cols
 
 
-def _speeds(speed) -> np.ndarray:
-    """The rear contact's speeds asked for (values, ranges, units), flat."""
+def _values(name: str, value, limit: int, option: str | None = None) -> np.ndarray:
+    """The values asked for (values, ranges, units) as one flat array,
+    refused before they are built when there are more than ``limit``."""
+    option = option or name
+    try:
+        axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
+    except ParameterError as exc:
+        raise ParameterError(str(exc).replace(name, option, 1), option) from None
+    if len(axis) > limit:
+        raise ParameterError(f"a two-wheeler takes at most {limit} values of {option} at once (got {len(axis)}): "
+                             "split the range", option)
+    return np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
+
+
+def _speeds(speed, limit: int) -> np.ndarray:
+    """The rear contact's speeds asked for."""
     if speed is None:
         raise ParameterError("give speed: the rear contact's speed(s) in m/s", "speed", missing=True)
-    try:
-        axis = checked_axis("rear_speed", speed if isinstance(speed, (str, list, tuple)) else np.asarray(speed))
-    except ParameterError as exc:
-        raise ParameterError(str(exc).replace("rear_speed", "speed"), "speed") from None
-    return np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
+    return _values("rear_speed", speed, limit, "speed")
 
 
 def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
@@ -243,7 +259,7 @@ def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
     against speed (Meijaard et al. 2007, Table 2 and Figure 3; docs/two-wheeler.md sec. 7)."""
     from deathsphere.physics.two_wheeler import linear, stability
 
-    v = _speeds(speed)
+    v = _speeds(speed, MAX_STRAIGHT_SPEEDS)
     m = linear.benchmark_matrices(t.parameters())
     if steer == "free":
         values = _sorted_eigenvalues(linear.eigenvalues(m, v))
@@ -273,22 +289,14 @@ def _lanes(theta, height, r) -> tuple[np.ndarray, np.ndarray, bool]:
         raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
                              "theta", missing=theta is None)
     if theta is not None:
-        axis = checked_axis("theta", theta if isinstance(theta, (str, list, tuple)) else np.asarray(theta))
-        given = np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
+        given = _values("theta", theta, MAX_TURN_REQUESTS)
         return np.radians(given), given, True
-    axis = checked_axis("height", height if isinstance(height, (str, list, tuple)) else np.asarray(height))
-    given = np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
+    given = _values("height", height, MAX_TURN_REQUESTS)
     if np.any(given > 2 * r):
         bad = float(given[np.argmax(given > 2 * r)])
         raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
                              f"(got {bad:g})", "height")
     return np.arccos(np.clip(given / r - 1.0, -1.0, 1.0)), given, False
-
-
-def _torques(steer_torque) -> np.ndarray:
-    axis = checked_axis("steer_torque", steer_torque if isinstance(steer_torque, (str, list, tuple))
-                        else np.asarray(steer_torque))
-    return np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
 
 
 def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, stability: bool) -> Table:
@@ -307,7 +315,11 @@ def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, sta
     by_torque = steer_torque is not None
     if speed is None and steer_torque is None:
         raise ParameterError("give speed (the rear contact's, m/s) or steer_torque (N m; 0: hands-free)", "speed")
-    value = _torques(steer_torque) if by_torque else _speeds(speed)
+    value = _values("steer_torque", steer_torque, MAX_TURN_REQUESTS) if by_torque else _speeds(speed, MAX_TURN_REQUESTS)
+    if lane.size * value.size > MAX_TURN_REQUESTS:
+        raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes and "
+                             f"speeds (or torques) at once (got {lane.size} x {value.size}): split the grid",
+                             "steer_torque" if by_torque else "speed")
     lanes, values = (x.reshape(-1) for x in np.meshgrid(lane, value, indexing="ij"))
     given = np.repeat(lane_given, value.size)
     p = t.parameters()
