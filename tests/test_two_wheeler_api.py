@@ -142,6 +142,7 @@ def test_every_request_on_the_globe_gets_its_rows_in_order():
     assert list(pole["status"]) == ["no_orbit"] and "poles" in pole["reason"][0]
     assert "eig_4_re" in t and "eig_5_re" not in t       # steer locked on the sphere: four eigenvalues
     turns = t[t["input_row"] == 2]
+    assert set(turns["v_rear_m_s"]) == {8.0} and set(turns["v_contact_m_s"]) == {8.0}   # as asked
     assert np.all(np.isfinite(turns["growth_rate_1_s"]))
     # the lap: the period is the time round at the rear contact's speed on its parallel
     radius = GLOBE * math.sin(math.radians(100.0))

@@ -368,8 +368,11 @@ def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, sta
         "lean_surface_deg": np.degrees(lean), "v_rear_m_s": pick("v_rear"), "v_front_m_s": pick("v_front"),
         "theta_front_deg": np.degrees(pick("theta_front")), "steer": np.full(n, steer, dtype=object),
     }
-    if by_torque:  # the torque as asked, not as recomputed
+    # what the request fixes is echoed as asked, not as recomputed (docs/contract.md)
+    if by_torque:
         cols["steer_torque_n_m"] = np.where(has, values[req], np.nan)
+    else:
+        cols["v_rear_m_s"] = cols["v_contact_m_s"] = np.where(has, values[req], np.nan)
     k = EIGENVALUES[("sphere", steer)]
     if stability:
         ev = np.where(has[:, None], out[f"eigenvalues_{steer}"][req, slot], np.nan + 0j)
