@@ -45,6 +45,7 @@ _HOME = {
     "ride_summary": "api",
     "ride_sweep": "api",
     "Machine": "api",
+    "TwoWheeler": "api",
     "machines_table": "api",
     "machine_file": "api",
     "limits_input": "api",

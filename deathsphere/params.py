@@ -207,6 +207,11 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     _length("height", "contact height", "z", lo=0.0,
             help="Ride: height of the contact point above the globe's floor instead of --theta (0 .. the "
                  "diameter)."),
+    # the two-wheeler of `deathsphere ride --flat/--steer` (docs/two-wheeler.md)
+    Param("rear_speed", "m/s", "rear contact speed", 0.0, HUGE, symbol="v_rear", kind="speed", metavar="M_S"),
+    Param("steer_torque", "N m", "steer torque", -HUGE, HUGE, symbol="T_δ", metavar="N_M",
+          help="Ride, a two-wheeler on the globe: the steer torque the rider holds (0: hands-free); every "
+               "steady turn held with it at each --theta/--height, one row each (instead of --speed)."),
     Param("jobs", "", "processes", 1, 256, integer=True, metavar="N", default=1,
           help="Processes working in parallel; the output is the same as with one."),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True, metavar="N",

@@ -44,13 +44,13 @@ _HOME = {
     "Chunks": "streams",
     "A": "arguments", "R": "arguments", "G": "arguments", "INF": "arguments", "CHUNK": "arguments",
     "STATUSES": "arguments", "ParameterError": "arguments",
-    "ride": "rides", "ride_summary": "rides", "ride_sweep": "ride_streams", "Machine": "machines", "machines_table": "machines",
+    "ride": "rides", "ride_summary": "rides", "ride_sweep": "ride_streams", "Machine": "machines", "TwoWheeler": "two_wheelers", "machines_table": "two_wheelers",
     "machine_file": "machines", "PRESETS": "machines",
 }
 _MODULES = ("arguments", "streams", "orbits", "vertical_orbits", "region_limits", "orbit_stability", "simulation",
-            "paper", "rides", "ride_streams", "machines")
+            "paper", "rides", "ride_streams", "machines", "two_wheelers")
 
 __all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
            "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "animation_options", "table1",
-           "verify", "Chunks", "ParameterError", "ride", "ride_sweep", "ride_summary", "Machine", "machines_table", "machine_file"]
+           "verify", "Chunks", "ParameterError", "ride", "ride_sweep", "ride_summary", "Machine", "TwoWheeler", "machines_table", "machine_file"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

@@ -321,15 +321,3 @@ def _machine_text(raw: bytes, name: str) -> str:
         shown = encoding.upper().replace("-SIG", "")
         raise ParameterError(f"machine file {name}: not {shown} text (byte {exc.start}: "
                              f"{raw[exc.start:exc.start + 1]!r}); save it as UTF-8", "machine_file") from None
-
-
-def machines_table():
-    """``deathsphere machines``: the presets, one row each."""
-    from deathsphere.table import Table
-
-    rows = [m.row() for m in PRESETS.values()]
-    cols = {}
-    for key in rows[0]:
-        vals = [r[key] for r in rows]
-        cols[key] = np.array(vals, dtype=object if isinstance(vals[0], str) else float)
-    return Table(cols)

@@ -142,7 +142,8 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
 def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None,
          height=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
          mass=None, com_height=None, wheel_radius=None, tyre_radius=None, roll_inertia=None, pitch_inertia=None,
-         yaw_inertia=None, spin_inertia=None, head_height=None) -> Table:
+         yaw_inertia=None, spin_inertia=None, head_height=None, flat: bool = False, steer=None,
+         steer_torque=None) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -188,6 +189,16 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         A vertical loop instead (docs/machine.md sec. 10): theta is the cone
         angle (90 = a great circle), ``v_top`` the centre of mass's speed at
         the top [m/s]; columns :data:`LOOP_COLUMNS`.
+    flat, steer, steer_torque : bool, str, float or array_like
+        A two-wheeler instead (``machine`` a :class:`deathsphere.TwoWheeler`
+        or a two-wheeler preset such as ``"benchmark-bicycle"``;
+        docs/two-wheeler.md sec. 10): ``flat`` gives the eigenvalues of
+        upright straight running on flat ground at each ``speed`` (the rear
+        contact's, m/s); otherwise every steady turn at each theta (or
+        height) and rear contact ``speed``, or held with each
+        ``steer_torque`` [N m] (0: hands-free), with its stability, the
+        steer ``"free"`` (default) or ``"locked"``
+        (:func:`deathsphere.api.two_wheelers.two_wheeler_ride`).
 
     Returns
     -------
@@ -215,6 +226,11 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     >>> row["machine"], row["status"], round(row["lean_deg"], 1)
     ('stunt125 (modified)', 'ok', 75.0)
     """
+    from deathsphere.api.two_wheelers import is_two_wheeler
+
+    if checked_flag("flat", flat) or steer is not None or steer_torque is not None or (
+            is_two_wheeler(machine) and not isinstance(machine, str)):
+        return _two_wheeler(machine, locals())
     m = as_machine(machine).with_overrides(
         mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,
         pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
@@ -287,6 +303,23 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table
+
+
+def _two_wheeler(machine, given: dict) -> Table:
+    """``ride`` of a two-wheeler: what the single-contact machine alone takes is refused."""
+    from deathsphere.api.two_wheelers import two_wheeler_ride
+
+    alone = ("alpha", "v_top", "only", "mass", "com_height", "wheel_radius", "tyre_radius", "roll_inertia",
+             "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
+    extra = [k for k in alone if given[k] is not None] + [k for k in ("mu", "max_g") if given[k] is not INF]
+    if given["vertical"] is not False:
+        extra.append("vertical")
+    if extra:
+        raise ParameterError(f"a two-wheeler (flat or steer) does not take {', '.join(extra)} yet: give theta or "
+                             "height and speed or steer_torque (flat: speed only)", extra[0])
+    return two_wheeler_ride(machine, **{k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
+                                                               "steer", "r", "diameter", "g", "summary",
+                                                               "stability")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).

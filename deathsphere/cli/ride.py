@@ -33,6 +33,20 @@ def _view(name: str, **kwargs):
     return view
 
 
+def _two_wheeler_view(name: str, title: str):
+    """A terminal view of render.two_wheeler_views, imported only when a table is drawn."""
+    def view(table, total_rows=None):
+        from deathsphere.render import two_wheeler_views
+
+        return getattr(two_wheeler_views, name)(table, total_rows=total_rows, title=title)
+    return view
+
+
+def setup_of(r, diameter, g, max_g) -> dict:
+    """The globe's options given (the API's defaults apply to the others)."""
+    return {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("max_g", max_g)) if v is not None}
+
+
 def _axis(name: str, values):
     """The values of a repeated option (values and start:stop:step ranges,
     with unit suffixes), as one flat array."""
@@ -76,6 +90,13 @@ def _grid(where, how, mus):
                    "range, lean, load, friction needed and least head clearance, and why the others fail.")
 @only_option(api.STATUSES)
 @stability_option()
+@click.option("--flat", is_flag=True, default=False,
+              help="A two-wheeler (--machine benchmark-bicycle) on flat ground: the eigenvalues of upright "
+                   "straight running at each --speed (the rear contact's); --summary: weave and capsize speeds.")
+@single("--steer", type=click.Choice(("free", "locked"), case_sensitive=False), default=None,
+        help="A two-wheeler's steady turns on the globe (docs/two-wheeler.md), their stability with the steer "
+             "free (its steady torque held) or locked; --speed is the rear contact's.")
+@param_option("steer_torque", multiple=True)
 @jobs_option()
 @scheduler_option()
 @single("--output", type=OutputPath(SWEEP_FORMATS), default=None, metavar="FILE",
@@ -84,7 +105,8 @@ def _grid(where, how, mus):
 @output_options(FORMATS + ("parquet",))
 def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
                  roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
-                 vertical, v_top, summary, only, stability, jobs, scheduler, output, fmt):
+                 vertical, v_top, summary, only, stability, flat, steer, steer_torque, jobs, scheduler, output,
+                 fmt):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
     Every combination of the --theta (or --height) and --alpha (or --speed)
@@ -106,10 +128,36 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
       deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 \\
           --output ride.parquet
+      deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1
+      deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1 \\
+          --summary
+      deathsphere ride --machine benchmark-bicycle --steer free \\
+          --diameter 16ft --height 1:2:0.5 --speed 5:10:5
+      deathsphere ride --machine benchmark-bicycle --steer-torque 0 \\
+          --diameter 16ft --height 1
     """
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
     fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
+    if flat or steer is not None or steer_torque:
+        # a two-wheeler (docs/two-wheeler.md): the API refuses what it does not take
+        which = machine if machine_file is None and machine is not None else machine_from_options(machine,
+                                                                                                   machine_file)
+        overrides = dict(mass=mass, com_height=com_height, wheel_radius=a, tyre_radius=tyre_radius,
+                         roll_inertia=roll_inertia, pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia,
+                         spin_inertia=spin_inertia, head_height=head_height)
+        lists = {k: list(v) for k, v in (("theta", theta), ("height", height), ("speed", speed),
+                                         ("steer_torque", steer_torque), ("alpha", alpha), ("v_top", v_top),
+                                         ("mu", mu)) if v}
+        table = api.ride(machine=which, flat=flat, steer=steer, summary=summary, stability=stability,
+                         only=only or None, vertical=vertical, **lists, **setup_of(r, diameter, g, max_g), **{
+                             k: v for k, v in overrides.items() if v is not None})
+        title = (f"{table['machine'][0] if len(table) else ''}: " +
+                 ("straight running on flat ground (docs/two-wheeler.md sec. 7)" if flat
+                  else "steady turns on the globe (docs/two-wheeler.md sec. 8)"))
+        view = "straight_view" if flat else "turns_view"
+        emit([table], fmt, title, view=_two_wheeler_view(view, title), output=output)
+        return
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
@@ -160,7 +208,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
 def machines_command(fmt):
     """The preset machines of 'deathsphere ride': mass, centre-of-mass height,
     wheel and tyre radii, inertias, head height and where each comes from
-    (docs/machine.md sec. 7).
+    (docs/machine.md sec. 7); then the two-wheelers of 'ride --flat' and
+    'ride --steer' (kind two-wheeler: wheel base, trail, steer axis tilt,
+    wheel radii; docs/two-wheeler.md).
 
     \b
     Examples:

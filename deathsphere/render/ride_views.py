@@ -272,7 +272,7 @@ def ride_view(table: Table, total_rows: int | None = None, title: str | None = N
 
 
 #: Columns of ``machines`` on screen: (column, header); the sources go under it.
-MACHINE_COLUMNS = (("name", "name"), ("mass_kg", "mass\nkg"), ("com_height_m", "h\nm"),
+MACHINE_COLUMNS = (("name", "name"), ("kind", "kind"), ("mass_kg", "mass\nkg"), ("com_height_m", "h\nm"),
                    ("wheel_radius_m", "a\nm"), ("tyre_radius_m", "t\nm"), ("head_height_m", "head\nm"),
                    ("roll_inertia_kg_m2", "I roll\nkg m²"), ("pitch_inertia_kg_m2", "I pitch\nkg m²"),
                    ("yaw_inertia_kg_m2", "I yaw\nkg m²"), ("spin_inertia_kg_m2", "J spin\nkg m²"))
@@ -280,10 +280,11 @@ MACHINE_COLUMNS = (("name", "name"), ("mass_kg", "mass\nkg"), ("com_height_m", "
 
 def machines_view(table: Table, total_rows: int | None = None, title: str | None = None) -> FitTable:
     """The presets: a line of numbers each, and where each comes from under the table."""
-    columns = [Column(col, header, [escape(str(v)) if col == "name" else format_number(v)
-                                    for v in table.columns[col].tolist()], "left" if col == "name" else "right")
+    text = ("name", "kind")
+    columns = [Column(col, header, [escape(str(v)) if col in text else format_number(v)
+                                    for v in table.columns[col].tolist()], "left" if col in text else "right")
                for col, header in MACHINE_COLUMNS]
-    sources = [f"[dim]{escape(n)}: {escape(s)}[/dim]" for n, s in
-               zip(table.columns["name"].tolist(), table.columns["source"].tolist())]
-    drop = ("spin_inertia_kg_m2", "yaw_inertia_kg_m2", "pitch_inertia_kg_m2", "roll_inertia_kg_m2")
+    sources = [f"[dim]{escape(n)} ({escape(k)}): {escape(s)}[/dim]" for n, k, s in
+               zip(table.columns["name"].tolist(), table.columns["kind"].tolist(), table.columns["source"].tolist())]
+    drop = ("spin_inertia_kg_m2", "yaw_inertia_kg_m2", "pitch_inertia_kg_m2", "roll_inertia_kg_m2", "tyre_radius_m")
     return FitTable(columns, drop, title=title, notes=sources)

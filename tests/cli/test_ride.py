@@ -54,10 +54,13 @@ def test_bad_machines_exit_2(run, args, words):
 def test_machines_lists_the_presets(run):
     res = run("machines", "--format", "csv")
     rows = _rows(res.stdout)
-    assert [r["name"] for r in rows] == ["paper-wheel", "benchmark-bicycle", "stunt125"]
-    assert list(rows[0]) == ["name", "mass_kg", "com_height_m", "wheel_radius_m", "tyre_radius_m",
-                             "roll_inertia_kg_m2", "pitch_inertia_kg_m2", "yaw_inertia_kg_m2", "spin_inertia_kg_m2",
-                             "head_height_m", "source", "width_m"]
+    assert [(r["name"], r["kind"]) for r in rows] == [
+        ("paper-wheel", "single-contact"), ("benchmark-bicycle", "single-contact"), ("stunt125", "single-contact"),
+        ("benchmark-bicycle", "two-wheeler")]
+    # the two-wheelers' columns are appended: the single-contact machine's come first, as before
+    assert list(rows[0])[:13] == ["name", "mass_kg", "com_height_m", "wheel_radius_m", "tyre_radius_m",
+                                  "roll_inertia_kg_m2", "pitch_inertia_kg_m2", "yaw_inertia_kg_m2",
+                                  "spin_inertia_kg_m2", "head_height_m", "source", "width_m", "kind"]
     assert all(r["source"] for r in rows)
 
 

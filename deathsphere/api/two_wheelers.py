@@ -1,0 +1,421 @@
+"""The two-wheeler of ``deathsphere ride --flat`` and ``--steer``: the
+Whipple bicycle in the benchmark's parameters (:class:`TwoWheeler`), its
+presets, and its tables: the eigenvalues of upright straight running on
+flat ground against speed, and the steady turns on the globe's lanes with
+their stability (beyond the paper; docs/two-wheeler.md sec. 7-8 and 10).
+
+A two-wheeler is validated once, at construction: a bad one raises
+:class:`~deathsphere.ParameterError` with one line before any work.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, fields
+
+import numpy as np
+
+from deathsphere.api.arguments import G, R, checked_array, checked_axis, sphere_radius
+from deathsphere.api.machines import PRESETS, echoable_text
+from deathsphere.params import ParameterError
+from deathsphere.table import Table
+
+__all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_ride", "STRAIGHT_COLUMNS",
+           "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "EIGENVALUES"]
+
+#: How the steer is held in the stability analysis (docs/two-wheeler.md sec. 8.3).
+STEER_MODES = ("free", "locked")
+#: Eigenvalues per row: (surface, steer) -> how many (docs/two-wheeler.md sec. 8.3).
+EIGENVALUES = {("flat", "free"): 4, ("flat", "locked"): 2, ("sphere", "free"): 6, ("sphere", "locked"): 4}
+#: The rider's head point (x, z) from the rear contact upright when none is
+#: given: 1.7 m above the ground over the benchmark's rear frame mass centre
+#: (an assumption: the benchmark has no head).
+DEFAULT_HEAD = (0.3, -1.7)
+
+#: Steady-turn requests (lanes x speeds or torques) one call answers: each
+#: costs some 2 ms of CPU (docs/two-wheeler.md sec. 8.6), so this is a minute.
+MAX_TURN_REQUESTS = 30_000
+#: Speeds of straight running one call answers (a few microseconds each).
+MAX_STRAIGHT_SPEEDS = 2_000_000
+
+_LENGTHS = ("w", "rR", "rF")
+_MASSES = ("mR", "mB", "mH", "mF")
+_MOMENTS = ("IRxx", "IRyy", "IBxx", "IByy", "IBzz", "IHxx", "IHyy", "IHzz", "IFxx", "IFyy")
+
+
+def _eig_columns(k: int) -> tuple[str, ...]:
+    return tuple(f"eig_{i}_{part}" for i in range(1, k + 1) for part in ("re", "im"))
+
+
+@dataclass(frozen=True, kw_only=True)
+class TwoWheeler:
+    """A two-wheeler (bicycle or motorcycle with its rider) as the Whipple
+    bicycle of Meijaard, Papadopoulos, Ruina & Schwab (2007): the 26
+    parameters of their Table 1 by the same names and in SI (``lam`` in
+    rad), ``head`` the top of the rider's head (x, z) [m] from the rear
+    contact in the upright reference configuration (z down, like xB, zB),
+    ``name`` and ``source`` (docs/two-wheeler.md sec. 1).
+
+    >>> TwoWheeler(**{**TWO_WHEELERS["benchmark-bicycle"].benchmark_values(), "w": -1.0})
+    Traceback (most recent call last):
+    ...
+    deathsphere.ParameterError: two-wheeler w (wheel base) must be a finite number > 0 m (got -1)
+    """
+
+    w: float
+    c: float
+    lam: float
+    g: float
+    rR: float
+    mR: float
+    IRxx: float
+    IRyy: float
+    xB: float
+    zB: float
+    mB: float
+    IBxx: float
+    IByy: float
+    IBzz: float
+    IBxz: float
+    xH: float
+    zH: float
+    mH: float
+    IHxx: float
+    IHyy: float
+    IHzz: float
+    IHxz: float
+    rF: float
+    mF: float
+    IFxx: float
+    IFyy: float
+    head: tuple[float, float] = DEFAULT_HEAD
+    name: str = "custom two-wheeler"
+    source: str = ""
+
+    def __post_init__(self):
+        set_ = object.__setattr__
+        for field in ("name", "source"):
+            set_(self, field, echoable_text(f"two-wheeler {field}", getattr(self, field)))
+        for f in fields(self)[:26]:
+            value = getattr(self, f.name)
+            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
+                    or not math.isfinite(value):
+                raise ParameterError(f"two-wheeler {f.name} must be a finite number (got {value!r})", "machine")
+            set_(self, f.name, float(value))
+        head = self.head
+        if isinstance(head, (str, bytes)) or np.ndim(head) != 1 or len(head) != 2 \
+                or not all(isinstance(v, (int, float, np.integer, np.floating)) and math.isfinite(v) for v in head):
+            raise ParameterError(f"two-wheeler head must be two finite numbers (x, z) in m (got {head!r})", "machine")
+        set_(self, "head", (float(head[0]), float(head[1])))
+        what = {"w": "wheel base", "rR": "rear wheel radius", "rF": "front wheel radius", "g": "gravity"}
+        for name in _LENGTHS + ("g",):
+            if not getattr(self, name) > 0:
+                unit = "m/s^2" if name == "g" else "m"
+                raise ParameterError(f"two-wheeler {name} ({what[name]}) must be a finite number > 0 {unit} "
+                                     f"(got {getattr(self, name):g})", "machine")
+        if not abs(self.lam) < math.pi / 2:
+            raise ParameterError(f"two-wheeler lam (steer axis tilt) must be between -pi/2 and pi/2 rad "
+                                 f"(got {self.lam:g})", "machine")
+        for name in _MASSES + _MOMENTS:
+            if getattr(self, name) < 0:
+                raise ParameterError(f"two-wheeler {name} must be >= 0 (got {getattr(self, name):g})", "machine")
+        if not sum(getattr(self, name) for name in _MASSES) > 0:
+            raise ParameterError("two-wheeler: the masses mR + mB + mH + mF must add up to more than 0 kg",
+                                 "machine")
+        for body in ("B", "H"):
+            ixx, izz, ixz = (getattr(self, f"I{body}{k}") for k in ("xx", "zz", "xz"))
+            if ixz * ixz > ixx * izz * (1 + 1e-9):
+                raise ParameterError(f"two-wheeler I{body}xz ({ixz:g} kg m^2) is too large for I{body}xx "
+                                     f"({ixx:g}) and I{body}zz ({izz:g}): the inertia tensor must be positive "
+                                     f"(I{body}xz^2 <= I{body}xx I{body}zz)", "machine")
+
+    def benchmark_values(self) -> dict:
+        """The 26 parameters by the benchmark's names (Meijaard et al. 2007, Table 1)."""
+        return {k: v for k, v in asdict(self).items() if k not in ("head", "name", "source")}
+
+    def parameters(self):
+        """The physics core's :class:`BicycleParameters`."""
+        from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+        return BicycleParameters(**self.benchmark_values())
+
+    @property
+    def mass(self) -> float:
+        return self.mR + self.mB + self.mH + self.mF
+
+    def row(self) -> dict:
+        """The two-wheeler as a row of ``deathsphere machines`` (its
+        single-contact columns from the four bodies: total mass, the centre
+        of mass's height upright on flat ground, the head's height; the
+        rest empty)."""
+        m = self.mass
+        h = (self.mR * self.rR - self.mB * self.zB - self.mH * self.zH + self.mF * self.rF) / m
+        nan = math.nan
+        return {"name": self.name, "mass_kg": m, "com_height_m": h, "wheel_radius_m": nan, "tyre_radius_m": nan,
+                "roll_inertia_kg_m2": nan, "pitch_inertia_kg_m2": nan, "yaw_inertia_kg_m2": nan,
+                "spin_inertia_kg_m2": self.IRyy + self.IFyy, "head_height_m": -self.head[1], "source": self.source,
+                "width_m": nan, "kind": "two-wheeler", "wheel_base_m": self.w, "trail_m": self.c,
+                "steer_axis_tilt_deg": math.degrees(self.lam), "rear_wheel_radius_m": self.rR,
+                "front_wheel_radius_m": self.rF}
+
+
+def _benchmark_bicycle() -> TwoWheeler:
+    from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
+
+    return TwoWheeler(**asdict(benchmark_bicycle()), head=DEFAULT_HEAD, name="benchmark-bicycle",
+                      source="Meijaard Papadopoulos Ruina & Schwab (2007) Proc. R. Soc. A 463:1955-1982 Table 1 "
+                             "exactly; head point (0.3; -1.7) m an assumption")
+
+
+#: The two-wheeler presets, by name (``--machine`` with ``--flat`` or ``--steer``).
+TWO_WHEELERS = {t.name: t for t in (_benchmark_bicycle(),)}
+
+
+def machines_table():
+    """``deathsphere machines``: the presets, one row each: the
+    single-contact machines, then the two-wheelers (kind ``two-wheeler``,
+    their geometry in the appended columns; docs/two-wheeler.md sec. 10)."""
+    two = [t.row() for t in TWO_WHEELERS.values()]
+    blank = {k: np.nan for k in list(two[0])[list(two[0]).index("kind") + 1:]}
+    rows = [m.row() | {"kind": "single-contact"} | blank for m in PRESETS.values()] + two
+    cols = {}
+    for key in rows[0]:
+        vals = [r[key] for r in rows]
+        cols[key] = np.array(vals, dtype=object if isinstance(vals[0], str) else float)
+    return Table(cols)
+
+
+def is_two_wheeler(machine) -> bool:
+    """True for a :class:`TwoWheeler` or the name of a two-wheeler preset."""
+    return isinstance(machine, TwoWheeler) or (isinstance(machine, str) and machine.strip().lower() in TWO_WHEELERS)
+
+
+def as_two_wheeler(machine) -> TwoWheeler:
+    """A :class:`TwoWheeler` from one or a preset's name; else one line saying which are."""
+    if isinstance(machine, TwoWheeler):
+        return machine
+    name = getattr(machine, "name", machine)
+    if isinstance(machine, str) and machine.strip().lower() in TWO_WHEELERS:
+        return TWO_WHEELERS[machine.strip().lower()]
+    raise ParameterError(f"flat and steer need a two-wheeler ({' | '.join(TWO_WHEELERS)} or a "
+                         f"deathsphere.TwoWheeler); {name!r} is a single-contact machine", "machine")
+
+
+# ---------------------------------------------------------------------------
+# the tables
+
+#: The columns of ``ride --flat``: upright straight running on flat ground.
+STRAIGHT_COLUMNS = ("input_row", "machine", "steer", "speed_m_s", "g_m_s2", "stability", "growth_rate_1_s")
+#: The columns of ``ride --flat --summary``.
+STRAIGHT_SUMMARY_COLUMNS = ("machine", "g_m_s2", "weave_speed_m_s", "capsize_speed_m_s", "speeds_tried",
+                            "speeds_stable")
+#: The columns of ``ride --steer`` on the globe (then the eigenvalues' columns).
+TURN_COLUMNS = (
+    "input_row", "machine", "theta_deg", "alpha_deg", "lean_deg", "r_m", "height_m", "g_m_s2", "status", "reason",
+    "omega_rad_s", "period_s", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s", "load_g", "head_clearance_m", "steer_deg",
+    "steer_torque_n_m", "pitch_deg", "normal_rear_per_mass_m_s2", "normal_front_per_mass_m_s2", "mu_required_rear",
+    "mu_required_front", "friction_rear_per_mass_m_s2", "friction_front_per_mass_m_s2", "lean_surface_deg",
+    "v_rear_m_s", "v_front_m_s", "theta_front_deg", "steer", "stability", "growth_rate_1_s",
+)
+
+
+def _sorted_eigenvalues(values):
+    """Largest real part first, ties by imaginary part, largest first (as
+    ``stability.eigenvalues``)."""
+    order = np.lexsort((-values.imag, -values.real), axis=-1)
+    return np.take_along_axis(values, order, axis=-1)
+
+
+def _eig_cols(values, k) -> dict:
+    cols = {}
+    for i in range(k):
+        cols[f"eig_{i + 1}_re"], cols[f"eig_{i + 1}_im"] = values[:, i].real.copy(), values[:, i].imag.copy()
+    return cols
+
+
+def _values(name: str, value, limit: int, option: str | None = None) -> np.ndarray:
+    """The values asked for (values, ranges, units) as one flat array,
+    refused before they are built when there are more than ``limit``."""
+    option = option or name
+    try:
+        axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
+    except ParameterError as exc:
+        raise ParameterError(str(exc).replace(name, option, 1), option) from None
+    if len(axis) > limit:
+        raise ParameterError(f"a two-wheeler takes at most {limit} values of {option} at once (got {len(axis)}): "
+                             "split the range", option)
+    return np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
+
+
+def _speeds(speed, limit: int) -> np.ndarray:
+    """The rear contact's speeds asked for."""
+    if speed is None:
+        raise ParameterError("give speed: the rear contact's speed(s) in m/s", "speed", missing=True)
+    return _values("rear_speed", speed, limit, "speed")
+
+
+def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
+    """Upright straight running on flat ground: the benchmark's eigenvalues
+    against speed (Meijaard et al. 2007, Table 2 and Figure 3; docs/two-wheeler.md sec. 7)."""
+    from deathsphere.physics.two_wheeler import linear, stability
+
+    v = _speeds(speed, MAX_STRAIGHT_SPEEDS)
+    m = linear.benchmark_matrices(t.parameters())
+    if steer == "free":
+        values = _sorted_eigenvalues(linear.eigenvalues(m, v))
+    else:
+        # steer locked: the lean row alone, M_ll s^2 + v C1_ll s + g K0_ll + v^2 K2_ll = 0
+        a, b, c = m.M[0, 0], v * m.C1[0, 0], m.g * m.K0[0, 0] + v**2 * m.K2[0, 0]
+        root = np.sqrt((b * b - 4 * a * c).astype(complex))
+        values = _sorted_eigenvalues(np.stack([(-b + root) / (2 * a), (-b - root) / (2 * a)], axis=-1))
+    verdicts, growth = stability.verdict(values)
+    if summary:
+        ok = verdicts == "stable"
+        return Table({"machine": np.array([t.name], dtype=object), "g_m_s2": np.array([t.g]),
+                      "weave_speed_m_s": np.array([linear.weave_speed(m)]),
+                      "capsize_speed_m_s": np.array([linear.capsize_speed(m)]),
+                      "speeds_tried": np.array([v.size], dtype=np.int64),
+                      "speeds_stable": np.array([int(ok.sum())], dtype=np.int64)})
+    n = v.size
+    cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, t.name, dtype=object),
+            "steer": np.full(n, steer, dtype=object), "speed_m_s": v, "g_m_s2": np.full(n, t.g),
+            "stability": verdicts.astype(object), "growth_rate_1_s": growth}
+    return Table(cols | _eig_cols(values, values.shape[-1]))
+
+
+def _lanes(theta, height, r) -> tuple[np.ndarray, np.ndarray, bool]:
+    """The rear contacts' theta (rad) asked for, and their values as given."""
+    if (theta is None) == (height is None):
+        raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
+                             "theta", missing=theta is None)
+    if theta is not None:
+        given = _values("theta", theta, MAX_TURN_REQUESTS)
+        return np.radians(given), given, True
+    given = _values("height", height, MAX_TURN_REQUESTS)
+    if np.any(given > 2 * r):
+        bad = float(given[np.argmax(given > 2 * r)])
+        raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
+                             f"(got {bad:g})", "height")
+    return np.arccos(np.clip(given / r - 1.0, -1.0, 1.0)), given, False
+
+
+def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, stability: bool) -> Table:
+    """Every steady turn at each lane (rear contact's theta or height) and
+    speed or steer torque, one row each, and its stability
+    (docs/two-wheeler.md sec. 8)."""
+    from deathsphere.physics.two_wheeler import stability as tw_stability
+    from deathsphere.physics.two_wheeler import steady
+
+    r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
+    if r is None:
+        raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    lane, lane_given, by_theta = _lanes(theta, height, r)
+    if speed is not None and steer_torque is not None:
+        raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
+    by_torque = steer_torque is not None
+    if speed is None and steer_torque is None:
+        raise ParameterError("give speed (the rear contact's, m/s) or steer_torque (N m; 0: hands-free)", "speed")
+    value = _values("steer_torque", steer_torque, MAX_TURN_REQUESTS) if by_torque else _speeds(speed, MAX_TURN_REQUESTS)
+    if lane.size * value.size > MAX_TURN_REQUESTS:
+        raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes and "
+                             f"speeds (or torques) at once (got {lane.size} x {value.size}): split the grid",
+                             "steer_torque" if by_torque else "speed")
+    lanes, values = (x.reshape(-1) for x in np.meshgrid(lane, value, indexing="ij"))
+    given = np.repeat(lane_given, value.size)
+    p = t.parameters()
+    kwargs = {"torque": values} if by_torque else {"speed": values}
+    if stability:
+        out = tw_stability.turns_with_stability(lanes, p, surface="sphere", r=r, head=t.head, **kwargs)
+    else:
+        out = (steady.turns_for_torque(lanes, values, p, "sphere", r, t.head) if by_torque
+               else steady.turns_for_speed(lanes, values, p, "sphere", r, t.head))
+    found = np.isfinite(out["lean"])
+    counts = found.sum(axis=1)
+    req = np.repeat(np.arange(lanes.size), np.maximum(counts, 1))
+    # each request's turns in order of lean, or its one row saying why none
+    slot = np.concatenate([np.flatnonzero(f) if f.any() else [0] for f in found]).astype(np.int64)
+    has = found[req, slot]
+    n = req.size
+
+    def pick(key):
+        return np.where(has, np.asarray(out[key], float)[req, slot], np.nan)
+
+    lean = pick("lean")
+    th = lanes[req]
+    alpha = np.degrees(th) - 90.0 - np.degrees(lean)
+    contact = pick("contact") == 1
+    status = np.where(~has, "no_orbit", np.where(contact, "ok", "no_contact")).astype(object)
+    reason = np.where(has, np.where(contact, "", "a wheel would lift: its normal force does not push"),
+                      np.asarray(out["reason"], dtype=object)[req]).astype(object)
+    omega = pick("omega")
+    with np.errstate(divide="ignore"):
+        period = np.where(has, 2 * np.pi / np.abs(np.where(omega == 0, np.nan, omega)), np.nan)
+    cols = {
+        "input_row": req + 1, "machine": np.full(n, t.name, dtype=object),
+        "theta_deg": given[req] if by_theta else np.degrees(th), "alpha_deg": np.where(has, alpha, np.nan),
+        "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
+        "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, t.g),
+        "status": status, "reason": reason, "omega_rad_s": omega, "period_s": period,
+        "v_cm_m_s": pick("v_cm"), "v_cm_km_h": np.round(pick("v_cm") * 3.6, 9), "v_contact_m_s": pick("v_rear"),
+        "load_g": pick("load_g"), "head_clearance_m": pick("head_clearance"),
+        "steer_deg": np.degrees(pick("steer")), "steer_torque_n_m": pick("steer_torque"),
+        "pitch_deg": np.degrees(pick("pitch")),
+        "normal_rear_per_mass_m_s2": pick("normal_rear"), "normal_front_per_mass_m_s2": pick("normal_front"),
+        # inf ("no push") is empty, as in every table
+        "mu_required_rear": np.where(np.isinf(pick("mu_required_rear")), np.nan, pick("mu_required_rear")),
+        "mu_required_front": np.where(np.isinf(pick("mu_required_front")), np.nan, pick("mu_required_front")),
+        "friction_rear_per_mass_m_s2": pick("friction_rear"), "friction_front_per_mass_m_s2": pick("friction_front"),
+        "lean_surface_deg": np.degrees(lean), "v_rear_m_s": pick("v_rear"), "v_front_m_s": pick("v_front"),
+        "theta_front_deg": np.degrees(pick("theta_front")), "steer": np.full(n, steer, dtype=object),
+    }
+    # what the request fixes is echoed as asked, not as recomputed (docs/contract.md)
+    if by_torque:
+        cols["steer_torque_n_m"] = np.where(has, values[req], np.nan)
+    else:
+        cols["v_rear_m_s"] = cols["v_contact_m_s"] = np.where(has, values[req], np.nan)
+    k = EIGENVALUES[("sphere", steer)]
+    if stability:
+        ev = np.where(has[:, None], out[f"eigenvalues_{steer}"][req, slot], np.nan + 0j)
+        cols["stability"] = np.where(has, out[f"stability_{steer}"][req, slot], "").astype(object)
+        cols["growth_rate_1_s"] = np.where(has, out[f"growth_{steer}"][req, slot], np.nan)
+    else:
+        ev = np.full((n, k), np.nan + 0j)
+        cols["stability"], cols["growth_rate_1_s"] = np.full(n, "", dtype=object), np.full(n, np.nan)
+    return Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k))
+
+
+def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torque=None, flat=False, steer=None,
+                     r=R, diameter=None, g=G, summary=False, stability=True) -> Table:
+    """``ride`` for a two-wheeler (:func:`deathsphere.ride` with ``flat``,
+    ``steer`` or ``steer_torque``; docs/two-wheeler.md sec. 10): on flat
+    ground the eigenvalues of upright straight running at each rear contact
+    speed (``summary``: the weave and capsize speeds); on the globe every
+    steady turn at each lane and speed (or held with each steer torque),
+    one row each, with its stability, the steer ``free`` (under its steady
+    torque held constant; default) or ``locked``."""
+    t = as_two_wheeler(machine)
+    if steer is None:
+        steer = "free"
+    if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
+        raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} (got {steer!r})", "steer")
+    steer = steer.strip().lower()
+    if g is not G:
+        from dataclasses import replace
+
+        t = replace(t, g=float(checked_array("g", g)) if np.ndim(g) == 0 else _one_g(g))
+    if flat:
+        if theta is not None or height is not None or diameter is not None or r is not R:
+            raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
+                                 "or diameter)", "flat")
+        if steer_torque is not None:
+            raise ParameterError("on flat ground upright straight running is hands-free at every speed: "
+                                 "steer_torque is for the globe", "steer_torque")
+        return _straight(t, speed, steer, summary)
+    if summary:
+        raise ParameterError("the two-wheeler's summary (weave and capsize speeds) is for flat ground: pass flat",
+                             "summary")
+    return _turns(t, theta, height, speed, steer_torque, sphere_radius(r, diameter), steer, stability)
+
+
+def _one_g(g):
+    raise ParameterError("a two-wheeler takes one gravity per call", "g")

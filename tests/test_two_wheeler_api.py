@@ -1,0 +1,158 @@
+"""The two-wheeler through the Python API: deathsphere.ride(..., flat=True)
+reproduces the benchmark of Meijaard, Papadopoulos, Ruina & Schwab (2007)
+(its Table 2 eigenvalues, weave and capsize speeds: the published numbers
+held by tests/physics/test_two_wheeler.py), deathsphere.TwoWheeler takes a
+user's parameters and refuses bad ones in one line, and the globe's turns
+come one row per turn, every request answered in order."""
+
+import importlib.util
+import math
+from dataclasses import asdict
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import deathsphere
+from deathsphere import ParameterError
+from deathsphere.api.two_wheelers import TWO_WHEELERS, TwoWheeler
+
+
+def _published():
+    path = Path(__file__).resolve().parent / "physics" / "test_two_wheeler.py"
+    spec = importlib.util.spec_from_file_location("published_benchmark", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+PUBLISHED = _published()
+#: A 16-foot globe's radius, m.
+GLOBE = 16 * 0.3048 / 2
+
+
+def _eigenvalues(row, k):
+    return np.array([row[f"eig_{i}_re"] + 1j * row[f"eig_{i}_im"] for i in range(1, k + 1)])
+
+
+def test_flat_rows_are_the_benchmarks_table_2():
+    speeds = sorted(PUBLISHED.TABLE2)
+    t = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed=speeds)
+    assert list(t["speed_m_s"]) == speeds and list(t["input_row"]) == [1, 2, 3, 4]
+    for i, v in enumerate(speeds):
+        published = np.array(PUBLISHED.TABLE2[v])
+        expected = published[np.lexsort((-published.imag, -published.real))]   # largest real part first
+        got = _eigenvalues(t[i], 4)
+        assert np.max(np.abs(got - expected)) < 1e-12
+        assert t["growth_rate_1_s"][i] == pytest.approx(expected.real.max(), abs=1e-12)
+    # 0 and 4 m/s capsize or weave; 5 m/s is in the self-stable window; 10 m/s capsizes slowly
+    assert list(t["stability"]) == ["unstable", "unstable", "stable", "unstable"]
+
+
+def test_the_summary_gives_the_published_weave_and_capsize_speeds():
+    s = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed="0:10:0.5", summary=True)
+    assert abs(s["weave_speed_m_s"][0] - PUBLISHED.WEAVE) < 1e-10
+    assert abs(s["capsize_speed_m_s"][0] - PUBLISHED.CAPSIZE) < 1e-10
+    # 4.5, 5.0, 5.5 and 6.0 m/s lie in the window
+    assert s["speeds_tried"][0] == 21 and s["speeds_stable"][0] == 4
+
+
+def test_the_locked_steer_on_flat_ground_leaves_the_lean_alone():
+    # the lean row alone: M_ll s^2 + g K0_ll = 0 (C1_ll = K2_ll = 0, published)
+    t = deathsphere.ride(machine="benchmark-bicycle", flat=True, steer="locked", speed=[0.0, 7.0])
+    rate = math.sqrt(-9.81 * PUBLISHED.PUBLISHED["K0"][0][0] / PUBLISHED.PUBLISHED["M"][0][0])
+    for i in range(2):
+        assert np.max(np.abs(_eigenvalues(t[i], 2) - [rate, -rate])) < 1e-10
+    assert "eig_3_re" not in t
+
+
+def test_a_users_two_wheeler_with_the_benchmarks_numbers_is_the_benchmark():
+    mine = TwoWheeler(**TWO_WHEELERS["benchmark-bicycle"].benchmark_values(), name="mine")
+    a = deathsphere.ride(machine=mine, flat=True, speed=[3.0, 5.0])
+    b = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed=[3.0, 5.0])
+    assert list(a["machine"]) == ["mine", "mine"]
+    assert np.array_equal(a["eig_1_re"], b["eig_1_re"])
+    # a heavier front frame moves the weave speed
+    heavier = TwoWheeler(**{**mine.benchmark_values(), "mH": 8.0})
+    s = deathsphere.ride(machine=heavier, flat=True, speed=5.0, summary=True)
+    assert abs(s["weave_speed_m_s"][0] - PUBLISHED.WEAVE) > 1e-3
+
+
+@pytest.mark.parametrize("change, words", [
+    ({"w": 0.0}, "w (wheel base) must be a finite number > 0 m"),
+    ({"rF": math.nan}, "rF must be a finite number"),
+    ({"lam": 2.0}, "lam (steer axis tilt) must be between -pi/2 and pi/2"),
+    ({"mB": -1.0}, "mB must be >= 0"),
+    ({"IBxz": 10.0}, "IBxz (10 kg m^2) is too large"),
+    ({"head": (1.0,)}, "head must be two finite numbers"),
+    ({"name": "a,b"}, "holds a comma"),
+])
+def test_a_bad_two_wheeler_is_refused_in_one_line(change, words):
+    values = {**asdict(TWO_WHEELERS["benchmark-bicycle"]), **change}
+    with pytest.raises(ParameterError) as err:
+        TwoWheeler(**values)
+    assert words in str(err.value) and "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    ({"machine": "stunt125", "flat": True, "speed": 5}, "'stunt125' is a single-contact machine"),
+    ({"machine": "benchmark-bicycle", "flat": True, "speed": 5, "theta": 90}, "flat ground has no lane"),
+    ({"machine": "benchmark-bicycle", "flat": True, "speed": -1}, "speed (rear contact speed) must be"),
+    ({"machine": "benchmark-bicycle", "steer": "sideways", "theta": 90, "speed": 5}, "steer must be one of"),
+    ({"machine": "benchmark-bicycle", "steer": "free", "theta": 90}, "give speed"),
+    ({"machine": "benchmark-bicycle", "steer": "free", "theta": 90, "speed": 5, "mass": 80}, "does not take mass"),
+    ({"machine": "benchmark-bicycle", "steer_torque": 0, "theta": 90, "speed": 5}, "not both"),
+    ({"machine": "benchmark-bicycle", "flat": "yes", "speed": 5}, "flat must be True or False"),
+    ({"machine": "benchmark-bicycle", "steer": "free", "theta": "10:170:0.01", "speed": "1:20:0.1"},
+     "at most 30000 lanes and speeds"),
+    ({"machine": "benchmark-bicycle", "flat": True, "speed": "0:100:1e-5"}, "at most 2000000 values of speed"),
+])
+def test_bad_combinations_are_refused_in_one_line(kwargs, words):
+    with pytest.raises(ParameterError) as err:
+        deathsphere.ride(**kwargs)
+    assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_without_flat_or_steer_the_preset_is_still_the_single_contact_machine():
+    t = deathsphere.ride(90, speed="30km/h", machine="benchmark-bicycle", diameter="16ft")
+    assert "alpha_deg" in t and "steer_deg" not in t
+
+
+def test_hands_free_turns_one_row_each_are_held_without_torque_at_their_speed():
+    free = deathsphere.ride(machine="benchmark-bicycle", steer_torque=0.0, height=1.0, diameter="16ft")
+    assert len(free) >= 2 and set(free["input_row"]) == {1} and set(free["status"]) == {"ok"}
+    # the same lanes asked by speed: the torque found by the other equation vanishes there
+    by_speed = deathsphere.ride(machine="benchmark-bicycle", steer="free", height=1.0, diameter="16ft",
+                                speed=free["v_rear_m_s"])
+    for i in range(len(free)):
+        rows = by_speed[by_speed["input_row"] == i + 1]
+        match = np.argmin(np.abs(rows["lean_surface_deg"] - free["lean_surface_deg"][i]))
+        assert abs(rows["steer_torque_n_m"][match]) < 1e-8
+        assert rows["steer_deg"][match] == pytest.approx(free["steer_deg"][i], abs=1e-8)
+    assert all(len(_eigenvalues(free[i], 6)) == 6 for i in range(len(free)))
+
+
+def test_every_request_on_the_globe_gets_its_rows_in_order():
+    t = deathsphere.ride(machine="benchmark-bicycle", steer="locked", theta=[100.0, 0.0], r=GLOBE,
+                         speed=[0.0, 8.0])
+    rows = list(t["input_row"])
+    assert rows == sorted(rows) and set(rows) == {1, 2, 3, 4}
+    first, pole = t[t["input_row"] == 1], t[t["input_row"] == 3]
+    assert list(first["status"]) == ["no_orbit"] and "speed must be finite and positive" in first["reason"][0]
+    assert list(pole["status"]) == ["no_orbit"] and "poles" in pole["reason"][0]
+    assert "eig_4_re" in t and "eig_5_re" not in t       # steer locked on the sphere: four eigenvalues
+    turns = t[t["input_row"] == 2]
+    assert set(turns["v_rear_m_s"]) == {8.0} and set(turns["v_contact_m_s"]) == {8.0}   # as asked
+    assert np.all(np.isfinite(turns["growth_rate_1_s"]))
+    # the lap: the period is the time round at the rear contact's speed on its parallel
+    radius = GLOBE * math.sin(math.radians(100.0))
+    assert turns["period_s"][0] == pytest.approx(2 * math.pi * radius / 8.0, rel=1e-9)
+
+
+def test_machines_lists_the_two_wheeler_with_its_geometry():
+    t = deathsphere.machines_table()
+    two = t[t["kind"] == "two-wheeler"]
+    assert list(two["name"]) == ["benchmark-bicycle"]
+    assert two["wheel_base_m"][0] == 1.02 and two["trail_m"][0] == 0.08
+    assert two["steer_axis_tilt_deg"][0] == pytest.approx(18.0, abs=1e-12)
+    assert two["mass_kg"][0] == 94.0 and "Meijaard" in two["source"][0]
