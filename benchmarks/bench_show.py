@@ -21,7 +21,7 @@ import numpy as np
 for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):  # one core, as the target says
     os.environ.setdefault(name, "1")
 
-from deathsphere.api.show import pairs_table, show  # noqa: E402
+from deathsphere.api.shows import pairs_table, show  # noqa: E402
 
 PAIRS_TARGET_S = 1.0
 FALLS_TARGET_S = 60.0

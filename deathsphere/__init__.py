@@ -42,6 +42,7 @@ _HOME = {
     "vertical_input": "api",
     "vertical_sweep": "api",
     "ride": "api",
+    "show": "api",
     "ride_summary": "api",
     "ride_sweep": "api",
     "Machine": "api",
@@ -58,7 +59,7 @@ _HOME = {
 }
 
 #: Submodules reachable as attributes, as when this package imported them.
-_MODULES = ("api", "model", "params", "constants", "physics", "show")
+_MODULES = ("api", "model", "params", "constants", "physics")
 
 __all__ = [*_HOME, "__version__"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

@@ -71,9 +71,9 @@ ALLOWED = {
     "render": {"table", "model", "constants", "params"},
     "viewer": {"table", "render"},
     "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
-            "parallel", "cluster", "units", "errors", "show"},
-    # the show's parts build on ride's machine (api.rides, api.machines); the package is callable as api.show
-    "show": {"physics", "api", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
+            "parallel", "cluster", "units", "errors", "act"},
+    # the show's parts (an act of several riders) build on ride's machine (api.rides, api.machines)
+    "act": {"physics", "api", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
     "__main__": {"cli"},
     "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",
             "memory", "threads"},

@@ -34,7 +34,7 @@ def test_readme_command_runs(run, line, stdin, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)     # a command with --output FILE writes it here
     args = shlex.split(line)[1:]
     if args[0] == "show":  # the plan a crew writes: the one `show --example` prints
-        from deathsphere.api.show import EXAMPLE_PLAN
+        from deathsphere.api.shows import EXAMPLE_PLAN
 
         for arg in args[1:]:
             if arg.endswith(".toml"):

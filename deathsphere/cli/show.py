@@ -1,5 +1,5 @@
 """``deathsphere show``: an act of several riders sharing one globe
-(:func:`deathsphere.api.show.show`, docs/show.md).
+(:func:`deathsphere.api.shows.show`, docs/show.md).
 
 The command parses, calls the API and renders; the plan is validated by
 the API, once, before any work (a bad plan is one line naming the rider
@@ -190,7 +190,7 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
     table = table.lower() if table else None
     _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output)
     if example:
-        from deathsphere.api.show import EXAMPLE_PLAN
+        from deathsphere.api.shows import EXAMPLE_PLAN
 
         click.echo(EXAMPLE_PLAN, nl=not EXAMPLE_PLAN.endswith("\n"))
         return
@@ -200,7 +200,7 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
         if fmt is not None:
             raise click.UsageError(f"--output {output} draws the act: --format does not apply")
         _preflight_view(output)
-    from deathsphere.api.show import show
+    from deathsphere.api.shows import show
 
     options = {k: v for k, v in (("duration", duration), ("phase", phase and phase.lower())) if v is not None}
     result = show(plan, **options)

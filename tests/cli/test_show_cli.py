@@ -10,7 +10,7 @@ import re
 import pytest
 from rich.cells import cell_len
 
-from deathsphere.api.show import EXAMPLE_PLAN, FALL_COLUMNS, PAIR_COLUMNS, RIDER_COLUMNS
+from deathsphere.api.shows import EXAMPLE_PLAN, FALL_COLUMNS, PAIR_COLUMNS, RIDER_COLUMNS
 from deathsphere.cli.show import parse_fail
 
 ANSI = re.compile(r"\x1b\[[0-9;]*m")

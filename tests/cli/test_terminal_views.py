@@ -186,7 +186,7 @@ def provided(args: tuple, folder: Path) -> tuple:
     --example`` prints); a dask scheduler's address is left out (the
     output is that of a local run, docs/contract.md)."""
     if args and args[0] == "show":
-        from deathsphere.api.show import EXAMPLE_PLAN
+        from deathsphere.api.shows import EXAMPLE_PLAN
 
         for arg in args[1:]:
             if arg.endswith(".toml") and not (folder / arg).exists():

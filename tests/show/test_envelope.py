@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from deathsphere.show.envelope import point_segment_distance, segment_distance
+from deathsphere.act.envelope import point_segment_distance, segment_distance
 
 
 def _brute(p0, p1, q0, q1, n=401):

@@ -50,7 +50,7 @@ def test_the_victim_clearance_against_sampling_the_flight():
     assert rows[0]["outcome"] == "falls"
     lane = {x.name: x for x in act.lanes}
     start, flight = rows[0]["t_contact_lost_s"], rows[0]["fall_time_s"]
-    from deathsphere.show.falls import simulate_falls
+    from deathsphere.act.falls import simulate_falls
 
     res = simulate_falls(act.lanes, act.plan.globe, [2], [0.1], [0.2])
     x0, v0 = res["x0"][:, 0], res["v0"][:, 0]

@@ -9,8 +9,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import deathsphere
-from deathsphere.show.lanes import build_lanes
-from deathsphere.show.plan import read_plan
+from deathsphere.act.lanes import build_lanes
+from deathsphere.act.plan import read_plan
 
 R = 16 * 0.3048 / 2
 PLAN = {"globe": {"radius": R, "mu": 0.9, "max_g": 8},

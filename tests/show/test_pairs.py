@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 import deathsphere
-from deathsphere.show.lanes import build_lanes
-from deathsphere.show.pairs import FIRST_STEP_M, common_period, least_clearance
-from deathsphere.show.plan import read_plan
+from deathsphere.act.lanes import build_lanes
+from deathsphere.act.pairs import FIRST_STEP_M, common_period, least_clearance
+from deathsphere.act.plan import read_plan
 
 R = 16 * 0.3048 / 2
 

@@ -6,7 +6,7 @@ import math
 import pytest
 
 import deathsphere
-from deathsphere.show.plan import EXAMPLE_PLAN, read_plan
+from deathsphere.act.plan import EXAMPLE_PLAN, read_plan
 
 BASE = {"globe": {"diameter": "16ft", "mu": 0.9, "max_g": 8, "min_clearance": "15cm"},
         "rider": [{"name": "Ana", "machine": "stunt125", "lane": "horizontal", "height": "2.0m", "speed": "32km/h",

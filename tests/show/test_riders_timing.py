@@ -70,9 +70,9 @@ def test_drift_of_two_riders_in_one_lane_closed_form():
 
 
 def test_phase_auto_is_at_least_as_good_as_every_phase_tried():
-    from deathsphere.show.lanes import build_lanes
-    from deathsphere.show.pairs import least_clearance
-    from deathsphere.show.plan import read_plan
+    from deathsphere.act.lanes import build_lanes
+    from deathsphere.act.pairs import least_clearance
+    from deathsphere.act.plan import read_plan
 
     looper = {"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s", "phase": 0}
     # the horizontal lap equal to the loop's (1.274 s): commensurate, one lap is the act

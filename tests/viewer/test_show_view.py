@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from view_page import body_attributes, dump_dom
 
-from deathsphere.api.show import EXAMPLE_PLAN, show
+from deathsphere.api.shows import EXAMPLE_PLAN, show
 from deathsphere.viewer.html import decode_array
 from deathsphere.viewer.show_scene import MAX_MOVE_R, act_data, act_scene, render_act_html, write_act_view
 

@@ -12,7 +12,7 @@ already timed, in plan order) with one table of distances.  The phase with
 the greatest sampled least clearance is taken; the windows are the runs of
 candidate phases whose sampled least clearance is at least min_clearance
 (to the step's resolution: the chosen phase's pairs are then found to 1 mm
-by :mod:`deathsphere.show.pairs`).
+by :mod:`deathsphere.act.pairs`).
 
 Drift: rider A's clock runs 1 +- error times the plan's (his lane unchanged,
 only its timing).  Two horizontal lanes of one rate then drift apart in
@@ -31,8 +31,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from deathsphere.show.envelope import segment_distance
-from deathsphere.show.pairs import SAME_RATE_RTOL, SPLIT, TOLERANCE_M, is_geometric
+from deathsphere.act.envelope import segment_distance
+from deathsphere.act.pairs import SAME_RATE_RTOL, SPLIT, TOLERANCE_M, is_geometric
 
 #: Candidate phases per lap of a vertical rider (and samples per lap of the act).
 PHASE_STEPS = 180
@@ -150,7 +150,7 @@ def drift_time(a, b, min_clearance: float, error: float = DRIFT_ERROR) -> float:
     """Time [s] until the pair (a, b) first comes closer than min_clearance
     with a's clock 1 + error or 1 - error times the plan's, the sooner of
     the two; inf: never (module docstring)."""
-    from deathsphere.show.envelope import clearance
+    from deathsphere.act.envelope import clearance
 
     if is_geometric(a, b):
         return math.inf

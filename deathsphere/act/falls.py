@@ -29,7 +29,7 @@ from deathsphere.physics.fall import (
     loop_departure,
     loop_state,
 )
-from deathsphere.show.envelope import point_segment_distance
+from deathsphere.act.envelope import point_segment_distance
 
 #: Instants of each flight at which the clearance to every other rider is sampled.
 FLIGHT_SAMPLES = 64
@@ -151,10 +151,10 @@ def _victims(lanes, rider, res, flight, samples: int):
 
 def refine_victim(lane_f, victim, x0, v0, t_lost: float, flight: float, g: float):
     """(least clearance [m] to 1 mm, when [s]) of one flight against one
-    envelope (:func:`deathsphere.show.pairs.minimise` with the bound: the
+    envelope (:func:`deathsphere.act.pairs.minimise` with the bound: the
     flying point's greatest speed, at the start or the landing, plus the
     envelope's)."""
-    from deathsphere.show.pairs import minimise
+    from deathsphere.act.pairs import minimise
 
     radii = 0.5 * (lane_f.width_m + victim.width_m)
     x0, v0 = np.asarray(x0, dtype=float).reshape(3, 1), np.asarray(v0, dtype=float).reshape(3, 1)

@@ -31,7 +31,7 @@ from scipy.special import ellipj, ellipk, ellipkinc
 from deathsphere.api.machines import Machine
 from deathsphere.api.rides import ride
 from deathsphere.errors import ParameterError
-from deathsphere.show.plan import Globe, Plan, Rider
+from deathsphere.act.plan import Globe, Plan, Rider
 
 #: Statuses with which a vertical lane is not ridden at all (the plan is refused).
 LOOP_REFUSED = ("no_fit", "no_orbit", "no_contact")

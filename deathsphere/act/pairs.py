@@ -25,7 +25,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from deathsphere.show.envelope import clearance, segment_distance
+from deathsphere.act.envelope import clearance, segment_distance
 
 #: Every least clearance is found to this [m].
 TOLERANCE_M = 1e-3

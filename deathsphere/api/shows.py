@@ -11,8 +11,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from deathsphere.errors import ParameterError
-from deathsphere.show.lanes import Lane, build_lanes
-from deathsphere.show.plan import EXAMPLE_PLAN, Plan, read_plan
+from deathsphere.act.lanes import Lane, build_lanes
+from deathsphere.act.plan import EXAMPLE_PLAN, Plan, read_plan
 from deathsphere.table import Table
 
 __all__ = ["show", "ShowResult", "EXAMPLE_PLAN", "RIDER_COLUMNS", "PAIR_COLUMNS", "FALL_COLUMNS",
@@ -79,7 +79,7 @@ class ShowResult:
         and that rider's envelope during the flight (docs/show.md).  Columns
         :data:`FALL_COLUMNS`, one row per other rider (one row with an empty
         victim when he is alone)."""
-        from deathsphere.show.falls import refine_victim, simulate_falls
+        from deathsphere.act.falls import refine_victim, simulate_falls
 
         names = [lane.name for lane in self.lanes]
         if rider not in names:
@@ -116,7 +116,7 @@ class ShowResult:
         (an empty victim: any), how many falls, how many hit, the fraction,
         and the worst landing speed; the last row (both empty) all falls."""
         from deathsphere.parallel import ordered_map
-        from deathsphere.show.falls import fall_chunk
+        from deathsphere.act.falls import fall_chunk
 
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= MAX_FALLS:
             raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
@@ -154,7 +154,7 @@ def _number(name: str, value, lo: float, hi: float) -> float:
 
 def _fall_base(res: dict, i: int, name: str, t: float, fraction: float) -> dict:
     """The columns of a fall before the victim's, for fall i of ``res``."""
-    from deathsphere.show.falls import outcome_names
+    from deathsphere.act.falls import outcome_names
 
     return {"rider": name, "t_fail_s": t, "speed_fraction": fraction,
             "outcome": str(outcome_names(res["outcome"][i:i + 1])[0]),
@@ -189,7 +189,7 @@ def _rows_table(rows: list[dict], columns) -> Table:
 
 def _outcomes_table(result: ShowResult, res: dict, rider, t, fraction) -> Table:
     """One row per fall of the Monte Carlo, its victim the closest rider."""
-    from deathsphere.show.falls import outcome_names
+    from deathsphere.act.falls import outcome_names
 
     names = np.array([lane.name for lane in result.lanes], dtype=object)
     clear = res["clearance"]
@@ -251,7 +251,7 @@ def _summary_table(result: ShowResult, res: dict, rider) -> Table:
 
 def _rider_row(lane: Lane, rider, band) -> dict:
     """The riders table's row of one lane (ride's row, the speed band)."""
-    from deathsphere.show.pairs import contact_angles
+    from deathsphere.act.pairs import contact_angles
 
     row, nan = lane.row, math.nan
     theta0, phi0 = contact_angles(lane, 0.0)
@@ -278,7 +278,7 @@ def _rider_row(lane: Lane, rider, band) -> dict:
 
 def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
     """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per rider in the plan's order."""
-    from deathsphere.show.margins import speed_bands
+    from deathsphere.act.margins import speed_bands
 
     planned = [r.speed if r.lane == "horizontal" else r.v_top for r in plan.riders]
     bands = speed_bands(lanes, plan.globe, planned)
@@ -290,8 +290,8 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
     """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
     b in the plan), its least clearance over the act, when and where, the
     verdict and the drift time (NaN: never)."""
-    from deathsphere.show.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict
-    from deathsphere.show.timing import drift_time
+    from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict
+    from deathsphere.act.timing import drift_time
 
     over_time = act_pairs(lanes)
     found = dict(zip(over_time, ((c, t, "act") for c, t in least_clearances(lanes, over_time, duration))))
@@ -325,8 +325,8 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
     >>> str(act.riders["status"][0]), act.pairs.columns["rider_a"].size
     ('ok', 0)
     """
-    from deathsphere.show.pairs import act_duration
-    from deathsphere.show.timing import auto_phases
+    from deathsphere.act.pairs import act_duration
+    from deathsphere.act.timing import auto_phases
 
     if phase not in PHASES:
         raise ParameterError(f"phase must be plan or auto (got {phase!r})", "phase")

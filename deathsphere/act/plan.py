@@ -216,7 +216,7 @@ def read_plan(plan) -> Plan:
     the globe) and the key: an unknown key, an unknown machine, a rider
     outside the globe, duplicate names, no riders, a value outside its
     range or of the wrong unit.  (A vertical lane that is not feasible at
-    all is refused when the lanes are built: :func:`deathsphere.show.lanes.build_lanes`.)"""
+    all is refused when the lanes are built: :func:`deathsphere.act.lanes.build_lanes`.)"""
     import tomllib
 
     base_dir = None
