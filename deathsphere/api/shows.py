@@ -322,8 +322,8 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
     >>> import deathsphere
     >>> act = deathsphere.show({"globe": {"diameter": "16ft", "mu": 0.9}, "rider": [
     ...     {"name": "Ana", "lane": "horizontal", "height": "2m", "speed": "32km/h"}]})
-    >>> str(act.riders["status"][0]), act.pairs.columns["rider_a"].size
-    ('ok', 0)
+    >>> act.riders["status"].tolist(), len(act.pairs)
+    (['ok'], 0)
     """
     from deathsphere.act.pairs import act_duration
     from deathsphere.act.timing import auto_phases
