@@ -31,7 +31,7 @@ from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 __all__ = ["STATUSES", "rider_torque", "contact_forces", "simulate"]
 
 #: How a run ends.
-STATUSES = ("completed", "contact_lost", "slips")
+STATUSES = ("completed", "contact_lost", "slips", "failed")
 #: The time step of the mass centre's acceleration by central differences (s).
 _H = 1e-4
 
@@ -131,20 +131,21 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     lost.direction = slip.direction = -1
     events = [lost] + ([slip] if np.isfinite(mu) else [])
     t_eval = np.linspace(0.0, t_end, max(int(n_points), 2))
-    sol = solve_ivp(rates, (0.0, t_end), y0, method=method, t_eval=t_eval, events=events, rtol=rtol,
-                    atol=rtol if atol is None else atol)
-    status, t_event = "completed", np.nan
-    for name, times in zip(("contact_lost", "slips"), sol.t_events):
-        if len(times) and not t_event <= times[0]:
-            status, t_event = name, float(times[0])
-    if not sol.success and status == "completed":
-        status = "failed"
-    ts, Y = sol.t, sol.y
-    if status != "completed":
-        # the event's state closes the series
-        t_last = sol.t_events[STATUSES.index(status) - 1][0]
-        y_last = sol.y_events[STATUSES.index(status) - 1][0]
-        ts, Y = np.append(ts, t_last), np.concatenate([Y, y_last[:, None]], axis=1)
+    # an event already past at the start is not a crossing: solve_ivp would never see it
+    start = [e(0.0, y0) for e in events]
+    if min(start) <= 0:
+        status, t_event, ts, Y, nfev = STATUSES[1 + int(np.argmin(start))], 0.0, np.zeros(1), y0[:, None], 0
+    else:
+        sol = solve_ivp(rates, (0.0, t_end), y0, method=method, t_eval=t_eval, events=events, rtol=rtol,
+                        atol=rtol if atol is None else atol)
+        status, t_event, ts, Y, nfev = "completed", np.nan, sol.t, sol.y, sol.nfev
+        for k, times in enumerate(sol.t_events):
+            if len(times) and not t_event <= times[0]:
+                # the event's state closes the series
+                status, t_event = STATUSES[1 + k], float(times[0])
+                ts, Y = np.append(ts, t_event), np.concatenate([Y, sol.y_events[k][:1].T], axis=1)
+        if not sol.success and status == "completed":
+            status = "failed"
     q, u_ind = Y[:8], Y[8:]
     u = motion.dependent_speeds(q, u_ind, values, surface)
     T = torque(Y)
@@ -165,7 +166,7 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
                "max_energy_drift": float(np.max(np.abs(series["energy_drift"]))),
                "max_constraint_residual": float(np.max(series["constraint_residual"])),
                "min_normal_rear": float(np.min(n_rear)), "min_normal_front": float(np.min(n_front)),
-               "n_evaluations": int(sol.nfev)}
+               "n_evaluations": int(nfev)}
     return series, summary
 
 
