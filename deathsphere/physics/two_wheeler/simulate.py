@@ -113,11 +113,18 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
         Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, torque(y), surface)
         return np.concatenate([u, np.linalg.solve(Mr, Fr)])
 
+    last = {}
+
     def forces(y):
-        q, u_ind = y[:8], y[8:]
-        u = motion.dependent_speeds(q, u_ind, values, surface)
-        udot, lam = motion.accelerations(q, u, values, torque(y), surface)
-        return contact_forces(q, u, udot, lam, p, r, surface)
+        # both events ask at the same state: computed once
+        key = y.tobytes()
+        if key not in last:
+            q, u_ind = y[:8], y[8:]
+            u = motion.dependent_speeds(q, u_ind, values, surface)
+            udot, lam = motion.accelerations(q, u, values, torque(y), surface)
+            last.clear()
+            last[key] = contact_forces(q, u, udot, lam, p, r, surface)
+        return last[key]
 
     def lost(t, y):
         n_rear, _, n_front, _ = forces(y)
