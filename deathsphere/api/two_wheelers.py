@@ -484,7 +484,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     from dataclasses import replace
 
     from deathsphere.api.arguments import checked_choice, checked_flag, checked_optional, checked_scalar
-    from deathsphere.api.simulation import METHODS, METHODS_LOWER
+    from deathsphere.simulation.runner import METHODS
     from deathsphere.physics.two_wheeler import motion, steady
     from deathsphere.physics.two_wheeler.simulate import simulate as integrate
 
@@ -520,7 +520,8 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     perturb = checked_scalar("perturb", perturb)
     periods = checked_scalar("periods", periods)
     points_per_period = int(checked_scalar("points_per_period", points_per_period))
-    method = METHODS[METHODS_LOWER.index(checked_choice("method", method, METHODS_LOWER))]
+    lower = tuple(m.lower() for m in METHODS)
+    method = METHODS[lower.index(checked_choice("method", method, lower))]
     rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
     mu = checked_scalar("mu", mu)
     if periods * points_per_period > MAX_SIMULATE_ROWS:
