@@ -462,7 +462,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                          atol=None) -> tuple[Table, Table]:
     """Integrate a two-wheeler's nonlinear equations on the globe: ``deathsphere
     simulate --machine benchmark-bicycle --steer free`` (beyond the paper;
-    docs/two-wheeler.md sec. 10a).
+    docs/two-wheeler.md sec. 10.1).
 
     From the steady turn at the rear contact's ``theta`` [deg] or
     ``height`` [m] and rear contact ``speed`` [m/s] (the turn ``branch``, 0

@@ -87,7 +87,7 @@ def _preflight_output(output) -> bool:
 @single("--steer", type=click.Choice(("free", "locked"), case_sensitive=False), default=None,
         help="A two-wheeler (--machine benchmark-bicycle) from its steady turn at --theta/--height and --speed "
              "(the rear contact's), the steer held by a torque: the turn's steady torque unless "
-             "--steer-gains or --hands-free (docs/two-wheeler.md sec. 10a).")
+             "--steer-gains or --hands-free (docs/two-wheeler.md sec. 10.1).")
 @single("--steer-gains", default=None, metavar="K_LEAN,K_RATE",
         help="A two-wheeler's rider: steer torque = steady torque + K_LEAN (lean - steady lean) + K_RATE "
              "lean rate [N m/rad, N m s/rad]; positive steers into the fall.")
@@ -238,7 +238,7 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
 def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt, **options):
     """``simulate`` of a two-wheeler: the API validates, the series (or the
     summary) is the output, the summary on a terminal (docs/two-wheeler.md
-    sec. 10a)."""
+    sec. 10.1)."""
     from deathsphere.viewer import view_format
 
     from deathsphere.api.two_wheelers import simulate_two_wheeler
@@ -246,7 +246,7 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
     series, summary = simulate_two_wheeler(
         "benchmark-bicycle" if machine is None else machine, steer="free" if steer is None else steer,
         steer_gains=steer_gains, hands_free=hands_free, **options)
-    title = f"{summary['machine'][0]}: simulated from its steady turn (docs/two-wheeler.md sec. 10a)"
+    title = f"{summary['machine'][0]}: simulated from its steady turn (docs/two-wheeler.md sec. 10.1)"
     fmt = choose_format(fmt)
     if output is not None:
         emit([summary if summary_only else series], view_format(output), output=output)

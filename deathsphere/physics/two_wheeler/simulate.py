@@ -1,7 +1,7 @@
 """The Whipple bicycle's nonlinear motion, integrated: from a steady turn
 (or straight running), kicked in lean, with the steer held by a steady
 torque, a simple rider or nothing (beyond the paper; docs/two-wheeler.md
-sec. 10a).
+sec. 10.1).
 
 The state is the eight coordinates and the three independent speeds (lean
 rate, rear wheel rate, steer rate); the five dependent speeds come from the
@@ -38,7 +38,7 @@ _H = 1e-4
 
 def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0):
     """The rider's steer torque T = T_0 + k_lean (lean - lean_0) + k_rate
-    lean' (N m; beyond the paper; docs/two-wheeler.md sec. 10a)."""
+    lean' (N m; beyond the paper; docs/two-wheeler.md sec. 10.1)."""
     return torque0 + k_lean * (lean - lean0) + k_rate * lean_rate
 
 
@@ -54,7 +54,7 @@ def contact_forces(q, u, udot, lam, p: BicycleParameters, r=None, surface="flat"
     total mass (m/s^2; normal positive when pushing, friction the tangential
     part's magnitude), at the state (q, u) with accelerations udot and the
     constraints' multipliers lam (beyond the paper; docs/two-wheeler.md
-    sec. 8.2, 10a)."""
+    sec. 8.2, 10.1)."""
     mass = p.mR + p.mB + p.mH + p.mF
     plus = _mass_centre(q + _H * u + 0.5 * _H**2 * udot, p, r, surface)
     minus = _mass_centre(q - _H * u + 0.5 * _H**2 * udot, p, r, surface)
@@ -93,7 +93,7 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     for ``t_end`` s; events stop the run: a normal force reaching zero
     (``contact_lost``) or the friction exceeding ``mu`` times the normal at
     either wheel (``slips``) (beyond the paper; docs/two-wheeler.md
-    sec. 10a).  Returns (series dict of (n,) arrays, summary dict)."""
+    sec. 10.1).  Returns (series dict of (n,) arrays, summary dict)."""
     from scipy.integrate import solve_ivp
 
     p = parameters
