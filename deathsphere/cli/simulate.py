@@ -112,6 +112,11 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
     is the output, and stderr says where it went (and, on a terminal,
     shows the summary).
 
+    A two-wheeler (--machine benchmark-bicycle with --steer free,
+    --steer-gains or --hands-free): the Whipple bicycle's nonlinear
+    equations from its steady turn at --theta/--height and --speed,
+    kicked by --perturb degrees of lean (docs/two-wheeler.md sec. 10.1).
+
     \b
     Examples:
       deathsphere simulate --theta 60 --alpha 10 --periods 20
