@@ -138,6 +138,8 @@ def prepare_simulation(theta, alpha=None, *, body: str | None = None, side: str 
     """
     from deathsphere import simulation
 
+    if theta is None:
+        raise ParameterError("give theta (the steady orbit's polar angle, deg)", "theta", missing=True)
     if machine is not None:
         if vertical is not False:
             raise ParameterError("vertical loops of a machine are not simulated (their steady values: ride with "

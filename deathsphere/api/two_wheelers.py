@@ -15,13 +15,14 @@ from dataclasses import asdict, dataclass, fields
 
 import numpy as np
 
-from deathsphere.api.arguments import G, R, checked_array, checked_axis, sphere_radius
+from deathsphere.api.arguments import INF, G, R, checked_array, checked_axis, sphere_radius
 from deathsphere.api.machines import PRESETS, echoable_text
 from deathsphere.params import ParameterError
 from deathsphere.table import Table
 
 __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_ride", "STRAIGHT_COLUMNS",
-           "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "EIGENVALUES"]
+           "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "EIGENVALUES", "simulate_two_wheeler", "CONTROLS",
+           "SIMULATE_COLUMNS", "SIMULATE_SUMMARY_COLUMNS"]
 
 #: How the steer is held in the stability analysis (docs/two-wheeler.md sec. 8.3).
 STEER_MODES = ("free", "locked")
@@ -419,3 +420,152 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
 
 def _one_g(g):
     raise ParameterError("a two-wheeler takes one gravity per call", "g")
+
+
+# ---------------------------------------------------------------------------
+# the nonlinear motion
+
+#: How the steer is held in :func:`simulate_two_wheeler`.
+CONTROLS = ("steady-torque", "rider", "hands-free")
+#: The columns of the time series and of the summary of :func:`simulate_two_wheeler`.
+SIMULATE_COLUMNS = ("t_s", "lean_surface_deg", "steer_deg", "heading_deg", "theta_rear_deg", "lean_rate_deg_s",
+                    "steer_rate_deg_s", "v_rear_m_s", "steer_torque_n_m", "normal_rear_per_mass_m_s2",
+                    "normal_front_per_mass_m_s2", "friction_rear_per_mass_m_s2", "friction_front_per_mass_m_s2",
+                    "energy_drift", "constraint_residual_m")
+SIMULATE_SUMMARY_COLUMNS = (
+    "machine", "theta_deg", "height_m", "r_m", "v_rear_m_s", "lean_surface_deg", "steer_deg", "steer_torque_n_m",
+    "period_s", "perturb_deg", "control", "k_lean_n_m_rad", "k_rate_n_m_s_rad", "mu", "status", "t_event_s",
+    "t_end_s", "max_lean_deviation_deg", "final_lean_deviation_deg", "max_energy_drift",
+    "max_constraint_residual_m", "min_normal_rear_per_mass_m_s2", "min_normal_front_per_mass_m_s2", "method",
+    "rtol")
+#: Rows per period of the turn, and periods, one call integrates at most.
+MAX_SIMULATE_ROWS = 1_000_000
+
+
+def _gains(steer_gains) -> tuple[float, float]:
+    """(k_lean, k_rate) from two numbers or their text "K_LEAN,K_RATE"."""
+    values = steer_gains.split(",") if isinstance(steer_gains, str) else steer_gains
+    ok = not isinstance(values, (bytes, dict)) and np.ndim(values) == 1 and len(values) == 2
+    try:
+        gains = tuple(float(v) for v in values) if ok else ()
+    except (TypeError, ValueError):
+        gains = ()
+    if len(gains) != 2 or not all(math.isfinite(v) for v in gains):
+        raise ParameterError(f"steer_gains must be two finite numbers K_LEAN,K_RATE (N m/rad, N m s/rad) "
+                             f"(got {steer_gains!r})", "steer_gains")
+    return gains
+
+
+def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, diameter=None, g=G, mu=INF,
+                         branch=0, perturb=0.0, periods=2.0, points_per_period=100, steer_gains=None,
+                         hands_free=False, steer="free", method="DOP853", rtol=1e-10,
+                         atol=None) -> tuple[Table, Table]:
+    """Integrate a two-wheeler's nonlinear equations on the globe: ``deathsphere
+    simulate --machine benchmark-bicycle --steer free`` (beyond the paper;
+    docs/two-wheeler.md sec. 10.1).
+
+    From the steady turn at the rear contact's ``theta`` [deg] or
+    ``height`` [m] and rear contact ``speed`` [m/s] (the turn ``branch``, 0
+    first in increasing lean, as ``ride --steer`` lists them), the lean
+    kicked by ``perturb`` [deg], for ``periods`` periods of the turn.  The
+    steer torque: the turn's steady torque held (default); with
+    ``steer_gains`` = (k_lean [N m/rad], k_rate [N m s/rad]) a rider, T =
+    T_steady + k_lean (lean - lean_steady) + k_rate lean_rate (positive
+    gains steer into the fall); ``hands_free``: T = 0 (``steer`` is
+    ``free`` only: a locked steer is not simulated).  The run stops with
+    status ``contact_lost`` when a wheel's normal force reaches zero,
+    ``slips`` when the friction needed exceeds ``mu`` at either wheel.
+
+    Returns (series, summary): the time series (:data:`SIMULATE_COLUMNS`;
+    ``energy_drift`` is the energy's change over the initial kinetic
+    energy, conserved hands-free) and one summary row
+    (:data:`SIMULATE_SUMMARY_COLUMNS`).
+    """
+    from dataclasses import replace
+
+    from deathsphere.api.arguments import checked_choice, checked_flag, checked_optional, checked_scalar
+    from deathsphere.simulation.runner import METHODS
+    from deathsphere.physics.two_wheeler import motion, steady
+    from deathsphere.physics.two_wheeler.simulate import simulate as integrate
+
+    t = as_two_wheeler(machine)
+    if not isinstance(steer, str) or steer.strip().lower() != "free":
+        raise ParameterError(f"simulate holds a two-wheeler's steer by a torque: steer must be free (got "
+                             f"{steer!r}; a locked steer is not simulated)", "steer")
+    if g is not G:
+        t = replace(t, g=checked_scalar("g", g))
+    r = checked_scalar("r", sphere_radius(r, diameter))
+    hands_free = checked_flag("hands_free", hands_free)
+    if hands_free and steer_gains is not None:
+        raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
+    k_lean, k_rate = (0.0, 0.0) if steer_gains is None else _gains(steer_gains)
+    if speed is None:
+        raise ParameterError("give speed (the rear contact's, m/s): the steady turn the run starts from",
+                             "speed", missing=True)
+    speed = checked_scalar("speed", speed)
+    if (theta is None) == (height is None):
+        raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
+                             "theta", missing=theta is None)
+    if theta is not None:
+        theta_deg = checked_scalar("theta", theta)
+        lane = math.radians(theta_deg)
+        h = r * (1 + math.cos(lane))
+    else:
+        h = checked_scalar("height", height)
+        if h > 2 * r:
+            raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
+                                 f"(got {h:g})", "height")
+        lane = math.acos(min(max(h / r - 1.0, -1.0), 1.0))
+        theta_deg = math.degrees(lane)
+    perturb = checked_scalar("perturb", perturb)
+    periods = checked_scalar("periods", periods)
+    points_per_period = int(checked_scalar("points_per_period", points_per_period))
+    lower = tuple(m.lower() for m in METHODS)
+    method = METHODS[lower.index(checked_choice("method", method, lower))]
+    rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
+    mu = checked_scalar("mu", mu)
+    if periods * points_per_period > MAX_SIMULATE_ROWS:
+        raise ParameterError(f"periods x points_per_period must be at most {MAX_SIMULATE_ROWS} rows "
+                             f"(got {periods:g} x {points_per_period})", "periods")
+    p = t.parameters()
+    turn = steady.turns_for_speed(lane, speed, p, "sphere", r, t.head)
+    count = int(turn["count"][0])
+    if count == 0:
+        raise ParameterError(f"no steady turn at theta = {theta_deg:g} deg and rear speed {speed:g} m/s "
+                             f"({turn['reason'][0] or 'none found'}); 'deathsphere ride --steer free' lists them",
+                             "speed")
+    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < count:
+        raise ParameterError(f"branch must be one of the {count} steady turns at this lane and speed "
+                             f"(0..{count - 1}, in increasing lean; got {branch!r})", "branch")
+    q, u = turn["q"][:, 0, branch], turn["u"][:, 0, branch]
+    torque0, omega = float(turn["steer_torque"][0, branch]), float(turn["omega"][0, branch])
+    period = 2 * math.pi / abs(omega)
+    n_points = max(int(round(periods * points_per_period)) + 1, 2)
+    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], periods * period, surface="sphere", r=r,
+                                torque0=torque0, k_lean=k_lean, k_rate=k_rate, hands_free=hands_free,
+                                kick=math.radians(perturb), mu=mu, n_points=n_points, method=method, rtol=rtol,
+                                atol=atol)
+    deg = np.degrees
+    cols = {"t_s": series["t"], "lean_surface_deg": deg(series["lean"]), "steer_deg": deg(series["steer"]),
+            "heading_deg": deg(series["heading"]), "theta_rear_deg": deg(series["theta_rear"]),
+            "lean_rate_deg_s": deg(series["lean_rate"]), "steer_rate_deg_s": deg(series["steer_rate"]),
+            "v_rear_m_s": series["v_rear"], "steer_torque_n_m": np.asarray(series["steer_torque"], float),
+            "normal_rear_per_mass_m_s2": series["normal_rear"], "normal_front_per_mass_m_s2": series["normal_front"],
+            "friction_rear_per_mass_m_s2": series["friction_rear"],
+            "friction_front_per_mass_m_s2": series["friction_front"], "energy_drift": series["energy_drift"],
+            "constraint_residual_m": series["constraint_residual"]}
+    control = "hands-free" if hands_free else ("rider" if steer_gains is not None else "steady-torque")
+    row = {"machine": t.name, "theta_deg": theta_deg, "height_m": h, "r_m": r,
+           "v_rear_m_s": speed, "lean_surface_deg": math.degrees(q[motion.LEAN]),
+           "steer_deg": math.degrees(q[motion.STEER]), "steer_torque_n_m": torque0, "period_s": period,
+           "perturb_deg": perturb, "control": control, "k_lean_n_m_rad": k_lean, "k_rate_n_m_s_rad": k_rate,
+           "mu": mu, "status": summary["status"], "t_event_s": summary["t_event"], "t_end_s": summary["t_end"],
+           "max_lean_deviation_deg": math.degrees(summary["max_lean_deviation"]),
+           "final_lean_deviation_deg": math.degrees(summary["final_lean_deviation"]),
+           "max_energy_drift": summary["max_energy_drift"],
+           "max_constraint_residual_m": summary["max_constraint_residual"],
+           "min_normal_rear_per_mass_m_s2": summary["min_normal_rear"],
+           "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol}
+    summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
+                           for k in SIMULATE_SUMMARY_COLUMNS})
+    return Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table

@@ -60,8 +60,9 @@ def _preflight_output(output) -> bool:
 
 
 @cli.command("simulate")
-@param_option("theta", required=True, help="Polar angle of the contact point (a vertical orbit: the cone angle, "
+@param_option("theta", help="Polar angle of the contact point (a vertical orbit: the cone angle, "
               "90 = great circle).")
+@param_option("height", help="A two-wheeler: the rear contact's height above the globe's floor instead of --theta.")
 @params_options("alpha", "speed", "omega", "omega3")
 @single("--branch", type=click.IntRange(0, None), default=0,
         help="Which orbit when several give the request: a sphere with --omega3, the root of eq. 55 (0 slow, "
@@ -83,9 +84,17 @@ def _preflight_output(output) -> bool:
 @machine_options(without=("a",), machine_help="Simulate a machine (motorcycle and rider) instead: a preset (see "
                  "'deathsphere machines'), its wheel radius -a, changed by the machine options "
                  "(docs/machine.md sec. 5).  Horizontal orbits: --alpha or --speed (its centre of mass's).")
+@single("--steer", type=click.Choice(("free", "locked"), case_sensitive=False), default=None,
+        help="A two-wheeler (--machine benchmark-bicycle) from its steady turn at --theta/--height and --speed "
+             "(the rear contact's), the steer held by a torque: the turn's steady torque unless "
+             "--steer-gains or --hands-free (docs/two-wheeler.md sec. 10.1).")
+@single("--steer-gains", default=None, metavar="K_LEAN,K_RATE",
+        help="A two-wheeler's rider: steer torque = steady torque + K_LEAN (lean - steady lean) + K_RATE "
+             "lean rate [N m/rad, N m s/rad]; positive steers into the fall.")
+@click.option("--hands-free", is_flag=True, default=False, help="A two-wheeler with no steer torque at all.")
 @setup_options()
 @output_options()
-def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
+def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
                      points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, loop_seconds,
                      playback, body, machine,
                      machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
@@ -103,6 +112,11 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
     is the output, and stderr says where it went (and, on a terminal,
     shows the summary).
 
+    A two-wheeler (--machine benchmark-bicycle with --steer free,
+    --steer-gains or --hands-free): the Whipple bicycle's nonlinear
+    equations from its steady turn at --theta/--height and --speed,
+    kicked by --perturb degrees of lean (docs/two-wheeler.md sec. 10.1).
+
     \b
     Examples:
       deathsphere simulate --theta 60 --alpha 10 --periods 20
@@ -116,9 +130,42 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
       deathsphere simulate --machine stunt125 --theta 90 --alpha 15 --output v.gif
       deathsphere simulate --theta 60 --alpha 10 --output run.mp4 \\
           --loop-seconds 4 --playback 0.5
+      deathsphere simulate --machine benchmark-bicycle --steer free \\
+          --height 1 --speed 5 --diameter 16ft --perturb 0.2 \\
+          --periods 1 --steer-gains 10,10
     """
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
+
+    from deathsphere.api.two_wheelers import is_two_wheeler
+
+    if steer is not None or steer_gains is not None or hands_free or is_two_wheeler(machine):
+        refused = [flag for flag, value in (("--alpha", alpha), ("--omega", omega), ("--omega3", omega3),
+                                            ("--vertical", vertical or None), ("--v-top", v_top), ("--body", body),
+                                            ("--machine-file", machine_file), ("-a", a), ("-k", k),
+                                            ("--side", side), ("--loop-seconds", loop_seconds),
+                                            ("--playback", playback), ("--max-steps", max_steps))
+                   if value is not None]
+        refused += [MACHINE_OPTIONS[name] for name in given(mass=mass, com_height=com_height,
+                                                            tyre_radius=tyre_radius, roll_inertia=roll_inertia,
+                                                            pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia,
+                                                            spin_inertia=spin_inertia, head_height=head_height)]
+        if frame != "turning":
+            refused.append("--frame")
+        if output is not None and view_format(output) not in TABLE_OUTPUTS:
+            fail(f"a two-wheeler's run is written as a table (.csv/.json/.ndjson): its 3-D view and figures "
+                 f"are not done yet (got {output})")
+        if refused:
+            fail(f"{', '.join(refused)} not for a two-wheeler's run: give --machine, --steer free, --theta or "
+                 "--height, --speed, -r/--diameter, -g, --mu, --branch, --perturb, --periods, "
+                 "--points-per-period, --steer-gains or --hands-free, --method, --rtol, --atol")
+        _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt,
+                     **given(theta=theta, height=height, speed=speed, r=r, diameter=diameter, g=g, mu=mu,
+                             branch=branch, perturb=perturb, periods=periods,
+                             points_per_period=points_per_period, method=method, rtol=rtol, atol=atol))
+        return
+    if height is not None:
+        raise click.UsageError("--height is a two-wheeler's lane (with --steer); give --theta")
 
     overrides = {"mass": mass, "com_height": com_height, "tyre_radius": tyre_radius, "roll_inertia": roll_inertia,
                  "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia, "spin_inertia": spin_inertia,
@@ -191,3 +238,36 @@ def simulate_command(theta, alpha, speed, omega, omega3, branch, vertical, v_top
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
         stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+
+
+def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt, **options):
+    """``simulate`` of a two-wheeler: the API validates, the series (or the
+    summary) is the output, the summary on a terminal (docs/two-wheeler.md
+    sec. 10.1)."""
+    from deathsphere.viewer import view_format
+
+    from deathsphere.api.two_wheelers import simulate_two_wheeler
+
+    series, summary = simulate_two_wheeler(
+        "benchmark-bicycle" if machine is None else machine, steer="free" if steer is None else steer,
+        steer_gains=steer_gains, hands_free=hands_free, **options)
+    title = f"{summary['machine'][0]}: simulated from its steady turn (docs/two-wheeler.md sec. 10.1)"
+    fmt = choose_format(fmt)
+    if output is not None:
+        emit([summary if summary_only else series], view_format(output), output=output)
+        stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+        if stderr_console().is_terminal:
+            emit_to_stderr(summary, title)
+    elif fmt == "table" or summary_only:
+        emit([summary], fmt, title)
+    else:
+        emit([series], fmt)
+        emit_to_stderr(summary, title)
+
+
+def emit_to_stderr(summary, title):
+    """The summary's verdict in one line on stderr (the series went to stdout)."""
+    status, t_event = summary["status"][0], summary["t_event_s"][0]
+    when = f" at t = {t_event:.4g} s" if status != "completed" else ""
+    stderr_console().print(f"deathsphere: {title}: {status}{when}, most lean deviation "
+                           f"{summary['max_lean_deviation_deg'][0]:.4g} deg", soft_wrap=True)

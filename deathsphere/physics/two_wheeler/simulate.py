@@ -1,0 +1,182 @@
+"""The Whipple bicycle's nonlinear motion, integrated: from a steady turn
+(or straight running), kicked in lean, with the steer held by a steady
+torque, a simple rider or nothing (beyond the paper; docs/two-wheeler.md
+sec. 10.1).
+
+The state is the eight coordinates and the three independent speeds (lean
+rate, rear wheel rate, steer rate); the five dependent speeds come from the
+rolling constraints at every step (so those hold exactly) and the
+accelerations from Kane's reduced equations.  The pitch is integrated from
+its rate, so the front contact's holonomic constraint holds to the
+integrator's tolerance: its residual is reported.
+
+The rider's steer torque is T = T_0 + k_lean (lean - lean_0) + k_rate
+lean', T_0 the turn's steady torque and lean_0 its lean: positive gains
+steer into the fall.  Hands-free is T = 0.
+
+The contact forces: the front contact's from the constraints' multipliers,
+the total from the mass centre's acceleration (m a - m g), the rear's the
+difference; the mass centre's acceleration by a central difference of its
+position along the motion's second-order Taylor path (step 1e-4 s, relative
+error ~1e-8 of the force).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere.physics.two_wheeler import _generated, geometry, motion
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+
+__all__ = ["STATUSES", "rider_torque", "contact_forces", "simulate"]
+
+#: How a run ends.
+STATUSES = ("completed", "contact_lost", "slips", "failed")
+#: The time step of the mass centre's acceleration by central differences (s).
+_H = 1e-4
+
+
+def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0):
+    """The rider's steer torque T = T_0 + k_lean (lean - lean_0) + k_rate
+    lean' (N m; beyond the paper; docs/two-wheeler.md sec. 10.1)."""
+    return torque0 + k_lean * (lean - lean0) + k_rate * lean_rate
+
+
+def _mass_centre(q, p: BicycleParameters, r, surface):
+    pts = geometry.points(q, p, r, surface)
+    m = p.mR + p.mB + p.mH + p.mF
+    return (p.mR * pts["rear_wheel"] + p.mB * pts["rear_frame"] + p.mH * pts["front_frame"]
+            + p.mF * pts["front_wheel"]) / m
+
+
+def contact_forces(q, u, udot, lam, p: BicycleParameters, r=None, surface="flat"):
+    """(normal_rear, friction_rear, normal_front, friction_front), each per
+    total mass (m/s^2; normal positive when pushing, friction the tangential
+    part's magnitude), at the state (q, u) with accelerations udot and the
+    constraints' multipliers lam (beyond the paper; docs/two-wheeler.md
+    sec. 8.2, 10.1)."""
+    mass = p.mR + p.mB + p.mH + p.mF
+    plus = _mass_centre(q + _H * u + 0.5 * _H**2 * udot, p, r, surface)
+    minus = _mass_centre(q - _H * u + 0.5 * _H**2 * udot, p, r, surface)
+    acc = (plus - 2 * _mass_centre(q, p, r, surface) + minus) / _H**2
+    gravity = np.zeros_like(acc)
+    gravity[2] = p.g
+    total = acc - gravity
+    pts = geometry.points(q, p, r, surface)
+    Y = pts["frames"]["Y"]
+    front = (lam[2] * Y[0] + lam[3] * Y[1] + lam[4] * Y[2]) / mass
+    rear = total - front
+    if surface == "sphere":
+        n_rear = -pts["frames"]["T"][2]
+        n_front = -pts["Q"] / np.linalg.norm(pts["Q"], axis=0)
+    else:
+        n_rear = n_front = np.stack([np.zeros_like(q[0]), np.zeros_like(q[0]), -np.ones_like(q[0])])
+    out = []
+    for force, n in ((rear, n_rear), (front, n_front)):
+        normal = np.sum(force * n, axis=0)
+        out += [normal, np.linalg.norm(force - normal * n, axis=0)]
+    return tuple(out)
+
+
+def _residual(q, p, surface):
+    h, _ = getattr(_generated, f"{surface}_holonomic")(q, p)
+    return np.abs(h[0])
+
+
+def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat", r=None, torque0=0.0,
+             lean0=None, k_lean=0.0, k_rate=0.0, hands_free=False, kick=0.0, mu=np.inf, n_points=200,
+             method="DOP853", rtol=1e-10, atol=None):
+    """Integrate from (q0, u_ind0) (a steady turn's q and its independent
+    speeds (lean rate, rear wheel rate, steer rate)) with the lean kicked by
+    ``kick`` (rad), the steer torque :func:`rider_torque` (T_0 = ``torque0``
+    about lean_0 = ``lean0``, default q0's lean) or, ``hands_free``, zero,
+    for ``t_end`` s; events stop the run: a normal force reaching zero
+    (``contact_lost``) or the friction exceeding ``mu`` times the normal at
+    either wheel (``slips``) (beyond the paper; docs/two-wheeler.md
+    sec. 10.1).  Returns (series dict of (n,) arrays, summary dict)."""
+    from scipy.integrate import solve_ivp
+
+    p = parameters
+    values = motion.parameter_values(p, surface, r)
+    q0 = np.array(q0, float)
+    lean0 = float(q0[motion.LEAN]) if lean0 is None else float(lean0)
+    q0[motion.LEAN] += kick
+    q0 = motion.pitch(q0, values, surface)
+    y0 = np.concatenate([q0, np.asarray(u_ind0, float)])
+    gains = (0.0, 0.0, 0.0, 0.0) if hands_free else (torque0, lean0, k_lean, k_rate)
+
+    def torque(y):
+        return rider_torque(y[motion.LEAN], y[8], *gains)
+
+    def rates(t, y):
+        q, u_ind = y[:8], y[8:]
+        Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, torque(y), surface)
+        return np.concatenate([u, np.linalg.solve(Mr, Fr)])
+
+    last = {}
+
+    def forces(y):
+        # both events ask at the same state: computed once
+        key = y.tobytes()
+        if key not in last:
+            q, u_ind = y[:8], y[8:]
+            u = motion.dependent_speeds(q, u_ind, values, surface)
+            udot, lam = motion.accelerations(q, u, values, torque(y), surface)
+            last.clear()
+            last[key] = contact_forces(q, u, udot, lam, p, r, surface)
+        return last[key]
+
+    def lost(t, y):
+        n_rear, _, n_front, _ = forces(y)
+        return min(n_rear, n_front)
+
+    def slip(t, y):
+        n_rear, f_rear, n_front, f_front = forces(y)
+        return min(mu * n_rear - f_rear, mu * n_front - f_front)
+
+    lost.terminal = slip.terminal = True
+    lost.direction = slip.direction = -1
+    events = [lost] + ([slip] if np.isfinite(mu) else [])
+    t_eval = np.linspace(0.0, t_end, max(int(n_points), 2))
+    # an event already past at the start is not a crossing: solve_ivp would never see it
+    start = [e(0.0, y0) for e in events]
+    if min(start) <= 0:
+        status, t_event, ts, Y, nfev = STATUSES[1 + int(np.argmin(start))], 0.0, np.zeros(1), y0[:, None], 0
+    else:
+        sol = solve_ivp(rates, (0.0, t_end), y0, method=method, t_eval=t_eval, events=events, rtol=rtol,
+                        atol=rtol if atol is None else atol)
+        status, t_event, ts, Y, nfev = "completed", np.nan, sol.t, sol.y, sol.nfev
+        for k, times in enumerate(sol.t_events):
+            if len(times) and not t_event <= times[0]:
+                # the event's state closes the series
+                status, t_event = STATUSES[1 + k], float(times[0])
+                ts, Y = np.append(ts, t_event), np.concatenate([Y, sol.y_events[k][:1].T], axis=1)
+        if not sol.success and status == "completed":
+            status = "failed"
+    q, u_ind = Y[:8], Y[8:]
+    u = motion.dependent_speeds(q, u_ind, values, surface)
+    T = torque(Y)
+    T = np.broadcast_to(T, ts.shape)
+    udot, lam = motion.accelerations(q, u, values, T, surface)
+    n_rear, f_rear, n_front, f_front = contact_forces(q, u, udot, lam, p, r, surface)
+    E = motion.energy(q, u, values, surface)
+    kinetic0 = _generated_kinetic(q[:, :1], u[:, :1], values, surface)[0]
+    series = {"t": ts, "lean": q[motion.LEAN], "steer": q[motion.STEER], "heading": q[motion.HEADING],
+              "theta_rear": q[0] if surface == "sphere" else np.full(ts.shape, np.pi),
+              "lean_rate": u[motion.LEAN], "steer_rate": u[motion.STEER], "v_rear": np.abs(u[motion.REAR]) * p.rR,
+              "steer_torque": T, "normal_rear": n_rear, "normal_front": n_front, "friction_rear": f_rear,
+              "friction_front": f_front, "energy_drift": (E - E[0]) / kinetic0,
+              "constraint_residual": _residual(q, values, surface)}
+    summary = {"status": status, "t_event": t_event, "t_end": float(ts[-1]),
+               "max_lean_deviation": float(np.max(np.abs(q[motion.LEAN] - lean0))),
+               "final_lean_deviation": float(q[motion.LEAN, -1] - lean0),
+               "max_energy_drift": float(np.max(np.abs(series["energy_drift"]))),
+               "max_constraint_residual": float(np.max(series["constraint_residual"])),
+               "min_normal_rear": float(np.min(n_rear)), "min_normal_front": float(np.min(n_front)),
+               "n_evaluations": int(nfev)}
+    return series, summary
+
+
+def _generated_kinetic(q, u, values, surface):
+    kinetic, _ = getattr(_generated, f"{surface}_energy")(q, u, values)
+    return kinetic

@@ -1,0 +1,58 @@
+"""``deathsphere simulate --machine benchmark-bicycle --steer free``: the
+time series piped, the summary on a terminal, a table file, and one-line
+refusals with exit status 2."""
+
+import csv
+import io
+
+import pytest
+
+from deathsphere.api.two_wheelers import SIMULATE_COLUMNS
+
+RUN = ("simulate", "--machine", "benchmark-bicycle", "--steer", "free", "--height", "1", "--speed", "5",
+       "--diameter", "16ft", "--periods", "0.2", "--points-per-period", "20", "--rtol", "1e-6")
+
+
+def test_piped_the_series_goes_to_stdout_the_verdict_to_stderr(run):
+    res = run(*RUN, "--perturb", "0.2", "--steer-gains", "10,10", "--format", "csv")
+    assert res.exit_code == 0, res.output
+    rows = list(csv.DictReader(io.StringIO(res.stdout)))
+    assert len(rows) == 5 and list(rows[0]) == list(SIMULATE_COLUMNS)
+    assert float(rows[0]["lean_surface_deg"]) == pytest.approx(-13.362 + 0.2, abs=1e-3)
+    assert "completed" in res.stderr and res.stderr.count("\n") == 1
+
+
+def test_summary_only_is_one_row_naming_the_control(run):
+    res = run(*RUN, "--hands-free", "--summary-only", "--format", "csv")
+    assert res.exit_code == 0, res.output
+    rows = list(csv.DictReader(io.StringIO(res.stdout)))
+    assert len(rows) == 1 and rows[0]["control"] == "hands-free" and rows[0]["k_lean_n_m_rad"] == "0.0"
+
+
+def test_a_table_file_is_written(run, tmp_path):
+    out = tmp_path / "run.csv"
+    res = run(*RUN, "--output", str(out))
+    assert res.exit_code == 0, res.output
+    assert res.stdout == "" and len(out.read_text().splitlines()) == 6
+
+
+@pytest.mark.parametrize("extra, words", [
+    (("--alpha", "10"), "--alpha not for a two-wheeler's run"),
+    (("--output", "v.html"), "3-D view and figures are not done yet"),
+    (("--output", "v.png"), "3-D view and figures are not done yet"),
+    (("--hands-free", "--steer-gains", "1,2"), "not both"),
+    (("--steer-gains", "1"), "two finite numbers"),
+])
+def test_bad_combinations_are_refused_in_one_line(run, extra, words):
+    res = run(*RUN, *extra)
+    assert res.exit_code == 2 and words in res.stderr and res.stderr.count("\n") == 1, res.stderr
+
+
+def test_height_without_a_two_wheeler_is_refused(run):
+    res = run("simulate", "--height", "1", "--alpha", "10")
+    assert res.exit_code == 2 and "--height is a two-wheeler's lane" in res.stderr
+
+
+def test_a_locked_steer_is_not_simulated(run):
+    res = run(*[("locked" if a == "free" else a) for a in RUN])
+    assert res.exit_code == 2 and "steer must be free" in res.stderr and res.stderr.count("\n") == 1
