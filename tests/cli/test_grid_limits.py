@@ -54,7 +54,7 @@ print(json.dumps([done.returncode, done.stdout, done.stderr, resource.getrusage(
 
 @pytest.mark.parametrize("args", [
     "ride --theta 0:180:0.001 --alpha 0:100:0.001",
-    "ride --theta 0:180:0.001 --speed 1:100:0.1",
+    "ride --theta 0:180:0.1 --speed 1:100:0.1",
 ])
 def test_a_grid_of_orbits_too_large_to_hold_is_streamed(args):
     """ride's orbits (one mu) stream chunk by chunk as sweep's do: the first
