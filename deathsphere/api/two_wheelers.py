@@ -18,6 +18,7 @@ import numpy as np
 from deathsphere.api.arguments import INF, G, R, checked_array, checked_axis, sphere_radius
 from deathsphere.api.machines import PRESETS, echoable_text
 from deathsphere.params import ParameterError
+from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 from deathsphere.table import Table
 
 __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_ride", "STRAIGHT_COLUMNS",
@@ -49,13 +50,14 @@ def _eig_columns(k: int) -> tuple[str, ...]:
 
 
 @dataclass(frozen=True, kw_only=True)
-class TwoWheeler:
+class TwoWheeler(BicycleParameters):
     """A two-wheeler (bicycle or motorcycle with its rider) as the Whipple
     bicycle of Meijaard, Papadopoulos, Ruina & Schwab (2007): the 26
     parameters of their Table 1 by the same names and in SI (``lam`` in
     rad), ``head`` the top of the rider's head (x, z) [m] from the rear
     contact in the upright reference configuration (z down, like xB, zB),
-    ``name`` and ``source`` (docs/two-wheeler.md sec. 1).
+    ``name`` and ``source`` (docs/two-wheeler.md sec. 1): the physics
+    core's :class:`BicycleParameters` with a rider's head and a name, checked.
 
     >>> TwoWheeler(**{**TWO_WHEELERS["benchmark-bicycle"].benchmark_values(), "w": -1.0})
     Traceback (most recent call last):
@@ -63,32 +65,6 @@ class TwoWheeler:
     deathsphere.ParameterError: two-wheeler w (wheel base) must be a finite number > 0 m (got -1)
     """
 
-    w: float
-    c: float
-    lam: float
-    g: float
-    rR: float
-    mR: float
-    IRxx: float
-    IRyy: float
-    xB: float
-    zB: float
-    mB: float
-    IBxx: float
-    IByy: float
-    IBzz: float
-    IBxz: float
-    xH: float
-    zH: float
-    mH: float
-    IHxx: float
-    IHyy: float
-    IHzz: float
-    IHxz: float
-    rF: float
-    mF: float
-    IFxx: float
-    IFyy: float
     head: tuple[float, float] = DEFAULT_HEAD
     name: str = "custom two-wheeler"
     source: str = ""
@@ -135,9 +111,7 @@ class TwoWheeler:
         return {k: v for k, v in asdict(self).items() if k not in ("head", "name", "source")}
 
     def parameters(self):
-        """The physics core's :class:`BicycleParameters`."""
-        from deathsphere.physics.two_wheeler.parameters import BicycleParameters
-
+        """The physics core's :class:`BicycleParameters` (the 26 numbers alone)."""
         return BicycleParameters(**self.benchmark_values())
 
     @property

@@ -133,7 +133,7 @@ def test_the_shipped_code_is_a_fresh_derivation():
     """_generated.py is what derivation.py derives today: the fresh symbolic
     equations on flat ground, evaluated at a random state, agree with the
     shipped numeric code (regenerate with
-    ``python -m deathsphere.physics.two_wheeler.derivation --write``)."""
+    ``python tools/generate_two_wheeler.py --write``)."""
     import sympy as sm
 
     from deathsphere.physics.two_wheeler import derivation

@@ -1,6 +1,6 @@
 """Numeric equations of motion of the Whipple bicycle: GENERATED, do not edit.
 
-Printed by ``python -m deathsphere.physics.two_wheeler.derivation --write``
+Printed by ``python tools/generate_two_wheeler.py --write``
 from the Kane's-method derivation in ``derivation.py`` (sympy 1.14.0):
 common subexpressions eliminated (sympy.cse), then printed as numpy code.
 Beyond the paper; docs/two-wheeler.md sec. 3-5 documents the coordinates,

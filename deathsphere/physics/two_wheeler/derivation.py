@@ -6,7 +6,7 @@ This module needs sympy, which the shipped package does not: it is the
 generator of ``_generated.py`` and the test that checks the shipped code
 against a fresh derivation imports it.  Run
 
-    python -m deathsphere.physics.two_wheeler.derivation --write
+    python tools/generate_two_wheeler.py --write
 
 to rewrite ``_generated.py``.
 
@@ -29,7 +29,6 @@ What is derived, for each surface (docs/two-wheeler.md sec. 3)
 
 from __future__ import annotations
 
-import argparse
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -196,7 +195,7 @@ GENERATED = Path(__file__).with_name("_generated.py")
 
 _HEADER = '''"""Numeric equations of motion of the Whipple bicycle: GENERATED, do not edit.
 
-Printed by ``python -m deathsphere.physics.two_wheeler.derivation --write``
+Printed by ``python tools/generate_two_wheeler.py --write``
 from the Kane's-method derivation in ``derivation.py`` (sympy {version}):
 common subexpressions eliminated (sympy.cse), then printed as numpy code.
 Beyond the paper; docs/two-wheeler.md sec. 3-5 documents the coordinates,
@@ -324,32 +323,3 @@ def generated_source(surfaces=SURFACES, derivations=None) -> str:
     for s in surfaces:
         text += "\n\n" + generated_functions(derivations[s])
     return text
-
-
-def main(argv=None) -> int:
-    """Derive, and print or write ``_generated.py`` (beyond the paper;
-    docs/two-wheeler.md sec. 5)."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--write", action="store_true", help="rewrite _generated.py")
-    parser.add_argument("--output", type=Path, default=GENERATED, help="where --write writes")
-    parser.add_argument("--surface", action="append", choices=SURFACES,
-                        help="a surface to generate (repeatable; default: all)")
-    args = parser.parse_args(argv)
-    surfaces = tuple(args.surface or SURFACES)
-    start = time.perf_counter()
-    derivations = {s: derive(s) for s in surfaces}
-    for s, d in derivations.items():
-        print(f"{s}: derived in {d.seconds:.1f} s")
-    text = generated_source(surfaces, derivations)
-    print(f"generated in {time.perf_counter() - start:.1f} s in all, {len(text.splitlines())} lines")
-    if args.write:
-        from deathsphere.writers.atomic import atomic_file
-
-        with atomic_file(args.output, "w", encoding="utf-8") as out:    # whole or not at all
-            out.write(text)
-        print(f"wrote {args.output}")
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

@@ -13,7 +13,7 @@ inertia (IBxz, IHxz) are entries of the inertia tensor, as in the paper.
 from __future__ import annotations
 
 import math
-from dataclasses import astuple, dataclass, fields
+from dataclasses import dataclass, fields
 
 __all__ = ["BicycleParameters", "PARAMETER_NAMES", "PRESETS", "SOURCE", "benchmark_bicycle"]
 
@@ -60,8 +60,9 @@ class BicycleParameters:
 
     def values(self) -> tuple[float, ...]:
         """The numbers in :data:`PARAMETER_NAMES` order (Meijaard et al.
-        2007, Table 1; docs/two-wheeler.md sec. 1)."""
-        return astuple(self)
+        2007, Table 1; docs/two-wheeler.md sec. 1); a subclass's own fields
+        (a rider's head point, a name) are not among them."""
+        return tuple(getattr(self, name) for name in PARAMETER_NAMES)
 
 
 #: The names, in the order of the fields (and of the generated code's arguments).
