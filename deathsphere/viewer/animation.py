@@ -407,6 +407,15 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
         canvas.draw()
         return np.asarray(canvas.buffer_rgba())[..., :3]
 
+    return write_frames(output, draw, times, delays, size_px, fps, progress)
+
+
+def write_frames(output, draw, times, delays, size_px, fps, progress=None) -> int:
+    """Write the frames ``draw(t)`` (RGB arrays) at ``times`` with the GIF
+    ``delays`` (or ``fps`` for an MP4 of ``size_px``) to ``output``, .gif or
+    .mp4 by its extension, whole or not at all (:mod:`deathsphere.writers.atomic`;
+    an interrupted encoder is stopped); ``progress(done, total)`` after each
+    frame.  Returns the number of frames."""
     fmt = str(output).lower().rsplit(".", 1)[-1]
     with atomic_path(output) as temp:
         stream = _GifStream(temp) if fmt == "gif" else _Mp4Stream(temp, size_px, fps)
@@ -415,9 +424,9 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
             for k, t in enumerate(times):
                 stream.add(draw(float(t)), delays[k])
                 if progress is not None:
-                    progress(k + 1, times.size)
+                    progress(k + 1, len(times))
         except BaseException:
             stream.abort()
             raise
         stream.close()
-    return int(times.size)
+    return len(times)

@@ -12,9 +12,8 @@ import textwrap
 
 import numpy as np
 
-from deathsphere.viewer.animation import FPS, SIZE_PX, _GifStream, _Mp4Stream, _sphere_lines, frame_delays_ms
+from deathsphere.viewer.animation import FPS, SIZE_PX, _sphere_lines, frame_delays_ms, write_frames
 from deathsphere.viewer.scene import slow_motion_words
-from deathsphere.writers.atomic import atomic_path
 
 __all__ = ["loop_times", "write_act_animation", "MAX_SECONDS", "CAMERA"]
 
@@ -119,16 +118,4 @@ def write_act_animation(output, scene, *, fps: int = FPS, max_seconds: float = M
         canvas.draw()
         return np.asarray(canvas.buffer_rgba())[..., :3]
 
-    fmt = str(output).lower().rsplit(".", 1)[-1]
-    # written whole or not at all, as simulate's loop (deathsphere.writers.atomic)
-    with atomic_path(output) as temp:
-        stream = _GifStream(temp) if fmt == "gif" else _Mp4Stream(temp, size_px, fps)
-        try:
-            stream.start()
-            for k, t in enumerate(times):
-                stream.add(draw(float(t)), delays[k])
-        except BaseException:
-            stream.abort()
-            raise
-        stream.close()
-    return int(times.size)
+    return write_frames(output, draw, times, delays, size_px, fps)

@@ -38,7 +38,7 @@ import sympy.physics.mechanics as me
 
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
 
-__all__ = ["SURFACES", "COORDINATES", "GENERATED", "Derivation", "derive", "generated_functions", "generated_source", "main"]
+__all__ = ["SURFACES", "COORDINATES", "GENERATED", "Derivation", "derive", "generated_functions", "generated_source"]
 
 #: The surfaces: flat ground, and the inside of a sphere of radius r.
 SURFACES = ("flat", "sphere")
