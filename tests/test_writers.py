@@ -151,7 +151,7 @@ def tables(draw):
 
 
 @needs_polars
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(tables(), st.booleans())
 def test_compiled_csv_equals_pure_csv_on_random_tables(table, header):
     assert polars_csv.polars_csv_text(table, header) == cells.csv_text(table, header)
