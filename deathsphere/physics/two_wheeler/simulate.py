@@ -48,11 +48,12 @@ def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0
 
 def lock_torque(q, u_ind, values, surface="flat"):
     """(T, a, u): the torque a locked steer applies (N m), the lean and rear
-    wheel accelerations (2, ...) and the eight speeds at (q, u_ind), the
-    steer rate zero (u_ind's third row is taken as given): Kane's
-    reduced lean and rear wheel rows with the steer's acceleration zero give
-    a, the steer row then T = (A^T M A)_steer . a - (A^T (f - M a'))_steer at
-    T = 0 (beyond the paper; docs/two-wheeler.md sec. 10.1)."""
+    wheel accelerations a (2, ...) and the eight speeds at (q, u_ind)
+    (u_ind's steer rate is zero on a locked steer): in Kane's reduced
+    equations (:func:`motion.reduced_mass_and_forcing`) with the steer's
+    acceleration zero, the lean and rear wheel rows, where the steer torque
+    does not appear, give a, and the steer row then gives T (beyond the
+    paper; docs/two-wheeler.md sec. 10.1)."""
     Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, 0.0, surface)
     a = np.linalg.solve(Mr[..., :2, :2], Fr[..., :2, None])
     T = (Mr[..., 2:, :2] @ a)[..., 0, 0] - Fr[..., 2]
