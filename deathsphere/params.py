@@ -212,6 +212,18 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("steer_torque", "N m", "steer torque", -HUGE, HUGE, symbol="T_δ", metavar="N_M",
           help="Ride, a two-wheeler on the globe: the steer torque the rider holds (0: hands-free); every "
                "steady turn held with it at each --theta/--height, one row each (instead of --speed)."),
+    _length("turn_radius", "turn radius", "R_turn",
+            help="Simulate, a two-wheeler on flat ground (--flat): start from the steady turn whose rear contact "
+                 "runs on a circle of this radius, turning right (without it: upright straight running)."),
+    Param("duration", "s", "run length in seconds", 0.0, 1e6, lo_open=True, metavar="S",
+          help="Simulate, a two-wheeler: how long in seconds instead of --periods (straight running on flat "
+               "ground has no period: 5 s unless given), > 0."),
+    Param("perturb_lean_rate", "deg/s", "lean rate kick", -1000.0, 1000.0, metavar="DEG_S", default=0.0,
+          help="Simulate, a two-wheeler: kick the lean rate by this, -1000..1000 deg/s (the dependent speeds "
+               "follow from the rolling constraints)."),
+    Param("perturb_steer_rate", "deg/s", "steer rate kick", -1000.0, 1000.0, metavar="DEG_S", default=0.0,
+          help="Simulate, a two-wheeler with a free steer: kick the steer rate by this, -1000..1000 deg/s (the "
+               "dependent speeds follow from the rolling constraints)."),
     Param("jobs", "", "processes", 1, 256, integer=True, metavar="N", default=1,
           help="Processes working in parallel; the output is the same as with one."),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True, metavar="N",

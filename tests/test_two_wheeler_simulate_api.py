@@ -50,7 +50,14 @@ def test_too_little_friction_slips_at_once():
 
 
 @pytest.mark.parametrize("kwargs, words", [
-    ({"steer": "locked"}, "steer must be free"),
+    ({"steer": "locked", "hands_free": True}, "locked steer's torque is whatever holds it"),
+    ({"steer": "locked", "steer_gains": (1, 2)}, "locked steer's torque is whatever holds it"),
+    ({"steer": "locked", "perturb_steer_rate": 5.0}, "no steer rate to kick"),
+    ({"steer": "jammed"}, "steer must be one of free | locked"),
+    ({"flat": True}, "flat ground has no lane on a sphere"),
+    ({"turn_radius": 10.0}, "turn_radius is a turn on flat ground"),
+    ({"duration": 1.0}, "periods or duration, not both"),
+    ({"perturb_lean_rate": 2000.0}, "-1000..1000 deg/s"),
     ({"hands_free": True, "steer_gains": (1, 2)}, "not both"),
     ({"steer_gains": (1, math.inf)}, "two finite numbers"),
     ({"speed": None}, "give speed"),
@@ -68,3 +75,65 @@ def test_bad_requests_are_refused_in_one_line(kwargs, words):
 def test_a_single_contact_machine_is_refused():
     with pytest.raises(ParameterError, match="single-contact"):
         simulate_two_wheeler("stunt125", **RUN)
+
+
+FLAT = dict(flat=True, speed=5.0, rtol=1e-6)
+
+
+def _envelope_rate(t, lean, t0, oscillating):
+    """The slope of log |lean| from t0 on; oscillating, of its envelope (the peaks of |lean|)."""
+    a, keep = np.abs(lean), t >= t0
+    if oscillating:
+        keep[1:-1] &= (a[1:-1] > a[:-2]) & (a[1:-1] >= a[2:])
+        keep[[0, -1]] = False
+    return np.polyfit(t[keep], np.log(a[keep]), 1)[0]
+
+
+@pytest.mark.parametrize("speed, t0, duration, rows", [(4.0, 2.0, 8.0, 40), (8.0, 1.5, 3.0, 20)])
+def test_straight_running_grows_at_the_rate_of_the_benchmarks_eigenvalue(speed, t0, duration, rows):
+    """Below the self-stable window the weave grows, above it the capsize
+    mode: a small kick hands-free, once the faster modes have died, grows at
+    the largest real part of the benchmark's eigenvalues (ride --flat)."""
+    eig = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed=speed)
+    rate, oscillating = eig["eig_1_re"][0], eig["eig_1_im"][0] != 0
+    series, summary = simulate_two_wheeler("benchmark-bicycle", **FLAT | dict(
+        speed=speed, perturb=0.01, hands_free=True, duration=duration, points_per_period=rows, atol=1e-9))
+    assert summary["status"][0] == "completed" and np.isnan(summary["period_s"][0])
+    assert len(series) == duration * rows + 1 and series["t_s"][-1] == duration
+    fitted = _envelope_rate(series["t_s"], np.radians(series["lean_surface_deg"]), t0, oscillating)
+    assert rate > 0.1 and fitted == pytest.approx(rate, rel=0.02)
+
+
+def test_a_turn_on_flat_ground_runs_round_its_circle():
+    series, summary = simulate_two_wheeler("benchmark-bicycle", **FLAT | dict(turn_radius=10.0, periods=0.25,
+                                                                             points_per_period=8))
+    # the rear contact on a circle of 10 m at 5 m/s: a lap in 2 pi 10 / 5 s, a quarter of the heading's turn
+    assert summary["period_s"][0] == pytest.approx(2 * np.pi * 10.0 / 5.0, rel=1e-9)
+    assert series["heading_deg"][-1] - series["heading_deg"][0] == pytest.approx(90.0, abs=1e-3)
+    np.testing.assert_allclose(series["lean_surface_deg"], summary["lean_surface_deg"][0], atol=1e-5)
+    assert summary["lean_surface_deg"][0] > 0 and summary["surface"][0] == "flat"
+    assert summary["turn_radius_m"][0] == 10.0 and np.isnan(summary["theta_deg"][0])
+
+
+def test_a_locked_steer_keeps_its_angle_and_the_energy():
+    series, summary = simulate_two_wheeler("benchmark-bicycle", **FLAT | dict(
+        steer="locked", perturb=1.0, perturb_lean_rate=5.0, duration=0.2, points_per_period=20, rtol=1e-10))
+    assert summary["control"][0] == "locked" and summary["steer"][0] == "locked"
+    assert np.all(series["steer_deg"] == 0) and np.all(series["steer_rate_deg_s"] == 0)
+    assert series["lean_rate_deg_s"][0] == 5.0 and summary["perturb_lean_rate_deg_s"][0] == 5.0
+    # the lock pushes against the fall: its torque is no longer the steady one (0)
+    assert np.max(np.abs(series["steer_torque_n_m"])) > 0.1
+    assert summary["max_energy_drift"][0] < 1e-8
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    ({"periods": 1.0}, "straight running on flat ground has no period"),
+    ({"theta": 90.0}, "flat ground has no lane on a sphere"),
+    ({"branch": 1}, "straight running is one state"),
+    ({"turn_radius": 10.0, "speed": 500.0}, "no steady turn at turn radius 10 m"),
+    ({"duration": 1e5, "points_per_period": 100}, "at most 1000000 rows"),
+])
+def test_bad_flat_requests_are_refused_in_one_line(kwargs, words):
+    with pytest.raises(ParameterError, match=words) as info:
+        simulate_two_wheeler("benchmark-bicycle", **FLAT | kwargs)
+    assert "\n" not in str(info.value)

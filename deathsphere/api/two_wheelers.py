@@ -400,7 +400,7 @@ def _one_g(g):
 # the nonlinear motion
 
 #: How the steer is held in :func:`simulate_two_wheeler`.
-CONTROLS = ("steady-torque", "rider", "hands-free")
+CONTROLS = ("steady-torque", "rider", "hands-free", "locked")
 #: The columns of the time series and of the summary of :func:`simulate_two_wheeler`.
 SIMULATE_COLUMNS = ("t_s", "lean_surface_deg", "steer_deg", "heading_deg", "theta_rear_deg", "lean_rate_deg_s",
                     "steer_rate_deg_s", "v_rear_m_s", "steer_torque_n_m", "normal_rear_per_mass_m_s2",
@@ -411,9 +411,12 @@ SIMULATE_SUMMARY_COLUMNS = (
     "period_s", "perturb_deg", "control", "k_lean_n_m_rad", "k_rate_n_m_s_rad", "mu", "status", "t_event_s",
     "t_end_s", "max_lean_deviation_deg", "final_lean_deviation_deg", "max_energy_drift",
     "max_constraint_residual_m", "min_normal_rear_per_mass_m_s2", "min_normal_front_per_mass_m_s2", "method",
-    "rtol")
+    "rtol", "surface", "turn_radius_m", "steer", "perturb_lean_rate_deg_s", "perturb_steer_rate_deg_s")
 #: Rows per period of the turn, and periods, one call integrates at most.
 MAX_SIMULATE_ROWS = 1_000_000
+#: How long a run from straight running on flat ground lasts unless told (s):
+#: the benchmark's weave (period 1.4 s at 5 m/s) goes round three times.
+STRAIGHT_DURATION = 5.0
 
 
 def _gains(steer_gains) -> tuple[float, float]:
@@ -431,94 +434,115 @@ def _gains(steer_gains) -> tuple[float, float]:
 
 
 def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, diameter=None, g=G, mu=INF,
-                         branch=0, perturb=0.0, periods=2.0, points_per_period=100, steer_gains=None,
+                         branch=0, perturb=0.0, periods=None, points_per_period=100, steer_gains=None,
                          hands_free=False, steer="free", method="DOP853", rtol=1e-10,
-                         atol=None) -> tuple[Table, Table]:
-    """Integrate a two-wheeler's nonlinear equations on the globe: ``deathsphere
-    simulate --machine benchmark-bicycle --steer free`` (beyond the paper;
-    docs/two-wheeler.md sec. 10.1).
+                         atol=None, flat=False, turn_radius=None, duration=None, perturb_lean_rate=0.0,
+                         perturb_steer_rate=0.0) -> tuple[Table, Table]:
+    """Integrate a two-wheeler's nonlinear equations on the globe or on flat
+    ground: ``deathsphere simulate --machine benchmark-bicycle --steer free``
+    or ``--flat`` (beyond the paper; docs/two-wheeler.md sec. 10.1).
 
-    From the steady turn at the rear contact's ``theta`` [deg] or
-    ``height`` [m] and rear contact ``speed`` [m/s] (the turn ``branch``, 0
-    first in increasing lean, as ``ride --steer`` lists them), the lean
-    kicked by ``perturb`` [deg], for ``periods`` periods of the turn.  The
+    On the globe from the steady turn at the rear contact's ``theta``
+    [deg] or ``height`` [m] and rear contact ``speed`` [m/s] (the turn
+    ``branch``, 0 first in increasing lean, as ``ride --steer`` lists
+    them); ``flat``: from upright straight running at ``speed``, or with
+    ``turn_radius`` [m] from the steady turn whose rear contact runs on that
+    circle (turning right; ``branch`` as on the globe).  The lean kicked by
+    ``perturb`` [deg], the lean and steer rates by ``perturb_lean_rate``,
+    ``perturb_steer_rate`` [deg/s], for ``periods`` periods of the turn
+    (default 2) or ``duration`` [s] (straight running has no period: 5 s
+    unless given; ``points_per_period`` is then rows per second).  The
     steer torque: the turn's steady torque held (default); with
     ``steer_gains`` = (k_lean [N m/rad], k_rate [N m s/rad]) a rider, T =
     T_steady + k_lean (lean - lean_steady) + k_rate lean_rate (positive
-    gains steer into the fall); ``hands_free``: T = 0 (``steer`` is
-    ``free`` only: a locked steer is not simulated).  The run stops with
-    status ``contact_lost`` when a wheel's normal force reaches zero,
-    ``slips`` when the friction needed exceeds ``mu`` at either wheel.
+    gains steer into the fall); ``hands_free``: T = 0; ``steer="locked"``:
+    the steer held at the turn's, its torque whatever the lock applies.
+    The run stops with status ``contact_lost`` when a wheel's normal force
+    reaches zero, ``slips`` when the friction needed exceeds ``mu`` at
+    either wheel.
 
     Returns (series, summary): the time series (:data:`SIMULATE_COLUMNS`;
     ``energy_drift`` is the energy's change over the initial kinetic
-    energy, conserved hands-free) and one summary row
-    (:data:`SIMULATE_SUMMARY_COLUMNS`).
+    energy, conserved hands-free and with the steer locked) and one summary
+    row (:data:`SIMULATE_SUMMARY_COLUMNS`).
     """
     from dataclasses import replace
 
     from deathsphere.api.arguments import checked_choice, checked_flag, checked_optional, checked_scalar
     from deathsphere.simulation.runner import METHODS
-    from deathsphere.physics.two_wheeler import motion, steady
+    from deathsphere.physics.two_wheeler import motion
     from deathsphere.physics.two_wheeler.simulate import simulate as integrate
 
     t = as_two_wheeler(machine)
-    if not isinstance(steer, str) or steer.strip().lower() != "free":
-        raise ParameterError(f"simulate holds a two-wheeler's steer by a torque: steer must be free (got "
-                             f"{steer!r}; a locked steer is not simulated)", "steer")
+    if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
+        raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} (got {steer!r})", "steer")
+    locked = steer.strip().lower() == "locked"
+    flat, hands_free = checked_flag("flat", flat), checked_flag("hands_free", hands_free)
+    if locked and (hands_free or steer_gains is not None):
+        raise ParameterError("a locked steer's torque is whatever holds it: hands_free and steer_gains are for "
+                             "steer free", "steer")
     if g is not G:
         t = replace(t, g=checked_scalar("g", g))
-    r = checked_scalar("r", sphere_radius(r, diameter))
-    hands_free = checked_flag("hands_free", hands_free)
     if hands_free and steer_gains is not None:
         raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
     k_lean, k_rate = (0.0, 0.0) if steer_gains is None else _gains(steer_gains)
+    perturb_lean_rate = checked_scalar("perturb_lean_rate", perturb_lean_rate)
+    perturb_steer_rate = checked_scalar("perturb_steer_rate", perturb_steer_rate)
+    if locked and perturb_steer_rate != 0:
+        raise ParameterError("a locked steer has no steer rate to kick: perturb_steer_rate is for steer free",
+                             "perturb_steer_rate")
+    if flat and (theta is not None or height is not None or diameter is not None or r is not R):
+        raise ParameterError("flat ground has no lane on a sphere: give speed and, for a turn, turn_radius "
+                             "(not theta, height, r or diameter)", "flat")
+    if not flat and turn_radius is not None:
+        raise ParameterError("turn_radius is a turn on flat ground: pass flat (on the globe the lane is theta or "
+                             "height)", "turn_radius")
+    if periods is not None and duration is not None:
+        raise ParameterError("give periods or duration, not both", "duration")
+    straight = flat and turn_radius is None
+    if straight and periods is not None:
+        raise ParameterError("straight running on flat ground has no period: give duration (s) instead of "
+                             "periods", "periods")
     if speed is None:
-        raise ParameterError("give speed (the rear contact's, m/s): the steady turn the run starts from",
-                             "speed", missing=True)
+        raise ParameterError("give speed (the rear contact's, m/s): the steady turn or straight running the run "
+                             "starts from", "speed", missing=True)
     speed = checked_scalar("speed", speed)
-    if (theta is None) == (height is None):
-        raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
-                             "theta", missing=theta is None)
-    if theta is not None:
-        theta_deg = checked_scalar("theta", theta)
-        lane = math.radians(theta_deg)
-        h = r * (1 + math.cos(lane))
+    if flat:
+        theta_deg = h = r = math.nan
+        radius = math.nan if straight else checked_scalar("turn_radius", turn_radius)
     else:
-        h = checked_scalar("height", height)
-        if h > 2 * r:
-            raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
-                                 f"(got {h:g})", "height")
-        lane = math.acos(min(max(h / r - 1.0, -1.0), 1.0))
-        theta_deg = math.degrees(lane)
+        r = checked_scalar("r", sphere_radius(r, diameter))
+        theta_deg, h = _lane(theta, height, r)
+        radius = math.nan
     perturb = checked_scalar("perturb", perturb)
-    periods = checked_scalar("periods", periods)
+    duration = checked_optional("duration", duration)
+    periods = None if periods is None else checked_scalar("periods", periods)
     points_per_period = int(checked_scalar("points_per_period", points_per_period))
     lower = tuple(m.lower() for m in METHODS)
     method = METHODS[lower.index(checked_choice("method", method, lower))]
     rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
     mu = checked_scalar("mu", mu)
-    if periods * points_per_period > MAX_SIMULATE_ROWS:
-        raise ParameterError(f"periods x points_per_period must be at most {MAX_SIMULATE_ROWS} rows "
-                             f"(got {periods:g} x {points_per_period})", "periods")
+    if straight and duration is None:
+        duration = STRAIGHT_DURATION
+    # rows per period of the turn; straight running has none: per second.  Checked
+    # before the turn is sought where the period is not needed, after where it is
+    if periods is not None or straight:
+        _rows(periods if periods is not None else duration, points_per_period, "seconds" if straight else "periods",
+              "duration" if straight else "periods")
     p = t.parameters()
-    turn = steady.turns_for_speed(lane, speed, p, "sphere", r, t.head)
-    count = int(turn["count"][0])
-    if count == 0:
-        raise ParameterError(f"no steady turn at theta = {theta_deg:g} deg and rear speed {speed:g} m/s "
-                             f"({turn['reason'][0] or 'none found'}); 'deathsphere ride --steer free' lists them",
-                             "speed")
-    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < count:
-        raise ParameterError(f"branch must be one of the {count} steady turns at this lane and speed "
-                             f"(0..{count - 1}, in increasing lean; got {branch!r})", "branch")
-    q, u = turn["q"][:, 0, branch], turn["u"][:, 0, branch]
-    torque0, omega = float(turn["steer_torque"][0, branch]), float(turn["omega"][0, branch])
-    period = 2 * math.pi / abs(omega)
-    n_points = max(int(round(periods * points_per_period)) + 1, 2)
-    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], periods * period, surface="sphere", r=r,
-                                torque0=torque0, k_lean=k_lean, k_rate=k_rate, hands_free=hands_free,
-                                kick=math.radians(perturb), mu=mu, n_points=n_points, method=method, rtol=rtol,
-                                atol=atol)
+    q, u, torque0, period = _start(t, p, speed, branch, flat, theta_deg, r, radius)
+    if duration is None:
+        duration = (2.0 if periods is None else periods) * period
+    length = duration / (1.0 if straight else period)
+    _rows(length, points_per_period, "seconds" if straight else "periods",
+          "periods" if periods is not None else "duration")
+    n_points = max(int(round(length * points_per_period)) + 1, 2)
+    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], duration, surface="flat" if flat else "sphere",
+                                r=None if flat else r, torque0=torque0, k_lean=k_lean, k_rate=k_rate,
+                                hands_free=hands_free, kick=math.radians(perturb), mu=mu, n_points=n_points,
+                                method=method, rtol=rtol, atol=atol, steer_locked=locked,
+                                kick_lean_rate=math.radians(perturb_lean_rate),
+                                kick_steer_rate=math.radians(perturb_steer_rate))
     deg = np.degrees
     cols = {"t_s": series["t"], "lean_surface_deg": deg(series["lean"]), "steer_deg": deg(series["steer"]),
             "heading_deg": deg(series["heading"]), "theta_rear_deg": deg(series["theta_rear"]),
@@ -528,7 +552,8 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
             "friction_rear_per_mass_m_s2": series["friction_rear"],
             "friction_front_per_mass_m_s2": series["friction_front"], "energy_drift": series["energy_drift"],
             "constraint_residual_m": series["constraint_residual"]}
-    control = "hands-free" if hands_free else ("rider" if steer_gains is not None else "steady-torque")
+    control = "locked" if locked else "hands-free" if hands_free else (
+        "rider" if steer_gains is not None else "steady-torque")
     row = {"machine": t.name, "theta_deg": theta_deg, "height_m": h, "r_m": r,
            "v_rear_m_s": speed, "lean_surface_deg": math.degrees(q[motion.LEAN]),
            "steer_deg": math.degrees(q[motion.STEER]), "steer_torque_n_m": torque0, "period_s": period,
@@ -539,7 +564,64 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
            "max_energy_drift": summary["max_energy_drift"],
            "max_constraint_residual_m": summary["max_constraint_residual"],
            "min_normal_rear_per_mass_m_s2": summary["min_normal_rear"],
-           "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol}
+           "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol,
+           "surface": "flat" if flat else "sphere", "turn_radius_m": radius, "steer": "locked" if locked else "free",
+           "perturb_lean_rate_deg_s": perturb_lean_rate, "perturb_steer_rate_deg_s": perturb_steer_rate}
     summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
                            for k in SIMULATE_SUMMARY_COLUMNS})
     return Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table
+
+
+def _lane(theta, height, r) -> tuple[float, float]:
+    """(theta_deg, height_m): the rear contact's lane on the globe from one of them."""
+    from deathsphere.api.arguments import checked_scalar
+
+    if (theta is None) == (height is None):
+        raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
+                             "theta", missing=theta is None)
+    if theta is not None:
+        theta_deg = checked_scalar("theta", theta)
+        return theta_deg, r * (1 + math.cos(math.radians(theta_deg)))
+    h = checked_scalar("height", height)
+    if h > 2 * r:
+        raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
+                             f"(got {h:g})", "height")
+    return math.degrees(math.acos(min(max(h / r - 1.0, -1.0), 1.0))), h
+
+
+def _rows(length, points_per_period, per, name):
+    """Refuse a run of more than MAX_SIMULATE_ROWS rows: ``length`` periods
+    of the turn (``per`` "periods") or seconds of straight running."""
+    if length * points_per_period > MAX_SIMULATE_ROWS:
+        raise ParameterError(f"a run is at most {MAX_SIMULATE_ROWS} rows: {length:.6g} {per} x "
+                             f"{points_per_period} points_per_period is too many",
+                             name)
+
+
+def _start(t: TwoWheeler, p, speed, branch, flat, theta_deg, r, radius):
+    """(q, u, steady steer torque, period) the run starts from: the steady
+    turn at the lane (the globe's theta, flat ground's turn radius) and rear
+    speed, or upright straight running (flat, no radius; no period)."""
+    from deathsphere.physics.two_wheeler import motion, steady
+
+    bad_branch = isinstance(branch, bool) or not isinstance(branch, (int, np.integer))
+    if flat and math.isnan(radius):
+        if bad_branch or branch != 0:
+            raise ParameterError(f"straight running is one state: branch must be 0 (got {branch!r})", "branch")
+        q = steady.configuration(0.0, 0.0, 0.0, p, "flat")
+        u = motion.dependent_speeds(q, np.array([0.0, -speed / p.rR, 0.0]), motion.parameter_values(p), "flat")
+        return q, u, 0.0, math.nan
+    lane = 1.0 / radius if flat else math.radians(theta_deg)
+    turn = steady.turns_for_speed(lane, speed, p, "flat" if flat else "sphere", None if flat else r, t.head)
+    count = int(turn["count"][0])
+    where = f"turn radius {radius:g} m" if flat else f"theta = {theta_deg:g} deg"
+    if count == 0:
+        hint = "" if flat else "; 'deathsphere ride --steer free' lists them"
+        raise ParameterError(f"no steady turn at {where} and rear speed {speed:g} m/s "
+                             f"({turn['reason'][0] or 'none found'}){hint}", "speed")
+    if bad_branch or not 0 <= branch < count:
+        raise ParameterError(f"branch must be one of the {count} steady turns at this lane and speed "
+                             f"(0..{count - 1}, in increasing lean; got {branch!r})", "branch")
+    omega = float(turn["omega"][0, branch])
+    return (turn["q"][:, 0, branch], turn["u"][:, 0, branch], float(turn["steer_torque"][0, branch]),
+            2 * math.pi / abs(omega))

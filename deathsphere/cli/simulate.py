@@ -86,15 +86,20 @@ def _preflight_output(output) -> bool:
                  "(docs/machine.md sec. 5).  Horizontal orbits: --alpha or --speed (its centre of mass's).")
 @single("--steer", type=click.Choice(("free", "locked"), case_sensitive=False), default=None,
         help="A two-wheeler (--machine benchmark-bicycle) from its steady turn at --theta/--height and --speed "
-             "(the rear contact's), the steer held by a torque: the turn's steady torque unless "
-             "--steer-gains or --hands-free (docs/two-wheeler.md sec. 10.1).")
+             "(the rear contact's): free, the steer held by a torque (the turn's steady torque unless "
+             "--steer-gains or --hands-free), or locked at the turn's steer (docs/two-wheeler.md sec. 10.1).")
+@click.option("--flat", is_flag=True, default=False,
+              help="A two-wheeler on flat ground: from upright straight running at --speed, or from the steady "
+                   "turn of --turn-radius.")
+@params_options("turn_radius", "duration", "perturb_lean_rate", "perturb_steer_rate")
 @single("--steer-gains", default=None, metavar="K_LEAN,K_RATE",
         help="A two-wheeler's rider: steer torque = steady torque + K_LEAN (lean - steady lean) + K_RATE "
              "lean rate [N m/rad, N m s/rad]; positive steers into the fall.")
 @click.option("--hands-free", is_flag=True, default=False, help="A two-wheeler with no steer torque at all.")
 @setup_options()
 @output_options()
-def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
+def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate,
+                     steer_gains, hands_free, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
                      points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, loop_seconds,
                      playback, body, machine,
                      machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
@@ -112,10 +117,19 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
     is the output, and stderr says where it went (and, on a terminal,
     shows the summary).
 
-    A two-wheeler (--machine benchmark-bicycle with --steer free,
-    --steer-gains or --hands-free): the Whipple bicycle's nonlinear
-    equations from its steady turn at --theta/--height and --speed,
-    kicked by --perturb degrees of lean (docs/two-wheeler.md sec. 10.1).
+    A two-wheeler (--machine benchmark-bicycle with --steer free|locked,
+    --steer-gains, --hands-free or --flat): the Whipple bicycle's nonlinear
+    equations from its steady turn at --theta/--height and --speed (with
+    --flat: from upright straight running at --speed, or the turn of
+    --turn-radius), kicked by --perturb degrees of lean,
+    --perturb-lean-rate and --perturb-steer-rate deg/s, for --periods of
+    the turn or --duration seconds (straight running: 5 s unless given;
+    --points-per-period is then rows per second) (docs/two-wheeler.md
+    sec. 10.1).  The benchmark's case (the first --flat example below): a
+    half-degree kick hands-free at 5 m/s, inside the self-stable window
+    4.29-6.02 m/s, dies away at the rate of the largest eigenvalue that
+    'deathsphere ride --machine benchmark-bicycle --flat --speed 5' gives
+    (-0.32 1/s); at 3 m/s it grows.
 
     \b
     Examples:
@@ -133,13 +147,21 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
       deathsphere simulate --machine benchmark-bicycle --steer free \\
           --height 1 --speed 5 --diameter 16ft --perturb 0.2 \\
           --periods 1 --steer-gains 10,10
+      deathsphere simulate --machine benchmark-bicycle --flat --speed 5 \\
+          --perturb 0.5
+      deathsphere simulate --machine benchmark-bicycle --flat --speed 3 \\
+          --perturb 0.5 --duration 10 --summary-only  (grows, falls)
+      deathsphere simulate --machine benchmark-bicycle --flat --speed 5 \\
+          --turn-radius 10 --steer locked --perturb-lean-rate 5
     """
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
 
     from deathsphere.api.two_wheelers import is_two_wheeler
 
-    if steer is not None or steer_gains is not None or hands_free or is_two_wheeler(machine):
+    two_wheeler_only = given(flat=flat or None, turn_radius=turn_radius, duration=duration,
+                             perturb_lean_rate=perturb_lean_rate, perturb_steer_rate=perturb_steer_rate)
+    if steer is not None or steer_gains is not None or hands_free or two_wheeler_only or is_two_wheeler(machine):
         refused = [flag for flag, value in (("--alpha", alpha), ("--omega", omega), ("--omega3", omega3),
                                             ("--vertical", vertical or None), ("--v-top", v_top), ("--body", body),
                                             ("--machine-file", machine_file), ("-a", a), ("-k", k),
@@ -156,13 +178,15 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
             fail(f"a two-wheeler's run is written as a table (.csv/.json/.ndjson): its 3-D view and figures "
                  f"are not done yet (got {output})")
         if refused:
-            fail(f"{', '.join(refused)} not for a two-wheeler's run: give --machine, --steer free, --theta or "
-                 "--height, --speed, -r/--diameter, -g, --mu, --branch, --perturb, --periods, "
+            fail(f"{', '.join(refused)} not for a two-wheeler's run: give --machine, --steer free|locked, "
+                 "--theta or --height (or --flat and --turn-radius), --speed, -r/--diameter, -g, --mu, --branch, "
+                 "--perturb, --perturb-lean-rate, --perturb-steer-rate, --periods or --duration, "
                  "--points-per-period, --steer-gains or --hands-free, --method, --rtol, --atol")
         _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt,
                      **given(theta=theta, height=height, speed=speed, r=r, diameter=diameter, g=g, mu=mu,
                              branch=branch, perturb=perturb, periods=periods,
-                             points_per_period=points_per_period, method=method, rtol=rtol, atol=atol))
+                             points_per_period=points_per_period, method=method, rtol=rtol, atol=atol),
+                     **two_wheeler_only)
         return
     if height is not None:
         raise click.UsageError("--height is a two-wheeler's lane (with --steer); give --theta")
@@ -244,6 +268,8 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
     """``simulate`` of a two-wheeler: the API validates, the series (or the
     summary) is the output, the summary on a terminal (docs/two-wheeler.md
     sec. 10.1)."""
+    import numpy as np
+
     from deathsphere.viewer import view_format
 
     from deathsphere.api.two_wheelers import simulate_two_wheeler
@@ -251,7 +277,8 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
     series, summary = simulate_two_wheeler(
         "benchmark-bicycle" if machine is None else machine, steer="free" if steer is None else steer,
         steer_gains=steer_gains, hands_free=hands_free, **options)
-    title = f"{summary['machine'][0]}: simulated from its steady turn (docs/two-wheeler.md sec. 10.1)"
+    start = "upright straight running" if np.isnan(summary["period_s"][0]) else "its steady turn"
+    title = f"{summary['machine'][0]}: simulated from {start} (docs/two-wheeler.md sec. 10.1)"
     fmt = choose_format(fmt)
     if output is not None:
         emit([summary if summary_only else series], view_format(output), output=output)

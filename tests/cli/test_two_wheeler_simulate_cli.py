@@ -53,6 +53,32 @@ def test_height_without_a_two_wheeler_is_refused(run):
     assert res.exit_code == 2 and "--height is a two-wheeler's lane" in res.stderr
 
 
-def test_a_locked_steer_is_not_simulated(run):
-    res = run(*[("locked" if a == "free" else a) for a in RUN])
-    assert res.exit_code == 2 and "steer must be free" in res.stderr and res.stderr.count("\n") == 1
+def test_a_locked_steer_is_simulated_and_says_so(run):
+    res = run(*[("locked" if a == "free" else a) for a in RUN], "--perturb-lean-rate", "2", "--summary-only",
+              "--format", "csv")
+    assert res.exit_code == 0, res.output
+    (row,) = csv.DictReader(io.StringIO(res.stdout))
+    assert row["control"] == "locked" and row["steer"] == "locked" and row["perturb_lean_rate_deg_s"] == "2.0"
+
+
+FLAT = ("simulate", "--machine", "benchmark-bicycle", "--flat", "--speed", "5", "--perturb", "0.5")
+
+
+def test_the_benchmarks_case_runs_from_straight_running(run):
+    res = run(*FLAT, "--duration", "0.5", "--points-per-period", "10", "--rtol", "1e-6", "--format", "csv")
+    assert res.exit_code == 0, res.output
+    rows = list(csv.DictReader(io.StringIO(res.stdout)))
+    assert len(rows) == 6 and float(rows[-1]["t_s"]) == 0.5
+    assert float(rows[0]["lean_surface_deg"]) == 0.5 and float(rows[0]["v_rear_m_s"]) == pytest.approx(5.0)
+    assert "from upright straight running" in res.stderr and "completed" in res.stderr
+
+
+@pytest.mark.parametrize("extra, words", [
+    (("--height", "1"), "flat ground has no lane on a sphere"),
+    (("--periods", "2"), "straight running on flat ground has no period"),
+    (("--steer", "locked", "--perturb-steer-rate", "3"), "no steer rate to kick"),
+    (("--frame", "lab"), "--frame not for a two-wheeler's run"),
+])
+def test_bad_flat_combinations_are_refused_in_one_line(run, extra, words):
+    res = run(*FLAT, *extra)
+    assert res.exit_code == 2 and words in res.stderr and res.stderr.count("\n") == 1, res.stderr

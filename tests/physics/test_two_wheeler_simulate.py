@@ -9,13 +9,15 @@ flat ground; the linearisation about a steady turn on the globe
 kick.
 """
 
+import functools
+
 import numpy as np
 import pytest
 from scipy.linalg import expm
 
 from deathsphere.physics.two_wheeler import motion, stability, steady
 from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
-from deathsphere.physics.two_wheeler.simulate import simulate
+from deathsphere.physics.two_wheeler.simulate import lock_torque, simulate
 
 GLOBE = 2.4384      # a 16-foot globe's radius, m
 B = benchmark_bicycle()
@@ -27,11 +29,17 @@ def _straight(speed):
     return q, np.array([0.0, -speed / B.rR, 0.0])
 
 
-def _globe_turn(speed=5.0, height=1.0):
+@functools.lru_cache(maxsize=None)
+def _globe_turn_found(speed, height):
     lane = np.arccos(height / GLOBE - 1)
     turn = steady.turns_for_speed(lane, speed, B, "sphere", GLOBE)
-    q, u = turn["q"][:, 0, 0], turn["u"][:, 0, 0]
-    return q, u, float(turn["steer_torque"][0, 0])
+    return turn["q"][:, 0, 0], turn["u"][:, 0, 0], float(turn["steer_torque"][0, 0])
+
+
+def _globe_turn(speed=5.0, height=1.0):
+    # the scan is sought once per file: each test gets its own copies
+    q, u, torque = _globe_turn_found(speed, height)
+    return q.copy(), u.copy(), torque
 
 
 def test_energy_is_conserved_hands_free_on_flat_ground():
@@ -110,3 +118,50 @@ def test_the_contact_forces_at_a_steady_turn_are_the_steady_turns():
                          rtol=1e-10, n_points=3)
     for key in ("normal_rear", "normal_front", "friction_rear", "friction_front"):
         np.testing.assert_allclose(series[key], turn[key][0, 0], rtol=1e-6)
+
+
+def _flat_turn(radius=10.0, speed=5.0):
+    turn = steady.turns_for_speed(1 / radius, speed, B, "flat")
+    return turn["q"][:, 0, 0], turn["u"][:, 0, 0], float(turn["steer_torque"][0, 0])
+
+
+@pytest.mark.parametrize("surface", ["flat", "sphere"])
+def test_a_locked_steer_holds_its_angle_and_conserves_energy(surface):
+    """No torque does work on a steer that does not turn; the lock's torque
+    (the reduced steer row) is what the full equations with the contact
+    multipliers need to keep the steer's acceleration zero."""
+    q, u, torque = _flat_turn() if surface == "flat" else _globe_turn()
+    run = dict(surface=surface, r=None if surface == "flat" else GLOBE, steer_locked=True, rtol=1e-10, n_points=7)
+    values = motion.parameter_values(B, surface, run["r"])
+    # unkicked, the lock holds the steady turn's torque (turn_state's G + w^2 H)
+    T0, a0, _ = lock_torque(q, u[list(motion.INDEPENDENT)], values, surface)
+    assert T0 == pytest.approx(torque, rel=1e-9) and np.max(np.abs(a0)) < 1e-9
+    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.2, kick=np.radians(1.0),
+                               kick_lean_rate=0.1, **run)
+    assert summary["status"] == "completed" and summary["max_energy_drift"] < 1e-8
+    assert summary["max_constraint_residual"] < 1e-10
+    assert np.all(series["steer"] == q[motion.STEER]) and np.all(series["steer_rate"] == 0)
+    assert summary["max_lean_deviation"] > np.radians(1.1)        # it falls, the steer does not help
+    assert abs(series["steer_torque"][-1] - torque) > 1e-3
+    # off the turn (leaning 2 degrees more, lean rate 0.3 rad/s), the full equations with the
+    # lock's torque leave the steer unaccelerated, and without it they do not
+    q1 = q.copy()
+    q1[motion.LEAN] += np.radians(2.0)
+    q1 = motion.pitch(q1, values, surface)
+    u_ind = np.array([0.3, u[motion.REAR], 0.0])
+    T, _, u1 = lock_torque(q1, u_ind, values, surface)
+    udot, _ = motion.accelerations(q1, u1, values, T, surface)
+    assert abs(udot[motion.STEER]) < 1e-9 * np.max(np.abs(udot))
+    free, _ = motion.accelerations(q1, u1, values, 0.0, surface)
+    assert abs(free[motion.STEER]) > 1e-3
+
+
+def test_kicks_of_the_lean_and_steer_rates_start_there_and_conserve_energy():
+    q, u = _straight(4.0)
+    series, summary = simulate(B, q, u, 0.2, hands_free=True, kick_lean_rate=0.2, kick_steer_rate=-0.5,
+                               rtol=1e-10, n_points=4)
+    assert series["lean_rate"][0] == 0.2 and series["steer_rate"][0] == -0.5
+    assert series["v_rear"][0] == pytest.approx(4.0, rel=1e-12)
+    # the kick moved the heading: the dependent speeds followed the steer rate
+    assert abs(series["heading"][-1] - np.pi / 2) > 1e-3
+    assert summary["max_energy_drift"] < 1e-8 and summary["max_constraint_residual"] < 1e-10

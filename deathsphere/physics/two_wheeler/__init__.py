@@ -21,7 +21,8 @@ module              concept
                     circles): every turn for a speed or a steer torque
 ``stability``       their eigenvalues in the turning frame, steer free
                     or locked, and a verdict
-``simulate``        the nonlinear motion integrated from a turn,
-                    kicked, steer by torque or rider; events
+``simulate``        the nonlinear motion integrated from a turn or
+                    straight running, kicked, steer by torque,
+                    rider or lock; events
 ==================  ==============================================
 """

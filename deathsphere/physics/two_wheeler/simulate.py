@@ -1,7 +1,7 @@
 """The Whipple bicycle's nonlinear motion, integrated: from a steady turn
-(or straight running), kicked in lean, with the steer held by a steady
-torque, a simple rider or nothing (beyond the paper; docs/two-wheeler.md
-sec. 10.1).
+(or straight running), kicked in lean, lean rate or steer rate, with the
+steer held by a steady torque, a simple rider, nothing, or locked (beyond
+the paper; docs/two-wheeler.md sec. 10.1).
 
 The state is the eight coordinates and the three independent speeds (lean
 rate, rear wheel rate, steer rate); the five dependent speeds come from the
@@ -12,7 +12,11 @@ integrator's tolerance: its residual is reported.
 
 The rider's steer torque is T = T_0 + k_lean (lean - lean_0) + k_rate
 lean', T_0 the turn's steady torque and lean_0 its lean: positive gains
-steer into the fall.  Hands-free is T = 0.
+steer into the fall.  Hands-free is T = 0.  A locked steer keeps its
+steer rate zero: the lean and rear wheel rates are then the independent
+speeds, their accelerations from the lean and rear wheel rows of Kane's
+reduced equations (where the steer torque does not appear), and the
+lock's torque is what the steer row then asks for.
 
 The contact forces: the front contact's from the constraints' multipliers,
 the total from the mass centre's acceleration (m a - m g), the rear's the
@@ -28,7 +32,7 @@ import numpy as np
 from deathsphere.physics.two_wheeler import _generated, geometry, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STATUSES", "rider_torque", "contact_forces", "simulate"]
+__all__ = ["STATUSES", "rider_torque", "lock_torque", "contact_forces", "simulate"]
 
 #: How a run ends.
 STATUSES = ("completed", "contact_lost", "slips", "failed")
@@ -40,6 +44,20 @@ def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0
     """The rider's steer torque T = T_0 + k_lean (lean - lean_0) + k_rate
     lean' (N m; beyond the paper; docs/two-wheeler.md sec. 10.1)."""
     return torque0 + k_lean * (lean - lean0) + k_rate * lean_rate
+
+
+def lock_torque(q, u_ind, values, surface="flat"):
+    """(T, a, u): the torque a locked steer applies (N m), the lean and rear
+    wheel accelerations a (2, ...) and the eight speeds at (q, u_ind)
+    (u_ind's steer rate is zero on a locked steer): in Kane's reduced
+    equations (:func:`motion.reduced_mass_and_forcing`) with the steer's
+    acceleration zero, the lean and rear wheel rows, where the steer torque
+    does not appear, give a, and the steer row then gives T (beyond the
+    paper; docs/two-wheeler.md sec. 10.1)."""
+    Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, 0.0, surface)
+    a = np.linalg.solve(Mr[..., :2, :2], Fr[..., :2, None])
+    T = (Mr[..., 2:, :2] @ a)[..., 0, 0] - Fr[..., 2]
+    return T, np.moveaxis(a[..., 0], -1, 0), u
 
 
 def _mass_centre(q, p: BicycleParameters, r, surface):
@@ -85,15 +103,20 @@ def _residual(q, p, surface):
 
 def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat", r=None, torque0=0.0,
              lean0=None, k_lean=0.0, k_rate=0.0, hands_free=False, kick=0.0, mu=np.inf, n_points=200,
-             method="DOP853", rtol=1e-10, atol=None):
+             method="DOP853", rtol=1e-10, atol=None, steer_locked=False, kick_lean_rate=0.0,
+             kick_steer_rate=0.0):
     """Integrate from (q0, u_ind0) (a steady turn's q and its independent
     speeds (lean rate, rear wheel rate, steer rate)) with the lean kicked by
-    ``kick`` (rad), the steer torque :func:`rider_torque` (T_0 = ``torque0``
-    about lean_0 = ``lean0``, default q0's lean) or, ``hands_free``, zero,
-    for ``t_end`` s; events stop the run: a normal force reaching zero
-    (``contact_lost``) or the friction exceeding ``mu`` times the normal at
-    either wheel (``slips``) (beyond the paper; docs/two-wheeler.md
-    sec. 10.1).  Returns (series dict of (n,) arrays, summary dict)."""
+    ``kick`` (rad), the lean and steer rates by ``kick_lean_rate`` and
+    ``kick_steer_rate`` (rad/s; the dependent speeds follow from the
+    constraints), the steer torque :func:`rider_torque` (T_0 = ``torque0``
+    about lean_0 = ``lean0``, default q0's lean), or, ``hands_free``, zero,
+    or, ``steer_locked``, the steer held at q0's steer (its rate zero, any
+    given dropped; the torque :func:`lock_torque`), for ``t_end`` s; events
+    stop the run: a normal force reaching zero (``contact_lost``) or the
+    friction exceeding ``mu`` times the normal at either wheel (``slips``)
+    (beyond the paper; docs/two-wheeler.md sec. 10.1).  Returns (series
+    dict of (n,) arrays, summary dict)."""
     from scipy.integrate import solve_ivp
 
     p = parameters
@@ -102,14 +125,22 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     lean0 = float(q0[motion.LEAN]) if lean0 is None else float(lean0)
     q0[motion.LEAN] += kick
     q0 = motion.pitch(q0, values, surface)
-    y0 = np.concatenate([q0, np.asarray(u_ind0, float)])
+    u_ind0 = np.array(u_ind0, float) + np.array([kick_lean_rate, 0.0, kick_steer_rate])
+    if steer_locked:
+        u_ind0[2] = 0.0
+    y0 = np.concatenate([q0, u_ind0])
     gains = (0.0, 0.0, 0.0, 0.0) if hands_free else (torque0, lean0, k_lean, k_rate)
 
     def torque(y):
+        if steer_locked:
+            return lock_torque(y[:8], y[8:], values, surface)[0]
         return rider_torque(y[motion.LEAN], y[8], *gains)
 
     def rates(t, y):
         q, u_ind = y[:8], y[8:]
+        if steer_locked:
+            _, a, u = lock_torque(q, u_ind, values, surface)
+            return np.concatenate([u, a, [0.0]])
         Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, torque(y), surface)
         return np.concatenate([u, np.linalg.solve(Mr, Fr)])
 
