@@ -51,6 +51,7 @@ def test_too_little_friction_slips_at_once():
 
 @pytest.mark.parametrize("kwargs, words", [
     ({"steer": "locked"}, "steer must be free"),
+    ({"view": "yes"}, "view must be True or False"),
     ({"hands_free": True, "steer_gains": (1, 2)}, "not both"),
     ({"steer_gains": (1, math.inf)}, "two finite numbers"),
     ({"speed": None}, "give speed"),

@@ -433,7 +433,7 @@ def _gains(steer_gains) -> tuple[float, float]:
 def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, diameter=None, g=G, mu=INF,
                          branch=0, perturb=0.0, periods=2.0, points_per_period=100, steer_gains=None,
                          hands_free=False, steer="free", method="DOP853", rtol=1e-10,
-                         atol=None) -> tuple[Table, Table]:
+                         atol=None, view=False) -> tuple:
     """Integrate a two-wheeler's nonlinear equations on the globe: ``deathsphere
     simulate --machine benchmark-bicycle --steer free`` (beyond the paper;
     docs/two-wheeler.md sec. 10.1).
@@ -453,7 +453,11 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     Returns (series, summary): the time series (:data:`SIMULATE_COLUMNS`;
     ``energy_drift`` is the energy's change over the initial kinetic
     energy, conserved hands-free) and one summary row
-    (:data:`SIMULATE_SUMMARY_COLUMNS`).
+    (:data:`SIMULATE_SUMMARY_COLUMNS`).  With ``view``, a third item: what
+    the 3-D view draws at every row of the series, ``t`` [s] and the points
+    of :func:`deathsphere.physics.two_wheeler.geometry.outline` [m] (the
+    rims, frames and head, in the core's axes: origin the sphere's centre,
+    z down).
     """
     from dataclasses import replace
 
@@ -470,6 +474,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
         t = replace(t, g=checked_scalar("g", g))
     r = checked_scalar("r", sphere_radius(r, diameter))
     hands_free = checked_flag("hands_free", hands_free)
+    view = checked_flag("view", view)
     if hands_free and steer_gains is not None:
         raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
     k_lean, k_rate = (0.0, 0.0) if steer_gains is None else _gains(steer_gains)
@@ -542,4 +547,9 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
            "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol}
     summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
                            for k in SIMULATE_SUMMARY_COLUMNS})
-    return Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table
+    tables = Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table
+    if not view:
+        return tables
+    from deathsphere.physics.two_wheeler.geometry import outline
+
+    return (*tables, {"t": series["t"], **outline(series["q"], p, r, "sphere", t.head)})
