@@ -437,7 +437,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                          branch=0, perturb=0.0, periods=None, points_per_period=100, steer_gains=None,
                          hands_free=False, steer="free", method="DOP853", rtol=1e-10,
                          atol=None, flat=False, turn_radius=None, duration=None, perturb_lean_rate=0.0,
-                         perturb_steer_rate=0.0) -> tuple[Table, Table]:
+                         perturb_steer_rate=0.0, view=False) -> tuple:
     """Integrate a two-wheeler's nonlinear equations on the globe or on flat
     ground: ``deathsphere simulate --machine benchmark-bicycle --steer free``
     or ``--flat`` (beyond the paper; docs/two-wheeler.md sec. 10.1).
@@ -464,7 +464,12 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     Returns (series, summary): the time series (:data:`SIMULATE_COLUMNS`;
     ``energy_drift`` is the energy's change over the initial kinetic
     energy, conserved hands-free and with the steer locked) and one summary
-    row (:data:`SIMULATE_SUMMARY_COLUMNS`).
+    row (:data:`SIMULATE_SUMMARY_COLUMNS`).  With ``view`` (on the globe), a
+    third item: what the 3-D view draws at every row of the series, ``t``
+    [s] and the points of
+    :func:`deathsphere.physics.two_wheeler.geometry.outline` [m] (the rims,
+    frames and head, in the core's axes: origin the sphere's centre, z
+    down).
     """
     from dataclasses import replace
 
@@ -483,6 +488,10 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                              "steer free", "steer")
     if g is not G:
         t = replace(t, g=checked_scalar("g", g))
+    view = checked_flag("view", view)
+    if view and flat:
+        raise ParameterError("the 3-D view draws the globe: a run on flat ground writes tables and figures "
+                             "(not view)", "view")
     if hands_free and steer_gains is not None:
         raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
     k_lean, k_rate = (0.0, 0.0) if steer_gains is None else _gains(steer_gains)
@@ -569,7 +578,12 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
            "perturb_lean_rate_deg_s": perturb_lean_rate, "perturb_steer_rate_deg_s": perturb_steer_rate}
     summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
                            for k in SIMULATE_SUMMARY_COLUMNS})
-    return Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table
+    tables = Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table
+    if not view:
+        return tables
+    from deathsphere.physics.two_wheeler.geometry import outline
+
+    return (*tables, {"t": series["t"], **outline(series["q"], p, r, "sphere", t.head)})
 
 
 def _lane(theta, height, r) -> tuple[float, float]:

@@ -78,7 +78,9 @@ def _preflight_output(output) -> bool:
 @single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
         help="Plot theta, alpha and the contact point's track to FILE (.png/.svg/.pdf; plot extra), write "
              "the 3-D view: .html (interactive, self-contained), .gif (plot extra), .mp4 (plot extra and "
-             "ffmpeg), or the time series: .csv/.json/.ndjson.  Nothing is printed on stdout then.")
+             "ffmpeg), or the time series: .csv/.json/.ndjson.  A two-wheeler's figure plots lean, steer, "
+             "steer torque and contact forces; its view draws both wheels, the frames, the rider's head and "
+             "the contacts' paths.  Nothing is printed on stdout then.")
 @params_options("loop_seconds", "playback")
 @body_option(("wheel", "sphere"))
 @machine_options(without=("a",), machine_help="Simulate a machine (motorcycle and rider) instead: a preset (see "
@@ -129,7 +131,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     half-degree kick hands-free at 5 m/s, inside the self-stable window
     4.29-6.02 m/s, dies away at the rate of the largest eigenvalue that
     'deathsphere ride --machine benchmark-bicycle --flat --speed 5' gives
-    (-0.32 1/s); at 3 m/s it grows.
+    (-0.32 1/s); at 3 m/s it grows.  On the globe --output run.html
+    shows its wheels, frames and rider in the globe.
 
     \b
     Examples:
@@ -147,6 +150,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
       deathsphere simulate --machine benchmark-bicycle --steer free \\
           --height 1 --speed 5 --diameter 16ft --perturb 0.2 \\
           --periods 1 --steer-gains 10,10
+      deathsphere simulate --machine benchmark-bicycle --steer free \\
+          --theta 100 --speed 9 --diameter 16ft --perturb 0.2 \\
+          --steer-gains 10,10 --output run.html
       deathsphere simulate --machine benchmark-bicycle --flat --speed 5 \\
           --perturb 0.5
       deathsphere simulate --machine benchmark-bicycle --flat --speed 3 \\
@@ -174,9 +180,6 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                                                             spin_inertia=spin_inertia, head_height=head_height)]
         if frame != "turning":
             refused.append("--frame")
-        if output is not None and view_format(output) not in TABLE_OUTPUTS:
-            fail(f"a two-wheeler's run is written as a table (.csv/.json/.ndjson): its 3-D view and figures "
-                 f"are not done yet (got {output})")
         if refused:
             fail(f"{', '.join(refused)} not for a two-wheeler's run: give --machine, --steer free|locked, "
                  "--theta or --height (or --flat and --turn-radius), --speed, -r/--diameter, -g, --mu, --branch, "
@@ -274,15 +277,33 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
 
     from deathsphere.api.two_wheelers import simulate_two_wheeler
 
-    series, summary = simulate_two_wheeler(
+    table_file = output is not None and view_format(output) in TABLE_OUTPUTS
+    view = output is not None and not table_file and _preflight_output(output)
+    series, summary, *frames = simulate_two_wheeler(
         "benchmark-bicycle" if machine is None else machine, steer="free" if steer is None else steer,
-        steer_gains=steer_gains, hands_free=hands_free, **options)
+        steer_gains=steer_gains, hands_free=hands_free, view=view, **options)
     start = "upright straight running" if np.isnan(summary["period_s"][0]) else "its steady turn"
     title = f"{summary['machine'][0]}: simulated from {start} (docs/two-wheeler.md sec. 10.1)"
     fmt = choose_format(fmt)
     if output is not None:
-        emit([summary if summary_only else series], view_format(output), output=output)
-        stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+        if table_file:
+            emit([summary if summary_only else series], view_format(output), output=output)
+            stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+        elif view:
+            from deathsphere.viewer.two_wheeler_scene import write_two_wheeler_view
+
+            with progress("frames", None) as bar:
+                size = write_two_wheeler_view(output, series, summary, frames[0], progress=bar.update)
+            stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
+        else:
+            from deathsphere.render.figures import PlotExtraMissing
+            from deathsphere.render.two_wheeler_figure import plot_two_wheeler_run
+
+            try:
+                plot_two_wheeler_run(series, summary, output=output)
+            except PlotExtraMissing as exc:
+                fail(one_line(str(exc)))
+            stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
         if stderr_console().is_terminal:
             emit_to_stderr(summary, title)
     elif fmt == "table" or summary_only:

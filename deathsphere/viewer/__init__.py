@@ -8,6 +8,11 @@
 * :mod:`deathsphere.viewer.animation` -- GIF (Pillow) or MP4 (ffmpeg),
   drawn with matplotlib (the ``plot`` extra) and written frame by frame.
 
+A two-wheeler's run has its own page and loop
+(:mod:`deathsphere.viewer.two_wheeler_scene`,
+:mod:`deathsphere.viewer.two_wheeler_animation`; docs/two-wheeler.md
+sec. 10.1), and ``show``'s act its own (:mod:`deathsphere.viewer.show_scene`).
+
 :func:`check_view_output` says, before anything is integrated, whether the
 file can be written here; :func:`write_view` writes it.
 """

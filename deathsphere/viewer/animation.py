@@ -26,7 +26,7 @@ import numpy as np
 from deathsphere.viewer.scene import BodyScene, playback_factor, slow_motion_words
 from deathsphere.writers.atomic import atomic_path, signals_held
 
-__all__ = ["frame_times", "loop_plan", "frame_delays_ms", "write_animation", "CAMERA", "FPS", "MAX_SECONDS",
+__all__ = ["frame_times", "loop_plan", "frame_delays_ms", "write_animation", "globe_loop_figure", "CAMERA", "FPS", "MAX_SECONDS",
            "SIZE_PX", "END_HOLD_S"]
 
 #: frames a second of the loop: 40 ms, a whole number of the GIF's 10 ms
@@ -408,6 +408,32 @@ def write_animation(output, scenes: list[BodyScene], *, title: str = "", fps: in
         return np.asarray(canvas.buffer_rgba())[..., :3]
 
     return write_frames(output, draw, times, delays, size_px, fps, progress)
+
+
+def globe_loop_figure(r, title, camera, size_px=SIZE_PX, dpi: int = 90):
+    """A loop's figure of a globe of radius ``r`` from the fixed ``camera``
+    (elevation, azimuth) [deg], its wireframe drawn, ``title`` above and an
+    empty clock box at the top left: (figure, canvas, 3-D axes, clock).
+    Needs matplotlib (the ``plot`` extra)."""
+    from deathsphere.render.figures import import_matplotlib
+
+    import_matplotlib()
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(size_px[0] / dpi, size_px[1] / dpi), dpi=dpi)
+    canvas = FigureCanvasAgg(fig)
+    ax = fig.add_axes((0.0, 0.02, 1.0, 0.86), projection="3d")
+    ax.set_axis_off()
+    ax.set_box_aspect((1, 1, 1), zoom=1.4)
+    for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+        set_lim(-r, r)
+    ax.view_init(*camera)
+    _sphere_lines(ax, r)
+    fig.text(0.5, 0.995, textwrap.fill(title, 90), ha="center", va="top", fontsize=10, fontweight="bold")
+    clock = fig.text(0.015, 0.86, "", ha="left", va="top", fontsize=11,
+                     bbox=dict(boxstyle="round", fc="white", ec="#999999", alpha=0.9))
+    return fig, canvas, ax, clock
 
 
 def write_frames(output, draw, times, delays, size_px, fps, progress=None) -> int:

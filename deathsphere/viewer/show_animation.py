@@ -8,11 +8,9 @@ written frame by frame through the simulate view's streams
 
 from __future__ import annotations
 
-import textwrap
-
 import numpy as np
 
-from deathsphere.viewer.animation import FPS, SIZE_PX, _sphere_lines, frame_delays_ms, write_frames
+from deathsphere.viewer.animation import FPS, SIZE_PX, frame_delays_ms, globe_loop_figure, write_frames
 from deathsphere.viewer.scene import slow_motion_words
 
 __all__ = ["loop_times", "write_act_animation", "MAX_SECONDS", "CAMERA"]
@@ -56,25 +54,8 @@ def write_act_animation(output, scene, *, fps: int = FPS, max_seconds: float = M
                         size_px=SIZE_PX, dpi: int = 90) -> int:
     """Write the loop to ``output`` (.gif or .mp4), each frame as it is
     drawn; returns the number of frames."""
-    from deathsphere.render.figures import import_matplotlib
-
-    import_matplotlib()
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
     r = scene.r
-    fig = Figure(figsize=(size_px[0] / dpi, size_px[1] / dpi), dpi=dpi)
-    canvas = FigureCanvasAgg(fig)
-    ax = fig.add_axes((0.0, 0.02, 1.0, 0.86), projection="3d")
-    ax.set_axis_off()
-    ax.set_box_aspect((1, 1, 1), zoom=1.4)
-    for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
-        set_lim(-r, r)
-    ax.view_init(*CAMERA)
-    _sphere_lines(ax, r)
-    fig.text(0.5, 0.995, textwrap.fill(scene.title, 90), ha="center", va="top", fontsize=10, fontweight="bold")
-    clock = fig.text(0.015, 0.86, "", ha="left", va="top", fontsize=11,
-                     bbox=dict(boxstyle="round", fc="white", ec="#999999", alpha=0.9))
+    fig, canvas, ax, clock = globe_loop_figure(r, scene.title, CAMERA, size_px, dpi)
     # a capsule drawn as a thick line: its width in points from the rider's width
     points_per_m = 0.5 * size_px[1] / (2.4 * r) * 72 / dpi
     artists = {}

@@ -1,6 +1,6 @@
 """``deathsphere simulate --machine benchmark-bicycle --steer free``: the
-time series piped, the summary on a terminal, a table file, and one-line
-refusals with exit status 2."""
+time series piped, the summary on a terminal, a table file, the 3-D view
+and the figure, and one-line refusals with exit status 2."""
 
 import csv
 import io
@@ -36,10 +36,26 @@ def test_a_table_file_is_written(run, tmp_path):
     assert res.stdout == "" and len(out.read_text().splitlines()) == 6
 
 
+def test_the_3d_view_is_written_and_nothing_printed(run, tmp_path):
+    out = tmp_path / "run.html"
+    res = run(*RUN, "--output", str(out))
+    assert res.exit_code == 0, res.output
+    assert res.stdout == "" and f"wrote {out}" in res.stderr
+    page = out.read_text(encoding="utf-8")
+    assert '"format":"deathsphere-two-wheeler/1"' in page and '"n":5,' in page
+
+
+def test_the_figure_is_written(run, tmp_path):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "run.svg"
+    res = run(*RUN, "--output", str(out))
+    assert res.exit_code == 0, res.output
+    assert res.stdout == "" and "<svg" in out.read_text(encoding="utf-8")
+
+
 @pytest.mark.parametrize("extra, words", [
     (("--alpha", "10"), "--alpha not for a two-wheeler's run"),
-    (("--output", "v.html"), "3-D view and figures are not done yet"),
-    (("--output", "v.png"), "3-D view and figures are not done yet"),
+    (("--output", "v.html", "--loop-seconds", "2"), "--loop-seconds not for a two-wheeler's run"),
     (("--hands-free", "--steer-gains", "1,2"), "not both"),
     (("--steer-gains", "1"), "two finite numbers"),
 ])

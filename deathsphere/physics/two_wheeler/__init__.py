@@ -16,7 +16,8 @@ module              concept
 ``linear``          the benchmark's M, C1, K0, K2, eigenvalues, weave
                     and capsize speeds from the nonlinear equations
 ``geometry``        the frames and points as numpy vectors (forces,
-                    speeds, the rider's head)
+                    speeds, the rider's head, the 3-D view's rims
+                    and frame lines)
 ``steady``          steady turns on the globe's lanes (and flat
                     circles): every turn for a speed or a steer torque
 ``stability``       their eigenvalues in the turning frame, steer free

@@ -116,7 +116,7 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     stop the run: a normal force reaching zero (``contact_lost``) or the
     friction exceeding ``mu`` times the normal at either wheel (``slips``)
     (beyond the paper; docs/two-wheeler.md sec. 10.1).  Returns (series
-    dict of (n,) arrays, summary dict)."""
+    dict of (n,) arrays and the coordinates ``q`` (8, n), summary dict)."""
     from scipy.integrate import solve_ivp
 
     p = parameters
@@ -197,7 +197,7 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
               "lean_rate": u[motion.LEAN], "steer_rate": u[motion.STEER], "v_rear": np.abs(u[motion.REAR]) * p.rR,
               "steer_torque": T, "normal_rear": n_rear, "normal_front": n_front, "friction_rear": f_rear,
               "friction_front": f_front, "energy_drift": (E - E[0]) / kinetic0,
-              "constraint_residual": _residual(q, values, surface)}
+              "constraint_residual": _residual(q, values, surface), "q": q}
     summary = {"status": status, "t_event": t_event, "t_end": float(ts[-1]),
                "max_lean_deviation": float(np.max(np.abs(q[motion.LEAN] - lean0))),
                "final_lean_deviation": float(q[motion.LEAN, -1] - lean0),

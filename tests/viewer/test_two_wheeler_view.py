@@ -1,0 +1,97 @@
+"""A two-wheeler's run in 3-D (``deathsphere simulate --machine
+benchmark-bicycle --steer free --output run.html|.gif``): the page carries
+the simulation's own points (rims on the wheels' circles, touching the
+globe at the contacts), the table keeps its columns, a loop is written,
+and the page draws the bicycle in a real browser."""
+
+import json
+
+import numpy as np
+import pytest
+from view_page import body_attributes, dump_dom, page_data
+
+from deathsphere.api.two_wheelers import SIMULATE_COLUMNS, simulate_two_wheeler
+from deathsphere.viewer.html import decode_array
+from deathsphere.viewer.two_wheeler_scene import (
+    POINT_KEYS,
+    RIM_KEYS,
+    decode_rim,
+    render_two_wheeler_html,
+    two_wheeler_scene,
+    write_two_wheeler_view,
+)
+
+RUN = dict(height=1.0, speed=5.0, diameter="16ft", periods=0.2, points_per_period=20, rtol=1e-6,
+           steer_gains="10,10", perturb=0.5)
+R = 2.4384
+#: float32 in the page: a few parts in 1e7 of the globe's size
+F32 = 2e-6
+
+
+@pytest.fixture(scope="module")
+def run():
+    return simulate_two_wheeler("benchmark-bicycle", view=True, **RUN)
+
+
+@pytest.fixture(scope="module")
+def data(run):
+    return page_data(render_two_wheeler_html(two_wheeler_scene(*run)))
+
+
+def test_the_view_adds_no_column_to_the_table(run):
+    series, _, frames = run
+    assert list(series.columns) == list(SIMULATE_COLUMNS)
+    np.testing.assert_array_equal(frames["t"], series["t_s"])
+
+
+def test_the_page_carries_the_simulations_points_turned_z_up(run, data):
+    _, _, frames = run
+    n = data["n"]
+    assert n == frames["t"].size
+    np.testing.assert_array_equal(decode_array(data["t"], dtype="<f8"), frames["t"])
+    flip = np.array([1.0, -1.0, -1.0])[:, None]
+    for key in POINT_KEYS:
+        np.testing.assert_allclose(decode_array(data["points"][key], rows=3), flip * frames[key], atol=F32)
+    for key in RIM_KEYS:
+        np.testing.assert_allclose(decode_rim(data["rims"][key], data["rim"]), flip[..., None] * frames[key],
+                                   atol=F32)
+    # the view's z is up: the run starts on the lane 1 m above the globe's floor
+    assert decode_array(data["points"]["P"], rows=3)[2, 0] == pytest.approx(1.0 - R, abs=F32)
+
+
+def test_the_drawn_rims_are_the_wheels_touching_the_globe(data):
+    for rim, centre, contact, radius in (("rear_rim", "rear_wheel", "P", 0.3), ("front_rim", "front_wheel", "Q", 0.35)):
+        pts = decode_rim(data["rims"][rim], data["rim"])
+        c = decode_array(data["points"][centre], rows=3)
+        np.testing.assert_allclose(np.linalg.norm(pts - c[:, None], axis=0), radius, atol=F32)
+        np.testing.assert_allclose(pts[:, 0], decode_array(data["points"][contact], rows=3), atol=F32)
+        np.testing.assert_allclose(np.linalg.norm(pts[:, 0], axis=0), R, atol=F32)
+
+
+def test_a_loop_is_written(run, tmp_path):
+    pytest.importorskip("matplotlib")
+    from deathsphere.viewer.two_wheeler_animation import write_two_wheeler_animation
+
+    out = tmp_path / "run.gif"
+    frames = write_two_wheeler_animation(out, two_wheeler_scene(*run), max_seconds=0.06, size_px=(240, 180))
+    assert frames >= 2 and out.read_bytes()[:6] == b"GIF89a"
+
+
+def test_the_page_draws_the_bicycle_in_a_browser(browser, run, tmp_path):
+    """One headless chromium load (about 2 s): no script error, and every
+    piece drawn inside the view with a size of its own."""
+    out = tmp_path / "run.html"
+    write_two_wheeler_view(out, *run)
+    attrs = body_attributes(dump_dom(browser, out, budget_ms=1500))
+    assert attrs["ready"] == "1" and attrs["errors"] == "0"
+    assert int(attrs["frames"]) == len(run[0]) and float(attrs["t"]) > 0
+    assert int(attrs["ink"]) > 500
+
+    drawn = json.loads(attrs["drawn"].replace("&quot;", '"'))
+    assert set(drawn) >= {"rear_rim", "front_rim", "rear_frame", "front_frame", "rider", "head", "contacts"}
+    width, height = (float(x) for x in attrs["canvas"].split(","))
+    for name, (x0, y0, x1, y1) in drawn.items():
+        assert 0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height, name
+    for rim in RIM_KEYS:
+        x0, y0, x1, y1 = drawn[rim]
+        assert max(x1 - x0, y1 - y0) > 20, rim         # a wheel, not a dot
