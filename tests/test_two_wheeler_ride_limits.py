@@ -11,8 +11,10 @@ expected statuses are worked out here from the columns, in ride's order
 (slips before over_g, docs/contract.md): an independent check of the
 flags."""
 
+import importlib
 import math
 import pickle
+import re
 
 import numpy as np
 import pytest
@@ -159,6 +161,16 @@ def test_bad_limits_and_summaries_are_refused_in_one_line(kwargs, words):
     with pytest.raises(deathsphere.ParameterError) as err:
         deathsphere.ride(**{**ASK, **kwargs})
     assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_grid_too_large_to_hold_says_how_to_stream_it():
+    with pytest.raises(deathsphere.ParameterError) as err:
+        deathsphere.ride(**{**ASK, "height": "0:2:0.01", "speed": "1:20:0.1"})
+    words = str(err.value)
+    assert "201 x 191" in words and "\n" not in words
+    # the function it names exists
+    module, name = re.search(r"(deathsphere\.api\.\w+)\.(\w+)", words).groups()
+    assert getattr(importlib.import_module(module), name) is two_wheeler_ride_sweep
 
 
 def test_flat_ground_refuses_the_globes_limits():

@@ -379,8 +379,9 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     if not streamed and lane.size * value.size > MAX_TURN_REQUESTS:
         raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes and "
                              f"speeds (or torques) at once (got {lane.size} x {value.size}): split the grid, or "
-                             "stream it a few lanes at a time with deathsphere.api.two_wheeler_ride_sweep "
-                             "(what 'deathsphere ride --steer' runs; --jobs N)", "steer_torque" if by_torque else "speed")
+                             "stream it a few lanes at a time with deathsphere.api.two_wheeler_streams."
+                             "two_wheeler_ride_sweep (what 'deathsphere ride --steer' runs; --jobs N)",
+                             "steer_torque" if by_torque else "speed")
     stability, summary = checked_flag("stability", stability), checked_flag("summary", summary)
     if summary and by_torque:
         raise ParameterError("the rider's table (summary) is over rear speeds: give speed, not steer_torque (it "
