@@ -197,7 +197,9 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         contact's, m/s); otherwise every steady turn at each theta (or
         height) and rear contact ``speed``, or held with each
         ``steer_torque`` [N m] (0: hands-free), with its stability, the
-        steer ``"free"`` (default) or ``"locked"``
+        steer ``"free"`` (default) or ``"locked"``; one ``mu`` and one
+        ``max_g`` flag its turns ``slips`` and ``over_g`` as a machine's
+        orbits, and ``summary`` gives its rider's table, a row per lane
         (:func:`deathsphere.api.two_wheelers.two_wheeler_ride`).
 
     Returns
@@ -305,21 +307,28 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     return table
 
 
+#: What only the single-contact machine takes: a two-wheeler's ride refuses it.
+SINGLE_CONTACT_ONLY = ("alpha", "v_top", "only", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
+                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
+
+
+def refuse_single_contact(given: dict) -> None:
+    """One line naming what a two-wheeler does not take among ``given``
+    (those of :data:`SINGLE_CONTACT_ONLY` given: not None, not False)."""
+    extra = [k for k in SINGLE_CONTACT_ONLY if given.get(k) is not None and given.get(k) is not False]
+    if extra:
+        raise ParameterError(f"a two-wheeler (flat or steer) does not take {', '.join(extra)} yet: give theta or "
+                             "height and speed or steer_torque (flat: speed only)", extra[0])
+
+
 def _two_wheeler(machine, given: dict) -> Table:
     """``ride`` of a two-wheeler: what the single-contact machine alone takes is refused."""
     from deathsphere.api.two_wheelers import two_wheeler_ride
 
-    alone = ("alpha", "v_top", "only", "mass", "com_height", "wheel_radius", "tyre_radius", "roll_inertia",
-             "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
-    extra = [k for k in alone if given[k] is not None] + [k for k in ("mu", "max_g") if given[k] is not INF]
-    if given["vertical"] is not False:
-        extra.append("vertical")
-    if extra:
-        raise ParameterError(f"a two-wheeler (flat or steer) does not take {', '.join(extra)} yet: give theta or "
-                             "height and speed or steer_torque (flat: speed only)", extra[0])
+    refuse_single_contact(given)
     return two_wheeler_ride(machine, **{k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
-                                                               "steer", "r", "diameter", "g", "summary",
-                                                               "stability")})
+                                                               "steer", "r", "diameter", "g", "mu", "max_g",
+                                                               "summary", "stability")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).

@@ -15,7 +15,7 @@ from dataclasses import asdict, dataclass, fields
 
 import numpy as np
 
-from deathsphere.api.arguments import INF, G, R, checked_array, checked_axis, sphere_radius
+from deathsphere.api.arguments import INF, G, R, checked_array, checked_axis, checked_flag, sphere_radius
 from deathsphere.api.machines import PRESETS, echoable_text
 from deathsphere.params import ParameterError
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
@@ -258,15 +258,48 @@ def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
     return Table(cols | _eig_cols(values, values.shape[-1]))
 
 
-def _lanes(theta, height, r) -> tuple[np.ndarray, np.ndarray, bool]:
+#: The columns ``ride --steer`` appends after the eigenvalues: the limits the
+#: statuses were decided with (empty where none was given).
+TURN_LIMIT_COLUMNS = ("mu_available", "max_g")
+#: The columns of ``ride --steer --summary``, the rider's table on the globe:
+#: those of ride's rider's table that keep their meaning (the speeds are the
+#: rear contact's, m/s; no ``head_hits``: a two-wheeler's head is reported,
+#: not decided), then the two-wheeler's own (docs/two-wheeler.md sec. 10).
+TURN_SUMMARY_COLUMNS = (
+    "height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_rear_min_m_s", "v_rear_max_m_s", "lean_min_deg",
+    "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m", "limits", "mu_available",
+    "max_g", "slips", "over_g", "no_contact", "no_orbit", "steer", "speeds_stable", "stable_v_min_m_s",
+    "stable_v_max_m_s", "steer_torque_min_n_m", "steer_torque_max_n_m", "hands_free_turns", "hands_free_stable",
+    "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s",
+)
+#: Why the speeds that fail fail, counted per lane in the rider's table (statuses).
+TURN_FAILURES = ("slips", "over_g", "no_contact", "no_orbit")
+#: Lanes one streamed ride takes (each lane's speeds are evaluated together,
+#: at most MAX_TURN_REQUESTS of them).
+MAX_STREAMED_LANES = 1_000_000
+#: Requests (lanes x speeds) per chunk of a streamed ride, in whole lanes (at
+#: least one): a lane costs its lean curve (sec. 8.2) once, some 0.3 s, and
+#: each speed a few ms more, so a chunk is a second or two of work.
+TURN_CHUNK = 8
+#: Why a turn slips: which wheel needs more friction than given.
+SLIP_REASONS = {
+    "rear": "the rear wheel needs more friction than mu_available (mu_required_rear exceeds it)",
+    "front": "the front wheel needs more friction than mu_available (mu_required_front exceeds it)",
+    "both": "both wheels need more friction than mu_available (mu_required_rear and mu_required_front exceed it)",
+}
+OVER_G_REASON = "the load load_g (|total contact force| / weight) exceeds the largest given (max_g)"
+__all__ += ["TURN_LIMIT_COLUMNS", "TURN_SUMMARY_COLUMNS", "TurnRequest", "turn_request", "turn_rows"]
+
+
+def _lanes(theta, height, r, limit: int = MAX_TURN_REQUESTS) -> tuple[np.ndarray, np.ndarray, bool]:
     """The rear contacts' theta (rad) asked for, and their values as given."""
     if (theta is None) == (height is None):
         raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
                              "theta", missing=theta is None)
     if theta is not None:
-        given = _values("theta", theta, MAX_TURN_REQUESTS)
+        given = _values("theta", theta, limit)
         return np.radians(given), given, True
-    given = _values("height", height, MAX_TURN_REQUESTS)
+    given = _values("height", height, limit)
     if np.any(given > 2 * r):
         bad = float(given[np.argmax(given > 2 * r)])
         raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
@@ -274,32 +307,117 @@ def _lanes(theta, height, r) -> tuple[np.ndarray, np.ndarray, bool]:
     return np.arccos(np.clip(given / r - 1.0, -1.0, 1.0)), given, False
 
 
-def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, stability: bool) -> Table:
-    """Every steady turn at each lane (rear contact's theta or height) and
-    speed or steer torque, one row each, and its stability
-    (docs/two-wheeler.md sec. 8)."""
-    from deathsphere.physics.two_wheeler import stability as tw_stability
-    from deathsphere.physics.two_wheeler import steady
+def _one_limit(name: str, value) -> float:
+    """One value of the limit ``name`` (mu, max_g): a number or the command
+    line's text; inf, the default, is no limit."""
+    axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
+    if len(axis) != 1:
+        raise ParameterError(f"a two-wheeler takes one {name} per call (got {len(axis)} values)", name)
+    return float(axis.take(np.zeros(1, dtype=np.int64))[0])
 
+
+def _machine(machine, steer, g) -> tuple[TwoWheeler, str]:
+    """The two-wheeler under the gravity asked for, and how its steer is held."""
+    t = as_two_wheeler(machine)
+    if steer is None:
+        steer = "free"
+    if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
+        raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} (got {steer!r})", "steer")
+    if g is not G:
+        from dataclasses import replace
+
+        t = replace(t, g=float(checked_array("g", g)) if np.ndim(g) == 0 else _one_g(g))
+    return t, steer.strip().lower()
+
+
+@dataclass(frozen=True, eq=False)
+class TurnRequest:
+    """A checked request of ``ride --steer`` (:func:`turn_request`): the
+    lanes (the rear contact's theta, rad, and as given), the rear speeds or
+    steer torques tried at each, the globe, the limits and what to give.
+    :func:`turn_rows` answers it lane by lane."""
+
+    machine: TwoWheeler
+    lanes: np.ndarray
+    lanes_given: np.ndarray
+    by_theta: bool
+    values: np.ndarray
+    by_torque: bool
+    r: float
+    steer: str
+    stability: bool
+    mu: float
+    max_g: float
+    summary: bool
+
+    @property
+    def total(self) -> int:
+        """The requests: lanes x speeds (or torques)."""
+        return self.lanes.size * self.values.size
+
+
+def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
+                 diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True,
+                 streamed=False) -> TurnRequest:
+    """``ride --steer``'s request checked, every value, before any work: a
+    bad one raises :class:`~deathsphere.ParameterError` in one line.  At
+    most MAX_TURN_REQUESTS lanes x speeds at once, or ``streamed`` (the
+    lanes answered a chunk at a time) MAX_STREAMED_LANES lanes of at most
+    MAX_TURN_REQUESTS speeds each."""
+    t, steer = _machine(machine, steer, g)
+    r = sphere_radius(r, diameter)
     r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
     if r is None:
         raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
-    lane, lane_given, by_theta = _lanes(theta, height, r)
+    lane, lane_given, by_theta = _lanes(theta, height, r, MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS)
     if speed is not None and steer_torque is not None:
         raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
     by_torque = steer_torque is not None
     if speed is None and steer_torque is None:
         raise ParameterError("give speed (the rear contact's, m/s) or steer_torque (N m; 0: hands-free)", "speed")
     value = _values("steer_torque", steer_torque, MAX_TURN_REQUESTS) if by_torque else _speeds(speed, MAX_TURN_REQUESTS)
-    if lane.size * value.size > MAX_TURN_REQUESTS:
+    if not streamed and lane.size * value.size > MAX_TURN_REQUESTS:
         raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes and "
-                             f"speeds (or torques) at once (got {lane.size} x {value.size}): split the grid",
+                             f"speeds (or torques) at once (got {lane.size} x {value.size}): split the grid, or "
+                             "stream it a few lanes at a time with deathsphere.api.two_wheeler_streams."
+                             "two_wheeler_ride_sweep (what 'deathsphere ride --steer' runs; --jobs N)",
                              "steer_torque" if by_torque else "speed")
-    lanes, values = (x.reshape(-1) for x in np.meshgrid(lane, value, indexing="ij"))
-    given = np.repeat(lane_given, value.size)
+    stability, summary = checked_flag("stability", stability), checked_flag("summary", summary)
+    if summary and by_torque:
+        raise ParameterError("the rider's table (summary) is over rear speeds: give speed, not steer_torque (it "
+                             "finds each lane's hands-free turns itself)", "steer_torque")
+    if summary and not stability:
+        raise ParameterError("the rider's table (summary) gives the stable speeds: it needs the stability "
+                             "analysis, which stability=False skips", "stability")
+    return TurnRequest(machine=t, lanes=lane, lanes_given=lane_given, by_theta=by_theta, values=value,
+                       by_torque=by_torque, r=r, steer=steer, stability=stability, mu=_one_limit("mu", mu),
+                       max_g=_one_limit("max_g", max_g), summary=summary)
+
+
+def _over_limits(ok, mu_rear, mu_front, load, mu: float, max_g: float):
+    """Which turns that are otherwise ok slip at the rear, at the front, or
+    carry more than max_g: ride's statuses in ride's order (no_orbit,
+    no_contact, then slips, then over_g; docs/contract.md)."""
+    rear, front = ok & (mu_rear > mu), ok & (mu_front > mu)
+    return rear, front, ok & ~(rear | front) & (load > max_g)
+
+
+def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> Table:
+    """Every steady turn at the lanes ``first:stop`` of ``request`` and each
+    of its speeds or steer torques, one row each, and its stability
+    (docs/two-wheeler.md sec. 8); ``input_row`` numbers the whole request.
+    With ``summary``: the rider's table of those lanes instead."""
+    from deathsphere.physics.two_wheeler import stability as tw_stability
+    from deathsphere.physics.two_wheeler import steady
+
+    t, r, steer = request.machine, request.r, request.steer
+    stop = request.lanes.size if stop is None else stop
+    lanes, values = (x.reshape(-1) for x in np.meshgrid(request.lanes[first:stop], request.values, indexing="ij"))
+    given = np.repeat(request.lanes_given[first:stop], request.values.size)
+    by_theta, by_torque = request.by_theta, request.by_torque
     p = t.parameters()
     kwargs = {"torque": values} if by_torque else {"speed": values}
-    if stability:
+    if request.stability:
         out = tw_stability.turns_with_stability(lanes, p, surface="sphere", r=r, head=t.head, **kwargs)
     else:
         out = (steady.turns_for_torque(lanes, values, p, "sphere", r, t.head) if by_torque
@@ -326,7 +444,7 @@ def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, sta
     with np.errstate(divide="ignore"):
         period = np.where(has, 2 * np.pi / np.abs(np.where(omega == 0, np.nan, omega)), np.nan)
     cols = {
-        "input_row": req + 1, "machine": np.full(n, t.name, dtype=object),
+        "input_row": req + 1 + first * request.values.size, "machine": np.full(n, t.name, dtype=object),
         "theta_deg": given[req] if by_theta else np.degrees(th), "alpha_deg": np.where(has, alpha, np.nan),
         "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
         "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, t.g),
@@ -343,53 +461,138 @@ def _turns(t: TwoWheeler, theta, height, speed, steer_torque, r, steer: str, sta
         "lean_surface_deg": np.degrees(lean), "v_rear_m_s": pick("v_rear"), "v_front_m_s": pick("v_front"),
         "theta_front_deg": np.degrees(pick("theta_front")), "steer": np.full(n, steer, dtype=object),
     }
+    rear, front, over = _over_limits(status == "ok", cols["mu_required_rear"], cols["mu_required_front"],
+                                     cols["load_g"], request.mu, request.max_g)
+    status[rear | front], status[over] = "slips", "over_g"
+    reason[rear & ~front], reason[front & ~rear] = SLIP_REASONS["rear"], SLIP_REASONS["front"]
+    reason[rear & front], reason[over] = SLIP_REASONS["both"], OVER_G_REASON
     # what the request fixes is echoed as asked, not as recomputed (docs/contract.md)
     if by_torque:
         cols["steer_torque_n_m"] = np.where(has, values[req], np.nan)
     else:
         cols["v_rear_m_s"] = cols["v_contact_m_s"] = np.where(has, values[req], np.nan)
     k = EIGENVALUES[("sphere", steer)]
-    if stability:
+    if request.stability:
         ev = np.where(has[:, None], out[f"eigenvalues_{steer}"][req, slot], np.nan + 0j)
         cols["stability"] = np.where(has, out[f"stability_{steer}"][req, slot], "").astype(object)
         cols["growth_rate_1_s"] = np.where(has, out[f"growth_{steer}"][req, slot], np.nan)
     else:
         ev = np.full((n, k), np.nan + 0j)
         cols["stability"], cols["growth_rate_1_s"] = np.full(n, "", dtype=object), np.full(n, np.nan)
-    return Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k))
+    # inf ("no limit") is empty, as in every table
+    limits = {c: np.full(n, np.nan if math.isinf(v) else v) for c, v in zip(TURN_LIMIT_COLUMNS,
+                                                                          (request.mu, request.max_g))}
+    table = Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k) | limits)
+    return _turn_summary(request, table, first, stop) if request.summary else table
+
+
+def _hands_free(request: TurnRequest, lanes) -> dict:
+    """Each lane's hands-free turns (steer torque 0, at whatever speed):
+    their rear speeds (n, k), which are ok by the request's limits and
+    which of those are stable with the steer free (sec. 8.2-8.3)."""
+    from deathsphere.physics.two_wheeler import stability as tw_stability
+
+    t = request.machine
+    out = tw_stability.turns_with_stability(lanes, t.parameters(), torque=np.zeros(lanes.size), surface="sphere",
+                                            r=request.r, head=t.head)
+    ok = np.isfinite(out["lean"]) & (out["contact"] == 1)
+    rear, front, over = _over_limits(ok, out["mu_required_rear"], out["mu_required_front"], out["load_g"],
+                                     request.mu, request.max_g)
+    ok &= ~(rear | front | over)
+    return {"v_rear": out["v_rear"], "ok": ok, "stable": ok & (out["stability_free"] == "stable")}
+
+
+def _speed_list(speeds) -> str:
+    """Speeds in a cell, ascending, separated by spaces, each to round trip (never a comma: CSV)."""
+    return " ".join(repr(float(v)) for v in np.sort(speeds))
+
+
+def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> Table:
+    """The rider's table of the lanes ``first:stop`` (one row each) from
+    their rows ``table``: as ride's rider's table (docs/machine.md sec. 8)
+    over the rear speeds tried, then the stable speeds, the steer torque
+    and the lane's hands-free turns (docs/two-wheeler.md sec. 10)."""
+    n_values = request.values.size
+    rq = np.asarray(table["input_row"], dtype=np.int64) - 1
+    lane_of = rq // n_values - first
+    status = np.asarray(table["status"]).astype(str)
+    ok = status == "ok"
+    stable = ok & (np.asarray(table["stability"]).astype(str) == "stable")
+    mu_needed = np.fmax(table["mu_required_rear"], table["mu_required_front"])
+    lanes = request.lanes[first:stop]
+    free = _hands_free(request, lanes)
+    rows = {c: [] for c in TURN_SUMMARY_COLUMNS}
+    for i in range(stop - first):
+        sel = lane_of == i
+        on, fine, calm = rq[sel], ok[sel], stable[sel]
+
+        def span(col, fn, mask=fine, values=None):
+            vals = (np.asarray(table[col], dtype=float) if values is None else values)[sel][mask]
+            return float(fn(vals)) if vals.size else math.nan
+
+        theta = float(request.lanes_given[first + i]) if request.by_theta else math.degrees(lanes[i])
+        rows["height_m"].append(request.r * (1 + math.cos(lanes[i])) if request.by_theta
+                                else float(request.lanes_given[first + i]))
+        rows["theta_deg"].append(theta)
+        rows["speeds_tried"].append(n_values)
+        rows["speeds_ok"].append(int(np.unique(on[fine]).size))
+        for lo, hi, col in (("v_rear_min_m_s", "v_rear_max_m_s", "v_rear_m_s"),
+                            ("lean_min_deg", "lean_max_deg", "lean_deg"), ("load_min_g", "load_max_g", "load_g"),
+                            ("steer_torque_min_n_m", "steer_torque_max_n_m", "steer_torque_n_m")):
+            rows[lo].append(span(col, np.min))
+            rows[hi].append(span(col, np.max))
+        rows["mu_max"].append(span("", np.max, values=mu_needed))
+        rows["head_clearance_min_m"].append(span("head_clearance_m", np.min))
+        rows["limits"].append(" ".join(sorted(set(status[sel][~fine].tolist()))))
+        rows["mu_available"].append(math.nan if math.isinf(request.mu) else request.mu)
+        rows["max_g"].append(math.nan if math.isinf(request.max_g) else request.max_g)
+        failing = ~np.isin(on, on[fine])
+        for col in TURN_FAILURES:
+            rows[col].append(int(np.unique(on[(status[sel] == col) & failing]).size))
+        rows["steer"].append(request.steer)
+        rows["speeds_stable"].append(int(np.unique(on[calm]).size))
+        rows["stable_v_min_m_s"].append(span("v_rear_m_s", np.min, calm))
+        rows["stable_v_max_m_s"].append(span("v_rear_m_s", np.max, calm))
+        hands, still = free["v_rear"][i][free["ok"][i]], free["v_rear"][i][free["stable"][i]]
+        rows["hands_free_turns"].append(int(hands.size))
+        rows["hands_free_stable"].append(int(still.size))
+        rows["hands_free_v_rear_m_s"].append(_speed_list(hands))
+        rows["hands_free_stable_v_rear_m_s"].append(_speed_list(still))
+    counts = {"speeds_tried", "speeds_ok", "speeds_stable", "hands_free_turns", "hands_free_stable", *TURN_FAILURES}
+    text = {"limits", "steer", "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s"}
+    return Table({c: np.array(v, dtype=np.int64 if c in counts else object if c in text else float)
+                  for c, v in rows.items()})
 
 
 def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torque=None, flat=False, steer=None,
-                     r=R, diameter=None, g=G, summary=False, stability=True) -> Table:
+                     r=R, diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True) -> Table:
     """``ride`` for a two-wheeler (:func:`deathsphere.ride` with ``flat``,
     ``steer`` or ``steer_torque``; docs/two-wheeler.md sec. 10): on flat
     ground the eigenvalues of upright straight running at each rear contact
     speed (``summary``: the weave and capsize speeds); on the globe every
     steady turn at each lane and speed (or held with each steer torque),
     one row each, with its stability, the steer ``free`` (under its steady
-    torque held constant; default) or ``locked``."""
-    t = as_two_wheeler(machine)
-    if steer is None:
-        steer = "free"
-    if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
-        raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} (got {steer!r})", "steer")
-    steer = steer.strip().lower()
-    if g is not G:
-        from dataclasses import replace
-
-        t = replace(t, g=float(checked_array("g", g)) if np.ndim(g) == 0 else _one_g(g))
+    torque held constant; default) or ``locked``; a turn needing more
+    friction than ``mu`` at either wheel has status ``slips``, one loading
+    the rider more than ``max_g`` (load_g) ``over_g``; ``summary`` gives the
+    rider's table, a row per lane (:data:`TURN_SUMMARY_COLUMNS`).  At most
+    MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
+    <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
     if flat:
+        t, steer = _machine(machine, steer, g)
         if theta is not None or height is not None or diameter is not None or r is not R:
             raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
                                  "or diameter)", "flat")
         if steer_torque is not None:
             raise ParameterError("on flat ground upright straight running is hands-free at every speed: "
                                  "steer_torque is for the globe", "steer_torque")
+        if mu is not INF or max_g is not INF:
+            raise ParameterError("upright straight running on flat ground needs no friction and loads the rider "
+                                 "1 g: mu and max_g are for the globe", "mu" if mu is not INF else "max_g")
         return _straight(t, speed, steer, summary)
-    if summary:
-        raise ParameterError("the two-wheeler's summary (weave and capsize speeds) is for flat ground: pass flat",
-                             "summary")
-    return _turns(t, theta, height, speed, steer_torque, sphere_radius(r, diameter), steer, stability)
+    return turn_rows(turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque,
+                                  steer=steer, r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary,
+                                  stability=stability))
 
 
 def _one_g(g):

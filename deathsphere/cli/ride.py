@@ -77,8 +77,9 @@ def _grid(where, how, mus):
 @param_option("r")
 @param_option("diameter")
 @param_option("g")
-@param_option("mu", multiple=True, help="Friction coefficient available (e.g. 0.8:1:0.1: each value a set of "
-              "rows; the rider's table a row per height and value).")
+@param_option("mu", multiple=True, help="Friction coefficient available; an orbit needing more has status "
+              "slips (e.g. 0.8:1:0.1: each value a set of rows; the rider's table a row per height and value; a "
+              "two-wheeler takes one value, at both wheels).")
 @param_option("max_g", help="Largest load_g (|contact force| / (m g), what the rider feels); an orbit over "
               "it has status over_g.")
 @click.option("--vertical", is_flag=True, default=False,
@@ -87,7 +88,8 @@ def _grid(where, how, mus):
 @param_option("v_top", multiple=True, help="Vertical loop: speed of the centre of mass at the top, >= 0.")
 @click.option("--summary", is_flag=True, default=False,
               help="The rider's table: per contact point (height or theta), how many speeds are ok, their "
-                   "range, lean, load, friction needed and least head clearance, and why the others fail.")
+                   "range, lean, load, friction needed and least head clearance, and why the others fail; "
+                   "a two-wheeler's (--steer) adds its stable speeds, steer torques and hands-free speeds.")
 @only_option(api.STATUSES)
 @stability_option()
 @click.option("--flat", is_flag=True, default=False,
@@ -135,6 +137,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
           --diameter 16ft --height 1:2:0.5 --speed 5:10:5
       deathsphere ride --machine benchmark-bicycle --steer-torque 0 \\
           --diameter 16ft --height 1
+      deathsphere ride --machine benchmark-bicycle --steer free \\
+          --diameter 16ft --height 1 --speed 3:12:1 --mu 0.8 \\
+          --max-g 3.5 --summary
     """
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
@@ -149,14 +154,23 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         lists = {k: list(v) for k, v in (("theta", theta), ("height", height), ("speed", speed),
                                          ("steer_torque", steer_torque), ("alpha", alpha), ("v_top", v_top),
                                          ("mu", mu)) if v}
-        table = api.ride(machine=which, flat=flat, steer=steer, summary=summary, stability=stability,
-                         only=only or None, vertical=vertical, **lists, **setup_of(r, diameter, g, max_g), **{
-                             k: v for k, v in overrides.items() if v is not None})
-        title = (f"{table['machine'][0] if len(table) else ''}: " +
-                 ("straight running on flat ground (docs/two-wheeler.md sec. 7)" if flat
-                  else "steady turns on the globe (docs/two-wheeler.md sec. 8)"))
-        view = "straight_view" if flat else "turns_view"
-        emit([table], fmt, title, view=_two_wheeler_view(view, title), output=output)
+        given = dict(machine=which, steer=steer, summary=summary, stability=stability, only=only or None,
+                     vertical=vertical, **lists, **setup_of(r, diameter, g, max_g),
+                     **{k: v for k, v in overrides.items() if v is not None})
+        name = getattr(which, "name", which)
+        if flat:
+            table = api.ride(flat=True, **given)
+            title = f"{name}: straight running on flat ground (docs/two-wheeler.md sec. 7)"
+            emit([table], fmt, title, view=_two_wheeler_view("straight_view", title), output=output)
+            return
+        # the globe's lanes stream a few at a time (flat memory, --jobs, --scheduler)
+        from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
+
+        chunks = two_wheeler_ride_sweep(**given, jobs=jobs or 1, scheduler=scheduler)
+        title = (f"{name}: the rider's table on the globe, per lane (docs/two-wheeler.md sec. 10)" if summary
+                 else f"{name}: steady turns on the globe (docs/two-wheeler.md sec. 8)")
+        finish(stream(chunks, fmt, label="ride", title=title, view=_two_wheeler_view("turns_view", title),
+                      output=output))
         return
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,

@@ -73,7 +73,12 @@ def test_hands_free_turns_on_the_globe(run):
     ((*BIKE, "--steer", "free", "--theta", "90"), "give speed"),
     ((*BIKE, "--steer", "sideways", "--theta", "90", "--speed", "5"), "'sideways' is not one of"),
     ((*BIKE, "--flat", "--speed", "5", "--steer-torque", "1"), "steer_torque is for the globe"),
-    ((*BIKE, "--steer", "free", "--theta", "90", "--speed", "5", "--summary"), "is for flat ground"),
+    ((*BIKE, "--steer-torque", "0", "--theta", "90", "--summary"), "give speed, not steer_torque"),
+    ((*BIKE, "--steer", "free", "--theta", "90", "--speed", "5", "--summary", "--no-stability"),
+     "needs the stability"),
+    ((*BIKE, "--steer", "free", "--theta", "90", "--speed", "5", "--mu", "0.5:0.7:0.1"), "takes one mu per call"),
+    ((*BIKE, "--steer", "free", "--theta", "90", "--speed", "5", "--max-g", "0"), "Invalid value for '--max-g'"),
+    ((*BIKE, "--flat", "--speed", "5", "--mu", "0.8"), "mu and max_g are for the globe"),
     ((*BIKE, "--flat", "--speed", "5", "--mass", "90"), "does not take mass"),
 ])
 def test_bad_combinations_exit_2_with_one_line(run, args, words):

@@ -1,0 +1,79 @@
+"""``ride --steer``'s lanes streamed: a two-wheeler's steady turns on the
+globe (or its rider's table) a few whole lanes at a time, on one or several
+processes or a dask cluster, handed out in order as
+:class:`~deathsphere.api.streams.Chunks` (``deathsphere ride --steer``,
+``--jobs``, ``--scheduler``; beyond the paper, docs/two-wheeler.md sec. 10)."""
+
+from __future__ import annotations
+
+from functools import partial
+
+from deathsphere.api.arguments import INF, G, R, checked_scalar
+from deathsphere.api.rides import SINGLE_CONTACT_ONLY, refuse_single_contact
+from deathsphere.api.streams import Chunks, cluster_of, evaluated
+from deathsphere.api.two_wheelers import TURN_CHUNK, TurnRequest, turn_request, turn_rows
+from deathsphere.table import Table
+
+
+def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
+                           diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True,
+                           chunk_size: int = TURN_CHUNK, jobs: int = 1, scheduler=None, **single_contact) -> Chunks:
+    """Every steady turn of a two-wheeler at each lane and rear speed (or
+    steer torque), or with ``summary`` its rider's table, lane after lane:
+    ``deathsphere ride --steer`` (docs/two-wheeler.md sec. 10, through
+    :func:`~deathsphere.api.two_wheelers.turn_rows`).
+
+    The arguments are those of :func:`deathsphere.ride` for a two-wheeler;
+    ``chunk_size`` the lanes x speeds per chunk (whole lanes, at least one),
+    ``jobs`` and ``scheduler`` as for :func:`~deathsphere.api.sweep`.  What
+    only the single-contact machine takes (``alpha``, ``only``,
+    ``vertical``, the machine's overrides ...) is refused by name.
+
+    Returns
+    -------
+    Chunks
+        Together the rows that one :func:`deathsphere.ride` call gives
+        (the same whatever ``chunk_size``, ``jobs`` or ``scheduler``), up to
+        MAX_STREAMED_LANES lanes of MAX_TURN_REQUESTS speeds each rather than
+        MAX_TURN_REQUESTS lanes x speeds.
+
+    Raises
+    ------
+    ParameterError
+        At the call, before any chunk: every value checked.
+
+    Examples
+    --------
+    A chunk holds whole lanes, so one lane is one chunk however small ``chunk_size``:
+
+    >>> from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
+    >>> chunks = two_wheeler_ride_sweep("benchmark-bicycle", steer="free", theta=100, speed=[8, 9],
+    ...                                 diameter="16ft", stability=False, chunk_size=1)
+    >>> chunks.total, [t["input_row"].tolist() for t in chunks]
+    (2, [[1, 2]])
+    """
+    unknown = sorted(set(single_contact) - set(SINGLE_CONTACT_ONLY))
+    if unknown:
+        raise TypeError(f"two_wheeler_ride_sweep() got an unexpected keyword argument {unknown[0]!r}")
+    refuse_single_contact(single_contact)
+    request = turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque, steer=steer,
+                           r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary, stability=stability,
+                           streamed=True)
+    chunk_size = int(checked_scalar("chunk_size", chunk_size))
+    jobs = int(checked_scalar("jobs", jobs))
+    per_chunk = max(1, chunk_size // request.values.size)
+    return Chunks(evaluated(_lane_chunks(request, per_chunk), partial(_lanes_chunk, request=request), jobs,
+                            cluster_of(scheduler, jobs)), request.total)
+
+
+def _lane_chunks(request: TurnRequest, per_chunk: int):
+    """``(requests, (first, stop))`` per chunk of ``per_chunk`` lanes."""
+    lanes, width = request.lanes.size, request.values.size
+    for first in range(0, lanes, per_chunk):
+        stop = min(first + per_chunk, lanes)
+        yield (stop - first) * width, (first, stop)
+
+
+def _lanes_chunk(bounds: tuple[int, int], request: TurnRequest) -> Table:
+    """The rows (or rider's table) of the lanes ``first:stop``."""
+    return turn_rows(request, *bounds)
