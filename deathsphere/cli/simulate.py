@@ -137,12 +137,15 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
 
+    from deathsphere.api.two_wheeler_files import is_two_wheeler_file
     from deathsphere.api.two_wheelers import is_two_wheeler
 
-    if steer is not None or steer_gains is not None or hands_free or is_two_wheeler(machine):
+    two_wheeler_file = machine_file is not None and is_two_wheeler_file(machine_file)
+    if steer is not None or steer_gains is not None or hands_free or is_two_wheeler(machine) or two_wheeler_file:
         refused = [flag for flag, value in (("--alpha", alpha), ("--omega", omega), ("--omega3", omega3),
                                             ("--vertical", vertical or None), ("--v-top", v_top), ("--body", body),
-                                            ("--machine-file", machine_file), ("-a", a), ("-k", k),
+                                            ("--machine-file", None if two_wheeler_file else machine_file),
+                                            ("-a", a), ("-k", k),
                                             ("--side", side), ("--loop-seconds", loop_seconds),
                                             ("--playback", playback), ("--max-steps", max_steps))
                    if value is not None]
@@ -159,6 +162,8 @@ def simulate_command(theta, height, steer, steer_gains, hands_free, alpha, speed
             fail(f"{', '.join(refused)} not for a two-wheeler's run: give --machine, --steer free, --theta or "
                  "--height, --speed, -r/--diameter, -g, --mu, --branch, --perturb, --periods, "
                  "--points-per-period, --steer-gains or --hands-free, --method, --rtol, --atol")
+        if two_wheeler_file:
+            machine = machine_from_options(machine, machine_file)
         _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt,
                      **given(theta=theta, height=height, speed=speed, r=r, diameter=diameter, g=g, mu=mu,
                              branch=branch, perturb=perturb, periods=periods,
