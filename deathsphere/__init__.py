@@ -49,6 +49,8 @@ _HOME = {
     "TwoWheeler": "api",
     "machines_table": "api",
     "machine_file": "api",
+    "two_wheeler_file": "api",
+    "two_wheeler_text": "api",
     "limits_input": "api",
     "stability_input": "api",
     "Setup": "model",

@@ -152,7 +152,7 @@ def test_every_request_on_the_globe_gets_its_rows_in_order():
 def test_machines_lists_the_two_wheeler_with_its_geometry():
     t = deathsphere.machines_table()
     two = t[t["kind"] == "two-wheeler"]
-    assert list(two["name"]) == ["benchmark-bicycle"]
+    assert list(two["name"]) == ["benchmark-bicycle", "sport-tourer", "stunt125-steer"]
     assert two["wheel_base_m"][0] == 1.02 and two["trail_m"][0] == 0.08
     assert two["steer_axis_tilt_deg"][0] == pytest.approx(18.0, abs=1e-12)
     assert two["mass_kg"][0] == 94.0 and "Meijaard" in two["source"][0]

@@ -265,32 +265,7 @@ def machine_file(path, base=DEFAULT_MACHINE) -> Machine:
     (a header naming the keys, one row of values): keys ``name``, ``source``
     and those of :data:`FILE_KEYS` (numbers, or text with a unit suffix:
     ``"16in"``); a key not given keeps ``base``'s value (a preset)."""
-    import csv
-    import pathlib
-    import tomllib
-
-    p = pathlib.Path(path)
-    try:
-        raw = p.read_bytes()
-    except OSError as exc:
-        raise ParameterError(f"cannot read the machine file {str(path)!r}: {exc.strerror}", "machine_file") from None
-    text = _machine_text(raw, p.name)
-    if p.suffix.lower() == ".toml":
-        try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as exc:
-            raise ParameterError(f"machine file {p.name}: not TOML ({exc})", "machine_file") from None
-    else:
-        rows = [r for r in csv.reader(text.splitlines()) if any(c.strip() for c in r)]
-        if len(rows) != 2 or len(rows[0]) != len(rows[1]):
-            raise ParameterError(f"machine file {p.name}: a CSV machine file is a header and one row of values",
-                                 "machine_file")
-        keys = [k.strip() for k in rows[0]]
-        twice = next((k for i, k in enumerate(keys) if k in keys[:i]), None)
-        if twice is not None:
-            raise ParameterError(f"machine file {p.name}: key {twice!r} is given twice (which one is meant?)",
-                                 "machine_file")
-        data = dict(zip(keys, (v.strip() for v in rows[1])))
+    data, p = machine_file_data(path)
     unknown = sorted(set(data) - set(FILE_KEYS) - {"name", "source", "base"})
     if unknown:
         raise ParameterError(f"machine file {p.name}: unknown key {unknown[0]!r} (known: name, source, base, "
@@ -306,6 +281,45 @@ def machine_file(path, base=DEFAULT_MACHINE) -> Machine:
     # the file's name as the default source, written as a reason is (no comma, one line)
     return replace(machine, name=str(data.get("name", p.stem)),
                    source=str(data.get("source", reason_text(f"file {p.name}"))))
+
+
+def machine_file_data(path) -> tuple[dict, "pathlib.Path"]:
+    """The keys and values of a machine file, TOML (``.toml``: ``key =
+    value`` lines) or CSV (a header naming the keys, one row of values),
+    and its path; what is not such a file is refused in one line
+    (:func:`machine_file`; the two-wheeler's files read them too)."""
+    import csv
+    import tomllib
+
+    text, p = machine_file_text(path)
+    if p.suffix.lower() == ".toml":
+        try:
+            return tomllib.loads(text), p
+        except tomllib.TOMLDecodeError as exc:
+            raise ParameterError(f"machine file {p.name}: not TOML ({exc})", "machine_file") from None
+    rows = [r for r in csv.reader(text.splitlines()) if any(c.strip() for c in r)]
+    if len(rows) != 2 or len(rows[0]) != len(rows[1]):
+        raise ParameterError(f"machine file {p.name}: a CSV machine file is a header and one row of values",
+                             "machine_file")
+    keys = [k.strip() for k in rows[0]]
+    twice = next((k for i, k in enumerate(keys) if k in keys[:i]), None)
+    if twice is not None:
+        raise ParameterError(f"machine file {p.name}: key {twice!r} is given twice (which one is meant?)",
+                             "machine_file")
+    return dict(zip(keys, (v.strip() for v in rows[1]))), p
+
+
+def machine_file_text(path) -> tuple[str, "pathlib.Path"]:
+    """A machine file's text and path; a file that cannot be read, or is
+    not text, is refused in one line."""
+    import pathlib
+
+    p = pathlib.Path(path)
+    try:
+        raw = p.read_bytes()
+    except OSError as exc:
+        raise ParameterError(f"cannot read the machine file {str(path)!r}: {exc.strerror}", "machine_file") from None
+    return _machine_text(raw, p.name), p
 
 
 def _machine_text(raw: bytes, name: str) -> str:

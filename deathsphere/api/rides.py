@@ -228,10 +228,10 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     >>> row["machine"], row["status"], round(row["lean_deg"], 1)
     ('stunt125 (modified)', 'ok', 75.0)
     """
-    from deathsphere.api.two_wheelers import is_two_wheeler
+    from deathsphere.api.two_wheelers import is_two_wheeler, two_wheeler_only
 
     if checked_flag("flat", flat) or steer is not None or steer_torque is not None or (
-            is_two_wheeler(machine) and not isinstance(machine, str)):
+            is_two_wheeler(machine) and not isinstance(machine, str)) or two_wheeler_only(machine):
         return _two_wheeler(machine, locals())
     m = as_machine(machine).with_overrides(
         mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,

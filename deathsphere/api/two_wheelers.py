@@ -21,7 +21,7 @@ from deathsphere.params import ParameterError
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 from deathsphere.table import Table
 
-__all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_ride", "STRAIGHT_COLUMNS",
+__all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_only", "two_wheeler_ride", "STRAIGHT_COLUMNS",
            "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "EIGENVALUES", "simulate_two_wheeler", "CONTROLS",
            "SIMULATE_COLUMNS", "SIMULATE_SUMMARY_COLUMNS"]
 
@@ -142,8 +142,15 @@ def _benchmark_bicycle() -> TwoWheeler:
                              "exactly; head point (0.3; -1.7) m an assumption")
 
 
-#: The two-wheeler presets, by name (``--machine`` with ``--flat`` or ``--steer``).
-TWO_WHEELERS = {t.name: t for t in (_benchmark_bicycle(),)}
+def _presets() -> tuple[TwoWheeler, ...]:
+    from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
+
+    return (_benchmark_bicycle(), *(TwoWheeler(**build(), name=name) for name, build in MOTORCYCLES.items()))
+
+
+#: The two-wheeler presets, by name (``--machine`` with ``--flat`` or
+#: ``--steer``; docs/two-wheeler.md sec. 1).
+TWO_WHEELERS = {t.name: t for t in _presets()}
 
 
 def machines_table():
@@ -163,6 +170,14 @@ def machines_table():
 def is_two_wheeler(machine) -> bool:
     """True for a :class:`TwoWheeler` or the name of a two-wheeler preset."""
     return isinstance(machine, TwoWheeler) or (isinstance(machine, str) and machine.strip().lower() in TWO_WHEELERS)
+
+
+def two_wheeler_only(machine) -> bool:
+    """True for the name of a preset that is a two-wheeler and not also a
+    single-contact machine (``sport-tourer``): ``ride`` asks it the
+    two-wheeler's questions without ``flat`` or ``steer``."""
+    name = machine.strip().lower() if isinstance(machine, str) else None
+    return name in TWO_WHEELERS and name not in PRESETS
 
 
 def as_two_wheeler(machine) -> TwoWheeler:
@@ -247,8 +262,9 @@ def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
     if summary:
         ok = verdicts == "stable"
         return Table({"machine": np.array([t.name], dtype=object), "g_m_s2": np.array([t.g]),
-                      "weave_speed_m_s": np.array([linear.weave_speed(m)]),
-                      "capsize_speed_m_s": np.array([linear.capsize_speed(m)]),
+                      # a motorcycle's speeds lie beyond a bicycle's 10 m/s: searched up to the fastest asked
+                      "weave_speed_m_s": np.array([linear.weave_speed(m, high=max(10.0, float(v.max())))]),
+                      "capsize_speed_m_s": np.array([linear.capsize_speed(m, high=max(10.0, float(v.max())))]),
                       "speeds_tried": np.array([v.size], dtype=np.int64),
                       "speeds_stable": np.array([int(ok.sum())], dtype=np.int64)})
     n = v.size

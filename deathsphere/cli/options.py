@@ -172,6 +172,9 @@ def machine_options(*, without=(), machine_help: str = "A preset machine (see 'd
     :data:`MACHINE_OPTIONS` not in ``without``: a command whose setup
     already takes ``-a/--wheel-radius`` leaves ``a`` out)."""
     from deathsphere.api.machines import PRESETS
+    from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
+
+    names = tuple(PRESETS) + tuple(MOTORCYCLES)
 
     def decorator(f):
         for name, flag in reversed(list(MACHINE_OPTIONS.items())):
@@ -180,8 +183,9 @@ def machine_options(*, without=(), machine_help: str = "A preset machine (see 'd
         f = single("--machine-file", "machine_file", default=None, metavar="FILE",
                    help="A machine from a TOML or CSV file (keys mass, com_height, wheel_radius, tyre_radius, "
                         "roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, name, source; "
-                        "missing keys from --machine).")(f)
-        return single("--machine", "machine", type=click.Choice(tuple(PRESETS), case_sensitive=False),
+                        "missing keys from --machine), or a two-wheeler's: the benchmark's 26 names as keys, or a "
+                        "BicycleParameters <Name>Benchmark.txt (docs/two-wheeler.md sec. 1.4).")(f)
+        return single("--machine", "machine", type=click.Choice(names, case_sensitive=False),
                       default=None, help=machine_help)(f)
     return decorator
 
@@ -189,9 +193,18 @@ def machine_options(*, without=(), machine_help: str = "A preset machine (see 'd
 def machine_from_options(machine, machine_file, **overrides):
     """The Machine the options name: the preset ``machine`` (stunt125 if
     none), or ``machine_file`` (its missing keys from the preset), with the
-    override options given (registry names; None: not given)."""
+    override options given (registry names; None: not given); a
+    two-wheeler's preset or file gives its TwoWheeler, as it is."""
     from deathsphere import api
+    from deathsphere.api.two_wheeler_files import read_machine_file
+    from deathsphere.api.two_wheelers import TWO_WHEELERS, TwoWheeler
 
     name = (machine or api.machines.DEFAULT_MACHINE).lower()
-    chosen = api.machine_file(machine_file, base=name) if machine_file else api.PRESETS[name]
-    return chosen.with_overrides(**overrides)
+    chosen = read_machine_file(machine_file, base=name) if machine_file else api.PRESETS.get(name) or TWO_WHEELERS[name]
+    if not isinstance(chosen, TwoWheeler):
+        return chosen.with_overrides(**overrides)
+    given = [MACHINE_OPTIONS[k] for k, v in overrides.items() if v is not None and k in MACHINE_OPTIONS]
+    if given:
+        raise api.ParameterError(f"{', '.join(given)} not for a two-wheeler ({chosen.name}): its parameters are the "
+                                 "benchmark's 26 (docs/two-wheeler.md sec. 1.4)", "machine")
+    return chosen

@@ -144,7 +144,10 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
     fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
-    if flat or steer is not None or steer_torque:
+    from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
+
+    if flat or steer is not None or steer_torque or (machine or "").lower() in MOTORCYCLES or (
+            machine_file is not None and api.two_wheeler_files.is_two_wheeler_file(machine_file)):
         # a two-wheeler (docs/two-wheeler.md): the API refuses what it does not take
         which = machine if machine_file is None and machine is not None else machine_from_options(machine,
                                                                                                    machine_file)

@@ -163,14 +163,18 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
 
+    from deathsphere.api.two_wheeler_files import is_two_wheeler_file
     from deathsphere.api.two_wheelers import is_two_wheeler
 
     two_wheeler_only = given(flat=flat or None, turn_radius=turn_radius, duration=duration,
                              perturb_lean_rate=perturb_lean_rate, perturb_steer_rate=perturb_steer_rate)
-    if steer is not None or steer_gains is not None or hands_free or two_wheeler_only or is_two_wheeler(machine):
+    two_wheeler_file = machine_file is not None and is_two_wheeler_file(machine_file)
+    if (steer is not None or steer_gains is not None or hands_free or two_wheeler_only or is_two_wheeler(machine)
+            or two_wheeler_file):
         refused = [flag for flag, value in (("--alpha", alpha), ("--omega", omega), ("--omega3", omega3),
                                             ("--vertical", vertical or None), ("--v-top", v_top), ("--body", body),
-                                            ("--machine-file", machine_file), ("-a", a), ("-k", k),
+                                            ("--machine-file", None if two_wheeler_file else machine_file),
+                                            ("-a", a), ("-k", k),
                                             ("--side", side), ("--loop-seconds", loop_seconds),
                                             ("--playback", playback), ("--max-steps", max_steps))
                    if value is not None]
@@ -185,6 +189,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                  "--theta or --height (or --flat and --turn-radius), --speed, -r/--diameter, -g, --mu, --branch, "
                  "--perturb, --perturb-lean-rate, --perturb-steer-rate, --periods or --duration, "
                  "--points-per-period, --steer-gains or --hands-free, --method, --rtol, --atol")
+        if two_wheeler_file:
+            machine = machine_from_options(machine, machine_file)
         _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt,
                      **given(theta=theta, height=height, speed=speed, r=r, diameter=diameter, g=g, mu=mu,
                              branch=branch, perturb=perturb, periods=periods,

@@ -56,7 +56,7 @@ def test_machines_lists_the_presets(run):
     rows = _rows(res.stdout)
     assert [(r["name"], r["kind"]) for r in rows] == [
         ("paper-wheel", "single-contact"), ("benchmark-bicycle", "single-contact"), ("stunt125", "single-contact"),
-        ("benchmark-bicycle", "two-wheeler")]
+        ("benchmark-bicycle", "two-wheeler"), ("sport-tourer", "two-wheeler"), ("stunt125-steer", "two-wheeler")]
     # the two-wheelers' columns are appended: the single-contact machine's come first, as before
     assert list(rows[0])[:13] == ["name", "mass_kg", "com_height_m", "wheel_radius_m", "tyre_radius_m",
                                   "roll_inertia_kg_m2", "pitch_inertia_kg_m2", "yaw_inertia_kg_m2",
