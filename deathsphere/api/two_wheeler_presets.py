@@ -126,10 +126,12 @@ def sport_tourer() -> dict:
                "(docs/two-wheeler.md sec. 1.2)")
 
 
-#: Estimates (docs/two-wheeler.md sec. 1.3): a 125 cc trail bike with a
-#: 19-inch front and a 16-inch rear wheel: wheel base [m], steer axis tilt
-#: [deg], trail [m], the share of the weight on the front wheel.
-STUNT_GEOMETRY = {"wheelbase": 1.25, "steer_axis_tilt_deg": 27.0, "trail": 0.09, "front_share": 0.45}
+#: A published 125 cc machine's steering geometry (docs/two-wheeler.md
+#: sec. 1.3): the Honda CBR125R's road test, "25 degrees of rake, 3.4
+#: inches of trail and a 51-inch wheelbase" (wheel base [m], steer axis
+#: tilt [deg], trail [m], exact from the inches); the share of the weight on
+#: the front wheel is an estimate.
+STUNT_GEOMETRY = {"wheelbase": 51 * 0.0254, "steer_axis_tilt_deg": 25.0, "trail": 3.4 * 0.0254, "front_share": 0.45}
 #: Tyres 70/100-19 (front) and 90/100-16 (rear): rim radius + section
 #: height (width x aspect ratio 100 %) [m], and the section widths [m].
 STUNT_TYRES = {"front_radius": 19 * 0.0254 / 2 + 0.070, "rear_radius": 16 * 0.0254 / 2 + 0.090,
@@ -144,7 +146,8 @@ def stunt125_steer() -> dict:
     stunt125's total mass, centre-of-mass height, inertia and spin inertia
     (docs/two-wheeler.md sec. 1.3): its front assembly is the sport
     tourer's scaled (mass by the motorcycles' masses, lengths by the front
-    wheels' radii), the rear frame the rest; geometry estimated."""
+    wheels' radii), the rear frame the rest; the steering geometry a
+    published 125 cc machine's."""
     one = stunt125()
     geo, tyres, t = STUNT_GEOMETRY, STUNT_TYRES, COSSALTER_TABLE_7_2
     w, c, lam = geo["wheelbase"], geo["trail"], math.radians(geo["steer_axis_tilt_deg"])
@@ -164,7 +167,8 @@ def stunt125_steer() -> dict:
     return values | dict(
         head=(x, -one.head),
         source="stunt125's totals (estimates) as the Whipple model: front assembly scaled from sport-tourer; wheel "
-               "base 1.25 m; tilt 27 deg; trail 0.09 m and 45 % front weight estimates (docs/two-wheeler.md sec. 1.3)")
+               "base 51 in; rake 25 deg; trail 3.4 in from a Honda CBR125R road test; 45 % front weight an estimate "
+               "(docs/two-wheeler.md sec. 1.3)")
 
 
 #: The presets' names and builders, in the order ``deathsphere machines``
