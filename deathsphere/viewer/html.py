@@ -20,7 +20,7 @@ import numpy as np
 from deathsphere.viewer.scene import PLAYBACK_FACTORS, BodyScene, playback_factor
 from deathsphere.writers.atomic import atomic_file
 
-__all__ = ["view_data", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "MACHINE_KEYS",
+__all__ = ["view_data", "filled_template", "render_html", "write_html", "decode_array", "DATA_MARK", "VECTOR_KEYS", "MACHINE_KEYS",
            "SCALAR_KEYS", "PANEL_KEYS", "SCREEN_INTERVAL_S"]
 
 #: where the template takes the data (a JavaScript expression)
@@ -84,19 +84,20 @@ def view_data(scenes: list[BodyScene], title: str = "") -> dict:
             "bodies": [_body(s) for s in scenes]}
 
 
-def _template() -> str:
-    return resources.files("deathsphere.viewer").joinpath("template.html").read_text(encoding="utf-8")
+def filled_template(name: str, mark: str, data: dict, what: str) -> str:
+    """The page ``name`` (a template of this package) with ``data`` as JSON
+    in place of its ``mark``; every 3-D page is made so."""
+    # nothing in the data may close the script element
+    text = json.dumps(data, separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
+    page = resources.files("deathsphere.viewer").joinpath(name).read_text(encoding="utf-8")
+    if mark not in page:
+        raise RuntimeError(f"the {what} template lacks its data mark")
+    return page.replace(mark, text, 1)
 
 
 def render_html(scenes: list[BodyScene], title: str = "") -> str:
     """The page's text (UTF-8)."""
-    text = json.dumps(view_data(scenes, title), separators=(",", ":"), allow_nan=False)
-    # nothing in the data may close the script element
-    text = text.replace("</", "<\\/")
-    page = _template()
-    if DATA_MARK not in page:
-        raise RuntimeError("the viewer template lacks its data mark")
-    return page.replace(DATA_MARK, text, 1)
+    return filled_template("template.html", DATA_MARK, view_data(scenes, title), "viewer")
 
 
 def write_html(output, scenes: list[BodyScene], title: str = "") -> int:

@@ -15,10 +15,8 @@ between two of them is within a millimetre or so of the rider's path.
 from __future__ import annotations
 
 import base64
-import json
 import math
 from dataclasses import dataclass, field
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -230,11 +228,9 @@ def act_data(scene: ActScene) -> dict:
 
 def render_act_html(scene: ActScene) -> str:
     """The page's text (UTF-8): the template with the act's data."""
-    text = json.dumps(act_data(scene), separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
-    page = resources.files("deathsphere.viewer").joinpath("show_template.html").read_text(encoding="utf-8")
-    if DATA_MARK not in page:
-        raise RuntimeError("the act view's template lacks its data mark")
-    return page.replace(DATA_MARK, text, 1)
+    from deathsphere.viewer.html import filled_template
+
+    return filled_template("show_template.html", DATA_MARK, act_data(scene), "act view's")
 
 
 def write_act_view(output, result, falls: Table | None = None) -> int:

@@ -13,10 +13,8 @@ core's axes (z down, the benchmark's) to its own (z up) and keeps at most
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass, field
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -121,11 +119,9 @@ def decode_rim(text: str, n_rim: int) -> np.ndarray:
 
 def render_two_wheeler_html(scene: TwoWheelerScene) -> str:
     """The page's text (UTF-8): the template with the run's data."""
-    text = json.dumps(two_wheeler_data(scene), separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
-    page = resources.files("deathsphere.viewer").joinpath("two_wheeler_template.html").read_text(encoding="utf-8")
-    if DATA_MARK not in page:
-        raise RuntimeError("the two-wheeler view's template lacks its data mark")
-    return page.replace(DATA_MARK, text, 1)
+    from deathsphere.viewer.html import filled_template
+
+    return filled_template("two_wheeler_template.html", DATA_MARK, two_wheeler_data(scene), "two-wheeler view's")
 
 
 def write_two_wheeler_view(output, series: Table, summary: Table, frames: dict, *, progress=None) -> int:
