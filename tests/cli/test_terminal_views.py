@@ -51,7 +51,7 @@ ANSI = re.compile(r"\x1b\[[0-?]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x
 #: Grid ranges longer than this are run on a coarser grid of the same span
 #: (a sweep's example over 16,000 orbits proves nothing more than over 20).
 MAX_RANGE_POINTS = 40
-#: A simulation runs at most this many periods here.
+#: A simulation runs at most this many periods (or seconds, where it has no period) here.
 MAX_PERIODS = 2
 
 
@@ -166,13 +166,15 @@ def bounded(args: tuple) -> tuple:
             start, stop, step = map(float, m.groups())
             if step > 0 and (stop - start) / step > MAX_RANGE_POINTS:
                 arg = f"{m.group(1)}:{m.group(2)}:{(stop - start) / 10:g}"
-        if i > 0 and args[i - 1] == "--periods" and float(arg) > MAX_PERIODS:
+        if i > 0 and args[i - 1] in ("--periods", "--duration") and float(arg) > MAX_PERIODS:
             arg = str(MAX_PERIODS)
         out.append(arg)
     command = cli.commands.get(args[0]) if args else None
     takes_periods = command is not None and any(p.name == "periods" for p in command.params)
-    if takes_periods and "--periods" not in args and "--help" not in args:
-        out += ["--periods", str(MAX_PERIODS)]
+    # a two-wheeler's straight running on flat ground has no period: its length is --duration (s)
+    timed = "--duration" in args or ("--flat" in args and "--turn-radius" not in args)
+    if takes_periods and not {"--periods", "--duration", "--help"} & set(args):
+        out += ["--duration" if timed else "--periods", str(MAX_PERIODS)]
     return tuple(out)
 
 
