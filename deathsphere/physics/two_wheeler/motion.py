@@ -32,8 +32,7 @@ INDEPENDENT = (LEAN, REAR, STEER)
 DEPENDENT = (0, 1, 2, PITCH, 7)
 
 #: Newton iterations for the pitch, at most: quadratic convergence from the
-#: upright pitch reaches float64 in 5 for leans and steers below 1 rad; from
-#: a converged pitch (a complex step about a known state) 2 suffice.
+#: upright pitch reaches float64 in 5 for leans and steers below 1 rad.
 _NEWTON = 8
 
 
@@ -60,13 +59,19 @@ def pitch(q, p, surface: str = "flat"):
     docs/two-wheeler.md sec. 3.2)."""
     _, holonomic, _ = _functions(surface)
     q = np.array(q, dtype=np.result_type(q, float), copy=True)
+    if np.iscomplexobj(q) or any(np.iscomplexobj(x) for x in p):
+        # a complex step: the real parts' Newton in real arithmetic (the same iterates), then one complex
+        # step from that root gives the imaginary part exactly (h = i e g there, so the step is -i e g / h')
+        q[PITCH] = pitch(q.real, tuple(np.real(x) for x in p), surface)[PITCH]
+        h, dh = holonomic(q, p)
+        q[PITCH] -= h[0] / dh[0]
+        return q
     shape = q.shape[1:]
     q = q.reshape(8, -1)
     # parameters that vary along the batch follow its points
     varying = [np.broadcast_to(x, shape).reshape(-1) if np.ndim(x) else None for x in p]
-    # each point iterates until settled: after a real step below 1e-8 rad the next leaves the real part at
-    # rounding and, the iteration's derivative vanishing at the root, a complex step's imaginary part exact
-    # (points where no pitch exists iterate to the end; the callers mask them)
+    # each point iterates until settled: after a step below 1e-8 rad the next leaves it at rounding (points
+    # where no pitch exists iterate to the end; the callers mask them)
     active = np.arange(q.shape[1])
     settled = np.zeros(q.shape[1], bool)
     for _ in range(_NEWTON):

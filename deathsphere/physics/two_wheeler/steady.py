@@ -171,9 +171,9 @@ def lean_curve(lane, parameters: BicycleParameters, surface="sphere", r=None, le
     X = np.broadcast_to(lane[:, None], L.shape)
     steer = solve_steer(X.ravel(), L.ravel(), parameters, surface, r).reshape(L.shape)
     ok = np.isfinite(steer)
-    _, G, H = turn_coefficients(X.ravel(), L.ravel(), np.where(ok, steer, 0.0).ravel(), parameters, surface, r)
-    G = np.where(ok, G.reshape((3,) + L.shape), np.nan)
-    H = np.where(ok, H.reshape((3,) + L.shape), np.nan)
+    # the coefficients where the steer exists only (a quarter of the grid has no configuration)
+    G, H = np.full((2, 3) + L.shape, np.nan)
+    _, G[:, ok], H[:, ok] = turn_coefficients(X[ok], L[ok], steer[ok], parameters, surface, r)
     return {"lean": np.array(L), "steer": steer, "G": G, "H": H}
 
 
