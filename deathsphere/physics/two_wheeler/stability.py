@@ -82,8 +82,8 @@ def _locked_columns(surface):
 def jacobians(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None):
     """The Jacobians (n, k, k) of the state's rates at steady turns (q, u
     (8, n), the steady steer torque (n,) held constant), steer free and
-    steer locked, by complex steps from one batch of evaluations (beyond
-    the paper; docs/two-wheeler.md sec. 8.3)."""
+    steer locked, by complex steps, the coordinates' in one batch and the
+    speeds' in another (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
     p = motion.parameter_values(parameters, surface, r)
     q, u = np.asarray(q, float).reshape(8, -1), np.asarray(u, float).reshape(8, -1)
     x0 = turn_state_vector(q, u, surface, "free")
