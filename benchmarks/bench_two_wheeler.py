@@ -2,22 +2,33 @@
 sec. 5): time per state of the generated equations, of the constrained
 accelerations and of the pitch's Newton solve over a batch of states, and
 of the benchmark's matrices; with --derive, the symbolic derivation too
-(needs sympy).  With --lanes N, steady turns with their stability for a grid
-of about N lanes (heights x speeds) on a 16-foot globe (sec. 8.4); with
---globe, the tables of sec. 8.5 (hands-free turns per height, and the
-stability of the turns with the steer torque held).
+(needs sympy).  With --lanes N, steady turns alone and with their stability
+for a grid of about N lanes (heights x speeds) on a 16-foot globe (sec.
+8.6); with --against REV as well, the same grid computed by the package as
+it was at git revision REV (extracted into a temporary directory, both runs
+in subprocesses one after the other): the ratios of the times and the
+largest differences of the answers; with --globe, the tables of sec. 8.5
+(hands-free turns per height, and the stability of the turns with the steer
+torque held).
 
     PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py [--n 10000] [--repeat 5] [--derive]
-    PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py --lanes 10000
+    PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py --lanes 10000 [--against REV]
     PYTHONPATH=. python3 benchmarks/bench_two_wheeler.py --globe
 """
 
 import argparse
+import io
+import os
+import subprocess
+import sys
+import tarfile
+import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
-from deathsphere.physics.two_wheeler import _generated, linear, motion, stability
+from deathsphere.physics.two_wheeler import _generated, linear, motion, stability, steady
 from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
 
 GLOBE = 2.4384      # 16 ft
@@ -32,20 +43,71 @@ def best_of(fn, repeat):
     return best
 
 
-def lanes(n):
-    """Steady turns and stability (steer free and locked) for a grid of
-    about n lanes: sqrt(n) heights x sqrt(n) rear speeds."""
+#: What --lanes keeps of the answers, to compare two versions.
+ANSWERS = ("lean", "steer", "steer_torque", "eigenvalues_free", "eigenvalues_locked")
+
+
+def lanes(n, save=None):
+    """Steady turns alone, then with their stability (steer free and
+    locked), for a grid of about n lanes: sqrt(n) heights x sqrt(n) rear
+    speeds; with ``save``, the times and the answers into that .npz file."""
     side = int(round(np.sqrt(n)))
     heights = np.linspace(0.2, 4.6, side)
     speeds = np.linspace(1.0, 15.0, side)
     H, V = np.meshgrid(heights, speeds, indexing="ij")
     theta = np.arccos(H.ravel() / GLOBE - 1)
-    t0, c0 = time.perf_counter(), time.process_time()
-    out = stability.turns_with_stability(theta, benchmark_bicycle(), speed=V.ravel(), r=GLOBE)
-    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    b = benchmark_bicycle()
+    times = []
+    for run in (lambda: steady.turns_for_speed(theta, V.ravel(), b, "sphere", GLOBE),
+                lambda: stability.turns_with_stability(theta, b, speed=V.ravel(), r=GLOBE)):
+        t0, c0 = time.perf_counter(), time.process_time()
+        out = run()
+        times.append((time.perf_counter() - t0, time.process_time() - c0))
     turns = int(np.isfinite(out["lean"]).sum())
-    print(f"lanes {theta.size} ({side} heights x {side} speeds), turns {turns}: {wall:.1f} s wall, {cpu:.1f} s CPU, "
-          f"{wall / theta.size * 1e3:.2f} ms per lane")
+    print(f"lanes {theta.size} ({side} heights x {side} speeds), turns {turns}")
+    for name, (wall, cpu) in zip(("steady turns", "with stability"), times):
+        print(f"  {name:15s} {wall:6.2f} s wall, {cpu:6.2f} s CPU, {cpu / theta.size * 1e3:.3f} ms CPU per lane")
+    if save:
+        np.savez(save, times=np.array(times), **{k: out[k] for k in ANSWERS})
+
+
+def _run_lanes(n, package_root, save):
+    """lanes(n) in a subprocess importing deathsphere from package_root."""
+    env = dict(os.environ, PYTHONPATH=str(package_root))
+    subprocess.run([sys.executable, __file__, "--lanes", str(n), "--save", str(save)], env=env, check=True)
+    return np.load(save)
+
+
+def _largest_difference(old, new):
+    """max |old - new| (complex: the modulus) over the entries (lanes, turns[, k]) both give, and how many
+    entries one gives and the other not."""
+    k = min(old.shape[1], new.shape[1])
+    a, b = old[:, :k], new[:, :k]
+    both = np.isfinite(a) & np.isfinite(b)
+    only = int((np.isfinite(a) != np.isfinite(b)).sum() + np.isfinite(old[:, k:]).sum() + np.isfinite(new[:, k:]).sum())
+    return (float(np.abs(a - b)[both].max()) if both.any() else 0.0), only
+
+
+def against(n, revision):
+    """The grid of lanes(n) by the package at git revision ``revision`` and
+    by this one: the ratio of the times, the largest differences."""
+    root = Path(__file__).resolve().parent.parent
+    with tempfile.TemporaryDirectory() as tmp:
+        archive = subprocess.run(["git", "-C", str(root), "archive", revision, "deathsphere"], check=True,
+                                 capture_output=True).stdout
+        old_root = Path(tmp, "old")
+        with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
+            tar.extractall(old_root, filter="data")
+        print(f"revision {revision}:")
+        old = _run_lanes(n, old_root, Path(tmp, "old.npz"))
+        print("this tree:")
+        new = _run_lanes(n, root, Path(tmp, "new.npz"))
+        for name, (t_old, t_new) in zip(("steady turns", "with stability"), zip(old["times"], new["times"])):
+            print(f"{name:15s} old/new: {t_old[1] / t_new[1]:.2f} CPU, {t_old[0] / t_new[0]:.2f} wall")
+        print("largest differences over the turns both give (and entries given by one only):")
+        for key, unit in zip(ANSWERS, ("rad", "rad", "N m", "1/s", "1/s")):
+            diff, only = _largest_difference(old[key], new[key])
+            print(f"  {key:20s} {diff:.2e} {unit} ({only})")
 
 
 def globe():
@@ -128,10 +190,15 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--derive", action="store_true", help="time the symbolic derivation (sympy)")
     ap.add_argument("--lanes", type=int, default=0, help="time steady turns with stability for about this many lanes")
+    ap.add_argument("--against", metavar="REV", help="with --lanes: compare with the package at git revision REV")
+    ap.add_argument("--save", help=argparse.SUPPRESS)
     ap.add_argument("--globe", action="store_true", help="print the 16-foot globe's tables")
     args = ap.parse_args()
+    if args.lanes and args.against:
+        against(args.lanes, args.against)
+        return
     if args.lanes:
-        lanes(args.lanes)
+        lanes(args.lanes, args.save)
         return
     if args.globe:
         globe()

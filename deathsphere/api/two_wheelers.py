@@ -34,8 +34,10 @@ EIGENVALUES = {("flat", "free"): 4, ("flat", "locked"): 2, ("sphere", "free"): 6
 #: (an assumption: the benchmark has no head).
 DEFAULT_HEAD = (0.3, -1.7)
 
-#: Steady-turn requests (lanes x speeds or torques) one call answers: each
-#: costs some 2 ms of CPU (docs/two-wheeler.md sec. 8.6), so this is a minute.
+#: Steady-turn requests (lanes x speeds or torques) one call answers: with
+#: the stability each costs some 0.4 ms of CPU on a grid, and each distinct
+#: lane some 10 ms for its lean curve (docs/two-wheeler.md sec. 8.6), so this
+#: is 12 s on a grid of lanes x speeds, 5 minutes if no two lanes agree.
 MAX_TURN_REQUESTS = 30_000
 #: Speeds of straight running one call answers (a few microseconds each).
 MAX_STRAIGHT_SPEEDS = 2_000_000

@@ -129,6 +129,41 @@ def test_the_shipped_code_is_vectorised_over_a_batch():
     np.testing.assert_array_equal(rates[:, 1], motion.state_rates(x1, p))
 
 
+def test_a_batch_larger_than_a_block_is_the_blocks_joined():
+    """The generated code evaluates a large batch in blocks (docs/two-wheeler.md sec. 5): a two-axis batch
+    of complex states over three blocks, a parameter and the steer torque varying along it, gives what one
+    pass over the whole batch gives."""
+    rng = np.random.default_rng(5)
+    n = 1500                                    # (3, 1500): 4500 complex states, blocks of 2048
+    assert 3 * n > 2 * _generated.BLOCK_BYTES // 16
+    q = rng.uniform(-0.3, 0.3, (8, 3, n)) + 1e-3j * rng.uniform(-1, 1, (8, 3, n))
+    u = rng.uniform(-2.0, 2.0, (8, 3, n))
+    p = list(motion.parameter_values(benchmark_bicycle()))
+    p[PARAMETER_NAMES.index("g")] = rng.uniform(9.0, 10.0, n)
+    torque = rng.uniform(-1.0, 1.0, (3, 1))
+    blocked = _generated.flat_equations(q, u, tuple(p), torque)
+    whole = _generated.flat_equations.__wrapped__(q, u, tuple(p), torque)
+    for got, expected in zip(blocked, whole):
+        assert got.shape == expected.shape and got.shape[-2:] == (3, n)
+        np.testing.assert_allclose(got, expected, rtol=1e-14, atol=1e-12)
+
+
+@pytest.mark.parametrize("surface", ["flat", "sphere"])
+def test_the_constraint_matrix_and_the_forcing_at_rest_are_the_equations_own(surface):
+    """The generated B alone and Kane's forcing at u = 0 (docs/two-wheeler.md sec. 5) are what the
+    equations give at a random state and at rest."""
+    rng = np.random.default_rng(6)
+    q = rng.uniform(-0.4, 0.4, (8, 40)) + np.array([np.pi / 2 if surface == "sphere" else 0.0] + [0.0] * 7)[:, None]
+    u = rng.uniform(-2.0, 2.0, (8, 40))
+    p = motion.parameter_values(benchmark_bicycle(), surface, 3.0)
+    equations = getattr(_generated, f"{surface}_equations")
+    _, _, B, _ = equations(q, u, p, 0.7)
+    _, rest, _, _ = equations(q, 0 * u, p, 0.7)
+    np.testing.assert_allclose(getattr(_generated, f"{surface}_constraint_matrix")(q, p), B, rtol=1e-13, atol=1e-14)
+    np.testing.assert_allclose(getattr(_generated, f"{surface}_forcing_at_rest")(q, p, 0.7), rest, rtol=1e-12,
+                               atol=1e-12 * np.abs(rest).max())
+
+
 def test_the_shipped_code_is_a_fresh_derivation():
     """_generated.py is what derivation.py derives today: the fresh symbolic
     equations on flat ground, evaluated at a random state, agree with the

@@ -14,17 +14,57 @@ arguments are used (sin, cos, sqrt, powers), so complex-step derivatives
 pass through.
 """
 
+import functools
+import math
+
 import numpy
 
 SURFACES = ('flat', 'sphere')
 
+#: Bytes of each temporary per block of the batch: a function's thousand
+#: temporaries then stay in the processor's cache, which halves the time per
+#: state of a large batch.
+BLOCK_BYTES = 32768
+
 
 def _batch(*arrays):
     """The broadcast batch shape and result dtype of the arguments."""
+    arrays = [a for a in arrays if not isinstance(a, (float, int))]
     shape = numpy.broadcast_shapes(*(numpy.shape(a)[1:] if numpy.ndim(a) else () for a in arrays))
     return shape, numpy.result_type(float, *arrays)
 
 
+def _in_blocks(rows):
+    """Evaluate a function of (``rows`` arrays (k, *batch), p, then arguments
+    per state) over its batch in blocks of BLOCK_BYTES per temporary, the
+    outputs joined along the batch."""
+    def decorate(function):
+        @functools.wraps(function)
+        def blocked(*args):
+            arrays, p, columns = [numpy.asarray(a) for a in args[:rows]], args[rows], args[rows + 1:]
+            others = [x for x in (*p, *columns) if not isinstance(x, (float, int))]
+            batch = numpy.broadcast_shapes(*(a.shape[1:] for a in arrays), *(numpy.shape(x) for x in others))
+            size = math.prod(batch)
+            block = max(BLOCK_BYTES // numpy.result_type(float, *arrays, *others).itemsize, 1)
+            if size <= block:
+                return function(*args)
+            arrays = [numpy.broadcast_to(a, a.shape[:1] + batch).reshape(-1, size) for a in arrays]
+            # the arguments that vary along the batch, flattened, and those that do not
+            p, columns = ([(x, False) if numpy.ndim(x) == 0 else (numpy.broadcast_to(x, batch).reshape(size), True)
+                           for x in xs] for xs in (p, columns))
+            parts = []
+            for start in range(0, size, block):
+                cut = slice(start, start + block)
+                parts.append(function(*(a[:, cut] for a in arrays), tuple(x[cut] if varies else x for x, varies in p),
+                                      *(x[cut] if varies else x for x, varies in columns)))
+            if not isinstance(parts[0], tuple):
+                return numpy.concatenate(parts, axis=-1).reshape(parts[0].shape[:-1] + batch)
+            return tuple(numpy.concatenate(out, axis=-1).reshape(out[0].shape[:-1] + batch) for out in zip(*parts))
+        return blocked
+    return decorate
+
+
+@_in_blocks(2)
 def flat_equations(q, u, p, T_steer):
     """Kane's equations with all eight speeds free, M u' = f, and the rolling constraints B u = 0 with B' u: returns M (8, 8), f (8), B (5, 8), B' u (5)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -636,6 +676,7 @@ def flat_equations(q, u, p, T_steer):
     return out0, out1, out2, out3
 
 
+@_in_blocks(1)
 def flat_holonomic(q, p):
     """The front contact's holonomic constraint h(q) = 0 and dh/dpitch: returns (h, dh/dpitch), each of shape (1, ...)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -676,6 +717,7 @@ def flat_holonomic(q, p):
     return out0, out1
 
 
+@_in_blocks(2)
 def flat_energy(q, u, p):
     """Kinetic and potential energy: returns (T, V), each of shape (1, ...)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -810,6 +852,7 @@ def flat_energy(q, u, p):
     return out0, out1
 
 
+@_in_blocks(1)
 def flat_front_contact(q, p):
     """The front contact point in the inertial frame N (z down): shape (3, ...)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -864,6 +907,197 @@ def flat_front_contact(q, p):
     return out0
 
 
+@_in_blocks(1)
+def flat_constraint_matrix(q, p):
+    """The rolling constraints' matrix B (5, 8) of B u = 0 alone, as in flat_equations."""
+    q0, q1, q2, q3, q4, q5, q6, q7, = q
+    w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, = p
+    shape, dtype = _batch(q, *p)
+    x0 = numpy.cos(q2)
+    x1 = numpy.sin(q2)
+    x2 = -x1
+    x3 = numpy.cos(q4)
+    x4 = numpy.sin(q6)
+    x5 = numpy.sin(lam)
+    x6 = numpy.cos(lam)
+    x7 = x6**2
+    x8 = x5**2
+    x9 = x7 + x8
+    x10 = 1/numpy.sqrt(x9)
+    x11 = x10*x5
+    x12 = x11*x4
+    x13 = numpy.sin(q4)
+    x14 = x10*x6
+    x15 = x14*x4
+    x16 = x12*x3 + x13*x15
+    x17 = numpy.cos(q3)
+    x18 = numpy.cos(q6)
+    x19 = numpy.sin(q3)
+    x20 = x16*x17 + x18*x19
+    x21 = x9**(-1.0)
+    x22 = x21*x8
+    x23 = x18*(1 - x22) + x22
+    x24 = -x18*x21*x5*x6 + x21*x5*x6
+    x25 = -x13*x23 + x24*x3
+    x26 = x15*x19 + x17*x25
+    x27 = 1/numpy.sqrt(1 - x20**2)
+    x28 = -x20
+    x29 = x27*x28
+    x30 = rF*x26*x29
+    x31 = c*x20 + x30
+    x32 = x21*x7
+    x33 = x18*(1 - x32) + x32
+    x34 = x13*x33 + x24*x3
+    x35 = x13*x24
+    x36 = x3*x33 - x35
+    x37 = -x12*x19 + x17*x36
+    x38 = -c*x37 + rF*x26
+    x39 = x12*x13 - x15*x3
+    x40 = x23*x3 + x35
+    x41 = rF*x27
+    x42 = x28*x41
+    x43 = -rF*x20 - x37*x42
+    x44 = rR*x19
+    x45 = c + w
+    x46 = x13*x45
+    x47 = rF*x29*x40
+    x48 = c*x39 + x47
+    x49 = -c*x34 + rF*x40
+    x50 = -rF*x39 - x34*x42
+    x51 = c*x18 + x15*x42
+    x52 = rF*x10*x27*x28*x4*x5 - rF*x18
+    x53 = c*x12 + rF*x15
+    x54 = x0**2*x41
+    x55 = x1**2*x41
+    x56 = rR*x3 - x46
+    x57 = x11*x24 + x14*x33
+    x58 = x11*x23 + x14*x24
+    x59 = -c*x57 + rF*x58
+    x60 = x1*x3
+    x61 = x0*x13
+    x62 = x1*x13
+    x63 = x11*(x19*x61 + x60) + x14*(-x0*x19*x3 + x62)
+    x64 = x0*x41
+    x65 = x11*(x0*x3 - x19*x62) + x14*(x19*x60 + x61)
+    x66 = x1*x41
+    x67 = rF*x29*x58
+    x68 = -x16*x19 + x17*x18
+    x69 = x0*x39 - x1*x68
+    x70 = x0*x68 + x1*x39
+    x71 = -x12*x17 - x19*x36
+    x72 = x10*x17*x4*x6 - x19*x25
+    x73 = rR*x17
+    x74 = x13*x73
+    x75 = x3*x45
+    x76 = x17*x75
+    x77 = x74 + x76
+    x78 = x19**2
+    x79 = -x56
+    x80 = x13*x44
+    out0 = numpy.zeros((5, 8) + shape, dtype=dtype)
+    out0[0, 0] = x0
+    out0[0, 1] = x1
+    out0[0, 4] = rR
+    out0[0, 5] = rR
+    out0[1, 0] = x2
+    out0[1, 1] = x0
+    out0[2, 0] = x0
+    out0[2, 1] = x1
+    out0[2, 2] = -x19*x46 + x3*x44 + x31*x34 + x38*x39 + x40*x43 - x44
+    out0[2, 3] = x34*x48 + x39*x49 + x40*x50
+    out0[2, 4] = x17*x54 + x17*x55 + x34*x51 + x39*x53 + x40*x52 + x56
+    out0[2, 6] = x34*x67 + x39*x59 - x47*x57 + x63*x64 - x65*x66
+    out0[2, 7] = rF*x0*x27*x70 - x66*x69
+    out0[3, 0] = x2
+    out0[3, 1] = x0
+    out0[3, 2] = rR*x13*x78 + x17*x77 + x31*x71 + x38*x68 + x43*x72 + x75*x78
+    out0[3, 3] = x17*x79 + x48*x71 + x49*x68 + x50*x72 - x54 - x55 + x73
+    out0[3, 4] = x19*x75 + x51*x71 + x52*x72 + x53*x68 + x80
+    out0[3, 6] = rF*x27*x28*x58*x71 - x42*x57*x72 + x59*x68 - x63*x66 - x64*x65
+    out0[3, 7] = -x64*x69 - x66*x70
+    out0[4, 2] = -x17*x80 - x19*x76 + x19*x77 + x20*x38 + x26*x43 + x31*x37
+    out0[4, 3] = x19*x79 + x20*x49 + x26*x50 + x37*x48 + x44
+    out0[4, 4] = x20*x53 + x26*x52 + x37*x51 - x74 - x76
+    out0[4, 6] = x20*x59 - x30*x57 + x37*x67
+    return out0
+
+
+@_in_blocks(1)
+def flat_forcing_at_rest(q, p, T_steer):
+    """The forcing f (8) of Kane's equations at rest (u = 0): gravity and the steer torque."""
+    q0, q1, q2, q3, q4, q5, q6, q7, = q
+    w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, = p
+    shape, dtype = _batch(q, T_steer, *p)
+    x0 = numpy.cos(q4)
+    x1 = numpy.cos(q3)
+    x2 = x0*x1
+    x3 = x2*xB
+    x4 = rR + zB
+    x5 = numpy.sin(q4)
+    x6 = x1*x5
+    x7 = x4*x6
+    x8 = numpy.sin(q3)
+    x9 = numpy.cos(lam)
+    x10 = x9**2
+    x11 = numpy.sin(lam)
+    x12 = x11**2
+    x13 = x10 + x12
+    x14 = x13**(-1.0)
+    x15 = x10*x14
+    x16 = numpy.cos(q6)
+    x17 = x15 + x16*(1 - x15)
+    x18 = -x11*x14*x16*x9 + x11*x14*x9
+    x19 = x18*x5
+    x20 = 1/numpy.sqrt(x13)
+    x21 = x11*x20
+    x22 = numpy.sin(q6)
+    x23 = x22*x8
+    x24 = x1*(x0*x17 - x19) - x21*x23
+    x25 = c*x24
+    x26 = x12*x14
+    x27 = x16*(1 - x26) + x26
+    x28 = x20*x9
+    x29 = x1*(x0*x18 - x27*x5) + x23*x28
+    x30 = x21*x22
+    x31 = x22*x28
+    x32 = x1*(x0*x30 + x31*x5) + x16*x8
+    x33 = rR*x6
+    x34 = c + w
+    x35 = x2*x34
+    x36 = x33 + x35
+    x37 = x29*zH
+    x38 = -x34 + xH
+    x39 = rF*x29
+    x40 = g*x32
+    x41 = mF*x40
+    x42 = x24*x38
+    x43 = mH*x40
+    x44 = g*x8
+    x45 = mB*x44
+    x46 = mF*x44
+    x47 = mH*x44
+    x48 = x0*x18 + x17*x5
+    x49 = x0*x27 + x19
+    x50 = -rR*x0 + x34*x5
+    x51 = g*(-x0*x31 + x30*x5)
+    x52 = mF*x51
+    x53 = mH*x51
+    x54 = g*mB
+    x55 = g*x16
+    x56 = g*mF
+    x57 = g*mH
+    x58 = T_steer*x20
+    x59 = x17*x28 + x18*x21
+    x60 = x18*x28 + x21*x27
+    out0 = numpy.zeros((8,) + shape, dtype=dtype)
+    out0[2] = c*g*mF*x24*x32 + g*mB*x8*(x3 + x7) + g*mF*x32*(rF*x29 - x25) + g*mF*x36*x8 + g*mH*x29*x32*zH + g*mH*x32*(x24*x38 - x37) + g*mH*x36*x8 - x3*x45 - x33*x46 - x33*x47 - x35*x46 - x35*x47 - x39*x41 - x42*x43 - x45*x7
+    out0[3] = mR*rR*x44 + rR*x45 + rR*x46 + rR*x47 + x25*x52 + x37*x53 - x39*x52 + x41*(-c*x48 + rF*x49) - x42*x53 + x43*(x38*x48 - x49*zH) + x45*(-x0*x4 + x5*xB) + x46*x50 + x47*x50
+    out0[4] = c*g*mF*x16*x24 + g*mF*x32*(c*x30 + rF*x31) + g*mH*x16*x29*zH + g*mH*x32*(-x30*x38 - x31*zH) - mF*x39*x55 - mH*x42*x55 - x3*x54 - x33*x56 - x33*x57 - x35*x56 - x35*x57 - x54*x7
+    out0[6] = x10*x58 + x12*x58 + x41*(-c*x59 + rF*x60) + x43*(x38*x59 - x60*zH)
+    return out0
+
+
+@_in_blocks(2)
 def sphere_equations(q, u, p, T_steer):
     """Kane's equations with all eight speeds free, M u' = f, and the rolling constraints B u = 0 with B' u: returns M (8, 8), f (8), B (5, 8), B' u (5)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -2065,6 +2299,7 @@ def sphere_equations(q, u, p, T_steer):
     return out0, out1, out2, out3
 
 
+@_in_blocks(1)
 def sphere_holonomic(q, p):
     """The front contact's holonomic constraint h(q) = 0 and dh/dpitch: returns (h, dh/dpitch), each of shape (1, ...)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -2141,6 +2376,7 @@ def sphere_holonomic(q, p):
     return out0, out1
 
 
+@_in_blocks(2)
 def sphere_energy(q, u, p):
     """Kinetic and potential energy: returns (T, V), each of shape (1, ...)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -2300,6 +2536,7 @@ def sphere_energy(q, u, p):
     return out0, out1
 
 
+@_in_blocks(1)
 def sphere_front_contact(q, p):
     """The front contact point in the inertial frame N (z down): shape (3, ...)."""
     q0, q1, q2, q3, q4, q5, q6, q7, = q
@@ -2381,4 +2618,356 @@ def sphere_front_contact(q, p):
     out0[0] = x36*x49 + x45*x55 + x50*(x11*x53 + x19*x49 + x23*x51) + x51*x56 + x52*x57 + x54*(x19*x51 + x21*x49 - x53*x9) + x58*(-x11*x51 + x14*x53 + x49*x9)
     out0[1] = x36*x62 + x50*(x11*x65 + x19*x62 + x23*x63) + x54*(x19*x63 + x21*x62 - x65*x9) + x55*x61 + x56*x63 + x57*x64 + x58*(-x11*x63 + x14*x65 + x62*x9)
     out0[2] = x36*x69 - x40*x57 + x50*(x11*x71 + x19*x69 + x23*x70) + x54*(x19*x70 + x21*x69 - x71*x9) + x55*x67 + x56*x70 + x58*(-x11*x70 + x14*x71 + x69*x9)
+    return out0
+
+
+@_in_blocks(1)
+def sphere_constraint_matrix(q, p):
+    """The rolling constraints' matrix B (5, 8) of B u = 0 alone, as in sphere_equations."""
+    q0, q1, q2, q3, q4, q5, q6, q7, = q
+    w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, r, = p
+    shape, dtype = _batch(q, *p)
+    x0 = numpy.cos(q2)
+    x1 = r*x0
+    x2 = numpy.sin(q0)
+    x3 = numpy.sin(q2)
+    x4 = r*x3
+    x5 = rF**2
+    x6 = c + w
+    x7 = numpy.sin(q6)
+    x8 = numpy.cos(q4)
+    x9 = numpy.sin(lam)
+    x10 = numpy.cos(lam)
+    x11 = x10**2
+    x12 = x9**2
+    x13 = x11 + x12
+    x14 = 1/numpy.sqrt(x13)
+    x15 = x14*x9
+    x16 = x15*x8
+    x17 = numpy.sin(q4)
+    x18 = x10*x14
+    x19 = x17*x18
+    x20 = x16*x7 + x19*x7
+    x21 = numpy.cos(q3)
+    x22 = numpy.cos(q6)
+    x23 = numpy.sin(q3)
+    x24 = x22*x23
+    x25 = x20*x21 + x24
+    x26 = x15*x7
+    x27 = x18*x7
+    x28 = r*x25 - rR*x20 + rR*x26 - x27*x6
+    x29 = rR**2
+    x30 = x13**(-1.0)
+    x31 = -x10*x22*x30*x9 + x10*x30*x9
+    x32 = x11*x30
+    x33 = x22*(1 - x32) + x32
+    x34 = x12*x30
+    x35 = x22*(1 - x34) + x34
+    x36 = -x17*x35 + x31*x8
+    x37 = x21*x36 + x23*x27
+    x38 = c*x37
+    x39 = x17*x31
+    x40 = x33*x8 - x39
+    x41 = x21*x40 - x23*x26
+    x42 = rF*x41
+    x43 = rR*x8
+    x44 = x21*x43
+    x45 = x17*x6
+    x46 = x21*x45
+    x47 = x43 - x45
+    x48 = c*x36
+    x49 = rF*x40
+    x50 = rR*x21
+    x51 = 1/numpy.sqrt(c**2 - c*(rR*x31 + x35*x6) + r**2 - r*x38 - r*x42 + r*x44 - r*x46 - 2*r*x50 + r*(-x38 - x42) + r*(x44 - x46) - rF*(rR*x33 + x31*x6) + rR*x45 - rR*x47 + rR*x48 + rR*x49 - rR*(-x48 - x49) + rR*(-c*x31 - rF*x33) - x28**2 - x29*x8 + 2*x29 + x5 + x6**2 + x6*(-c*x35 - rF*x31))
+    x52 = rF*x51
+    x53 = r*x52
+    x54 = -r - x53
+    x55 = x17*x33 + x31*x8
+    x56 = -x20*x23 + x21*x22
+    x57 = x17*x26 - x27*x8
+    x58 = x0*x56 + x3*x57
+    x59 = -x58
+    x60 = c*x59
+    x61 = x35*x8 + x39
+    x62 = x10*x14*x21*x7 - x23*x36
+    x63 = -x0*x62 - x3*x61
+    x64 = -x28
+    x65 = x51*x64
+    x66 = rF*x63*x65 + x52*x60 + x60
+    x67 = x5*x51
+    x68 = -x21*x26 - x23*x40
+    x69 = -x0*x68 - x3*x55
+    x70 = x52*x64
+    x71 = -rF*x59 - x59*x67 - x69*x70
+    x72 = x0*x21
+    x73 = x6*x72
+    x74 = x52*x73 + x73
+    x75 = rR*x72
+    x76 = x52*x75 + x75
+    x77 = -x76
+    x78 = c*x69
+    x79 = rF*x63 + x5*x51*x63 - x52*x78 - x78
+    x80 = numpy.cos(q0)
+    x81 = x2*x21*x3 - x23*x80
+    x82 = rR*x81
+    x83 = x52*x82
+    x84 = x82 + x83
+    x85 = r*x2
+    x86 = x52*x85 + x85
+    x87 = x0*x57 - x3*x56
+    x88 = -x2*x87 - x25*x80
+    x89 = c*x88
+    x90 = -x2*(x0*x61 - x3*x62) - x37*x80
+    x91 = rF*x65*x90 + x52*x89 + x89
+    x92 = -x2*(x0*x55 - x3*x68) - x41*x80
+    x93 = -rF*x88 - x67*x88 - x70*x92
+    x94 = x6*x81
+    x95 = -x52*x94 - x94
+    x96 = c*x92
+    x97 = rF*x90 + x5*x51*x90 - x52*x96 - x96
+    x98 = rR*x23
+    x99 = x52*x98
+    x100 = x98 + x99
+    x101 = c*x25
+    x102 = rF*x37*x65
+    x103 = x101*x52 + x101 + x102
+    x104 = x42*x65
+    x105 = -rF*x25 - x104 - x25*x67
+    x106 = x23*x6
+    x107 = -x106*x52 - x106
+    x108 = c*x42*x51 - x37*x67
+    x109 = -c*x41 + rF*x37 - x108
+    x110 = c*x57
+    x111 = rF*x61*x65
+    x112 = x110*x52 + x110 + x111
+    x113 = rF*x57
+    x114 = -x113 - x55*x70 - x57*x67
+    x115 = c*x55
+    x116 = x61*x67
+    x117 = x115*x52
+    x118 = rF*x61 - x115 + x116 - x117
+    x119 = rR*x52
+    x120 = rR + x119
+    x121 = c*x22
+    x122 = x121*x52 + x121 + x27*x70
+    x123 = rF*x22
+    x124 = rF*x14*x51*x64*x7*x9 - x123 - x22*x67
+    x125 = c*x26
+    x126 = rF*x27 + x125*x52 + x125 + x27*x67
+    x127 = x52*x6
+    x128 = -x127 - x6
+    x129 = x0**2*x53
+    x130 = x3**2*x53
+    x131 = x15*x31 + x18*x33
+    x132 = c*x131
+    x133 = x15*x35 + x18*x31
+    x134 = rF*x133 - x132*x52 - x132 + x133*x5*x51
+    x135 = x3*x8
+    x136 = x0*x17
+    x137 = x135 + x136*x23
+    x138 = x17*x3
+    x139 = -x0*x23*x8 + x138
+    x140 = x137*x15 + x139*x18
+    x141 = x1*x52
+    x142 = rF*x133*x65
+    x143 = x0*x8 - x138*x23
+    x144 = x135*x23 + x136
+    x145 = x143*x15 + x144*x18
+    x146 = x4*x52
+    x147 = x123*x51
+    x148 = rR*x3
+    x149 = -x148*x52 - x148
+    x150 = -rR*x137
+    x151 = -x139
+    x152 = rF*x151*x51*x6 - x150*x52 - x150 + x151*x6
+    x153 = x17*x23
+    x154 = x23*x8
+    x155 = x0*x2
+    x156 = -rR*x155 - x119*x155
+    x157 = rR*(-x143*x2 + x17*x21*x80)
+    x158 = -x144*x2 - x21*x8*x80
+    x159 = rF*x158*x51*x6 - x157*x52 - x157 + x158*x6
+    x160 = x17*x21
+    x161 = x21*x8
+    x162 = rR*x160 + x119*x160 + x127*x161 + x161*x6
+    x163 = x120*x21
+    x164 = rF*x17*x51*x6 - x43*x52 - x47
+    x165 = x120*x23
+    x166 = rF*x10*x14*x51*x6 - x119*x15
+    x167 = x16 + x19
+    x168 = x119*x27 + x127*x26
+    x169 = x113*x51
+    x170 = x119*x17
+    x171 = x127*x8
+    x172 = x21*x22
+    out0 = numpy.zeros((5, 8) + shape, dtype=dtype)
+    out0[0, 0] = -x1
+    out0[0, 1] = x2*x4
+    out0[0, 4] = rR
+    out0[0, 5] = rR
+    out0[1, 0] = x4
+    out0[1, 1] = x1*x2
+    out0[2, 0] = x0*x54 + x17*x74 + x55*x66 + x57*x79 + x61*x71 + x76 + x77*x8
+    out0[2, 1] = x17*x95 + x3*x86 + x55*x91 + x57*x97 + x61*x93 + x8*x84 - x82 - x83
+    out0[2, 2] = x100*x8 + x103*x55 + x105*x61 + x107*x17 + x109*x57 - x98 - x99
+    out0[2, 3] = x112*x55 + x114*x61 + x118*x57
+    out0[2, 4] = -x119 + x120*x8 + x122*x55 + x124*x61 + x126*x57 + x128*x17 + x129*x21 + x130*x21
+    out0[2, 6] = -x111*x131 + x134*x57 + x140*x141 + x142*x55 - x145*x146
+    out0[2, 7] = r*rF*x0*x51*x58 + rF*rR*x22*x51*x8 - rR*x147 - x116 + x117 - x146*x87 - x147*x45
+    out0[3, 0] = x149*x21 + x152*x21 + x153*x77 - x154*x74 - x3*x54 + x56*x79 + x62*x71 + x66*x68
+    out0[3, 1] = x0*x86 + x153*x84 - x154*x95 + x156*x21 + x159*x21 + x56*x97 + x62*x93 + x68*x91
+    out0[3, 2] = x100*x153 + x103*x68 + x105*x62 - x107*x154 + x109*x56 + x162*x21
+    out0[3, 3] = x112*x68 + x114*x62 + x118*x56 - x129 - x130 + x163 + x164*x21
+    out0[3, 4] = x122*x68 + x124*x62 + x126*x56 - x128*x154 + x165*x17
+    out0[3, 6] = x119*x167*x21 - x131*x62*x70 + x134*x56 - x140*x146 - x141*x145 + x142*x68 + x166*x21
+    out0[3, 7] = c*x52*x68 - x141*x87 - x146*x58 + x168*x21 + x169*x50 + x170*x24 + x171*x24 - x62*x67
+    out0[4, 0] = x149*x23 + x152*x23 - x160*x77 + x161*x74 + x25*x79 + x37*x71 + x41*x66
+    out0[4, 1] = x156*x23 + x159*x23 - x160*x84 + x161*x95 + x25*x97 + x37*x93 + x41*x91
+    out0[4, 2] = -x100*x160 + x103*x41 + x105*x37 + x107*x161 + x109*x25 + x162*x23
+    out0[4, 3] = x112*x41 + x114*x37 + x118*x25 + x164*x23 + x165
+    out0[4, 4] = x122*x41 + x124*x37 + x126*x25 + x128*x161 - x163*x17
+    out0[4, 6] = -x102*x131 + x104*x133 + x134*x25 + x166*x23 + x167*x99
+    out0[4, 7] = x108 + x168*x23 + x169*x98 - x170*x172 - x171*x172
+    return out0
+
+
+@_in_blocks(1)
+def sphere_forcing_at_rest(q, p, T_steer):
+    """The forcing f (8) of Kane's equations at rest (u = 0): gravity and the steer torque."""
+    q0, q1, q2, q3, q4, q5, q6, q7, = q
+    w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, r, = p
+    shape, dtype = _batch(q, T_steer, *p)
+    x0 = g*mB
+    x1 = numpy.sin(q0)
+    x2 = r*x1
+    x3 = numpy.sin(q2)
+    x4 = numpy.sin(q4)
+    x5 = x3*x4
+    x6 = numpy.sin(q3)
+    x7 = numpy.cos(q2)
+    x8 = numpy.cos(q4)
+    x9 = x7*x8
+    x10 = x5 - x6*x9
+    x11 = rR + zB
+    x12 = x3*x8
+    x13 = x4*x7
+    x14 = x12 + x13*x6
+    x15 = numpy.cos(q0)
+    x16 = numpy.cos(q3)
+    x17 = x1*x3
+    x18 = -x15*x6 + x16*x17
+    x19 = x0*x18
+    x20 = g*mF
+    x21 = numpy.cos(lam)
+    x22 = x21**2
+    x23 = numpy.sin(lam)
+    x24 = x23**2
+    x25 = x22 + x24
+    x26 = x25**(-1.0)
+    x27 = x22*x26
+    x28 = numpy.cos(q6)
+    x29 = x27 + x28*(1 - x27)
+    x30 = -x21*x23*x26*x28 + x21*x23*x26
+    x31 = x29*x4 + x30*x8
+    x32 = x30*x4
+    x33 = x29*x8 - x32
+    x34 = 1/numpy.sqrt(x25)
+    x35 = x23*x34
+    x36 = numpy.sin(q6)
+    x37 = -x16*x35*x36 - x33*x6
+    x38 = x3*x31 + x37*x7
+    x39 = x24*x26
+    x40 = x28*(1 - x39) + x39
+    x41 = x32 + x40*x8
+    x42 = x30*x8 - x4*x40
+    x43 = x16*x21*x34*x36 - x42*x6
+    x44 = x3*x41 + x43*x7
+    x45 = x15*x16
+    x46 = -x17*x6 - x45
+    x47 = -x1*x13 + x46*x8
+    x48 = x35*x36
+    x49 = -x1*x9 - x4*x46
+    x50 = x21*x34
+    x51 = x36*x50
+    x52 = x18*x28 + x47*x48 - x49*x51
+    x53 = x20*x52
+    x54 = c + w
+    x55 = x18*(rR*x14 - x10*x54)
+    x56 = g*mH
+    x57 = -x54 + xH
+    x58 = x52*x56
+    x59 = g*mR
+    x60 = x4*x51 + x48*x8
+    x61 = x16*x28 - x6*x60
+    x62 = x4*x48 - x51*x8
+    x63 = x3*x62 + x61*x7
+    x64 = x20*x63
+    x65 = x18*x51 + x30*x47 + x40*x49
+    x66 = rF*x65
+    x67 = x56*x63
+    x68 = -x18*x48 + x29*x47 + x30*x49
+    x69 = x57*x68
+    x70 = c*x68
+    x71 = rR*x19
+    x72 = x18*x20
+    x73 = rR*x72
+    x74 = x18*x56
+    x75 = rR*x74
+    x76 = x65*zH
+    x77 = rR*x59
+    x78 = x18*x77
+    x79 = x47*xB
+    x80 = x0*x79
+    x81 = x16*x7
+    x82 = x47*x54
+    x83 = x20*x82
+    x84 = x56*x82
+    x85 = x16*x7**2
+    x86 = rR*x1
+    x87 = x0*x86
+    x88 = x11*x49
+    x89 = x0*x88
+    x90 = x85*x86
+    x91 = rR*x49
+    x92 = x20*x91
+    x93 = x56*x91
+    x94 = x1*x77
+    x95 = -x5*x6 + x7*x8
+    x96 = T_steer*x23
+    x97 = x12*x6 + x13
+    x98 = T_steer*x21*x97 + x95*x96
+    x99 = x16*x4
+    x100 = -T_steer*x16*x21*x8 + x96*x99
+    x101 = -x1*x97 - x45*x8
+    x102 = -x1*x95 + x15*x16*x4
+    x103 = x16*x33 - x48*x6
+    x104 = -x1*(-x3*x37 + x31*x7) - x103*x15
+    x105 = x16*x42 + x51*x6
+    x106 = -x1*(-x3*x43 + x41*x7) - x105*x15
+    x107 = x18*(-rR*x102 + x101*x54)
+    x108 = x16*x60 + x28*x6
+    x109 = -x1*(-x3*x61 + x62*x7) - x108*x15
+    x110 = x109*x20
+    x111 = x109*x56
+    x112 = x16*x8
+    x113 = x18*(rR*x99 + x112*x54)
+    x114 = x108*x20
+    x115 = x108*x56
+    x116 = x6*x7
+    x117 = x116*x86
+    x118 = -rR*x8 + x4*x54
+    x119 = x20*x62
+    x120 = x56*x62
+    x121 = x20*x28
+    x122 = x28*x56
+    x123 = T_steer*x34
+    x124 = x29*x50 + x30*x35
+    x125 = x30*x50 + x35*x40
+    out0 = numpy.zeros((8,) + shape, dtype=dtype)
+    out0[0] = x0*x2 + x19*(-x10*xB + x11*x14) + x2*x20 + x2*x56 + x2*x59 + x20*x55 - x20*x90 - x3*x71 - x3*x73 - x3*x75 - x3*x78 + x53*(c*x38 - rF*x44) + x55*x56 - x56*x90 + x58*(-x38*x57 + x44*zH) + x64*x66 - x64*x70 + x67*x69 - x67*x76 + x80*x81 + x81*x83 + x81*x84 - x81*x89 - x81*x92 - x81*x93 - x85*x87 - x85*x94
+    out0[1] = x107*x20 + x107*x56 - x110*x66 + x110*x70 - x111*x69 + x111*x76 - x19*x79 + x19*x88 + x19*(x101*xB - x102*x11) + x49*x73 + x49*x75 + x53*(-c*x104 + rF*x106) + x58*(x104*x57 - x106*zH) - x72*x82 - x74*x82
+    out0[2] = x113*x20 + x113*x56 - x114*x66 + x114*x70 - x115*x69 + x115*x76 + x116*x87 + x116*x94 + x117*x20 + x117*x56 + x19*(x11*x99 + x112*xB) + x53*(-c*x103 + rF*x105) + x58*(x103*x57 - x105*zH) - x6*x80 - x6*x83 - x6*x84 + x6*x89 + x6*x92 + x6*x93
+    out0[3] = x118*x72 + x118*x74 - x119*x66 + x119*x70 - x120*x69 + x120*x76 + x19*(-x11*x8 + x4*xB) + x53*(-c*x31 + rF*x41) + x58*(x31*x57 - x41*zH) + x71 + x73 + x75 + x78
+    out0[4] = -x121*x66 + x121*x70 - x122*x69 + x122*x76 + x53*(c*x48 + rF*x51) + x58*(-x48*x57 - x51*zH) - x80 - x83 - x84 + x89 + x92 + x93
+    out0[6] = x123*x22 + x123*x24 + x53*(-c*x124 + rF*x125) + x58*(x124*x57 - x125*zH)
     return out0

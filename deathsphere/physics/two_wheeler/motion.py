@@ -31,8 +31,8 @@ HEADING, LEAN, PITCH, REAR, STEER = 2, 3, 4, 5, 6
 INDEPENDENT = (LEAN, REAR, STEER)
 DEPENDENT = (0, 1, 2, PITCH, 7)
 
-#: Newton iterations for the pitch: quadratic convergence from the upright
-#: pitch reaches float64 in 5 for leans and steers below 1 rad; 3 spare.
+#: Newton iterations for the pitch, at most: quadratic convergence from the
+#: upright pitch reaches float64 in 5 for leans and steers below 1 rad.
 _NEWTON = 8
 
 
@@ -59,10 +59,32 @@ def pitch(q, p, surface: str = "flat"):
     docs/two-wheeler.md sec. 3.2)."""
     _, holonomic, _ = _functions(surface)
     q = np.array(q, dtype=np.result_type(q, float), copy=True)
-    for _ in range(_NEWTON):
+    if np.iscomplexobj(q) or any(np.iscomplexobj(x) for x in p):
+        # a complex step: the real parts' Newton in real arithmetic (the same iterates), then one complex
+        # step from that root gives the imaginary part exactly (h = i e g there, so the step is -i e g / h')
+        q[PITCH] = pitch(q.real, tuple(np.real(x) for x in p), surface)[PITCH]
         h, dh = holonomic(q, p)
-        q[PITCH] = q[PITCH] - h[0] / dh[0]
-    return q
+        q[PITCH] -= h[0] / dh[0]
+        return q
+    shape = q.shape[1:]
+    q = q.reshape(8, -1)
+    # parameters that vary along the batch follow its points
+    varying = [np.broadcast_to(x, shape).reshape(-1) if np.ndim(x) else None for x in p]
+    # each point iterates until settled: after a step below 1e-8 rad the next leaves it at rounding (points
+    # where no pitch exists iterate to the end; the callers mask them)
+    active = np.arange(q.shape[1])
+    settled = np.zeros(q.shape[1], bool)
+    for _ in range(_NEWTON):
+        if active.size == 0:
+            break
+        h, dh = holonomic(q[:, active], tuple(x if v is None else v[active] for x, v in zip(p, varying)))
+        step = h[0] / dh[0]
+        q[PITCH, active] -= step
+        last = settled[active]
+        with np.errstate(invalid="ignore"):
+            settled[active] = np.abs(step.real) < 1e-8
+        active = active[~last]
+    return q.reshape((8,) + shape)
 
 
 def _split(B):
@@ -84,15 +106,20 @@ def dependent_speeds(q, u_ind, p, surface: str = "flat"):
     """All eight speeds from the three independent ones (lean, rear wheel,
     steer rates) through the rolling constraints B u = 0 (beyond the paper;
     docs/two-wheeler.md sec. 3.3)."""
-    return full_speeds(q, u_ind, p, surface)[0]
+    dep, ind = _split(getattr(_generated, f"{surface}_constraint_matrix")(q, p))
+    u_ind = np.moveaxis(np.asarray(u_ind), 0, -1)
+    # one right-hand side, B_ind u_ind, rather than the null space's three
+    rhs = np.einsum("...ij,...j->...i", ind, np.broadcast_to(u_ind, ind.shape[:-2] + u_ind.shape[-1:]))
+    u = np.zeros(dep.shape[:-2] + (8,), dtype=np.result_type(dep, u_ind))
+    u[..., list(INDEPENDENT)] = u_ind
+    u[..., list(DEPENDENT)] = -np.linalg.solve(dep, rhs[..., None])[..., 0]
+    return np.moveaxis(u, -1, 0)
 
 
 def full_speeds(q, u_ind, p, surface: str = "flat"):
     """(u, A): the eight speeds and the null-space map A (..., 8, 3) of the
     rolling constraints at q (beyond the paper; docs/two-wheeler.md sec. 4)."""
-    equations, _, _ = _functions(surface)
-    zero_u = np.zeros((8,) + np.shape(q)[1:])
-    B = equations(q, zero_u, p, 0.0)[2]
+    B = getattr(_generated, f"{surface}_constraint_matrix")(q, p)
     A = _null_space(B)
     u = np.einsum("...ij,j...->i...", A, u_ind)
     return u, A

@@ -52,16 +52,17 @@ def turn_state_vector(q, u, surface="sphere", steer="free"):
     return np.concatenate([np.asarray(q)[coords], ind[speeds]])
 
 
-def _rates(x, q_steady, p, torque, surface):
-    """d/dt of the free-steer state x (k, n), the other coordinates at their
-    steady values q_steady (8, n); and, from the same evaluation, the
-    locked-steer state's rates (the steer row dropped, steer rate 0)."""
+def _rates(x_coords, x_speeds, q_steady, p, torque, surface):
+    """d/dt of the free-steer state (its coordinates x_coords, its speeds
+    x_speeds, (k, n) each), the other coordinates at their steady values
+    q_steady (8, n); and, from the same evaluation, the locked-steer
+    state's rates (the steer row dropped, steer rate 0)."""
     coords, speeds = _layout(surface, "free")
-    q = np.array(q_steady, dtype=np.result_type(x, q_steady))
-    q[coords] = x[:len(coords)]
+    q = np.array(q_steady, dtype=np.result_type(x_coords, q_steady))
+    q[coords] = x_coords
     q = motion.pitch(q, p, surface)
-    u_ind = np.zeros((3,) + x.shape[1:], dtype=q.dtype)
-    u_ind[speeds] = x[len(coords):]
+    u_ind = np.zeros((3,) + x_speeds.shape[1:], dtype=np.result_type(q, x_speeds))
+    u_ind[speeds] = x_speeds
     mass, forcing, u = motion.reduced_mass_and_forcing(q, u_ind, p, torque, surface)
     out = []
     for mode in ("free", "locked"):
@@ -81,20 +82,27 @@ def _locked_columns(surface):
 def jacobians(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None):
     """The Jacobians (n, k, k) of the state's rates at steady turns (q, u
     (8, n), the steady steer torque (n,) held constant), steer free and
-    steer locked, by complex steps from one batch of evaluations (beyond
-    the paper; docs/two-wheeler.md sec. 8.3)."""
+    steer locked, by complex steps, the coordinates' in one batch and the
+    speeds' in another (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
     p = motion.parameter_values(parameters, surface, r)
     q, u = np.asarray(q, float).reshape(8, -1), np.asarray(u, float).reshape(8, -1)
     x0 = turn_state_vector(q, u, surface, "free")
     k, n = x0.shape
-    x = np.repeat(x0[:, :, None], k, axis=2).astype(complex)
-    x[np.arange(k), :, np.arange(k)] += 1j * _STEP
-    qs = np.repeat(q[:, :, None], k, axis=2)
-    torque = np.repeat(np.broadcast_to(np.asarray(torque, float).reshape(-1), (n,))[:, None], k, axis=1)
-    free, locked = _rates(x.reshape(k, -1), qs.reshape(8, -1), p, torque.reshape(-1), surface)
-    J_free = np.moveaxis(free.imag.reshape(k, n, k) / _STEP, 1, 0)
-    J_locked = np.moveaxis(locked.imag.reshape(-1, n, k) / _STEP, 1, 0)[..., _locked_columns(surface)]
-    return J_free, J_locked
+    kc = len(_layout(surface, "free")[0])
+    torque = np.broadcast_to(np.asarray(torque, float).reshape(-1), (n,))
+    columns = []
+    # the speeds' directions leave q, the pitch, B and M real: half the cost of the coordinates' directions
+    for group in (np.arange(kc), np.arange(kc, k)):
+        g = group.size
+        x = np.repeat(x0[:, :, None], g, axis=2).astype(complex)
+        x[group, :, np.arange(g)] += 1j * _STEP
+        x = x.reshape(k, -1)
+        x_coords, x_speeds = (x[:kc], x[kc:].real) if group[0] < kc else (x[:kc].real, x[kc:])
+        rates = _rates(x_coords, x_speeds, np.repeat(q[:, :, None], g, axis=2).reshape(8, -1), p,
+                       np.repeat(torque[:, None], g, axis=1).reshape(-1), surface)
+        columns.append([r.imag.reshape(-1, n, g) / _STEP for r in rates])
+    J_free, J_locked = (np.moveaxis(np.concatenate(c, axis=2), 1, 0) for c in zip(*columns))
+    return J_free, J_locked[..., _locked_columns(surface)]
 
 
 def jacobian(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None, steer="free"):

@@ -49,6 +49,11 @@ def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sph
     polar angle from the upward vertical); flat, lane = the path's curvature
     (ignored here); heading pi/2, pitch from the holonomic constraint
     (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    return _configuration(lane, lean, steer, parameters, surface, r)[0]
+
+
+def _configuration(lane, lean, steer, parameters, surface, r):
+    """configuration's q and where its pitch holds (:func:`_pitch_holds`)."""
     lane, lean, steer = np.broadcast_arrays(*(np.asarray(x) for x in (lane, lean, steer)))
     dtype = np.result_type(lane, lean, steer, float)
     q = np.zeros((8,) + lane.shape, dtype=dtype)
@@ -61,9 +66,12 @@ def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sph
     p = motion.parameter_values(parameters, surface, r)
     with np.errstate(over="ignore", invalid="ignore"):
         q = motion.pitch(q, p, surface)
-    # where it ran away, pitch 0: finite, and _pitch_holds still says no
-    q[motion.PITCH] = np.where(_pitch_holds(q, p, surface), q[motion.PITCH], 0.0)
-    return q
+    # where it ran away, pitch 0: finite, and _pitch_holds still says no (unless pitch 0 itself holds)
+    holds = _pitch_holds(q, p, surface)
+    q[motion.PITCH] = np.where(holds, q[motion.PITCH], 0.0)
+    if not holds.all():
+        holds[~holds] = _pitch_holds(q[:, ~holds], p, surface)
+    return q, holds
 
 
 def _pitch_holds(q, p, surface):
@@ -87,7 +95,7 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface=
     steady turn are G + w^2 H (rows lean, rear wheel, steer; no steer torque),
     w the rear wheel rate (beyond the paper; docs/two-wheeler.md sec. 8)."""
     p = motion.parameter_values(parameters, surface, r)
-    q = configuration(lane, lean, steer, parameters, surface, r)
+    q, holds = _configuration(lane, lean, steer, parameters, surface, r)
     q1 = q.reshape(8, -1)
     n = q1.shape[1]
     unit = np.zeros((3, n))
@@ -95,18 +103,17 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface=
     u, A = motion.full_speeds(q1, unit, p, surface)
     kappa = np.broadcast_to(lane, np.shape(q)[1:]).ravel()
     condition = u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - kappa * u[1]
-    # both speed sets in one call of the equations: at rest (G) and at unit wheel rate (G + H)
-    M, f, B, bias = getattr(_generated, f"{surface}_equations")(
-        np.concatenate([q1, q1], axis=1), np.concatenate([0 * u, u], axis=1), p, 0.0)
+    # at rest the accelerations vanish (B' u = 0): G = -A^T f(q, 0), gravity alone; at unit wheel rate G + H
+    rest = getattr(_generated, f"{surface}_forcing_at_rest")(q1, p, 0.0)
+    M, f, B, bias = getattr(_generated, f"{surface}_equations")(q1, u, p, 0.0)
     dep = np.moveaxis(B, (0, 1), (-2, -1))[..., list(motion.DEPENDENT)]
-    a = np.zeros((2 * n, 8), dtype=np.result_type(u, bias))
+    a = np.zeros((n, 8), dtype=np.result_type(u, bias))
     a[:, list(motion.DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
     force = np.einsum("ij...,...j->...i", M, a) - np.moveaxis(f, 0, -1)
-    R = np.einsum("...ij,...i->j...", np.concatenate([A, A]), force)
-    G, H = R[:, :n], R[:, n:] - R[:, :n]
-    holds = _pitch_holds(q1, p, surface)
+    G = -np.einsum("...ij,i...->j...", A, rest)
+    H = np.einsum("...ij,...i->j...", A, force) - G
     shape = np.shape(q)[1:]
-    return tuple(np.where(holds, x, np.nan).reshape(x.shape[:-1] + shape) for x in (condition, G, H))
+    return tuple(np.where(holds.ravel(), x, np.nan).reshape(x.shape[:-1] + shape) for x in (condition, G, H))
 
 
 def _initial_steer(lane, lean, parameters, surface, r):
@@ -140,12 +147,13 @@ def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=N
             break
         # a complex step (value and slope) every third iteration, real chord steps between: half the cost
         fresh = k % 3 == 0
-        q = configuration(lane[idx], lean[idx], delta[idx] + (1j * _STEP if fresh else 0.0), parameters, surface, r)
+        q, holds = _configuration(lane[idx], lean[idx], delta[idx] + (1j * _STEP if fresh else 0.0), parameters,
+                                  surface, r)
         c = _condition(lane[idx], q, p, surface)
         if fresh:
             slope[idx] = c.imag / _STEP
         c = c.real
-        ok = (np.abs(slope[idx]) > 1e-300) & np.isfinite(c) & _pitch_holds(q, p, surface)
+        ok = (np.abs(slope[idx]) > 1e-300) & np.isfinite(c) & holds
         d = np.where(ok, c / np.where(ok, slope[idx], 1.0), np.inf)
         step[idx] = d
         delta[idx] = np.where(ok, np.clip(delta[idx] - np.where(ok, d, 0.0), -1.5, 1.5), np.nan)
@@ -163,85 +171,109 @@ def lean_curve(lane, parameters: BicycleParameters, surface="sphere", r=None, le
     X = np.broadcast_to(lane[:, None], L.shape)
     steer = solve_steer(X.ravel(), L.ravel(), parameters, surface, r).reshape(L.shape)
     ok = np.isfinite(steer)
-    _, G, H = turn_coefficients(X.ravel(), L.ravel(), np.where(ok, steer, 0.0).ravel(), parameters, surface, r)
-    G = np.where(ok, G.reshape((3,) + L.shape), np.nan)
-    H = np.where(ok, H.reshape((3,) + L.shape), np.nan)
+    # the coefficients where the steer exists only (a quarter of the grid has no configuration)
+    G, H = np.full((2, 3) + L.shape, np.nan)
+    _, G[:, ok], H[:, ok] = turn_coefficients(X[ok], L[ok], steer[ok], parameters, surface, r)
     return {"lean": np.array(L), "steer": steer, "G": G, "H": H}
 
 
-def _target(G, H, w2, torque):
+def _target(G, H, w2, torque, lanes=slice(None)):
     """The function whose zeros are the turns: for a speed (w2 given) the
-    lean row; for a torque, G_s H_l - G_l H_s - T H_l (w2 eliminated)."""
+    lean row; for a torque, G_s H_l - G_l H_s - T H_l (w2 eliminated); G, H
+    taken at ``lanes`` (an index along their axis 1)."""
     if torque is None:
-        return G[0] + w2 * H[0]
-    return G[2] * H[0] - G[0] * H[2] - torque * H[0]
+        return G[0][lanes] + w2 * H[0][lanes]
+    return (G[2] * H[0] - G[0] * H[2])[lanes] - torque * H[0][lanes]
 
 
-def _brackets(f, lean, steer):
-    """Brackets of the zeros of f sampled on lean (n, m): sign changes, and
+def _brackets(f, lean, steer, lanes):
+    """Brackets of the zeros of f (n, m) sampled on the lean curve (lean,
+    steer: (distinct lanes, m), row i's at ``lanes[i]``): sign changes, and
     near tangencies where a parabola through a local minimum of |f| and its
     neighbours crosses zero between samples (two zeros closer than a step).
     Returns (row, lean0, steer0) starting points, the steer interpolated
     along the curve."""
     fin = np.isfinite(f)
-    change = fin[:, :-1] & fin[:, 1:] & (np.sign(f[:, :-1]) != np.sign(f[:, 1:]))
+    sign = np.sign(f)
+    change = fin[:, :-1] & fin[:, 1:] & (sign[:, :-1] != sign[:, 1:])
     rows, cols = np.nonzero(change)
     a, b = f[rows, cols], f[rows, cols + 1]
     frac = a / (a - b)
-    start = [lean[rows, cols] + frac * (lean[rows, cols + 1] - lean[rows, cols])]
-    start_steer = [steer[rows, cols] + frac * (steer[rows, cols + 1] - steer[rows, cols])]
+    at = lanes[rows]
+    start = [lean[at, cols] + frac * (lean[at, cols + 1] - lean[at, cols])]
+    start_steer = [steer[at, cols] + frac * (steer[at, cols + 1] - steer[at, cols])]
     out_rows = [rows]
-    # tangencies: |f| locally smallest without a sign change
-    mid = fin[:, 1:-1] & fin[:, :-2] & fin[:, 2:]
-    f0, f1, f2 = f[:, :-2], f[:, 1:-1], f[:, 2:]
-    same = (np.sign(f0) == np.sign(f1)) & (np.sign(f1) == np.sign(f2))
+    # tangencies: |f| locally smallest without a sign change (the parabola only there)
+    size = np.abs(f)
+    near = fin[:, 1:-1] & fin[:, :-2] & fin[:, 2:] & (sign[:, :-2] == sign[:, 1:-1]) & (sign[:, 1:-1] == sign[:, 2:])
+    near &= (size[:, 1:-1] <= size[:, :-2]) & (size[:, 1:-1] <= size[:, 2:])
+    r2, c2 = np.nonzero(near)
+    f0, f1, f2 = f[r2, c2], f[r2, c2 + 1], f[r2, c2 + 2]
     curv = f0 - 2 * f1 + f2
     with np.errstate(invalid="ignore", divide="ignore"):
         vertex = f1 - (f2 - f0) ** 2 / (8 * curv)
         x = 0.5 * (f0 - f2) / curv
-    near = mid & same & (np.abs(f1) <= np.abs(f0)) & (np.abs(f1) <= np.abs(f2)) & (np.sign(vertex) != np.sign(f1))
-    near &= np.isfinite(x) & (np.abs(x) <= 1)
-    r2, c2 = np.nonzero(near)
-    h = lean[r2, c2 + 2] - lean[r2, c2 + 1]
+    crossing = (np.sign(vertex) != np.sign(f1)) & np.isfinite(x) & (np.abs(x) <= 1)
+    r2, c2, vertex, x, curv = r2[crossing], c2[crossing], vertex[crossing], x[crossing], curv[crossing]
+    at = lanes[r2]
+    h = lean[at, c2 + 2] - lean[at, c2 + 1]
     for side in (-1, 1):
         # the two zeros of the parabola, either side of its vertex
-        disc = np.sqrt(np.maximum(-2 * vertex[r2, c2] / curv[r2, c2], 0.0))
-        start.append(lean[r2, c2 + 1] + (x[r2, c2] + side * disc) * h)
-        start_steer.append(steer[r2, c2 + 1])
+        disc = np.sqrt(np.maximum(-2 * vertex / curv, 0.0))
+        start.append(lean[at, c2 + 1] + (x + side * disc) * h)
+        start_steer.append(steer[at, c2 + 1])
         out_rows.append(r2)
     return np.concatenate(out_rows), np.concatenate(start), np.concatenate(start_steer)
 
 
-def _newton_step(lane, lean, steer, w2, torque, parameters, surface, r):
-    """One Newton step in (lean, steer) on (condition, target), the
-    Jacobian by complex steps (both in one batch); NaN where singular."""
+def _residual(lane, lean, steer, w2, torque, parameters, surface, r, slopes):
+    """(condition, target) at (lean, steer) and, with ``slopes``, their
+    Jacobian (m, 2, 2) in (lean, steer) by complex steps (both in one
+    batch; else None)."""
+    if not slopes:
+        c, G, H = turn_coefficients(lane, lean, steer, parameters, surface, r)
+        return c, _target(G, H, w2, torque), None
     m = lean.size
     c, G, H = turn_coefficients(np.concatenate([lane, lane]), np.concatenate([lean + 1j * _STEP, lean + 0j]),
                                 np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, surface, r)
     both = _target(G, H, None if w2 is None else np.concatenate([w2, w2]),
                    None if torque is None else np.concatenate([torque, torque]))
     c, c_s, t, t_s = c[:m], c[m:], both[:m], both[m:]
-    j00, j01, j10, j11 = c.imag / _STEP, c_s.imag / _STEP, t.imag / _STEP, t_s.imag / _STEP
-    det = j00 * j11 - j01 * j10
-    ok = np.abs(det) > 0
-    det = np.where(ok, det, 1.0)
-    d_lean = np.where(ok, (j11 * c.real - j01 * t.real) / det, np.nan)
-    d_steer = np.where(ok, (j00 * t.real - j10 * c.real) / det, np.nan)
-    return d_lean, d_steer
+    jacobian = np.stack([np.stack([c.imag, c_s.imag], -1), np.stack([t.imag, t_s.imag], -1)], -2) / _STEP
+    return c.real, t.real, jacobian
 
 
 def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
     """Newton's method in (lean, steer) on (condition, target), iterating
-    only the unconverged turns; returns lean, steer, converged."""
+    only the unconverged turns; once a step is below 1e-4 rad the Jacobian
+    is kept (chord steps), renewed every third step; returns lean, steer,
+    converged."""
     lean, steer = np.array(lean, float), np.array(steer, float)
     size = np.full(lean.shape, np.inf)
     active = np.ones(lean.shape, bool)
-    for _ in range(_NEWTON):
+    jacobian = np.zeros(lean.shape + (2, 2))
+    residual = np.zeros((2,) + lean.shape)
+    for k in range(_NEWTON):
         idx = np.nonzero(active)[0]
         if idx.size == 0:
             break
-        d_lean, d_steer = _newton_step(lane[idx], lean[idx], steer[idx], None if w2 is None else w2[idx],
-                                       None if torque is None else torque[idx], parameters, surface, r)
+        # complex steps cost twice the points, in complex arithmetic: a chord step is a fifth of a Newton step;
+        # close to the root it converges to the same one (far from it, on a steep curve, it may not)
+        fresh = (size[idx] > 1e-4) | (k % 3 == 0)
+        for at, slopes in ((idx[fresh], True), (idx[~fresh], False)):
+            if at.size:
+                *value, J = _residual(lane[at], lean[at], steer[at], None if w2 is None else w2[at],
+                                      None if torque is None else torque[at], parameters, surface, r, slopes)
+                residual[:, at] = value
+                if slopes:
+                    jacobian[at] = J
+        c, t = residual[:, idx]
+        (j00, j01), (j10, j11) = np.moveaxis(jacobian[idx], (-2, -1), (0, 1))
+        det = j00 * j11 - j01 * j10
+        ok = np.abs(det) > 0
+        det = np.where(ok, det, 1.0)
+        d_lean = np.where(ok, (j11 * c - j01 * t) / det, np.nan)
+        d_steer = np.where(ok, (j00 * t - j10 * c) / det, np.nan)
         moving = np.isfinite(d_lean) & np.isfinite(d_steer)
         lean[idx] -= np.clip(np.where(moving, d_lean, 0.0), -0.1, 0.1)
         steer[idx] -= np.clip(np.where(moving, d_steer, 0.0), -0.1, 0.1)
@@ -250,13 +282,15 @@ def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
     return lean, steer, size < 1e-10
 
 
-def _solve(lane, curve, w2, torque, parameters, surface, r):
+def _solve(lane, curve, lanes, w2, torque, parameters, surface, r):
     """All turns of each lane picked by a speed (w2) or a torque, (n, k)
-    NaN-padded lean and steer, sorted by lean, duplicates merged."""
+    NaN-padded lean and steer, sorted by lean, duplicates merged; the lean
+    curve is that of the distinct lanes, lane i's at ``lanes[i]``."""
     n = np.size(lane)
+    # one lean curve per distinct lane serves all its speeds or torques
     f = _target(curve["G"], curve["H"], w2[:, None] if torque is None else None,
-                None if torque is None else torque[:, None])
-    rows, start, steer0 = _brackets(f, curve["lean"], curve["steer"])
+                None if torque is None else torque[:, None], lanes)
+    rows, start, steer0 = _brackets(f, curve["lean"], curve["steer"], lanes)
     lane_r = np.asarray(lane, float)[rows]
     ok0 = np.isfinite(steer0) & np.isfinite(start)
     rows, start, steer0, lane_r = rows[ok0], start[ok0], steer0[ok0], lane_r[ok0]
@@ -309,11 +343,11 @@ def _turns(lane, value, kind, parameters, surface, r, head):
     lane[~good] = np.pi / 2 if surface == "sphere" else 0.1
     value[~good] = 1.0
     unique, inverse = np.unique(lane, return_inverse=True)
-    curve = {k: v[..., inverse, :] for k, v in lean_curve(unique, parameters, surface, r).items()}
+    curve = lean_curve(unique, parameters, surface, r)
     if kind == "speed":
-        L, S, counts = _solve(lane, curve, (value / parameters.rR) ** 2, None, parameters, surface, r)
+        L, S, counts = _solve(lane, curve, inverse, (value / parameters.rR) ** 2, None, parameters, surface, r)
     else:
-        L, S, counts = _solve(lane, curve, None, value, parameters, surface, r)
+        L, S, counts = _solve(lane, curve, inverse, None, value, parameters, surface, r)
     L[~good], S[~good], counts[~good] = np.nan, np.nan, 0
     out = turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head)
     reason = np.where(counts > 0, REASONS["ok"], REASONS["none"])
@@ -357,18 +391,34 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere
     (1 where both normal forces push, 0 where a wheel would lift), ``q``,
     ``u``.
     """
-    p = parameters
     lane, lean, steer = np.broadcast_arrays(*(np.asarray(x, float) for x in (lane, lean, steer)))
     shape = lane.shape
     lane, lean, steer = lane.ravel(), lean.ravel(), steer.ravel()
-    valid = np.isfinite(lean) & np.isfinite(steer) & np.isfinite(lane)
-    lane0, lean0, steer0 = (np.where(valid, x, d) for x, d in ((lane, np.pi / 2 if surface == "sphere" else 0.0),
-                                                                 (lean, 0.0), (steer, 0.0)))
+    # only the turns given are computed: a NaN-padded table of turns is mostly padding
+    given = np.nonzero(np.isfinite(lean) & np.isfinite(steer) & np.isfinite(lane))[0]
+    if given.size:
+        valid, out = _turn_state(lane[given], lean[given], steer[given], parameters, surface, r, head)
+    else:
+        # none: an upright turn gives the names and shapes
+        valid, out = _turn_state(np.array([np.pi / 2 if surface == "sphere" else 0.0]), np.zeros(1), np.zeros(1),
+                                 parameters, surface, r, head)
+    full = {}
+    for k, v in out.items():
+        x = np.full(v.shape[:-1] + lane.shape, np.nan)
+        x[..., given] = np.where(valid, v, np.nan)[..., :given.size]
+        full[k] = x.reshape(v.shape[:-1] + shape)
+    full["lean"], full["steer"] = lean.reshape(shape), steer.reshape(shape)
+    return full
+
+
+def _turn_state(lane0, lean0, steer0, p, surface, r, head):
+    """turn_state's quantities at finite (lane, lean, steer) (m,), and
+    where they are a turn (the lean row gives a positive w^2)."""
     values = motion.parameter_values(p, surface, r)
     _, G, H = turn_coefficients(lane0, lean0, steer0, p, surface, r)
     with np.errstate(invalid="ignore", divide="ignore"):
-        w2 = np.where(valid, -G[0] / H[0], np.nan)
-    valid &= np.isfinite(w2) & (w2 > 0)
+        w2 = -G[0] / H[0]
+    valid = np.isfinite(w2) & (w2 > 0)
     w2 = np.where(valid, w2, 0.0)
     torque = G[2] + w2 * H[2]
     q = configuration(lane0, lean0, steer0, p, surface, r)
@@ -420,9 +470,5 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere
             out[f"mu_required_{name}"] = np.where(normal > 0, tangential / np.where(normal > 0, normal, 1.0), np.inf)
     # both wheels must push on the surface for the turn to be ridden
     out["contact"] = ((out["normal_rear"] > 0) & (out["normal_front"] > 0)).astype(float)
-    out = {k: np.where(valid, v, np.nan) for k, v in out.items()}
-    out = {k: v.reshape(v.shape[:-1] + shape) if v.ndim > 1 else v.reshape(shape) for k, v in out.items()}
-    out["q"] = np.where(valid, q, np.nan).reshape((8,) + shape)
-    out["u"] = np.where(valid, u, np.nan).reshape((8,) + shape)
-    out["lean"], out["steer"] = lean.reshape(shape), steer.reshape(shape)
-    return out
+    out["q"], out["u"] = q, u
+    return valid, out
