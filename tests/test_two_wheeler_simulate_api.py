@@ -107,8 +107,9 @@ def test_straight_running_grows_at_the_rate_of_the_benchmarks_eigenvalue(speed, 
 
 
 def test_a_turn_on_flat_ground_runs_round_its_circle():
+    # held to 1e-5 deg only where the integrator is asked for better than that (rtol 1e-6 wanders 3e-4 deg)
     series, summary = simulate_two_wheeler("benchmark-bicycle", **FLAT | dict(turn_radius=10.0, periods=0.25,
-                                                                             points_per_period=8))
+                                                                             points_per_period=8, rtol=1e-9))
     # the rear contact on a circle of 10 m at 5 m/s: a lap in 2 pi 10 / 5 s, a quarter of the heading's turn
     assert summary["period_s"][0] == pytest.approx(2 * np.pi * 10.0 / 5.0, rel=1e-9)
     assert series["heading_deg"][-1] - series["heading_deg"][0] == pytest.approx(90.0, abs=1e-3)
