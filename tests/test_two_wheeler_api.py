@@ -102,6 +102,10 @@ def test_a_bad_two_wheeler_is_refused_in_one_line(change, words):
     ({"machine": "benchmark-bicycle", "steer": "free", "theta": 90}, "give speed"),
     ({"machine": "benchmark-bicycle", "steer": "free", "theta": 90, "speed": 5, "mass": 80}, "does not take mass"),
     ({"machine": "benchmark-bicycle", "steer_torque": 0, "theta": 90, "speed": 5}, "not both"),
+    ({"machine": "benchmark-bicycle", "steer": "torque=0", "steer_torque": 1, "theta": 90}, "torque once"),
+    ({"machine": "benchmark-bicycle", "steer": "torque=", "theta": 90}, "steer must be one of"),
+    ({"machine": "benchmark-bicycle", "steer": "torque=abc", "theta": 90}, "steer_torque"),
+    ({"machine": "benchmark-bicycle", "steer": "torque=0", "flat": True, "speed": 5}, "is for the globe"),
     ({"machine": "benchmark-bicycle", "flat": "yes", "speed": 5}, "flat must be True or False"),
     ({"machine": "benchmark-bicycle", "steer": "free", "theta": "10:170:0.01", "speed": "1:20:0.1"},
      "at most 30000 lanes and speeds"),
@@ -130,6 +134,22 @@ def test_hands_free_turns_one_row_each_are_held_without_torque_at_their_speed():
         assert abs(rows["steer_torque_n_m"][match]) < 1e-8
         assert rows["steer_deg"][match] == pytest.approx(free["steer_deg"][i], abs=1e-8)
     assert all(len(_eigenvalues(free[i], 6)) == 6 for i in range(len(free)))
+
+
+def test_steer_torque_mode_is_the_held_torque():
+    """steer="torque=T" asks what steer_torque=T asks: the same rows, the
+    steer free under the held torque."""
+    by_mode = deathsphere.ride(machine="benchmark-bicycle", steer="Torque = 0:1:0.5", height=1.0, diameter="16ft",
+                               stability=False)
+    by_value = deathsphere.ride(machine="benchmark-bicycle", steer_torque="0:1:0.5", height=1.0, diameter="16ft",
+                                stability=False)
+    assert set(by_mode["steer"]) == {"free"} and len(by_mode) == len(by_value) >= 3
+    for name in by_value.columns:
+        a, b = np.asarray(by_mode[name]), np.asarray(by_value[name])
+        if a.dtype.kind == "f":
+            np.testing.assert_array_equal(a, b)
+        else:
+            assert list(a) == list(b), name
 
 
 def test_every_request_on_the_globe_gets_its_rows_in_order():

@@ -11,6 +11,7 @@ A two-wheeler is validated once, at construction: a bad one raises
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import asdict, dataclass, fields
 
 import numpy as np
@@ -334,13 +335,32 @@ def _one_limit(name: str, value) -> float:
     return float(axis.take(np.zeros(1, dtype=np.int64))[0])
 
 
+#: ``steer="torque=T"`` (or "torque T", "torque:T"): the turns held with
+#: the steer torque T, as ``steer_torque=T`` (docs/two-wheeler.md sec. 10).
+_TORQUE_MODE = re.compile(r"\s*torque\s*[=: ]\s*(\S.*?)\s*", re.IGNORECASE)
+
+
+def steer_request(steer, steer_torque) -> tuple:
+    """(steer, steer_torque) with ``steer="torque=T"`` read as the steer
+    free under the held torque T (``steer_torque=T``, values, a range or a
+    unit as it takes them); any other ``steer`` is passed on."""
+    m = _TORQUE_MODE.fullmatch(steer) if isinstance(steer, str) else None
+    if m is None:
+        return steer, steer_torque
+    if steer_torque is not None:
+        raise ParameterError("give the steer torque once: steer='torque=T' or steer_torque=T, not both",
+                             "steer_torque")
+    return "free", m.group(1)
+
+
 def _machine(machine, steer, g) -> tuple[TwoWheeler, str]:
     """The two-wheeler under the gravity asked for, and how its steer is held."""
     t = as_two_wheeler(machine)
     if steer is None:
         steer = "free"
     if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
-        raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} (got {steer!r})", "steer")
+        raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} or torque=T (N m) (got {steer!r})",
+                             "steer")
     if g is not G:
         from dataclasses import replace
 
@@ -382,6 +402,7 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     most MAX_TURN_REQUESTS lanes x speeds at once, or ``streamed`` (the
     lanes answered a chunk at a time) MAX_STREAMED_LANES lanes of at most
     MAX_TURN_REQUESTS speeds each."""
+    steer, steer_torque = steer_request(steer, steer_torque)
     t, steer = _machine(machine, steer, g)
     r = sphere_radius(r, diameter)
     r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
@@ -596,6 +617,7 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
     rider's table, a row per lane (:data:`TURN_SUMMARY_COLUMNS`).  At most
     MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
     <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
+    steer, steer_torque = steer_request(steer, steer_torque)
     if flat:
         t, steer = _machine(machine, steer, g)
         if theta is not None or height is not None or diameter is not None or r is not R:

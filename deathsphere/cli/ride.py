@@ -95,9 +95,10 @@ def _grid(where, how, mus):
 @click.option("--flat", is_flag=True, default=False,
               help="A two-wheeler (--machine benchmark-bicycle) on flat ground: the eigenvalues of upright "
                    "straight running at each --speed (the rear contact's); --summary: weave and capsize speeds.")
-@single("--steer", type=click.Choice(("free", "locked"), case_sensitive=False), default=None,
+@single("--steer", default=None, metavar="free|locked|torque=T",
         help="A two-wheeler's steady turns on the globe (docs/two-wheeler.md), their stability with the steer "
-             "free (its steady torque held) or locked; --speed is the rear contact's.")
+             "free (its steady torque held) or locked; --speed is the rear contact's.  torque=T: the turns held "
+             "with the steer torque T (N m; as --steer-torque T).")
 @param_option("steer_torque", multiple=True)
 @jobs_option()
 @scheduler_option()

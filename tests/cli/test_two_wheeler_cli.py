@@ -71,7 +71,7 @@ def test_hands_free_turns_on_the_globe(run):
     ((*BIKE, "--flat", "--speed", "5", "--theta", "90"), "flat ground has no lane"),
     ((*BIKE, "--flat", "--speed", "-1"), "Invalid value for '--speed'"),
     ((*BIKE, "--steer", "free", "--theta", "90"), "give speed"),
-    ((*BIKE, "--steer", "sideways", "--theta", "90", "--speed", "5"), "'sideways' is not one of"),
+    ((*BIKE, "--steer", "sideways", "--theta", "90", "--speed", "5"), "steer must be one of free | locked or torque=T"),
     ((*BIKE, "--flat", "--speed", "5", "--steer-torque", "1"), "steer_torque is for the globe"),
     ((*BIKE, "--steer-torque", "0", "--theta", "90", "--summary"), "give speed, not steer_torque"),
     ((*BIKE, "--steer", "free", "--theta", "90", "--speed", "5", "--summary", "--no-stability"),
