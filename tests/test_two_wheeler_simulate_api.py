@@ -135,8 +135,20 @@ def test_a_locked_steer_keeps_its_angle_and_the_energy():
     ({"branch": 1}, "straight running is one state"),
     ({"turn_radius": 10.0, "speed": 500.0}, "no steady turn at turn radius 10 m"),
     ({"duration": 1e5, "points_per_period": 100}, "at most 1000000 rows"),
+    # a lap of a 1e9 m circle: years of integration, refused before any
+    ({"turn_radius": 1e9}, "at most 5 km of the rear wheel's travel"),
+    ({"duration": 1001.0, "points_per_period": 2}, "5 m/s for 1001 s is 5.005 km"),
 ])
 def test_bad_flat_requests_are_refused_in_one_line(kwargs, words):
     with pytest.raises(ParameterError, match=words) as info:
         simulate_two_wheeler("benchmark-bicycle", **FLAT | kwargs)
     assert "\n" not in str(info.value)
+
+
+def test_progress_is_told_the_share_of_the_run_done_in_order():
+    told = []
+    simulate_two_wheeler("benchmark-bicycle", **FLAT | dict(duration=3.0, perturb=0.5, rtol=1e-10),
+                         progress=lambda done, total: told.append((done, total)))
+    assert len(told) >= 3 and {total for _, total in told} == {100}
+    done = [d for d, _ in told]
+    assert done == sorted(done) and 0 <= done[0] and done[-1] <= 100 and done[-1] > done[0]

@@ -657,9 +657,18 @@ SIMULATE_SUMMARY_COLUMNS = (
     "rtol", "surface", "turn_radius_m", "steer", "perturb_lean_rate_deg_s", "perturb_steer_rate_deg_s")
 #: Rows per period of the turn, and periods, one call integrates at most.
 MAX_SIMULATE_ROWS = 1_000_000
+#: The rear wheel's travel one run integrates at most [m]: some 0.1 s of
+#: work per metre on the globe (docs/two-wheeler.md sec. 10.1), so this is
+#: minutes, some 300 laps of a 16-ft globe.
+MAX_TRAVEL_M = 5_000.0
 #: How long a run from straight running on flat ground lasts unless told (s):
 #: the benchmark's weave (period 1.4 s at 5 m/s) goes round three times.
 STRAIGHT_DURATION = 5.0
+
+
+def _percent(progress):
+    """``progress(done, total)`` told in per cent of the run's time."""
+    return lambda t, t_end: progress(int(100 * t / t_end), 100)
 
 
 def _gains(steer_gains) -> tuple[float, float]:
@@ -680,7 +689,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                          branch=0, perturb=0.0, periods=None, points_per_period=100, steer_gains=None,
                          hands_free=False, steer="free", method="DOP853", rtol=1e-10,
                          atol=None, flat=False, turn_radius=None, duration=None, perturb_lean_rate=0.0,
-                         perturb_steer_rate=0.0, view=False) -> tuple:
+                         perturb_steer_rate=0.0, view=False, progress=None) -> tuple:
     """Integrate a two-wheeler's nonlinear equations on the globe or on flat
     ground: ``deathsphere simulate --machine benchmark-bicycle --steer free``
     or ``--flat`` (beyond the paper; docs/two-wheeler.md sec. 10.1).
@@ -703,6 +712,10 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     The run stops with status ``contact_lost`` when a wheel's normal force
     reaches zero, ``slips`` when the friction needed exceeds ``mu`` at
     either wheel.
+
+    A run is at most :data:`MAX_TRAVEL_M` of the rear wheel's travel;
+    ``progress(done, total)``, if given, is told the per cent of the run's
+    time integrated now and then.
 
     Returns (series, summary): the time series (:data:`SIMULATE_COLUMNS`;
     ``energy_drift`` is the energy's change over the initial kinetic
@@ -774,6 +787,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     method = METHODS[lower.index(checked_choice("method", method, lower))]
     rtol, atol = checked_scalar("rtol", rtol), checked_optional("atol", atol)
     mu = checked_scalar("mu", mu)
+    length_option = "duration" if duration is not None or straight else "periods"
     if straight and duration is None:
         duration = STRAIGHT_DURATION
     # rows per period of the turn; straight running has none: per second.  Checked
@@ -788,13 +802,19 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     length = duration / (1.0 if straight else period)
     _rows(length, points_per_period, "seconds" if straight else "periods",
           "periods" if periods is not None else "duration")
+    if speed * duration > MAX_TRAVEL_M:
+        raise ParameterError(f"a run is at most {MAX_TRAVEL_M / 1000:g} km of the rear wheel's travel (speed x "
+                             f"duration; some 0.1 s of work per m): {speed:g} m/s for {duration:.6g} s is "
+                             f"{speed * duration / 1000:.6g} km: ask for fewer periods or a shorter duration",
+                             length_option)
     n_points = max(int(round(length * points_per_period)) + 1, 2)
     series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], duration, surface="flat" if flat else "sphere",
                                 r=None if flat else r, torque0=torque0, k_lean=k_lean, k_rate=k_rate,
                                 hands_free=hands_free, kick=math.radians(perturb), mu=mu, n_points=n_points,
                                 method=method, rtol=rtol, atol=atol, steer_locked=locked,
                                 kick_lean_rate=math.radians(perturb_lean_rate),
-                                kick_steer_rate=math.radians(perturb_steer_rate))
+                                kick_steer_rate=math.radians(perturb_steer_rate),
+                                progress=None if progress is None else _percent(progress))
     deg = np.degrees
     cols = {"t_s": series["t"], "lean_surface_deg": deg(series["lean"]), "steer_deg": deg(series["steer"]),
             "heading_deg": deg(series["heading"]), "theta_rear_deg": deg(series["theta_rear"]),

@@ -285,9 +285,10 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
 
     table_file = output is not None and view_format(output) in TABLE_OUTPUTS
     view = output is not None and not table_file and _preflight_output(output)
-    series, summary, *frames = simulate_two_wheeler(
-        "benchmark-bicycle" if machine is None else machine, steer="free" if steer is None else steer,
-        steer_gains=steer_gains, hands_free=hands_free, view=view, **options)
+    with progress("simulate", 100) as bar:
+        series, summary, *frames = simulate_two_wheeler(
+            "benchmark-bicycle" if machine is None else machine, steer="free" if steer is None else steer,
+            steer_gains=steer_gains, hands_free=hands_free, view=view, progress=bar.update, **options)
     start = "upright straight running" if np.isnan(summary["period_s"][0]) else "its steady turn"
     title = f"{summary['machine'][0]}: simulated from {start} (docs/two-wheeler.md sec. 10.1)"
     fmt = choose_format(fmt)

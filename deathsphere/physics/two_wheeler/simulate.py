@@ -38,6 +38,8 @@ __all__ = ["STATUSES", "rider_torque", "lock_torque", "contact_forces", "simulat
 STATUSES = ("completed", "contact_lost", "slips", "failed")
 #: The time step of the mass centre's acceleration by central differences (s).
 _H = 1e-4
+#: Right-hand sides evaluated between two reports to ``progress`` (some 5 ms of work).
+_PROGRESS_EVERY = 100
 
 
 def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0):
@@ -104,7 +106,7 @@ def _residual(q, p, surface):
 def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat", r=None, torque0=0.0,
              lean0=None, k_lean=0.0, k_rate=0.0, hands_free=False, kick=0.0, mu=np.inf, n_points=200,
              method="DOP853", rtol=1e-10, atol=None, steer_locked=False, kick_lean_rate=0.0,
-             kick_steer_rate=0.0):
+             kick_steer_rate=0.0, progress=None):
     """Integrate from (q0, u_ind0) (a steady turn's q and its independent
     speeds (lean rate, rear wheel rate, steer rate)) with the lean kicked by
     ``kick`` (rad), the lean and steer rates by ``kick_lean_rate`` and
@@ -115,7 +117,9 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     given dropped; the torque :func:`lock_torque`), for ``t_end`` s; events
     stop the run: a normal force reaching zero (``contact_lost``) or the
     friction exceeding ``mu`` times the normal at either wheel (``slips``)
-    (beyond the paper; docs/two-wheeler.md sec. 10.1).  Returns (series
+    (beyond the paper; docs/two-wheeler.md sec. 10.1).  ``progress``, if
+    given, is told (t, t_end) now and then as the integrator advances (a run
+    of a few periods takes seconds).  Returns (series
     dict of (n,) arrays and the coordinates ``q`` (8, n), summary dict)."""
     from scipy.integrate import solve_ivp
 
@@ -136,7 +140,12 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
             return lock_torque(y[:8], y[8:], values, surface)[0]
         return rider_torque(y[motion.LEAN], y[8], *gains)
 
+    calls = [0]
+
     def rates(t, y):
+        calls[0] += 1
+        if progress is not None and calls[0] % _PROGRESS_EVERY == 0:
+            progress(min(t, t_end), t_end)
         q, u_ind = y[:8], y[8:]
         if steer_locked:
             _, a, u = lock_torque(q, u_ind, values, surface)
