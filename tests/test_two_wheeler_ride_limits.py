@@ -176,3 +176,30 @@ def test_a_grid_too_large_to_hold_says_how_to_stream_it():
 def test_flat_ground_refuses_the_globes_limits():
     with pytest.raises(deathsphere.ParameterError, match="mu and max_g are for the globe"):
         deathsphere.ride(machine="benchmark-bicycle", flat=True, speed=5, max_g=3)
+
+
+def test_a_head_that_reaches_the_globe_is_no_fit_and_counted():
+    """A rider 2.6 m tall (head point) on a 16-foot globe: exactly the turns
+    whose head clearance is not positive are ``no_fit`` (ride's status for
+    a head that hits, before a wheel that lifts), the rest as without it,
+    and the rider's table counts those speeds as ``head_hits``."""
+    from dataclasses import replace
+
+    from deathsphere.api.two_wheelers import HEAD_HITS_REASON, TWO_WHEELERS
+
+    tall = replace(TWO_WHEELERS["benchmark-bicycle"], head=(0.3, -2.6), name="tall")
+    ask = dict(machine=tall, steer="free", diameter="16ft", height=[2.0, 3.0], speed=[4.0, 6.0, 8.0])
+    table = deathsphere.ride(**ask, stability=False)
+    turned = np.isfinite(table["lean_deg"])
+    hits = turned & ~(table["head_clearance_m"] > 0)
+    assert hits.sum() >= 1 and (turned & ~hits).sum() >= 3
+    assert list(table["status"][hits]) == ["no_fit"] * int(hits.sum())
+    assert set(table["reason"][hits]) == {HEAD_HITS_REASON}
+    assert "no_fit" not in set(table["status"][~hits])
+    summary = deathsphere.ride(**ask, summary=True)
+    for i, height in enumerate(ask["height"]):
+        lane = table["height_m"] == height
+        ok_speeds = set(table["v_rear_m_s"][lane & (table["status"] == "ok")])
+        hit_speeds = set(table["v_rear_m_s"][lane & hits]) - ok_speeds
+        assert summary["head_hits"][i] == len(hit_speeds)
+        assert summary["speeds_ok"][i] == len(ok_speeds)

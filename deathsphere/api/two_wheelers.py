@@ -282,17 +282,19 @@ def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
 TURN_LIMIT_COLUMNS = ("mu_available", "max_g")
 #: The columns of ``ride --steer --summary``, the rider's table on the globe:
 #: those of ride's rider's table that keep their meaning (the speeds are the
-#: rear contact's, m/s; no ``head_hits``: a two-wheeler's head is reported,
-#: not decided), then the two-wheeler's own (docs/two-wheeler.md sec. 10).
+#: rear contact's, m/s), then the two-wheeler's own (docs/two-wheeler.md
+#: sec. 10).
 TURN_SUMMARY_COLUMNS = (
     "height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_rear_min_m_s", "v_rear_max_m_s", "lean_min_deg",
     "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m", "limits", "mu_available",
-    "max_g", "slips", "over_g", "no_contact", "no_orbit", "steer", "speeds_stable", "stable_v_min_m_s",
+    "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit", "steer", "speeds_stable", "stable_v_min_m_s",
     "stable_v_max_m_s", "steer_torque_min_n_m", "steer_torque_max_n_m", "hands_free_turns", "hands_free_stable",
     "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s",
 )
-#: Why the speeds that fail fail, counted per lane in the rider's table (statuses).
-TURN_FAILURES = ("slips", "over_g", "no_contact", "no_orbit")
+#: Why the speeds that fail fail, counted per lane in the rider's table: the
+#: column and the status it counts (the head's is ride's no_fit).
+TURN_FAILURES = {"slips": "slips", "over_g": "over_g", "head_hits": "no_fit", "no_contact": "no_contact",
+                 "no_orbit": "no_orbit"}
 #: Lanes one streamed ride takes (each lane's speeds are evaluated together,
 #: at most MAX_TURN_REQUESTS of them).
 MAX_STREAMED_LANES = 1_000_000
@@ -300,6 +302,8 @@ MAX_STREAMED_LANES = 1_000_000
 #: least one): a lane costs its lean curve (sec. 8.2) once, some 0.3 s, and
 #: each speed a few ms more, so a chunk is a second or two of work.
 TURN_CHUNK = 8
+#: Why a turn's status is no_fit: the rider's head, as ride's machine's.
+HEAD_HITS_REASON = "the rider's head reaches the globe on this turn (head_clearance_m <= 0)"
 #: Why a turn slips: which wheel needs more friction than given.
 SLIP_REASONS = {
     "rear": "the rear wheel needs more friction than mu_available (mu_required_rear exceeds it)",
@@ -435,7 +439,7 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
 
 def _over_limits(ok, mu_rear, mu_front, load, mu: float, max_g: float):
     """Which turns that are otherwise ok slip at the rear, at the front, or
-    carry more than max_g: ride's statuses in ride's order (no_orbit,
+    carry more than max_g: ride's statuses in ride's order (no_fit, no_orbit,
     no_contact, then slips, then over_g; docs/contract.md)."""
     rear, front = ok & (mu_rear > mu), ok & (mu_front > mu)
     return rear, front, ok & ~(rear | front) & (load > max_g)
@@ -476,9 +480,12 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     th = lanes[req]
     alpha = np.degrees(th) - 90.0 - np.degrees(lean)
     contact = pick("contact") == 1
-    status = np.where(~has, "no_orbit", np.where(contact, "ok", "no_contact")).astype(object)
-    reason = np.where(has, np.where(contact, "", "a wheel would lift: its normal force does not push"),
-                      np.asarray(out["reason"], dtype=object)[req]).astype(object)
+    # ride's order: the head that reaches the globe (no_fit) before a wheel that lifts
+    hits = has & ~(pick("head_clearance") > 0)
+    status = np.where(~has, "no_orbit", np.where(hits, "no_fit", np.where(contact, "ok", "no_contact"))).astype(object)
+    reason = np.where(has, np.where(hits, HEAD_HITS_REASON, np.where(
+        contact, "", "a wheel would lift: its normal force does not push")),
+        np.asarray(out["reason"], dtype=object)[req]).astype(object)
     omega = pick("omega")
     with np.errstate(divide="ignore"):
         period = np.where(has, 2 * np.pi / np.abs(np.where(omega == 0, np.nan, omega)), np.nan)
@@ -534,7 +541,7 @@ def _hands_free(request: TurnRequest, lanes) -> dict:
     t = request.machine
     out = tw_stability.turns_with_stability(lanes, t.parameters(), torque=np.zeros(lanes.size), surface="sphere",
                                             r=request.r, head=t.head)
-    ok = np.isfinite(out["lean"]) & (out["contact"] == 1)
+    ok = np.isfinite(out["lean"]) & (out["contact"] == 1) & (out["head_clearance"] > 0)
     rear, front, over = _over_limits(ok, out["mu_required_rear"], out["mu_required_front"], out["load_g"],
                                      request.mu, request.max_g)
     ok &= ~(rear | front | over)
@@ -586,8 +593,8 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
         rows["mu_available"].append(math.nan if math.isinf(request.mu) else request.mu)
         rows["max_g"].append(math.nan if math.isinf(request.max_g) else request.max_g)
         failing = ~np.isin(on, on[fine])
-        for col in TURN_FAILURES:
-            rows[col].append(int(np.unique(on[(status[sel] == col) & failing]).size))
+        for col, name in TURN_FAILURES.items():
+            rows[col].append(int(np.unique(on[(status[sel] == name) & failing]).size))
         rows["steer"].append(request.steer)
         rows["speeds_stable"].append(int(np.unique(on[calm]).size))
         rows["stable_v_min_m_s"].append(span("v_rear_m_s", np.min, calm))
