@@ -203,3 +203,32 @@ def test_a_head_that_reaches_the_globe_is_no_fit_and_counted():
         hit_speeds = set(table["v_rear_m_s"][lane & hits]) - ok_speeds
         assert summary["head_hits"][i] == len(hit_speeds)
         assert summary["speeds_ok"][i] == len(ok_speeds)
+
+
+def test_only_keeps_the_full_tables_rows_of_those_statuses_in_order(plain):
+    """only= filters as ride's does: the rows of the whole table whose
+    status is one asked for, in their order, also when streamed."""
+    mu = float(np.nanmedian(np.fmax(plain["mu_required_rear"], plain["mu_required_front"])))
+    full = deathsphere.ride(**ASK, mu=mu, stability=False)
+    kept = deathsphere.ride(**ASK, mu=mu, stability=False, only=["slips", "no_orbit"])
+    want = np.isin(full["status"], ["slips", "no_orbit"])
+    assert 0 < want.sum() < len(full)
+    for name in ("input_row", "status", "lean_deg", "v_rear_m_s"):
+        np.testing.assert_array_equal(np.asarray(kept[name]), np.asarray(full[name])[want])
+    streamed = two_wheeler_ride_sweep(**ASK, mu=mu, stability=False, only="slips", chunk_size=1)
+    rows = np.concatenate([t["input_row"] for t in streamed])
+    np.testing.assert_array_equal(rows, np.asarray(full["input_row"])[np.asarray(full["status"]) == "slips"])
+
+
+@pytest.mark.parametrize("extra, words", [
+    ({"only": "ok", "summary": True}, "give only or summary, not both"),
+    ({"only": "sideways"}, "only must be one of"),
+])
+def test_only_is_refused_where_it_means_nothing(extra, words):
+    with pytest.raises(deathsphere.ParameterError, match=words):
+        deathsphere.ride(**ASK | extra)
+
+
+def test_only_on_flat_ground_is_refused():
+    with pytest.raises(deathsphere.ParameterError, match="only is for the globe"):
+        deathsphere.ride(machine="benchmark-bicycle", flat=True, speed=5, only="ok")

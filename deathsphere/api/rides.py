@@ -308,7 +308,7 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
 
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
-SINGLE_CONTACT_ONLY = ("alpha", "v_top", "only", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
+SINGLE_CONTACT_ONLY = ("alpha", "v_top", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
                        "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
 
 
@@ -328,7 +328,7 @@ def _two_wheeler(machine, given: dict) -> Table:
     refuse_single_contact(given)
     return two_wheeler_ride(machine, **{k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
                                                                "steer", "r", "diameter", "g", "mu", "max_g",
-                                                               "summary", "stability")})
+                                                               "summary", "stability", "only")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).

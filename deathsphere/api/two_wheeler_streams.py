@@ -16,7 +16,7 @@ from deathsphere.table import Table
 
 
 def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
-                           diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True,
+                           diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True, only=None,
                            chunk_size: int = TURN_CHUNK, jobs: int = 1, scheduler=None, **single_contact) -> Chunks:
     """Every steady turn of a two-wheeler at each lane and rear speed (or
     steer torque), or with ``summary`` its rider's table, lane after lane:
@@ -26,7 +26,7 @@ def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, stee
     The arguments are those of :func:`deathsphere.ride` for a two-wheeler;
     ``chunk_size`` the lanes x speeds per chunk (whole lanes, at least one),
     ``jobs`` and ``scheduler`` as for :func:`~deathsphere.api.sweep`.  What
-    only the single-contact machine takes (``alpha``, ``only``,
+    only the single-contact machine takes (``alpha``,
     ``vertical``, the machine's overrides ...) is refused by name.
 
     Returns
@@ -58,7 +58,7 @@ def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, stee
     refuse_single_contact(single_contact)
     request = turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque, steer=steer,
                            r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary, stability=stability,
-                           streamed=True)
+                           only=only, streamed=True)
     chunk_size = int(checked_scalar("chunk_size", chunk_size))
     jobs = int(checked_scalar("jobs", jobs))
     per_chunk = max(1, chunk_size // request.values.size)

@@ -16,7 +16,8 @@ from dataclasses import asdict, dataclass, fields
 
 import numpy as np
 
-from deathsphere.api.arguments import INF, G, R, checked_array, checked_axis, checked_flag, sphere_radius
+from deathsphere.api.arguments import (INF, G, R, checked_array, checked_axis, checked_flag, checked_statuses,
+                                       sphere_radius)
 from deathsphere.api.machines import PRESETS, echoable_text
 from deathsphere.params import ParameterError
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
@@ -391,6 +392,7 @@ class TurnRequest:
     mu: float
     max_g: float
     summary: bool
+    only: tuple | None = None
 
     @property
     def total(self) -> int:
@@ -399,7 +401,7 @@ class TurnRequest:
 
 
 def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
-                 diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True,
+                 diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True, only=None,
                  streamed=False) -> TurnRequest:
     """``ride --steer``'s request checked, every value, before any work: a
     bad one raises :class:`~deathsphere.ParameterError` in one line.  At
@@ -432,9 +434,14 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     if summary and not stability:
         raise ParameterError("the rider's table (summary) gives the stable speeds: it needs the stability "
                              "analysis, which stability=False skips", "stability")
+    keep = checked_statuses(only)
+    if summary and keep is not None:
+        raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
+                             "only")
     return TurnRequest(machine=t, lanes=lane, lanes_given=lane_given, by_theta=by_theta, values=value,
                        by_torque=by_torque, r=r, steer=steer, stability=stability, mu=_one_limit("mu", mu),
-                       max_g=_one_limit("max_g", max_g), summary=summary)
+                       max_g=_one_limit("max_g", max_g), summary=summary,
+                       only=None if keep is None else tuple(keep))
 
 
 def _over_limits(ok, mu_rear, mu_front, load, mu: float, max_g: float):
@@ -529,7 +536,9 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     limits = {c: np.full(n, np.nan if math.isinf(v) else v) for c, v in zip(TURN_LIMIT_COLUMNS,
                                                                           (request.mu, request.max_g))}
     table = Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k) | limits)
-    return _turn_summary(request, table, first, stop) if request.summary else table
+    if request.summary:
+        return _turn_summary(request, table, first, stop)
+    return table if request.only is None else table[np.isin(table["status"], request.only)]
 
 
 def _hands_free(request: TurnRequest, lanes) -> dict:
@@ -611,7 +620,7 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
 
 
 def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torque=None, flat=False, steer=None,
-                     r=R, diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True) -> Table:
+                     r=R, diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True, only=None) -> Table:
     """``ride`` for a two-wheeler (:func:`deathsphere.ride` with ``flat``,
     ``steer`` or ``steer_torque``; docs/two-wheeler.md sec. 10): on flat
     ground the eigenvalues of upright straight running at each rear contact
@@ -621,7 +630,8 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
     torque held constant; default) or ``locked``; a turn needing more
     friction than ``mu`` at either wheel has status ``slips``, one loading
     the rider more than ``max_g`` (load_g) ``over_g``; ``summary`` gives the
-    rider's table, a row per lane (:data:`TURN_SUMMARY_COLUMNS`).  At most
+    rider's table, a row per lane (:data:`TURN_SUMMARY_COLUMNS`); ``only``
+    keeps the turns of those statuses (ride's ``only``).  At most
     MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
     <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
     steer, steer_torque = steer_request(steer, steer_torque)
@@ -636,10 +646,13 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
         if mu is not INF or max_g is not INF:
             raise ParameterError("upright straight running on flat ground needs no friction and loads the rider "
                                  "1 g: mu and max_g are for the globe", "mu" if mu is not INF else "max_g")
+        if only is not None:
+            raise ParameterError("upright straight running on flat ground has no status to keep: only is for the "
+                                 "globe", "only")
         return _straight(t, speed, steer, summary)
     return turn_rows(turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque,
                                   steer=steer, r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary,
-                                  stability=stability))
+                                  stability=stability, only=only))
 
 
 def _one_g(g):
