@@ -2,6 +2,7 @@
 text, an output or a docstring of the package cites is a shipped topic that
 ``deathsphere docs`` shows, and a wheel carries the files."""
 
+import importlib
 import importlib.util
 import re
 import subprocess
@@ -73,3 +74,30 @@ def test_the_build_carries_the_docs(tmp_path):
                    timeout=120)
     shipped = {p.name for p in (tmp_path / "deathsphere" / "docs").iterdir()}
     assert shipped == {p.name for p in DOCS.iterdir() if p.suffix in {".md", ".png"}}
+
+
+#: What a physics docstring cites: the paper's equation numbers (eq. 29,
+#: eqs. 56, (208), the machine's M9), the benchmark's, or work beyond the
+#: paper ("beyond the paper", or the docs/ page that derives it).
+CITES = re.compile(r"beyond\s+the\s+paper|\beqs?\.\s*\(?[A-Z]?\d|\(\d+[a-z]?\)|\bM\d+|Meijaard|docs/[a-z0-9_-]+\.md",
+                   re.IGNORECASE)
+
+
+def test_every_public_physics_function_cites_its_equations():
+    """The physics core's public functions (each module's ``__all__``) say
+    which equations they implement, or that they go beyond the paper."""
+    import inspect
+    import pkgutil
+
+    import deathsphere.physics as physics
+
+    uncited, seen = [], 0
+    for info in pkgutil.walk_packages(physics.__path__, "deathsphere.physics."):
+        module = importlib.import_module(info.name)
+        for name in getattr(module, "__all__", ()):
+            obj = getattr(module, name, None)
+            if inspect.isfunction(obj) and obj.__module__ == module.__name__:
+                seen += 1
+                if not CITES.search(obj.__doc__ or ""):
+                    uncited.append(f"{info.name}.{name}")
+    assert seen >= 100 and not uncited, uncited

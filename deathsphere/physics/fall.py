@@ -486,7 +486,10 @@ def loop_state(psi, psi_dot, r_g, azimuth):
 def drop_velocity(v, speed_fraction):
     """The velocity (3, n) just after the drop: ``speed_fraction`` (n,) times
     the velocity ``v`` (3, n) before, along the direction of travel (the
-    position is unchanged; stage 1 of the model above)."""
+    position is unchanged; stage 1 of the model above).
+
+    Beyond the paper: the fall model of docs/show.md sec. 6.
+    """
     return np.asarray(v, dtype=float) * np.asarray(speed_fraction, dtype=float)
 
 

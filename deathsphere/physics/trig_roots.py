@@ -132,7 +132,10 @@ class TrigPoly2:
 
 def unit_powers(x, n):
     """exp(i j x) for j = -n .. n, shape (x.size, 2n + 1), by repeated
-    multiplication (cheaper than exp of the outer product)."""
+    multiplication (cheaper than exp of the outer product).
+
+    Beyond the paper: the root finder of docs/limits.md sec. 2.
+    """
     z = np.exp(1j * x)
     out = np.empty((x.size, 2 * n + 1), dtype=complex)
     out[:, n] = 1.0
@@ -148,7 +151,10 @@ def unit_powers(x, n):
 
 def evaluate_rows(h, x):
     """Real trigonometric polynomial with coefficient rows h (n, 2N+1) at
-    x (n, m): sum_j h_j exp(i (j - N) x), taken real."""
+    x (n, m): sum_j h_j exp(i (j - N) x), taken real.
+
+    Beyond the paper: the root finder of docs/limits.md sec. 2.
+    """
     n2 = h.shape[1]
     N = (n2 - 1) // 2
     out = np.broadcast_to(h[:, N:N + 1].real, x.shape).copy()
@@ -209,7 +215,10 @@ def _refine(h, left, right, fl, fr):
 def roots_in(h, lo, hi):
     """All zeros of odd multiplicity of the real trigonometric polynomials
     with coefficient rows h (n, 2N+1) in the windows [lo, hi] (arrays (n,),
-    hi - lo <= 2 pi).  Returns (n, m) sorted, NaN-padded."""
+    hi - lo <= 2 pi).  Returns (n, m) sorted, NaN-padded.
+
+    Beyond the paper: the root finder of docs/limits.md sec. 2.
+    """
     h = np.asarray(h, dtype=complex)
     n = h.shape[0]
     lo = np.broadcast_to(np.asarray(lo, dtype=float), (n,))
@@ -254,7 +263,10 @@ def roots_in(h, lo, hi):
 
 
 def sorted_union(arrays, n):
-    """Concatenate NaN-padded (n, m_i) arrays and sort each row (NaN last)."""
+    """Concatenate NaN-padded (n, m_i) arrays and sort each row (NaN last).
+
+    Beyond the paper: the root finder of docs/limits.md sec. 2.
+    """
     arrays = [np.asarray(x, dtype=float).reshape(n, -1) for x in arrays]
     if not arrays:
         return np.full((n, 0), np.nan)

@@ -89,7 +89,10 @@ def _wheel_linearisation(theta, alpha, a, r, k, g, outside, want_basis=True):
 
 def stability_result(shape, ev, growth, slow, fast, verdict, scale, omega):
     """The per-orbit dict of :func:`wheel_stability` / :func:`sphere_stability`
-    from flat arrays (n,) and eigenvalues (n, m), reshaped to ``shape``."""
+    from flat arrays (n,) and eigenvalues (n, m), reshaped to ``shape``.
+
+    Beyond the paper: bookkeeping of the stability analysis (docs/stability.md sec. 1).
+    """
     return {
         "growth_rate": growth.reshape(shape),
         "freq_slow": slow.reshape(shape),
@@ -145,7 +148,10 @@ def wheel_stability(theta, alpha, a, r, k, g, outside=False):
 
 def empty_result(shape, m):
     """The dict of :func:`stability_result` for no orbit: NaN, UNKNOWN, m
-    eigenvalues each."""
+    eigenvalues each.
+
+    Beyond the paper: bookkeeping of the stability analysis (docs/stability.md sec. 1).
+    """
     nan = np.full(shape, np.nan)
     return {"growth_rate": nan, "freq_slow": nan, "freq_fast": nan,
             "verdict": np.full(shape, Verdict.UNKNOWN, dtype=np.int8),

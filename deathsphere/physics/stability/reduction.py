@@ -25,7 +25,10 @@ COMPLEX_STEP = 1e-30
 
 def complex_step(fun, x0, dx, h=COMPLEX_STEP):
     """Directional derivative of ``fun`` at x0 along dx by complex step
-    (exact to round-off for analytic ``fun``)."""
+    (exact to round-off for analytic ``fun``).
+
+    Beyond the paper: the reduction of docs/stability.md sec. 1.
+    """
     return np.imag(fun(x0 + 1j * h * dx)) / h
 
 
@@ -34,7 +37,10 @@ def spectrum(K, scale):
     frequencies (slow, fast: |imaginary parts|, pairs averaged; slow is NaN
     for m = 2) and verdict of stacked reduced Jacobians K (n, m, m), m = 2 or
     4, with rate scales ``scale`` (n,).  Returns (ev, growth, slow, fast,
-    verdict)."""
+    verdict).
+
+    Beyond the paper: the reduction of docs/stability.md sec. 1.
+    """
     finite = np.all(np.isfinite(K), axis=(-2, -1)) & np.isfinite(scale)
     ev = np.linalg.eigvals(np.where(finite[:, None, None], K, 0.0))   # (n, m)
     ev = np.where(finite[:, None], ev, np.nan)
@@ -54,7 +60,10 @@ def characteristic_invariants(K):
     """e2, e4 of the characteristic polynomial lambda^4 + e2 lambda^2 + e4 of
     stacked 4x4 matrices K (n, 4, 4) of a reversible flow (odd coefficients
     vanish): e2 = (tr(K)^2 - tr(K^2))/2, the sum of the principal 2x2 minors,
-    and e4 = det K."""
+    and e4 = det K.
+
+    Beyond the paper: the reduction of docs/stability.md sec. 1.
+    """
     tr = np.trace(K, axis1=-2, axis2=-1)
     # contract, not einsum: einsum's order of summation in a full contraction
     # changes with the number of orbits, and with it an orbit's last bits
@@ -94,7 +103,10 @@ def spectrum_from_invariants(K, scale):
 
 def orthonormal_complement(A, dim):
     """Orthonormal basis (n, dim, dim - A.shape[-1]) of the complement of the
-    column span of the stacked (n, dim, q) matrices A (assumed full rank)."""
+    column span of the stacked (n, dim, q) matrices A (assumed full rank).
+
+    Beyond the paper: the reduction of docs/stability.md sec. 1.
+    """
     q = A.shape[-1]
     Q, _ = np.linalg.qr(A, mode="complete")
     return Q[..., q:]

@@ -46,7 +46,10 @@ UNSTABLE_TOL = 1e-5
 def verdict_from_growth(growth, scale):
     """Verdict codes (int8 :class:`Verdict`) from growth rates [1/s] and rate
     scales [1/s]: stable where growth/scale <= STABLE_TOL, unstable where
-    >= UNSTABLE_TOL, unknown between and where either is NaN."""
+    >= UNSTABLE_TOL, unknown between and where either is NaN.
+
+    Beyond the paper: the verdict's tolerances, docs/stability.md sec. 1.
+    """
     with np.errstate(invalid="ignore", divide="ignore"):
         rel = growth / scale
     verdict = np.full(growth.shape, Verdict.UNKNOWN, dtype=np.int8)

@@ -87,7 +87,10 @@ def _state_matrix(m: BenchmarkMatrices, speed):
 
 def eigenvalues(m: BenchmarkMatrices, speed) -> np.ndarray:
     """The four eigenvalues at each speed (Meijaard et al. 2007,
-    Table 2), sorted by real part then imaginary part: (..., 4) complex."""
+    Table 2), sorted by real part then imaginary part: (..., 4) complex.
+
+    Beyond the paper: docs/two-wheeler.md sec. 7.
+    """
     values = np.linalg.eigvals(_state_matrix(m, speed))
     order = np.lexsort((values.imag, values.real), axis=-1)
     return np.take_along_axis(values, order, axis=-1)
@@ -124,12 +127,18 @@ def _root(function, low, high, samples=200):
 def weave_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
     """The speed where the weave pair crosses into the left half plane
     (Meijaard et al. 2007: 4.29238253634111 m/s for Table 1), by
-    Brent's method on the Hurwitz determinant; nan if none in [low, high]."""
+    Brent's method on the Hurwitz determinant; nan if none in [low, high].
+
+    Beyond the paper: docs/two-wheeler.md sec. 7.
+    """
     return _root(lambda v: _hurwitz(m, v), low, high)
 
 
 def capsize_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
     """The speed where the capsize eigenvalue crosses zero (Meijaard et al.
     2007: 6.02426201538837 m/s for Table 1): the root of
-    det(g K0 + v^2 K2) by Brent's method; nan if none in [low, high]."""
+    det(g K0 + v^2 K2) by Brent's method; nan if none in [low, high].
+
+    Beyond the paper: docs/two-wheeler.md sec. 7.
+    """
     return _root(lambda v: np.linalg.det(m.g * m.K0 + v**2 * m.K2), low, high)
