@@ -59,7 +59,6 @@ def test_too_little_friction_slips_at_once():
     ({"duration": 1.0}, "periods or duration, not both"),
     ({"perturb_lean_rate": 2000.0}, "-1000..1000 deg/s"),
     ({"view": "yes"}, "view must be True or False"),
-    ({"flat": True, "speed": 5.0, "view": True}, "3-D view draws the globe"),
     ({"hands_free": True, "steer_gains": (1, 2)}, "not both"),
     ({"steer_gains": (1, math.inf)}, "two finite numbers"),
     ({"speed": None}, "give speed"),

@@ -740,8 +740,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     Returns (series, summary): the time series (:data:`SIMULATE_COLUMNS`;
     ``energy_drift`` is the energy's change over the initial kinetic
     energy, conserved hands-free and with the steer locked) and one summary
-    row (:data:`SIMULATE_SUMMARY_COLUMNS`).  With ``view`` (on the globe), a
-    third item: what the 3-D view draws at every row of the series, ``t``
+    row (:data:`SIMULATE_SUMMARY_COLUMNS`).  With ``view``, a third item: what the 3-D view draws at every row of the series, ``t``
     [s] and the points of
     :func:`deathsphere.physics.two_wheeler.geometry.outline` [m] (the rims,
     frames and head, in the core's axes: origin the sphere's centre, z
@@ -765,9 +764,6 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     if g is not G:
         t = replace(t, g=checked_scalar("g", g))
     view = checked_flag("view", view)
-    if view and flat:
-        raise ParameterError("the 3-D view draws the globe: a run on flat ground writes tables and figures "
-                             "(not view)", "view")
     if hands_free and steer_gains is not None:
         raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
     k_lean, k_rate = (0.0, 0.0) if steer_gains is None else _gains(steer_gains)
@@ -866,7 +862,8 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
         return tables
     from deathsphere.physics.two_wheeler.geometry import outline
 
-    return (*tables, {"t": series["t"], **outline(series["q"], p, r, "sphere", t.head)})
+    return (*tables, {"t": series["t"], **outline(series["q"], p, None if flat else r, "flat" if flat else "sphere",
+                                                  t.head)})
 
 
 def _lane(theta, height, r) -> tuple[float, float]:

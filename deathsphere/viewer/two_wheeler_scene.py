@@ -1,7 +1,8 @@
 """A two-wheeler's run in 3-D (``deathsphere simulate --machine
 benchmark-bicycle --steer free --output run.html|.gif|.mp4``;
-docs/two-wheeler.md sec. 10.1): the globe, both wheels' rims, the rear and
-front frames, the rider's head and the contact points' paths.
+docs/two-wheeler.md sec. 10.1): the globe (or, on flat ground, the
+ground), both wheels' rims, the rear and front frames, the rider's head and
+the contact points' paths.
 
 Nothing here is physics: every point is the simulation's
 (:func:`deathsphere.api.two_wheelers.simulate_two_wheeler` with ``view``:
@@ -52,11 +53,13 @@ _UP = np.array([1.0, -1.0, -1.0])
 
 @dataclass
 class TwoWheelerScene:
-    """What the view draws: the globe's radius ``r`` [m], frame times ``t``
-    (F,), the points (:data:`POINT_KEYS`, (3, F)) and rims (:data:`RIM_KEYS`,
-    (3, K, F)) in the view's axes (origin the globe's centre, z up), the
-    readouts (:data:`PANEL_COLUMNS`, (F,)), how the run ended, a title and
-    the playback factor the page and the loop start at."""
+    """What the view draws: the globe's radius ``r`` [m] (on ``flat``
+    ground: the half-width of the run's ground, what the camera frames),
+    frame times ``t`` (F,), the points (:data:`POINT_KEYS`, (3, F)) and rims
+    (:data:`RIM_KEYS`, (3, K, F)) in the view's axes (origin the globe's
+    centre or the ground's origin, z up), the readouts
+    (:data:`PANEL_COLUMNS`, (F,)), how the run ended, a title and the
+    playback factor the page and the loop start at."""
 
     r: float
     t: np.ndarray
@@ -66,6 +69,7 @@ class TwoWheelerScene:
     event_time: float | None = None
     title: str = ""
     playback: float = PLAYBACK
+    flat: bool = False
 
     @property
     def event_words(self) -> str:
@@ -73,10 +77,20 @@ class TwoWheelerScene:
         return self.status.replace("_", " ") if self.event_time is not None else ""
 
 
+def _flat(summary: Table) -> bool:
+    return "surface" in summary.columns and str(summary["surface"][0]) == "flat"
+
+
 def _title(summary: Table) -> str:
     row = summary[0]
-    words = (f"{row['machine']}: simulated from its steady turn at \u03b8 = {row['theta_deg']:.1f}\u00b0, "
-             f"{row['v_rear_m_s']:.3g} m/s, in a globe of {2 * row['r_m']:.3g} m")
+    if not _flat(summary):
+        words = (f"{row['machine']}: simulated from its steady turn at \u03b8 = {row['theta_deg']:.1f}\u00b0, "
+                 f"{row['v_rear_m_s']:.3g} m/s, in a globe of {2 * row['r_m']:.3g} m")
+    elif math.isfinite(float(summary["turn_radius_m"][0])):
+        words = (f"{row['machine']}: simulated on flat ground from its steady turn of radius "
+                 f"{row['turn_radius_m']:.3g} m at {row['v_rear_m_s']:.3g} m/s")
+    else:
+        words = f"{row['machine']}: simulated on flat ground from upright straight running at {row['v_rear_m_s']:.3g} m/s"
     control = {"rider": f"a rider's gains {row['k_lean_n_m_rad']:g}, {row['k_rate_n_m_s_rad']:g}",
                "hands-free": "hands free"}.get(row["control"], "the steady steer torque held")
     kick = f"kicked {row['perturb_deg']:g}\u00b0 in lean" if row["perturb_deg"] else "not kicked"
@@ -96,9 +110,18 @@ def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames
     points.update({k: _UP[:, None, None] * np.asarray(frames[k])[..., keep] for k in RIM_KEYS})
     status = str(summary["status"][0])
     event = float(t[-1]) if status in EVENT_STATUSES and math.isfinite(float(summary["t_event_s"][0])) else None
-    return TwoWheelerScene(r=float(summary["r_m"][0]), t=t[keep], points=points,
+    flat = _flat(summary)
+    return TwoWheelerScene(r=_ground(points) if flat else float(summary["r_m"][0]), t=t[keep], points=points,
                            panel={k: np.asarray(series[c], dtype=np.float64)[keep] for k, c in PANEL_COLUMNS.items()},
-                           status=status, event_time=event, title=_title(summary))
+                           status=status, event_time=event, title=_title(summary), flat=flat)
+
+
+def _ground(points: dict) -> float:
+    """Half the width of the ground a run on flat ground covers [m]: the
+    contacts' paths and the bicycle's size, at least 2 m."""
+    paths = np.concatenate([points["P"][:2], points["Q"][:2]], axis=1)
+    size = float(np.max(np.linalg.norm(points["head"] - points["P"], axis=0)))
+    return max(0.5 * float(np.max(np.ptp(paths, axis=1))) + size, 2.0)
 
 
 def two_wheeler_data(scene: TwoWheelerScene) -> dict:
@@ -109,7 +132,8 @@ def two_wheeler_data(scene: TwoWheelerScene) -> dict:
             "rim": int(scene.points[RIM_KEYS[0]].shape[1]), "t": _encode(scene.t, "<f8"),
             "points": {k: _encode(scene.points[k].T) for k in POINT_KEYS}, "rims": rims,
             "panel": {k: _encode(v) for k, v in scene.panel.items()}, "status": scene.status,
-            "event_time": scene.event_time, "event_words": scene.event_words, "playback": scene.playback}
+            "event_time": scene.event_time, "event_words": scene.event_words, "playback": scene.playback,
+            "flat": scene.flat}
 
 
 def decode_rim(text: str, n_rim: int) -> np.ndarray:

@@ -94,6 +94,7 @@ def test_the_benchmarks_case_runs_from_straight_running(run):
     (("--periods", "2"), "straight running on flat ground has no period"),
     (("--steer", "locked", "--perturb-steer-rate", "3"), "no steer rate to kick"),
     (("--frame", "lab"), "--frame not for a two-wheeler's run"),
+    (("--output", "run.gif"), "drawn as a page (.html), not a loop (.gif)"),
 ])
 def test_bad_flat_combinations_are_refused_in_one_line(run, extra, words):
     res = run(*FLAT, *extra)

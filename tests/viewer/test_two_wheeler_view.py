@@ -95,3 +95,33 @@ def test_the_page_draws_the_bicycle_in_a_browser(browser, run, tmp_path):
     for rim in RIM_KEYS:
         x0, y0, x1, y1 = drawn[rim]
         assert max(x1 - x0, y1 - y0) > 20, rim         # a wheel, not a dot
+
+
+@pytest.fixture(scope="module")
+def flat_run():
+    return simulate_two_wheeler("benchmark-bicycle", view=True, flat=True, speed=5.0, turn_radius=8.0,
+                                periods=0.05, points_per_period=200, rtol=1e-6, perturb=1.0)
+
+
+def test_a_run_on_flat_ground_stands_on_the_ground(flat_run):
+    """On flat ground the page draws the ground, not a globe: both contacts
+    at z = 0 in every frame, the rims above it, the head above the wheels,
+    and the camera frames the ground the run covers."""
+    series, summary, frames = flat_run
+    data = page_data(render_two_wheeler_html(two_wheeler_scene(series, summary, frames)))
+    assert data["flat"] is True and np.isfinite(data["r"]) and data["r"] >= 2.0
+    for contact in ("P", "Q"):
+        assert np.max(np.abs(decode_array(data["points"][contact], 3)[2])) < F32
+    for rim in RIM_KEYS:
+        assert np.min(decode_rim(data["rims"][rim], data["rim"])[2]) > -F32
+    head = decode_array(data["points"]["head"], 3)[2]
+    assert np.all(head > 1.0) and "flat ground" in data["title"]
+
+
+def test_the_flat_page_draws_the_ground_and_the_bicycle_in_a_browser(browser, flat_run, tmp_path):
+    out = tmp_path / "flat.html"
+    write_two_wheeler_view(out, *flat_run)
+    attrs = body_attributes(dump_dom(browser, out, budget_ms=1500))
+    assert attrs["ready"] == "1" and attrs["errors"] == "0" and int(attrs["ink"]) > 500
+    drawn = json.loads(attrs["drawn"].replace("&quot;", '"'))
+    assert set(drawn) >= {"rear_rim", "front_rim", "head", "contacts"}
