@@ -56,6 +56,8 @@ ALLOWED = {
     "units": {"errors"},
     "params": {"units", "errors", "constants"},
     "grid": set(),
+    # the two-wheeler's derivation written out as the numpy code the physics core ships
+    "codegen": {"physics"},
     # a dask cluster is the other place parallel work can run (the distributed extra)
     "parallel": {"cluster"},
     "cluster": {"errors", "memory"},

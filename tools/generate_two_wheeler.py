@@ -1,7 +1,8 @@
 """Regenerate ``deathsphere/physics/two_wheeler/_generated.py``: derive the
 Whipple bicycle's equations with sympy (``deathsphere.physics.two_wheeler.derivation``,
-docs/two-wheeler.md sec. 5) and print them as numpy code.  The physics
-package only derives; this script reports and writes (whole or not at all).
+docs/two-wheeler.md sec. 5) and write them as numpy code (``deathsphere.codegen``).
+The physics package only derives; this script reports and writes (whole
+or not at all).
 
     python tools/generate_two_wheeler.py            # derive and report
     python tools/generate_two_wheeler.py --write    # and rewrite _generated.py
@@ -13,7 +14,8 @@ import argparse
 import time
 from pathlib import Path
 
-from deathsphere.physics.two_wheeler.derivation import GENERATED, SURFACES, derive, generated_source
+from deathsphere.codegen import GENERATED, generated_source
+from deathsphere.physics.two_wheeler.derivation import SURFACES, derive
 from deathsphere.writers.atomic import atomic_file
 
 

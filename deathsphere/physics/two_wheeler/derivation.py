@@ -2,13 +2,11 @@
 sympy.physics.mechanics (Kane's method), on flat ground or inside a sphere
 (beyond the paper; docs/two-wheeler.md sec. 2-4).
 
-This module needs sympy, which the shipped package does not: it is the
-generator of ``_generated.py`` and the test that checks the shipped code
-against a fresh derivation imports it.  Run
-
-    python tools/generate_two_wheeler.py --write
-
-to rewrite ``_generated.py``.
+This module needs sympy, which the shipped package does not: it only
+derives.  ``deathsphere.codegen`` turns the derivation into the numpy code
+of ``_generated.py`` (``python tools/generate_two_wheeler.py --write``), and
+the test that checks the shipped code against a fresh derivation imports
+both.
 
 What is derived, for each surface (docs/two-wheeler.md sec. 3)
 --------------------------------------------------------------
@@ -31,14 +29,13 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
-from pathlib import Path
 
 import sympy as sm
 import sympy.physics.mechanics as me
 
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
 
-__all__ = ["SURFACES", "COORDINATES", "GENERATED", "Derivation", "derive", "generated_functions", "generated_source"]
+__all__ = ["SURFACES", "COORDINATES", "Derivation", "derive"]
 
 #: The surfaces: flat ground, and the inside of a sphere of radius r.
 SURFACES = ("flat", "sphere")
@@ -187,189 +184,3 @@ def derive(surface: str = "flat") -> Derivation:
         front_contact=Q.pos_from(O).to_matrix(N),
         seconds=time.perf_counter() - start,
     )
-
-
-# -- the generator of _generated.py -------------------------------------------------------------
-
-GENERATED = Path(__file__).with_name("_generated.py")
-
-_HEADER = '''"""Numeric equations of motion of the Whipple bicycle: GENERATED, do not edit.
-
-Printed by ``python tools/generate_two_wheeler.py --write``
-from the Kane's-method derivation in ``derivation.py`` (sympy {version}):
-common subexpressions eliminated (sympy.cse), then printed as numpy code.
-Beyond the paper; docs/two-wheeler.md sec. 3-5 documents the coordinates,
-the constraints and every sign.
-
-Every function takes q (8, ...) and, where it needs them, u (8, ...) -- the
-generalised coordinates and speeds, a trailing batch axis broadcast -- the
-parameters p in PARAMETER_NAMES order (then the sphere's radius r), each a
-float or an array broadcasting against the batch.  Only functions analytic in their
-arguments are used (sin, cos, sqrt, powers), so complex-step derivatives
-pass through.
-"""
-
-import functools
-import math
-
-import numpy
-
-SURFACES = {surfaces!r}
-
-#: Bytes of each temporary per block of the batch: a function's thousand
-#: temporaries then stay in the processor's cache, which halves the time per
-#: state of a large batch.
-BLOCK_BYTES = 32768
-
-
-def _batch(*arrays):
-    """The broadcast batch shape and result dtype of the arguments."""
-    arrays = [a for a in arrays if not isinstance(a, (float, int))]
-    shape = numpy.broadcast_shapes(*(numpy.shape(a)[1:] if numpy.ndim(a) else () for a in arrays))
-    return shape, numpy.result_type(float, *arrays)
-
-
-def _in_blocks(rows):
-    """Evaluate a function of (``rows`` arrays (k, *batch), p, then arguments
-    per state) over its batch in blocks of BLOCK_BYTES per temporary, the
-    outputs joined along the batch."""
-    def decorate(function):
-        @functools.wraps(function)
-        def blocked(*args):
-            arrays, p, columns = [numpy.asarray(a) for a in args[:rows]], args[rows], args[rows + 1:]
-            others = [x for x in (*p, *columns) if not isinstance(x, (float, int))]
-            batch = numpy.broadcast_shapes(*(a.shape[1:] for a in arrays), *(numpy.shape(x) for x in others))
-            size = math.prod(batch)
-            block = max(BLOCK_BYTES // numpy.result_type(float, *arrays, *others).itemsize, 1)
-            if size <= block:
-                return function(*args)
-            arrays = [numpy.broadcast_to(a, a.shape[:1] + batch).reshape(-1, size) for a in arrays]
-            # the arguments that vary along the batch, flattened, and those that do not
-            p, columns = ([(x, False) if numpy.ndim(x) == 0 else (numpy.broadcast_to(x, batch).reshape(size), True)
-                           for x in xs] for xs in (p, columns))
-            parts = []
-            for start in range(0, size, block):
-                cut = slice(start, start + block)
-                parts.append(function(*(a[:, cut] for a in arrays), tuple(x[cut] if varies else x for x, varies in p),
-                                      *(x[cut] if varies else x for x, varies in columns)))
-            if not isinstance(parts[0], tuple):
-                return numpy.concatenate(parts, axis=-1).reshape(parts[0].shape[:-1] + batch)
-            return tuple(numpy.concatenate(out, axis=-1).reshape(out[0].shape[:-1] + batch) for out in zip(*parts))
-        return blocked
-    return decorate
-'''
-
-
-def _printer():
-    from sympy.printing.numpy import NumPyPrinter
-
-    return NumPyPrinter({"fully_qualified_modules": True, "inline": True})
-
-
-def _plain(derivation: Derivation):
-    """Replace q(t), u(t) by plain symbols q0.., u0.. for printing."""
-    n = len(derivation.q)
-    qs = sm.symbols(f"q0:{n}")
-    us = sm.symbols(f"u0:{n}")
-    return dict(zip(derivation.q, qs)) | dict(zip(derivation.u, us)), qs, us
-
-
-def _function(name, doc, args, unpack, outputs, printer):
-    """Source of one function: CSE over every output, then the outputs
-    assembled into arrays of shape (rows, cols, *batch) or (rows, *batch).
-
-    ``outputs`` is a list of (shape, sympy Matrix, symmetric)."""
-    flat = []
-    for shape, matrix, symmetric in outputs:
-        for i in range(shape[0]):
-            for j in range(shape[1] if len(shape) == 2 else 1):
-                if symmetric and j < i:
-                    continue
-                flat.append(matrix[i, j] if len(shape) == 2 else matrix[i])
-    replacements, reduced = sm.cse(flat, symbols=sm.numbered_symbols("x"), order="none")
-    lines = [f"@_in_blocks({args.index('p')})", f"def {name}({', '.join(args)}):", f'    """{doc}"""']
-    lines += [f"    {line}" for line in unpack]
-    lines += [f"    {sym} = {printer.doprint(expr)}" for sym, expr in replacements]
-    it = iter(reduced)
-    names = []
-    for k, (shape, matrix, symmetric) in enumerate(outputs):
-        out = f"out{k}"
-        names.append(out)
-        lines.append(f"    {out} = numpy.zeros({tuple(shape)} + shape, dtype=dtype)")
-        for i in range(shape[0]):
-            for j in range(shape[1] if len(shape) == 2 else 1):
-                if symmetric and j < i:
-                    continue
-                expr = next(it)
-                if expr == 0:
-                    continue
-                index = f"{i}, {j}" if len(shape) == 2 else f"{i}"
-                lines.append(f"    {out}[{index}] = {printer.doprint(expr)}")
-                if symmetric and j > i:
-                    lines.append(f"    {out}[{j}, {i}] = {out}[{i}, {j}]")
-    lines.append(f"    return {', '.join(names)}")
-    return "\n".join(lines) + "\n"
-
-
-def generated_functions(derivation: Derivation) -> str:
-    """The numeric functions of one surface, as Python source (beyond the
-    paper; docs/two-wheeler.md sec. 5)."""
-    printer = _printer()
-    plain, qs, us = _plain(derivation)
-    params = [str(s) for s in derivation.parameters]
-    unpack_q = [f"{', '.join(map(str, qs))}, = q"]
-    unpack_u = [f"{', '.join(map(str, us))}, = u"]
-    unpack_p = [f"{', '.join(params)}, = p"]
-    s = derivation.surface
-
-    def sub(m):
-        return sm.Matrix(m).xreplace(plain)
-
-    T = derivation.steer_torque
-    parts = [
-        _function(f"{s}_equations",
-                  "Kane's equations with all eight speeds free, M u' = f, and the rolling "
-                  "constraints B u = 0 with B' u: returns M (8, 8), f (8), B (5, 8), B' u (5).",
-                  ["q", "u", "p", str(T)],
-                  unpack_q + unpack_u + unpack_p + ["shape, dtype = _batch(q, u, " + str(T) + ", *p)"],
-                  [((8, 8), sub(derivation.mass_matrix), True), ((8,), sub(derivation.forcing), False),
-                   ((5, 8), sub(derivation.constraint_matrix), False),
-                   ((5,), sub(derivation.constraint_bias), False)], printer),
-        _function(f"{s}_holonomic",
-                  "The front contact's holonomic constraint h(q) = 0 and dh/dpitch: returns "
-                  "(h, dh/dpitch), each of shape (1, ...).",
-                  ["q", "p"], unpack_q + unpack_p + ["shape, dtype = _batch(q, *p)"],
-                  [((1,), sub([derivation.holonomic]), False),
-                   ((1,), sub([derivation.holonomic_dpitch]), False)], printer),
-        _function(f"{s}_energy",
-                  "Kinetic and potential energy: returns (T, V), each of shape (1, ...).",
-                  ["q", "u", "p"], unpack_q + unpack_u + unpack_p + ["shape, dtype = _batch(q, u, *p)"],
-                  [((1,), sub([derivation.kinetic]), False),
-                   ((1,), sub([derivation.potential]), False)], printer),
-        _function(f"{s}_front_contact",
-                  "The front contact point in the inertial frame N (z down): shape (3, ...).",
-                  ["q", "p"], unpack_q + unpack_p + ["shape, dtype = _batch(q, *p)"],
-                  [((3,), sub(derivation.front_contact), False)], printer),
-        # the dependent speeds need B alone, a twentieth of the equations' cost
-        _function(f"{s}_constraint_matrix",
-                  "The rolling constraints' matrix B (5, 8) of B u = 0 alone, as in "
-                  f"{s}_equations.",
-                  ["q", "p"], unpack_q + unpack_p + ["shape, dtype = _batch(q, *p)"],
-                  [((5, 8), sub(derivation.constraint_matrix), False)], printer),
-        # a steady turn's speed-free part (gravity, the steer torque) without the speeds' terms
-        _function(f"{s}_forcing_at_rest",
-                  "The forcing f (8) of Kane's equations at rest (u = 0): gravity and the steer torque.",
-                  ["q", "p", str(T)], unpack_q + unpack_p + ["shape, dtype = _batch(q, " + str(T) + ", *p)"],
-                  [((8,), sub(derivation.forcing).xreplace({x: 0 for x in us}), False)], printer),
-    ]
-    return "\n\n".join(parts)
-
-
-def generated_source(surfaces=SURFACES, derivations=None) -> str:
-    """The whole text of ``_generated.py`` (beyond the paper;
-    docs/two-wheeler.md sec. 5)."""
-    derivations = derivations or {s: derive(s) for s in surfaces}
-    text = _HEADER.format(version=sm.__version__, surfaces=tuple(surfaces))
-    for s in surfaces:
-        text += "\n\n" + generated_functions(derivations[s])
-    return text
