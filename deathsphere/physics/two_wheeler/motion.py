@@ -144,17 +144,25 @@ def accelerations(q, u, p, steer_torque=0.0, surface: str = "flat"):
     return x[:8], x[8:]
 
 
-def reduced_residual(q, u_ind, udot_ind, p, steer_torque=0.0, surface: str = "flat"):
-    """Kane's equations of the constrained bicycle, A^T (M u' - f) with
-    u = A u_ind and u' = A u_ind' + a (B a = -B' u), for the independent
-    speeds (lean, rear wheel, steer): shape (3, ...) (beyond the paper;
-    docs/two-wheeler.md sec. 4)."""
+def _constrained(q, u_ind, p, steer_torque, surface):
+    """(u, A, M, f, a) at (q, u_ind): the eight speeds u = A u_ind, Kane's
+    M and f, and the acceleration a the constraints add (B a = -B' u, zero
+    in the independent speeds), so that u' = A u_ind' + a."""
     equations, _, _ = _functions(surface)
     u, A = full_speeds(q, u_ind, p, surface)
     M, f, B, bias = equations(q, u, p, steer_torque)
     dep, _ = _split(B)
     a = np.zeros(A.shape[:-1], dtype=np.result_type(A, bias))
     a[..., list(DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
+    return u, A, M, f, a
+
+
+def reduced_residual(q, u_ind, udot_ind, p, steer_torque=0.0, surface: str = "flat"):
+    """Kane's equations of the constrained bicycle, A^T (M u' - f) with
+    u = A u_ind and u' = A u_ind' + a (B a = -B' u), for the independent
+    speeds (lean, rear wheel, steer): shape (3, ...) (beyond the paper;
+    docs/two-wheeler.md sec. 4)."""
+    u, A, M, f, a = _constrained(q, u_ind, p, steer_torque, surface)
     udot = np.einsum("...ij,j...->...i", A, udot_ind) + a
     M = np.moveaxis(M, (0, 1), (-2, -1))
     force = np.einsum("...ij,...j->...i", M, udot) - np.moveaxis(f, 0, -1)
@@ -181,12 +189,7 @@ def reduced_mass_and_forcing(q, u_ind, p, steer_torque=0.0, surface: str = "flat
     """(A^T M A, A^T (f - M a), u): Kane's reduced equations solved form,
     A^T M A u_ind' = A^T (f - M a), batch first (..., 3, 3), (..., 3), and
     the eight speeds (beyond the paper; docs/two-wheeler.md sec. 4)."""
-    equations, _, _ = _functions(surface)
-    u, A = full_speeds(q, u_ind, p, surface)
-    M, f, B, bias = equations(q, u, p, steer_torque)
-    dep, _ = _split(B)
-    a = np.zeros(A.shape[:-1], dtype=np.result_type(A, bias))
-    a[..., list(DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
+    u, A, M, f, a = _constrained(q, u_ind, p, steer_torque, surface)
     M = np.moveaxis(M, (0, 1), (-2, -1))
     At = np.swapaxes(A, -1, -2)
     force = np.moveaxis(f, 0, -1) - np.einsum("...ij,...j->...i", M, a)
