@@ -64,18 +64,20 @@ ALLOWED = {
     "memory": set(),
     "threads": set(),
     "topics": set(),
+    # a body's record is validated with the registry; its parameter files are text read once
+    "records": {"physics", "params", "units", "errors", "constants", "table"},
     "model": {"physics", "table", "params", "constants", "errors"},
     "inputs": {"model", "params", "errors", "units", "table"},
     # verify checks claims about motion with the simulator
     "results": {"physics", "model", "table", "params", "constants", "parallel", "simulation"},
-    "simulation": {"physics", "model", "table", "params", "constants"},
+    "simulation": {"physics", "model", "table", "params", "constants", "records"},
     "writers": {"table", "model"},
     "render": {"table", "model", "constants", "params"},
     "viewer": {"table", "render"},
     "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
-            "parallel", "cluster", "units", "errors", "act"},
+            "parallel", "cluster", "units", "errors", "act", "records"},
     # the show's parts (an act of several riders) build on ride's machine (api.rides, api.machines)
-    "act": {"physics", "api", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
+    "act": {"physics", "api", "records", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
     "__main__": {"cli"},
     "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",
             "memory", "threads"},
