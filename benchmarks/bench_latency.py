@@ -13,7 +13,9 @@ for), the goal and whether the median meets it.  ``--repeat`` runs each
 (default 5); the ``verify`` and ``verify.run`` rows, the slow ones,
 run ``--slow-repeat`` times (default 3).
 
-Goals: orbit, table1, stability and map within 2.0x ``import numpy``;
+Goals: orbit, table1, stability and map within 2.0x ``import numpy``; a
+unit suffix (``-r 8ft``, ``--speed 40km/h --diameter 16ft``) within 0.2 s
+of the same command without one;
 vertical within 0.5 s; simulate (20 periods of a Table 1 orbit) within
 0.5 s of integration (``wall_time_s`` of its summary, median of
 ``--repeat`` runs with ``--summary-only``); verify within 5 s and 200 MB;
@@ -62,6 +64,12 @@ API_VERIFY = "from deathsphere.results import verify; verify.run(jobs={})"
 COMMANDS = {
     "import numpy": ([sys.executable, "-c", "import numpy"], False, None),
     "orbit": (DS + ["orbit", "--theta", "60", "--alpha", "10", "--format", "csv"], False, ("x numpy", 2.0)),
+    # a crew's units: the suffix costs at most UNIT_SUFFIX_GOAL_S over the same command without one
+    "orbit -r 8ft": (DS + ["orbit", "--theta", "60", "--alpha", "10", "-r", "8ft", "--format", "csv"], False,
+                     ("x numpy", 2.0)),
+    "ride": (DS + ["ride", "--theta", "90", "--speed", "11.1", "-r", "2.4384", "--format", "csv"], False, None),
+    "ride 16ft 40km/h": (DS + ["ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format",
+                               "csv"], False, None),
     "table1": (DS + ["table1", "--format", "csv"], False, ("x numpy", 2.0)),
     "stability": (DS + ["stability", "--theta", "90", "--alpha", "45", "--format", "csv"], False,
                   ("x numpy", 2.0)),
@@ -82,6 +90,8 @@ COMMANDS = {
 SIMULATE_SUMMARY = DS + ["simulate", "--theta", "60", "--alpha", "10", "--periods", "20", "--summary-only",
                          "--format", "csv"]
 SIMULATE_GOAL_S = 0.5
+#: What a unit suffix may add to a command [s] (median with it less median without)
+UNIT_SUFFIX_GOAL_S = 0.2
 VERIFY_GOAL_MB = 200.0
 
 
@@ -179,6 +189,11 @@ def main():
                                       ("map --stability", "map --stability -j1", "map --stability -j2")):
         one, two = (statistics.median(walls[n]) for n in (one_name, two_name))
         print(f"{label}: 2 processes take {two / one:.2f}x the wall time of 1")
+    for with_unit, without in (("orbit -r 8ft", "orbit"), ("ride 16ft 40km/h", "ride")):
+        cost = statistics.median(walls[with_unit]) - statistics.median(walls[without])
+        verdicts[f"suffix cost of {with_unit!r}"] = cost <= UNIT_SUFFIX_GOAL_S
+        print(f"unit suffix: {with_unit!r} takes {cost:+.3f} s over {without!r} ({cost / numpy_s:+.2f}x import "
+              f"numpy; goal <= {UNIT_SUFFIX_GOAL_S:g} s: {'yes' if cost <= UNIT_SUFFIX_GOAL_S else 'NO'})")
     met = [n for n, v in verdicts.items() if v]
     missed = [n for n, v in verdicts.items() if v is False]
     print(f"goals met: {', '.join(met) or 'none'}; not met: {', '.join(missed) or 'none'}")

@@ -2,9 +2,12 @@
 ``8ft``, ``30rpm``, ``0.2rad``, ``30:70:5km/h``) converted to the unit the
 API uses (docs/units.md).
 
-A plain number never imports pint: the registry is built the first time a
-suffix appears (importing pint and building it costs 0.3-0.5 s) and kept.  The API's
-own unit spelled out (``60deg``, ``3m``, ``7m/s``) needs no pint either.
+A plain number never imports pint, nor does the API's own unit spelled out
+(``60deg``, ``3m``, ``7m/s``) or one of the common suffixes (:data:`COMMON`:
+``ft``, ``km/h``, ``rpm`` ...), whose exact factors are written out here
+from pint's definitions (and checked against pint by the tests).  pint's
+registry is built only for any other spelling (``yd``, ``knot``), the first
+time one appears, and kept (importing pint and building it costs 0.7-2.5 s).
 
 The factors are pint's definitions as exact fractions, and a value is
 converted by multiplying the number as written by the exact factor and
@@ -181,12 +184,40 @@ def allowed_text(kind: str) -> str:
     return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
 
 
+#: pi as pint defines it (its ``constants_en.txt``: ``pi = 3.14159...``
+#: to 49 decimals), so the factors below are pint's to the last digit.
+_PINT_PI = Fraction("3.1415926535897932384626433832795028841971693993751")
+
+#: The common suffixes' exact factors (:data:`COMMON`), written out from
+#: pint's definitions so that a crew's ``16ft`` or ``40km/h`` needs no pint:
+#: building pint's registry costs 0.7-2.5 s a command on a loaded machine
+#: (docs/units.md, "What it costs").  tests/test_units.py checks every entry
+#: against pint's own conversion; any other spelling is read by pint.
+_KNOWN: dict[tuple[str, str], Fraction] = {
+    ("cm", "length"): Fraction(1, 100), ("mm", "length"): Fraction(1, 1000),
+    ("ft", "length"): Fraction(381, 1250), ("in", "length"): Fraction(127, 5000),
+    ("km/h", "speed"): Fraction(5, 18), ("mph", "speed"): Fraction(1397, 3125),
+    ("rpm", "rate"): 2 * _PINT_PI / 60, ("deg/s", "rate"): _PINT_PI / 180,
+    ("rad", "angle"): 180 / _PINT_PI,
+    ("ft/s^2", "acceleration"): Fraction(381, 1250), ("g", "acceleration"): Fraction(196133, 20000),
+    ("lb", "mass"): Fraction(45359237, 100000000),
+    ("m/s^2", "load"): Fraction(20000, 196133),
+}
+
+
 @functools.lru_cache(maxsize=256)
 def _factor_or_reason(unit: str, kind: str) -> Fraction | str:
     if unit == KINDS[kind]:
         return Fraction(1)
     if kind == "none":
         return "takes no unit"
+    known = _KNOWN.get((unit, kind))
+    return known if known is not None else _pint_factor_or_reason(unit, kind)
+
+
+def _pint_factor_or_reason(unit: str, kind: str) -> Fraction | str:
+    """The factor of ``unit`` for ``kind`` as pint reads it, or the reason
+    it cannot be one (an unknown unit, another dimension)."""
     ureg = registry()
     try:
         parsed = ureg.parse_units(_ALIASES.get((kind, unit), unit))

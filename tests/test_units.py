@@ -172,11 +172,24 @@ def test_a_plain_number_does_not_import_pint():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ.copy(),
                          check=True)
     assert out.stdout.split() == ["False", "False"]
-    # and the first suffix does import it (so the check above can fail)
-    code = "import sys; from deathsphere import units; units.parse_value('8ft', 'length'); print('pint' in sys.modules)"
+    # nor does a common suffix (its factor is written out); an uncommon one
+    # does import it (so the checks above can fail)
+    code = ("import sys; from deathsphere import units; units.parse_value('8ft', 'length'); "
+            "units.parse_value('40km/h', 'speed'); units.parse_value('30rpm', 'rate'); print('pint' in sys.modules); "
+            "units.parse_value('8yd', 'length'); print('pint' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ.copy(),
                          check=True)
-    assert out.stdout.split() == ["True"]
+    assert out.stdout.split() == ["False", "True"]
+
+
+def test_the_written_out_factors_are_pints():
+    """Every common suffix's factor that skips pint is exactly what pint's
+    exact registry gives, and they cover every common spelling."""
+    assert units._KNOWN, "no factor is written out"
+    for (unit, kind), written in units._KNOWN.items():
+        assert units._pint_factor_or_reason(unit, kind) == written, (unit, kind)
+    common = {(u, k) for k, names in units.COMMON.items() for u in names if u != units.KINDS[k]}
+    assert common == set(units._KNOWN)
 
 
 _CASES = [(unit, kind) for unit, kind, _, _ in SPELLINGS]
