@@ -41,6 +41,8 @@ COLUMNS = (
     "mu_available", "omega3_rad_s", "branch",
     "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s",
     "omega3_min_real_rad_s", "omega3_min_contact_rad_s", "max_accel_g",
+    # the load a rider feels (|a - g| / g, what --max-g limits) and that limit by its own name
+    "load_g", "max_g",
 )
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
@@ -56,6 +58,7 @@ _PHYSICS_COLUMNS = {
     "spin": "spin_rad_s",
     "accel": "accel_m_s2",
     "accel_g": "accel_g",
+    "load_g": "load_g",
     "normal": "normal_per_mass_m_s2",
     "friction": "friction_per_mass_m_s2",
     "mu_required": "mu_required",
@@ -448,11 +451,13 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     # inf ("no limit") is not representable in JSON: empty/null means no --mu given
     columns["mu_available"] = np.where(np.isinf(req["mu"][pick]), np.nan, req["mu"][pick])
     max_g = req["max_g"][pick]
-    columns["max_accel_g"] = np.where(np.isinf(max_g), np.nan, max_g)
-    # the g-load limit comes last in the order of failures (docs/contract.md):
-    # an orbit that is otherwise ok but pushes the rider past max_g
+    columns["max_g"] = np.where(np.isinf(max_g), np.nan, max_g)
+    # the limit's first column, kept for scripts (the same number)
+    columns["max_accel_g"] = columns["max_g"]
+    # the load limit comes last in the order of failures (docs/contract.md):
+    # an orbit that is otherwise ok but presses the rider past max_g
     with np.errstate(invalid="ignore"):
-        over = (status[order] == Status.OK) & (columns["accel_g"] > max_g)
+        over = (status[order] == Status.OK) & (columns["load_g"] > max_g)
     columns["status"][over] = "over_g"
     columns["reason"][over] = REASON_TEXT[Reason.OVER_G]
     columns["branch"] = np.full(len(pick), None, dtype=object)
@@ -471,7 +476,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
 
 
 #: Statuses of a steady orbit that exists with contact (it may need more
-#: friction or g-load than allowed): its stability is analysed.
+#: friction or load than allowed): its stability is analysed.
 LIVE_CODES = (Status.OK, Status.SLIPS, Status.OVER_G)
 LIVE_STATUSES = tuple(code.label for code in LIVE_CODES)
 #: Request fields a row prints as given, and their columns (docs/contract.md,

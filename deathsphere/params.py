@@ -138,10 +138,10 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("mu", "", "friction coefficient", 0.0, math.inf, allow_inf=True, symbol="μ", metavar="MU",
           default=math.inf, column="mu_available",
           help="Friction coefficient available; an orbit needing more has status slips."),
-    Param("max_g", "g", "largest g-load", TINY, math.inf, allow_inf=True, kind="load", metavar="G", default=math.inf,
+    Param("max_g", "g", "largest load", TINY, math.inf, allow_inf=True, kind="load", metavar="G", default=math.inf,
           column="max_accel_g",
-          help="Largest g-load (centre acceleration in g) the rider takes; an orbit over it has status "
-               "over_g."),
+          help="Largest load on the rider, load_g = |contact force| / (m g), what the rider feels (on a "
+               "horizontal orbit sqrt(1 + accel_g^2)); an orbit over it has status over_g."),
     Param("omega3", "rad/s", "spin", -HUGE, HUGE, symbol="ω3", kind="rate", metavar="RAD_S",
           help="Sphere: spin about the contact normal; eq. 55 gives up to two orbit rates, one row each "
                "(branch 0 slow, 1 fast)."),

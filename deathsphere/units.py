@@ -52,7 +52,7 @@ COMMON: dict[str, tuple[str, ...]] = {
 }
 
 _NOUN = {"length": "a length", "speed": "a speed", "rate": "an angular rate", "angle": "an angle",
-         "acceleration": "an acceleration", "mass": "a mass", "load": "a g-load",
+         "acceleration": "an acceleration", "mass": "a mass", "load": "a load in g",
          "none": "a plain number"}
 
 #: pint's spelling of each API unit, for the conversion and the dimension check.

@@ -99,10 +99,19 @@ def test_a_wrong_unit_is_one_line_naming_the_option(run, args, words):
 
 
 def test_max_g_marks_the_orbits_past_it(run):
+    """--max-g limits the load the rider feels, |a - g| / g (load_g), not
+    the centre's acceleration accel_g (eq. 36): at theta 60, alpha 10 the
+    centre accelerates at 2.75 g and the rider feels 2.92 g, so --max-g 2.8
+    marks it over_g."""
     out = rows(run("orbit", "--theta", "60", "--alpha", "5", "--alpha", "20", "--max-g", "2", "--format", "csv").stdout)
     assert [r["status"] for r in out] == ["over_g", "ok"]
-    assert float(out[0]["accel_g"]) > 2 >= float(out[1]["accel_g"]) and {r["max_accel_g"] for r in out} == {"2.0"}
-    assert "max_accel_g" in out[0]["reason"] and out[0]["stability"]      # the orbit exists: it is analysed
+    assert float(out[0]["load_g"]) > 2 >= float(out[1]["load_g"]) and {r["max_g"] for r in out} == {"2.0"}
+    assert {r["max_accel_g"] for r in out} == {"2.0"}                    # the limit's first column, kept
+    assert "max_g" in out[0]["reason"] and out[0]["stability"]           # the orbit exists: it is analysed
+    (row,) = rows(run("orbit", "--theta", "60", "--alpha", "10", "--max-g", "2.8", "--format", "csv").stdout)
+    accel, load = float(row["accel_g"]), float(row["load_g"])
+    assert accel < 2.8 < load and load == pytest.approx(math.hypot(1.0, accel), rel=1e-14)
+    assert row["status"] == "over_g"
 
 
 def test_only_keeps_the_statuses_asked_for_on_orbit_and_vertical(run):

@@ -40,7 +40,7 @@ def _ratio(a, r, side, g=G, diameter=None) -> tuple[float, float]:
     15 significant digits so that ``-a 0.3 -r 3`` is the 0.1 a user reads
     (0.3 / 3.0 is 0.09999999999999999 in float64), and the inertia factor."""
     side = checked_choice("side", side, SIDES)
-    # g is checked but changes nothing: the region's angles and the g-load
+    # g is checked but changes nothing: the region's angles and the load
     # in g do not depend on it (it scales every speed by sqrt(g))
     setup = checked_setup("wheel", side, a, sphere_radius(r, diameter), None, g, INF)
     return float(f"{setup.a / setup.r:.15g}"), side
@@ -53,7 +53,7 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
 
     Its boundaries are the paper's: eq. (0) (the wheel fits; outside eq. 81),
     eq. (29) (Omega^2 > 0) and eq. (33) (contact; outside eq. 83); the
-    friction and g-load limits and the stability boundary are beyond the
+    friction and load limits and the stability boundary are beyond the
     paper (docs/limits.md, docs/stability.md).  The region depends on the
     radii only through a/r (the paper's figure: 0.1).
 
@@ -69,7 +69,7 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     mu : float
         Also the friction limit mu_required = mu (``inf``: none).
     max_g : float
-        Also the g-load limit accel_g = max_g [g] (``inf``: none).
+        Also the load limit load_g = max_g [g] (``inf``: none; docs/limits.md).
     step : float
         theta step of the data [deg], 0.001..10.
     stability : bool
@@ -173,7 +173,7 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
 
     Beyond the paper (method: docs/limits.md), from its conditions eqs. (0),
     (29), (33) (outside (81), (83)), the friction needed (eq. 35) and the
-    g-load (eq. 36).
+    load on the rider (load_g = sqrt(1 + accel_g^2), eqs. 32 and 36).
 
     Parameters
     ----------

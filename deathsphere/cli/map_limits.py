@@ -53,7 +53,7 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
 
     Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
     (contact); outside the sphere by eqs. (81), (29), (83).  With --mu or
-    --max-g the friction and g-load limits are drawn too.  On a terminal a
+    --max-g the friction and load limits are drawn too.  On a terminal a
     character plot; --format csv/json prints the boundary curves as data
     (root-found to 1e-9 rad); --output writes a figure.  With --stability
     the unstable orbits are marked (x on a terminal, red in a figure) and the
@@ -122,9 +122,9 @@ def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fm
     fmt = choose_format(fmt)
     if input is not None:
         finish(stream(api.limits_input(input, **given(theta=theta), **options), fmt, label="limits",
-                      title="Feasible tilts (fit, Omega^2 > 0, contact, mu, g-load)"))
+                      title="Feasible tilts (fit, Omega^2 > 0, contact, mu, load)"))
         return
     table = api.limits(**given(theta=theta), **options)
-    title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, g-load)" if theta else
+    title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, load)" if theta else
              "The highest orbit possible (smallest theta with a feasible tilt)")
     emit([table], fmt, title=title)

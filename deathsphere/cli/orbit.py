@@ -59,12 +59,12 @@ def orbit_chunks(input, stability, only, options, **more):
     return api.sweep(stability=stability, only=only or None, **options, **more)
 
 
-@cli.command("orbit", short_help="Steady horizontal orbits: rate, speed, spin, forces, friction, g-load.")
+@cli.command("orbit", short_help="Steady horizontal orbits: rate, speed, spin, forces, friction, load.")
 @orbit_options
 @output_options()
 def orbit_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
                   stability, fmt):
-    """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, g-load.
+    """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, load.
 
     All combinations of the --theta and --alpha values are evaluated.  Each
     row has a status: ok, no_fit (eq. 0/81), no_orbit (Omega^2 <= 0, eq. 29),

@@ -50,7 +50,7 @@ name           unit       meaning
 ``g``          m/s^2      gravity (default ``constants.STANDARD_GRAVITY``)
 ``outside``    bool       the body rolls on the outside of the sphere
 ``mu``         --         friction coefficient available (inf: unlimited)
-``max_g``      --         largest g-load allowed (inf: unlimited)
+``max_g``      --         largest load allowed (inf: unlimited)
 ``omega``      rad/s      Omega, the rate of a horizontal orbit about the
                           vertical (signed for the sphere, eq. 55)
 ``omega3``     rad/s      a sphere's spin w.e3 about the axis to the contact

@@ -56,7 +56,8 @@ def particle_orbit(theta, r, g, outside=False, mu=np.inf):
     dict of arrays: ``r_prime`` = r sin(theta) (distance from the vertical
     axis) [m], ``omega2``, ``omega`` (>= 0) [rad/s], ``period`` [s], ``v_cm``
     [m/s], ``spin`` (0: a point particle has no rolling spin), ``accel``,
-    ``accel_g``, ``normal`` (per unit mass, pressing particle and sphere
+    ``accel_g``, ``load_g`` (|F| / (m g) = sqrt(1 + accel_g^2), what a rider
+    feels), ``normal`` (per unit mass, pressing particle and sphere
     together) [m/s^2], ``friction`` (0), ``mu_required`` (0; NaN without
     contact), int8
     ``status``/``reason``:
@@ -100,6 +101,8 @@ def particle_orbit(theta, r, g, outside=False, mu=np.inf):
         "spin": zero,
         "accel": accel,
         "accel_g": accel / g,
+        # what the rider feels, |a - g| / g (a horizontal, g vertical: eq. 32)
+        "load_g": np.sqrt(accel * accel + g * g) / g,
         "normal": normal,
         "friction": zero,
         "mu_required": mu_req,

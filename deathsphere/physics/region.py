@@ -7,7 +7,8 @@ Omega^2 of eq. (29) is positive, and the contact force presses the wheel
 onto the wall, eq. (33); outside the sphere (sec. 3) the fit is eq. (81) and
 the contact condition eq. (83).  This module computes the boundary curves of
 that region, the intervals of alpha allowed at each theta (optionally also
-limited by a friction coefficient mu and a largest g-load), the speed range
+limited by a friction coefficient mu and a largest load max_g on the rider,
+load_g = sqrt(1 + accel_g^2): see :func:`centre_accel_limit`), the speed range
 over each interval, the highest orbit possible, and every tilt alpha giving a
 prescribed speed or rotation rate.
 
@@ -23,7 +24,7 @@ fit, eq. (0) / (81)        sin(theta - alpha) - a/r  /  sin(alpha - theta)   1
 Omega^2 = 0 or pole (29)   C,  S,  D                        1 each
 contact, eq. (33) / (83)   P_N = r' C s - c S D             2
 friction, eq. (35)         P_F -+ mu P_N,  P_F = r' C c + s S D             2 each
-g-load, eq. (36)           r' C -+ G S D                    2 each
+load, eqs. (32), (36)      r' C -+ G S D, G = sqrt(max_g^2 - 1)   2 each
 speed v_cm, eq. (29)       g r'^2 C - v^2 S D               3
 =========================  ===============================  ==========
 
@@ -86,7 +87,8 @@ def _functions(a, r, k, g, mu=np.inf, max_g=np.inf, outside=False):
         out["mu"] = [P_F - mu * P_N, P_F + mu * P_N]
     if np.isfinite(max_g):
         RC = rp * C
-        out["max_g"] = [RC - max_g * SD, RC + max_g * SD]
+        accel = centre_accel_limit(max_g)
+        out["max_g"] = [RC - accel * SD, RC + accel * SD]
     return out
 
 
@@ -117,6 +119,19 @@ def _check(a, r, k, g, outside, mu=np.inf, max_g=np.inf):
     if math.isnan(max_g) or max_g <= 0:
         raise ValueError(f"max_g must be > 0 (inf: no limit), got {max_g}")
     return a, r, k, g, bool(outside), mu, max_g
+
+
+def centre_accel_limit(max_g: float) -> float:
+    """The centre's acceleration in g (eq. 36's accel_g) that a limit
+    ``max_g`` on the load allows: the load a rider feels is |F| / (m g) =
+    sqrt(1 + accel_g^2) on a horizontal orbit (eq. 32: F/m = g z-hat -
+    r' Omega^2 r'-hat, two orthogonal parts), so load_g <= max_g is accel_g
+    <= sqrt(max_g^2 - 1) (0 for max_g <= 1: every orbit's load exceeds 1).
+    Beyond the paper; the region's limit curves and feasibility test take
+    max_g through here (its two leaves, the one conversion), so
+    that the region, ``limits`` and ``map`` limit the load ``orbit``
+    reports (docs/limits.md)."""
+    return math.inf if math.isinf(max_g) else math.sqrt(max(max_g * max_g - 1.0, 0.0))
 
 
 def _theta_1d(theta):
@@ -162,10 +177,10 @@ def boundary_alphas(theta, a, r, k, outside=False, mu=np.inf, max_g=np.inf, wind
     ``eq33`` where the normal force of eq. (32) vanishes, the edge of
     eq. (33) (eq. (83) outside); with finite ``mu`` also ``mu``, where
     mu_required of eq. (35) equals mu, and with finite ``max_g``, ``max_g``
-    where the g-load of eq. (36) equals max_g (these two: beyond the paper).
+    where the load load_g equals max_g (these two: beyond the paper).
 
     ``mu`` and ``max_g`` curves are kept only where the orbit is real and in
-    contact (elsewhere mu_required and the g-load are not physical).
+    contact (elsewhere mu_required and the load are not physical).
 
     Parameters
     ----------
@@ -200,7 +215,7 @@ def boundary_alphas(theta, a, r, k, outside=False, mu=np.inf, max_g=np.inf, wind
 def boundary_thetas(alpha, a, r, k, outside=False, mu=np.inf, max_g=np.inf, window=(0.0, np.pi)):
     """Every theta on each boundary curve at each alpha: the companion of
     :func:`boundary_alphas` along lines of constant alpha -- the same
-    boundaries, eqs. (0)/(81), (29), (33)/(83) and the mu (eq. 35) and g-load
+    boundaries, eqs. (0)/(81), (29), (33)/(83) and the mu (eq. 35) and load
     (eq. 36) limits, with the same names and NaN-padded layout -- for
     renderers that need the curves where they are steep in theta.  Default
     window: 0 <= theta <= pi [rad]."""
@@ -312,14 +327,14 @@ def _feasible_at(t, alpha, a, r, k, g, outside, mu, max_g):
     orb = horizontal_orbit(t, alpha, a, r, k, g, outside, mu)
     ok = orb["status"] == Status.OK
     if np.isfinite(max_g):
-        ok &= orb["accel_g"] <= max_g
+        ok &= orb["accel_g"] <= centre_accel_limit(max_g)
     return ok
 
 
 def feasible(theta, alpha, a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf):
     """True where (theta, alpha) is a feasible orbit: status ``ok`` of
     :func:`deathsphere.physics.wheel.horizontal_orbit` (eqs. (0)/(81), (29),
-    (33)/(83), (35) with mu) and g-load of eq. (36) <= max_g."""
+    (33)/(83), (35) with mu) and load load_g <= max_g."""
     a, r, k, g, outside, mu, max_g = _check(a, r, k, g, outside, mu, max_g)
     return _feasible_at(theta, alpha, a, r, k, g, outside, mu, max_g)
 
@@ -342,9 +357,9 @@ def allowed_alpha(theta, a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, 
 
     Feasible means: the wheel fits (eq. (0); eq. (81) outside), Omega^2 of
     eq. (29) is > 0, the normal force is positive (eq. (33); eq. (83)
-    outside), mu_required of eq. (35) <= ``mu`` and the g-load of eq. (36)
+    outside), mu_required of eq. (35) <= ``mu`` and the load of eq. (36)
     <= ``max_g`` — exactly status ``ok`` of
-    :func:`deathsphere.physics.wheel.horizontal_orbit` plus the g-load test.
+    :func:`deathsphere.physics.wheel.horizontal_orbit` plus the load test.
     The limits mu and max_g are beyond the paper (docs/limits.md).
 
     Method: all crossings of every boundary inside the fit interval are
@@ -482,7 +497,7 @@ def highest_orbit(a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=n
     ----------
     a, r : float, [m];  k : float, [-];  g : float, [m/s^2];  outside : bool;
     mu : float, [-] friction available (inf: no limit);
-    max_g : float, [-] largest g-load allowed (inf: no limit).
+    max_g : float, [-] largest load load_g allowed (inf: no limit).
 
     Returns
     -------

@@ -308,6 +308,8 @@ def _orbit(theta, omega, omega3, branch, a, r, k, g, outside, mu, extra_fail):
         "branch": branch,
         "accel": accel,
         "accel_g": accel / g,
+        # what the rider feels, |a - g| / g (a horizontal, g vertical: eq. 32)
+        "load_g": np.sqrt(accel * accel + g * g) / g,
         "normal": normal,
         "friction": friction,
         "mu_required": mu_req,
@@ -345,6 +347,7 @@ def sphere_orbit(theta, omega3, a, r, k=K_SOLID_BALL, g=STANDARD_GRAVITY, outsid
     ``spin`` rolling rate |omega x axis 3| = v_cm/a [rad/s]; ``spin_total``
     |omega| [rad/s]; ``omega3`` [rad/s]; ``branch`` (0 slow, 1 fast);
     ``accel``, ``accel_g`` centripetal acceleration of the centre;
+    ``load_g`` |F| / (m g) = sqrt(1 + accel_g^2), what a rider feels;
     ``normal``, ``friction`` per unit mass (see :func:`contact_force`);
     ``mu_required``; ``omega3_min_real`` (eq. 56), ``omega3_min_contact``
     (eqs. 56, 58/59) [rad/s]; int8 ``status``, ``reason``: no_fit (a >= r

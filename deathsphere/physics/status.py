@@ -2,7 +2,7 @@
 
 A status names the *first* condition an orbit fails, in the order of the
 contract (docs/contract.md): fit, real rotation rate, contact, friction,
-g-load (``over_g``, applied by the model to an orbit that is otherwise ok).  Each status
+load (``over_g``, applied by the model to an orbit that is otherwise ok).  Each status
 carries a reason code whose words live in :data:`REASONS`; physics functions
 return small integer arrays, and only the model turns them into text.
 """
@@ -97,7 +97,7 @@ REASONS = {
     Reason.SPHERE_K_ZERO: "k = 0: omega_3 drops out of eq. 55 and cannot be found from Omega",
     Reason.PARTICLE_OUTSIDE_BELOW_EQUATOR: "outside the sphere below the equator the normal force would have to pull (N/m = g/cos(theta) < 0)",
     Reason.NO_ALPHA_FOR_RATE: "no tilt alpha in the fit range gives this speed or rate (eq. 29 has no root)",
-    Reason.OVER_G: "the g-load accel_g (eq. 36) exceeds the largest given (max_accel_g)",
+    Reason.OVER_G: "the load load_g (|contact force| / (m g): what the rider feels) exceeds the largest given (max_g)",
     Reason.MACHINE_NO_FIT: "the wheel does not fit inside the sphere at this tilt (machine.md eq. M10 needs sin(theta - alpha) > (a - t)/(r - t))",
     Reason.HEAD_HITS: "the rider's head reaches the globe at this tilt (head_clearance_m <= 0)",
     Reason.MACHINE_ZERO_DENOMINATOR: "the denominator of machine.md eq. M8 vanishes: no steady orbit at this tilt",

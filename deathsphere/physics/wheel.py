@@ -176,6 +176,8 @@ def _orbit(theta, alpha, a, r, k, g, outside, mu):
         "omega3": -omega * sin_alpha,
         "accel": accel,
         "accel_g": accel / g,
+        # what the rider feels, |a - g| / g (a horizontal, g vertical: eq. 32)
+        "load_g": np.sqrt(accel * accel + g * g) / g,
         "normal": normal,                       # NaN where not real, via om2_real
         "friction": f_theta,
         "mu_required": mu_req,
@@ -204,7 +206,7 @@ def horizontal_orbit(theta, alpha, a, r, k, g, outside=False, mu=np.inf):
     -------
     dict of float64 arrays (all broadcast to one shape):
     ``r_prime, omega2, omega, period, v_cm, spin, omega3, accel, accel_g,
-    normal, friction, mu_required`` and int8 ``status``, ``reason`` (codes of
+    load_g, normal, friction, mu_required`` and int8 ``status``, ``reason`` (codes of
     :mod:`deathsphere.physics.status`).  Quantities that are undefined for an
     orbit are NaN there and its status is not OK; an OK row is all finite.
 
@@ -215,6 +217,10 @@ def horizontal_orbit(theta, alpha, a, r, k, g, outside=False, mu=np.inf):
     ``spin`` keeps the sign of eq. (13) (negative when r' < 0).  ``normal``
     is the component of F/m pressing body and sphere together (-F_r inside,
     +F_r outside); ``friction`` is F_theta/m, positive down the wall.
+    ``accel_g`` is eq. (36), the centre's acceleration in g; ``load_g`` is
+    what the rider feels, |F| / (m g) = |a - g| / g = sqrt(1 + accel_g^2)
+    (eq. 32's two components are orthogonal; beyond the paper, which names
+    no load).
 
     Inputs of more than :data:`CHUNK` orbits are evaluated in pieces of that
     size: the same results, 2-3x faster than one pass over large arrays.

@@ -10,7 +10,7 @@ drawn with one character each and the allowed region is shaded:
     =  eq. (29)  Omega^2 = 0 (alpha = 90 deg) or a pole (alpha = 0, r' = -k a cos(alpha)/(2k+1))
     *  eq. (33)  the normal force vanishes (eq. (83) outside)
     m  mu_required = mu        (only with a friction limit)
-    g  g-load = max_g          (only with a g-load limit)
+    g  load = max_g          (only with a load limit)
     .  allowed: a feasible orbit at the cell's centre
     x  allowed but linearly unstable (only with stability)
     ?  allowed, stability unknown (only with stability; rare)

@@ -37,6 +37,7 @@ ORBIT_FIELDS = (
     ("omega3_min_contact_rad_s", "least |ω₃| for contact", "rad/s", "eq. 58/59"),
     ("accel_m_s2", "centre acceleration", "m/s²", "eq. 32"),
     ("accel_g", "centre acceleration", "g", "eq. 36"),
+    ("load_g", "load on the rider |a − g|/g", "g", "eq. 32"),
     ("normal_per_mass_m_s2", "normal force / m", "m/s²", "eq. 32"),
     ("friction_per_mass_m_s2", "friction / m (+ down)", "m/s²", "eq. 32"),
     ("mu_required", "μ required", "", "eq. 35"),
@@ -158,7 +159,7 @@ def one_orbit_table(table: Table, row: int = 0) -> FitTable:
 SUMMARY_HEADERS = {
     "input_row": "#", "theta_deg": "θ°", "alpha_deg": "α°", "branch": "br", "omega3_rad_s": "ω₃\nrad/s",
     "status": "status", "omega_rad_s": "Ω\nrad/s", "v_cm_m_s": "v_cm\nm/s", "spin_rad_s": "ω₁\nrad/s",
-    "accel_g": "accel\ng", "mu_required": "μ\nrequired", "stability": "stability",
+    "accel_g": "accel\ng", "load_g": "load\ng", "mu_required": "μ\nrequired", "stability": "stability",
     "omega3_min_real_rad_s": "|ω₃| min\norbit\nrad/s", "omega3_min_contact_rad_s": "|ω₃| min\ncontact\nrad/s",
 }
 #: Columns of the many-orbit view per body, in display order.  The ones not
@@ -166,10 +167,10 @@ SUMMARY_HEADERS = {
 #: always shown.
 SUMMARY_COLUMNS = {
     "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s",
-              "accel_g", "mu_required", "stability"),
+              "load_g", "mu_required", "stability"),
     "sphere": ("input_row", "theta_deg", "branch", "omega3_rad_s", "status", "omega_rad_s", "v_cm_m_s",
                "omega3_min_real_rad_s", "omega3_min_contact_rad_s", "mu_required", "stability"),
-    "particle": ("input_row", "theta_deg", "status", "omega_rad_s", "v_cm_m_s", "accel_g"),
+    "particle": ("input_row", "theta_deg", "status", "omega_rad_s", "v_cm_m_s", "load_g"),
     "mixed": ("input_row", "theta_deg", "alpha_deg", "branch", "status", "omega_rad_s", "v_cm_m_s",
               "mu_required", "stability"),
 }
@@ -180,10 +181,10 @@ SUMMARY_COLUMNS = {
 #: contact) a line under the table gives them anyway; its own ω₃ is an
 #: input and goes last.
 SUMMARY_DROP_ORDER = {
-    "wheel": ("stability", "mu_required", "accel_g", "v_cm_m_s", "omega_rad_s"),
+    "wheel": ("stability", "mu_required", "load_g", "v_cm_m_s", "omega_rad_s"),
     "sphere": ("omega3_min_contact_rad_s", "omega3_min_real_rad_s", "stability", "mu_required", "v_cm_m_s",
                "omega_rad_s", "omega3_rad_s"),
-    "particle": ("accel_g", "v_cm_m_s", "omega_rad_s"),
+    "particle": ("load_g", "v_cm_m_s", "omega_rad_s"),
     "mixed": ("stability", "mu_required", "v_cm_m_s", "omega_rad_s"),
 }
 #: Lines of "needs |ω₃| ≥ ..." under a many-sphere table; the columns carry the rest.

@@ -7,9 +7,9 @@ Two samplings, one per kind of view:
 
 * :func:`cell_map` -> :class:`CellMap`, the region on a grid of cells: which
   cell centres are feasible orbits (status ``ok`` of
-  :func:`deathsphere.physics.wheel.horizontal_orbit`, and g-load <= max_g),
+  :func:`deathsphere.physics.wheel.horizontal_orbit`, and load <= max_g),
   the stability verdict there, and where each boundary (eqs. (0)/(81),
-  (29), (33)/(83), and the mu and g-load limits) crosses lines through the
+  (29), (33)/(83), and the mu and load limits) crosses lines through the
   cells, root-found by :mod:`deathsphere.physics.region` along columns *and*
   rows so that steep stretches of a curve leave no gaps.
 * :func:`curve_map` -> :class:`CurveMap`, the region as curves: the
@@ -112,7 +112,7 @@ def cell_map(a, r, k, *, outside=False, mu=np.inf, max_g=np.inf, g=STANDARD_GRAV
     a, r : float, [m]   wheel and sphere radii (only a/r matters)
     k : float, [-]      inertia factor
     outside : bool      wheel outside the sphere (sec. 3)
-    mu, max_g : float   friction coefficient and g-load limits (inf: none)
+    mu, max_g : float   friction coefficient and load limits (inf: none)
     g : float, [m/s^2]
     stability : bool    also the linear stability at every feasible cell
         centre: one batched call of

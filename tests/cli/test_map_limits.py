@@ -59,10 +59,11 @@ def test_map_usage_errors(run, args, words):
 
 def test_highest_orbit_with_mu_and_g_limit(run):
     (row,) = json.loads(run("limits", "--mu", "1", "--max-g", "5", "--format", "json").stdout)
-    # closed form (docs/limits.md): theta* = 90 deg + atan(1/G) - atan(mu)
+    # closed form (docs/limits.md): theta* = 90 deg + atan(1/G) - atan(mu),
+    # G = sqrt(L^2 - 1) the centre's acceleration that a load L allows
     assert row["found"] is True
-    assert row["theta_deg"] == pytest.approx(90 + np.degrees(np.arctan(1 / 5)) - 45, abs=1e-6)
-    assert row["v_cm_m_s"] == pytest.approx(10.38, abs=0.01)
+    assert row["theta_deg"] == pytest.approx(90 + np.degrees(np.arctan(1 / np.sqrt(24))) - 45, abs=1e-6)
+    assert row["v_cm_m_s"] == pytest.approx(10.29, abs=0.01)
 
 
 def test_alpha_intervals_at_theta(run):

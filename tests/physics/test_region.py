@@ -41,7 +41,15 @@ def _physical(theta, alpha, a, r, k, outside):
     with np.errstate(divide="ignore", invalid="ignore"):
         mu_req = np.abs(f_theta) / normal
     return {"fit": fit, "om2": om2, "normal": normal, "mu": mu_req,
-            "g": np.abs(wheel.g_load(theta, alpha, a, r, k))}   # g_load keeps the sign of r'
+            "g": np.abs(wheel.g_load(theta, alpha, a, r, k)),   # g_load keeps the sign of r'
+            # what the rider feels: |F|/(m g) with F/m = g z-hat - r' Omega^2 r'-hat (eq. 32)
+            "load": np.hypot(1.0, wheel.g_load(theta, alpha, a, r, k))}
+
+
+def _load(orb):
+    """The load |F| / (m g) of horizontal_orbit's rows, from the centre's
+    acceleration in g (eq. 36) and gravity, orthogonal to it (eq. 32)."""
+    return np.hypot(1.0, orb["accel_g"])
 
 
 def _brackets_sign_change(theta, roots, fun, tol=EPS):
@@ -75,7 +83,7 @@ def test_boundaries_satisfy_their_equations(a, r, k, outside, mu, max_g):
         left, right = _brackets_sign_change(THETA, b["mu"], m)
         assert left.size > 10 and np.all(left * right < 0)
     if np.isfinite(max_g):
-        gl = lambda t, al: phys("g")(t, al) - max_g  # noqa: E731
+        gl = lambda t, al: phys("load")(t, al) - max_g  # noqa: E731
         left, right = _brackets_sign_change(THETA, b["max_g"], gl)
         assert left.size > 10 and np.all(left * right < 0)
 
@@ -96,7 +104,7 @@ def test_boundaries_none_missed_against_dense_scan(outside):
         "eq0": ph["fit"],
         "eq33": np.where(real, ph["normal"], np.nan),
         "mu": np.where(real & (ph["normal"] > 0), ph["mu"] - mu, np.nan),
-        "max_g": np.where(real & (ph["normal"] > 0), ph["g"] - max_g, np.nan),
+        "max_g": np.where(real & (ph["normal"] > 0), ph["load"] - max_g, np.nan),
     }
     for name, val in checks.items():
         for i in range(theta.size):
@@ -115,7 +123,7 @@ def _intervals_match_feasibility(a, r, k, outside, mu, max_g, theta, n_alpha):
     orb = wheel.horizontal_orbit(theta[:, None], al, a, r, k, G, outside, mu)
     ok = orb["status"] == Status.OK
     if np.isfinite(max_g):
-        ok &= orb["accel_g"] <= max_g
+        ok &= _load(orb) <= max_g
     inside = iv.contains(al)
     # points within EPS of an interval end are ambiguous (the end is a boundary)
     ends = np.concatenate([iv.lo, iv.hi], axis=-1)
@@ -282,7 +290,7 @@ def _brute_force_highest(a, r, k, mu, max_g, near, outside=False):
     (0.05 deg x 0.01 deg, 0 < alpha < 90 deg) from there to ``near`` + 0.5 deg."""
     def first(th, al):
         orb = wheel.horizontal_orbit(th[:, None], al[None, :], a, r, k, G, outside, mu)
-        ok = (orb["status"] == Status.OK) & (orb["accel_g"] <= max_g)
+        ok = (orb["status"] == Status.OK) & (_load(orb) <= max_g)
         rows = np.nonzero(ok.any(axis=1))[0]
         return th[rows[0]] if rows.size else np.inf
     start = np.rad2deg(near) - 5.0
@@ -293,21 +301,24 @@ def _brute_force_highest(a, r, k, mu, max_g, near, outside=False):
 
 @pytest.mark.parametrize("mu, max_g", [(1.0, 5.0), (2.0, 10.0), (np.inf, 3.0)])
 def test_highest_orbit_closed_form_and_brute_force(mu, max_g):
-    """docs/limits.md: with a g-limit G and friction mu the highest orbit is
-    theta* = pi/2 + atan(1/G) - atan(mu), where r' Omega^2 = G g."""
+    """docs/limits.md: with a load limit L and friction mu the highest orbit
+    is theta* = pi/2 + atan(1/G) - atan(mu), where r' Omega^2 = G g and the
+    load sqrt(1 + G^2) = L (the contact force leans in from the horizontal
+    by psi, tan psi = 1/G, and its size is m g / sin psi)."""
     h = region.highest_orbit(A, R, K, G, mu=mu, max_g=max_g)
     assert h.found
-    expected = np.pi / 2 + math.atan(1 / max_g) - math.atan(mu)
+    accel = math.sqrt(max_g ** 2 - 1)
+    expected = np.pi / 2 + math.atan(1 / accel) - math.atan(mu)
     assert h.theta == pytest.approx(expected, abs=1e-9)
     if mu != 2.0:
         brute = _brute_force_highest(A, R, K, mu, max_g, h.theta)
         assert h.theta - 1e-9 <= brute <= h.theta + deg(0.5)
-    # the limiting orbit runs at the g-limit, on the friction limit
+    # the limiting orbit runs at the load limit, on the friction limit
     orb = wheel.horizontal_orbit(h.theta_bracket[1], h.alpha, A, R, K, G)
-    assert orb["accel_g"] == pytest.approx(max_g, rel=1e-6)
+    assert _load(orb) == pytest.approx(max_g, rel=1e-6) and orb["load_g"] == pytest.approx(max_g, rel=1e-6)
     if np.isfinite(mu):
         assert orb["mu_required"] == pytest.approx(mu, rel=1e-6)
-    assert h.speed == pytest.approx(np.sqrt(max_g * G * abs(orb["r_prime"])), rel=1e-6)
+    assert h.speed == pytest.approx(np.sqrt(accel * G * abs(orb["r_prime"])), rel=1e-6)
     assert h.speed == pytest.approx(orb["v_cm"], rel=1e-6)
 
 
