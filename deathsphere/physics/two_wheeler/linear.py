@@ -113,25 +113,58 @@ def _hurwitz(m: BenchmarkMatrices, speed):
     return a1 * a2 * a3 - a0 * a3**2 - a1**2 * a4
 
 
-def _root(function, low, high, samples=200):
-    """The first sign change of function on [low, high], refined by Brent's method."""
+def _roots(function, low, high, samples=200):
+    """Every sign change of function on [low, high] sampled at ``samples``
+    speeds, each refined by Brent's method, in increasing order."""
     speeds = np.linspace(low, high, samples)
     values = np.array([function(v) for v in speeds])
     change = np.nonzero(np.sign(values[:-1]) != np.sign(values[1:]))[0]
-    if change.size == 0:
-        return float("nan")
-    k = change[0]
-    return brentq(function, speeds[k], speeds[k + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps)
+    return [brentq(function, speeds[k], speeds[k + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps) for k in change]
+
+
+def _root(function, low, high, samples=200):
+    """The first sign change of function on [low, high], refined by Brent's method."""
+    roots = _roots(function, low, high, samples)
+    return roots[0] if roots else float("nan")
+
+
+#: A pair of eigenvalues is on the imaginary axis at a Hurwitz root when its
+#: real parts are below this fraction of the largest eigenvalue's size, and
+#: it is a complex pair (an oscillation) when its imaginary parts are above it.
+AXIS_RTOL = 1e-6
+
+
+def _weave_crossing(m: BenchmarkMatrices, speed) -> bool:
+    """Whether a complex pair of eigenvalues sits on the imaginary axis at
+    ``speed`` and lies left of it just above: the weave becoming stable.  The
+    Hurwitz determinant also vanishes wherever any two eigenvalues sum to
+    zero (a real pair +-x, as the Browser bicycle has at 0.51 m/s), which is
+    no crossing at all."""
+    at, above = eigenvalues(m, speed), eigenvalues(m, speed * (1 + 1e-6) + 1e-9)
+    scale = np.max(np.abs(at))
+    on_axis = (np.abs(at.real) <= AXIS_RTOL * scale) & (np.abs(at.imag) > AXIS_RTOL * scale)
+    if not on_axis.any():
+        return False
+    # the pair just above the root: the complex eigenvalues nearest the axis
+    frequency = np.abs(at.imag[on_axis]).max()
+    near = np.abs(np.abs(above.imag) - frequency) <= 1e-3 * scale + 1e-6 * frequency
+    return bool(near.any() and above.real[near].max() < 0.0)
 
 
 def weave_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
     """The speed where the weave pair crosses into the left half plane
-    (Meijaard et al. 2007: 4.29238253634111 m/s for Table 1), by
-    Brent's method on the Hurwitz determinant; nan if none in [low, high].
+    (Meijaard et al. 2007: 4.29238253634111 m/s for Table 1 at g = 9.81),
+    by Brent's method on the Hurwitz determinant: the first of its roots in
+    [low, high] at which a complex pair of eigenvalues crosses the imaginary
+    axis into the left half plane (a root where two real eigenvalues sum to
+    zero is passed over); nan if none.
 
     Beyond the paper: docs/two-wheeler.md sec. 7.
     """
-    return _root(lambda v: _hurwitz(m, v), low, high)
+    for speed in _roots(lambda v: _hurwitz(m, v), low, high):
+        if _weave_crossing(m, speed):
+            return speed
+    return float("nan")
 
 
 def capsize_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
