@@ -300,10 +300,11 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
             emit([summary if summary_only else series], view_format(output), output=output)
             stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
         elif view:
-            from deathsphere.viewer.two_wheeler_scene import write_two_wheeler_view
+            from deathsphere.viewer import write_scene
+            from deathsphere.viewer.two_wheeler_scene import two_wheeler_scene
 
             with progress("frames", None) as bar:
-                size = write_two_wheeler_view(output, series, summary, frames[0], progress=bar.update)
+                size = write_scene(output, two_wheeler_scene(series, summary, frames[0]), progress=bar.update)
             stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         else:
             from deathsphere.render.figures import PlotExtraMissing
