@@ -285,8 +285,7 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
 
     table_file = output is not None and view_format(output) in TABLE_OUTPUTS
     if options.get("flat") and output is not None and view_format(output) in ("gif", "mp4"):
-        fail(f"a run on flat ground is drawn as a page (.html), not a loop (.{view_format(output)}): the loop "
-             "draws the globe")
+        fail(f"a run on flat ground is drawn as a page (.html), not a loop (.{view_format(output)})")
     view = output is not None and not table_file and _preflight_output(output)
     with progress("simulate", 100) as bar:
         series, summary, *frames = simulate_two_wheeler(
