@@ -136,10 +136,11 @@ def panel_text(scene: Scene, t: float, factor: float) -> str:
         for r in panel.panel:
             if not r.loop:
                 continue
-            if r.join and len(lines) > 1:
-                lines[-1] += r.join + _readout_text(r, i)
+            words = f"{r.label} = {_readout_text(r, i)}" if r.label else _readout_text(r, i)
+            if (r.join or r.loop_join) and len(lines) > 1:
+                lines[-1] += (r.loop_join or r.join) + (words if r.loop_join else _readout_text(r, i))
             else:
-                lines.append(f"{r.label or ' '} = {_readout_text(r, i)}".lstrip(" ="))
+                lines.append(words)
     pair = scene.pair
     if pair is not None and abs(t - pair["t"]) <= pair["near"]:
         lines.append(f"closest: {pair['a']} \u2013 {pair['b']} {pair['clearance']:.3f} m at t = {pair['t']:.3f} s")
@@ -173,8 +174,9 @@ def _ground_lines(ax, ground: dict):
         parallels = list(range(every, rho.size - 1, every))
     widest = int(np.argmax(rho))
     s = np.linspace(0, 2 * np.pi, 121)
-    for ph in np.arange(0, 2 * np.pi - 1e-9, np.pi / 6):            # meridians
-        ax.plot(rho * np.cos(ph), rho * np.sin(ph), z, color=_GRID, lw=0.6, alpha=0.55)
+    for ph in np.arange(0, np.pi - 1e-9, np.pi / 6):                # meridians, each with its opposite in one line
+        ring = np.concatenate((rho, -rho[::-1]))
+        ax.plot(ring * np.cos(ph), ring * np.sin(ph), np.concatenate((z, z[::-1])), color=_GRID, lw=0.6, alpha=0.55)
     for k in sorted(set(parallels) | ({widest} if 0 < widest < rho.size - 1 else set())):
         marked = k == widest
         ax.plot(rho[k] * np.cos(s), rho[k] * np.sin(s), np.full_like(s, z[k]), color=_MARKED if marked else _GRID,

@@ -48,10 +48,12 @@ def _panel(geo: dict, theta, alpha, mu_available) -> list:
     of mass's (ride's v_cm), theta and alpha from the time series."""
     speed = geo.get("rider_speed", geo["speed"])
     return [Readout("speed", "speed", " m/s", 2, speed),
-            Readout("speed_km_h", "", " km/h", 1, 3.6 * speed if "rider_speed" in geo else geo["speed_km_h"]),
+            Readout("speed_km_h", "", " km/h", 1, 3.6 * speed if "rider_speed" in geo else geo["speed_km_h"],
+                    loop_join=" = "),
             Readout("g_load", "g-load", " g", 2, geo["g_load"]),
             Readout("mu", "\u03bc needed", "", 3, geo["mu_required"]),
-            Readout("mu_available", "\u03bc available", "", 3, value=mu_available, none_text="no limit"),
+            Readout("mu_available", "\u03bc available", "", 3, value=mu_available, none_text="no limit",
+                    loop_join=", "),
             Readout("force_angle", "force \u2220 normal", "\u00b0", 1, geo["force_angle_deg"]),
             Readout("theta", "\u03b8 / \u03b1", "\u00b0", 2, theta, loop=False),
             Readout("alpha", "\u03b1", "\u00b0", 2, alpha, join=" / ", loop=False),

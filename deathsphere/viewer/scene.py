@@ -74,7 +74,9 @@ class Readout:
     constant ``value`` (None: ``none_text``); shown as label, value with
     ``digits`` decimals, and unit.  ``join`` puts it on the previous
     readout's row after that separator; ``note`` in the panel's small
-    line ("label = value unit"); ``loop`` in a GIF / MP4 loop's panel too."""
+    line ("label = value unit"); ``loop`` in a GIF / MP4 loop's panel too,
+    on the previous line after ``loop_join`` if that is given (a loop's
+    panel is drawn every frame: fewer lines, less to draw)."""
 
     key: str
     label: str
@@ -86,6 +88,7 @@ class Readout:
     join: str = ""
     note: bool = False
     loop: bool = True
+    loop_join: str = ""
 
     def at(self, i: int) -> float | None:
         return float(self.values[i]) if self.values is not None else self.value
