@@ -208,9 +208,10 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
     if fails or monte_carlo is not None:
         falls, summary = _falls(result, fails, monte_carlo, seed, scheduler)
     if drawn:
-        from deathsphere.viewer.show_scene import write_act_view
+        from deathsphere.viewer import write_scene
+        from deathsphere.viewer.show_scene import act_scene
 
-        size = write_act_view(output, result, falls=falls if fails else None)
+        size = write_scene(output, act_scene(result, falls if fails else None))
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         return
     tables = {"riders": result.riders, "pairs": result.pairs, "falls": falls, "summary": summary}

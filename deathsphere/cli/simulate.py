@@ -285,8 +285,7 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
 
     table_file = output is not None and view_format(output) in TABLE_OUTPUTS
     if options.get("flat") and output is not None and view_format(output) in ("gif", "mp4"):
-        fail(f"a run on flat ground is drawn as a page (.html), not a loop (.{view_format(output)}): the loop "
-             "draws the globe")
+        fail(f"a run on flat ground is drawn as a page (.html), not a loop (.{view_format(output)})")
     view = output is not None and not table_file and _preflight_output(output)
     with progress("simulate", 100) as bar:
         series, summary, *frames = simulate_two_wheeler(
@@ -300,10 +299,11 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
             emit([summary if summary_only else series], view_format(output), output=output)
             stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
         elif view:
-            from deathsphere.viewer.two_wheeler_scene import write_two_wheeler_view
+            from deathsphere.viewer import write_scene
+            from deathsphere.viewer.two_wheeler_scene import two_wheeler_scene
 
             with progress("frames", None) as bar:
-                size = write_two_wheeler_view(output, series, summary, frames[0], progress=bar.update)
+                size = write_scene(output, two_wheeler_scene(series, summary, frames[0]), progress=bar.update)
             stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         else:
             from deathsphere.render.figures import PlotExtraMissing

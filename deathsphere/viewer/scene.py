@@ -1,11 +1,23 @@
-"""The bodies of a simulated run, ready to draw: the frame geometry of
-:func:`deathsphere.simulation.frames.body_frames` (placed so that nothing
-aliases between frames), the readouts' numbers at every frame, the trail,
-the events, and the playback factor (beyond the paper; docs/simulation.md,
-"3-D view").  Shared by the HTML viewer and the GIF / MP4 loop.
+"""The one thing every 3-D view draws: a scene (docs/simulation.md, "3-D
+view"; docs/show.md sec. 8; docs/two-wheeler.md sec. 10.1).
 
-Nothing here is physics: every number is the simulation's (its frames or
-its time series), picked, interpolated between rows or converted in unit.
+A scene is a ground and, per body, a track.  The ground is data: the globe
+``{"kind": "sphere", "radius": r}``, flat ground ``{"kind": "plane",
+"centre": [x, y], "half_width": w}``, or any surface of revolution about z
+given by its meridian ``{"kind": "revolution", "rho": [...], "z": [...]}``
+(a drum, a cone): the page and the loop draw each from that description,
+not from the kind of run.
+
+A track is named point sets over time (the contact, wheel rims, frame,
+rider, force vectors ...) at its frames, paths on time axes of their own
+(a trail, a fall), its status and event, the panel's readouts (numbers
+with labels and units) and how it is drawn: a list of items, each a
+drawing primitive naming the points it joins (:data:`DRAW_KINDS`).  Body
+shapes are items, not code paths of the viewer.
+
+Nothing here is physics: the builders (:mod:`~deathsphere.viewer.orbit_scene`,
+:mod:`~deathsphere.viewer.two_wheeler_scene`, :mod:`~deathsphere.viewer.show_scene`)
+pick the simulation's own numbers.
 """
 
 from __future__ import annotations
@@ -15,62 +27,101 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from deathsphere.table import Table
+__all__ = ["Scene", "Track", "Readout", "sphere_ground", "plane_ground", "revolution_ground", "ground_extent",
+           "frame_indices", "playback_factor", "slow_motion_words", "PLAYBACK_FACTORS", "EVENT_STATUSES",
+           "DRAW_KINDS"]
 
-__all__ = ["BodyScene", "build_scenes", "frame_indices", "playback_factor", "slow_motion_words",
-           "MAX_FRAMES", "TRAIL_POINTS", "PLAYBACK_FACTORS", "PANEL_COLUMNS", "EVENT_STATUSES"]
-
-#: at most this many frames per body are kept, the last ones (~170 bytes a
-#: frame in the page: bounds its size under 10 MB)
-MAX_FRAMES = 40_000
-#: at most this many points of the contact point's trail (from t = 0)
-TRAIL_POINTS = 6000
 #: the playback factors offered (simulated seconds per second shown), from
 #: real time down: a fast run plays at the largest that does not alias
 PLAYBACK_FACTORS = (10.0, 5.0, 2.0, 1.0) + tuple(
     1.0 / (m * 10.0 ** e) for e in range(4) for m in (1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10) if m * 10 ** e > 1)
 #: statuses that end a run at an event of the simulation
 EVENT_STATUSES = ("contact_lost", "slips", "failed")
+#: the drawing primitives a track's items name (their keys: docs/simulation.md, "3-D view")
+DRAW_KINDS = ("wheel", "ball", "chain", "ring", "dot", "path", "arrow", "capsule", "cross", "label")
 
-#: readout read from the time series (interpolated between rows to the
-#: frames; the other readouts are the frames' own)
-PANEL_COLUMNS = {"theta": "theta_deg", "alpha": "alpha_deg"}
-#: readout -> frame-geometry key it is
-FRAME_PANEL = {"speed": "speed", "speed_km_h": "speed_km_h", "g_load": "g_load", "mu": "mu_required", "normal": "normal",
-               "friction": "friction_magnitude", "force_angle": "force_angle_deg"}
+
+def sphere_ground(radius: float) -> dict:
+    """The globe of radius r [m], centred at the origin."""
+    return {"kind": "sphere", "radius": float(radius)}
+
+
+def plane_ground(centre, half_width: float) -> dict:
+    """Flat ground z = 0: the square of ``half_width`` [m] about ``centre``
+    (x, y) that the run covers."""
+    return {"kind": "plane", "centre": [float(centre[0]), float(centre[1])], "half_width": float(half_width)}
+
+
+def revolution_ground(rho, z) -> dict:
+    """A surface of revolution about z, its meridian the table (rho, z) [m]
+    from one end to the other (a drum: rho constant; a cone: rho linear in z)."""
+    return {"kind": "revolution", "rho": [float(x) for x in rho], "z": [float(x) for x in z]}
+
+
+def ground_extent(ground: dict) -> float:
+    """Half the size of the ground [m]: what a camera frames."""
+    if ground["kind"] == "sphere":
+        return ground["radius"]
+    if ground["kind"] == "plane":
+        return ground["half_width"]
+    rho, z = np.asarray(ground["rho"]), np.asarray(ground["z"])
+    return float(max(rho.max(), 0.5 * np.ptp(z)))
 
 
 @dataclass
-class BodyScene:
-    """One body of the run: its description, and arrays at its F frames
-    (``t`` (F,), vectors (3, F), readouts (F,)).  ``geometry`` holds the
-    keys of :func:`deathsphere.simulation.frames.frame_geometry`; ``panel``
-    the readouts (:data:`PANEL_COLUMNS`, :data:`FRAME_PANEL`); ``trail``
-    (3, T) the contact point at the time series' rows (at most
-    :data:`TRAIL_POINTS`) with their times ``trail_t``; ``bounds`` the
-    most turn [rad] and centre step [r] allowed between frames (the
-    simulation's, handed over with its frames)."""
+class Readout:
+    """One number of the panel: ``values`` at the track's frames, or a
+    constant ``value`` (None: ``none_text``); shown as label, value with
+    ``digits`` decimals, and unit.  ``join`` puts it on the previous
+    readout's row after that separator; ``note`` in the panel's small
+    line ("label = value unit"); ``loop`` in a GIF / MP4 loop's panel too,
+    on the previous line after ``loop_join`` if that is given (a loop's
+    panel is drawn every frame: fewer lines, less to draw)."""
 
-    input_row: int
-    body: str
-    side: str
-    orbit: str
-    a: float
-    r: float
-    g: float
-    theta0_deg: float
-    alpha0_deg: float
-    period: float
-    status: str
-    reason: str
-    event_time: float | None
-    mu_available: float | None
+    key: str
+    label: str
+    unit: str = ""
+    digits: int = 2
+    values: np.ndarray | None = None
+    value: float | None = None
+    none_text: str = "-"
+    join: str = ""
+    note: bool = False
+    loop: bool = True
+    loop_join: str = ""
+
+    def at(self, i: int) -> float | None:
+        return float(self.values[i]) if self.values is not None else self.value
+
+
+@dataclass
+class Track:
+    """One body over time.  ``t`` (F,) its frame times [s]; ``points`` name
+    -> (3, F), or (3, K, F) for K points a frame (a rim); ``scalars`` name
+    -> (F,) (a spin angle); ``paths`` name -> (times (T,), points (3, T)) on
+    an axis of their own; ``draw`` its items (dicts, ``kind`` one of
+    :data:`DRAW_KINDS`); ``panel`` its :class:`Readout` rows, ``note`` the
+    panel's small print; ``event_time`` [s] (None: no event), shown from
+    then on with ``event_words`` at the point ``event_point``; ``motion``
+    the fastest turn and move per frame (``rate`` [rad/s], ``speed``
+    [m/s] (F,), ``bounds``: turn [rad], move [in ground sizes]) that
+    choose the playback factor; ``meta`` what else the page may say of
+    it (JSON-able)."""
+
+    name: str
     t: np.ndarray
-    geometry: dict = field(default_factory=dict)
-    panel: dict = field(default_factory=dict)
-    trail_t: np.ndarray = field(default_factory=lambda: np.zeros(0))
-    trail: np.ndarray = field(default_factory=lambda: np.zeros((3, 0)))
-    bounds: tuple = (0.5 * math.pi, 0.02)
+    points: dict = field(default_factory=dict)
+    scalars: dict = field(default_factory=dict)
+    paths: dict = field(default_factory=dict)
+    draw: list = field(default_factory=list)
+    panel: list = field(default_factory=list)
+    note: str = ""
+    status: str = "completed"
+    reason: str = ""
+    event_time: float | None = None
+    event_point: str = ""
+    motion: dict | None = None
+    meta: dict = field(default_factory=dict)
 
     @property
     def n_frames(self) -> int:
@@ -80,6 +131,53 @@ class BodyScene:
     def event_words(self) -> str:
         """'contact lost', 'slips', 'failed' ('' without an event)."""
         return self.status.replace("_", " ") if self.event_time is not None else ""
+
+    def readout(self, key: str) -> Readout:
+        return next(r for r in self.panel if r.key == key)
+
+
+@dataclass
+class Scene:
+    """A ground, the tracks on it, and how to show them: ``title``;
+    ``camera`` (``az``, ``el`` [deg], ``target`` [m], ``extent`` [m] the
+    half-size framed); ``follow`` (None, or the camera riding along: the
+    ``track`` index and its point ``target``, a ``heading`` pair of points
+    whose direction is ahead, the ground's normal at the first up (None:
+    the lab's axes), ``size`` [m] framed, and the
+    angles ``az``, ``el`` [deg] it starts at); ``playback`` the factor to
+    start at (None: chosen from the tracks' motion), ``loop_playback`` a GIF
+    / MP4 loop's (None: the same); ``focus`` the time [s] a loop too short
+    for the whole run centres on (None: it shows the run's end); ``legend`` rows
+    (``colour``, ``text``, optional ``toggle``); ``notes`` (``text``,
+    optional ``colour``) under the legend; ``moments`` (``label``, ``t``)
+    the controls jump to; ``pair`` two tracks marked at a moment (``tracks``,
+    ``t``, ``near`` [s]); ``fall`` (``track``, ``outcome``)."""
+
+    ground: dict
+    tracks: list
+    title: str = ""
+    camera: dict = field(default_factory=dict)
+    follow: dict | None = None
+    playback: float | None = None
+    loop_playback: float | None = None
+    focus: float | None = None
+    legend: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
+    moments: list = field(default_factory=list)
+    pair: dict | None = None
+    fall: dict | None = None
+
+    @property
+    def drawn(self) -> list:
+        return [s for s in self.tracks if s.n_frames]
+
+    @property
+    def t_start(self) -> float:
+        return min((float(s.t[0]) for s in self.drawn), default=0.0)
+
+    @property
+    def t_end(self) -> float:
+        return max((float(s.t[-1]) for s in self.drawn), default=0.0)
 
 
 def frame_indices(n: int, max_points: int) -> np.ndarray:
@@ -92,27 +190,25 @@ def frame_indices(n: int, max_points: int) -> np.ndarray:
     return idx if idx[-1] == n - 1 else np.append(idx, n - 1)
 
 
-def _float(x):
-    x = float(x)
-    return x if math.isfinite(x) else None
-
-
-def playback_factor(scenes: list[BodyScene], frame_interval: float, t_from: float = -math.inf) -> float:
-    """The largest of :data:`PLAYBACK_FACTORS`, at most 1 (real time), at
-    which frames ``frame_interval`` [s] apart on screen show every body
-    turning at most a quarter turn and its centre moving at most 2 % of r
-    from one to the next, over the frames from ``t_from`` on: the fastest
-    rotation |w| and centre speed of the simulation's frames decide."""
-    need = 1.0
-    for s in scenes:
+def playback_factor(scene: Scene, frame_interval: float, t_from: float = -math.inf) -> float:
+    """The scene's own factor if it has one; else the largest of
+    :data:`PLAYBACK_FACTORS`, at most 1 (real time), at which frames
+    ``frame_interval`` [s] apart on screen show every track turning at most
+    its bound and moving at most its bound (a fraction of the ground's
+    size) from one to the next, over the frames from ``t_from`` on: the
+    fastest rotation |w| and speed of the simulation's frames decide."""
+    if scene.playback is not None:
+        return scene.playback
+    need, size = 1.0, ground_extent(scene.ground)
+    for s in scene.tracks:
         keep = s.t >= t_from
-        if s.n_frames < 2 or not keep.any():
+        if s.motion is None or s.n_frames < 2 or not keep.any():
             continue
-        rate = np.nanmax(s.geometry["rate"][keep])
-        speed = np.nanmax(s.geometry["speed"][keep])
+        rate = np.nanmax(s.motion["rate"][keep])
+        speed = np.nanmax(s.motion["speed"][keep])
         with np.errstate(divide="ignore"):
-            turn, move = s.bounds
-            need = min(need, turn / (rate * frame_interval), move * s.r / (speed * frame_interval))
+            turn, move = s.motion["bounds"]
+            need = min(need, turn / (rate * frame_interval), move * size / (speed * frame_interval))
     return max([f for f in PLAYBACK_FACTORS if f <= need], default=PLAYBACK_FACTORS[-1])
 
 
@@ -123,60 +219,3 @@ def slow_motion_words(factor_: float) -> str:
     if factor_ < 1.0:
         return f"slow motion \u00d7{1 / factor_:g}"
     return f"{factor_:g}\u00d7 real time"
-
-
-def build_scenes(series: Table, summary: Table, frames: dict, *, max_frames: int = MAX_FRAMES) -> list[BodyScene]:
-    """One :class:`BodyScene` per summary row (a body that could not start,
-    status no_fit / no_orbit, has zero frames).
-
-    Parameters
-    ----------
-    series, summary : the run's Tables (:data:`deathsphere.simulation.SERIES_COLUMNS`,
-        :data:`deathsphere.simulation.SUMMARY_COLUMNS`)
-    frames : :meth:`deathsphere.simulation.Simulation.view_frames`: per
-        ``input_row``, the frame times ``t`` (the body's rows of ``series``
-        and the frames placed between them) and the geometry at them
-    max_frames : frames kept per body, the last ones (the event is the
-        last); the trail still goes back to t = 0
-    """
-    rows = np.asarray(series["input_row"])
-    scenes = []
-    for i, row in enumerate(np.asarray(summary["input_row"])):
-        sel = np.flatnonzero(rows == row)
-        t_rows = np.asarray(series["t_s"], dtype=np.float64)[sel]
-        geo = frames.get(int(row))
-        if sel.size and (geo is None or geo["t"][0] != t_rows[0] or geo["t"][-1] != t_rows[-1]
-                         or np.any(np.diff(geo["t"]) <= 0)):
-            raise ValueError("frames do not span the time series' rows of their body")
-        status = str(summary["status"][i])
-        ev = _float(summary["event_time_s"][i]) if status in EVENT_STATUSES else None
-        if ev is not None and sel.size:
-            # the event is the run's last row: shown at the last frame,
-            # whatever the rounding of the times
-            ev = float(t_rows[-1])
-        mu_av = _float(summary["mu_available"][i]) if "mu_available" in summary.names else None
-        scene = BodyScene(
-            input_row=int(row), body=str(summary["body"][i]), side=str(summary["side"][i]),
-            orbit=str(summary["orbit"][i]), a=float(summary["a_m"][i]), r=float(summary["r_m"][i]),
-            g=float(summary["g_m_s2"][i]),
-            theta0_deg=float(summary["theta_deg"][i]), alpha0_deg=float(summary["alpha_deg"][i]),
-            period=float(summary["period_s"][i]), status=status, reason=str(summary["reason"][i]),
-            event_time=ev, mu_available=mu_av, t=np.zeros(0))
-        if sel.size:
-            keep = slice(max(0, geo["t"].size - max_frames), None)
-            scene.t = geo["t"][keep]
-            scene.bounds = tuple(geo["bounds"])
-            scene.geometry = {k: np.asarray(v)[..., keep] for k, v in geo.items()
-                              if k not in ("t", "sample", "bounds")}
-            scene.panel = {k: np.interp(scene.t, t_rows, np.asarray(series[col], dtype=np.float64)[sel])
-                           for k, col in PANEL_COLUMNS.items()}
-            scene.panel.update({k: scene.geometry[key] for k, key in FRAME_PANEL.items()})
-            if "rider_speed" in scene.geometry:  # a machine reads out its centre of mass's speed (ride's v_cm)
-                v = scene.geometry["rider_speed"]
-                scene.panel.update({"speed": v, "speed_km_h": v * 3.6})
-            on_row = np.isin(geo["t"], t_rows)
-            trail_t, trail = geo["t"][on_row], geo["contact"][:, on_row]
-            pick = frame_indices(trail_t.size, TRAIL_POINTS)
-            scene.trail_t, scene.trail = trail_t[pick], trail[:, pick]
-        scenes.append(scene)
-    return scenes

@@ -14,21 +14,15 @@ between two of them is within a millimetre or so of the rider's path.
 
 from __future__ import annotations
 
-import base64
 import math
-from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.writers.atomic import atomic_file
+from deathsphere.viewer.scene import Scene, Track, sphere_ground
 
-__all__ = ["ActScene", "act_scene", "act_data", "render_act_html", "write_act_view", "frame_step", "MAX_FRAMES",
-           "DATA_MARK"]
+__all__ = ["act_scene", "frame_step", "MAX_FRAMES", "MAX_MOVE_R", "CAMERA", "PLAYBACK", "LOOP_PLAYBACK"]
 
-#: where the template takes the data (a JavaScript expression)
-DATA_MARK = "/*__DEATHSPHERE_ACT__*/null"
 #: at most this many frames over the act (~36 bytes a rider a frame in the page)
 MAX_FRAMES = 20_000
 #: the most a rider's point moves between frames, in units of the globe's radius
@@ -39,28 +33,17 @@ PATH_POINTS = 64
 FALL_AFTER_S = 0.3
 #: standard gravity [m/s^2], when the result does not say its own
 G0 = 9.80665
+#: (elevation, azimuth) [deg] of the camera
+CAMERA = (22.0, -52.0)
+#: simulated seconds per second shown as the page starts, and as the loop
+#: plays (riders at 10 m/s move 0.2 m a frame of its 25 a second)
+PLAYBACK = 0.25
+LOOP_PLAYBACK = 0.5
+_PAIR = "#ff3b30"
+_FALL = "#ff6b5b"
 #: the riders' colours (the pair of least clearance is drawn in red over them)
 COLOURS = ("#4e9af1", "#f5b041", "#58d68d", "#af7ac5", "#48c9b0", "#f1948a", "#f7dc6f", "#85c1e9", "#d7bde2",
            "#a3e4d7", "#edbb99", "#aab7b8")
-
-
-@dataclass
-class ActScene:
-    """What the view draws: the globe's radius ``r`` [m], frame times ``t``
-    (F,), per rider its name, envelope radius [m] and points (3, F)
-    (contact, head, centre of mass); the pair of least clearance; the fall."""
-
-    r: float
-    g: float
-    t: np.ndarray
-    names: list
-    radii: list
-    lanes: list
-    points: dict = field(default_factory=dict)      # name -> {"contact","head","com"} (3, F)
-    pair: dict | None = None
-    fall: dict | None = None
-    title: str = ""
-    colours: list = field(default_factory=list)
 
 
 def _plan_number(result, *path, default=None):
@@ -149,11 +132,11 @@ def _lane_of(result, name: str) -> str:
     return str(riders["lane"][names.index(name)]) if name in names else "horizontal"
 
 
-def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAMES) -> ActScene:
-    """The act's frames: the riders' points over the act at a step that
-    keeps every point within :data:`MAX_MOVE_R` r of the last (at most
-    ``max_frames``), the pair of least clearance and the first fall of
-    ``falls`` (the table of :meth:`ShowResult.fall`)."""
+def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAMES) -> Scene:
+    """The act's scene: one track per rider, his points over the act at a
+    step that keeps every point within :data:`MAX_MOVE_R` r of the last (at
+    most ``max_frames``), the pair of least clearance and the first fall of
+    ``falls`` (the table of :meth:`ShowResult.fall`) on its rider's track."""
     duration = float(result.duration_s)
     probe_t = np.linspace(0.0, duration, 2001)
     probe = result.positions(probe_t)
@@ -174,16 +157,84 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
         t = np.unique(np.append(t, pair["t"]))
     positions = result.positions(t)
     riders = result.riders
-    names = [str(n) for n in riders["name"]]
+    names = [str(x) for x in riders["name"]]
+    lanes = [str(x) for x in riders["lane"]]
     widths = _widths(result, names)
-    scene = ActScene(r=r, g=g, t=t, names=names, radii=[0.5 * w for w in widths],
-                     lanes=[str(x) for x in riders["lane"]],
-                     points={name: {k: np.asarray(positions[name][k], dtype=np.float64)
-                                    for k in ("contact", "head", "com")} for name in names},
-                     pair=pair, fall=fall)
-    scene.title = _title(scene)
-    scene.colours = [COLOURS[k % len(COLOURS)] for k in range(len(names))]
+    near = max(0.15, 0.01 * float(t[-1] - t[0]))
+    tracks = []
+    for k, name in enumerate(names):
+        colour = COLOURS[k % len(COLOURS)]
+        in_pair = pair is not None and name in (pair["a"], pair["b"])
+        track = Track(name=name, t=t, points={key: np.asarray(positions[name][key], dtype=np.float64)
+                                              for key in ("contact", "head", "com")},
+                      meta={"lane": lanes[k], "radius": 0.5 * widths[k], "colour": colour})
+        track.draw = _rider_draw(track, in_pair, pair, near)
+        if fall is not None and fall["rider"] == name:
+            _add_fall(track, fall)
+        tracks.append(track)
+    scene = Scene(ground=sphere_ground(r), tracks=tracks, playback=PLAYBACK, loop_playback=LOOP_PLAYBACK,
+                  camera={"el": CAMERA[0], "az": CAMERA[1], "target": [0.0, 0.0, 0.0], "extent": 1.05 * r},
+                  legend=[{"colour": tr.meta["colour"], "text": f"{tr.name} ({tr.meta['lane']})"} for tr in tracks])
+    scene.title = _title(len(names), r, float(t[-1]), pair)
+    if pair is not None:
+        scene.pair = {"tracks": [names.index(pair["a"]), names.index(pair["b"])], "t": pair["t"], "near": near,
+                      **pair}
+        scene.notes.append({"text": f"Least clearance: {pair['a']} \u2013 {pair['b']} {pair['clearance']:.3f} m at "
+                                    f"t = {pair['t']:.3f} s ({pair['verdict']}), drawn in red."})
+        scene.moments.append({"label": "Closest moment", "t": pair["t"]})
+    if fall is not None:
+        scene.fall = {"track": names.index(fall["rider"]), **{k: v for k, v in fall.items()
+                                                               if k not in ("path", "path_t", "land")}}
+        scene.notes.append({"text": _fall_words(fall), "colour": "#ff9b8f"})
+        if "path" in fall:
+            scene.moments.append({"label": "The fall", "t": fall["t_fail"]})
+        scene.focus = fall["t_fail"]
+    elif pair is not None:
+        scene.focus = pair["t"]
     return scene
+
+
+def _rider_draw(track: Track, in_pair: bool, pair: dict | None, near: float) -> list:
+    """A rider: his envelope, a capsule from the contact to the head, and
+    his name; the pair of least clearance ringed, red around its moment."""
+    capsule = {"kind": "capsule", "name": track.name, "points": ["contact", "head"],
+               "radius": track.meta["radius"], "colour": track.meta["colour"], "print": track.meta["colour"]}
+    if in_pair:
+        capsule.update({"halo": "rgba(255,59,48,0.55)", "highlight": {"colour": _PAIR, "from": pair["t"] - near,
+                                                                       "until": pair["t"] + near}})
+    return [capsule, {"kind": "label", "name": track.name, "point": "head", "text": track.name}]
+
+
+def _add_fall(track: Track, fall: dict) -> None:
+    """The fall on its rider's track: its outcome, and where he falls the
+    path from contact lost to the landing point (the envelope gives way to
+    his centre of mass on it), the landing marked from the landing on."""
+    track.status = fall["outcome"]
+    track.event_time = fall["t_fail"]
+    track.event_point = "head"
+    if "path" not in fall:
+        return
+    track.paths["fall"] = (fall["path_t"], fall["path"])
+    for item in track.draw:
+        item["until"] = fall["t_lost"]
+    radius = track.meta["radius"]
+    track.draw += [{"kind": "path", "name": track.name, "path": "fall", "whole": True, "colour": "rgba(255,107,91,0.9)",
+                    "print": _FALL, "width": 2, "dash": [6, 4], "from": fall["t_lost"]},
+                   {"kind": "dot", "name": track.name, "path": "fall", "radius": radius, "min_px": 2,
+                    "colour": _FALL, "print": _FALL, "from": fall["t_lost"]},
+                   {"kind": "label", "name": track.name, "path": "fall", "text": track.name, "from": fall["t_lost"]},
+                   {"kind": "cross", "name": track.name, "path": "fall", "colour": _FALL, "print": _FALL,
+                    "from": fall["t_land"]}]
+
+
+def _fall_words(fall: dict) -> str:
+    words = (f"{fall['rider']} drops to {math.floor(100 * fall['fraction'] + 0.5)} % of the speed at t = {fall['t_fail']:.3f} s: "
+             + fall["outcome"].replace("_", " "))
+    if "path" in fall:
+        words += (f"; leaves the wall at t = {fall['t_lost']:.3f} s, lands at t = {fall['t_land']:.3f} s at "
+                  f"{3.6 * fall['impact']:.1f} km/h"
+                  + (f"; falls into {', '.join(fall['hits'])}" if fall["hits"] else "; hits no one"))
+    return words + "."
 
 
 def _widths(result, names) -> list:
@@ -195,57 +246,9 @@ def _widths(result, names) -> list:
     return [float(lanes[name].width_m) for name in names]
 
 
-def _title(scene: ActScene) -> str:
-    words = f"{len(scene.names)} riders in a globe of {2 * scene.r:.2f} m, an act of {float(scene.t[-1]):.2f} s"
-    if scene.pair is not None:
-        words += (f"; least clearance {scene.pair['a']} – {scene.pair['b']} {scene.pair['clearance']:.3f} m "
-                  f"at t = {scene.pair['t']:.3f} s ({scene.pair['verdict']})")
+def _title(n: int, r: float, t_end: float, pair: dict | None) -> str:
+    words = f"{n} riders in a globe of {2 * r:.2f} m, an act of {t_end:.2f} s"
+    if pair is not None:
+        words += (f"; least clearance {pair['a']} \u2013 {pair['b']} {pair['clearance']:.3f} m "
+                  f"at t = {pair['t']:.3f} s ({pair['verdict']})")
     return words
-
-
-def _encode(x, dtype="<f4") -> str:
-    return base64.b64encode(np.ascontiguousarray(x, dtype=dtype).tobytes()).decode("ascii")
-
-
-def act_data(scene: ActScene) -> dict:
-    """The JSON-able data the page reads: vectors as little-endian float32
-    arrays in base64, frame-major x, y, z; times float64."""
-    riders = []
-    for k, name in enumerate(scene.names):
-        p = scene.points[name]
-        riders.append({"name": name, "colour": scene.colours[k], "radius": scene.radii[k],
-                       "lane": scene.lanes[k], **{key: _encode(p[key].T) for key in ("contact", "head", "com")}})
-    fall = None
-    if scene.fall is not None:
-        fall = {k: v for k, v in scene.fall.items() if k not in ("path", "path_t", "land")}
-        if "path" in scene.fall:
-            fall.update({"path": _encode(scene.fall["path"].T), "path_t": _encode(scene.fall["path_t"], "<f8"),
-                         "land": [float(x) for x in scene.fall["land"]]})
-    return {"format": "deathsphere-act/1", "title": scene.title, "r": scene.r, "g": scene.g,
-            "n": int(scene.t.size), "t": _encode(scene.t, "<f8"), "riders": riders, "pair": scene.pair,
-            "fall": fall}
-
-
-def render_act_html(scene: ActScene) -> str:
-    """The page's text (UTF-8): the template with the act's data."""
-    from deathsphere.viewer.html import filled_template
-
-    return filled_template("show_template.html", DATA_MARK, act_data(scene), "act view's")
-
-
-def write_act_view(output, result, falls: Table | None = None) -> int:
-    """Write the act's view to ``output`` (.html, .gif or .mp4 by its
-    extension); returns the file's size in bytes."""
-    from deathsphere.viewer import check_view_output
-
-    fmt = check_view_output(output)
-    scene = act_scene(result, falls)
-    if fmt == "html":
-        data = render_act_html(scene).encode("utf-8")
-        with atomic_file(output, "wb") as out:       # whole or not at all
-            out.write(data)
-        return len(data)
-    from deathsphere.viewer.show_animation import write_act_animation
-
-    write_act_animation(output, scene)
-    return Path(output).stat().st_size

@@ -1,4 +1,4 @@
-"""A two-wheeler's run in 3-D (``deathsphere simulate --machine
+"""The scene of a two-wheeler's run (``deathsphere simulate --machine
 benchmark-bicycle --steer free --output run.html|.gif|.mp4``;
 docs/two-wheeler.md sec. 10.1): the globe (or, on flat ground, the
 ground), both wheels' rims, the rear and front frames, the rider's head and
@@ -15,22 +15,15 @@ core's axes (z down, the benchmark's) to its own (z up) and keeps at most
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.viewer.html import _encode, decode_array
-from deathsphere.viewer.scene import EVENT_STATUSES, frame_indices
-from deathsphere.writers.atomic import atomic_file
+from deathsphere.viewer.html import decode_array
+from deathsphere.viewer.scene import EVENT_STATUSES, Readout, Scene, Track, frame_indices, plane_ground, sphere_ground
 
-__all__ = ["TwoWheelerScene", "two_wheeler_scene", "two_wheeler_data", "render_two_wheeler_html",
-           "write_two_wheeler_view", "decode_rim", "POINT_KEYS", "RIM_KEYS", "PANEL_COLUMNS", "MAX_FRAMES",
-           "PLAYBACK", "DATA_MARK"]
+__all__ = ["two_wheeler_scene", "decode_rim", "POINT_KEYS", "RIM_KEYS", "PANEL_COLUMNS", "MAX_FRAMES", "PLAYBACK"]
 
-#: where the template takes the data (a JavaScript expression)
-DATA_MARK = "/*__DEATHSPHERE_TWO_WHEELER__*/null"
 #: the points drawn at every frame, (3, F) each
 POINT_KEYS = ("P", "Q", "rear_wheel", "front_wheel", "rear_frame", "front_frame", "head", "steer_bottom",
               "steer_top", "bar_left", "bar_right")
@@ -40,6 +33,10 @@ RIM_KEYS = ("rear_rim", "front_rim")
 PANEL_COLUMNS = {"lean": "lean_surface_deg", "steer": "steer_deg", "theta": "theta_rear_deg",
                  "speed": "v_rear_m_s", "torque": "steer_torque_n_m", "normal_rear": "normal_rear_per_mass_m_s2",
                  "normal_front": "normal_front_per_mass_m_s2"}
+#: label and unit of each readout; theta only in a globe
+_READOUTS = {"lean": ("lean", "\u00b0"), "steer": ("steer", "\u00b0"), "theta": ("\u03b8 (rear)", "\u00b0"),
+             "speed": ("speed (rear)", " m/s"), "torque": ("steer torque", " N m"),
+             "normal_rear": ("normal, rear", " m/s\u00b2"), "normal_front": ("normal, front", " m/s\u00b2")}
 #: at most this many frames (rows of the series, evenly strided; ~1 kB a
 #: frame in the page, so it stays under 5 MB)
 MAX_FRAMES = 4000
@@ -49,41 +46,64 @@ PLAYBACK = 0.5
 #: the core's axes have z down (the benchmark's), the view's z up: turned
 #: half a turn about x, a rotation, so the bicycle is not mirrored
 _UP = np.array([1.0, -1.0, -1.0])
+#: (elevation, azimuth) [deg]: looking down into the globe, the wheels, in
+#: planes nearly along the wall, show as wheels rather than as edges; and
+#: riding along, from the bicycle's right rear and above
+CAMERA = (58.0, -62.0)
+FOLLOW = (50.0, -30.0)
+_FOLLOW_SCALE = math.cos(math.radians(19.0)) / 1.4
+
+#: the bicycle's pieces: rims, the frames as chains of their points, hubs,
+#: seat, head and contacts (page colours; ``print``: the loop's on white)
+DRAW = (
+    [{"kind": "path", "name": "paths", "point": "P", "colour": "rgba(95,211,255,0.9)", "print": "#1f9bd1", "width": 2.5},
+     {"kind": "path", "name": "paths", "point": "Q", "colour": "rgba(124,255,124,0.9)", "print": "#1e8449",
+      "width": 2.5}]
+    + [{"kind": "ring", "name": k, "points": k, "colour": "#e8c547", "print": "#d4a017", "width": 3.5} for k in RIM_KEYS]
+    + [{"kind": "chain", "name": "rear_frame", "points": ["rear_wheel", "steer_bottom", "steer_top", "rear_frame",
+                                                          "rear_wheel"], "colour": "#c77dff", "print": "#8e44ad",
+        "width": 4},
+       {"kind": "chain", "name": "front_frame", "points": ["steer_top", "steer_bottom", "front_wheel"],
+        "colour": "#ff9f1c", "print": "#e67e22", "width": 4},
+       {"kind": "chain", "name": "front_frame", "points": ["bar_left", "steer_top", "bar_right"], "colour": "#ff9f1c",
+        "print": "#e67e22", "width": 4},
+       {"kind": "chain", "name": "rider", "points": ["rear_frame", "head"], "colour": "#f4f4f4", "print": "#555555",
+        "width": 3}])
 
 
-@dataclass
-class TwoWheelerScene:
-    """What the view draws: the globe's radius ``r`` [m] (on ``flat``
-    ground: the half-width of the run's ground, what the camera frames),
-    frame times ``t`` (F,), the points (:data:`POINT_KEYS`, (3, F)) and rims
-    (:data:`RIM_KEYS`, (3, K, F)) in the view's axes (origin the globe's
-    centre or the ground's origin, z up), the readouts
-    (:data:`PANEL_COLUMNS`, (F,)), how the run ended, a title and the
-    playback factor the page and the loop start at."""
+def _dots(wheel: float) -> list:
+    """Hubs, seat, head and contacts, sized from the rear wheel's radius."""
+    return [{"kind": "dot", "name": "rear_frame", "point": "rear_wheel", "radius": 0.08 * wheel, "min_px": 3,
+             "colour": "#e8c547", "print": "#d4a017"},
+            {"kind": "dot", "name": "front_frame", "point": "front_wheel", "radius": 0.08 * wheel, "min_px": 3,
+             "colour": "#e8c547", "print": "#d4a017"},
+            {"kind": "dot", "name": "rear_frame", "point": "rear_frame", "radius": 0.1 * wheel, "min_px": 3,
+             "colour": "#c77dff", "print": "#8e44ad"},
+            {"kind": "dot", "name": "head", "point": "head", "radius": 0.33 * wheel, "min_px": 3,
+             "colour": "rgba(244,244,244,0.9)", "print": "#ffffff", "edge": "#c77dff", "print_edge": "#8e44ad"},
+            {"kind": "dot", "name": "contacts", "point": "P", "radius": 0.06 * wheel, "min_px": 3,
+             "colour": "#5fd3ff", "print": "#1f9bd1"},
+            {"kind": "dot", "name": "contacts", "point": "Q", "radius": 0.06 * wheel, "min_px": 3,
+             "colour": "#7cff7c", "print": "#1e8449"}]
 
-    r: float
-    t: np.ndarray
-    points: dict = field(default_factory=dict)
-    panel: dict = field(default_factory=dict)
-    status: str = "completed"
-    event_time: float | None = None
-    title: str = ""
-    playback: float = PLAYBACK
-    flat: bool = False
 
-    @property
-    def event_words(self) -> str:
-        """'contact lost', 'slips', 'failed' ('' without an event)."""
-        return self.status.replace("_", " ") if self.event_time is not None else ""
+LEGEND = [{"colour": "#e8c547", "text": "wheels (rims), hubs"},
+          {"colour": "#c77dff", "text": "rear frame: axle, head tube, seat (its mass centre)"},
+          {"colour": "#ff9f1c", "text": "front frame: handlebar, steer axis, fork to the axle"},
+          {"colour": "#f4f4f4", "text": "rider: seat to head"},
+          {"colour": "#5fd3ff", "text": "rear contact's path"},
+          {"colour": "#7cff7c", "text": "front contact's path"}]
 
 
 def _flat(summary: Table) -> bool:
+    """Whether the run is on flat ground: the summary's surface column is
+    the only place that says so; the scene's ground says it from here on."""
     return "surface" in summary.columns and str(summary["surface"][0]) == "flat"
 
 
-def _title(summary: Table) -> str:
+def _title(summary: Table, flat: bool) -> str:
     row = summary[0]
-    if not _flat(summary):
+    if not flat:
         words = (f"{row['machine']}: simulated from its steady turn at \u03b8 = {row['theta_deg']:.1f}\u00b0, "
                  f"{row['v_rear_m_s']:.3g} m/s, in a globe of {2 * row['r_m']:.3g} m")
     elif math.isfinite(float(summary["turn_radius_m"][0])):
@@ -97,7 +117,7 @@ def _title(summary: Table) -> str:
     return f"{words}; {kick}, {control}"
 
 
-def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames: int = MAX_FRAMES) -> TwoWheelerScene:
+def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames: int = MAX_FRAMES) -> Scene:
     """The scene of a run: ``series`` and ``summary`` as
     :func:`~deathsphere.api.two_wheelers.simulate_two_wheeler` returns them,
     ``frames`` its third item (``view=True``): ``t`` and the points at the
@@ -111,57 +131,41 @@ def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames
     status = str(summary["status"][0])
     event = float(t[-1]) if status in EVENT_STATUSES and math.isfinite(float(summary["t_event_s"][0])) else None
     flat = _flat(summary)
-    return TwoWheelerScene(r=_ground(points) if flat else float(summary["r_m"][0]), t=t[keep], points=points,
-                           panel={k: np.asarray(series[c], dtype=np.float64)[keep] for k, c in PANEL_COLUMNS.items()},
-                           status=status, event_time=event, title=_title(summary), flat=flat)
+    panel = [Readout(k, *_READOUTS[k], 2, np.asarray(series[c], dtype=np.float64)[keep],
+                     loop=k in ("lean", "steer"))
+             for k, c in PANEL_COLUMNS.items() if not (flat and k == "theta")]
+    wheel = float(np.linalg.norm(points["P"][:, 0] - points["rear_wheel"][:, 0]))
+    track = Track(name=str(summary["machine"][0]), t=t[keep], points=points, draw=list(DRAW) + _dots(wheel),
+                  panel=panel, status=status, event_time=event, event_point="P",
+                  note=("lean from the vertical" if flat else "lean from the wall's normal at the rear contact")
+                  + "; normal forces per unit mass")
+    if flat:
+        centre, half = _ground(points)
+        ground = plane_ground(centre, half)
+    else:
+        ground = sphere_ground(float(summary["r_m"][0]))
+        centre, half = (0.0, 0.0), float(summary["r_m"][0])
+    size = max(_apart(points, "head", "P"), _apart(points, "Q", "P"))
+    return Scene(ground=ground, tracks=[track], title=_title(summary, flat), playback=PLAYBACK, legend=list(LEGEND),
+                 camera={"el": CAMERA[0], "az": CAMERA[1], "target": [centre[0], centre[1], 0.0],
+                         "extent": 0.96 * half},
+                 follow={"track": 0, "target": "rear_frame", "heading": ["P", "Q"],
+                         "size": _FOLLOW_SCALE * size, "el": FOLLOW[0], "az": FOLLOW[1]})
 
 
-def _ground(points: dict) -> float:
-    """Half the width of the ground a run on flat ground covers [m]: the
-    contacts' paths and the bicycle's size, at least 2 m."""
+def _apart(points: dict, a: str, b: str) -> float:
+    return float(np.linalg.norm(points[a][:, 0] - points[b][:, 0]))
+
+
+def _ground(points: dict) -> tuple:
+    """The middle of the ground a run on flat ground covers and half its
+    width [m]: the contacts' paths and the bicycle's size, at least 2 m."""
     paths = np.concatenate([points["P"][:2], points["Q"][:2]], axis=1)
     size = float(np.max(np.linalg.norm(points["head"] - points["P"], axis=0)))
-    return max(0.5 * float(np.max(np.ptp(paths, axis=1))) + size, 2.0)
-
-
-def two_wheeler_data(scene: TwoWheelerScene) -> dict:
-    """The JSON-able data the page reads: points frame-major (x, y, z per
-    frame), rims frame-major then rim point; float32, times float64."""
-    rims = {k: _encode(np.transpose(scene.points[k], (2, 1, 0))) for k in RIM_KEYS}
-    return {"format": "deathsphere-two-wheeler/1", "title": scene.title, "r": scene.r, "n": int(scene.t.size),
-            "rim": int(scene.points[RIM_KEYS[0]].shape[1]), "t": _encode(scene.t, "<f8"),
-            "points": {k: _encode(scene.points[k].T) for k in POINT_KEYS}, "rims": rims,
-            "panel": {k: _encode(v) for k, v in scene.panel.items()}, "status": scene.status,
-            "event_time": scene.event_time, "event_words": scene.event_words, "playback": scene.playback,
-            "flat": scene.flat}
+    centre = 0.5 * (paths.min(axis=1) + paths.max(axis=1))
+    return centre, max(0.5 * float(np.max(np.ptp(paths, axis=1))) + size, 2.0)
 
 
 def decode_rim(text: str, n_rim: int) -> np.ndarray:
     """A rim of the page's data back as (3, K, F)."""
     return np.transpose(decode_array(text).reshape(-1, n_rim, 3), (2, 1, 0))
-
-
-def render_two_wheeler_html(scene: TwoWheelerScene) -> str:
-    """The page's text (UTF-8): the template with the run's data."""
-    from deathsphere.viewer.html import filled_template
-
-    return filled_template("two_wheeler_template.html", DATA_MARK, two_wheeler_data(scene), "two-wheeler view's")
-
-
-def write_two_wheeler_view(output, series: Table, summary: Table, frames: dict, *, progress=None) -> int:
-    """Write the run's view to ``output`` (.html, .gif or .mp4 by its
-    extension), whole or not at all; returns the file's size in bytes.
-    ``progress(k, n)`` after each frame of a loop."""
-    from deathsphere.viewer import check_view_output
-
-    fmt = check_view_output(output)
-    scene = two_wheeler_scene(series, summary, frames)
-    if fmt == "html":
-        data = render_two_wheeler_html(scene).encode("utf-8")
-        with atomic_file(output, "wb") as out:
-            out.write(data)
-        return len(data)
-    from deathsphere.viewer.two_wheeler_animation import write_two_wheeler_animation
-
-    write_two_wheeler_animation(output, scene, progress=progress)
-    return Path(output).stat().st_size

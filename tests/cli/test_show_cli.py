@@ -224,7 +224,7 @@ def test_html_view_is_written(run, plan_file, tmp_path):
     res = run("show", plan_file, "--fail", "Ben@1.2:0.3", "--output", str(out))
     assert res.exit_code == 0, res.stderr
     assert not res.stdout and "wrote" in res.stderr
-    assert "deathsphere-act/1" in out.read_text(encoding="utf-8")
+    assert "deathsphere-scene/1" in out.read_text(encoding="utf-8")
 
 
 # ---------------------------------------------------------------------------

@@ -42,7 +42,7 @@ def test_the_3d_view_is_written_and_nothing_printed(run, tmp_path):
     assert res.exit_code == 0, res.output
     assert res.stdout == "" and f"wrote {out}" in res.stderr
     page = out.read_text(encoding="utf-8")
-    assert '"format":"deathsphere-two-wheeler/1"' in page and '"n":5,' in page
+    assert '"format":"deathsphere-scene/1"' in page and '"n":5,' in page
 
 
 def test_the_figure_is_written(run, tmp_path):

@@ -8,18 +8,12 @@ import json
 
 import numpy as np
 import pytest
-from view_page import body_attributes, dump_dom, page_data
+from view_page import body_attributes, dump_dom, page_data, point_set
 
 from deathsphere.api.two_wheelers import SIMULATE_COLUMNS, simulate_two_wheeler
-from deathsphere.viewer.html import decode_array
-from deathsphere.viewer.two_wheeler_scene import (
-    POINT_KEYS,
-    RIM_KEYS,
-    decode_rim,
-    render_two_wheeler_html,
-    two_wheeler_scene,
-    write_two_wheeler_view,
-)
+from deathsphere.viewer import write_scene
+from deathsphere.viewer.html import decode_array, render_html
+from deathsphere.viewer.two_wheeler_scene import POINT_KEYS, RIM_KEYS, decode_rim, two_wheeler_scene
 
 RUN = dict(height=1.0, speed=5.0, diameter="16ft", periods=0.2, points_per_period=20, rtol=1e-6,
            steer_gains="10,10", perturb=0.5)
@@ -35,7 +29,7 @@ def run():
 
 @pytest.fixture(scope="module")
 def data(run):
-    return page_data(render_two_wheeler_html(two_wheeler_scene(*run)))
+    return page_data(render_html(two_wheeler_scene(*run)))["tracks"][0]
 
 
 def test_the_view_adds_no_column_to_the_table(run):
@@ -51,29 +45,29 @@ def test_the_page_carries_the_simulations_points_turned_z_up(run, data):
     np.testing.assert_array_equal(decode_array(data["t"], dtype="<f8"), frames["t"])
     flip = np.array([1.0, -1.0, -1.0])[:, None]
     for key in POINT_KEYS:
-        np.testing.assert_allclose(decode_array(data["points"][key], rows=3), flip * frames[key], atol=F32)
+        np.testing.assert_allclose(decode_array(point_set(data, key), rows=3), flip * frames[key], atol=F32)
     for key in RIM_KEYS:
-        np.testing.assert_allclose(decode_rim(data["rims"][key], data["rim"]), flip[..., None] * frames[key],
-                                   atol=F32)
+        np.testing.assert_allclose(decode_rim(point_set(data, key), data["points"][key]["k"]),
+                                   flip[..., None] * frames[key], atol=F32)
     # the view's z is up: the run starts on the lane 1 m above the globe's floor
-    assert decode_array(data["points"]["P"], rows=3)[2, 0] == pytest.approx(1.0 - R, abs=F32)
+    assert decode_array(point_set(data, "P"), rows=3)[2, 0] == pytest.approx(1.0 - R, abs=F32)
 
 
 def test_the_drawn_rims_are_the_wheels_touching_the_globe(data):
     for rim, centre, contact, radius in (("rear_rim", "rear_wheel", "P", 0.3), ("front_rim", "front_wheel", "Q", 0.35)):
-        pts = decode_rim(data["rims"][rim], data["rim"])
-        c = decode_array(data["points"][centre], rows=3)
+        pts = decode_rim(point_set(data, rim), data["points"][rim]["k"])
+        c = decode_array(point_set(data, centre), rows=3)
         np.testing.assert_allclose(np.linalg.norm(pts - c[:, None], axis=0), radius, atol=F32)
-        np.testing.assert_allclose(pts[:, 0], decode_array(data["points"][contact], rows=3), atol=F32)
+        np.testing.assert_allclose(pts[:, 0], decode_array(point_set(data, contact), rows=3), atol=F32)
         np.testing.assert_allclose(np.linalg.norm(pts[:, 0], axis=0), R, atol=F32)
 
 
 def test_a_loop_is_written(run, tmp_path):
     pytest.importorskip("matplotlib")
-    from deathsphere.viewer.two_wheeler_animation import write_two_wheeler_animation
+    from deathsphere.viewer.animation import write_animation
 
     out = tmp_path / "run.gif"
-    frames = write_two_wheeler_animation(out, two_wheeler_scene(*run), max_seconds=0.06, size_px=(240, 180))
+    frames = write_animation(out, two_wheeler_scene(*run), max_seconds=0.06, size_px=(240, 180))
     assert frames >= 2 and out.read_bytes()[:6] == b"GIF89a"
 
 
@@ -81,10 +75,10 @@ def test_the_page_draws_the_bicycle_in_a_browser(browser, run, tmp_path):
     """One headless chromium load (about 2 s): no script error, and every
     piece drawn inside the view with a size of its own."""
     out = tmp_path / "run.html"
-    write_two_wheeler_view(out, *run)
+    write_scene(out, two_wheeler_scene(*run))
     attrs = body_attributes(dump_dom(browser, out, budget_ms=1500))
     assert attrs["ready"] == "1" and attrs["errors"] == "0"
-    assert int(attrs["frames"]) == len(run[0]) and float(attrs["t"]) > 0
+    assert int(attrs["frames"]) == len(run[0]) and float(attrs["time"]) > 0
     assert int(attrs["ink"]) > 500
 
     drawn = json.loads(attrs["drawn"].replace("&quot;", '"'))
@@ -108,19 +102,20 @@ def test_a_run_on_flat_ground_stands_on_the_ground(flat_run):
     at z = 0 in every frame, the rims above it, the head above the wheels,
     and the camera frames the ground the run covers."""
     series, summary, frames = flat_run
-    data = page_data(render_two_wheeler_html(two_wheeler_scene(series, summary, frames)))
-    assert data["flat"] is True and np.isfinite(data["r"]) and data["r"] >= 2.0
+    data = page_data(render_html(two_wheeler_scene(series, summary, frames)))
+    ground, track = data["ground"], data["tracks"][0]
+    assert ground["kind"] == "plane" and np.isfinite(ground["half_width"]) and ground["half_width"] >= 2.0
     for contact in ("P", "Q"):
-        assert np.max(np.abs(decode_array(data["points"][contact], 3)[2])) < F32
+        assert np.max(np.abs(decode_array(point_set(track, contact), 3)[2])) < F32
     for rim in RIM_KEYS:
-        assert np.min(decode_rim(data["rims"][rim], data["rim"])[2]) > -F32
-    head = decode_array(data["points"]["head"], 3)[2]
+        assert np.min(decode_rim(point_set(track, rim), track["points"][rim]["k"])[2]) > -F32
+    head = decode_array(point_set(track, "head"), 3)[2]
     assert np.all(head > 1.0) and "flat ground" in data["title"]
 
 
 def test_the_flat_page_draws_the_ground_and_the_bicycle_in_a_browser(browser, flat_run, tmp_path):
     out = tmp_path / "flat.html"
-    write_two_wheeler_view(out, *flat_run)
+    write_scene(out, two_wheeler_scene(*flat_run))
     attrs = body_attributes(dump_dom(browser, out, budget_ms=1500))
     assert attrs["ready"] == "1" and attrs["errors"] == "0" and int(attrs["ink"]) > 500
     drawn = json.loads(attrs["drawn"].replace("&quot;", '"'))

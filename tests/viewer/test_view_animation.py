@@ -7,7 +7,7 @@ from viewer_cases import run_case
 from deathsphere.simulation.frames import body_frames
 from deathsphere.viewer import write_view
 from deathsphere.viewer.animation import SIZE_PX, loop_plan, number
-from deathsphere.viewer.scene import build_scenes
+from deathsphere.viewer.orbit_scene import build_scene
 
 pytest.importorskip("matplotlib")
 
@@ -15,8 +15,8 @@ pytest.importorskip("matplotlib")
 def test_gif_has_the_frames_and_size(tmp_path):
     Image = pytest.importorskip("PIL.Image")
     series, summary, states, _ = run_case("unstable", periods=1)     # 1.56 s, ends in contact lost
-    scenes = build_scenes(series, summary, body_frames(summary, states))
-    times, factor = loop_plan(scenes)
+    scene = build_scene(series, summary, body_frames(summary, states))
+    times, factor = loop_plan(scene)
     # 25 frames a second of loop, each factor / 25 s of the run, ending on the event
     assert times[-1] == series["t_s"][-1] and np.allclose(np.diff(times), factor / 25)
     assert times.size == int(np.floor(series["t_s"][-1] / (factor / 25) + 1e-9)) + 1
@@ -29,7 +29,7 @@ def test_gif_has_the_frames_and_size(tmp_path):
 
 def test_long_runs_loop_over_their_last_seconds():
     series, summary, states, _ = run_case("wheel_inside", periods=8)           # 14.7 s
-    times, factor = loop_plan(build_scenes(series, summary, body_frames(summary, states)), fps=25, max_seconds=10.0)
+    times, factor = loop_plan(build_scene(series, summary, body_frames(summary, states)), fps=25, max_seconds=10.0)
     assert factor < 1                                      # 7.9 m/s: 2 % of r takes 7.6 ms
     assert times.size == 251 and times[-1] == series["t_s"][-1]
     assert np.allclose(np.diff(times), factor / 25)

@@ -4,14 +4,14 @@ wheel, where eq. M2 puts them, and the GIF loop draws them."""
 
 import numpy as np
 import pytest
-from view_page import browser_binary, dump_dom, page_data
+from view_page import browser_binary, dump_dom, page_data, point_set, readout
 
 import deathsphere
 from deathsphere.api.machines import PRESETS
 from deathsphere.viewer import write_view
 from deathsphere.viewer.animation import write_animation
 from deathsphere.viewer.html import decode_array
-from deathsphere.viewer.scene import build_scenes
+from deathsphere.viewer.orbit_scene import build_scene
 
 STUNT = PRESETS["stunt125"]
 
@@ -33,11 +33,11 @@ def machine_page(tmp_path_factory):
 
 def test_the_page_holds_the_machines_frame_and_rider(machine_page):
     out, series, summary = machine_page
-    (body,) = page_data(out.read_text(encoding="utf-8"))["bodies"]
-    assert body["body"] == "machine" and body["status"] == "completed"
+    (body,) = page_data(out.read_text(encoding="utf-8"))["tracks"]
+    assert body["meta"]["body"] == "machine" and body["status"] == "completed"
     t = decode_array(body["t"], dtype="<f8")
-    centre, e3, contact = (decode_array(body[k], rows=3) for k in ("centre", "e3", "contact"))
-    com, head = decode_array(body["com"], rows=3), decode_array(body["head"], rows=3)
+    centre, e3, contact = (decode_array(point_set(body, k), rows=3) for k in ("centre", "e3", "contact"))
+    com, head = decode_array(point_set(body, "com"), rows=3), decode_array(point_set(body, "head"), rows=3)
     assert com.shape == head.shape == centre.shape == (3, t.size) and t.size >= len(series)
     # eq. M2: G = C - (h - a) e3, H = Q - (head - t) e3 with Q = C + (a - t) e3 (float32 storage)
     np.testing.assert_allclose(com, centre - (STUNT.h - STUNT.a) * e3, atol=1e-5)
@@ -51,7 +51,7 @@ def test_the_page_holds_the_machines_frame_and_rider(machine_page):
     rows = np.isin(t, series["t_s"])
     np.testing.assert_allclose(r - np.linalg.norm(head[:, rows], axis=0), series["head_clearance_m"], atol=1e-5)
     # the readout's speed is the rider's: the centre of mass's, as ride's v_cm and the series' v_cm_m_s
-    speed = decode_array(body["panel"]["speed"])
+    speed = decode_array(readout(body, "speed"))
     np.testing.assert_allclose(speed[rows], series["v_cm_m_s"], rtol=1e-5)
     # and against ride's closed form (eq. M8), independent of the simulation's
     # rates: the 0.01 deg kick moves it by 5e-4 relative
@@ -62,8 +62,8 @@ def test_the_page_holds_the_machines_frame_and_rider(machine_page):
 def test_a_wheels_page_has_no_machine():
     sim = deathsphere.api.prepare_simulation(60, 10, periods=0.2, points_per_period=10, record_states=True)
     series, summary = sim.run()
-    (scene,) = build_scenes(series, summary, sim.view_frames())
-    assert "com" not in scene.geometry and "head" not in scene.geometry
+    (scene,) = build_scene(series, summary, sim.view_frames()).tracks
+    assert "com" not in scene.points and "head" not in scene.points
 
 
 def test_the_page_draws_the_machine_in_a_browser(machine_page, tmp_path):
@@ -79,9 +79,9 @@ def test_the_page_draws_the_machine_in_a_browser(machine_page, tmp_path):
 def test_the_gif_draws_the_machine(tmp_path):
     Image = pytest.importorskip("PIL.Image")
     sim, series, summary = _run()
-    scenes = build_scenes(series, summary, sim.view_frames())
+    scene = build_scene(series, summary, sim.view_frames())
     out = tmp_path / "machine.gif"
-    n = write_animation(out, scenes, max_seconds=0.4)
+    n = write_animation(out, scene, max_seconds=0.4)
     with Image.open(out) as im:
         assert im.n_frames == n >= 2
         # the rider's colours are in the picture, not only in the palette

@@ -13,7 +13,8 @@ from deathsphere.model import Setup
 from deathsphere.simulation.frames import MAX_MOVE_R, MAX_TURN_RAD, body_frames
 from deathsphere.viewer import write_view
 from deathsphere.viewer.html import SCREEN_INTERVAL_S, decode_array
-from deathsphere.viewer.scene import build_scenes, playback_factor
+from deathsphere.viewer.orbit_scene import build_scene
+from deathsphere.viewer.scene import playback_factor
 
 QUARTER = 0.5 * np.pi
 
@@ -70,13 +71,13 @@ def test_a_fast_ball_is_sampled_finely_where_it_spins():
 
 def test_the_playback_factor_keeps_screen_frames_within_the_bounds():
     series, summary, states = _fast_ball(periods=0.3)
-    scenes = build_scenes(series, summary, body_frames(summary, states))
-    (s,) = scenes
+    scene = build_scene(series, summary, body_frames(summary, states))
+    (s,) = scene.tracks
     for interval in (SCREEN_INTERVAL_S, 1 / 25):
-        f = playback_factor(scenes, interval)
+        f = playback_factor(scene, interval)
         step = f * interval
-        assert np.max(s.geometry["rate"]) * step <= MAX_TURN_RAD
-        assert np.max(s.geometry["speed"]) * step <= MAX_MOVE_R * s.r
+        assert np.max(s.motion["rate"]) * step <= MAX_TURN_RAD
+        assert np.max(s.motion["speed"]) * step <= MAX_MOVE_R * s.meta["r"]
         assert f <= 1.0
 
 
@@ -88,17 +89,17 @@ def test_the_event_is_the_last_frame_exactly(tmp_path, run):
     assert res.exit_code == 0, res.stderr
     assert res.stdout == ""
     data = page_data(out.read_text(encoding="utf-8"))
-    (body,) = data["bodies"]
+    (body,) = data["tracks"]
     t = decode_array(body["t"], dtype="<f8")
     assert body["status"] == "contact_lost" and body["event_words"] == "contact lost"
     assert t[-1] == body["event_time"] == data["t_end"]
-    trail_t = decode_array(body["trail_t"], dtype="<f8")
+    trail_t = decode_array(body["paths"]["trail"]["t"], dtype="<f8")
     assert trail_t[0] == 0.0 and trail_t[-1] == t[-1]
 
 
 def test_a_run_without_events_shows_none(tmp_path):
     series, summary, states, _ = run_case("wheel_inside", periods=0.3)
-    (scene,) = build_scenes(series, summary, body_frames(summary, states))
+    (scene,) = build_scene(series, summary, body_frames(summary, states)).tracks
     assert scene.event_time is None and scene.event_words == ""
 
 
@@ -119,10 +120,10 @@ def test_the_gif_clock_is_true(tmp_path):
     from deathsphere.viewer.animation import END_HOLD_S, loop_plan, write_animation
 
     series, summary, states, _ = run_case("unstable", periods=1)      # 1.56 s, contact lost
-    scenes = build_scenes(series, summary, body_frames(summary, states))
-    times, factor = loop_plan(scenes, fps=25, max_seconds=4.0)
+    scene = build_scene(series, summary, body_frames(summary, states))
+    times, factor = loop_plan(scene, fps=25, max_seconds=4.0)
     out = tmp_path / "u.gif"
-    n = write_animation(out, scenes, fps=25, max_seconds=4.0, size_px=(320, 240), dpi=40)
+    n = write_animation(out, scene, fps=25, max_seconds=4.0, size_px=(320, 240), dpi=40)
     durations, size = _gif_durations(out)
     assert size == (320, 240) and len(durations) == n == times.size
     assert all(d % 10 == 0 for d in durations)
@@ -130,15 +131,15 @@ def test_the_gif_clock_is_true(tmp_path):
     simulated = times[-1] - times[0]
     assert shown == pytest.approx(simulated / factor, rel=0.01)
     assert durations[-1] == pytest.approx(1000 * END_HOLD_S)
-    assert times[-1] == scenes[0].t[-1]                                # ends on the event
-    (s,) = scenes
+    assert times[-1] == scene.tracks[0].t[-1]                          # ends on the event
+    (s,) = scene.tracks
     step = np.diff(times).max()
-    assert np.max(s.geometry["rate"]) * step <= MAX_TURN_RAD
-    assert np.max(s.geometry["speed"]) * step <= MAX_MOVE_R * s.r
+    assert np.max(s.motion["rate"]) * step <= MAX_TURN_RAD
+    assert np.max(s.motion["speed"]) * step <= MAX_MOVE_R * s.meta["r"]
 
 
 def test_delays_carry_their_rounding():
-    from deathsphere.viewer.animation import frame_delays_ms
+    from deathsphere.viewer.streams import frame_delays_ms
 
     d = frame_delays_ms(301, fps=15, hold_s=1.0)
     assert all(x % 10 == 0 for x in d) and set(d[:-1]) == {60, 70}
@@ -147,15 +148,15 @@ def test_delays_carry_their_rounding():
 
 def test_a_fast_ball_gif_plays_in_slow_motion_and_says_so(tmp_path):
     pytest.importorskip("matplotlib")
-    from deathsphere.viewer.animation import _panel, loop_plan
+    from deathsphere.viewer.animation import loop_plan, panel_text
 
     series, summary, states = _fast_ball(periods=0.3)
-    scenes = build_scenes(series, summary, body_frames(summary, states))
-    times, factor = loop_plan(scenes, fps=25)
+    scene = build_scene(series, summary, body_frames(summary, states))
+    times, factor = loop_plan(scene, fps=25)
     assert factor < 1
-    assert f"slow motion \u00d7{1 / factor:g}" in _panel(scenes[0], float(times[-1]), factor)
-    (s,) = scenes
-    assert np.max(s.geometry["rate"]) * np.diff(times).max() <= MAX_TURN_RAD
+    assert f"slow motion \u00d7{1 / factor:g}" in panel_text(scene, float(times[-1]), factor)
+    (s,) = scene.tracks
+    assert np.max(s.motion["rate"]) * np.diff(times).max() <= MAX_TURN_RAD
 
 
 # ---------------------------------------------------------------- stdout

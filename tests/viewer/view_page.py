@@ -68,3 +68,13 @@ def page_layout(binary, html_path, width, height, fragment="", budget_ms=3000):
     if strip:
         layout, attrs, dom = measure(height + strip)
     return layout, attrs, dom
+
+
+def readout(track: dict, key: str) -> str:
+    """A panel readout's values (base64) in a page's track."""
+    return next(r for r in track["panel"] if r["key"] == key)["values"]
+
+
+def point_set(track: dict, key: str) -> str:
+    """A point set's coordinates (base64, frame-major) in a page's track."""
+    return track["points"][key]["xyz"]
