@@ -28,5 +28,5 @@ BOUNDARY_LABELS = {
     "eq29": ("eq. (29): Omega^2 = 0 or diverges", "eq. (29): Omega^2 = 0 or diverges"),
     "eq33": ("eq. (33): normal force = 0", "eq. (83): normal force = 0"),
     "mu": ("eq. (35): mu_required = mu", "eq. (35): mu_required = mu"),
-    "max_g": ("load_g = max_g (eqs. 32, 36)", "load_g = max_g (eqs. 32, 36)"),
+    "max_g": ("load_g = max_g (eq. (32) with eq. (36))", "load_g = max_g (eq. (32) with eq. (36))"),
 }

@@ -51,7 +51,7 @@ def test_labels_name_the_equations():
     for label in ("eq. (0)", "eq. (29)", "eq. (33)", "allowed", "a/r = 0.1", "k = 0.5"):
         assert label in text
     limited = str(char_map(A, R, K, mu=1.0, max_g=5.0))
-    assert "mu_required = mu" in limited and "g-load = max_g" in limited and "mu = 1" in limited
+    assert "mu_required = mu" in limited and "load_g = max_g" in limited and "mu = 1" in limited
     outside = str(char_map(A, R, K, outside=True))
     assert "eq. (81)" in outside and "eq. (83)" in outside
 

@@ -264,6 +264,8 @@ def reference_orbit(theta, alpha, a, r, k, g, outside=False, mu=np.inf):
         "r_prime": rp, "omega2": omega2, "omega": omega, "period": 2 * np.pi / omega,
         "v_cm": np.abs(rp) * omega, "spin": rp * omega / a, "omega3": -omega * np.sin(alpha),
         "accel": np.abs(rp) * om2, "accel_g": np.abs(rp) * om2 / g,                # eq. (36)
+        # the load: the contact force's size per weight, from its two components (eq. 32)
+        "load_g": np.hypot(normal, f_theta) / g,
         "normal": normal, "friction": f_theta, "mu_required": mu_required,
         "status": status.astype(np.int8), "reason": reason.astype(np.int8),
     }
