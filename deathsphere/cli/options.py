@@ -259,9 +259,9 @@ def _decimal(x) -> str:
 
 def _display_unit(unit: str, kind: str):
     from deathsphere.render.display_units import DisplayUnit
-    from deathsphere.units import exact_factor
+    from deathsphere.units import per_api_unit
 
-    return DisplayUnit(unit, float(1 / exact_factor(unit, kind)), _factor_words(unit, kind))
+    return DisplayUnit(unit, per_api_unit(unit, kind), _factor_words(unit, kind))
 
 
 def display_units(system: str | None, typed: dict):

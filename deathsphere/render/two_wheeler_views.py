@@ -29,7 +29,8 @@ REAR_SPEED = dict(kind="speed", params=("speed",))
 HEIGHT = ColumnSpec("height_m", "height", "m", kind="length", params=("height",))
 
 #: The turns on the globe, in order: the row's identity and the rider's
-#: numbers, then the rest (left out first, from the right).
+#: numbers, then the rest (left out first, from the right); the steer
+#: torque and the verdict go last, where the units typed take the room.
 TURN_VIEW = (
     ColumnSpec("input_row", "#", format=str),
     HEIGHT,
@@ -37,8 +38,8 @@ TURN_VIEW = (
     ColumnSpec("v_rear_m_s", "v rear", "m/s", **REAR_SPEED),
     ColumnSpec("lean_surface_deg", "lean°\nwall"),
     ColumnSpec("steer_deg", "steer", "°"),
-    ColumnSpec("steer_torque_n_m", "T_δ", "N m"),
-    ColumnSpec("stability", "stability", format=_stability_cell),
+    ColumnSpec("steer_torque_n_m", "T_δ", "N m", drop=7),
+    ColumnSpec("stability", "stability", format=_stability_cell, drop=8),
     ColumnSpec("growth_rate_1_s", "growth", "1/s", drop=6),
     ColumnSpec("load_g", "load", "g", drop=5),
     ColumnSpec("mu_required_rear", "μ\nrear", drop=4),

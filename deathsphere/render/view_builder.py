@@ -34,8 +34,9 @@ from deathsphere.render.terminal_table import (
 )
 from deathsphere.table import Table
 
-#: The drop priority of a column that goes only when nothing else is left to go.
-LAST = float("inf")
+#: The drop priority of a column that goes only when nothing else is left
+#: to go (less its place: of several such, the rightmost goes first).
+LAST = 1e9
 #: Headers whose unit is a sign glued to the words (θ°), not a line under them.
 GLUED_UNITS = ("°",)
 
@@ -142,7 +143,7 @@ def columns_of(head: Table, specs, units: DisplayUnits = AS_TYPED, number=format
             columns.append(Column(key, spec.heading(unit.name if unit else None), cells, spec.justify, spec.style))
             drop = spec.drop
             if drop is None and unit is not None and spec.show == "both" and not units.was_typed(spec.params):
-                drop = LAST
+                drop = LAST - len(columns)
             if drop is not None:
                 drops.append((drop, key))
     order = []
