@@ -262,6 +262,17 @@ def factor(unit: str, kind: str, param: str | None = None) -> float:
     return float(exact_factor(unit, kind, param))
 
 
+def per_api_unit(unit: str, kind: str, param: str | None = None) -> float:
+    """How many of ``unit`` make one of the API's unit for ``kind``: the
+    exact factor's inverse, rounded once, to show an SI value in the unit
+    it was typed in (a terminal view's ``8 ft`` beside ``2.438 m``).
+
+    >>> per_api_unit("km/h", "speed"), per_api_unit("ft", "length") * 2.4384
+    (3.6, 8.0)
+    """
+    return float(1 / exact_factor(unit, kind, param))
+
+
 def convert(number, scale: Fraction) -> float:
     """``number`` (its text as written, or a float) times the exact
     ``scale``, rounded to float64 once: ``convert("12", exact_factor("in",

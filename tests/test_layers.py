@@ -79,8 +79,9 @@ ALLOWED = {
     # the show's parts (an act of several riders) build on ride's machine (api.rides, api.machines)
     "act": {"physics", "api", "records", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
     "__main__": {"cli"},
+    # the option parser reads the unit a value was typed in, to show it back beside SI (docs/units.md)
     "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",
-            "memory", "threads"},
+            "memory", "threads", "units"},
 }
 
 

@@ -206,3 +206,22 @@ def test_text_round_trip(case, value):
            "acceleration": "meter/second**2"}[kind]
     expected = FLOAT_PINT.Quantity(value, spelled).to(api).magnitude
     assert units.parse_value(text, kind) == pytest.approx(expected, rel=1e-14, abs=1e-300)
+
+
+def test_display_units_as_typed_and_by_system():
+    """What the command line hands a terminal view: an option typed in a
+    unit of its own shows in it; a kind's untyped quantities in the one
+    unit every value of that kind was typed in; --units' systems by kind."""
+    from deathsphere.cli.options import display_units
+
+    shown = display_units(None, {"diameter": "16ft", "height": ("0:8:2ft",), "speed": ("40km/h",), "mu": ("1",)})
+    assert shown.unit("length", ("height",)).name == "ft" and shown.unit("length").name == "ft"
+    assert shown.unit("speed", ("speed",)).per_api_unit == 3.6
+    mixed = display_units(None, {"diameter": "16ft", "height": ("0.4", "2.4")})
+    assert mixed.unit("length", ("diameter",)).name == "ft"
+    assert mixed.unit("length", ("height",)) is None and mixed.unit("length") is None
+    assert display_units("si", {"height": ("8ft",)}).unit("length", ("height",)) is None
+    imperial = display_units("imperial", {})
+    assert [imperial.unit(k).name for k in ("length", "speed", "rate", "mass")] == ["ft", "mph", "rpm", "lb"]
+    assert imperial.unit("length").per_api_unit * 0.3048 == pytest.approx(1, rel=1e-15)
+    assert display_units("metric", {}).unit("length") is None  # m is SI: nothing beside it

@@ -200,12 +200,13 @@ class Tally:
 
 
 def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
-           output: str | None = None) -> Tally:
+           output: str | None = None, units=None) -> Tally:
     """Write the tables of an :class:`~deathsphere.api.Chunks` as they come
     (CSV/JSON/NDJSON with flat memory; the terminal table keeps the first
     rows and counts the rest), with a progress bar on a terminal that
     follows ``chunks.done`` of ``chunks.total``.  ``output`` is a file to
-    write instead of stdout (see :func:`emit`).  Returns the :class:`Tally`."""
+    write instead of stdout (see :func:`emit`); ``units``: the display
+    units of the terminal view (:func:`terminal_view`).  Returns the :class:`Tally`."""
     tally = Tally()
     # rows going to a file leave the terminal to the progress bar
     streaming = fmt != "table" and output is None
@@ -219,7 +220,7 @@ def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
         if fmt == "table":
             # read everything while the bar runs; draw once it is gone, so
             # that no trace of it is left in the table
-            shown = terminal_view(tally.count(tables(bar)), title, view)
+            shown = terminal_view(tally.count(tables(bar)), title, view, units)
         else:
             emit(tally.count(tables(bar)), fmt, title, view, output=output, expected=chunks.total)
     if fmt == "table" and shown is not None:
@@ -250,7 +251,7 @@ def finish(tally: Tally) -> None:
 
 
 def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | None = None,
-         expected: int | None = None) -> int:
+         expected: int | None = None, units=None) -> int:
     """Write tables in the chosen format to stdout (or to the file
     ``output``, already checked by :class:`OutputPath`); returns the row count.
 
@@ -274,18 +275,20 @@ def emit(chunks, fmt: str, title: str | None = None, view=None, output: str | No
             return writer(chunks, out)
     if writer is not None:
         return writer(chunks, sys.stdout)
-    shown = terminal_view(chunks, title, view)
+    shown = terminal_view(chunks, title, view, units)
     if shown is None:
         return 0
     stdout_console().print(shown[0])
     return shown[1]
 
 
-def terminal_view(chunks, title: str | None = None, view=None):
+def terminal_view(chunks, title: str | None = None, view=None, units=None):
     """``(renderable, rows read)``: the terminal view of the tables in
     ``chunks`` (every chunk is read, so the count and the exit status are
     those of the whole result; at most :data:`MAX_TERMINAL_ROWS` rows are
-    drawn), or None for no rows."""
+    drawn), or None for no rows.  ``units``: the
+    :class:`~deathsphere.render.display_units.DisplayUnits` of the default
+    view (a ``view`` of a command's own carries its own)."""
     from deathsphere.render.orbit_views import rich_table
     from deathsphere.render.terminal_table import MAX_TERMINAL_ROWS
     from deathsphere.table import Table
@@ -300,7 +303,10 @@ def terminal_view(chunks, title: str | None = None, view=None):
     table = Table.concat(head)
     if len(table) > MAX_TERMINAL_ROWS:
         table = table[:MAX_TERMINAL_ROWS]
-    shown = view(table, total_rows=total) if view is not None else rich_table(table, title, total_rows=total)
+    if view is not None:
+        shown = view(table, total_rows=total)
+    else:
+        shown = rich_table(table, title, total_rows=total, **({"units": units} if units is not None else {}))
     return shown, total
 
 

@@ -4,6 +4,8 @@ the rider's limits (:func:`deathsphere.api.region`, :func:`~deathsphere.api.regi
 
 from __future__ import annotations
 
+import click
+
 from deathsphere import api
 from deathsphere.cli.base import (
     OutputPath,
@@ -21,6 +23,7 @@ from deathsphere.cli.base import (
 )
 from deathsphere.cli.options import (
     body_option,
+    display_units,
     input_option,
     jobs_option,
     output_options,
@@ -29,6 +32,7 @@ from deathsphere.cli.options import (
     setup_options,
     single,
     stability_option,
+    units_option,
 )
 
 #: Figure formats of the map (matplotlib, the plot extra).
@@ -102,7 +106,8 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
 @setup_options()
 @input_option("theta, body, side, a, r, k, g, mu, max_g")
 @output_options()
-def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fmt):
+@units_option()
+def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fmt, units):
     """Which tilts alpha give a feasible orbit at theta, and at what speeds (beyond the paper).
 
     With --theta: the interval(s) of alpha where the wheel fits, Omega^2 > 0
@@ -120,11 +125,12 @@ def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fm
     """
     options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
     fmt = choose_format(fmt)
+    shown = display_units(units, click.get_current_context().params)
     if input is not None:
         finish(stream(api.limits_input(input, **given(theta=theta), **options), fmt, label="limits",
-                      title="Feasible tilts (fit, Omega^2 > 0, contact, mu, load)"))
+                      title="Feasible tilts (fit, Omega^2 > 0, contact, mu, load)", units=shown))
         return
     table = api.limits(**given(theta=theta), **options)
     title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, load)" if theta else
              "The highest orbit possible (smallest theta with a feasible tilt)")
-    emit([table], fmt, title=title)
+    emit([table], fmt, title=title, units=shown)

@@ -208,3 +208,95 @@ def machine_from_options(machine, machine_file, **overrides):
         raise api.ParameterError(f"{', '.join(given)} not for a two-wheeler ({chosen.name}): its parameters are the "
                                  "benchmark's 26 (docs/two-wheeler.md sec. 1.4)", "machine")
     return chosen
+
+
+#: What ``--units`` can ask of a terminal view (docs/units.md).
+UNIT_SYSTEMS = ("as-typed", "si", "metric", "imperial")
+#: The units of each system by kind; the API's own (m, kg) are not listed:
+#: they are the SI figure itself.
+SYSTEM_UNITS = {"metric": {"speed": "km/h", "rate": "rpm"},
+                "imperial": {"length": "ft", "speed": "mph", "rate": "rpm", "mass": "lb"}}
+#: The kinds a view shows in another unit beside SI.
+SHOWN_KINDS = ("length", "speed", "rate", "angle", "mass")
+
+
+def units_option():
+    return single(
+        "--units", "units", type=click.Choice(UNIT_SYSTEMS, case_sensitive=False), default=None,
+        help="Units of the terminal view, beside SI: as-typed (a value typed with a unit, 16ft or 40km/h, "
+             "comes back in it), si (SI alone), metric (m, km/h, rpm, kg) or imperial (ft, mph, rpm, lb) "
+             "[default: as-typed].  CSV, JSON and Parquet are SI whatever it says.")
+
+
+def _typed_unit(text) -> str | None:
+    from deathsphere.units import split_unit
+
+    try:
+        return split_unit(str(text))[1] if isinstance(text, str) else None
+    except ValueError:  # a malformed number: the API says what is wrong with it
+        return None
+
+
+def _factor_words(unit: str, kind: str) -> str:
+    """The factor from the API's unit to ``unit`` for a view's source
+    column: ``× 3.6`` (km/h), ``÷ 0.3048`` (ft); π's as ``60/2π`` (rpm)."""
+    from deathsphere.units import exact_factor
+
+    by_pi = {"rpm": "× 60/2π", "deg/s": "× 180/π", "rad": "× π/180"}
+    if unit in by_pi:
+        return by_pi[unit]
+    f = exact_factor(unit, kind)
+    if _decimal(1 / f):
+        return f"× {_decimal(1 / f)}"
+    return f"÷ {_decimal(f)}" if _decimal(f) else ""
+
+
+def _decimal(x) -> str:
+    """An exact fraction as a decimal of at most 8 places (0.3048), or ''."""
+    places = next((k for k in range(9) if (x * 10**k).denominator == 1), None)
+    return "" if places is None else repr(float(x)).removesuffix(".0")
+
+
+def _display_unit(unit: str, kind: str):
+    from deathsphere.render.display_units import DisplayUnit
+    from deathsphere.units import per_api_unit
+
+    return DisplayUnit(unit, per_api_unit(unit, kind), _factor_words(unit, kind))
+
+
+def display_units(system: str | None, typed: dict):
+    """The :class:`~deathsphere.render.display_units.DisplayUnits` a
+    terminal view is handed: ``--units``' ``system`` and the options as
+    typed (``typed``: option name -> text, or a tuple of texts, None when
+    not given; only the registry's dimensional ones count).
+
+    As typed, an option typed in a unit other than the API's shows in it,
+    and a kind's quantities that were not typed (a head clearance) show in
+    the one unit every value of that kind was typed in, if there is one.
+    A unit that cannot be read is left to the API to refuse."""
+    from deathsphere.render.display_units import DisplayUnits
+    from deathsphere.units import KINDS
+
+    system = (system or "as-typed").lower()
+    if system == "si":
+        return DisplayUnits(crew=False)
+    if system in SYSTEM_UNITS:
+        return DisplayUnits(kinds={kind: _display_unit(unit, kind) for kind, unit in SYSTEM_UNITS[system].items()},
+                            crew=False)
+    per_option, per_kind = {}, {}
+    for name, value in typed.items():
+        p = PARAMS.get(name)
+        if p is None or p.kind not in SHOWN_KINDS or value is None or value == ():
+            continue
+        found = {_typed_unit(text) for text in (value if isinstance(value, tuple) else (value,))}
+        found = {KINDS[p.kind] if u is None or u == KINDS[p.kind] else u.strip() for u in found}
+        per_kind.setdefault(p.kind, set()).update(found)
+        if len(found) == 1 and found != {KINDS[p.kind]}:
+            per_option[name] = (found.pop(), p.kind)
+    try:
+        return DisplayUnits(
+            typed={name: _display_unit(unit, kind) for name, (unit, kind) in per_option.items()},
+            kinds={kind: _display_unit(units.pop(), kind) for kind, units in per_kind.items()
+                   if len(units) == 1 and units != {KINDS[kind]}})
+    except ValueError:  # a unit the API refuses (ParameterError), with its reason, once it reads it
+        return DisplayUnits()

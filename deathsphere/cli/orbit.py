@@ -10,6 +10,7 @@ from deathsphere import api
 from deathsphere.cli.base import OutputPath, choose_format, cli, finish, given, stream
 from deathsphere.cli.options import (
     body_option,
+    display_units,
     input_option,
     jobs_option,
     only_option,
@@ -20,6 +21,7 @@ from deathsphere.cli.options import (
     setup_options,
     single,
     stability_option,
+    units_option,
 )
 
 ORBIT_TITLES = {
@@ -62,8 +64,9 @@ def orbit_chunks(input, stability, only, options, **more):
 @cli.command("orbit", short_help="Steady horizontal orbits: rate, speed, spin, forces, friction, load.")
 @orbit_options
 @output_options()
+@units_option()
 def orbit_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
-                  stability, fmt):
+                  stability, fmt, units):
     """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, load.
 
     All combinations of the --theta and --alpha values are evaluated.  Each
@@ -90,7 +93,8 @@ def orbit_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, d
                     a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     chunks = orbit_chunks(input, stability, only, options)
     title = "Horizontal orbits" if input is not None else ORBIT_TITLES[(body or "wheel").lower()]
-    finish(stream(chunks, choose_format(fmt), label="orbits", title=title))
+    finish(stream(chunks, choose_format(fmt), label="orbits", title=title,
+                  units=display_units(units, click.get_current_context().params)))
 
 
 #: What ``sweep --output`` writes, by extension (Parquet needs pyarrow, the fast extra).

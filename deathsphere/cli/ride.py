@@ -10,6 +10,7 @@ import numpy as np
 from deathsphere import api
 from deathsphere.cli.base import OutputPath, choose_format, cli, emit, finish, stream
 from deathsphere.cli.options import (
+    display_units,
     jobs_option,
     machine_from_options,
     machine_options,
@@ -19,6 +20,7 @@ from deathsphere.cli.options import (
     scheduler_option,
     single,
     stability_option,
+    units_option,
 )
 from deathsphere.cli.orbit import SWEEP_FORMATS, sweep_format
 from deathsphere.writers.stream import FORMATS
@@ -33,12 +35,12 @@ def _view(name: str, **kwargs):
     return view
 
 
-def _two_wheeler_view(name: str, title: str):
+def _two_wheeler_view(name: str, title: str, units):
     """A terminal view of render.two_wheeler_views, imported only when a table is drawn."""
     def view(table, total_rows=None):
         from deathsphere.render import two_wheeler_views
 
-        return getattr(two_wheeler_views, name)(table, total_rows=total_rows, title=title)
+        return getattr(two_wheeler_views, name)(table, total_rows=total_rows, title=title, units=units)
     return view
 
 
@@ -106,10 +108,11 @@ def _grid(where, how, mus):
         help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
              "of stdout.  Parquet needs the fast extra.")
 @output_options(FORMATS + ("parquet",))
+@units_option()
 def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
                  roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
                  vertical, v_top, summary, only, stability, flat, steer, steer_torque, jobs, scheduler, output,
-                 fmt):
+                 fmt, units):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
     Every combination of the --theta (or --height) and --alpha (or --speed)
@@ -145,6 +148,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
     fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
+    shown = display_units(units, click.get_current_context().params)
     from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
 
     if flat or steer is not None or steer_torque or (machine or "").lower() in MOTORCYCLES or (
@@ -165,7 +169,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         if flat:
             table = api.ride(flat=True, **given)
             title = f"{name}: straight running on flat ground (docs/two-wheeler.md sec. 7)"
-            emit([table], fmt, title, view=_two_wheeler_view("straight_view", title), output=output)
+            emit([table], fmt, title, view=_two_wheeler_view("straight_view", title, shown), output=output)
             return
         # the globe's lanes stream a few at a time (flat memory, --jobs, --scheduler)
         from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
@@ -173,7 +177,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         chunks = two_wheeler_ride_sweep(**given, jobs=jobs or 1, scheduler=scheduler)
         title = (f"{name}: the rider's table on the globe, per lane (docs/two-wheeler.md sec. 10)" if summary
                  else f"{name}: steady turns on the globe (docs/two-wheeler.md sec. 8)")
-        finish(stream(chunks, fmt, label="ride", title=title, view=_two_wheeler_view("turns_view", title),
+        finish(stream(chunks, fmt, label="ride", title=title, view=_two_wheeler_view("turns_view", title, shown),
                       output=output))
         return
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
@@ -189,8 +193,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         where, how, friction = _grid(_axis("theta", theta), _axis("v_top", v_top), mus)
         table = api.ride(where, vertical=True, v_top=how, machine=chosen, only=only or None, **friction, **setup)
         title = f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)"
-        emit([table], fmt, title, view=_view("loop_view", title=title,
-                                             speed_unit=api.rides.typed_speed_unit(v_top)), output=output)
+        emit([table], fmt, title, view=_view("loop_view", title=title, units=shown),
+             output=output)
         return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
@@ -211,19 +215,21 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                          only=only or None, summary=summary, **friction, **setup)
         title = (f"Feasible speeds by height: {chosen.name} (docs/machine.md)" if summary
                  else f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)")
-        emit([table], fmt, title, view=_view("ride_view", title=title), output=output)
+        emit([table], fmt, title, view=_view("ride_view", title=title, units=shown), output=output)
         return
     # one orbit per grid point and one mu: streamed chunk by chunk, as sweep (flat memory, --jobs, --scheduler)
     friction = {"mu": float(mus[0])} if mus is not None else {}
     chunks = api.ride_sweep(**{at[0]: list(at[1]), by[0]: list(by[1])}, machine=chosen, stability=stability,
                             only=only or None, jobs=jobs or 1, scheduler=scheduler, **friction, **setup)
     title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
-    finish(stream(chunks, fmt, label="ride", title=title, view=_view("ride_view", title=title), output=output))
+    finish(stream(chunks, fmt, label="ride", title=title, view=_view("ride_view", title=title, units=shown),
+                  output=output))
 
 
 @cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")
 @output_options()
-def machines_command(fmt):
+@units_option()
+def machines_command(fmt, units):
     """The preset machines of 'deathsphere ride': mass, centre-of-mass height,
     wheel and tyre radii, inertias, head height and where each comes from
     (docs/machine.md sec. 7); then the two-wheelers of 'ride --flat' and
@@ -236,4 +242,5 @@ def machines_command(fmt):
       deathsphere machines --format csv
     """
     title = "Preset machines (docs/machine.md sec. 7)"
-    emit([api.machines_table()], choose_format(fmt), title, view=_view("machines_view", title=title))
+    emit([api.machines_table()], choose_format(fmt), title,
+         view=_view("machines_view", title=title, units=display_units(units, {})))

@@ -21,7 +21,7 @@ from deathsphere.cli.base import (
     stderr_console,
     stdout_console,
 )
-from deathsphere.cli.options import output_options, scheduler_option, single
+from deathsphere.cli.options import display_units, output_options, scheduler_option, single, units_option
 
 #: The tables the command writes (``--table``): the riders' lanes, every
 #: pair over the act, the falls (of --fail or --monte-carlo) and the
@@ -165,7 +165,8 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
              "--fail the fall's path.  Or write the table to .csv/.json/.ndjson/.parquet.  Nothing is "
              "printed on stdout then.")
 @output_options(FORMATS)
-def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed, scheduler, output, fmt):
+@units_option()
+def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed, scheduler, output, fmt, units):
     """An act: several riders sharing one globe (docs/show.md).
 
     PLAN.toml names the globe and every rider's lane (horizontal: height,
@@ -215,11 +216,13 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         return
     tables = {"riders": result.riders, "pairs": result.pairs, "falls": falls, "summary": summary}
+    # the plan's own values are read as SI: only --units changes the view
+    shown_units = display_units(units, {})
     if fmt_out == "table" and table is None:
         console = stdout_console()
         shown = ["riders", "pairs"] + (["falls"] if fails else []) + (["summary"] if summary is not None else [])
         for k, name in enumerate(shown):
-            rendered = emit_view(tables[name], name, result)
+            rendered = emit_view(tables[name], name, result, shown_units)
             if rendered is not None:
                 if k:
                     console.print()
@@ -227,14 +230,15 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
         return
     if table is None:
         table = "falls" if falls is not None else "riders"
-    emit([tables[table]], fmt_out, view=_view(VIEW_OF[table], result=result), output=output)
+    emit([tables[table]], fmt_out, view=_view(VIEW_OF[table], result=result, units=shown_units), output=output)
     if output is not None:
         stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
 
 
-def emit_view(table, name: str, result):
+def emit_view(table, name: str, result, units=None):
     """The terminal view of one of the act's tables (None for no rows)."""
     from deathsphere.cli.base import terminal_view
 
-    shown = terminal_view([table], view=_view(VIEW_OF[name], result=result))
+    shown = terminal_view([table], view=_view(VIEW_OF[name], result=result,
+                                              **({"units": units} if units is not None else {})))
     return None if shown is None else shown[0]

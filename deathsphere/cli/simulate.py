@@ -20,6 +20,7 @@ from deathsphere.cli.base import (
 from deathsphere.cli.options import (
     MACHINE_OPTIONS,
     body_option,
+    display_units,
     machine_from_options,
     machine_options,
     output_options,
@@ -27,6 +28,7 @@ from deathsphere.cli.options import (
     params_options,
     setup_options,
     single,
+    units_option,
 )
 from deathsphere.table import Table
 
@@ -100,12 +102,13 @@ def _preflight_output(output) -> bool:
 @click.option("--hands-free", is_flag=True, default=False, help="A two-wheeler with no steer torque at all.")
 @setup_options()
 @output_options()
+@units_option()
 def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate,
                      steer_gains, hands_free, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
                      points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, loop_seconds,
                      playback, body, machine,
                      machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
-                     spin_inertia, head_height, side, a, r, diameter, k, g, mu, fmt):
+                     spin_inertia, head_height, side, a, r, diameter, k, g, mu, fmt, units):
     """Integrate the exact equations of motion from a steady orbit (beyond the paper).
 
     The rigid-body equations of a wheel or sphere rolling without slipping
@@ -163,6 +166,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     from deathsphere.render.simulation_view import simulation_view
     from deathsphere.viewer import view_format
 
+    shown = display_units(units, click.get_current_context().params)
+
     from deathsphere.api.two_wheeler_files import is_two_wheeler_file
     from deathsphere.api.two_wheelers import is_two_wheeler
 
@@ -191,7 +196,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                  "--points-per-period, --steer-gains or --hands-free, --method, --rtol, --atol")
         if two_wheeler_file:
             machine = machine_from_options(machine, machine_file)
-        _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt,
+        _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt, shown,
                      **given(theta=theta, height=height, speed=speed, r=r, diameter=diameter, g=g, mu=mu,
                              branch=branch, perturb=perturb, periods=periods,
                              points_per_period=points_per_period, method=method, rtol=rtol, atol=atol),
@@ -245,13 +250,13 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         # the file is the output: stdout stays empty (a pipe downstream
         # gets nothing it did not ask for); the summary on a terminal only
         if stderr_console().is_terminal:
-            stderr_console().print(simulation_view(summary))
+            stderr_console().print(simulation_view(summary, shown))
     elif fmt == "table":
-        stdout_console().print(simulation_view(summary))
+        stdout_console().print(simulation_view(summary, shown))
     elif summary_only:
         emit([summary], fmt)
     else:
-        stderr_console().print(simulation_view(summary))
+        stderr_console().print(simulation_view(summary, shown))
     if table_file is not None:
         if summary_only:
             emit([summary], table_file, output=output)
@@ -273,7 +278,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
 
 
-def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt, **options):
+def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt, units, **options):
     """``simulate`` of a two-wheeler: the API validates, the series (or the
     summary) is the output, the summary on a terminal (docs/two-wheeler.md
     sec. 10.1)."""
@@ -317,7 +322,7 @@ def _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, 
         if stderr_console().is_terminal:
             emit_to_stderr(summary, title)
     elif fmt == "table" or summary_only:
-        emit([summary], fmt, title)
+        emit([summary], fmt, title, units=units)
     else:
         emit([series], fmt)
         emit_to_stderr(summary, title)

@@ -3,9 +3,12 @@
 
 from __future__ import annotations
 
+import click
+
 from deathsphere import api
 from deathsphere.cli.base import choose_format, cli, finish, given, stream
 from deathsphere.cli.options import (
+    display_units,
     input_option,
     only_option,
     output_options,
@@ -13,6 +16,7 @@ from deathsphere.cli.options import (
     params_options,
     setup_options,
     stability_option,
+    units_option,
 )
 
 
@@ -26,8 +30,9 @@ from deathsphere.cli.options import (
 @only_option(api.STATUSES)
 @stability_option(help="Exact stability by Floquet analysis over one lap (docs/stability.md).")
 @output_options()
+@units_option()
 def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, points, input, only, stability,
-                     fmt):
+                     fmt, units):
     """Vertical orbit of a wheel: contact all round (eq. 28a), forces and friction (eqs. 27-28b).
 
     Reports the least top speed for contact, the normal force and friction
@@ -51,8 +56,11 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, p
         chunks = api.vertical_sweep(stability=stability, only=only or None, **options)
     fmt = choose_format(fmt)
     title, view = "Vertical orbit point by point (eqs. 27, 28, 28b; phi from the top)", None
+    shown = display_units(units, click.get_current_context().params)
     if points is None and fmt == "table":
+        from functools import partial
+
         from deathsphere.render.orbit_views import vertical_view
 
-        title, view = None, vertical_view
-    finish(stream(chunks, fmt, label="vertical orbits", title=title, view=view))
+        title, view = None, partial(vertical_view, units=shown)
+    finish(stream(chunks, fmt, label="vertical orbits", title=title, view=view, units=shown))

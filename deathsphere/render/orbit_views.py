@@ -1,14 +1,20 @@
 """Terminal views of orbits: every quantity of one orbit, a summary row
 per orbit for many, the vertical orbits, and any other result table column
-by column (:func:`write_rich_table` picks)."""
+by column (:func:`write_rich_table` picks).  Each view is its column specs
+(:mod:`~deathsphere.render.view_builder`); a quantity typed in another unit
+shows in it beside SI."""
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 from rich.console import Console
 from rich.markup import escape
 
-from deathsphere.model import TEXT_COLUMNS, Table
+from deathsphere.model import Table
+from deathsphere.params import PARAMS
+from deathsphere.render.display_units import AS_TYPED, KM_H, RPM, DisplayUnits
 from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
     STABILITY_STYLE,
@@ -17,12 +23,12 @@ from deathsphere.render.terminal_table import (
     first_rows,
     format_number,
     is_undefined,
-    row_cap_line,
     row_record,
     row_total,
     status_legend,
     status_text,
 )
+from deathsphere.render.view_builder import ColumnSpec, build_table, globe_text, quantity_rows, quantity_text
 
 #: (column, label, unit, source) for the one-orbit view.
 ORBIT_FIELDS = (
@@ -48,16 +54,25 @@ ORBIT_FIELDS = (
 
 OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
 
-#: Rows repeated in a rider's unit right under the SI row: column ->
-#: (unit, factor, source).  Plain constants: the terminal view never needs
-#: pint (deathsphere/units.py), and 3.6 and 60/2π are exact by definition.
-#: A row of its own rather than a cell beside the SI figure: "m/s (28.4
-#: km/h)" widens the unit column enough that an 80-column terminal would
-#: lose the source column.
-RIDER_UNITS = {
-    "v_cm_m_s": ("km/h", 3.6, "× 3.6"),
-    "spin_rad_s": ("rpm", 60.0 / (2.0 * np.pi), "× 60/2π"),
+#: How a one-orbit row is shown beside SI: column -> (kind, the options it
+#: is typed as, the crew's unit).  The centre speed and the wheel's spin
+#: are repeated in km/h and rpm when nothing else was asked for (3.6 and
+#: 60/2π are exact by definition: no pint).  A row of its own rather than
+#: a cell beside the SI figure: "m/s (28.4 km/h)" widens the unit column
+#: enough that an 80-column terminal would lose the source column.
+FIELD_UNITS = {
+    "r_prime_m": ("length", (), None),
+    "omega_rad_s": ("rate", ("omega",), None),
+    "v_cm_m_s": ("speed", ("speed",), KM_H),
+    "spin_rad_s": ("rate", (), RPM),
+    "omega3_rad_s": ("rate", ("omega3",), None),
 }
+
+
+def _field_spec(col: str, label: str, unit: str, source: str) -> ColumnSpec:
+    kind, params, crew = FIELD_UNITS.get(col, (None, (), None))
+    return ColumnSpec(col, label, unit, source=source, kind=kind, params=params, crew=crew)
+
 
 #: Labels that differ by body: (body, column) -> (label, source); None hides the row.
 BODY_LABELS = {
@@ -87,8 +102,9 @@ BODY_LABELS = {
 }
 
 
-def _setup_line(get: dict) -> str:
-    return (f"a = {format_number(get['a_m'])} m, r = {format_number(get['r_m'])} m, "
+def _setup_line(get: dict, units: DisplayUnits = AS_TYPED) -> str:
+    a = quantity_text(get["a_m"], "m", units.unit("length", ("a",)))
+    return (f"a = {a}, {globe_text(get, units)}, "
             f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
 
 
@@ -132,36 +148,51 @@ def spin_too_low(get: dict) -> bool:
     return False
 
 
-def one_orbit_table(table: Table, row: int = 0) -> FitTable:
+def one_orbit_table(table: Table, row: int = 0, units: DisplayUnits = AS_TYPED) -> FitTable:
     """A two-column view of every quantity of one orbit (undefined ones as —)."""
     get = row_record(table, row)
     angles = f"θ = {format_number(get['theta_deg'])}°"
     if not is_undefined(get["alpha_deg"]):
         angles += f", α = {format_number(get['alpha_deg'])}°"
-    rows = []
+    specs = []
     for col, label, unit, source in ORBIT_FIELDS:
         override = BODY_LABELS.get((get["body"], col), (label, source))
-        if col in get and override is not None:
-            rows.append((override[0], format_number(get[col], 5), unit, override[1]))
-            if col in RIDER_UNITS:
-                rider, scale, how = RIDER_UNITS[col]
-                rows.append((f"  the same in {rider}", format_number(float(get[col]) * scale, 5), rider, how))
+        if override is not None:
+            specs.append(_field_spec(col, override[0], unit, override[1]))
+    rows = quantity_rows(get, specs, units)
     mu = get.get("mu_available")
     rows.append(("μ available", "∞" if is_undefined(mu) else format_number(mu), "", "--mu"))
     notes = []
     if spin_too_low(get):
         notes.append(spin_needed_line(get))
-    return quantity_table(f"{get['body']} {get['side']}, {angles}\n{_setup_line(get)}", get, rows, OK_REASON,
-                          notes)
+    return quantity_table(f"{get['body']} {get['side']}, {angles}\n{_setup_line(get, units)}", get, rows,
+                          OK_REASON, notes)
 
 
+def _styled(styles: dict):
+    return lambda v: styles.get(v, escape(str(v)))
+
+
+#: The many-orbit terminal view's columns (units on the headers' last line).
+SUMMARY_SPECS = {spec.key: spec for spec in (
+    ColumnSpec("input_row", "#"),
+    ColumnSpec("theta_deg", "θ", "°", kind="angle", params=("theta",)),
+    ColumnSpec("alpha_deg", "α", "°", kind="angle", params=("alpha",)),
+    ColumnSpec("branch", "br"),
+    ColumnSpec("omega3_rad_s", "ω₃", "rad/s", kind="rate", params=("omega3",)),
+    ColumnSpec("status", "status", format=status_text, justify="left"),
+    ColumnSpec("omega_rad_s", "Ω", "rad/s", kind="rate", params=("omega",)),
+    ColumnSpec("v_cm_m_s", "v_cm", "m/s", kind="speed", params=("speed",)),
+    ColumnSpec("spin_rad_s", "ω₁", "rad/s", kind="rate"),
+    ColumnSpec("accel_g", "accel", "g"),
+    ColumnSpec("load_g", "load", "g"),
+    ColumnSpec("mu_required", "μ\nrequired"),
+    ColumnSpec("stability", "stability", format=_styled(STABILITY_STYLE), justify="left"),
+    ColumnSpec("omega3_min_real_rad_s", "|ω₃| min\norbit", "rad/s", kind="rate", params=("omega3",)),
+    ColumnSpec("omega3_min_contact_rad_s", "|ω₃| min\ncontact", "rad/s", kind="rate", params=("omega3",)),
+)}
 #: Headers of the many-orbit terminal view (units on the last line).
-SUMMARY_HEADERS = {
-    "input_row": "#", "theta_deg": "θ°", "alpha_deg": "α°", "branch": "br", "omega3_rad_s": "ω₃\nrad/s",
-    "status": "status", "omega_rad_s": "Ω\nrad/s", "v_cm_m_s": "v_cm\nm/s", "spin_rad_s": "ω₁\nrad/s",
-    "accel_g": "accel\ng", "load_g": "load\ng", "mu_required": "μ\nrequired", "stability": "stability",
-    "omega3_min_real_rad_s": "|ω₃| min\norbit\nrad/s", "omega3_min_contact_rad_s": "|ω₃| min\ncontact\nrad/s",
-}
+SUMMARY_HEADERS = {key: spec.heading() for key, spec in SUMMARY_SPECS.items()}
 #: Columns of the many-orbit view per body, in display order.  The ones not
 #: in SUMMARY_DROP_ORDER identify the row (#, θ, α or branch, status) and are
 #: always shown.
@@ -191,14 +222,12 @@ SUMMARY_DROP_ORDER = {
 MAX_SPIN_LINES = 3
 
 
-def _summary_cells(col: str, values: list) -> list[str]:
-    if col == "status":
-        return [status_text(v) for v in values]
-    if col == "stability":
-        return [STABILITY_STYLE.get(v, v) for v in values]
-    if col in TEXT_COLUMNS:
-        return [escape(str(v)) for v in values]
-    return [format_number(v) for v in values]
+def summary_specs(kind: str) -> list[ColumnSpec]:
+    """The many-orbit view's specs for ``kind`` (a body, or mixed), each
+    with its place in the body's drop order."""
+    order = SUMMARY_DROP_ORDER[kind]
+    return [replace(SUMMARY_SPECS[col], drop=order.index(col) if col in order else None)
+            for col in SUMMARY_COLUMNS[kind]]
 
 
 def _spin_lines(table: Table) -> list[str]:
@@ -228,19 +257,16 @@ def _spin_lines(table: Table) -> list[str]:
     return lines
 
 
-def many_orbits_table(table: Table, title: str | None = None, total_rows: int | None = None) -> FitTable:
+def many_orbits_table(table: Table, title: str | None = None, total_rows: int | None = None,
+                      units: DisplayUnits = AS_TYPED) -> FitTable:
     """One summary row per orbit (the first MAX_TERMINAL_ROWS of
     ``total_rows``), then each distinct reason once."""
-    total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     bodies = set(head.columns["body"].tolist())
     kind = bodies.pop() if len(bodies) == 1 else "mixed"
-    columns = [Column(col, SUMMARY_HEADERS[col], _summary_cells(col, head.columns[col].tolist()),
-                      "left" if col in TEXT_COLUMNS else "right")
-               for col in SUMMARY_COLUMNS[kind] if col in head]
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
-    return FitTable(columns, SUMMARY_DROP_ORDER[kind], title=title, footer=footer,
-                    notes=[*status_legend(head), *_spin_lines(head)])
+    # the number format looked up here, at the call: the view's own
+    return build_table(table, summary_specs(kind), units=units, title=title, total_rows=total_rows,
+                       notes=[*status_legend(head), *_spin_lines(head)], number=format_number)
 
 
 #: Column-name endings that are units, longest first.
@@ -250,12 +276,30 @@ UNIT_SUFFIXES = (("_m_s2", "m/s²"), ("_rad_s", "rad/s"), ("_m_s", "m/s"), ("_1_
 GENERIC_KEYS = frozenset({"input_row", "curve", "theta_deg", "phi_deg", "interval", "status", "found"})
 
 
-def column_header(name: str) -> str:
-    """``v_min_m_s`` -> ``v min`` over ``m/s``: the unit stays in the header."""
+#: Column-name endings of the kinds a view shows in another unit beside SI.
+SUFFIX_KINDS = (("_m_s2", None), ("_rad_s", "rate"), ("_m_s", "speed"), ("_deg", "angle"), ("_m", "length"),
+                ("_kg", "mass"))
+#: Columns that hold an option as typed (theta_deg holds --theta).
+TYPED_COLUMNS = {p.column: (name,) for name, p in PARAMS.items() if p.column}
+
+
+def _split_name(name: str) -> tuple[str, str]:
+    """``v_min_m_s`` -> (``v min``, ``m/s``): the words and the unit."""
     for suffix, unit in UNIT_SUFFIXES:
         if name.endswith(suffix) and len(name) > len(suffix):
-            return f"{_words(name[:-len(suffix)])}\n{unit}"
-    return _words(name)
+            return _words(name[:-len(suffix)]), unit
+    return _words(name), ""
+
+
+def column_header(name: str) -> str:
+    """``v_min_m_s`` -> ``v min`` over ``m/s``: the unit stays in the header."""
+    words, unit = _split_name(name)
+    return f"{words}\n{unit}" if unit else words
+
+
+def quantity_kind(name: str) -> str | None:
+    """The kind of quantity a column holds, read off its name's unit."""
+    return next((kind for suffix, kind in SUFFIX_KINDS if name.endswith(suffix) and len(name) > len(suffix)), None)
 
 
 def _words(stem: str) -> str:
@@ -269,32 +313,42 @@ def _plain_cell(v, digits: int = 4) -> str:
     return format_number(v, digits)
 
 
-def generic_table(table: Table, title: str | None = None, total_rows: int | None = None) -> FitTable:
+def generic_spec(name: str, drop=None, justify: str = "right") -> ColumnSpec:
+    """Any table's column as a spec: its header and kind read off its name."""
+    words, unit = _split_name(name)
+    return ColumnSpec(name, words, unit, drop=drop, justify=justify, format=None, kind=quantity_kind(name),
+                      params=TYPED_COLUMNS.get(name, ()))
+
+
+def generic_table(table: Table, title: str | None = None, total_rows: int | None = None,
+                  units: DisplayUnits = AS_TYPED) -> FitTable:
     """Any table: one column per field (for results that are not orbits).
 
     Columns equal in every row (the inputs) go to a line under it, and a
     status's reason to a legend.  On a narrow console the columns are left
     out from the right (these tables put their inputs first), keeping the
-    first column and any of GENERIC_KEYS."""
+    first column and any of GENERIC_KEYS.  A length, speed, rate or angle
+    shows again in the unit :class:`DisplayUnits` gives, beside SI."""
     if len(table) == 1 and not (total_rows or 0) > 1:
-        names = [(n, v) for n, v in row_record(table).items()]
-        return FitTable([Column("quantity", "quantity", [n for n, _ in names], "left"),
-                         Column("value", "value", [_plain_cell(v, 6) for _, v in names])], title=title)
-    total = row_total(table, total_rows)
+        get = row_record(table)
+        specs = [replace(generic_spec(n), header=n) for n in table.names]
+        rows = quantity_rows(get, specs, units, number=_plain_cell, digits=6)
+        return FitTable([Column("quantity", "quantity", [r[0] for r in rows], "left"),
+                         Column("value", "value", [r[1] for r in rows])], title=title)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     same = [n for n in table.names if _constant(table.columns[n])]
     legend = status_legend(head) if "status" in table and "reason" in table else []
     hidden = set(same) | ({"reason"} if legend or "status" in table else set())
     names = [n for n in table.names if n not in hidden]
-    columns = [Column(n, column_header(n), [_plain_cell(v) for v in head.columns[n].tolist()],
-                      "left" if head.columns[n].dtype == object else "right") for n in names]
     keys = {names[0], *GENERIC_KEYS} if names else set()
-    drop_order = [n for n in reversed(names) if n not in keys]
+    drops = [n for n in reversed(names) if n not in keys]
+    specs = [generic_spec(n, drops.index(n) if n in drops else None,
+                          "left" if head.columns[n].dtype == object else "right") for n in names]
     first = row_record(head) if same else {}
     constants = ", ".join(f"{n} = {_plain_cell(first[n])}" for n in same if first[n] != "")
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
     notes = [f"[dim]{constants}[/dim]"] if constants else []
-    return FitTable(columns, drop_order, title=title, footer=footer, notes=[*notes, *legend])
+    return build_table(table, specs, units=units, title=title, total_rows=total_rows, notes=[*notes, *legend],
+                       number=_plain_cell)
 
 
 def _constant(values: np.ndarray) -> bool:
@@ -315,7 +369,8 @@ ORBIT_VIEW_COLUMNS = frozenset({"input_row", "body", "side", "theta_deg", "alpha
                                 "status", "reason", "omega_rad_s"})
 
 
-def rich_table(table: Table, title: str | None = None, total_rows: int | None = None):
+def rich_table(table: Table, title: str | None = None, total_rows: int | None = None,
+               units: DisplayUnits = AS_TYPED):
     """Terminal view: every quantity for one orbit, a summary row per orbit
     for many (a table with every column of :data:`ORBIT_VIEW_COLUMNS`);
     any other table column by column.  At most MAX_TERMINAL_ROWS
@@ -324,21 +379,34 @@ def rich_table(table: Table, title: str | None = None, total_rows: int | None = 
     longer result)."""
     total = row_total(table, total_rows)
     if not ORBIT_VIEW_COLUMNS <= set(table.names):
-        return generic_table(table, title, total)
+        return generic_table(table, title, total, units)
     if len(table) == 1 and total == 1:
-        return one_orbit_table(table)
-    return many_orbits_table(table, title, total)
+        return one_orbit_table(table, units=units)
+    return many_orbits_table(table, title, total, units)
 
 
 def write_rich_table(table: Table, console: Console, title: str | None = None,
-                     total_rows: int | None = None) -> int:
+                     total_rows: int | None = None, units: DisplayUnits = AS_TYPED) -> int:
     """:func:`rich_table` printed on ``console``; returns the number of rows given."""
-    console.print(rich_table(table, title, total_rows))
+    console.print(rich_table(table, title, total_rows, units))
     return len(table)
 
 
-#: (column, label, unit, source) for the vertical-orbit view.
-VERTICAL_FIELDS = (
+#: How a vertical orbit's quantities show beside SI: column -> (kind, options typed as).
+VERTICAL_UNITS = {"r_prime_m": ("length", ()), "v_cm_m_s": ("speed", ("v_top",)),
+                  "v_top_min_m_s": ("speed", ("v_top",)), "v_bottom_m_s": ("speed", ("v_top",)),
+                  "omega_rad_s": ("rate", ("phidot_top",)), "theta_deg": ("angle", ("theta",))}
+
+
+def _vertical_spec(col: str, header: str, unit: str = "", **more) -> ColumnSpec:
+    kind, params = VERTICAL_UNITS.get(col, (None, ()))
+    return ColumnSpec(col, header, unit, kind=kind, params=params, **more)
+
+
+#: The vertical-orbit view, a row per quantity (undefined ones left out).
+VERTICAL_FIELDS = tuple(_vertical_spec(col, label, unit, source=source,
+                                       when=lambda get, col=col: not is_undefined(get[col]))
+                        for col, label, unit, source in (
     ("r_prime_m", "r' radius of the centre's circle", "m", "eq. 8b"),
     ("v_cm_m_s", "speed at the top", "m/s", ""),
     ("v_top_min_m_s", "least top speed for contact", "m/s", "eq. 28a"),
@@ -354,31 +422,31 @@ VERTICAL_FIELDS = (
     ("phi_slip_deg", "first slip at φ (with --mu)", "deg", ""),
     ("phi_leave_deg", "leaves the surface at φ", "deg", "eq. 82"),
     ("growth_rate_1_s", "growth rate of a perturbation", "1/s", "floquet"),
-)
+))
 
-#: Columns of the many-vertical-orbit view: (column, header).
-VERTICAL_COLUMNS = (("input_row", "#"), ("theta_deg", "θ°"), ("v_cm_m_s", "v top\nm/s"), ("status", "status"),
-                    ("v_top_min_m_s", "v min\nm/s"), ("period_s", "lap\ns"), ("phi_worst_deg", "worst\nφ°"),
-                    ("mu_required", "μ\nrequired"), ("phi_leave_deg", "leaves\nφ°"))
 #: Left out first on a narrow console: where μ peaks and the lap time
 #: describe an orbit that works; where it leaves the wall, the μ it needs
 #: and the least top speed say whether it works at all.
 VERTICAL_DROP_ORDER = ("phi_worst_deg", "period_s", "phi_leave_deg", "mu_required", "v_top_min_m_s")
+#: The many-vertical-orbit view's columns.
+VERTICAL_COLUMNS = tuple(
+    _vertical_spec(col, header, unit, drop=VERTICAL_DROP_ORDER.index(col) if col in VERTICAL_DROP_ORDER else None,
+                   **more)
+    for col, header, unit, more in (
+        ("input_row", "#", "", {}), ("theta_deg", "θ", "°", {}), ("v_cm_m_s", "v top", "m/s", {}),
+        ("status", "status", "", {"format": status_text, "justify": "left"}), ("v_top_min_m_s", "v min", "m/s", {}),
+        ("period_s", "lap", "s", {}), ("phi_worst_deg", "worst\nφ", "°", {}), ("mu_required", "μ\nrequired", "", {}),
+        ("phi_leave_deg", "leaves\nφ", "°", {})))
 
 
-def vertical_view(table: Table, total_rows: int | None = None):
+def vertical_view(table: Table, total_rows: int | None = None, units: DisplayUnits = AS_TYPED):
     """One vertical orbit: a quantity per line; several: one line each
     (the first MAX_TERMINAL_ROWS of them)."""
     if len(table) == 1 and not (total_rows or 0) > 1:
         get = row_record(table)
-        rows = [(label, format_number(get[col], 5), unit, source)
-                for col, label, unit, source in VERTICAL_FIELDS if not is_undefined(get[col])]
-        title = f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n{_setup_line(get)}"
+        rows = quantity_rows(get, VERTICAL_FIELDS, units)
+        title = (f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n"
+                 f"{_setup_line(get, units)}")
         return quantity_table(title, get, rows, "keeps contact all round with enough friction")
-    total = row_total(table, total_rows)
-    head = first_rows(table, MAX_TERMINAL_ROWS)
-    columns = [Column(col, header, _summary_cells(col, head.columns[col].tolist()), "left" if col == "status" else "right")
-               for col, header in VERTICAL_COLUMNS]
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
-    return FitTable(columns, VERTICAL_DROP_ORDER, title="Vertical orbits (eqs. 27-28b)", footer=footer,
-                    notes=status_legend(head))
+    return build_table(table, VERTICAL_COLUMNS, units=units, title="Vertical orbits (eqs. 27-28b)",
+                       total_rows=total_rows, notes=status_legend(first_rows(table, MAX_TERMINAL_ROWS)))

@@ -6,7 +6,10 @@ friction needed, head clearance and the speed margin.  The pairs: the
 least clearance, when, the verdict (a conflict or a collision in red) and
 the drift time.  A fall: where the rider leaves the wall and lands, and
 whom he falls into (a hit in red).  Every view fits the console by
-leaving out whole columns, never by cutting a number (:class:`FitTable`).
+leaving out whole columns, never by cutting a number (:class:`FitTable`),
+and is its column specs (:mod:`~deathsphere.render.view_builder`).  The
+speeds show in km/h beside m/s (or in the unit ``--units`` asks for);
+plan files' own units are read as SI here.
 """
 
 from __future__ import annotations
@@ -15,23 +18,19 @@ import math
 
 from rich.markup import escape
 
+from deathsphere.render.display_units import AS_TYPED, KM_H, DisplayUnit, DisplayUnits
 from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
-    Column,
     FitTable,
     first_rows,
     format_number,
     is_undefined,
-    row_cap_line,
     row_record,
-    row_total,
     status_legend,
     status_text,
 )
+from deathsphere.render.view_builder import ColumnSpec, build_table
 from deathsphere.table import Table
-
-#: km/h per m/s (exact by definition).
-KM_H = 3.6
 
 #: A pair's verdict in its colour: a conflict (closer than the plan's
 #: min_clearance) and a collision (the envelopes overlap) in red.
@@ -56,11 +55,34 @@ def _fixed(value, decimals: int) -> str:
     return f"{value:.{decimals}f}"
 
 
-def speed_cell(m_s) -> str:
-    """A speed in km/h with m/s beside it: ``32.0 (8.89)``."""
+def speed_cell(m_s, unit: DisplayUnit | None = KM_H) -> str:
+    """A speed in km/h (or ``unit``) with m/s beside it: ``32.0 (8.89)``;
+    m/s alone when ``unit`` is None."""
+    if isinstance(m_s, str):  # a horizontal rider's empty bottom speed
+        return m_s
     if is_undefined(m_s):
         return "—"
-    return f"{float(m_s) * KM_H:.1f} ({float(m_s):.2f})"
+    if unit is None:
+        return f"{float(m_s):.2f}"
+    return f"{unit.of(m_s):.1f} ({float(m_s):.2f})"
+
+
+def _speed_unit(units: DisplayUnits) -> DisplayUnit | None:
+    unit = units.unit("speed", (), KM_H)
+    return None if unit is None or unit.name == "m/s" else unit
+
+
+def _speed_words(unit: DisplayUnit | None) -> str:
+    """How a speed cell reads, for a header or a sentence: ``km/h (m/s)``."""
+    return "m/s" if unit is None else f"{unit.name} (m/s)"
+
+
+def _speed_spec(key: str, words: str, units: DisplayUnits, **more) -> ColumnSpec:
+    """A speed column: the crew's unit with m/s in brackets (one cell, so
+    that a narrow console keeps both)."""
+    unit = _speed_unit(units)
+    header = f"{words} {unit.name}\n(m/s)" if unit is not None else f"{words}\nm/s"
+    return ColumnSpec(key, header, format=lambda v: speed_cell(v, unit), **more)
 
 
 def _column(table: Table, name: str):
@@ -76,50 +98,59 @@ def _margin(lo, hi) -> str:
     return f"{low}/{high}"
 
 
-#: Left out first on a narrow console (whole columns, least needed first).
-RIDERS_DROP_ORDER = ("v_contact", "period_s", "alpha_deg", "theta_deg", "v_bottom", "mu_required")
+def _lane_speed(get: dict):
+    """A horizontal rider's centre-of-mass speed, a looper's at the top."""
+    return get.get("v_top_m_s") if get.get("lane") == "vertical" else get.get("v_cm_m_s")
 
 
-def riders_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
+def _clearance_spec(key: str, header: str, decimals: int, **more) -> ColumnSpec:
+    """A clearance in mm steps (0.153 m), in ft too where lengths are asked for in ft."""
+    return ColumnSpec(key, header, "m", format=lambda v: _fixed(v, decimals), kind="length", **more)
+
+
+def _digits(key: str, header: str, unit: str = "", digits: int = 3, **more) -> ColumnSpec:
+    return ColumnSpec(key, header, unit, digits=digits, value=lambda get: get.get(key), **more)
+
+
+def riders_view(table: Table, total_rows: int | None = None, result=None,
+                units: DisplayUnits = AS_TYPED) -> FitTable:
     """One line per rider: the lane, its status, the planned speed (km/h and
     m/s), lean, load, friction needed, head clearance and the margin of
     speed in which the lane stays feasible; a looper's top and bottom."""
-    total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     vertical = [lane == "vertical" for lane in _column(head, "lane")]
-    v_top = _column(head, "v_top_m_s")
-    speed = [v_top[i] if vertical[i] else v for i, v in enumerate(_column(head, "v_cm_m_s"))]
-    columns = [
-        Column("name", "rider", [escape(str(v)) for v in _column(head, "name")], "left"),
-        Column("lane", "lane", [("vert." if v else "horiz.") for v in vertical], "left"),
-        Column("status", "status", [status_text(str(v)) for v in _column(head, "status")], "left"),
-        Column("speed", "speed km/h\n(m/s)", [speed_cell(v) for v in speed]),
-        Column("margin", "margin\n%", [_margin(lo, hi) for lo, hi in zip(_column(head, "margin_low_pct"),
-                                                                         _column(head, "margin_high_pct"))]),
-        Column("lean_deg", "lean°", [format_number(v, 3) for v in _column(head, "lean_deg")]),
-        Column("load_g", "load\ng", [format_number(v, 3) for v in _column(head, "load_g")]),
-        Column("head_clearance_m", "head\nclear\nm", [_fixed(v, 2) for v in _column(head, "head_clearance_m")]),
-        Column("mu_required", "μ\nneeded", [format_number(v, 2) for v in _column(head, "mu_required")]),
-        Column("theta_deg", "θ°", [format_number(v, 3) for v in _column(head, "theta_deg")]),
-        Column("alpha_deg", "α°", [format_number(v, 3) for v in _column(head, "alpha_deg")]),
-        Column("period_s", "lap\ns", [format_number(v, 3) for v in _column(head, "period_s")]),
+    unit = _speed_unit(units)
+    specs = [
+        ColumnSpec("name", "rider", justify="left", value=lambda get: str(get.get("name"))),
+        ColumnSpec("lane", "lane", justify="left", value=lambda get: "vert." if get.get("lane") == "vertical"
+                   else "horiz."),
+        ColumnSpec("status", "status", justify="left", format=lambda v: status_text(str(v)),
+                   value=lambda get: get.get("status")),
+        _speed_spec("speed", "speed", units, value=_lane_speed),
+        ColumnSpec("margin", "margin\n%", format=lambda ends: _margin(*ends),
+                   value=lambda get: (get.get("margin_low_pct"), get.get("margin_high_pct"))),
+        _digits("lean_deg", "lean°"),
+        _digits("load_g", "load", "g"),
+        _clearance_spec("head_clearance_m", "head\nclear", 2, value=lambda get: get.get("head_clearance_m")),
+        _digits("mu_required", "μ\nneeded", digits=2, drop=6),
+        _digits("theta_deg", "θ°", drop=4),
+        _digits("alpha_deg", "α°", drop=3),
+        _digits("period_s", "lap", "s", drop=2),
+        _speed_spec("v_bottom", "bottom", units, drop=5, when=lambda head: any(vertical),
+                    value=lambda get: get.get("v_bottom_m_s") if get.get("lane") == "vertical" else ""),
+        _digits("v_contact_m_s", "contact", "m/s", drop=1),
     ]
-    if any(vertical):
-        bottom = _column(head, "v_bottom_m_s")
-        columns.append(Column("v_bottom", "bottom km/h\n(m/s)",
-                              [speed_cell(b) if vert else "" for b, vert in zip(bottom, vertical)]))
-    columns.append(Column("v_contact", "contact\nm/s", [format_number(v, 3) for v in _column(head, "v_contact_m_s")]))
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
     notes = ["[dim]speed: a horizontal rider's centre of mass, a looper's at the top; margin: the band of "
              "speeds, in % of the planned one, in which the lane stays feasible[/dim]"]
     looper = [row_record(head, i) for i in range(len(head)) if vertical[i]]
     for get in looper:
         least = get.get("v_top_min_m_s")
         if not is_undefined(least):
-            notes.append(f"[dim]{escape(str(get['name']))}: least top speed {speed_cell(least)} km/h (m/s); "
-                         f"bottom load {format_number(get.get('load_bottom_g'), 3)} g[/dim]")
+            notes.append(f"[dim]{escape(str(get['name']))}: least top speed {speed_cell(least, unit)} "
+                         f"{_speed_words(unit)}; bottom load {format_number(get.get('load_bottom_g'), 3)} g[/dim]")
     notes += [line for line in status_legend(head) if not line.startswith(status_text("ok"))]
-    return FitTable(columns, RIDERS_DROP_ORDER, title=_title("Riders", result), footer=footer, notes=notes)
+    return build_table(table, specs, units=units, title=_title("Riders", result), total_rows=total_rows,
+                       notes=notes)
 
 
 def _title(what: str, result) -> str:
@@ -151,37 +182,42 @@ def _where(theta, phi) -> str:
     return f"{_angle(theta)}/{_angle(phi, wrap=True)}"
 
 
-#: Left out first on a narrow console.
-PAIRS_DROP_ORDER = ("where_b", "where_a")
+def _pair_clearance(pair) -> str:
+    """A least clearance (and its pair's verdict), in the verdict's colour where it is not clear."""
+    clearance, verdict = pair
+    text = _fixed(clearance, 3)
+    return text if verdict == "clear" else f"[{VERDICT_STYLE.get(verdict, 'red')}]{text}[/]"
 
 
-def pairs_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
+#: The pairs on screen; where each rider was goes first on a narrow console.
+PAIRS_VIEW = (
+    ColumnSpec("pair", "pair", justify="left", format=str,
+               value=lambda get: f"{escape(str(get.get('rider_a')))} – {escape(str(get.get('rider_b')))}"),
+    ColumnSpec("verdict", "verdict", justify="left", format=lambda v: _styled(str(v), VERDICT_STYLE),
+               value=lambda get: get.get("verdict")),
+    ColumnSpec("min_clearance_m", "least\nclear", "m", format=_pair_clearance, kind="length",
+               value=lambda get: (get.get("min_clearance_m"), str(get.get("verdict")))),
+    ColumnSpec("t_s", "at t", "s", value=lambda get: get.get("t_s")),
+    ColumnSpec("drift_time_s", "drift\ntime s", format=str,
+               value=lambda get: _drift(get.get("drift_time_s")) if str(get.get("verdict")) == "clear" else "—"),
+    ColumnSpec("where_a", "A θ°/φ°", format=str, drop=2,
+               value=lambda get: _where(get.get("theta_a_deg"), get.get("phi_a_deg"))),
+    ColumnSpec("where_b", "B θ°/φ°", format=str, drop=1,
+               value=lambda get: _where(get.get("theta_b_deg"), get.get("phi_b_deg"))),
+)
+
+
+def pairs_view(table: Table, total_rows: int | None = None, result=None,
+               units: DisplayUnits = AS_TYPED) -> FitTable:
     """One line per pair: the least clearance over the act, when, where
     each rider's contact was, the verdict (conflict and collision in red)
     and the drift time."""
-    total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    verdicts = [str(v) for v in _column(head, "verdict")]
-    clearance = [_fixed(v, 3) for v in _column(head, "min_clearance_m")]
-    clearance = [c if v == "clear" else f"[{VERDICT_STYLE.get(v, 'red')}]{c}[/]" for c, v in zip(clearance, verdicts)]
-    columns = [
-        Column("pair", "pair", [f"{escape(str(a))} – {escape(str(b))}"
-                                for a, b in zip(_column(head, "rider_a"), _column(head, "rider_b"))], "left"),
-        Column("verdict", "verdict", [_styled(v, VERDICT_STYLE) for v in verdicts], "left"),
-        Column("min_clearance_m", "least\nclear\nm", clearance),
-        Column("t_s", "at t\ns", [format_number(v, 4) for v in _column(head, "t_s")]),
-        Column("drift_time_s", "drift\ntime s", [_drift(v) if verdict == "clear" else "—"
-                                                 for v, verdict in zip(_column(head, "drift_time_s"), verdicts)]),
-        Column("where_a", "A θ°/φ°", [_where(t, p) for t, p in zip(_column(head, "theta_a_deg"),
-                                                                   _column(head, "phi_a_deg"))]),
-        Column("where_b", "B θ°/φ°", [_where(t, p) for t, p in zip(_column(head, "theta_b_deg"),
-                                                                   _column(head, "phi_b_deg"))]),
-    ]
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
     notes = [f"[dim]{_rule(result)}least clear: the envelopes' distance (negative: they overlap); drift time: "
              "how long the pair stays clear with one rider 1 % fast or slow (the worse)[/dim]"]
     notes += _pair_notes(head, result)
-    return FitTable(columns, PAIRS_DROP_ORDER, title=_title("Pairs", result), footer=footer, notes=notes)
+    return build_table(table, PAIRS_VIEW, units=units, title=_title("Pairs", result), total_rows=total_rows,
+                       notes=notes)
 
 
 def _rule(result) -> str:
@@ -221,7 +257,7 @@ def _window_text(window) -> str:
     return ", ".join(f"{lo:.0f}°–{hi:.0f}°" for lo, hi in spans)
 
 
-def _fall_line(get: dict) -> str:
+def _fall_line(get: dict, unit: DisplayUnit | None = KM_H) -> str:
     """One fall in words (plain text: it is the view's title): who, when,
     the outcome, where he leaves the wall and lands, how long and how hard."""
     who = (f"{get['rider']} at t = {format_number(get['t_fail_s'], 4)} s drops to "
@@ -234,7 +270,7 @@ def _fall_line(get: dict) -> str:
             f"(θ {_angle(get['theta_lost_deg'])}°, φ {_angle(get['phi_lost_deg'], wrap=True)}°), "
             f"lands at t = {format_number(get['t_land_s'], 4)} s (θ {_angle(get['theta_land_deg'])}°, "
             f"φ {_angle(get['phi_land_deg'], wrap=True)}°) after {format_number(get['fall_time_s'], 3)} s at "
-            f"{speed_cell(get['impact_speed_m_s'])} km/h (m/s)")
+            f"{speed_cell(get['impact_speed_m_s'], unit)} {_speed_words(unit)}")
 
 
 def _hit_cell(value, clearance=None, crosses=None) -> str:
@@ -253,48 +289,59 @@ def _true(value) -> bool:
 FALLS_AS_BLOCKS = 4
 
 
-def falls_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
+def _text(key: str, header: str, blank: str = "", **more) -> ColumnSpec:
+    return ColumnSpec(key, header, justify="left", value=lambda get: str(get.get(key) or blank), **more)
+
+
+def _clearance(decimals: int, header: str) -> ColumnSpec:
+    return ColumnSpec("min_clearance_m", header, "m", format=lambda v: _fixed(v, decimals), kind="length",
+                      value=lambda get: get.get("min_clearance_m"))
+
+
+#: A few falls: per other rider the least clearance (a hit in red).
+FALL_VIEW = (
+    _text("rider", "rider"),
+    _text("victim", "other rider", "(alone)"),
+    ColumnSpec("hit", "", justify="left", format=str,
+               value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"), get.get("crosses_lane"))),
+    _clearance(3, "least\nclear"),
+    ColumnSpec("t_min_s", "at t", "s", value=lambda get: get.get("t_min_s")),
+)
+
+
+def falls_view(table: Table, total_rows: int | None = None, result=None,
+               units: DisplayUnits = AS_TYPED) -> FitTable:
     """Each fall in words, then per other rider the least clearance
     between the falling rider and him (a hit in red); a Monte Carlo's many
     falls a line per row instead."""
-    total = row_total(table, total_rows)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     firsts: dict = {}
     for i, key in enumerate(zip(_column(head, "rider"), _column(head, "t_fail_s"), _column(head, "speed_fraction"))):
         firsts.setdefault(key, i)
     if len(firsts) > FALLS_AS_BLOCKS:
-        return _falls_list(head, total)
-    lines = [_fall_line(row_record(head, i)) for i in firsts.values()]
-    columns = [
-        Column("rider", "rider", [escape(str(v)) for v in _column(head, "rider")], "left"),
-        Column("victim", "other rider", [escape(str(v)) if v else "(alone)" for v in _column(head, "victim")],
-               "left"),
-        Column("hit", "", [_hit_cell(v, c, x) for v, c, x in zip(_column(head, "hit"), _column(head, "min_clearance_m"),
-                                                              _column(head, "crosses_lane"))], "left"),
-        Column("min_clearance_m", "least\nclear\nm", [_fixed(v, 3) for v in _column(head, "min_clearance_m")]),
-        Column("t_min_s", "at t\ns", [format_number(v, 4) for v in _column(head, "t_min_s")]),
-    ]
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
+        return _falls_list(table, total_rows, units)
+    unit = _speed_unit(units)
+    lines = [_fall_line(row_record(head, i), unit) for i in firsts.values()]
     notes = ["[dim]least clear: between the falling rider (a ball of half his width about his centre of "
              "mass) and the other's envelope, during the fall; below zero he falls into him[/dim]"]
-    return FitTable(columns, (), title="\n".join(lines), footer=footer, notes=notes)
+    return build_table(table, FALL_VIEW, units=units, title="\n".join(lines), total_rows=total_rows, notes=notes)
 
 
-def _falls_list(head: Table, total: int) -> FitTable:
-    columns = [
-        Column("rider", "rider", [escape(str(v)) for v in _column(head, "rider")], "left"),
-        Column("t_fail_s", "fails\nat t s", [format_number(v, 4) for v in _column(head, "t_fail_s")]),
-        Column("speed_fraction", "speed\nleft", [format_number(v, 2) for v in _column(head, "speed_fraction")]),
-        Column("outcome", "outcome", [_styled(str(v), OUTCOME_STYLE) for v in _column(head, "outcome")], "left"),
-        Column("victim", "other", [escape(str(v)) for v in _column(head, "victim")], "left"),
-        Column("hit", "", [_hit_cell(v, c) for v, c in zip(_column(head, "hit"), _column(head, "min_clearance_m"))],
-               "left"),
-        Column("min_clearance_m", "least\nclear m", [_fixed(v, 3) for v in _column(head, "min_clearance_m")]),
-        Column("impact_speed_m_s", "impact km/h\n(m/s)", [speed_cell(v) for v in _column(head, "impact_speed_m_s")]),
-        Column("fall_time_s", "fall\ns", [format_number(v, 3) for v in _column(head, "fall_time_s")]),
-    ]
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
-    return FitTable(columns, ("fall_time_s", "t_fail_s"), title="Falls", footer=footer)
+def _falls_list(table: Table, total_rows, units: DisplayUnits) -> FitTable:
+    specs = (
+        _text("rider", "rider"),
+        ColumnSpec("t_fail_s", "fails\nat t s", drop=2, value=lambda get: get.get("t_fail_s")),
+        ColumnSpec("speed_fraction", "speed\nleft", digits=2, value=lambda get: get.get("speed_fraction")),
+        ColumnSpec("outcome", "outcome", justify="left", format=lambda v: _styled(str(v), OUTCOME_STYLE),
+                   value=lambda get: get.get("outcome")),
+        _text("victim", "other"),
+        ColumnSpec("hit", "", justify="left", format=str,
+                   value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"))),
+        _clearance(3, "least\nclear m"),
+        _speed_spec("impact_speed_m_s", "impact", units, value=lambda get: get.get("impact_speed_m_s")),
+        ColumnSpec("fall_time_s", "fall", "s", digits=3, drop=1, value=lambda get: get.get("fall_time_s")),
+    )
+    return build_table(table, specs, units=units, title="Falls", total_rows=total_rows)
 
 
 #: The Monte Carlo summary's columns on screen: (column, header).
@@ -302,30 +349,33 @@ SUMMARY_HEADERS = {"rider": "falling\nrider", "victim": "other\nrider", "falls":
                    "hit_fraction": "hit\n%", "impact_speed_max_m_s": "worst impact\nkm/h (m/s)"}
 
 
-def _summary_cells(name: str, values: list, blank: str) -> list[str]:
+def _summary_cells(name: str, values: list, blank: str, unit: DisplayUnit | None = KM_H) -> list[str]:
     if name in ("rider", "victim"):
         return [escape(str(v)) if v else blank for v in values]
     if name == "hit_fraction":
         return [_fixed(100 * float(v), 1) if not is_undefined(v) else "—" for v in values]
     if name == "impact_speed_max_m_s":
-        return [speed_cell(v) for v in values]
+        return [speed_cell(v, unit) for v in values]
     return [escape(str(v)) if isinstance(v, str) else format_number(v, 4) for v in values]
 
 
-def falls_summary_view(table: Table, total_rows: int | None = None, result=None) -> FitTable:
+def falls_summary_view(table: Table, total_rows: int | None = None, result=None,
+                       units: DisplayUnits = AS_TYPED) -> FitTable:
     """The Monte Carlo's summary: per falling rider (and over all of
     them), how many falls, how many hit another rider (per other rider,
     and anyone), and the worst landing speed."""
-    total = row_total(table, total_rows)
-    head = first_rows(table, MAX_TERMINAL_ROWS)
-    columns = []
-    for name in head.names:
-        values = _column(head, name)
-        blank = "(any)" if name == "rider" else "(anyone)"
-        columns.append(Column(name, SUMMARY_HEADERS.get(name, name), _summary_cells(name, values, blank),
-                              "left" if name in ("rider", "victim") else "right"))
-    footer = [row_cap_line(len(head), total)] if total > len(head) else []
+    unit = _speed_unit(units)
+    headers = {**SUMMARY_HEADERS, "impact_speed_max_m_s": f"worst impact\n{_speed_words(unit)}"}
+    specs = [ColumnSpec(name, headers.get(name, name), drop=None if k < 2 else -k,
+                        justify="left" if name in ("rider", "victim") else "right",
+                        format=lambda v, name=name: _summary_cells(name, [v], _blank(name), unit)[0],
+                        value=lambda get, name=name: get.get(name))
+             for k, name in enumerate(table.names)]
     notes = ["[dim]random riders at random times of the act, each dropping to a random fraction of his speed "
              "in [0, 1); a hit: the falling rider's ball meets another's envelope in flight[/dim]"]
-    drop = tuple(reversed([c.key for c in columns[2:]]))
-    return FitTable(columns, drop, title="The odds: random falls in the act", footer=footer, notes=notes)
+    return build_table(table, specs, units=units, title="The odds: random falls in the act", total_rows=total_rows,
+                       notes=notes)
+
+
+def _blank(name: str) -> str:
+    return "(any)" if name == "rider" else "(anyone)"

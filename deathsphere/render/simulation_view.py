@@ -5,7 +5,9 @@ from __future__ import annotations
 from rich import box
 from rich.table import Table as RichTable
 
+from deathsphere.render.display_units import AS_TYPED, DisplayUnits
 from deathsphere.render.terminal_table import format_number, is_undefined, row_record
+from deathsphere.render.view_builder import ColumnSpec, globe_text, quantity_rows, quantity_text
 from deathsphere.table import Table
 
 #: (column, label, unit) of the simulation summary view.
@@ -25,20 +27,37 @@ SIMULATION_FIELDS = (
 )
 
 
-def simulation_view(summary: Table):
-    """The summary of one simulated body (the first row if several)."""
+def _typed_line(get: dict, units: DisplayUnits) -> str:
+    """The orbit's speed and the globe, where they show in another unit
+    (typed so, or asked for): ``v_cm = 11.11 m/s (40 km/h), r = 2.438 m
+    (diameter 16 ft)``; empty otherwise (the SI figures are the CSV's)."""
+    parts = []
+    speed = units.unit("speed", ("speed",))
+    if speed is not None and not is_undefined(get.get("speed_m_s")):
+        parts.append(f"v_cm = {quantity_text(get['speed_m_s'], 'm/s', speed)}")
+    if (units.unit("length", ("r", "diameter")) is not None) and not is_undefined(get.get("r_m")):
+        parts.append(globe_text(get, units))
+    return ", ".join(parts)
+
+
+def simulation_view(summary: Table, units: DisplayUnits = AS_TYPED):
+    """The summary of one simulated body (the first row if several); the
+    head clearance, the orbit's speed and the globe also in the unit
+    ``units`` gives."""
     get = row_record(summary)
     what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, θ = {format_number(get['theta_deg'])}°"
             + (f", α = {format_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
             + (f", kick {format_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
-    out = RichTable(title=f"simulation: {what}\nsolve_ivp {get['method']}, rtol {get['rtol']:g}, "
-                          f"atol {get['atol']:g}, {get['frame']} frame",
+    typed = _typed_line(get, units)
+    out = RichTable(title=f"simulation: {what}\n{typed + chr(10) if typed else ''}solve_ivp {get['method']}, "
+                          f"rtol {get['rtol']:g}, atol {get['atol']:g}, {get['frame']} frame",
                     box=box.SIMPLE_HEAVY, title_justify="left")
     for head in ("quantity", "value", "unit"):
         out.add_column(head, justify="right" if head == "value" else "left", no_wrap=True)
-    for col, label, unit in SIMULATION_FIELDS:
-        if col in get and not is_undefined(get[col]):
-            out.add_row(label, format_number(get[col], 4), unit)
+    specs = [ColumnSpec(col, label, unit, kind="length" if unit == "m" else None) for col, label, unit in
+             SIMULATION_FIELDS if col in get and not is_undefined(get[col])]
+    for label, value, unit, _ in quantity_rows(get, specs, units, digits=4):
+        out.add_row(label, value, unit)
     status = get["status"]
     style = {"completed": "green", "contact_lost": "red", "slips": "yellow"}.get(status, "magenta")
     out.add_row("status", f"[{style}]{status}[/{style}]", "")

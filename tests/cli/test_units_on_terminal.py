@@ -1,0 +1,160 @@
+"""Units out as they went in, on a terminal (docs/units.md): a value typed
+in ft or km/h comes back in ft or km/h beside SI in every command's
+terminal view, as a person sees it through a pseudo-terminal 80 and 100
+columns wide; ``--units si`` shows SI alone, ``--units imperial`` ft and
+mph; and the CSV is the same bytes whatever ``--units`` says."""
+
+import re
+
+import pytest
+from rich.cells import cell_len
+from test_terminal_views import ANSI, run_in_pty
+
+WIDTHS = (80, 100)
+ACT = """
+[globe]
+diameter = 4.88
+min_clearance = 0.15
+
+[[rider]]
+name = "Ana"
+lane = "horizontal"
+height = 1.5
+speed = 8.0
+"""
+
+
+def screen(args, columns: int) -> str:
+    text = ANSI.sub("", run_in_pty(args, columns))
+    assert "Traceback" not in text, text
+    assert max(cell_len(line) for line in text.splitlines()) <= columns, text
+    return text
+
+
+def assert_rows(text: str, *patterns: str):
+    """Each ``patterns`` a row of the view (label, value and unit, regex)."""
+    missing = [p for p in patterns if not re.search(p, text)]
+    assert not missing, (missing, text)
+
+
+def rows_with(text: str, words: str) -> list[str]:
+    return [line for line in text.splitlines() if words in line]
+
+
+def header(text: str) -> str:
+    """The lines above the table's rule: the title and the headers."""
+    return text.split("━━━", 1)[0]
+
+
+def cell_pairs(text: str, first: str, second: str) -> bool:
+    """Whether a header line has ``first`` and, further right, ``second``."""
+    return any(first in line and second in line[line.index(first) + len(first):] for line in header(text).splitlines())
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_ride_heights_and_globe_in_ft_speeds_in_km_h(columns):
+    text = screen(("ride", "--diameter", "16ft", "--height", "0:8:2ft", "--speed", "40km/h"), columns)
+    # a height column in m, and beside it the same heights in ft, as typed: 0, 2, 4, 6, 8
+    assert cell_pairs(text, "m", "ft")
+    for i, ft in enumerate(("0", "2", "4", "6", "8"), start=1):
+        row = next(line.split() for line in text.splitlines() if line.split()[:1] == [str(i)])
+        assert row[2] == ft, row
+    assert "km/h" in header(text) and all(" 40 " in line for line in rows_with(text, " ok "))
+    assert "r = 2.438 m (diameter 16 ft)" in " ".join(text.split())
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_one_ride_orbit_in_the_units_typed(columns):
+    text = screen(("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft"), columns)
+    assert_rows(text, r"speed of the centre of mass\s+40\s+km/h", r"the same in m/s\s+11\.111\s+m/s",
+                r"contact height above the floor\s+2\.4384\s+m", r"the same in ft\s+8\s+ft")
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_the_riders_table_in_ft(columns):
+    text = screen(("ride", "--diameter", "16ft", "--height", "2:8:2ft", "--speed", "10:30:10km/h", "--summary"),
+                  columns)
+    assert cell_pairs(text, "m", "ft") and "km/h" in header(text)
+    heights = [line.split()[:2] for line in text.splitlines() if re.match(r"\s+\d", line)]
+    assert ["0.6096", "2"] in heights and ["2.438", "8"] in heights
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_two_wheeler_turns_in_the_units_typed(columns):
+    text = screen(("ride", "--machine", "benchmark-bicycle", "--steer", "free", "--diameter", "16ft", "--height",
+                   "4ft", "--speed", "18km/h"), columns)
+    row = next(line.split() for line in text.splitlines() if line.split()[:1] == ["1"])
+    # #, height m, height ft, status, v rear m/s, v rear km/h
+    assert row[1:3] == ["1.219", "4"] and row[4:6] == ["5", "18"], row
+    assert "r = 2.438 m (diameter 16 ft)" in " ".join(text.split())
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_orbit_in_the_units_typed(columns):
+    one = screen(("orbit", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft"), columns)
+    assert_rows(one, r"v_cm = \|r'\|Ω centre speed\s+11\.111\s+m/s", r"the same in km/h\s+40\s+km/h",
+                r"r = 2\.438 m \(diameter 16 ft\)")
+    many = screen(("orbit", "--theta", "60", "--speed", "5:35:10km/h"), columns)
+    assert cell_pairs(many, "m/s", "km/h")
+    assert [line.split()[6] for line in many.splitlines() if re.match(r"\s+[1-4]\s", line)] == ["5", "15", "25", "35"]
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_vertical_in_the_units_typed(columns):
+    text = screen(("vertical", "--theta", "90", "--v-top", "18km/h"), columns)
+    assert re.search(r"speed at the top\s+5\s+m/s", text) and re.search(r"the same in km/h\s+18\s+km/h", text)
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_simulate_summary_in_the_units_typed(columns):
+    text = screen(("simulate", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--periods", "1"),
+                  columns)
+    flat = " ".join(text.split())
+    assert "v_cm = 11.11 m/s (40 km/h)" in flat and "r = 2.438 m (diameter 16 ft)" in flat
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_units_si_shows_si_alone(columns):
+    text = screen(("ride", "--diameter", "16ft", "--height", "0:8:2ft", "--speed", "40km/h", "--units", "si"),
+                  columns)
+    assert not re.search(r"\bft\b", text) and "km/h" not in text and "speed" in header(text)
+    assert "r = 2.438 m," in " ".join(text.split())
+    one = screen(("orbit", "--theta", "60", "--alpha", "10", "--units", "si"), columns)
+    assert "the same in" not in one and "rpm" not in one
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_units_imperial_shows_ft_and_mph(columns):
+    text = screen(("ride", "--diameter", "4.8768", "--height", "0.6096", "--height", "2.4384", "--speed", "40km/h",
+                   "--units", "imperial"), columns)
+    assert cell_pairs(text, "m", "ft") and "mph" in header(text) and "km/h" not in text
+    heights = [line.split()[1:3] for line in text.splitlines() if re.match(r"\s+[12]\s", line)]
+    assert heights == [["0.6096", "2"], ["2.438", "8"]]
+    one = screen(("orbit", "--theta", "90", "--speed", "40km/h", "--units", "imperial"), columns)
+    assert re.search(r"the same in mph\s+24\.855\s+mph", one) and "km/h" not in one
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_show_speeds_follow_units(columns, tmp_path):
+    plan = tmp_path / "act.toml"
+    plan.write_text(ACT, encoding="utf-8")
+    crew = screen(("show", str(plan), "--table", "riders"), columns)
+    assert "km/h" in crew and "28.8 (8.00)" in crew
+    imperial = screen(("show", str(plan), "--table", "riders", "--units", "imperial"), columns)
+    assert "mph" in imperial and "17.9 (8.00)" in imperial and "km/h" not in imperial
+    si = screen(("show", str(plan), "--table", "riders", "--units", "si"), columns)
+    assert "km/h" not in si and "mph" not in si and re.search(r"\s8\.00\s", si)
+
+
+@pytest.mark.parametrize("args", [
+    ("ride", "--diameter", "16ft", "--height", "0:8:2ft", "--speed", "40km/h"),
+    ("ride", "--diameter", "16ft", "--height", "0:2.4:0.8m", "--speed", "10:30:10km/h", "--summary"),
+    ("orbit", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft"),
+    ("vertical", "--theta", "90", "--v-top", "18km/h"),
+    ("limits", "--theta", "60", "--diameter", "16ft", "--mu", "1"),
+], ids=["ride", "summary", "orbit", "vertical", "limits"])
+def test_csv_is_the_same_whatever_units_says(run, args):
+    plain = run(*args, "--format", "csv")
+    assert plain.exit_code == 0, plain.output
+    for system in ("as-typed", "si", "metric", "imperial"):
+        assert run(*args, "--format", "csv", "--units", system).stdout_bytes == plain.stdout_bytes
