@@ -16,10 +16,14 @@ import pytest
 from scipy.linalg import expm
 
 from deathsphere.physics.two_wheeler import motion, stability, steady
-from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
+from deathsphere.physics.ground import Plane, Sphere
+from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
 from deathsphere.physics.two_wheeler.simulate import lock_torque, simulate
 
 GLOBE = 2.4384      # a 16-foot globe's radius, m
+SPHERE, FLAT = Sphere(GLOBE), Plane()
+#: The benchmark's gravity (Table 1), at which these cases were set: the run passes it.
+G = BENCHMARK_GRAVITY
 B = benchmark_bicycle()
 
 
@@ -32,7 +36,7 @@ def _straight(speed):
 @functools.lru_cache(maxsize=None)
 def _globe_turn_found(speed, height):
     lane = np.arccos(height / GLOBE - 1)
-    turn = steady.turns_for_speed(lane, speed, B, "sphere", GLOBE)
+    turn = steady.turns_for_speed(lane, speed, B, SPHERE, G)
     return turn["q"][:, 0, 0], turn["u"][:, 0, 0], float(turn["steer_torque"][0, 0])
 
 
@@ -53,7 +57,7 @@ def test_energy_is_conserved_hands_free_on_flat_ground():
 
 def test_energy_is_conserved_hands_free_on_the_globe():
     q, u, _ = _globe_turn()
-    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, surface="sphere", r=GLOBE,
+    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, ground=SPHERE, g=G,
                                kick=np.radians(0.5), hands_free=True, rtol=1e-10)
     assert summary["max_energy_drift"] < 1e-8
     assert summary["max_constraint_residual"] < 1e-10
@@ -78,9 +82,9 @@ def test_a_tiny_kick_follows_the_linearisation_about_the_steady_turn():
     the kick grows, as exp(J t) applied to it predicts."""
     q, u, torque = _globe_turn()
     eps = 1e-7
-    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 2.0, surface="sphere", r=GLOBE, torque0=torque,
+    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 2.0, ground=SPHERE, g=G, torque0=torque,
                          kick=eps, rtol=1e-12, atol=1e-14, n_points=5)
-    J = stability.jacobian(q, u, torque, B, "sphere", GLOBE)[0]
+    J = stability.jacobian(q, u, torque, B, SPHERE, G)[0]
     x0 = np.zeros(J.shape[0])
     x0[2] = eps                   # the lean in the state (theta, heading, lean, steer, rates)
     predicted = np.array([(expm(J * t) @ x0)[2] for t in series["t"]])
@@ -92,7 +96,7 @@ def test_a_tiny_kick_follows_the_linearisation_about_the_steady_turn():
 def test_a_riders_gains_hold_an_unstable_lane_that_zero_gains_do_not():
     q, u, torque = _globe_turn()
     kick = np.radians(0.2)
-    run = dict(surface="sphere", r=GLOBE, torque0=torque, kick=kick, rtol=1e-6, n_points=61)
+    run = dict(ground=SPHERE, g=G, torque0=torque, kick=kick, rtol=1e-6, n_points=61)
     _, held = simulate(B, q, u[list(motion.INDEPENDENT)], 3.0, k_lean=10.0, k_rate=10.0, **run)
     _, loose = simulate(B, q, u[list(motion.INDEPENDENT)], 3.0, **run)
     assert held["status"] == "completed" and abs(held["final_lean_deviation"]) < kick
@@ -102,7 +106,7 @@ def test_a_riders_gains_hold_an_unstable_lane_that_zero_gains_do_not():
 def test_slip_stops_the_run_when_mu_is_below_the_turns_need():
     q, u, torque = _globe_turn()
     # the turn needs mu 0.209 at the rear, 0.247 at the front (ride's mu_required_*)
-    _, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, surface="sphere", r=GLOBE, torque0=torque,
+    _, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, ground=SPHERE, g=G, torque0=torque,
                           mu=0.2, rtol=1e-6)
     assert summary["status"] == "slips" and summary["t_event"] < 1e-3
 
@@ -113,28 +117,28 @@ def test_the_contact_forces_at_a_steady_turn_are_the_steady_turns():
     vertical, in closed form)."""
     q, u, torque = _globe_turn()
     lane = np.arccos(1.0 / GLOBE - 1)
-    turn = steady.turns_for_speed(lane, 5.0, B, "sphere", GLOBE)
-    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 0.1, surface="sphere", r=GLOBE, torque0=torque,
+    turn = steady.turns_for_speed(lane, 5.0, B, SPHERE, G)
+    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 0.1, ground=SPHERE, g=G, torque0=torque,
                          rtol=1e-10, n_points=3)
     for key in ("normal_rear", "normal_front", "friction_rear", "friction_front"):
         np.testing.assert_allclose(series[key], turn[key][0, 0], rtol=1e-6)
 
 
 def _flat_turn(radius=10.0, speed=5.0):
-    turn = steady.turns_for_speed(1 / radius, speed, B, "flat")
+    turn = steady.turns_for_speed(1 / radius, speed, B, FLAT, G)
     return turn["q"][:, 0, 0], turn["u"][:, 0, 0], float(turn["steer_torque"][0, 0])
 
 
-@pytest.mark.parametrize("surface", ["flat", "sphere"])
-def test_a_locked_steer_holds_its_angle_and_conserves_energy(surface):
+@pytest.mark.parametrize("ground", [FLAT, SPHERE], ids=["plane", "sphere"])
+def test_a_locked_steer_holds_its_angle_and_conserves_energy(ground):
     """No torque does work on a steer that does not turn; the lock's torque
     (the reduced steer row) is what the full equations with the contact
     multipliers need to keep the steer's acceleration zero."""
-    q, u, torque = _flat_turn() if surface == "flat" else _globe_turn()
-    run = dict(surface=surface, r=None if surface == "flat" else GLOBE, steer_locked=True, rtol=1e-10, n_points=7)
-    values = motion.parameter_values(B, surface, run["r"])
+    q, u, torque = _flat_turn() if ground == FLAT else _globe_turn()
+    run = dict(ground=ground, g=G, steer_locked=True, rtol=1e-10, n_points=7)
+    values = motion.parameter_values(B, G, ground)
     # unkicked, the lock holds the steady turn's torque (turn_state's G + w^2 H)
-    T0, a0, _ = lock_torque(q, u[list(motion.INDEPENDENT)], values, surface)
+    T0, a0, _ = lock_torque(q, u[list(motion.INDEPENDENT)], values, ground)
     assert T0 == pytest.approx(torque, rel=1e-9) and np.max(np.abs(a0)) < 1e-9
     series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.2, kick=np.radians(1.0),
                                kick_lean_rate=0.1, **run)
@@ -147,12 +151,12 @@ def test_a_locked_steer_holds_its_angle_and_conserves_energy(surface):
     # lock's torque leave the steer unaccelerated, and without it they do not
     q1 = q.copy()
     q1[motion.LEAN] += np.radians(2.0)
-    q1 = motion.pitch(q1, values, surface)
+    q1 = motion.pitch(q1, values, ground)
     u_ind = np.array([0.3, u[motion.REAR], 0.0])
-    T, _, u1 = lock_torque(q1, u_ind, values, surface)
-    udot, _ = motion.accelerations(q1, u1, values, T, surface)
+    T, _, u1 = lock_torque(q1, u_ind, values, ground)
+    udot, _ = motion.accelerations(q1, u1, values, T, ground)
     assert abs(udot[motion.STEER]) < 1e-9 * np.max(np.abs(udot))
-    free, _ = motion.accelerations(q1, u1, values, 0.0, surface)
+    free, _ = motion.accelerations(q1, u1, values, 0.0, ground)
     assert abs(free[motion.STEER]) > 1e-3
 
 
