@@ -21,7 +21,6 @@ from deathsphere.api.arguments import (INF, G, R, checked_array, checked_axis, c
 from deathsphere.api.machines import PRESETS
 from deathsphere.params import ParameterError
 from deathsphere.physics.ground import Plane, Sphere
-from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
 from deathsphere.table import Table
 
@@ -31,9 +30,6 @@ __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is
 
 #: How the steer is held in the stability analysis (docs/two-wheeler.md sec. 8.3).
 STEER_MODES = ("free", "locked")
-#: The gravity a two-wheeler's run takes when none is given (m/s^2): the
-#: presets' own of old, the benchmark's.
-_PRESET_GRAVITY = BENCHMARK_GRAVITY
 
 #: Steady-turn requests (lanes x speeds or torques) one call answers: with
 #: the stability each costs some 0.4 ms of CPU on a grid, and each distinct
@@ -271,9 +267,8 @@ def _machine(machine, steer, g) -> tuple[TwoWheeler, str, float]:
 
 
 def _gravity(g) -> float:
-    """The run's gravity (m/s^2), one per call."""
-    if g is G:
-        return _PRESET_GRAVITY
+    """The run's gravity (m/s^2; standard gravity unless given), one per
+    call: every two-wheeler runs under the gravity asked for, never its own."""
     return float(checked_array("g", g)) if np.ndim(g) == 0 else _one_g(g)
 
 
@@ -664,7 +659,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     if locked and (hands_free or steer_gains is not None):
         raise ParameterError("a locked steer's torque is whatever holds it: hands_free and steer_gains are for "
                              "steer free", "steer")
-    g = _PRESET_GRAVITY if g is G else checked_scalar("g", g)
+    g = checked_scalar("g", g)
     view = checked_flag("view", view)
     if hands_free and steer_gains is not None:
         raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
