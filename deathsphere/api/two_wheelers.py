@@ -649,6 +649,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     from deathsphere.api.arguments import checked_choice, checked_flag, checked_optional, checked_scalar
     from deathsphere.simulation.runner import METHODS
     from deathsphere.physics.two_wheeler import grounds, motion
+    from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering
     from deathsphere.physics.two_wheeler.simulate import simulate as integrate
 
     t = as_two_wheeler(machine)
@@ -722,11 +723,10 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                              f"{speed * duration / 1000:.6g} km: ask for fewer periods or a shorter duration",
                              length_option)
     n_points = max(int(round(length * points_per_period)) + 1, 2)
-    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], duration, ground=ground, g=g, torque0=torque0, k_lean=k_lean, k_rate=k_rate,
-                                hands_free=hands_free, kick=math.radians(perturb), mu=mu, n_points=n_points,
-                                method=method, rtol=rtol, atol=atol, steer_locked=locked,
-                                kick_lean_rate=math.radians(perturb_lean_rate),
-                                kick_steer_rate=math.radians(perturb_steer_rate),
+    steering = Steering(torque0=torque0, k_lean=k_lean, k_rate=k_rate, hands_free=hands_free, locked=locked)
+    kick = Kick(math.radians(perturb), math.radians(perturb_lean_rate), math.radians(perturb_steer_rate))
+    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], duration, ground=ground, g=g, steering=steering,
+                                kick=kick, solver=Solver(method, rtol, atol, n_points), mu=mu,
                                 progress=None if progress is None else _percent(progress))
     deg = np.degrees
     cols = {"t_s": series["t"], "lean_surface_deg": deg(series["lean"]), "steer_deg": deg(series["steer"]),

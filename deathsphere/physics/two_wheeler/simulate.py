@@ -27,13 +27,15 @@ error ~1e-8 of the force).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics.two_wheeler import geometry, grounds, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STATUSES", "rider_torque", "lock_torque", "contact_forces", "simulate"]
+__all__ = ["STATUSES", "Steering", "Kick", "Solver", "rider_torque", "lock_torque", "contact_forces", "simulate"]
 
 #: How a run ends.
 STATUSES = ("completed", "contact_lost", "slips", "failed")
@@ -41,6 +43,44 @@ STATUSES = ("completed", "contact_lost", "slips", "failed")
 _H = 1e-4
 #: Right-hand sides evaluated between two reports to ``progress`` (some 5 ms of work).
 _PROGRESS_EVERY = 100
+
+
+@dataclass(frozen=True)
+class Steering:
+    """How the steer is held (docs/two-wheeler.md sec. 10.1): the rider's
+    torque T = ``torque0`` + ``k_lean`` (lean - ``lean0``) + ``k_rate``
+    lean' (N m, N m/rad, N m s/rad; ``lean0`` None: the start's lean), or
+    ``hands_free`` (T = 0), or ``locked`` (the steer held at the start's
+    angle by whatever torque it takes)."""
+
+    torque0: float = 0.0
+    lean0: float | None = None
+    k_lean: float = 0.0
+    k_rate: float = 0.0
+    hands_free: bool = False
+    locked: bool = False
+
+
+@dataclass(frozen=True)
+class Kick:
+    """What kicks the start off its steady turn: the lean (rad), the lean
+    and steer rates (rad/s; the dependent speeds follow from the
+    constraints)."""
+
+    lean: float = 0.0
+    lean_rate: float = 0.0
+    steer_rate: float = 0.0
+
+
+@dataclass(frozen=True)
+class Solver:
+    """How the motion is integrated: scipy's ``solve_ivp`` method, its
+    tolerances (``atol`` None: = ``rtol``) and the rows reported."""
+
+    method: str = "DOP853"
+    rtol: float = 1e-10
+    atol: float | None = None
+    n_points: int = 200
 
 
 def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0):
@@ -100,19 +140,16 @@ def _residual(q, p, ground):
     return np.abs(h[0])
 
 
-def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.FLAT, g=STANDARD_GRAVITY, torque0=0.0,
-             lean0=None, k_lean=0.0, k_rate=0.0, hands_free=False, kick=0.0, mu=np.inf, n_points=200,
-             method="DOP853", rtol=1e-10, atol=None, steer_locked=False, kick_lean_rate=0.0,
-             kick_steer_rate=0.0, progress=None):
+def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.FLAT, g=STANDARD_GRAVITY,
+             steering=Steering(), kick=Kick(), solver=Solver(), mu=np.inf, progress=None):
     """Integrate from (q0, u_ind0) (a steady turn's q and its independent
-    speeds (lean rate, rear wheel rate, steer rate)) with the lean kicked by
-    ``kick`` (rad), the lean and steer rates by ``kick_lean_rate`` and
-    ``kick_steer_rate`` (rad/s; the dependent speeds follow from the
-    constraints), the steer torque :func:`rider_torque` (T_0 = ``torque0``
-    about lean_0 = ``lean0``, default q0's lean), or, ``hands_free``, zero,
-    or, ``steer_locked``, the steer held at q0's steer (its rate zero, any
-    given dropped; the torque :func:`lock_torque`), for ``t_end`` s; events
-    stop the run: a normal force reaching zero (``contact_lost``) or the
+    speeds (lean rate, rear wheel rate, steer rate)) on ``ground`` under
+    gravity ``g`` with the start kicked by ``kick`` (:class:`Kick`), the
+    steer held as ``steering`` says (:class:`Steering`: the torque
+    :func:`rider_torque`, T_0 about lean_0, default q0's lean; or zero,
+    hands-free; or, locked, the steer held at q0's steer, its rate zero, any
+    given dropped, the torque :func:`lock_torque`), for ``t_end`` s,
+    integrated as ``solver`` says (:class:`Solver`); events stop the run: a normal force reaching zero (``contact_lost``) or the
     friction exceeding ``mu`` times the normal at either wheel (``slips``)
     (beyond the paper; docs/two-wheeler.md sec. 10.1).  ``progress``, if
     given, is told (t, t_end) now and then as the integrator advances (a run
@@ -120,17 +157,18 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.
     dict of (n,) arrays and the coordinates ``q`` (8, n), summary dict)."""
     from scipy.integrate import solve_ivp
 
-    p = parameters
+    p, steer_locked = parameters, steering.locked
     values = motion.parameter_values(p, g, ground)
     q0 = np.array(q0, float)
-    lean0 = float(q0[motion.LEAN]) if lean0 is None else float(lean0)
-    q0[motion.LEAN] += kick
+    lean0 = float(q0[motion.LEAN]) if steering.lean0 is None else float(steering.lean0)
+    q0[motion.LEAN] += kick.lean
     q0 = motion.pitch(q0, values, ground)
-    u_ind0 = np.array(u_ind0, float) + np.array([kick_lean_rate, 0.0, kick_steer_rate])
+    u_ind0 = np.array(u_ind0, float) + np.array([kick.lean_rate, 0.0, kick.steer_rate])
     if steer_locked:
         u_ind0[2] = 0.0
     y0 = np.concatenate([q0, u_ind0])
-    gains = (0.0, 0.0, 0.0, 0.0) if hands_free else (torque0, lean0, k_lean, k_rate)
+    gains = (0.0, 0.0, 0.0, 0.0) if steering.hands_free else (steering.torque0, lean0, steering.k_lean,
+                                                              steering.k_rate)
 
     def torque(y):
         if steer_locked:
@@ -174,14 +212,14 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.
     lost.terminal = slip.terminal = True
     lost.direction = slip.direction = -1
     events = [lost] + ([slip] if np.isfinite(mu) else [])
-    t_eval = np.linspace(0.0, t_end, max(int(n_points), 2))
+    t_eval = np.linspace(0.0, t_end, max(int(solver.n_points), 2))
     # an event already past at the start is not a crossing: solve_ivp would never see it
     start = [e(0.0, y0) for e in events]
     if min(start) <= 0:
         status, t_event, ts, Y, nfev = STATUSES[1 + int(np.argmin(start))], 0.0, np.zeros(1), y0[:, None], 0
     else:
-        sol = solve_ivp(rates, (0.0, t_end), y0, method=method, t_eval=t_eval, events=events, rtol=rtol,
-                        atol=rtol if atol is None else atol)
+        sol = solve_ivp(rates, (0.0, t_end), y0, method=solver.method, t_eval=t_eval, events=events,
+                        rtol=solver.rtol, atol=solver.rtol if solver.atol is None else solver.atol)
         status, t_event, ts, Y, nfev = "completed", np.nan, sol.t, sol.y, sol.nfev
         for k, times in enumerate(sol.t_events):
             if len(times) and not t_event <= times[0]:
