@@ -18,7 +18,8 @@ BLOCK_BYTES = 32768
 
 
 def batch(*arrays):
-    """The broadcast batch shape and result dtype of the arguments."""
+    """The broadcast batch shape and result dtype of the arguments (beyond
+    the paper; docs/two-wheeler.md sec. 5)."""
     arrays = [a for a in arrays if not isinstance(a, (float, int))]
     shape = numpy.broadcast_shapes(*(numpy.shape(a)[1:] if numpy.ndim(a) else () for a in arrays))
     return shape, numpy.result_type(float, *arrays)
@@ -27,7 +28,8 @@ def batch(*arrays):
 def in_blocks(rows):
     """Evaluate a function of (``rows`` arrays (k, *batch), p, then arguments
     per state) over its batch in blocks of BLOCK_BYTES per temporary, the
-    outputs joined along the batch."""
+    outputs joined along the batch (beyond the paper; docs/two-wheeler.md
+    sec. 5)."""
     def decorate(function):
         @functools.wraps(function)
         def blocked(*args):
