@@ -28,10 +28,14 @@ from pathlib import Path
 
 import numpy as np
 
+from deathsphere.physics.ground import Sphere
 from deathsphere.physics.two_wheeler import _generated, linear, motion, stability, steady
-from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
+from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
 
 GLOBE = 2.4384      # 16 ft
+SPHERE = Sphere(GLOBE)
+#: Every table here is the benchmark bicycle's at the benchmark's gravity (Table 1).
+G = BENCHMARK_GRAVITY
 
 
 def best_of(fn, repeat):
@@ -58,8 +62,8 @@ def lanes(n, save=None):
     theta = np.arccos(H.ravel() / GLOBE - 1)
     b = benchmark_bicycle()
     times = []
-    for run in (lambda: steady.turns_for_speed(theta, V.ravel(), b, "sphere", GLOBE),
-                lambda: stability.turns_with_stability(theta, b, speed=V.ravel(), r=GLOBE)):
+    for run in (lambda: steady.turns_for_speed(theta, V.ravel(), b, SPHERE, G),
+                lambda: stability.turns_with_stability(theta, b, SPHERE, G, speed=V.ravel())):
         t0, c0 = time.perf_counter(), time.process_time()
         out = run()
         times.append((time.perf_counter() - t0, time.process_time() - c0))
@@ -115,7 +119,7 @@ def globe():
     b = benchmark_bicycle()
     heights = np.round(np.arange(0.2, 4.61, 0.4), 1)
     theta = np.arccos(heights / GLOBE - 1)
-    out = stability.turns_with_stability(theta, b, torque=0.0, r=GLOBE)
+    out = stability.turns_with_stability(theta, b, SPHERE, G, torque=0.0)
     print("hands-free turns (steer torque 0), 16-ft globe, benchmark bicycle, head (0.3, -1.7) m")
     print("height_m lean_deg steer_deg v_rear v_front v_cm normal_rear normal_front mu_rear mu_front head_m "
           "growth_free growth_locked")
@@ -127,7 +131,7 @@ def globe():
               f"{out['head_clearance'][i, j]:5.2f} {out['growth_free'][i, j]:6.2f} {out['growth_locked'][i, j]:6.2f}")
     speeds = np.arange(1.0, 20.01, 0.5)
     H, V = np.meshgrid(heights, speeds, indexing="ij")
-    out = stability.turns_with_stability(np.arccos(H.ravel() / GLOBE - 1), b, speed=V.ravel(), r=GLOBE)
+    out = stability.turns_with_stability(np.arccos(H.ravel() / GLOBE - 1), b, SPHERE, G, speed=V.ravel())
     print("\nturns with the steady steer torque held, rear speeds 1-20 m/s")
     print("height_m stable_free stable_locked least_growth_free_1_s at_v_m_s lean_deg steer_torque_n_m "
           "torque_range_n_m")
@@ -168,11 +172,11 @@ def single_contact():
     print(f"\nsingle-contact machine: mass {m} kg, h {h:.4f} m, I_roll {roll:.3f}, I_pitch {pitch:.3f}, "
           f"I_yaw {yaw:.3f} kg m^2, J {spin}, a {a} m (mass centre {xg:.3f} m ahead of the contact, dropped)")
     print("height_m orbits_1_20_m_s neutral v_contact_m_s")
-    params = MachineParams(a, 0.0, GLOBE, h, b.g, m, roll, pitch, yaw, spin)
+    params = MachineParams(a, 0.0, GLOBE, h, G, m, roll, pitch, yaw, spin)
     alpha = np.deg2rad(np.linspace(-89.0, 179.0, 2000))
     for height in np.round(np.arange(0.2, 4.61, 0.4), 1):
         theta = np.arccos(height / GLOBE - 1)
-        orbit = ride_orbit(theta, alpha, GLOBE, b.g, m, h, a, 0.0, pitch, yaw, spin, 1.7)
+        orbit = ride_orbit(theta, alpha, GLOBE, G, m, h, a, 0.0, pitch, yaw, spin, 1.7)
         ok = np.isfinite(orbit["omega"]) & (orbit["status"] == 0)
         ok &= (orbit["v_contact"] > 1.0) & (orbit["v_contact"] < 20.0)
         if not ok.any():
@@ -205,19 +209,19 @@ def main():
         single_contact()
         return
     bicycle = benchmark_bicycle()
-    p = motion.parameter_values(bicycle)
+    p = motion.parameter_values(bicycle, G)
     rng = np.random.default_rng(1)
     q = rng.uniform(-0.3, 0.3, (8, args.n))
     u = rng.uniform(-2.0, 2.0, (8, args.n))
     q_wall = q + np.array([np.pi / 2] + [0.0] * 7)[:, None]    # around the equator of a 3 m sphere
-    p_wall = motion.parameter_values(bicycle, "sphere", 3.0)
+    p_wall = motion.parameter_values(bicycle, G, Sphere(3.0))
     for name, fn in (("flat_equations", lambda: _generated.flat_equations(q, u, p, 0.0)),
                      ("sphere_equations", lambda: _generated.sphere_equations(q_wall, u, p_wall, 0.0)),
                      ("accelerations", lambda: motion.accelerations(q, u, p)),
                      ("pitch (Newton)", lambda: motion.pitch(q, p))):
         seconds = best_of(fn, args.repeat)
         print(f"{name:16s} {seconds / args.n * 1e6:8.2f} us/state  (batch {args.n})")
-    seconds = best_of(lambda: linear.benchmark_matrices(bicycle), args.repeat)
+    seconds = best_of(lambda: linear.benchmark_matrices(bicycle, G), args.repeat)
     print(f"{'M, C1, K0, K2':16s} {seconds * 1e3:8.2f} ms")
     if args.derive:
         from deathsphere.physics.two_wheeler import derivation

@@ -115,6 +115,15 @@ def _length(name, what, symbol, lo=TINY, **more):
     return Param(name, "m", what, lo, HUGE, symbol=symbol, kind="length", metavar="M", **more)
 
 
+def _body(body, what, moments):
+    """A two-wheeler's body's mass m<body> and its inertia tensor's entries
+    I<body><axes> in the benchmark's axes (kg m^2; a product of inertia, xz,
+    of either sign)."""
+    mass = Param(f"m{body}", "kg", f"{what} mass", 0.0, HUGE, symbol=f"m_{body}", kind="mass", metavar="KG")
+    return (mass, *(Param(f"I{body}{axes}", "kg m^2", f"{what} inertia {axes}", -HUGE if axes == "xz" else 0.0, HUGE,
+                          symbol=f"I_{body}{axes}", metavar="KG_M2") for axes in moments))
+
+
 #: Every parameter, by name.  Angles are in degrees, as on the command line.
 PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("theta", "deg", "polar angle", 0.0, 180.0, symbol="θ", kind="angle", metavar="DEG", column="theta_deg",
@@ -224,6 +233,22 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("perturb_steer_rate", "deg/s", "steer rate kick", -1000.0, 1000.0, metavar="DEG_S", default=0.0,
           help="Simulate, a two-wheeler with a free steer: kick the steer rate by this, -1000..1000 deg/s (the "
                "dependent speeds follow from the rolling constraints)."),
+    # the two-wheeler's body (docs/two-wheeler.md sec. 1): Table 1 of Meijaard et al. (2007) by its names, SI,
+    # positions from the rear contact upright, z down; its gravity is the run's g
+    _length("w", "wheel base", "w"),
+    Param("c", "m", "trail", -HUGE, HUGE, symbol="c", kind="length", metavar="M"),
+    Param("lam", "rad", "steer axis tilt", -math.pi / 2, math.pi / 2, lo_open=True, hi_open=True, symbol="λ",
+          kind="angle", metavar="RAD"),
+    _length("rR", "rear wheel radius", "r_R"),
+    *_body("R", "rear wheel", ("xx", "yy")),
+    Param("xB", "m", "rear frame mass centre x", -HUGE, HUGE, symbol="x_B", kind="length", metavar="M"),
+    Param("zB", "m", "rear frame mass centre z down", -HUGE, HUGE, symbol="z_B", kind="length", metavar="M"),
+    *_body("B", "rear frame", ("xx", "yy", "zz", "xz")),
+    Param("xH", "m", "front frame mass centre x", -HUGE, HUGE, symbol="x_H", kind="length", metavar="M"),
+    Param("zH", "m", "front frame mass centre z down", -HUGE, HUGE, symbol="z_H", kind="length", metavar="M"),
+    *_body("H", "front frame", ("xx", "yy", "zz", "xz")),
+    _length("rF", "front wheel radius", "r_F"),
+    *_body("F", "front wheel", ("xx", "yy")),
     Param("jobs", "", "processes", 1, 256, integer=True, metavar="N", default=1,
           help="Processes working in parallel; the output is the same as with one."),
     Param("chunk_size", "", "orbits evaluated per chunk", 1, 10_000_000, integer=True, metavar="N",

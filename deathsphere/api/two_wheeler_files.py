@@ -5,6 +5,10 @@ value+/-uncertainty`` lines, the benchmark's 26 names) and the project's
 machine file (TOML ``key = value`` lines or a CSV header and row, read as
 :func:`~deathsphere.api.machines.machine_file` reads them) whose keys are
 the benchmark's names.  A bad file is refused in one line.
+
+Gravity is the run's, not the two-wheeler's: a BicycleParameters file's
+``g`` (the format has one) is read and left out of the record, and the
+project's file has no ``g`` key.
 """
 
 from __future__ import annotations
@@ -16,19 +20,20 @@ from pathlib import Path
 
 from deathsphere.api.machines import DEFAULT_MACHINE, UNECHOABLE, machine_file, machine_file_data, machine_file_text
 from deathsphere.api.two_wheelers import DEFAULT_HEAD, TWO_WHEELERS, TwoWheeler
-from deathsphere.params import ParameterError
-from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
+from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.params import PARAMS, ParameterError
+from deathsphere.physics.two_wheeler.parameters import FIELD_NAMES, PARAMETER_NAMES
 
 __all__ = ["two_wheeler_file", "read_machine_file", "is_two_wheeler_file", "two_wheeler_text", "FILE_STYLES"]
 
 #: The texts :func:`two_wheeler_text` writes.
 FILE_STYLES = ("toml", "bicycleparameters")
-#: The project's keys beside the benchmark's 26 (the head point in m, z down).
+#: The project's keys beside the benchmark's 25 (Table 1's but g; the head point in m, z down).
 OWN_KEYS = ("name", "source", "base", "head_x", "head_z")
-#: What a value given as text with a unit is (docs/units.md); the rest are
-#: plain numbers in SI (moments of inertia in kg m^2).
-_KINDS = {**dict.fromkeys(("w", "c", "rR", "rF", "xB", "zB", "xH", "zH", "head_x", "head_z"), "length"),
-          **dict.fromkeys(("mR", "mB", "mH", "mF"), "mass"), "lam": "angle", "g": "acceleration"}
+#: What a value given as text with a unit is (docs/units.md; the registry's
+#: kind); the rest are plain numbers in SI (moments of inertia in kg m^2).
+_KINDS = {**{k: PARAMS[k].kind for k in FIELD_NAMES if PARAMS[k].kind != "none"},
+          **dict.fromkeys(("head_x", "head_z"), "length")}
 #: Keys some BicycleParameters files add that restate the Whipple model's
 #: symmetry: read when they agree with it, refused when they do not.
 _RESTATED = {"yB": "0", "yH": "0", "IRzz": "IRxx", "IFzz": "IFxx"}
@@ -140,7 +145,7 @@ def two_wheeler_file(path, base=None) -> TwoWheeler:
     ``lam`` in rad, or text with a unit), and ``name``, ``source``,
     ``head_x``, ``head_z`` (the head point, m, z down) and ``base``: a
     two-wheeler preset whose values the keys not given keep (``base`` the
-    argument when the file has none; without either every one of the 26 is
+    argument when the file has none; without either every one of the 25 is
     needed)."""
     from deathsphere.table.reasons import reason_text
 
@@ -152,22 +157,26 @@ def two_wheeler_file(path, base=None) -> TwoWheeler:
             _refuse(p.name, f"{', '.join(missing[:5])}{' ...' if len(missing) > 5 else ''} missing: a "
                             "BicycleParameters benchmark file gives all 26 of the benchmark's parameters")
         stem = p.stem[: -len("Benchmark")] if p.stem.endswith("Benchmark") and p.stem != "Benchmark" else p.stem
+        del values["g"]                                 # the run's, not the two-wheeler's
         return _built(values, DEFAULT_HEAD, _name({}, stem, p.name),
                       reason_text(f"BicycleParameters file {p.name}; head point assumed"), p.name)
     data, p = machine_file_data(path)
-    unknown = sorted(set(data) - set(PARAMETER_NAMES) - set(OWN_KEYS))
+    if "g" in data:
+        _refuse(p.name, "g is the run's gravity, not the two-wheeler's: give it to the run (-g/--gravity, g=) "
+                        "instead of the file")
+    unknown = sorted(set(data) - set(FIELD_NAMES) - set(OWN_KEYS))
     if unknown:
         _refuse(p.name, f"unknown key {unknown[0]!r} (known: {', '.join(OWN_KEYS)} and the benchmark's "
-                        f"{', '.join(PARAMETER_NAMES)})")
+                        f"{', '.join(FIELD_NAMES)})")
     base = data.get("base", base if isinstance(base, str) and base.strip().lower() in TWO_WHEELERS else None)
     if base is not None and (not isinstance(base, str) or base.strip().lower() not in TWO_WHEELERS):
         _refuse(p.name, f"base must be a two-wheeler preset ({' | '.join(TWO_WHEELERS)}; got {base!r})")
     start = TWO_WHEELERS[base.strip().lower()] if base is not None else None
-    missing = [k for k in PARAMETER_NAMES if k not in data]
+    missing = [k for k in FIELD_NAMES if k not in data]
     if missing and start is None:
-        _refuse(p.name, f"{', '.join(missing[:5])}{' ...' if len(missing) > 5 else ''} missing: give all 26 of the "
-                        "benchmark's parameters, or base = a two-wheeler preset whose values the others keep")
-    values = {k: _value(k, data[k], p.name) if k in data else getattr(start, k) for k in PARAMETER_NAMES}
+        _refuse(p.name, f"{', '.join(missing[:5])}{' ...' if len(missing) > 5 else ''} missing: give all 25 of the "
+                        "benchmark's parameters but g, or base = a two-wheeler preset whose values the others keep")
+    values = {k: _value(k, data[k], p.name) if k in data else getattr(start, k) for k in FIELD_NAMES}
     head = start.head if start is not None else DEFAULT_HEAD
     head = tuple(_value(k, data[k], p.name) if k in data else h for k, h in zip(("head_x", "head_z"), head))
     return _built(values, head, _name(data, p.stem, p.name), str(data.get("source", reason_text(f"file {p.name}"))),
@@ -188,9 +197,10 @@ def read_machine_file(path, base=DEFAULT_MACHINE):
 def two_wheeler_text(machine, style: str = "toml") -> str:
     """A two-wheeler (a :class:`TwoWheeler` or a preset's name) as the text
     of a file that :func:`two_wheeler_file` reads back exactly: ``toml``,
-    the project's (name, source, head, then the 26 in Table 1's order), or
+    the project's (name, source, head, then the 25 in Table 1's order, no g), or
     ``bicycleparameters``, the library's benchmark format (the 26 sorted by
-    name, as its writer sorts them; no uncertainties, no head)."""
+    name, as its writer sorts them; no uncertainties, no head; its ``g``,
+    which the format needs, standard gravity, the run's by default)."""
     from deathsphere.api.two_wheelers import as_two_wheeler
 
     t = as_two_wheeler(machine)
@@ -198,6 +208,7 @@ def two_wheeler_text(machine, style: str = "toml") -> str:
         raise ParameterError(f"style must be one of {' | '.join(FILE_STYLES)} (got {style!r})", "style")
     values = t.benchmark_values()
     if style == "bicycleparameters":
+        values = values | {"g": STANDARD_GRAVITY}
         return "".join(f"{k} = {values[k]!r}\n" for k in sorted(values))
     head = {"head_x": t.head[0], "head_z": t.head[1]}
     return (f"name = {json.dumps(t.name, ensure_ascii=False)}\nsource = {json.dumps(t.source, ensure_ascii=False)}\n"

@@ -1,13 +1,13 @@
 """The motorcycle presets of the two-wheeler: a vehicle's published totals
 (mass, centre of mass and inertia of motorcycle and rider together) and
-its front assembly converted to the benchmark's 26 parameters (beyond the
+its front assembly converted to the benchmark's parameters (Table 1's but gravity, the run's) (beyond the
 paper; docs/two-wheeler.md sec. 1.1-1.3).
 
 The Whipple model's rear frame B is what remains of the whole once the
 front assembly is taken out (parallel-axis theorem); the wheels' masses
 stay in the frames that carry them (mR = mF = 0), their spin inertias are
 IRyy and IFyy, which is exact in the Whipple model (sec. 1.1).  Each preset
-is the keyword arguments of a :class:`~deathsphere.api.two_wheelers.TwoWheeler`
+is the keyword arguments of a :class:`~deathsphere.records.two_wheeler.TwoWheeler`
 but its name.
 """
 
@@ -48,8 +48,6 @@ FRONT_GYRATION = 0.35
 #: rear contact, z down: 0.55 m above and 0.2 m ahead of the rider's mass
 #: centre that Table 7.2 implies (0.60 m, 1.05 m high; the rider leans forward).
 SPORT_TOURER_HEAD = (0.80, -1.60)
-#: The benchmark's gravity (Table 1), kept for every preset.
-GRAVITY = 9.81
 
 
 def inertia_tensor(ixx, iyy, izz, ixz) -> np.ndarray:
@@ -79,8 +77,8 @@ def front_assembly(*, mass, ahead, height, steer_inertia, across_inertia, w, c, 
     return x, -height, tensor
 
 
-def whipple_parameters(*, mass, x, z, inertia, front, w, c, lam, rR, rF, IRyy, IFyy, g=GRAVITY) -> dict:
-    """The benchmark's 26 parameters of a vehicle with its rider from its
+def whipple_parameters(*, mass, x, z, inertia, front, w, c, lam, rR, rF, IRyy, IFyy) -> dict:
+    """The benchmark's parameters (Table 1's but gravity, the run's) of a vehicle with its rider from its
     totals, wheels locked (``mass``, mass centre (``x``, ``z``) from the
     rear contact, ``inertia`` the 3 x 3 tensor about it, benchmark axes)
     and its front assembly ``front`` = (mass, x, z, tensor about its mass
@@ -95,7 +93,7 @@ def whipple_parameters(*, mass, x, z, inertia, front, w, c, lam, rR, rF, IRyy, I
     rest = (np.asarray(inertia, dtype=float) - i_f - _parallel_axis(m_f, (x_f - x, 0.0, z_f - z))
             - inertia_tensor(0.0, IRyy + IFyy, 0.0, 0.0))
     i_b = rest - _parallel_axis(m_b, (x_b - x, 0.0, z_b - z))
-    return dict(w=w, c=c, lam=lam, g=g, rR=rR, mR=0.0, IRxx=0.0, IRyy=IRyy,
+    return dict(w=w, c=c, lam=lam, rR=rR, mR=0.0, IRxx=0.0, IRyy=IRyy,
                 xB=x_b, zB=z_b, mB=m_b, IBxx=i_b[0, 0], IByy=i_b[1, 1], IBzz=i_b[2, 2], IBxz=i_b[0, 2],
                 xH=x_f, zH=z_f, mH=m_f, IHxx=i_f[0, 0], IHyy=i_f[1, 1], IHzz=i_f[2, 2], IHxz=i_f[0, 2],
                 rF=rF, mF=0.0, IFxx=0.0, IFyy=IFyy)

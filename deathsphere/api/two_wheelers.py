@@ -12,29 +12,24 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import asdict, dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
 from deathsphere.api.arguments import (INF, G, R, checked_array, checked_axis, checked_flag, checked_statuses,
                                        sphere_radius)
-from deathsphere.api.machines import PRESETS, echoable_text
+from deathsphere.api.machines import PRESETS
 from deathsphere.params import ParameterError
-from deathsphere.physics.two_wheeler.parameters import BicycleParameters
+from deathsphere.physics.ground import Plane, Sphere
+from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
 from deathsphere.table import Table
 
 __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_only", "two_wheeler_ride", "STRAIGHT_COLUMNS",
-           "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "EIGENVALUES", "simulate_two_wheeler", "CONTROLS",
-           "SIMULATE_COLUMNS", "SIMULATE_SUMMARY_COLUMNS"]
+           "STRAIGHT_SUMMARY_COLUMNS", "TURN_COLUMNS", "STEER_MODES", "simulate_two_wheeler", "CONTROLS",
+           "SIMULATE_COLUMNS", "SIMULATE_SUMMARY_COLUMNS", "DEFAULT_HEAD"]
 
 #: How the steer is held in the stability analysis (docs/two-wheeler.md sec. 8.3).
 STEER_MODES = ("free", "locked")
-#: Eigenvalues per row: (surface, steer) -> how many (docs/two-wheeler.md sec. 8.3).
-EIGENVALUES = {("flat", "free"): 4, ("flat", "locked"): 2, ("sphere", "free"): 6, ("sphere", "locked"): 4}
-#: The rider's head point (x, z) from the rear contact upright when none is
-#: given: 1.7 m above the ground over the benchmark's rear frame mass centre
-#: (an assumption: the benchmark has no head).
-DEFAULT_HEAD = (0.3, -1.7)
 
 #: Steady-turn requests (lanes x speeds or torques) one call answers: with
 #: the stability each costs some 0.4 ms of CPU on a grid, and each distinct
@@ -44,112 +39,14 @@ MAX_TURN_REQUESTS = 30_000
 #: Speeds of straight running one call answers (a few microseconds each).
 MAX_STRAIGHT_SPEEDS = 2_000_000
 
-_LENGTHS = ("w", "rR", "rF")
-_MASSES = ("mR", "mB", "mH", "mF")
-_MOMENTS = ("IRxx", "IRyy", "IBxx", "IByy", "IBzz", "IHxx", "IHyy", "IHzz", "IFxx", "IFyy")
-
-
 def _eig_columns(k: int) -> tuple[str, ...]:
     return tuple(f"eig_{i}_{part}" for i in range(1, k + 1) for part in ("re", "im"))
-
-
-@dataclass(frozen=True, kw_only=True)
-class TwoWheeler(BicycleParameters):
-    """A two-wheeler (bicycle or motorcycle with its rider) as the Whipple
-    bicycle of Meijaard, Papadopoulos, Ruina & Schwab (2007): the 26
-    parameters of their Table 1 by the same names and in SI (``lam`` in
-    rad), ``head`` the top of the rider's head (x, z) [m] from the rear
-    contact in the upright reference configuration (z down, like xB, zB),
-    ``name`` and ``source`` (docs/two-wheeler.md sec. 1): the physics
-    core's :class:`BicycleParameters` with a rider's head and a name, checked.
-
-    >>> TwoWheeler(**{**TWO_WHEELERS["benchmark-bicycle"].benchmark_values(), "w": -1.0})
-    Traceback (most recent call last):
-    ...
-    deathsphere.ParameterError: two-wheeler w (wheel base) must be a finite number > 0 m (got -1)
-    """
-
-    head: tuple[float, float] = DEFAULT_HEAD
-    name: str = "custom two-wheeler"
-    source: str = ""
-
-    def __post_init__(self):
-        set_ = object.__setattr__
-        for field in ("name", "source"):
-            set_(self, field, echoable_text(f"two-wheeler {field}", getattr(self, field)))
-        for f in fields(self)[:26]:
-            value = getattr(self, f.name)
-            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-                    or not math.isfinite(value):
-                raise ParameterError(f"two-wheeler {f.name} must be a finite number (got {value!r})", "machine")
-            set_(self, f.name, float(value))
-        head = self.head
-        if isinstance(head, (str, bytes)) or np.ndim(head) != 1 or len(head) != 2 \
-                or not all(isinstance(v, (int, float, np.integer, np.floating)) and math.isfinite(v) for v in head):
-            raise ParameterError(f"two-wheeler head must be two finite numbers (x, z) in m (got {head!r})", "machine")
-        set_(self, "head", (float(head[0]), float(head[1])))
-        what = {"w": "wheel base", "rR": "rear wheel radius", "rF": "front wheel radius", "g": "gravity"}
-        for name in _LENGTHS + ("g",):
-            if not getattr(self, name) > 0:
-                unit = "m/s^2" if name == "g" else "m"
-                raise ParameterError(f"two-wheeler {name} ({what[name]}) must be a finite number > 0 {unit} "
-                                     f"(got {getattr(self, name):g})", "machine")
-        if not abs(self.lam) < math.pi / 2:
-            raise ParameterError(f"two-wheeler lam (steer axis tilt) must be between -pi/2 and pi/2 rad "
-                                 f"(got {self.lam:g})", "machine")
-        for name in _MASSES + _MOMENTS:
-            if getattr(self, name) < 0:
-                raise ParameterError(f"two-wheeler {name} must be >= 0 (got {getattr(self, name):g})", "machine")
-        if not sum(getattr(self, name) for name in _MASSES) > 0:
-            raise ParameterError("two-wheeler: the masses mR + mB + mH + mF must add up to more than 0 kg",
-                                 "machine")
-        for body in ("B", "H"):
-            ixx, izz, ixz = (getattr(self, f"I{body}{k}") for k in ("xx", "zz", "xz"))
-            if ixz * ixz > ixx * izz * (1 + 1e-9):
-                raise ParameterError(f"two-wheeler I{body}xz ({ixz:g} kg m^2) is too large for I{body}xx "
-                                     f"({ixx:g}) and I{body}zz ({izz:g}): the inertia tensor must be positive "
-                                     f"(I{body}xz^2 <= I{body}xx I{body}zz)", "machine")
-
-    def benchmark_values(self) -> dict:
-        """The 26 parameters by the benchmark's names (Meijaard et al. 2007, Table 1)."""
-        return {k: v for k, v in asdict(self).items() if k not in ("head", "name", "source")}
-
-    def parameters(self):
-        """The physics core's :class:`BicycleParameters` (the 26 numbers alone)."""
-        return BicycleParameters(**self.benchmark_values())
-
-    @property
-    def mass(self) -> float:
-        return self.mR + self.mB + self.mH + self.mF
-
-    def row(self) -> dict:
-        """The two-wheeler as a row of ``deathsphere machines`` (its
-        single-contact columns from the four bodies: total mass, the centre
-        of mass's height upright on flat ground, the head's height; the
-        rest empty)."""
-        m = self.mass
-        h = (self.mR * self.rR - self.mB * self.zB - self.mH * self.zH + self.mF * self.rF) / m
-        nan = math.nan
-        return {"name": self.name, "mass_kg": m, "com_height_m": h, "wheel_radius_m": nan, "tyre_radius_m": nan,
-                "roll_inertia_kg_m2": nan, "pitch_inertia_kg_m2": nan, "yaw_inertia_kg_m2": nan,
-                "spin_inertia_kg_m2": self.IRyy + self.IFyy, "head_height_m": -self.head[1], "source": self.source,
-                "width_m": nan, "kind": "two-wheeler", "wheel_base_m": self.w, "trail_m": self.c,
-                "steer_axis_tilt_deg": math.degrees(self.lam), "rear_wheel_radius_m": self.rR,
-                "front_wheel_radius_m": self.rF}
-
-
-def _benchmark_bicycle() -> TwoWheeler:
-    from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
-
-    return TwoWheeler(**asdict(benchmark_bicycle()), head=DEFAULT_HEAD, name="benchmark-bicycle",
-                      source="Meijaard Papadopoulos Ruina & Schwab (2007) Proc. R. Soc. A 463:1955-1982 Table 1 "
-                             "exactly; head point (0.3; -1.7) m an assumption")
 
 
 def _presets() -> tuple[TwoWheeler, ...]:
     from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
 
-    return (_benchmark_bicycle(), *(TwoWheeler(**build(), name=name) for name, build in MOTORCYCLES.items()))
+    return (benchmark_two_wheeler(), *(TwoWheeler(**build(), name=name) for name, build in MOTORCYCLES.items()))
 
 
 #: The two-wheeler presets, by name (``--machine`` with ``--flat`` or
@@ -248,13 +145,13 @@ def _speeds(speed, limit: int) -> np.ndarray:
     return _values("rear_speed", speed, limit, "speed")
 
 
-def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
-    """Upright straight running on flat ground: the benchmark's eigenvalues
+def _straight(t: TwoWheeler, g: float, speed, steer: str, summary: bool) -> Table:
+    """Upright straight running on flat ground under gravity ``g``: the benchmark's eigenvalues
     against speed (Meijaard et al. 2007, Table 2 and Figure 3; docs/two-wheeler.md sec. 7)."""
     from deathsphere.physics.two_wheeler import linear, stability
 
     v = _speeds(speed, MAX_STRAIGHT_SPEEDS)
-    m = linear.benchmark_matrices(t.parameters())
+    m = linear.benchmark_matrices(t.parameters(), g)
     if steer == "free":
         values = _sorted_eigenvalues(linear.eigenvalues(m, v))
     else:
@@ -265,7 +162,7 @@ def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
     verdicts, growth = stability.verdict(values)
     if summary:
         ok = verdicts == "stable"
-        return Table({"machine": np.array([t.name], dtype=object), "g_m_s2": np.array([t.g]),
+        return Table({"machine": np.array([t.name], dtype=object), "g_m_s2": np.array([g]),
                       # a motorcycle's speeds lie beyond a bicycle's 10 m/s: searched up to the fastest asked
                       "weave_speed_m_s": np.array([linear.weave_speed(m, high=max(10.0, float(v.max())))]),
                       "capsize_speed_m_s": np.array([linear.capsize_speed(m, high=max(10.0, float(v.max())))]),
@@ -273,7 +170,7 @@ def _straight(t: TwoWheeler, speed, steer: str, summary: bool) -> Table:
                       "speeds_stable": np.array([int(ok.sum())], dtype=np.int64)})
     n = v.size
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, t.name, dtype=object),
-            "steer": np.full(n, steer, dtype=object), "speed_m_s": v, "g_m_s2": np.full(n, t.g),
+            "steer": np.full(n, steer, dtype=object), "speed_m_s": v, "g_m_s2": np.full(n, g),
             "stability": verdicts.astype(object), "growth_rate_1_s": growth}
     return Table(cols | _eig_cols(values, values.shape[-1]))
 
@@ -358,19 +255,21 @@ def steer_request(steer, steer_torque) -> tuple:
     return "free", m.group(1)
 
 
-def _machine(machine, steer, g) -> tuple[TwoWheeler, str]:
-    """The two-wheeler under the gravity asked for, and how its steer is held."""
+def _machine(machine, steer, g) -> tuple[TwoWheeler, str, float]:
+    """The two-wheeler, how its steer is held and the run's gravity."""
     t = as_two_wheeler(machine)
     if steer is None:
         steer = "free"
     if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
         raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} or torque=T (N m) (got {steer!r})",
                              "steer")
-    if g is not G:
-        from dataclasses import replace
+    return t, steer.strip().lower(), _gravity(g)
 
-        t = replace(t, g=float(checked_array("g", g)) if np.ndim(g) == 0 else _one_g(g))
-    return t, steer.strip().lower()
+
+def _gravity(g) -> float:
+    """The run's gravity (m/s^2; standard gravity unless given), one per
+    call: every two-wheeler runs under the gravity asked for, never its own."""
+    return float(checked_array("g", g)) if np.ndim(g) == 0 else _one_g(g)
 
 
 @dataclass(frozen=True, eq=False)
@@ -381,6 +280,7 @@ class TurnRequest:
     :func:`turn_rows` answers it lane by lane."""
 
     machine: TwoWheeler
+    g: float
     lanes: np.ndarray
     lanes_given: np.ndarray
     by_theta: bool
@@ -409,7 +309,7 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     lanes answered a chunk at a time) MAX_STREAMED_LANES lanes of at most
     MAX_TURN_REQUESTS speeds each."""
     steer, steer_torque = steer_request(steer, steer_torque)
-    t, steer = _machine(machine, steer, g)
+    t, steer, g = _machine(machine, steer, g)
     r = sphere_radius(r, diameter)
     r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
     if r is None:
@@ -438,7 +338,7 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     if summary and keep is not None:
         raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
                              "only")
-    return TurnRequest(machine=t, lanes=lane, lanes_given=lane_given, by_theta=by_theta, values=value,
+    return TurnRequest(machine=t, g=g, lanes=lane, lanes_given=lane_given, by_theta=by_theta, values=value,
                        by_torque=by_torque, r=r, steer=steer, stability=stability, mu=_one_limit("mu", mu),
                        max_g=_one_limit("max_g", max_g), summary=summary,
                        only=None if keep is None else tuple(keep))
@@ -465,13 +365,13 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     lanes, values = (x.reshape(-1) for x in np.meshgrid(request.lanes[first:stop], request.values, indexing="ij"))
     given = np.repeat(request.lanes_given[first:stop], request.values.size)
     by_theta, by_torque = request.by_theta, request.by_torque
-    p = t.parameters()
+    p, globe = t.parameters(), Sphere(r)
     kwargs = {"torque": values} if by_torque else {"speed": values}
     if request.stability:
-        out = tw_stability.turns_with_stability(lanes, p, surface="sphere", r=r, head=t.head, **kwargs)
+        out = tw_stability.turns_with_stability(lanes, p, globe, request.g, head=t.head, **kwargs)
     else:
-        out = (steady.turns_for_torque(lanes, values, p, "sphere", r, t.head) if by_torque
-               else steady.turns_for_speed(lanes, values, p, "sphere", r, t.head))
+        out = (steady.turns_for_torque(lanes, values, p, globe, request.g, t.head) if by_torque
+               else steady.turns_for_speed(lanes, values, p, globe, request.g, t.head))
     found = np.isfinite(out["lean"])
     counts = found.sum(axis=1)
     req = np.repeat(np.arange(lanes.size), np.maximum(counts, 1))
@@ -500,7 +400,7 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
         "input_row": req + 1 + first * request.values.size, "machine": np.full(n, t.name, dtype=object),
         "theta_deg": given[req] if by_theta else np.degrees(th), "alpha_deg": np.where(has, alpha, np.nan),
         "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
-        "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, t.g),
+        "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, request.g),
         "status": status, "reason": reason, "omega_rad_s": omega, "period_s": period,
         "v_cm_m_s": pick("v_cm"), "v_cm_km_h": np.round(pick("v_cm") * 3.6, 9), "v_contact_m_s": pick("v_rear"),
         "load_g": pick("load_g"), "head_clearance_m": pick("head_clearance"),
@@ -524,7 +424,7 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
         cols["steer_torque_n_m"] = np.where(has, values[req], np.nan)
     else:
         cols["v_rear_m_s"] = cols["v_contact_m_s"] = np.where(has, values[req], np.nan)
-    k = EIGENVALUES[("sphere", steer)]
+    k = tw_stability.eigenvalue_count(globe, steer)
     if request.stability:
         ev = np.where(has[:, None], out[f"eigenvalues_{steer}"][req, slot], np.nan + 0j)
         cols["stability"] = np.where(has, out[f"stability_{steer}"][req, slot], "").astype(object)
@@ -548,8 +448,8 @@ def _hands_free(request: TurnRequest, lanes) -> dict:
     from deathsphere.physics.two_wheeler import stability as tw_stability
 
     t = request.machine
-    out = tw_stability.turns_with_stability(lanes, t.parameters(), torque=np.zeros(lanes.size), surface="sphere",
-                                            r=request.r, head=t.head)
+    out = tw_stability.turns_with_stability(lanes, t.parameters(), Sphere(request.r), request.g,
+                                            torque=np.zeros(lanes.size), head=t.head)
     ok = np.isfinite(out["lean"]) & (out["contact"] == 1) & (out["head_clearance"] > 0)
     rear, front, over = _over_limits(ok, out["mu_required_rear"], out["mu_required_front"], out["load_g"],
                                      request.mu, request.max_g)
@@ -636,7 +536,7 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
     <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
     steer, steer_torque = steer_request(steer, steer_torque)
     if flat:
-        t, steer = _machine(machine, steer, g)
+        t, steer, g = _machine(machine, steer, g)
         if theta is not None or height is not None or diameter is not None or r is not R:
             raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
                                  "or diameter)", "flat")
@@ -649,7 +549,7 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
         if only is not None:
             raise ParameterError("upright straight running on flat ground has no status to keep: only is for the "
                                  "globe", "only")
-        return _straight(t, speed, steer, summary)
+        return _straight(t, g, speed, steer, summary)
     return turn_rows(turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque,
                                   steer=steer, r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary,
                                   stability=stability, only=only))
@@ -746,11 +646,10 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     frames and head, in the core's axes: origin the sphere's centre, z
     down).
     """
-    from dataclasses import replace
-
     from deathsphere.api.arguments import checked_choice, checked_flag, checked_optional, checked_scalar
     from deathsphere.simulation.runner import METHODS
-    from deathsphere.physics.two_wheeler import motion
+    from deathsphere.physics.two_wheeler import grounds, motion
+    from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering
     from deathsphere.physics.two_wheeler.simulate import simulate as integrate
 
     t = as_two_wheeler(machine)
@@ -761,8 +660,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     if locked and (hands_free or steer_gains is not None):
         raise ParameterError("a locked steer's torque is whatever holds it: hands_free and steer_gains are for "
                              "steer free", "steer")
-    if g is not G:
-        t = replace(t, g=checked_scalar("g", g))
+    g = checked_scalar("g", g)
     view = checked_flag("view", view)
     if hands_free and steer_gains is not None:
         raise ParameterError("hands_free is T = 0: give it or steer_gains, not both", "steer_gains")
@@ -812,7 +710,8 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
         _rows(periods if periods is not None else duration, points_per_period, "seconds" if straight else "periods",
               "duration" if straight else "periods")
     p = t.parameters()
-    q, u, torque0, period = _start(t, p, speed, branch, flat, theta_deg, r, radius)
+    ground = Plane() if flat else Sphere(r)
+    q, u, torque0, period = _start(t, p, g, speed, branch, ground, theta_deg, radius)
     if duration is None:
         duration = (2.0 if periods is None else periods) * period
     length = duration / (1.0 if straight else period)
@@ -824,12 +723,10 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                              f"{speed * duration / 1000:.6g} km: ask for fewer periods or a shorter duration",
                              length_option)
     n_points = max(int(round(length * points_per_period)) + 1, 2)
-    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], duration, surface="flat" if flat else "sphere",
-                                r=None if flat else r, torque0=torque0, k_lean=k_lean, k_rate=k_rate,
-                                hands_free=hands_free, kick=math.radians(perturb), mu=mu, n_points=n_points,
-                                method=method, rtol=rtol, atol=atol, steer_locked=locked,
-                                kick_lean_rate=math.radians(perturb_lean_rate),
-                                kick_steer_rate=math.radians(perturb_steer_rate),
+    steering = Steering(torque0=torque0, k_lean=k_lean, k_rate=k_rate, hands_free=hands_free, locked=locked)
+    kick = Kick(math.radians(perturb), math.radians(perturb_lean_rate), math.radians(perturb_steer_rate))
+    series, summary = integrate(p, q, u[list(motion.INDEPENDENT)], duration, ground=ground, g=g, steering=steering,
+                                kick=kick, solver=Solver(method, rtol, atol, n_points), mu=mu,
                                 progress=None if progress is None else _percent(progress))
     deg = np.degrees
     cols = {"t_s": series["t"], "lean_surface_deg": deg(series["lean"]), "steer_deg": deg(series["steer"]),
@@ -853,7 +750,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
            "max_constraint_residual_m": summary["max_constraint_residual"],
            "min_normal_rear_per_mass_m_s2": summary["min_normal_rear"],
            "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol,
-           "surface": "flat" if flat else "sphere", "turn_radius_m": radius, "steer": "locked" if locked else "free",
+           "surface": grounds.of(ground).surface, "turn_radius_m": radius, "steer": "locked" if locked else "free",
            "perturb_lean_rate_deg_s": perturb_lean_rate, "perturb_steer_rate_deg_s": perturb_steer_rate}
     summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
                            for k in SIMULATE_SUMMARY_COLUMNS})
@@ -862,8 +759,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
         return tables
     from deathsphere.physics.two_wheeler.geometry import outline
 
-    return (*tables, {"t": series["t"], **outline(series["q"], p, None if flat else r, "flat" if flat else "sphere",
-                                                  t.head)})
+    return (*tables, {"t": series["t"], **outline(series["q"], p, ground, t.head)})
 
 
 def _lane(theta, height, r) -> tuple[float, float]:
@@ -892,21 +788,23 @@ def _rows(length, points_per_period, per, name):
                              name)
 
 
-def _start(t: TwoWheeler, p, speed, branch, flat, theta_deg, r, radius):
+def _start(t: TwoWheeler, p, g, speed, branch, ground, theta_deg, radius):
     """(q, u, steady steer torque, period) the run starts from: the steady
     turn at the lane (the globe's theta, flat ground's turn radius) and rear
     speed, or upright straight running (flat, no radius; no period)."""
     from deathsphere.physics.two_wheeler import motion, steady
 
     bad_branch = isinstance(branch, bool) or not isinstance(branch, (int, np.integer))
+    flat = isinstance(ground, Plane)
     if flat and math.isnan(radius):
         if bad_branch or branch != 0:
             raise ParameterError(f"straight running is one state: branch must be 0 (got {branch!r})", "branch")
-        q = steady.configuration(0.0, 0.0, 0.0, p, "flat")
-        u = motion.dependent_speeds(q, np.array([0.0, -speed / p.rR, 0.0]), motion.parameter_values(p), "flat")
+        q = steady.configuration(0.0, 0.0, 0.0, p, ground)
+        u = motion.dependent_speeds(q, np.array([0.0, -speed / p.rR, 0.0]), motion.parameter_values(p, g, ground),
+                                    ground)
         return q, u, 0.0, math.nan
     lane = 1.0 / radius if flat else math.radians(theta_deg)
-    turn = steady.turns_for_speed(lane, speed, p, "flat" if flat else "sphere", None if flat else r, t.head)
+    turn = steady.turns_for_speed(lane, speed, p, ground, g, t.head)
     count = int(turn["count"][0])
     where = f"turn radius {radius:g} m" if flat else f"theta = {theta_deg:g} deg"
     if count == 0:

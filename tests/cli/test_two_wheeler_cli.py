@@ -23,7 +23,8 @@ def _published():
 
 PUBLISHED = _published()
 BIKE = ("ride", "--machine", "benchmark-bicycle")
-FLAT = (*BIKE, "--flat", "--speed", "0:10:0.1")
+#: The benchmark's published numbers hold at its g = 9.81 (Table 1), which the run is given.
+FLAT = (*BIKE, "--flat", "--speed", "0:10:0.1", "-g", "9.81")
 TURNS = (*BIKE, "--steer", "free", "--diameter", "16ft", "--height", "1:2:0.5", "--speed", "5:10:5")
 HANDS_FREE = (*BIKE, "--steer-torque", "0", "--diameter", "16ft", "--height", "1")
 

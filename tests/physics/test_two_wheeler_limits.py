@@ -17,9 +17,13 @@ import numpy as np
 from deathsphere.physics.machine import ride_orbit
 from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
 from deathsphere.physics.two_wheeler import stability, steady
-from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
+from deathsphere.physics.ground import Plane, Sphere
+from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
 
 GLOBE = 2.4384      # a 16-foot globe's radius, m
+SPHERE, FLAT = Sphere(GLOBE), Plane()
+#: The benchmark's gravity (Table 1), at which these cases were set: the run passes it.
+G = BENCHMARK_GRAVITY
 
 
 def _shrunk(eps):
@@ -34,7 +38,7 @@ def _shrunk(eps):
     h = sum(m * z for m, z, *_ in bodies) / mass
     roll, pitch = (sum(i[k] + m * (z - h) ** 2 for m, z, *i in bodies) for k in (0, 1))
     yaw = sum(i[2] for _, _, *i in bodies)
-    machine = MachineParams(b.rR, 0.0, GLOBE, h, b.g, mass, roll, pitch, yaw, b.IRyy)
+    machine = MachineParams(b.rR, 0.0, GLOBE, h, G, mass, roll, pitch, yaw, b.IRyy)
     return b, machine
 
 
@@ -43,13 +47,13 @@ def _spectra(theta_deg, alpha_deg, eps):
     (steer free) at the machine's contact speed, sorted by real part."""
     theta, alpha = np.deg2rad(theta_deg), np.deg2rad(alpha_deg)
     b, m = _shrunk(eps)
-    orbit = ride_orbit(theta, alpha, GLOBE, b.g, m.mass, m.h, m.a, m.t, m.pitch, m.yaw, m.spin, 2.0)
+    orbit = ride_orbit(theta, alpha, GLOBE, G, m.mass, m.h, m.a, m.t, m.pitch, m.yaw, m.spin, 2.0)
     machine = machine_stability(theta, alpha, m)["eigenvalues"]
-    out = steady.turns_for_speed(theta, orbit["v_contact"], b, "sphere", GLOBE)
+    out = steady.turns_for_speed(theta, orbit["v_contact"], b, SPHERE, G)
     k = np.nanargmin(np.abs(out["lean"] - (theta - np.pi / 2 - alpha)[:, None]), axis=1)
     lanes = np.arange(theta.size)
     J = stability.jacobian(out["q"][:, lanes, k], out["u"][:, lanes, k], out["steer_torque"][lanes, k], b,
-                           "sphere", GLOBE)
+                           SPHERE, G)
     return machine, stability.eigenvalues(J), out["normal_front"][lanes, k]
 
 

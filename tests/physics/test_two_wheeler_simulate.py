@@ -16,10 +16,14 @@ import pytest
 from scipy.linalg import expm
 
 from deathsphere.physics.two_wheeler import motion, stability, steady
-from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle
-from deathsphere.physics.two_wheeler.simulate import lock_torque, simulate
+from deathsphere.physics.ground import Plane, Sphere
+from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
+from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering, lock_torque, simulate
 
 GLOBE = 2.4384      # a 16-foot globe's radius, m
+SPHERE, FLAT = Sphere(GLOBE), Plane()
+#: The benchmark's gravity (Table 1), at which these cases were set: the run passes it.
+G = BENCHMARK_GRAVITY
 B = benchmark_bicycle()
 
 
@@ -32,7 +36,7 @@ def _straight(speed):
 @functools.lru_cache(maxsize=None)
 def _globe_turn_found(speed, height):
     lane = np.arccos(height / GLOBE - 1)
-    turn = steady.turns_for_speed(lane, speed, B, "sphere", GLOBE)
+    turn = steady.turns_for_speed(lane, speed, B, SPHERE, G)
     return turn["q"][:, 0, 0], turn["u"][:, 0, 0], float(turn["steer_torque"][0, 0])
 
 
@@ -44,7 +48,8 @@ def _globe_turn(speed=5.0, height=1.0):
 
 def test_energy_is_conserved_hands_free_on_flat_ground():
     q, u = _straight(4.0)
-    _, summary = simulate(B, q, u, 1.0, kick=np.radians(2.0), hands_free=True, rtol=1e-10)
+    _, summary = simulate(B, q, u, 1.0, kick=Kick(np.radians(2.0)), steering=Steering(hands_free=True),
+                          solver=Solver(rtol=1e-10))
     assert summary["status"] == "completed"
     assert summary["max_energy_drift"] < 1e-8
     # the front contact's holonomic constraint holds to the tolerance (the rolling ones exactly)
@@ -53,8 +58,8 @@ def test_energy_is_conserved_hands_free_on_flat_ground():
 
 def test_energy_is_conserved_hands_free_on_the_globe():
     q, u, _ = _globe_turn()
-    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, surface="sphere", r=GLOBE,
-                               kick=np.radians(0.5), hands_free=True, rtol=1e-10)
+    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, ground=SPHERE, g=G,
+                               kick=Kick(np.radians(0.5)), steering=Steering(hands_free=True), solver=Solver(rtol=1e-10))
     assert summary["max_energy_drift"] < 1e-8
     assert summary["max_constraint_residual"] < 1e-10
     # something moved: the steady turn's torque is not zero, so hands-free it leaves its lean
@@ -65,7 +70,8 @@ def test_energy_is_conserved_hands_free_on_the_globe():
 def test_straight_running_is_self_stable_only_inside_the_benchmark_window(speed, stable):
     q, u = _straight(speed)
     kick = np.radians(0.5)
-    series, summary = simulate(B, q, u, 4.0, kick=kick, hands_free=True, rtol=1e-7, n_points=81)
+    series, summary = simulate(B, q, u, 4.0, kick=Kick(kick), steering=Steering(hands_free=True),
+                               solver=Solver(rtol=1e-7, n_points=81))
     late = np.max(np.abs(series["lean"][-20:]))
     if stable:
         assert summary["status"] == "completed" and late < 0.6 * kick
@@ -78,9 +84,9 @@ def test_a_tiny_kick_follows_the_linearisation_about_the_steady_turn():
     the kick grows, as exp(J t) applied to it predicts."""
     q, u, torque = _globe_turn()
     eps = 1e-7
-    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 2.0, surface="sphere", r=GLOBE, torque0=torque,
-                         kick=eps, rtol=1e-12, atol=1e-14, n_points=5)
-    J = stability.jacobian(q, u, torque, B, "sphere", GLOBE)[0]
+    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 2.0, ground=SPHERE, g=G, steering=Steering(torque),
+                         kick=Kick(eps), solver=Solver(rtol=1e-12, atol=1e-14, n_points=5))
+    J = stability.jacobian(q, u, torque, B, SPHERE, G)[0]
     x0 = np.zeros(J.shape[0])
     x0[2] = eps                   # the lean in the state (theta, heading, lean, steer, rates)
     predicted = np.array([(expm(J * t) @ x0)[2] for t in series["t"]])
@@ -92,9 +98,10 @@ def test_a_tiny_kick_follows_the_linearisation_about_the_steady_turn():
 def test_a_riders_gains_hold_an_unstable_lane_that_zero_gains_do_not():
     q, u, torque = _globe_turn()
     kick = np.radians(0.2)
-    run = dict(surface="sphere", r=GLOBE, torque0=torque, kick=kick, rtol=1e-6, n_points=61)
-    _, held = simulate(B, q, u[list(motion.INDEPENDENT)], 3.0, k_lean=10.0, k_rate=10.0, **run)
-    _, loose = simulate(B, q, u[list(motion.INDEPENDENT)], 3.0, **run)
+    run = dict(ground=SPHERE, g=G, kick=Kick(kick), solver=Solver(rtol=1e-6, n_points=61))
+    _, held = simulate(B, q, u[list(motion.INDEPENDENT)], 3.0, steering=Steering(torque, k_lean=10.0, k_rate=10.0),
+                       **run)
+    _, loose = simulate(B, q, u[list(motion.INDEPENDENT)], 3.0, steering=Steering(torque), **run)
     assert held["status"] == "completed" and abs(held["final_lean_deviation"]) < kick
     assert loose["status"] == "contact_lost" or loose["max_lean_deviation"] > 10 * kick
 
@@ -102,8 +109,8 @@ def test_a_riders_gains_hold_an_unstable_lane_that_zero_gains_do_not():
 def test_slip_stops_the_run_when_mu_is_below_the_turns_need():
     q, u, torque = _globe_turn()
     # the turn needs mu 0.209 at the rear, 0.247 at the front (ride's mu_required_*)
-    _, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, surface="sphere", r=GLOBE, torque0=torque,
-                          mu=0.2, rtol=1e-6)
+    _, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.5, ground=SPHERE, g=G, steering=Steering(torque),
+                          mu=0.2, solver=Solver(rtol=1e-6))
     assert summary["status"] == "slips" and summary["t_event"] < 1e-3
 
 
@@ -113,31 +120,31 @@ def test_the_contact_forces_at_a_steady_turn_are_the_steady_turns():
     vertical, in closed form)."""
     q, u, torque = _globe_turn()
     lane = np.arccos(1.0 / GLOBE - 1)
-    turn = steady.turns_for_speed(lane, 5.0, B, "sphere", GLOBE)
-    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 0.1, surface="sphere", r=GLOBE, torque0=torque,
-                         rtol=1e-10, n_points=3)
+    turn = steady.turns_for_speed(lane, 5.0, B, SPHERE, G)
+    series, _ = simulate(B, q, u[list(motion.INDEPENDENT)], 0.1, ground=SPHERE, g=G, steering=Steering(torque),
+                         solver=Solver(rtol=1e-10, n_points=3))
     for key in ("normal_rear", "normal_front", "friction_rear", "friction_front"):
         np.testing.assert_allclose(series[key], turn[key][0, 0], rtol=1e-6)
 
 
 def _flat_turn(radius=10.0, speed=5.0):
-    turn = steady.turns_for_speed(1 / radius, speed, B, "flat")
+    turn = steady.turns_for_speed(1 / radius, speed, B, FLAT, G)
     return turn["q"][:, 0, 0], turn["u"][:, 0, 0], float(turn["steer_torque"][0, 0])
 
 
-@pytest.mark.parametrize("surface", ["flat", "sphere"])
-def test_a_locked_steer_holds_its_angle_and_conserves_energy(surface):
+@pytest.mark.parametrize("ground", [FLAT, SPHERE], ids=["plane", "sphere"])
+def test_a_locked_steer_holds_its_angle_and_conserves_energy(ground):
     """No torque does work on a steer that does not turn; the lock's torque
     (the reduced steer row) is what the full equations with the contact
     multipliers need to keep the steer's acceleration zero."""
-    q, u, torque = _flat_turn() if surface == "flat" else _globe_turn()
-    run = dict(surface=surface, r=None if surface == "flat" else GLOBE, steer_locked=True, rtol=1e-10, n_points=7)
-    values = motion.parameter_values(B, surface, run["r"])
+    q, u, torque = _flat_turn() if ground == FLAT else _globe_turn()
+    run = dict(ground=ground, g=G, steering=Steering(locked=True), solver=Solver(rtol=1e-10, n_points=7))
+    values = motion.parameter_values(B, G, ground)
     # unkicked, the lock holds the steady turn's torque (turn_state's G + w^2 H)
-    T0, a0, _ = lock_torque(q, u[list(motion.INDEPENDENT)], values, surface)
+    T0, a0, _ = lock_torque(q, u[list(motion.INDEPENDENT)], values, ground)
     assert T0 == pytest.approx(torque, rel=1e-9) and np.max(np.abs(a0)) < 1e-9
-    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.2, kick=np.radians(1.0),
-                               kick_lean_rate=0.1, **run)
+    series, summary = simulate(B, q, u[list(motion.INDEPENDENT)], 0.2, kick=Kick(np.radians(1.0), lean_rate=0.1),
+                               **run)
     assert summary["status"] == "completed" and summary["max_energy_drift"] < 1e-8
     assert summary["max_constraint_residual"] < 1e-10
     assert np.all(series["steer"] == q[motion.STEER]) and np.all(series["steer_rate"] == 0)
@@ -147,19 +154,19 @@ def test_a_locked_steer_holds_its_angle_and_conserves_energy(surface):
     # lock's torque leave the steer unaccelerated, and without it they do not
     q1 = q.copy()
     q1[motion.LEAN] += np.radians(2.0)
-    q1 = motion.pitch(q1, values, surface)
+    q1 = motion.pitch(q1, values, ground)
     u_ind = np.array([0.3, u[motion.REAR], 0.0])
-    T, _, u1 = lock_torque(q1, u_ind, values, surface)
-    udot, _ = motion.accelerations(q1, u1, values, T, surface)
+    T, _, u1 = lock_torque(q1, u_ind, values, ground)
+    udot, _ = motion.accelerations(q1, u1, values, T, ground)
     assert abs(udot[motion.STEER]) < 1e-9 * np.max(np.abs(udot))
-    free, _ = motion.accelerations(q1, u1, values, 0.0, surface)
+    free, _ = motion.accelerations(q1, u1, values, 0.0, ground)
     assert abs(free[motion.STEER]) > 1e-3
 
 
 def test_kicks_of_the_lean_and_steer_rates_start_there_and_conserve_energy():
     q, u = _straight(4.0)
-    series, summary = simulate(B, q, u, 0.2, hands_free=True, kick_lean_rate=0.2, kick_steer_rate=-0.5,
-                               rtol=1e-10, n_points=4)
+    series, summary = simulate(B, q, u, 0.2, steering=Steering(hands_free=True),
+                               kick=Kick(lean_rate=0.2, steer_rate=-0.5), solver=Solver(rtol=1e-10, n_points=4))
     assert series["lean_rate"][0] == 0.2 and series["steer_rate"][0] == -0.5
     assert series["v_rear"][0] == pytest.approx(4.0, rel=1e-12)
     # the kick moved the heading: the dependent speeds followed the steer rate

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.physics.two_wheeler import grounds
+
 __all__ = ["frames", "points", "outline", "RIM_POINTS"]
 
 #: Points per wheel rim in :func:`outline`.
@@ -24,19 +26,14 @@ def _rotate(v, axis, angle):
     return v * c + np.cross(axis, v, axis=0) * s + axis * np.sum(axis * v, axis=0) * (1 - c)
 
 
-def frames(q, lam, surface: str = "sphere"):
+def frames(q, lam, ground):
     """The unit vectors (x, y, z) of the tangent frame T, the heading frame Y,
     the lean frame L, the rear frame C and the front frame E in N, and the
-    steer axis s (beyond the paper; docs/two-wheeler.md sec. 2)."""
+    steer axis s, on ``ground`` (a Plane or a Sphere; beyond the paper;
+    docs/two-wheeler.md sec. 2)."""
     q = np.asarray(q)
     one, zero = np.ones_like(q[0]), np.zeros_like(q[0])
-    if surface == "flat":
-        Tx, Ty, Tz = (np.stack(v) for v in ((one, zero, zero), (zero, one, zero), (zero, zero, one)))
-    else:
-        th, az = q[0], q[1]
-        Tz = np.stack([np.sin(th) * np.cos(az), np.sin(th) * np.sin(az), -np.cos(th)])
-        Ty = np.stack([-np.sin(az), np.cos(az), zero])
-        Tx = np.cross(Ty, Tz, axis=0)
+    Tx, Ty, Tz = grounds.of(ground).tangent_frame(q, one, zero)
     h, lean, pitch, steer = q[2], q[3], q[4], q[6]
     Yx, Yy, Yz = np.cos(h) * Tx + np.sin(h) * Ty, -np.sin(h) * Tx + np.cos(h) * Ty, Tz
     Lx, Ly, Lz = Yx, np.cos(lean) * Yy + np.sin(lean) * Yz, -np.sin(lean) * Yy + np.cos(lean) * Yz
@@ -46,25 +43,24 @@ def frames(q, lam, surface: str = "sphere"):
     return {"T": (Tx, Ty, Tz), "Y": (Yx, Yy, Yz), "L": (Lx, Ly, Lz), "C": (Cx, Cy, Cz), "E": E, "s": s}
 
 
-def points(q, parameters, r=None, surface: str = "sphere", head=(0.3, -1.7)):
+def points(q, parameters, ground, head=(0.3, -1.7)):
     """The rear contact P, the wheel centres, the mass centres, the rider's
     head point and the front contact Q (farthest front rim point from O) in
-    N, each (3, ...), and the frames (beyond the paper; docs/two-wheeler.md
-    sec. 2, 3.2).  ``head`` = (x, z) of the head point in the rear frame,
-    measured as xB, zB (from the rear contact upright, z down)."""
+    N, each (3, ...), and the frames, on ``ground`` (beyond the paper;
+    docs/two-wheeler.md sec. 2, 3.2).  ``head`` = (x, z) of the head point
+    in the rear frame, measured as xB, zB (from the rear contact upright, z
+    down)."""
     p = parameters
-    f = frames(q, p.lam, surface)
+    on = grounds.of(ground)
+    f = frames(q, p.lam, ground)
     Cx, Cz = f["C"][0], f["C"][2]
     Ex, Ey, Ez = f["E"]
-    if surface == "flat":
-        P = np.stack([q[0], q[1], np.zeros_like(q[0])])
-    else:
-        P = r * f["T"][2]
+    P = on.rear_contact(q, f)
     rear = P - p.rR * f["L"][2]
     S = rear + (p.w + p.c) * Cx + p.rR * Cz
     front = S - p.c * Ex - p.rF * Ez
     # flat: the lowest rim point (towards N.z); sphere: the farthest from O (towards d = front - O)
-    d = front if surface != "flat" else np.stack([np.zeros_like(q[0])] * 2 + [np.ones_like(q[0])])
+    d = on.farthest(front, q)
     k = d - np.sum(d * Ey, axis=0) * Ey
     Q = front + p.rF * k / np.sqrt(np.sum(k * k, axis=0))
     return {
@@ -85,7 +81,7 @@ def _rim(centre, radius, start, normal, beta):
     return centre[:, None] + radius * (np.cos(b) * start[:, None] + np.sin(b) * ahead[:, None])
 
 
-def outline(q, parameters, r=None, surface: str = "sphere", head=(0.3, -1.7), n_rim: int = RIM_POINTS):
+def outline(q, parameters, ground, head=(0.3, -1.7), n_rim: int = RIM_POINTS):
     """The points that draw the bicycle at the coordinates q (8, ...), in N,
     each (3, ...), and the two rims (3, n_rim, ...) (beyond the paper;
     docs/two-wheeler.md sec. 2 and 10.1).
@@ -102,7 +98,7 @@ def outline(q, parameters, r=None, surface: str = "sphere", head=(0.3, -1.7), n_
     With those of :func:`points`: ``P``, ``Q``, ``rear_wheel``,
     ``front_wheel``, ``rear_frame``, ``front_frame``, ``head``."""
     p = parameters
-    pts = points(q, p, r, surface, head)
+    pts = points(q, p, ground, head)
     f = pts.pop("frames")
     Lx, Ly, Lz = f["L"]
     Cx, Cz = f["C"][0], f["C"][2]

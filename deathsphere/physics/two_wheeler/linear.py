@@ -14,11 +14,12 @@ trade-off.  The linear equations are those of the benchmark,
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import brentq
 
+from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics.two_wheeler import motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
@@ -42,11 +43,11 @@ class BenchmarkMatrices:
     g: float
 
 
-def _jacobian(parameters: BicycleParameters, speed: float) -> np.ndarray:
+def _jacobian(parameters: BicycleParameters, g: float, speed: float) -> np.ndarray:
     """d(lean and steer rows of Kane's reduced equations)/d(lean, steer,
     lean rate, steer rate, lean acc., steer acc.) at upright straight running
-    on flat ground, by the complex step: (2, 6)."""
-    p = motion.parameter_values(parameters)
+    on flat ground under gravity g, by the complex step: (2, 6)."""
+    p = motion.parameter_values(parameters, g)
     n = 6
     q = np.zeros((8, n), dtype=complex)
     u_ind = np.zeros((3, n), dtype=complex)
@@ -60,18 +61,20 @@ def _jacobian(parameters: BicycleParameters, speed: float) -> np.ndarray:
     return residual.imag[_LEAN_STEER] / _STEP
 
 
-def benchmark_matrices(parameters: BicycleParameters) -> BenchmarkMatrices:
+def benchmark_matrices(parameters: BicycleParameters, g: float = STANDARD_GRAVITY) -> BenchmarkMatrices:
     """M, C1, K0, K2 (Meijaard et al. 2007, the linearised equations) from the project's
-    nonlinear equations (docs/two-wheeler.md sec. 7).
+    nonlinear equations, under the run's gravity ``g`` (m/s^2; the benchmark's
+    published values hold at its g = 9.81, ``parameters.BENCHMARK_GRAVITY``)
+    (docs/two-wheeler.md sec. 7).
 
     K0 is the stiffness at rest per unit g, K2 the stiffness at 1 m/s
     without gravity, C1 the damping at 1 m/s: each exact, because Kane's
     equations are affine in g and quadratic in the speeds.
     """
-    at_rest = _jacobian(parameters, 0.0)
-    moving = _jacobian(replace(parameters, g=0.0), 1.0)
-    return BenchmarkMatrices(M=at_rest[:, 4:6], C1=moving[:, 2:4], K0=at_rest[:, 0:2] / parameters.g,
-                             K2=moving[:, 0:2], g=parameters.g)
+    at_rest = _jacobian(parameters, g, 0.0)
+    moving = _jacobian(parameters, 0.0, 1.0)
+    return BenchmarkMatrices(M=at_rest[:, 4:6], C1=moving[:, 2:4], K0=at_rest[:, 0:2] / g,
+                             K2=moving[:, 0:2], g=g)
 
 
 def _state_matrix(m: BenchmarkMatrices, speed):
@@ -169,7 +172,7 @@ def weave_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
 
 def capsize_speed(m: BenchmarkMatrices, low=0.5, high=10.0) -> float:
     """The speed where the capsize eigenvalue crosses zero (Meijaard et al.
-    2007: 6.02426201538837 m/s for Table 1): the root of
+    2007: 6.02426201538837 m/s for Table 1, at its g = 9.81): the root of
     det(g K0 + v^2 K2) by Brent's method; nan if none in [low, high].
 
     Beyond the paper: docs/two-wheeler.md sec. 7.

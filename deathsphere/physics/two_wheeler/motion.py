@@ -18,14 +18,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.two_wheeler import _generated
+from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.physics.ground import Plane
+from deathsphere.physics.two_wheeler import grounds
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["INDEPENDENT", "DEPENDENT", "HEADING", "LEAN", "PITCH", "REAR", "STEER", "parameter_values", "pitch",
+__all__ = ["FLAT", "INDEPENDENT", "DEPENDENT", "HEADING", "LEAN", "PITCH", "REAR", "STEER", "parameter_values", "pitch",
            "dependent_speeds", "full_speeds", "accelerations", "reduced_residual", "reduced_mass_and_forcing", "energy",
            "state_rates"]
 
-#: Indices in q and u (both surfaces): heading 2, lean 3, pitch 4, rear wheel 5, steer 6, front wheel 7.
+#: Indices in q and u (both grounds): heading 2, lean 3, pitch 4, rear wheel 5, steer 6, front wheel 7.
 HEADING, LEAN, PITCH, REAR, STEER = 2, 3, 4, 5, 6
 #: The independent speeds (lean rate, rear wheel rate, steer rate) and the dependent ones.
 INDEPENDENT = (LEAN, REAR, STEER)
@@ -34,35 +36,28 @@ DEPENDENT = (0, 1, 2, PITCH, 7)
 #: Newton iterations for the pitch, at most: quadratic convergence from the
 #: upright pitch reaches float64 in 5 for leans and steers below 1 rad.
 _NEWTON = 8
+#: Flat ground, the ground of the functions below when none is given.
+FLAT = Plane()
 
 
-def parameter_values(parameters: BicycleParameters, surface: str = "flat", r=None) -> tuple:
+def parameter_values(parameters: BicycleParameters, g=STANDARD_GRAVITY, ground=FLAT) -> tuple:
     """The generated code's parameter tuple: Table 1 of Meijaard et al.
-    (2007) in order, then the sphere's radius (beyond the paper;
+    (2007) in order, the run's gravity ``g`` (m/s^2) in its slot, then the
+    ground's parameters (the sphere's radius; beyond the paper;
     docs/two-wheeler.md sec. 1)."""
-    values = parameters.values()
-    if surface == "sphere":
-        if r is None:
-            raise ValueError("the sphere needs its radius r")
-        return values + (r,)
-    return values
+    return parameters.values(g) + grounds.of(ground).values()
 
 
-def _functions(surface):
-    return (getattr(_generated, f"{surface}_equations"), getattr(_generated, f"{surface}_holonomic"),
-            getattr(_generated, f"{surface}_energy"))
-
-
-def pitch(q, p, surface: str = "flat"):
+def pitch(q, p, ground=FLAT):
     """q with its pitch solved from the front contact's holonomic constraint
     by Newton's method from the given pitch (beyond the paper;
     docs/two-wheeler.md sec. 3.2)."""
-    _, holonomic, _ = _functions(surface)
+    holonomic = grounds.of(ground).holonomic
     q = np.array(q, dtype=np.result_type(q, float), copy=True)
     if np.iscomplexobj(q) or any(np.iscomplexobj(x) for x in p):
         # a complex step: the real parts' Newton in real arithmetic (the same iterates), then one complex
         # step from that root gives the imaginary part exactly (h = i e g there, so the step is -i e g / h')
-        q[PITCH] = pitch(q.real, tuple(np.real(x) for x in p), surface)[PITCH]
+        q[PITCH] = pitch(q.real, tuple(np.real(x) for x in p), ground)[PITCH]
         h, dh = holonomic(q, p)
         q[PITCH] -= h[0] / dh[0]
         return q
@@ -102,11 +97,11 @@ def _null_space(B):
     return A
 
 
-def dependent_speeds(q, u_ind, p, surface: str = "flat"):
+def dependent_speeds(q, u_ind, p, ground=FLAT):
     """All eight speeds from the three independent ones (lean, rear wheel,
     steer rates) through the rolling constraints B u = 0 (beyond the paper;
     docs/two-wheeler.md sec. 3.3)."""
-    dep, ind = _split(getattr(_generated, f"{surface}_constraint_matrix")(q, p))
+    dep, ind = _split(grounds.of(ground).constraint_matrix(q, p))
     u_ind = np.moveaxis(np.asarray(u_ind), 0, -1)
     # one right-hand side, B_ind u_ind, rather than the null space's three
     rhs = np.einsum("...ij,...j->...i", ind, np.broadcast_to(u_ind, ind.shape[:-2] + u_ind.shape[-1:]))
@@ -116,21 +111,20 @@ def dependent_speeds(q, u_ind, p, surface: str = "flat"):
     return np.moveaxis(u, -1, 0)
 
 
-def full_speeds(q, u_ind, p, surface: str = "flat"):
+def full_speeds(q, u_ind, p, ground=FLAT):
     """(u, A): the eight speeds and the null-space map A (..., 8, 3) of the
     rolling constraints at q (beyond the paper; docs/two-wheeler.md sec. 4)."""
-    B = getattr(_generated, f"{surface}_constraint_matrix")(q, p)
+    B = grounds.of(ground).constraint_matrix(q, p)
     A = _null_space(B)
     u = np.einsum("...ij,j...->i...", A, u_ind)
     return u, A
 
 
-def accelerations(q, u, p, steer_torque=0.0, surface: str = "flat"):
+def accelerations(q, u, p, steer_torque=0.0, ground=FLAT):
     """(u', lambda): the accelerations of all eight speeds and the
     multipliers of the five rolling constraints, from M u' - f = B^T lambda,
     B u' = -B' u (beyond the paper; docs/two-wheeler.md sec. 4)."""
-    equations, _, _ = _functions(surface)
-    M, f, B, bias = equations(q, u, p, steer_torque)
+    M, f, B, bias = grounds.of(ground).equations(q, u, p, steer_torque)
     M = np.moveaxis(M, (0, 1), (-2, -1))
     Bt = np.moveaxis(B, (0, 1), (-2, -1))
     n = M.shape[:-2]
@@ -144,52 +138,50 @@ def accelerations(q, u, p, steer_torque=0.0, surface: str = "flat"):
     return x[:8], x[8:]
 
 
-def _constrained(q, u_ind, p, steer_torque, surface):
+def _constrained(q, u_ind, p, steer_torque, ground):
     """(u, A, M, f, a) at (q, u_ind): the eight speeds u = A u_ind, Kane's
     M and f, and the acceleration a the constraints add (B a = -B' u, zero
     in the independent speeds), so that u' = A u_ind' + a."""
-    equations, _, _ = _functions(surface)
-    u, A = full_speeds(q, u_ind, p, surface)
-    M, f, B, bias = equations(q, u, p, steer_torque)
+    u, A = full_speeds(q, u_ind, p, ground)
+    M, f, B, bias = grounds.of(ground).equations(q, u, p, steer_torque)
     dep, _ = _split(B)
     a = np.zeros(A.shape[:-1], dtype=np.result_type(A, bias))
     a[..., list(DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
     return u, A, M, f, a
 
 
-def reduced_residual(q, u_ind, udot_ind, p, steer_torque=0.0, surface: str = "flat"):
+def reduced_residual(q, u_ind, udot_ind, p, steer_torque=0.0, ground=FLAT):
     """Kane's equations of the constrained bicycle, A^T (M u' - f) with
     u = A u_ind and u' = A u_ind' + a (B a = -B' u), for the independent
     speeds (lean, rear wheel, steer): shape (3, ...) (beyond the paper;
     docs/two-wheeler.md sec. 4)."""
-    u, A, M, f, a = _constrained(q, u_ind, p, steer_torque, surface)
+    u, A, M, f, a = _constrained(q, u_ind, p, steer_torque, ground)
     udot = np.einsum("...ij,j...->...i", A, udot_ind) + a
     M = np.moveaxis(M, (0, 1), (-2, -1))
     force = np.einsum("...ij,...j->...i", M, udot) - np.moveaxis(f, 0, -1)
     return np.moveaxis(np.einsum("...ij,...i->...j", A, force), -1, 0)
 
 
-def energy(q, u, p, surface: str = "flat"):
+def energy(q, u, p, ground=FLAT):
     """Kinetic plus potential energy, J (beyond the paper;
     docs/two-wheeler.md sec. 6)."""
-    _, _, energies = _functions(surface)
-    kinetic, potential = energies(q, u, p)
+    kinetic, potential = grounds.of(ground).energy(q, u, p)
     return kinetic[0] + potential[0]
 
 
-def state_rates(x, p, steer_torque=0.0, surface: str = "flat"):
+def state_rates(x, p, steer_torque=0.0, ground=FLAT):
     """d/dt of the state x = (q, u) (16, ...): q' = u and u' from
     :func:`accelerations` (beyond the paper; docs/two-wheeler.md sec. 4)."""
     q, u = x[:8], x[8:]
-    udot, _ = accelerations(q, u, p, steer_torque, surface)
+    udot, _ = accelerations(q, u, p, steer_torque, ground)
     return np.concatenate([u, udot])
 
 
-def reduced_mass_and_forcing(q, u_ind, p, steer_torque=0.0, surface: str = "flat"):
+def reduced_mass_and_forcing(q, u_ind, p, steer_torque=0.0, ground=FLAT):
     """(A^T M A, A^T (f - M a), u): Kane's reduced equations solved form,
     A^T M A u_ind' = A^T (f - M a), batch first (..., 3, 3), (..., 3), and
     the eight speeds (beyond the paper; docs/two-wheeler.md sec. 4)."""
-    u, A, M, f, a = _constrained(q, u_ind, p, steer_torque, surface)
+    u, A, M, f, a = _constrained(q, u_ind, p, steer_torque, ground)
     M = np.moveaxis(M, (0, 1), (-2, -1))
     At = np.swapaxes(A, -1, -2)
     force = np.moveaxis(f, 0, -1) - np.einsum("...ij,...j->...i", M, a)

@@ -27,12 +27,15 @@ error ~1e-8 of the force).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from deathsphere.physics.two_wheeler import _generated, geometry, motion
+from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.physics.two_wheeler import geometry, grounds, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STATUSES", "rider_torque", "lock_torque", "contact_forces", "simulate"]
+__all__ = ["STATUSES", "Steering", "Kick", "Solver", "rider_torque", "lock_torque", "contact_forces", "simulate"]
 
 #: How a run ends.
 STATUSES = ("completed", "contact_lost", "slips", "failed")
@@ -42,13 +45,51 @@ _H = 1e-4
 _PROGRESS_EVERY = 100
 
 
+@dataclass(frozen=True)
+class Steering:
+    """How the steer is held (docs/two-wheeler.md sec. 10.1): the rider's
+    torque T = ``torque0`` + ``k_lean`` (lean - ``lean0``) + ``k_rate``
+    lean' (N m, N m/rad, N m s/rad; ``lean0`` None: the start's lean), or
+    ``hands_free`` (T = 0), or ``locked`` (the steer held at the start's
+    angle by whatever torque it takes)."""
+
+    torque0: float = 0.0
+    lean0: float | None = None
+    k_lean: float = 0.0
+    k_rate: float = 0.0
+    hands_free: bool = False
+    locked: bool = False
+
+
+@dataclass(frozen=True)
+class Kick:
+    """What kicks the start off its steady turn: the lean (rad), the lean
+    and steer rates (rad/s; the dependent speeds follow from the
+    constraints)."""
+
+    lean: float = 0.0
+    lean_rate: float = 0.0
+    steer_rate: float = 0.0
+
+
+@dataclass(frozen=True)
+class Solver:
+    """How the motion is integrated: scipy's ``solve_ivp`` method, its
+    tolerances (``atol`` None: = ``rtol``) and the rows reported."""
+
+    method: str = "DOP853"
+    rtol: float = 1e-10
+    atol: float | None = None
+    n_points: int = 200
+
+
 def rider_torque(lean, lean_rate, torque0=0.0, lean0=0.0, k_lean=0.0, k_rate=0.0):
     """The rider's steer torque T = T_0 + k_lean (lean - lean_0) + k_rate
     lean' (N m; beyond the paper; docs/two-wheeler.md sec. 10.1)."""
     return torque0 + k_lean * (lean - lean0) + k_rate * lean_rate
 
 
-def lock_torque(q, u_ind, values, surface="flat"):
+def lock_torque(q, u_ind, values, ground=motion.FLAT):
     """(T, a, u): the torque a locked steer applies (N m), the lean and rear
     wheel accelerations a (2, ...) and the eight speeds at (q, u_ind)
     (u_ind's steer rate is zero on a locked steer): in Kane's reduced
@@ -56,41 +97,37 @@ def lock_torque(q, u_ind, values, surface="flat"):
     acceleration zero, the lean and rear wheel rows, where the steer torque
     does not appear, give a, and the steer row then gives T (beyond the
     paper; docs/two-wheeler.md sec. 10.1)."""
-    Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, 0.0, surface)
+    Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, 0.0, ground)
     a = np.linalg.solve(Mr[..., :2, :2], Fr[..., :2, None])
     T = (Mr[..., 2:, :2] @ a)[..., 0, 0] - Fr[..., 2]
     return T, np.moveaxis(a[..., 0], -1, 0), u
 
 
-def _mass_centre(q, p: BicycleParameters, r, surface):
-    pts = geometry.points(q, p, r, surface)
+def _mass_centre(q, p: BicycleParameters, ground):
+    pts = geometry.points(q, p, ground)
     m = p.mR + p.mB + p.mH + p.mF
     return (p.mR * pts["rear_wheel"] + p.mB * pts["rear_frame"] + p.mH * pts["front_frame"]
             + p.mF * pts["front_wheel"]) / m
 
 
-def contact_forces(q, u, udot, lam, p: BicycleParameters, r=None, surface="flat"):
+def contact_forces(q, u, udot, lam, p: BicycleParameters, ground=motion.FLAT, g=STANDARD_GRAVITY):
     """(normal_rear, friction_rear, normal_front, friction_front), each per
     total mass (m/s^2; normal positive when pushing, friction the tangential
-    part's magnitude), at the state (q, u) with accelerations udot and the
-    constraints' multipliers lam (beyond the paper; docs/two-wheeler.md
-    sec. 8.2, 10.1)."""
+    part's magnitude), at the state (q, u) on ``ground`` under gravity ``g``
+    with accelerations udot and the constraints' multipliers lam (beyond the
+    paper; docs/two-wheeler.md sec. 8.2, 10.1)."""
     mass = p.mR + p.mB + p.mH + p.mF
-    plus = _mass_centre(q + _H * u + 0.5 * _H**2 * udot, p, r, surface)
-    minus = _mass_centre(q - _H * u + 0.5 * _H**2 * udot, p, r, surface)
-    acc = (plus - 2 * _mass_centre(q, p, r, surface) + minus) / _H**2
+    plus = _mass_centre(q + _H * u + 0.5 * _H**2 * udot, p, ground)
+    minus = _mass_centre(q - _H * u + 0.5 * _H**2 * udot, p, ground)
+    acc = (plus - 2 * _mass_centre(q, p, ground) + minus) / _H**2
     gravity = np.zeros_like(acc)
-    gravity[2] = p.g
+    gravity[2] = g
     total = acc - gravity
-    pts = geometry.points(q, p, r, surface)
+    pts = geometry.points(q, p, ground)
     Y = pts["frames"]["Y"]
     front = (lam[2] * Y[0] + lam[3] * Y[1] + lam[4] * Y[2]) / mass
     rear = total - front
-    if surface == "sphere":
-        n_rear = -pts["frames"]["T"][2]
-        n_front = -pts["Q"] / np.linalg.norm(pts["Q"], axis=0)
-    else:
-        n_rear = n_front = np.stack([np.zeros_like(q[0]), np.zeros_like(q[0]), -np.ones_like(q[0])])
+    n_rear, n_front = grounds.of(ground).normals(pts, q[0])
     out = []
     for force, n in ((rear, n_rear), (front, n_front)):
         normal = np.sum(force * n, axis=0)
@@ -98,24 +135,21 @@ def contact_forces(q, u, udot, lam, p: BicycleParameters, r=None, surface="flat"
     return tuple(out)
 
 
-def _residual(q, p, surface):
-    h, _ = getattr(_generated, f"{surface}_holonomic")(q, p)
+def _residual(q, p, ground):
+    h, _ = grounds.of(ground).holonomic(q, p)
     return np.abs(h[0])
 
 
-def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat", r=None, torque0=0.0,
-             lean0=None, k_lean=0.0, k_rate=0.0, hands_free=False, kick=0.0, mu=np.inf, n_points=200,
-             method="DOP853", rtol=1e-10, atol=None, steer_locked=False, kick_lean_rate=0.0,
-             kick_steer_rate=0.0, progress=None):
+def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.FLAT, g=STANDARD_GRAVITY,
+             steering=Steering(), kick=Kick(), solver=Solver(), mu=np.inf, progress=None):
     """Integrate from (q0, u_ind0) (a steady turn's q and its independent
-    speeds (lean rate, rear wheel rate, steer rate)) with the lean kicked by
-    ``kick`` (rad), the lean and steer rates by ``kick_lean_rate`` and
-    ``kick_steer_rate`` (rad/s; the dependent speeds follow from the
-    constraints), the steer torque :func:`rider_torque` (T_0 = ``torque0``
-    about lean_0 = ``lean0``, default q0's lean), or, ``hands_free``, zero,
-    or, ``steer_locked``, the steer held at q0's steer (its rate zero, any
-    given dropped; the torque :func:`lock_torque`), for ``t_end`` s; events
-    stop the run: a normal force reaching zero (``contact_lost``) or the
+    speeds (lean rate, rear wheel rate, steer rate)) on ``ground`` under
+    gravity ``g`` with the start kicked by ``kick`` (:class:`Kick`), the
+    steer held as ``steering`` says (:class:`Steering`: the torque
+    :func:`rider_torque`, T_0 about lean_0, default q0's lean; or zero,
+    hands-free; or, locked, the steer held at q0's steer, its rate zero, any
+    given dropped, the torque :func:`lock_torque`), for ``t_end`` s,
+    integrated as ``solver`` says (:class:`Solver`); events stop the run: a normal force reaching zero (``contact_lost``) or the
     friction exceeding ``mu`` times the normal at either wheel (``slips``)
     (beyond the paper; docs/two-wheeler.md sec. 10.1).  ``progress``, if
     given, is told (t, t_end) now and then as the integrator advances (a run
@@ -123,21 +157,22 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     dict of (n,) arrays and the coordinates ``q`` (8, n), summary dict)."""
     from scipy.integrate import solve_ivp
 
-    p = parameters
-    values = motion.parameter_values(p, surface, r)
+    p, steer_locked = parameters, steering.locked
+    values = motion.parameter_values(p, g, ground)
     q0 = np.array(q0, float)
-    lean0 = float(q0[motion.LEAN]) if lean0 is None else float(lean0)
-    q0[motion.LEAN] += kick
-    q0 = motion.pitch(q0, values, surface)
-    u_ind0 = np.array(u_ind0, float) + np.array([kick_lean_rate, 0.0, kick_steer_rate])
+    lean0 = float(q0[motion.LEAN]) if steering.lean0 is None else float(steering.lean0)
+    q0[motion.LEAN] += kick.lean
+    q0 = motion.pitch(q0, values, ground)
+    u_ind0 = np.array(u_ind0, float) + np.array([kick.lean_rate, 0.0, kick.steer_rate])
     if steer_locked:
         u_ind0[2] = 0.0
     y0 = np.concatenate([q0, u_ind0])
-    gains = (0.0, 0.0, 0.0, 0.0) if hands_free else (torque0, lean0, k_lean, k_rate)
+    gains = (0.0, 0.0, 0.0, 0.0) if steering.hands_free else (steering.torque0, lean0, steering.k_lean,
+                                                              steering.k_rate)
 
     def torque(y):
         if steer_locked:
-            return lock_torque(y[:8], y[8:], values, surface)[0]
+            return lock_torque(y[:8], y[8:], values, ground)[0]
         return rider_torque(y[motion.LEAN], y[8], *gains)
 
     calls = [0]
@@ -148,9 +183,9 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
             progress(min(t, t_end), t_end)
         q, u_ind = y[:8], y[8:]
         if steer_locked:
-            _, a, u = lock_torque(q, u_ind, values, surface)
+            _, a, u = lock_torque(q, u_ind, values, ground)
             return np.concatenate([u, a, [0.0]])
-        Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, torque(y), surface)
+        Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, torque(y), ground)
         return np.concatenate([u, np.linalg.solve(Mr, Fr)])
 
     last = {}
@@ -160,10 +195,10 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
         key = y.tobytes()
         if key not in last:
             q, u_ind = y[:8], y[8:]
-            u = motion.dependent_speeds(q, u_ind, values, surface)
-            udot, lam = motion.accelerations(q, u, values, torque(y), surface)
+            u = motion.dependent_speeds(q, u_ind, values, ground)
+            udot, lam = motion.accelerations(q, u, values, torque(y), ground)
             last.clear()
-            last[key] = contact_forces(q, u, udot, lam, p, r, surface)
+            last[key] = contact_forces(q, u, udot, lam, p, ground, g)
         return last[key]
 
     def lost(t, y):
@@ -177,14 +212,14 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
     lost.terminal = slip.terminal = True
     lost.direction = slip.direction = -1
     events = [lost] + ([slip] if np.isfinite(mu) else [])
-    t_eval = np.linspace(0.0, t_end, max(int(n_points), 2))
+    t_eval = np.linspace(0.0, t_end, max(int(solver.n_points), 2))
     # an event already past at the start is not a crossing: solve_ivp would never see it
     start = [e(0.0, y0) for e in events]
     if min(start) <= 0:
         status, t_event, ts, Y, nfev = STATUSES[1 + int(np.argmin(start))], 0.0, np.zeros(1), y0[:, None], 0
     else:
-        sol = solve_ivp(rates, (0.0, t_end), y0, method=method, t_eval=t_eval, events=events, rtol=rtol,
-                        atol=rtol if atol is None else atol)
+        sol = solve_ivp(rates, (0.0, t_end), y0, method=solver.method, t_eval=t_eval, events=events,
+                        rtol=solver.rtol, atol=solver.rtol if solver.atol is None else solver.atol)
         status, t_event, ts, Y, nfev = "completed", np.nan, sol.t, sol.y, sol.nfev
         for k, times in enumerate(sol.t_events):
             if len(times) and not t_event <= times[0]:
@@ -194,19 +229,19 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
         if not sol.success and status == "completed":
             status = "failed"
     q, u_ind = Y[:8], Y[8:]
-    u = motion.dependent_speeds(q, u_ind, values, surface)
+    u = motion.dependent_speeds(q, u_ind, values, ground)
     T = torque(Y)
     T = np.broadcast_to(T, ts.shape)
-    udot, lam = motion.accelerations(q, u, values, T, surface)
-    n_rear, f_rear, n_front, f_front = contact_forces(q, u, udot, lam, p, r, surface)
-    E = motion.energy(q, u, values, surface)
-    kinetic0 = _generated_kinetic(q[:, :1], u[:, :1], values, surface)[0]
+    udot, lam = motion.accelerations(q, u, values, T, ground)
+    n_rear, f_rear, n_front, f_front = contact_forces(q, u, udot, lam, p, ground, g)
+    E = motion.energy(q, u, values, ground)
+    kinetic0 = grounds.of(ground).energy(q[:, :1], u[:, :1], values)[0][0]
     series = {"t": ts, "lean": q[motion.LEAN], "steer": q[motion.STEER], "heading": q[motion.HEADING],
-              "theta_rear": q[0] if surface == "sphere" else np.full(ts.shape, np.pi),
+              "theta_rear": grounds.of(ground).theta_rear(q),
               "lean_rate": u[motion.LEAN], "steer_rate": u[motion.STEER], "v_rear": np.abs(u[motion.REAR]) * p.rR,
               "steer_torque": T, "normal_rear": n_rear, "normal_front": n_front, "friction_rear": f_rear,
               "friction_front": f_front, "energy_drift": (E - E[0]) / kinetic0,
-              "constraint_residual": _residual(q, values, surface), "q": q}
+              "constraint_residual": _residual(q, values, ground), "q": q}
     summary = {"status": status, "t_event": t_event, "t_end": float(ts[-1]),
                "max_lean_deviation": float(np.max(np.abs(q[motion.LEAN] - lean0))),
                "final_lean_deviation": float(q[motion.LEAN, -1] - lean0),
@@ -215,8 +250,3 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, surface="flat"
                "min_normal_rear": float(np.min(n_rear)), "min_normal_front": float(np.min(n_front)),
                "n_evaluations": int(nfev)}
     return series, summary
-
-
-def _generated_kinetic(q, u, values, surface):
-    kinetic, _ = getattr(_generated, f"{surface}_energy")(q, u, values)
-    return kinetic

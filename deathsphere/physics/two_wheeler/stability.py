@@ -25,91 +25,101 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.two_wheeler import motion, steady
+from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.physics.two_wheeler import grounds, motion, steady
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STABLE_BELOW", "turn_state_vector", "jacobian", "jacobians", "eigenvalues", "verdict",
-           "turns_with_stability"]
+__all__ = ["STABLE_BELOW", "turn_state_vector", "eigenvalue_count", "jacobian", "jacobians", "eigenvalues",
+           "verdict", "turns_with_stability"]
 
 _STEP = 1e-30
 #: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).
 STABLE_BELOW = 1e-9
 
 
-def _layout(surface, steer):
+def _layout(ground, steer):
     """Indices of the state's coordinates in q and of its speeds in u_ind."""
-    coords = [0, motion.HEADING] if surface == "sphere" else []
+    coords = list(grounds.of(ground).turning_coordinates)
     coords += [motion.LEAN] + ([motion.STEER] if steer == "free" else [])
     speeds = [0, 1] + ([2] if steer == "free" else [])
     return coords, speeds
 
 
-def turn_state_vector(q, u, surface="sphere", steer="free"):
-    """The state (k, ...) of a steady turn from its q, u (8, ...) (beyond
-    the paper; docs/two-wheeler.md sec. 8.3)."""
-    coords, speeds = _layout(surface, steer)
+def eigenvalue_count(ground, steer="free") -> int:
+    """How many eigenvalues a steady turn on ``ground`` has, the steer
+    ``free`` or ``locked``: the state's size less the trivial direction
+    (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    coords, speeds = _layout(ground, steer)
+    return len(coords) + len(speeds) - 1
+
+
+def turn_state_vector(q, u, ground, steer="free"):
+    """The state (k, ...) of a steady turn on ``ground`` from its q, u (8,
+    ...) (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    coords, speeds = _layout(ground, steer)
     ind = np.asarray(u)[list(motion.INDEPENDENT)]
     return np.concatenate([np.asarray(q)[coords], ind[speeds]])
 
 
-def _rates(x_coords, x_speeds, q_steady, p, torque, surface):
+def _rates(x_coords, x_speeds, q_steady, p, torque, ground):
     """d/dt of the free-steer state (its coordinates x_coords, its speeds
     x_speeds, (k, n) each), the other coordinates at their steady values
     q_steady (8, n); and, from the same evaluation, the locked-steer
     state's rates (the steer row dropped, steer rate 0)."""
-    coords, speeds = _layout(surface, "free")
+    coords, speeds = _layout(ground, "free")
     q = np.array(q_steady, dtype=np.result_type(x_coords, q_steady))
     q[coords] = x_coords
-    q = motion.pitch(q, p, surface)
+    q = motion.pitch(q, p, ground)
     u_ind = np.zeros((3,) + x_speeds.shape[1:], dtype=np.result_type(q, x_speeds))
     u_ind[speeds] = x_speeds
-    mass, forcing, u = motion.reduced_mass_and_forcing(q, u_ind, p, torque, surface)
+    mass, forcing, u = motion.reduced_mass_and_forcing(q, u_ind, p, torque, ground)
     out = []
     for mode in ("free", "locked"):
-        c, sp = _layout(surface, mode)
+        c, sp = _layout(ground, mode)
         udot = np.linalg.solve(mass[..., sp, :][..., :, sp], forcing[..., sp][..., None])[..., 0]
         out.append(np.concatenate([u[c], np.moveaxis(udot, -1, 0)]))
     return out
 
 
-def _locked_columns(surface):
+def _locked_columns(ground):
     """Where the locked state's directions sit among the free state's."""
-    free_c, free_s = _layout(surface, "free")
-    locked_c, locked_s = _layout(surface, "locked")
+    free_c, free_s = _layout(ground, "free")
+    locked_c, locked_s = _layout(ground, "locked")
     return [free_c.index(i) for i in locked_c] + [len(free_c) + free_s.index(i) for i in locked_s]
 
 
-def jacobians(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None):
-    """The Jacobians (n, k, k) of the state's rates at steady turns (q, u
-    (8, n), the steady steer torque (n,) held constant), steer free and
-    steer locked, by complex steps, the coordinates' in one batch and the
-    speeds' in another (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
-    p = motion.parameter_values(parameters, surface, r)
+def jacobians(q, u, torque, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY):
+    """The Jacobians (n, k, k) of the state's rates at steady turns on
+    ``ground`` under gravity ``g`` (q, u (8, n), the steady steer torque
+    (n,) held constant), steer free and steer locked, by complex steps, the
+    coordinates' in one batch and the speeds' in another (beyond the paper;
+    docs/two-wheeler.md sec. 8.3)."""
+    p = motion.parameter_values(parameters, g, ground)
     q, u = np.asarray(q, float).reshape(8, -1), np.asarray(u, float).reshape(8, -1)
-    x0 = turn_state_vector(q, u, surface, "free")
+    x0 = turn_state_vector(q, u, ground, "free")
     k, n = x0.shape
-    kc = len(_layout(surface, "free")[0])
+    kc = len(_layout(ground, "free")[0])
     torque = np.broadcast_to(np.asarray(torque, float).reshape(-1), (n,))
     columns = []
     # the speeds' directions leave q, the pitch, B and M real: half the cost of the coordinates' directions
     for group in (np.arange(kc), np.arange(kc, k)):
-        g = group.size
-        x = np.repeat(x0[:, :, None], g, axis=2).astype(complex)
-        x[group, :, np.arange(g)] += 1j * _STEP
+        m = group.size
+        x = np.repeat(x0[:, :, None], m, axis=2).astype(complex)
+        x[group, :, np.arange(m)] += 1j * _STEP
         x = x.reshape(k, -1)
         x_coords, x_speeds = (x[:kc], x[kc:].real) if group[0] < kc else (x[:kc].real, x[kc:])
-        rates = _rates(x_coords, x_speeds, np.repeat(q[:, :, None], g, axis=2).reshape(8, -1), p,
-                       np.repeat(torque[:, None], g, axis=1).reshape(-1), surface)
-        columns.append([r.imag.reshape(-1, n, g) / _STEP for r in rates])
+        rates = _rates(x_coords, x_speeds, np.repeat(q[:, :, None], m, axis=2).reshape(8, -1), p,
+                       np.repeat(torque[:, None], m, axis=1).reshape(-1), ground)
+        columns.append([r.imag.reshape(-1, n, m) / _STEP for r in rates])
     J_free, J_locked = (np.moveaxis(np.concatenate(c, axis=2), 1, 0) for c in zip(*columns))
-    return J_free, J_locked[..., _locked_columns(surface)]
+    return J_free, J_locked[..., _locked_columns(ground)]
 
 
-def jacobian(q, u, torque, parameters: BicycleParameters, surface="sphere", r=None, steer="free"):
+def jacobian(q, u, torque, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, steer="free"):
     """The Jacobian (n, k, k) of the state's rates at steady turns, steer
     ``free`` (under the steady torque held constant) or ``locked``
     (:func:`jacobians`; beyond the paper; docs/two-wheeler.md sec. 8.3)."""
-    J_free, J_locked = jacobians(q, u, torque, parameters, surface, r)
+    J_free, J_locked = jacobians(q, u, torque, parameters, ground, g)
     return J_free if steer == "free" else J_locked
 
 
@@ -134,10 +144,10 @@ def verdict(values):
     return out, growth
 
 
-def turns_with_stability(lane, parameters: BicycleParameters, speed=None, torque=None, surface="sphere", r=None,
+def turns_with_stability(lane, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, *, speed=None, torque=None,
                          head=(0.3, -1.7)):
-    """Every steady turn of each lane (theta on the sphere, curvature on flat
-    ground) at the rear contact's ``speed`` or held with the steer
+    """Every steady turn of each lane (theta on a Sphere ``ground``,
+    curvature on a Plane) under gravity ``g`` at the rear contact's ``speed`` or held with the steer
     ``torque``, and its stability with the steer free under the steady
     torque held constant and with the steer locked: the arrays of
     ``steady.turns_for_speed`` (n, k) plus ``eigenvalues_free`` (n, k, 6 on
@@ -148,16 +158,16 @@ def turns_with_stability(lane, parameters: BicycleParameters, speed=None, torque
     if (speed is None) == (torque is None):
         raise ValueError("give either speed or torque")
     if speed is not None:
-        out = steady.turns_for_speed(lane, speed, parameters, surface, r, head)
+        out = steady.turns_for_speed(lane, speed, parameters, ground, g, head)
     else:
-        out = steady.turns_for_torque(lane, torque, parameters, surface, r, head)
+        out = steady.turns_for_torque(lane, torque, parameters, ground, g, head)
     found = np.isfinite(out["lean"])
     rows, cols = np.nonzero(found)
     if rows.size:
         both = jacobians(out["q"][:, rows, cols], out["u"][:, rows, cols], out["steer_torque"][rows, cols],
-                         parameters, surface, r)
+                         parameters, ground, g)
     for mode in ("free", "locked"):
-        size = (6 if surface == "sphere" else 4) - (2 if mode == "locked" else 0)
+        size = eigenvalue_count(ground, mode)
         values = np.full(found.shape + (size,), np.nan + 0j)
         verdicts = np.full(found.shape, "", dtype="<U8")
         growth = np.full(found.shape, np.nan)

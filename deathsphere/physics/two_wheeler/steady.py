@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.two_wheeler import _generated, geometry, motion
+from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.physics.two_wheeler import geometry, grounds, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
 __all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "configuration", "turn_coefficients", "solve_steer",
@@ -44,68 +45,69 @@ MAX_SPEED = 100.0
 _TOL = 1e-12
 
 
-def configuration(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
-    """q (8, ...) of a steady turn: sphere, lane = theta (rear contact's
-    polar angle from the upward vertical); flat, lane = the path's curvature
-    (ignored here); heading pi/2, pitch from the holonomic constraint
-    (beyond the paper; docs/two-wheeler.md sec. 8)."""
-    return _configuration(lane, lean, steer, parameters, surface, r)[0]
+def configuration(lane, lean, steer, parameters: BicycleParameters, ground):
+    """q (8, ...) of a steady turn on ``ground``: a Sphere, lane = theta
+    (rear contact's polar angle from the upward vertical); a Plane, lane =
+    the path's curvature (ignored here); heading pi/2, pitch from the
+    holonomic constraint (beyond the paper; docs/two-wheeler.md sec. 8)."""
+    return _configuration(lane, lean, steer, parameters, ground)[0]
 
 
-def _configuration(lane, lean, steer, parameters, surface, r):
+def _configuration(lane, lean, steer, parameters, ground):
     """configuration's q and where its pitch holds (:func:`_pitch_holds`)."""
     lane, lean, steer = np.broadcast_arrays(*(np.asarray(x) for x in (lane, lean, steer)))
     dtype = np.result_type(lane, lean, steer, float)
     q = np.zeros((8,) + lane.shape, dtype=dtype)
-    if surface == "sphere":
-        q[0] = lane
+    grounds.of(ground).place(q, lane)
     q[motion.HEADING] = np.pi / 2
     q[motion.LEAN], q[motion.STEER] = lean, steer
     # Newton's pitch can run away where no configuration exists (lean near 90
     # degrees, a vanishing wheel base): those are masked by _pitch_holds
-    p = motion.parameter_values(parameters, surface, r)
+    # (the configuration is kinematic: any gravity in the arguments gives the same)
+    p = motion.parameter_values(parameters, STANDARD_GRAVITY, ground)
     with np.errstate(over="ignore", invalid="ignore"):
-        q = motion.pitch(q, p, surface)
+        q = motion.pitch(q, p, ground)
     # where it ran away, pitch 0: finite, and _pitch_holds still says no (unless pitch 0 itself holds)
-    holds = _pitch_holds(q, p, surface)
+    holds = _pitch_holds(q, p, ground)
     q[motion.PITCH] = np.where(holds, q[motion.PITCH], 0.0)
     if not holds.all():
-        holds[~holds] = _pitch_holds(q[:, ~holds], p, surface)
+        holds[~holds] = _pitch_holds(q[:, ~holds], p, ground)
     return q, holds
 
 
-def _pitch_holds(q, p, surface):
+def _pitch_holds(q, p, ground):
     """Where Newton's pitch converged (|constraint| below 1e-10 m, pitch
     within a radian): elsewhere the configuration does not exist."""
     pitch = q[motion.PITCH].real
     finite = np.isfinite(pitch) & (np.abs(pitch) < 1.0)
-    h, _ = getattr(_generated, f"{surface}_holonomic")(np.where(finite, q.real, 0.0), p)
+    h, _ = grounds.of(ground).holonomic(np.where(finite, q.real, 0.0), p)
     return finite & (np.abs(h[0]) < 1e-10)
 
 
-def _condition(lane, q, p, surface):
+def _condition(lane, q, p, ground):
     """The kinematic condition per unit rear wheel rate: sphere, the heading
     rate; flat, heading rate minus curvature times forward speed."""
-    u = motion.dependent_speeds(q, np.stack(np.broadcast_arrays(0.0, -1.0, 0.0 * q[0])), p, surface)
-    return u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - lane * u[1]
+    u = motion.dependent_speeds(q, np.stack(np.broadcast_arrays(0.0, -1.0, 0.0 * q[0])), p, ground)
+    return grounds.of(ground).heading_condition(u, lane)
 
 
-def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None):
-    """(condition, G, H) at (lane, lean, steer): Kane's reduced equations of a
-    steady turn are G + w^2 H (rows lean, rear wheel, steer; no steer torque),
-    w the rear wheel rate (beyond the paper; docs/two-wheeler.md sec. 8)."""
-    p = motion.parameter_values(parameters, surface, r)
-    q, holds = _configuration(lane, lean, steer, parameters, surface, r)
+def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY):
+    """(condition, G, H) at (lane, lean, steer) on ``ground`` under gravity
+    ``g``: Kane's reduced equations of a steady turn are G + w^2 H (rows
+    lean, rear wheel, steer; no steer torque), w the rear wheel rate (beyond
+    the paper; docs/two-wheeler.md sec. 8)."""
+    on = grounds.of(ground)
+    p = motion.parameter_values(parameters, g, ground)
+    q, holds = _configuration(lane, lean, steer, parameters, ground)
     q1 = q.reshape(8, -1)
     n = q1.shape[1]
     unit = np.zeros((3, n))
     unit[1] = 1.0
-    u, A = motion.full_speeds(q1, unit, p, surface)
-    kappa = np.broadcast_to(lane, np.shape(q)[1:]).ravel()
-    condition = u[motion.HEADING] if surface == "sphere" else u[motion.HEADING] - kappa * u[1]
+    u, A = motion.full_speeds(q1, unit, p, ground)
+    condition = on.heading_condition(u, np.broadcast_to(lane, np.shape(q)[1:]).ravel())
     # at rest the accelerations vanish (B' u = 0): G = -A^T f(q, 0), gravity alone; at unit wheel rate G + H
-    rest = getattr(_generated, f"{surface}_forcing_at_rest")(q1, p, 0.0)
-    M, f, B, bias = getattr(_generated, f"{surface}_equations")(q1, u, p, 0.0)
+    rest = on.forcing_at_rest(q1, p, 0.0)
+    M, f, B, bias = on.equations(q1, u, p, 0.0)
     dep = np.moveaxis(B, (0, 1), (-2, -1))[..., list(motion.DEPENDENT)]
     a = np.zeros((n, 8), dtype=np.result_type(u, bias))
     a[:, list(motion.DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
@@ -116,26 +118,22 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, surface=
     return tuple(np.where(holds.ravel(), x, np.nan).reshape(x.shape[:-1] + shape) for x in (condition, G, H))
 
 
-def _initial_steer(lane, lean, parameters, surface, r):
+def _initial_steer(lane, lean, parameters, ground):
     """The flat-ground guess: tan(steer) = w kappa cos(lean) / cos(lam),
-    kappa the geodesic curvature of the lane (-cot(theta)/r on the sphere)."""
-    if surface == "flat":
-        kappa = lane
-    else:
-        # at the poles the guess is a quarter turn; Newton's step then says no
-        with np.errstate(divide="ignore", invalid="ignore"):
-            kappa = np.nan_to_num(-np.cos(lane) / (r * np.sin(lane)), posinf=1e300, neginf=-1e300)
+    kappa the geodesic curvature of the lane (-cot(theta)/r on the sphere;
+    at the poles the guess is a quarter turn, and Newton's step then says no)."""
+    kappa = grounds.of(ground).curvature(lane)
     return np.arctan(parameters.w * kappa * np.cos(lean) / np.cos(parameters.lam))
 
 
-def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=None, steer=None):
+def solve_steer(lane, lean, parameters: BicycleParameters, ground, steer=None):
     """The steer of a steady turn at each lean (the kinematic condition, by
     Newton's method, its slope by a complex step renewed every third step,
     from the flat-ground guess); NaN where it does not converge below 1e-12 rad or leaves
     |steer| < 80 degrees (beyond the paper; docs/two-wheeler.md sec. 8)."""
     lane, lean = np.broadcast_arrays(np.asarray(lane, float), np.asarray(lean, float))
-    p = motion.parameter_values(parameters, surface, r)
-    delta = _initial_steer(lane, lean, parameters, surface, r) if steer is None else np.array(steer, float)
+    p = motion.parameter_values(parameters, STANDARD_GRAVITY, ground)       # kinematic: any gravity
+    delta = _initial_steer(lane, lean, parameters, ground) if steer is None else np.array(steer, float)
     delta = np.array(np.broadcast_to(delta, lane.shape), dtype=float)
     step = np.full(lane.shape, np.inf)
     slope = np.zeros(lane.shape)
@@ -148,8 +146,8 @@ def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=N
         # a complex step (value and slope) every third iteration, real chord steps between: half the cost
         fresh = k % 3 == 0
         q, holds = _configuration(lane[idx], lean[idx], delta[idx] + (1j * _STEP if fresh else 0.0), parameters,
-                                  surface, r)
-        c = _condition(lane[idx], q, p, surface)
+                                  ground)
+        c = _condition(lane[idx], q, p, ground)
         if fresh:
             slope[idx] = c.imag / _STEP
         c = c.real
@@ -162,18 +160,18 @@ def solve_steer(lane, lean, parameters: BicycleParameters, surface="sphere", r=N
     return np.where(good, delta, np.nan)
 
 
-def lean_curve(lane, parameters: BicycleParameters, surface="sphere", r=None, lean=LEAN_GRID):
-    """Every steady turn of each lane as a function of lean: steer, G, H on
-    the grid ``lean`` (lanes (n,), result (n, m); G and H (3, n, m)) (beyond
-    the paper; docs/two-wheeler.md sec. 8)."""
+def lean_curve(lane, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, lean=LEAN_GRID):
+    """Every steady turn of each lane on ``ground`` under gravity ``g`` as a
+    function of lean: steer, G, H on the grid ``lean`` (lanes (n,), result
+    (n, m); G and H (3, n, m)) (beyond the paper; docs/two-wheeler.md sec. 8)."""
     lane = np.asarray(lane, float).reshape(-1)
     L = np.broadcast_to(lean, (lane.size, np.size(lean)))
     X = np.broadcast_to(lane[:, None], L.shape)
-    steer = solve_steer(X.ravel(), L.ravel(), parameters, surface, r).reshape(L.shape)
+    steer = solve_steer(X.ravel(), L.ravel(), parameters, ground).reshape(L.shape)
     ok = np.isfinite(steer)
     # the coefficients where the steer exists only (a quarter of the grid has no configuration)
     G, H = np.full((2, 3) + L.shape, np.nan)
-    _, G[:, ok], H[:, ok] = turn_coefficients(X[ok], L[ok], steer[ok], parameters, surface, r)
+    _, G[:, ok], H[:, ok] = turn_coefficients(X[ok], L[ok], steer[ok], parameters, ground, g)
     return {"lean": np.array(L), "steer": steer, "G": G, "H": H}
 
 
@@ -226,16 +224,16 @@ def _brackets(f, lean, steer, lanes):
     return np.concatenate(out_rows), np.concatenate(start), np.concatenate(start_steer)
 
 
-def _residual(lane, lean, steer, w2, torque, parameters, surface, r, slopes):
+def _residual(lane, lean, steer, w2, torque, parameters, ground, g, slopes):
     """(condition, target) at (lean, steer) and, with ``slopes``, their
     Jacobian (m, 2, 2) in (lean, steer) by complex steps (both in one
     batch; else None)."""
     if not slopes:
-        c, G, H = turn_coefficients(lane, lean, steer, parameters, surface, r)
+        c, G, H = turn_coefficients(lane, lean, steer, parameters, ground, g)
         return c, _target(G, H, w2, torque), None
     m = lean.size
     c, G, H = turn_coefficients(np.concatenate([lane, lane]), np.concatenate([lean + 1j * _STEP, lean + 0j]),
-                                np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, surface, r)
+                                np.concatenate([steer + 0j, steer + 1j * _STEP]), parameters, ground, g)
     both = _target(G, H, None if w2 is None else np.concatenate([w2, w2]),
                    None if torque is None else np.concatenate([torque, torque]))
     c, c_s, t, t_s = c[:m], c[m:], both[:m], both[m:]
@@ -243,7 +241,7 @@ def _residual(lane, lean, steer, w2, torque, parameters, surface, r, slopes):
     return c.real, t.real, jacobian
 
 
-def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
+def _refine(lane, lean, steer, w2, torque, parameters, ground, g):
     """Newton's method in (lean, steer) on (condition, target), iterating
     only the unconverged turns; once a step is below 1e-4 rad the Jacobian
     is kept (chord steps), renewed every third step; returns lean, steer,
@@ -263,7 +261,7 @@ def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
         for at, slopes in ((idx[fresh], True), (idx[~fresh], False)):
             if at.size:
                 *value, J = _residual(lane[at], lean[at], steer[at], None if w2 is None else w2[at],
-                                      None if torque is None else torque[at], parameters, surface, r, slopes)
+                                      None if torque is None else torque[at], parameters, ground, g, slopes)
                 residual[:, at] = value
                 if slopes:
                     jacobian[at] = J
@@ -282,7 +280,7 @@ def _refine(lane, lean, steer, w2, torque, parameters, surface, r):
     return lean, steer, size < 1e-10
 
 
-def _solve(lane, curve, lanes, w2, torque, parameters, surface, r):
+def _solve(lane, curve, lanes, w2, torque, parameters, ground, g):
     """All turns of each lane picked by a speed (w2) or a torque, (n, k)
     NaN-padded lean and steer, sorted by lean, duplicates merged; the lean
     curve is that of the distinct lanes, lane i's at ``lanes[i]``."""
@@ -295,8 +293,8 @@ def _solve(lane, curve, lanes, w2, torque, parameters, surface, r):
     ok0 = np.isfinite(steer0) & np.isfinite(start)
     rows, start, steer0, lane_r = rows[ok0], start[ok0], steer0[ok0], lane_r[ok0]
     lean, steer, conv = _refine(lane_r, start, steer0, w2[rows] if torque is None else None,
-                                None if torque is None else torque[rows], parameters, surface, r)
-    _, G, H = turn_coefficients(lane_r, np.where(conv, lean, 0.0), np.where(conv, steer, 0.0), parameters, surface, r)
+                                None if torque is None else torque[rows], parameters, ground, g)
+    _, G, H = turn_coefficients(lane_r, np.where(conv, lean, 0.0), np.where(conv, steer, 0.0), parameters, ground, g)
     with np.errstate(invalid="ignore", divide="ignore"):
         rate2 = -G[0] / H[0]
     keep = conv & np.isfinite(rate2) & (rate2 > 0) & (rate2 * parameters.rR**2 < MAX_SPEED**2)
@@ -328,57 +326,53 @@ REASONS = {
     "none": "no steady turn at this lane and speed or torque",
 }
 #: Lanes closer to a pole than this (rad) are refused: the sphere's coordinates are singular there.
-POLE = 1e-6
+POLE = grounds.POLE
 
 
-def _turns(lane, value, kind, parameters, surface, r, head):
+def _turns(lane, value, kind, parameters, ground, g, head):
     """The common body of turns_for_speed and turns_for_torque: lanes that
     cannot be computed are replaced by a harmless one and blanked after."""
+    on = grounds.of(ground)
     lane, value = (np.array(x, float).reshape(-1) for x in np.broadcast_arrays(lane, value))
-    good_lane = np.isfinite(lane)
-    if surface == "sphere":
-        good_lane &= (lane > POLE) & (lane < np.pi - POLE)
+    good_lane = on.lane_ok(lane)
     good_value = np.isfinite(value) & ((value > 0) if kind == "speed" else True)
     good = good_lane & good_value
-    lane[~good] = np.pi / 2 if surface == "sphere" else 0.1
+    lane[~good] = on.harmless_lane
     value[~good] = 1.0
     unique, inverse = np.unique(lane, return_inverse=True)
-    curve = lean_curve(unique, parameters, surface, r)
+    curve = lean_curve(unique, parameters, ground, g)
     if kind == "speed":
-        L, S, counts = _solve(lane, curve, inverse, (value / parameters.rR) ** 2, None, parameters, surface, r)
+        L, S, counts = _solve(lane, curve, inverse, (value / parameters.rR) ** 2, None, parameters, ground, g)
     else:
-        L, S, counts = _solve(lane, curve, inverse, None, value, parameters, surface, r)
+        L, S, counts = _solve(lane, curve, inverse, None, value, parameters, ground, g)
     L[~good], S[~good], counts[~good] = np.nan, np.nan, 0
-    out = turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, surface, r, head)
+    out = turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, ground, g, head)
     reason = np.where(counts > 0, REASONS["ok"], REASONS["none"])
     reason = np.where(good_value, reason, REASONS[kind])
     reason = np.where(good_lane, reason, REASONS["lane"])
     return out | {"count": counts, "reason": reason}
 
 
-def turns_for_speed(lane, speed, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
-    """Every steady turn of each lane (theta on the sphere, curvature on flat
-    ground) at the rear contact's speed ``speed`` (m/s, what a rear-wheel
+def turns_for_speed(lane, speed, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, head=(0.3, -1.7)):
+    """Every steady turn of each lane (theta on a Sphere ``ground``,
+    curvature on a Plane) under gravity ``g`` at the rear contact's speed ``speed`` (m/s, what a rear-wheel
     speedometer reads): (n, k) NaN-padded arrays of :func:`turn_state`, sorted
     by lean, ``count`` (n,) and ``reason`` (n,: empty where a turn was
     found, else why not, :data:`REASONS`) (beyond the paper;
     docs/two-wheeler.md sec. 8)."""
-    return _turns(lane, speed, "speed", parameters, surface, r, head)
+    return _turns(lane, speed, "speed", parameters, ground, g, head)
 
 
-def turns_for_torque(lane, torque, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
+def turns_for_torque(lane, torque, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, head=(0.3, -1.7)):
     """Every steady turn of each lane held with the steer torque ``torque``
     (N m; 0: hands-free), as :func:`turns_for_speed` (beyond the paper;
     docs/two-wheeler.md sec. 8)."""
-    return _turns(lane, torque, "torque", parameters, surface, r, head)
+    return _turns(lane, torque, "torque", parameters, ground, g, head)
 
 
-def _horizontal(v):
-    return np.stack([v[0], v[1], np.zeros_like(v[2])])
-
-
-def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere", r=None, head=(0.3, -1.7)):
-    """Everything about the steady turn at (lane, lean, steer), any shape,
+def turn_state(lane, lean, steer, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, head=(0.3, -1.7)):
+    """Everything about the steady turn at (lane, lean, steer) on ``ground``
+    under gravity ``g``, any shape,
     NaN in gives NaN out (beyond the paper; docs/two-wheeler.md sec. 8):
     ``omega`` (rad/s, about the vertical; on flat ground the heading rate),
     ``pitch``, ``steer_torque`` (N m), speeds ``v_rear``, ``v_front``,
@@ -397,11 +391,11 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere
     # only the turns given are computed: a NaN-padded table of turns is mostly padding
     given = np.nonzero(np.isfinite(lean) & np.isfinite(steer) & np.isfinite(lane))[0]
     if given.size:
-        valid, out = _turn_state(lane[given], lean[given], steer[given], parameters, surface, r, head)
+        valid, out = _turn_state(lane[given], lean[given], steer[given], parameters, ground, g, head)
     else:
         # none: an upright turn gives the names and shapes
-        valid, out = _turn_state(np.array([np.pi / 2 if surface == "sphere" else 0.0]), np.zeros(1), np.zeros(1),
-                                 parameters, surface, r, head)
+        valid, out = _turn_state(np.array([grounds.of(ground).upright_lane]), np.zeros(1), np.zeros(1),
+                                 parameters, ground, g, head)
     full = {}
     for k, v in out.items():
         x = np.full(v.shape[:-1] + lane.shape, np.nan)
@@ -411,55 +405,39 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, surface="sphere
     return full
 
 
-def _turn_state(lane0, lean0, steer0, p, surface, r, head):
+def _turn_state(lane0, lean0, steer0, p, ground, g, head):
     """turn_state's quantities at finite (lane, lean, steer) (m,), and
     where they are a turn (the lean row gives a positive w^2)."""
-    values = motion.parameter_values(p, surface, r)
-    _, G, H = turn_coefficients(lane0, lean0, steer0, p, surface, r)
+    on = grounds.of(ground)
+    values = motion.parameter_values(p, g, ground)
+    _, G, H = turn_coefficients(lane0, lean0, steer0, p, ground, g)
     with np.errstate(invalid="ignore", divide="ignore"):
         w2 = -G[0] / H[0]
     valid = np.isfinite(w2) & (w2 > 0)
     w2 = np.where(valid, w2, 0.0)
     torque = G[2] + w2 * H[2]
-    q = configuration(lane0, lean0, steer0, p, surface, r)
+    q = configuration(lane0, lean0, steer0, p, ground)
     u_ind = np.stack([np.zeros_like(w2), -np.sqrt(w2), np.zeros_like(w2)])
-    u = motion.dependent_speeds(q, u_ind, values, surface)
-    _, lam = motion.accelerations(q, u, values, torque, surface)
-    pts = geometry.points(q, p, r, surface, head)
+    u = motion.dependent_speeds(q, u_ind, values, ground)
+    _, lam = motion.accelerations(q, u, values, torque, ground)
+    pts = geometry.points(q, p, ground, head)
     Y = pts["frames"]["Y"]
     v_rear = np.sqrt(w2) * p.rR
-    if surface == "sphere":
-        omega = u[1]
-        n_rear = -pts["frames"]["T"][2]
-        n_front = -pts["Q"] / np.linalg.norm(pts["Q"], axis=0)
-        clearance = r - np.linalg.norm(pts["head"], axis=0)
-        theta_front = np.arccos(np.clip(-pts["Q"][2] / np.linalg.norm(pts["Q"], axis=0), -1, 1))
-
-        def swept(x):
-            return omega * _horizontal(x)
-    else:
-        omega = u[motion.HEADING]
-        n_rear = n_front = np.stack([np.zeros_like(w2), np.zeros_like(w2), -np.ones_like(w2)])
-        clearance = np.full_like(w2, np.inf)
-        theta_front = np.full_like(w2, np.pi)
-
-        def swept(x):
-            # omega (x - centre), the centre P + Y.y / kappa: regular at kappa = 0 (straight)
-            return omega * _horizontal(x - pts["P"]) - v_rear * Y[1]
-
+    omega, clearance, theta_front, swept = on.turn(u, pts, v_rear)
+    n_rear, n_front = on.normals(pts, w2)
     bodies = ((p.mB, "rear_frame"), (p.mR, "rear_wheel"), (p.mH, "front_frame"), (p.mF, "front_wheel"))
     mass = sum(m for m, _ in bodies)
     # every point turns about the vertical axis: velocity z x swept(x), acceleration -omega swept(x)
     momentum_rate = sum(-m * omega * swept(pts[k]) for m, k in bodies)
-    gravity = np.stack([np.zeros_like(w2), np.zeros_like(w2), p.g * mass * np.ones_like(w2)])
+    gravity = np.stack([np.zeros_like(w2), np.zeros_like(w2), g * mass * np.ones_like(w2)])
     total = momentum_rate - gravity                         # the contact forces on the bicycle
     front = lam[2] * Y[0] + lam[3] * Y[1] + lam[4] * Y[2]
     rear = total - front
     g_cm = sum(m * pts[k] for m, k in bodies) / mass
     out = {"omega": omega, "pitch": q[motion.PITCH], "steer_torque": torque, "v_rear": v_rear,
            "v_front": np.linalg.norm(swept(pts["Q"]), axis=0), "v_cm": np.linalg.norm(swept(g_cm), axis=0),
-           "load_g": np.linalg.norm(total, axis=0) / (mass * p.g), "head_clearance": clearance,
-           "theta_rear": lane0 if surface == "sphere" else np.full_like(w2, np.pi), "theta_front": theta_front,
+           "load_g": np.linalg.norm(total, axis=0) / (mass * g), "head_clearance": clearance,
+           "theta_rear": on.theta_rear(q), "theta_front": theta_front,
            "rear_tangential_check": np.stack([np.sum(rear * Y[0], 0) - lam[0], np.sum(rear * Y[1], 0) - lam[1]])}
     for name, force, n in (("rear", rear, n_rear), ("front", front, n_front)):
         normal = np.sum(force * n, axis=0)
