@@ -2,9 +2,8 @@
 finish, and tolerances solve_ivp would not honour (docs/simulation.md,
 "Cost" and "Integration")."""
 
-import subprocess
-import sys
 import warnings
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -17,9 +16,21 @@ from deathsphere.params import RTOL_MIN, ParameterError
 from deathsphere.simulation import runner
 
 
-def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "deathsphere", "simulate", "--theta", "60", "--alpha", "10",
-                           "--summary-only", "--format", "csv", *args], capture_output=True, text=True, timeout=60)
+#: The warnings a fresh interpreter does not show (Python's default filters).
+_HIDDEN_BY_PYTHON = (DeprecationWarning, PendingDeprecationWarning, ImportWarning, ResourceWarning)
+
+
+def _cli(run, *args):
+    """``deathsphere simulate ...`` run in-process (the ``run`` fixture): its
+    exit status, stdout and stderr, with any Python warning on stderr as a
+    fresh ``python -m deathsphere`` would print it there."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.resetwarnings()
+        for category in _HIDDEN_BY_PYTHON:
+            warnings.filterwarnings("ignore", category=category)
+        res = run("simulate", "--theta", "60", "--alpha", "10", "--summary-only", "--format", "csv", *args)
+    shown = "".join(warnings.formatwarning(w.message, w.category, w.filename, w.lineno) for w in caught)
+    return SimpleNamespace(returncode=res.exit_code, stdout=res.stdout, stderr=res.stderr + shown)
 
 
 def _one_line_usage_error(proc, *words):
@@ -46,8 +57,8 @@ def test_tiny_a_over_r_is_refused_not_reported_as_contact_lost(a, r):
     assert str(deathsphere.orbit(60, 10, a=a, r=r)["status"]) == "ok"
 
 
-def test_tiny_a_over_r_is_refused_on_the_command_line_in_one_line():
-    _one_line_usage_error(_cli("-a", "1e-9", "-r", "1e9", "--periods", "1"), "float64", "a/r >=")
+def test_tiny_a_over_r_is_refused_on_the_command_line_in_one_line(run):
+    _one_line_usage_error(_cli(run, "-a", "1e-9", "-r", "1e9", "--periods", "1"), "float64", "a/r >=")
 
 
 def test_the_spin_ratio_limit_is_not_a_budget():
@@ -88,9 +99,9 @@ def test_the_default_table1_run_is_well_within_the_budget():
     assert sim_.estimated_steps < 1000 and sim_.pieces_per_chunk == 1 and sim_.n_progress == sim_.n_chunks
 
 
-def test_a_run_over_the_step_budget_is_refused_on_the_command_line_in_one_line():
-    _one_line_usage_error(_cli("-a", "1e-3", "-r", "1e3", "--periods", "1"), "steps", "--max-steps")
-    _one_line_usage_error(_cli("--max-steps", "0"), "max_steps")
+def test_a_run_over_the_step_budget_is_refused_on_the_command_line_in_one_line(run):
+    _one_line_usage_error(_cli(run, "-a", "1e-3", "-r", "1e3", "--periods", "1"), "steps", "--max-steps")
+    _one_line_usage_error(_cli(run, "--max-steps", "0"), "max_steps")
 
 
 def test_memory_is_bounded_by_splitting_long_periods(monkeypatch):
@@ -135,8 +146,8 @@ def test_rtol_below_100_eps_is_refused():
         sim.Simulation(starts, rtol=1e-14)
 
 
-def test_rtol_below_100_eps_is_refused_on_the_command_line_in_one_line():
-    _one_line_usage_error(_cli("--rtol", "1e-14"), "--rtol", "2.22045e-14")
+def test_rtol_below_100_eps_is_refused_on_the_command_line_in_one_line(run):
+    _one_line_usage_error(_cli(run, "--rtol", "1e-14"), "--rtol", "2.22045e-14")
 
 
 def test_the_least_rtol_allowed_is_honoured_without_a_warning():

@@ -44,11 +44,17 @@ def body_attributes(dom: str) -> dict:
     return dict(re.findall(r'data-([a-z]+)="([^"]*)"', m.group(1)))
 
 
+#: (browser, window width) -> the strip of the window the page does not get [px], once measured.
+_STRIPS = {}
+
+
 def page_layout(binary, html_path, width, height, fragment="", budget_ms=3000):
     """The page's own record of where its parts are (``data-layout``: boxes
     [left, top, width, height] in CSS pixels) in a viewport of width x
     height, and its <body> attributes.  Headless Chromium's window size
-    includes a strip the page does not get: measured once and added."""
+    includes a strip the page does not get: measured once and added (once
+    per browser and width in a test session; a page that gets another
+    height is measured again)."""
     target = "file://" + os.path.abspath(html_path) + (f"#{fragment}" if fragment else "")
 
     def measure(h):
@@ -63,10 +69,13 @@ def page_layout(binary, html_path, width, height, fragment="", budget_ms=3000):
         attrs = body_attributes(res.stdout)
         return json.loads(attrs["layout"].replace("&quot;", '"')), attrs, res.stdout
 
-    layout, attrs, dom = measure(height)
-    strip = height - layout["window"][1]
-    if strip:
+    strip = _STRIPS.get((binary, width), 0)
+    layout, attrs, dom = measure(height + strip)
+    missing = height - layout["window"][1]
+    if missing:
+        strip += missing
         layout, attrs, dom = measure(height + strip)
+    _STRIPS[(binary, width)] = strip
     return layout, attrs, dom
 
 
