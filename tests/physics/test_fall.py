@@ -7,7 +7,7 @@ import pytest
 from scipy.integrate import quad, solve_ivp
 
 from deathsphere.physics import fall
-from deathsphere.physics.machine import vertical_loop
+from machine_calls import arrays, loop as vertical_loop
 
 G = 9.81
 R = 2.4384                                # a 16-foot globe
@@ -274,14 +274,19 @@ MACHINE = dict(mass=190.0, h=0.55, a=0.3, t=0.05, inertia_pitch=35.0, inertia_ya
 
 
 def test_a_horizontal_lane_holds_where_a_scan_of_every_tilt_finds_one():
-    from deathsphere.physics.machine import fit_window, ride_orbit
+    from machine_calls import orbit as ride_orbit
+
+    from deathsphere.physics.ground import Sphere
+    from deathsphere.physics.machine import fit_window
 
     theta = np.radians([60.0, 90.0, 100.0, 120.0])
     speeds = np.array([0.0, 2.0, 4.0, 6.0, 9.0, 13.0])
     th, v = (x.ravel() for x in np.meshgrid(theta, speeds, indexing="ij"))
-    out = fall.horizontal_holds(th, v, 0.2, R, G, mu=0.9, **MACHINE)
+    out = fall.horizontal_holds(th, v, 0.2, Sphere(R), G, arrays(MACHINE["mass"], MACHINE["h"], MACHINE["a"],
+                                MACHINE["t"], MACHINE["inertia_pitch"], MACHINE["inertia_yaw"],
+                                MACHINE["spin_inertia"], MACHINE["head"]), mu=0.9)
     # brute force: a sign change of v_cm - v between neighbouring tilts that both hold
-    lo, hi = fit_window(th, R, MACHINE["a"], MACHINE["t"])
+    lo, hi = fit_window(th, Sphere(R), arrays(MACHINE["mass"], MACHINE["h"], MACHINE["a"], MACHINE["t"]))
     alpha = lo[:, None] + (hi - lo)[:, None] * np.linspace(1e-6, 1 - 1e-6, 20001)[None]
     orb = ride_orbit(th[:, None], alpha, R, G, head=MACHINE["head"], mu=0.9,
                      **{k: x for k, x in MACHINE.items() if k != "head"})
