@@ -105,7 +105,8 @@ def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPL
             for key, val in part.items():
                 res[key][..., sel] = val
     flying = res["outcome"] == FALLS
-    land = ballistic_landing(np.where(flying, res["x0"], 0.0), np.where(flying, res["v0"], 0.0), globe.r, globe.g)
+    land = ballistic_landing(np.where(flying, res["x0"], 0.0), np.where(flying, res["v0"], 0.0), globe.ground,
+                              globe.g)
     flight = np.where(flying, land["t_land"], np.nan)
     res["theta_lost"], res["phi_lost"] = _angles(res["contact_lost"], globe.r)
     res["fall_time"] = flight

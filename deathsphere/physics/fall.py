@@ -167,7 +167,7 @@ def _critical_points(c, degree):
     return np.where(deg == 4, quartic, np.where(deg == 3, quad, np.where(deg == 2, line, np.nan)))
 
 
-def ballistic_landing(x0, v0, r, g):
+def ballistic_landing(x0, v0, ground, g):
     """Where and when a centre of mass flying freely from ``x0`` with
     velocity ``v0`` meets the globe's surface (beyond the paper).
 
@@ -175,7 +175,9 @@ def ballistic_landing(x0, v0, r, g):
 
         f(t) = g^2/4 t^4 - g v_z t^3 + (|v0|^2 - g z0) t^2 + 2 (x0 . v0) t + |x0|^2 - r^2.
 
-    x0, v0 : (3, n) [m], [m/s]; r [m], g [m/s^2] (> 0) broadcast to (n,).
+    x0, v0 : (3, n) [m], [m/s]; ``ground`` the globe (a
+    :class:`~deathsphere.physics.ground.Sphere`, its radius r [m]), g [m/s^2]
+    (> 0); r and g broadcast to (n,).
 
     A start on the surface (within ``ON_SURFACE`` r) has the root t = 0
     divided out as often as it is one (a tangent start: twice; a point mass
@@ -202,7 +204,7 @@ def ballistic_landing(x0, v0, r, g):
         empty = np.zeros(0)
         return {"t_land": empty, "x_land": x0.copy(), "v_land": v0.copy(), "impact_speed": empty,
                 "impact_normal": empty, "status": np.zeros(0, dtype=np.int8)}
-    r = np.broadcast_to(np.asarray(r, dtype=float), (n,))
+    r = np.broadcast_to(np.asarray(ground.radius, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
     bad = ~(np.isfinite(x0).all(axis=0) & np.isfinite(v0).all(axis=0) & (r > 0) & (g > 0) & np.isfinite(r * g))
     x0 = np.where(bad, 0.0, x0)
