@@ -66,7 +66,8 @@ def machine_arrays(machines) -> MachineArrays:
     """The arrays of one machine record (0-d arrays) or of a sequence of
     them ((n,) arrays, one value per body); :class:`MachineArrays` are
     returned as they are.  A record is anything with the attributes
-    :data:`FIELDS` (the registry's names)."""
+    :data:`FIELDS` (the registry's names).  Beyond the paper: docs/machine.md
+    sec. 1, the machine's parameters."""
     if isinstance(machines, MachineArrays):
         return machines
     if isinstance(machines, (list, tuple)):

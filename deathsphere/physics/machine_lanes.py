@@ -46,7 +46,8 @@ def orbits_for_speed(theta, speed, ground, g, machine: MachineArrays, mu=np.inf,
 def closest_tilt(tilts, keep, target):
     """(index (n,), found (n,)): the column of ``tilts`` (n, k) closest to
     ``target`` (n,) [rad] among those ``keep`` (n, k) bool; found False
-    (index 0) where none is kept.  The first of equally close ones."""
+    (index 0) where none is kept.  The first of equally close ones.  Beyond
+    the paper: the rider's choice of tilt, docs/show.md sec. 2."""
     tilts = np.asarray(tilts, dtype=float)
     if tilts.shape[1] == 0:
         return np.zeros(tilts.shape[0], dtype=np.int64), np.zeros(tilts.shape[0], dtype=bool)
