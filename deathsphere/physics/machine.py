@@ -145,7 +145,7 @@ def ride_orbit(theta, alpha, ground, g, machine: MachineArrays, mu=np.inf, max_g
     mu_req = mu_required(normal, friction)
     load = np.sqrt(centripetal * centripetal + g * g) / g            # M11
     # the head point H (eq. M2), and its distance from the centre
-    hx, hz = _meridian(st, ct, sa, ca, r, m)["head"]
+    hx, hz = _point(st, ca, r, m.head_height, t), _point(ct, -sa, r, m.head_height, t)
     clearance = r - np.sqrt(hx * hx + hz * hz)
     status, reason = first_failure([
         (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT),
@@ -170,7 +170,7 @@ def ride_orbit(theta, alpha, ground, g, machine: MachineArrays, mu=np.inf, max_g
         "mu_required": mu_req,
         "load_g": load,
         "head_clearance": clearance,
-        "height": ground.height(theta),
+        "height": r * (1.0 + ct),                                   # Sphere.height, its cosine at hand
         "status": status,
         "reason": reason,
     }
