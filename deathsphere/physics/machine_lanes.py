@@ -33,13 +33,18 @@ def orbits_for_speed(theta, speed, ground, g, machine: MachineArrays, mu=np.inf,
     """Every tilt giving the centre of mass ``speed`` at ``theta`` (eq. M12,
     :func:`~deathsphere.physics.machine.solve_alpha_for_speed`: (n, k)
     sorted, NaN-padded) and :func:`~deathsphere.physics.machine.ride_orbit`'s
-    quantities at each ((n, k) arrays; where no tilt is, the orbit at alpha =
-    0 stands in, to be masked by the caller with ``np.isfinite(tilts)``)."""
+    quantities at each ((n, k) arrays), evaluated at the tilts found only;
+    where none is: NaN, status no_orbit and reason machine_no_alpha."""
     (theta, speed, r, g, mu, max_g), m = _flat(theta, speed, ground, g, machine, mu, max_g)
     tilts = solve_alpha_for_speed(theta, speed, Sphere(r), g, m)
-    col = (slice(None), None)
-    orbit = ride_orbit(theta[col], np.where(np.isfinite(tilts), tilts, 0.0), Sphere(r[col]), g[col],
-                       m.map(lambda x: x[col]), mu[col], max_g[col])
+    rows, cols = np.nonzero(np.isfinite(tilts))
+    found = ride_orbit(theta[rows], tilts[rows, cols], Sphere(r[rows]), g[rows], m.take(rows), mu[rows],
+                       max_g[rows])
+    empty = {"status": Status.NO_ORBIT, "reason": Reason.MACHINE_NO_ALPHA}
+    orbit = {}
+    for key, val in found.items():
+        orbit[key] = np.full(tilts.shape, empty.get(key, np.nan), dtype=val.dtype)
+        orbit[key][rows, cols] = val
     return tilts, orbit
 
 
