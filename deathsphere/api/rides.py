@@ -23,8 +23,9 @@ from deathsphere.api.arguments import (
 )
 from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.ground import Sphere
-from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from deathsphere.physics.machine import ride_orbit
 from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.physics.machine_lanes import orbits_for_speed
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
@@ -369,29 +370,23 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
     parts = []
     for start in range(0, n, CHUNK):
         sl = slice(start, start + CHUNK)
-        parts.append(solve_alpha_for_speed(th[sl], v[sl], Sphere(r[sl]), g[sl], arrays))
-    width = max(1, max(p.shape[1] for p in parts))
-    roots = np.concatenate([np.pad(p, ((0, 0), (0, width - p.shape[1])), constant_values=np.nan) for p in parts])
-    found = np.isfinite(roots)
-    count = found.sum(axis=1)
-    reps = np.maximum(count, 1)
+        parts.append(orbits_for_speed(th[sl], v[sl], Sphere(r[sl]), g[sl], arrays, mu[sl], max_g[sl]))
+    width = max(1, max(tilts.shape[1] for tilts, _ in parts))
+
+    def padded(x, empty):
+        return np.pad(x, ((0, 0), (0, width - x.shape[1])), constant_values=empty)
+
+    roots = np.concatenate([padded(tilts, np.nan) for tilts, _ in parts])
+    empty = {"status": Status.NO_ORBIT, "reason": Reason.MACHINE_NO_ALPHA}
+    orbits = {key: np.concatenate([padded(orbit[key], empty.get(key, np.nan)) for _, orbit in parts])
+              for key in parts[0][1]}
+    # the tilts of each request in order (sorted, NaN last), or one no_orbit row where there is none
+    reps = np.maximum(np.isfinite(roots).sum(axis=1), 1)
     req = np.repeat(np.arange(n), reps)
-    # the roots of each request in order, or NaN (none)
-    order = np.argsort(~found, axis=1, kind="stable")
-    roots = np.take_along_axis(roots, order, axis=1)
     slot = np.arange(req.size) - np.repeat(np.cumsum(reps) - reps, reps)
     al = roots[req, slot]
-    none = ~np.isfinite(al)
-    res = _evaluate(th[req], np.where(none, 0.0, al), r[req], g[req], mu[req], max_g[req], m)
-    if none.any():
-        res = {k: np.array(val) for k, val in res.items()}
-        for key, val in res.items():
-            if key == "status":
-                val[none] = Status.NO_ORBIT
-            elif key == "reason":
-                val[none] = Reason.MACHINE_NO_ALPHA
-            elif key != "height":
-                val[none] = np.nan
+    res = {key: val[req, slot] for key, val in orbits.items()}
+    res["height"] = r[req] * (1.0 + np.cos(th[req]))                # every row's, with a tilt or not (Sphere.height)
     given = {"v_cm_m_s": np.asarray(v, dtype=float)[req]}
     if theta_deg is not None:
         given["theta_deg"] = theta_deg[req]
