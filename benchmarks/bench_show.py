@@ -81,8 +81,9 @@ def main():
           f"periods {periods.min():.4f}-{periods.max():.4f} s, act {result.duration_s:.4f} s "
           f"({'common period' if result.commensurate else 'planned duration'})")
     lanes, span, rule = result.lanes, result.duration_s, result.plan.globe.min_clearance
-    t_pairs, _ = best_of(lambda: pairs_table(lanes, span, rule, drift=False), args.repeat)
-    t_drift, _ = best_of(lambda: pairs_table(lanes, span, rule), args.repeat)
+    ground = result.plan.globe.ground
+    t_pairs, _ = best_of(lambda: pairs_table(lanes, span, rule, drift=False, ground=ground), args.repeat)
+    t_drift, _ = best_of(lambda: pairs_table(lanes, span, rule, ground=ground), args.repeat)
     print(f"pairs, least clearance to 1 mm over the act: {t_pairs:.3f} s  (target {PAIRS_TARGET_S:.0f} s: "
           f"{t_pairs / PAIRS_TARGET_S:.2f} of it)")
     print(f"pairs with the drift time of every clear pair: {t_drift:.3f} s")

@@ -156,8 +156,10 @@ def single_contact():
     """ride's single-contact machine with the benchmark bicycle's mass, mass
     centre height and locked inertia (products and the mass centre's offset
     ahead of the rear contact dropped): its neutral speed bands per height."""
+    from deathsphere.physics.ground import Sphere
     from deathsphere.physics.machine import ride_orbit
-    from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
+    from deathsphere.physics.machine_arrays import MachineArrays
+    from deathsphere.physics.machine_dynamics import machine_stability
 
     b = benchmark_bicycle()
     bodies = [(b.mR, 0.0, -b.rR, b.IRxx, b.IRyy, b.IRxx), (b.mB, b.xB, b.zB, b.IBxx, b.IByy, b.IBzz),
@@ -172,17 +174,18 @@ def single_contact():
     print(f"\nsingle-contact machine: mass {m} kg, h {h:.4f} m, I_roll {roll:.3f}, I_pitch {pitch:.3f}, "
           f"I_yaw {yaw:.3f} kg m^2, J {spin}, a {a} m (mass centre {xg:.3f} m ahead of the contact, dropped)")
     print("height_m orbits_1_20_m_s neutral v_contact_m_s")
-    params = MachineParams(a, 0.0, GLOBE, h, G, m, roll, pitch, yaw, spin)
+    machine = MachineArrays(*(np.asarray(x, dtype=float) for x in (m, h, a, 0.0, roll, pitch, yaw, spin, 1.7)))
+    globe = Sphere(GLOBE)
     alpha = np.deg2rad(np.linspace(-89.0, 179.0, 2000))
     for height in np.round(np.arange(0.2, 4.61, 0.4), 1):
         theta = np.arccos(height / GLOBE - 1)
-        orbit = ride_orbit(theta, alpha, GLOBE, G, m, h, a, 0.0, pitch, yaw, spin, 1.7)
+        orbit = ride_orbit(theta, alpha, globe, G, machine)
         ok = np.isfinite(orbit["omega"]) & (orbit["status"] == 0)
         ok &= (orbit["v_contact"] > 1.0) & (orbit["v_contact"] < 20.0)
         if not ok.any():
             print(f"{height:4.1f} no orbit")
             continue
-        growth = machine_stability(np.full(ok.sum(), theta), alpha[ok], params)["growth_rate"]
+        growth = machine_stability(np.full(ok.sum(), theta), alpha[ok], globe, G, machine)["growth_rate"]
         v = orbit["v_contact"][ok][growth < stability.STABLE_BELOW]
         band = f"{v.min():.2f}..{v.max():.2f}" if v.size else "none"
         print(f"{height:4.1f} {int(ok.sum()):4d} {v.size:3d} {band}")

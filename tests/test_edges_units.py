@@ -51,7 +51,7 @@ def test_arrays_are_rounded_once_like_fractions(value, unit_kind):
 
 def test_a_machine_in_inches_keeps_its_inches():
     m = Machine(mass=100, h=0.5, a="12in", inertia=(10, 10, 10), spin_inertia=1)
-    assert m.a == 0.3048
+    assert m.wheel_radius == 0.3048
 
 
 @pytest.mark.parametrize("request_, column, value", [

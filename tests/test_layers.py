@@ -76,8 +76,8 @@ ALLOWED = {
     "viewer": {"table", "render"},
     "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
             "parallel", "cluster", "units", "errors", "act", "records"},
-    # the show's parts (an act of several riders) build on ride's machine (api.rides, api.machines)
-    "act": {"physics", "api", "records", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
+    # the show's parts (an act of several riders) compute on the machine's physics and records
+    "act": {"physics", "records", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
     "__main__": {"cli"},
     # the option parser reads the unit a value was typed in, to show it back beside SI (docs/units.md)
     "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",

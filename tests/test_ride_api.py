@@ -50,10 +50,10 @@ def test_the_benchmark_bicycle_from_its_published_table():
     z = np.array([-0.3, -0.9, -0.7, -0.35])
     bike = benchmark_bicycle()
     assert bike.mass == m.sum() == 94.0
-    assert bike.h == pytest.approx(-(m * z).sum() / m.sum(), rel=1e-12)
-    assert bike.h == pytest.approx(0.86117, abs=1e-5)
+    assert bike.com_height == pytest.approx(-(m * z).sum() / m.sum(), rel=1e-12)
+    assert bike.com_height == pytest.approx(0.86117, abs=1e-5)
     # the spin inertia keeps the wheels' angular momentum at a speed: J/a = IRyy/rR + IFyy/rF
-    assert bike.spin_inertia / bike.a == pytest.approx(0.12 / 0.3 + 0.28 / 0.35)
+    assert bike.spin_inertia / bike.wheel_radius == pytest.approx(0.12 / 0.3 + 0.28 / 0.35)
     # pitch inertia by the parallel-axis theorem, by hand
     xt, zt = (m * x).sum() / 94, (m * z).sum() / 94
     iyy = 0.12 + 11 + 0.06 + 0.28 + (m * ((x - xt) ** 2 + (z - zt) ** 2)).sum()
@@ -129,7 +129,7 @@ def test_machine_files(tmp_path):
     toml = tmp_path / "bike.toml"
     toml.write_text('name = "my bike"\nmass = 170\nwheel_radius = "12in"\nhead_height = 1.7\n')
     m = machine_file(toml)
-    assert (m.name, m.mass, m.head) == ("my bike", 170.0, 1.7) and m.a == pytest.approx(0.3048)
+    assert (m.name, m.mass, m.head_height) == ("my bike", 170.0, 1.7) and m.wheel_radius == pytest.approx(0.3048)
     assert m.inertia == PRESETS["stunt125"].inertia
     csv = tmp_path / "bike.csv"
     csv.write_text("mass,com_height,head_height\n150,0.7,1.6\n")

@@ -30,6 +30,7 @@ from deathsphere.physics.fall import (
     loop_state,
 )
 from deathsphere.act.envelope import point_segment_distance
+from deathsphere.physics.machine_arrays import machine_arrays
 
 #: Instants of each flight at which the clearance to every other rider is sampled.
 FLIGHT_SAMPLES = 64
@@ -43,12 +44,11 @@ def _angles(x, r):
     return theta, np.degrees(np.arctan2(x[1], x[0])) % 360.0
 
 
-def _effective_inertia(lane) -> float:
+def _effective_inertia(lane, g: float) -> float:
     """M of eq. M21 from the loop's rates at top and bottom (M23: M = 4 m g
     r_G / (psidot_b^2 - psidot_t^2)), ride's own numbers."""
-    m = lane.machine
-    r_g = lane.r - m.h
-    return 4.0 * m.mass * lane.g * r_g / (lane.rate_bottom ** 2 - lane.rate ** 2)
+    r_g = lane.points["com"]
+    return 4.0 * lane.machine.mass * g * r_g / (lane.rate_bottom ** 2 - lane.rate ** 2)
 
 
 def _one_lane(lane, globe, t, fraction) -> dict:
@@ -60,8 +60,8 @@ def _one_lane(lane, globe, t, fraction) -> dict:
            "swing_height": np.full(n, np.nan)}
     if lane.kind == "horizontal":
         speed = np.sqrt(np.sum(kin["v_com"] ** 2, axis=0))
-        held = horizontal_holds(lane.theta, fraction * speed, lane.alpha, lane.r, globe.g, m.mass, m.h, m.a, m.t,
-                                m.pitch_inertia, m.yaw_inertia, m.spin_inertia, m.head, globe.mu)["holds"]
+        held = horizontal_holds(lane.theta, fraction * speed, lane.alpha, globe.ground, globe.g, machine_arrays(m),
+                                globe.mu)["holds"]
         falls = ~held
         out["outcome"] = np.where(falls, FALLS, RIDES_ON).astype(np.int8)
         out["t_lost"] = np.where(falls, t, np.nan)
@@ -69,18 +69,18 @@ def _one_lane(lane, globe, t, fraction) -> dict:
         out["v0"] = np.where(falls, drop_velocity(kin["v_com"], fraction), np.nan)
         out["contact_lost"] = np.where(falls, kin["contact"], np.nan)
         return out
-    r_g = lane.r - m.h
+    r, r_g = globe.r, lane.points["com"]
     psidot = np.sqrt(np.sum(kin["v_com"] ** 2, axis=0)) / r_g
-    dep = loop_departure(kin["psi"], fraction * psidot, lane.r, r_g, _effective_inertia(lane), m.mass, globe.g)
+    dep = loop_departure(kin["psi"], fraction * psidot, r, r_g, _effective_inertia(lane, globe.g), m.mass, globe.g)
     falls = dep["outcome"] == FALLS
     x0, v0 = loop_state(np.where(falls, dep["psi_lost"], 0.0), np.where(falls, dep["psi_dot_lost"], 0.0), r_g,
                         lane.azimuth)
     out["outcome"] = dep["outcome"]
     out["t_lost"] = np.where(falls, t + dep["t_lost"], np.nan)
     out["x0"], out["v0"] = np.where(falls, x0, np.nan), np.where(falls, v0, np.nan)
-    out["contact_lost"] = np.where(falls, lane.r * x0 / r_g, np.nan)
+    out["contact_lost"] = np.where(falls, r * x0 / r_g, np.nan)
     swings = dep["outcome"] == SWINGS
-    out["swing_height"] = np.where(swings, lane.r * (1.0 + np.cos(dep["psi_max"])), np.nan)
+    out["swing_height"] = np.where(swings, r * (1.0 + np.cos(dep["psi_max"])), np.nan)
     return out
 
 
@@ -105,14 +105,15 @@ def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPL
             for key, val in part.items():
                 res[key][..., sel] = val
     flying = res["outcome"] == FALLS
-    land = ballistic_landing(np.where(flying, res["x0"], 0.0), np.where(flying, res["v0"], 0.0), globe.r, globe.g)
+    land = ballistic_landing(np.where(flying, res["x0"], 0.0), np.where(flying, res["v0"], 0.0), globe.ground,
+                              globe.g)
     flight = np.where(flying, land["t_land"], np.nan)
     res["theta_lost"], res["phi_lost"] = _angles(res["contact_lost"], globe.r)
     res["fall_time"] = flight
     res["t_land"] = res["t_lost"] + flight
     res["theta_land"], res["phi_land"] = _angles(np.where(flying, land["x_land"], np.nan), globe.r)
     res["impact_speed"] = np.where(flying, land["impact_speed"], np.nan)
-    res["clearance"], res["t_min"] = _victims(lanes, rider, res, flight, samples)
+    res["clearance"], res["t_min"] = _victims(lanes, globe.g, rider, res, flight, samples)
     return res
 
 
@@ -121,7 +122,7 @@ def flight_point(x0, v0, s, g):
     return x0 + v0 * s - 0.5 * g * s * s * _Z.reshape((3,) + (1,) * (np.ndim(s)))
 
 
-def _victims(lanes, rider, res, flight, samples: int):
+def _victims(lanes, g: float, rider, res, flight, samples: int):
     """Least sampled clearance (n, riders) between each flying rider's sphere
     and every other rider's envelope during the flight, and when."""
     n = rider.size
@@ -130,7 +131,6 @@ def _victims(lanes, rider, res, flight, samples: int):
     flying = np.flatnonzero(np.isfinite(flight))
     if not flying.size:
         return clear, when
-    g = lanes[0].g
     frac = np.linspace(0.0, 1.0, samples)
     s = flight[flying, None] * frac                                   # (m, K) after contact loss
     times = res["t_lost"][flying, None] + s

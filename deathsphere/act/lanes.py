@@ -28,37 +28,57 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.special import ellipj, ellipk, ellipkinc
 
-from deathsphere.api.machines import Machine
-from deathsphere.api.rides import ride
+from deathsphere.act.plan import Plan, Rider
 from deathsphere.errors import ParameterError
-from deathsphere.act.plan import Globe, Plan, Rider
+from deathsphere.physics.machine import meridian_points, vertical_loop
+from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.physics.machine_lanes import horizontal_lanes
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+from deathsphere.records.machine import Machine
 
 #: Statuses with which a vertical lane is not ridden at all (the plan is refused).
-LOOP_REFUSED = ("no_fit", "no_orbit", "no_contact")
+LOOP_REFUSED = (Status.NO_FIT, Status.NO_ORBIT, Status.NO_CONTACT)
 _Z = np.array([0.0, 0.0, 1.0])[:, None]
+#: A vertical lane's plane holds the globe's centre: its cone angle is 90 deg.
+GREAT_CIRCLE = math.radians(90.0)
 
 
 @dataclass
 class Lane:
-    """One rider's lane.  ``kind`` 'horizontal' or 'vertical'; ``row`` the
-    row of ``ride`` (or ``ride --vertical``) it rides; ``period_s`` its lap
-    [s]; ``rate`` Omega [rad/s] signed (+ ccw) or psidot at the top;
-    ``phase`` [rad] phi or psi at t = 0."""
+    """One rider's lane.  ``kind`` 'horizontal' or 'vertical'; ``orbit``
+    the physics' quantities of the orbit it rides (scalars: a horizontal
+    lane's :func:`~deathsphere.physics.machine.ride_orbit` keys, a vertical
+    one's :func:`~deathsphere.physics.machine.vertical_loop` keys, int
+    ``status`` and ``reason`` codes); ``period_s`` its lap [s]; ``rate``
+    Omega [rad/s] signed (+ ccw) or psidot at the top; ``phase`` [rad] phi
+    or psi at t = 0; ``points`` where its contact, centre of mass and head
+    are in the lane's own plane: (rho, z) [m] in the contact's meridian plane
+    (horizontal, eq. M2) or their distances [m] from the globe's centre
+    along the contact's radius (vertical); ``reach`` the greatest distance of
+    those points from the centre [m] (how far a point moves per radian)."""
 
     name: str
     kind: str
     machine: Machine
     width_m: float
     period_s: float
-    r: float
-    g: float
     phase: float
-    row: dict = field(repr=False)
+    orbit: dict = field(repr=False)
+    points: dict = field(repr=False)
+    reach: float
     theta: float = math.nan           # horizontal: contact's polar angle [rad]
     alpha: float = math.nan           # horizontal: tilt [rad]
     rate: float = math.nan            # horizontal: signed Omega; vertical: psidot at the top [rad/s]
     rate_bottom: float = math.nan     # vertical: psidot at the bottom [rad/s]
     azimuth: float = math.nan         # vertical: the loop plane's direction [rad]
+
+    @property
+    def status(self) -> str:
+        return str(STATUS_LABELS[self.orbit["status"]])
+
+    @property
+    def reason(self) -> str:
+        return str(REASON_TEXT[self.orbit["reason"]])
 
     def kinematics(self, t, clock: float = 1.0) -> dict:
         """Points (3, n) [m] 'contact', 'head', 'com', the centre of mass's
@@ -81,37 +101,26 @@ class Lane:
         if self.kind == "horizontal":
             angle = self.phase + self.rate * t
             c, s = np.cos(angle), np.sin(angle)
-            mer = self._meridian()
             out = []
             for key in ("contact", "head"):
-                rho, z = mer[key]
+                rho, z = self.points[key]
                 pts = np.empty((3, t.size))
                 pts[0], pts[1], pts[2] = rho * c, rho * s, z
                 out.append(pts)
             return out[0], out[1]
         angle = _loop_angle(self._u(t), self.rate_bottom, self._m())[0]
         n = np.sin(angle) * self._e() + np.cos(angle) * _Z
-        return self.r * n, (self.r - self.machine.head) * n
+        return self.points["contact"] * n, self.points["head"] * n
 
     def at_angle(self, angle) -> dict:
         """'contact', 'head', 'com' (3, n) [m] with the lane's angle (phi or
         psi [rad], (n,)) at ``angle``."""
         angle = np.asarray(angle, dtype=float).reshape(-1)
-        m = self.machine
         if self.kind == "vertical":
             n = np.sin(angle) * self._e() + np.cos(angle) * _Z
-            return {"contact": self.r * n, "com": (self.r - m.h) * n, "head": (self.r - m.head) * n}
+            return {k: self.points[k] * n for k in ("contact", "com", "head")}
         c, s = np.cos(angle), np.sin(angle)
-        return {k: np.stack((rho * c, rho * s, np.full_like(angle, z))) for k, (rho, z) in self._meridian().items()}
-
-    def _meridian(self) -> dict:
-        """(rho, z) [m] of contact, centre of mass and head in the contact's
-        meridian plane (eq. M2)."""
-        m, r = self.machine, self.r
-        st, ct, sa, ca = math.sin(self.theta), math.cos(self.theta), math.sin(self.alpha), math.cos(self.alpha)
-        return {"contact": (r * st, r * ct),
-                "com": ((r - m.t) * st - (m.h - m.t) * ca, (r - m.t) * ct + (m.h - m.t) * sa),
-                "head": ((r - m.t) * st - (m.head - m.t) * ca, (r - m.t) * ct + (m.head - m.t) * sa)}
+        return {k: np.stack((rho * c, rho * s, np.full_like(angle, z))) for k, (rho, z) in self.points.items()}
 
     def _e(self):
         return np.array([math.cos(self.azimuth), math.sin(self.azimuth), 0.0])[:, None]
@@ -119,8 +128,8 @@ class Lane:
     def _along(self, angle):
         """d(com)/d(angle) (3, n): the centre of mass's velocity per unit rate."""
         if self.kind == "vertical":
-            return (self.r - self.machine.h) * (np.cos(angle) * self._e() - np.sin(angle) * _Z)
-        rg = self._meridian()["com"][0]
+            return self.points["com"] * (np.cos(angle) * self._e() - np.sin(angle) * _Z)
+        rg = self.points["com"][0]
         return np.stack((-rg * np.sin(angle), rg * np.cos(angle), np.zeros_like(angle)))
 
     def _m(self) -> float:
@@ -136,9 +145,7 @@ class Lane:
     def speed_bound(self) -> float:
         """The greatest speed [m/s] of any point of the envelope's segment
         over the lap (a bound for how fast a clearance can change)."""
-        m = self.machine
-        reach = max(self.r, abs(self.r - m.head), abs(self.r - m.h))
-        return reach * (abs(self.rate) if self.kind == "horizontal" else self.rate_bottom)
+        return self.reach * (abs(self.rate) if self.kind == "horizontal" else self.rate_bottom)
 
 
 def _loop_angle(u, rate_bottom, m):
@@ -147,51 +154,84 @@ def _loop_angle(u, rate_bottom, m):
     return math.pi - 2.0 * beta, rate_bottom * dn
 
 
-def _choose(rows: list[dict], theta: float) -> dict | None:
-    """The tilt closest to upright on the wall among the ok rows, else
-    among those with an orbit (module docstring)."""
-    upright = math.degrees(theta) - 90.0
-    for keep in (lambda r: r["status"] == "ok", lambda r: math.isfinite(r["omega_rad_s"])):
-        rows_kept = [r for r in rows if keep(r)]
-        if rows_kept:
-            return min(rows_kept, key=lambda r: abs(r["alpha_deg"] - upright))
-    return None
+def _reach(r: float, machine: Machine) -> float:
+    return max(r, abs(r - machine.head_height), abs(r - machine.com_height))
 
 
-def horizontal_lane(rider: Rider, globe: Globe) -> Lane:
-    """The horizontal lane of ``rider`` (ride's steady orbit)."""
-    table = ride(rider.theta_deg, speed=rider.speed, machine=rider.machine, r=globe.r, g=globe.g, mu=globe.mu,
-                 max_g=globe.max_g, stability=False)
-    row = _choose(list(table), math.radians(rider.theta_deg))
-    if row is None:
-        reason = str(table["reason"].reshape(-1)[0])
-        raise ParameterError(f"rider {rider.name!r}: speed: no steady orbit at this height and speed ({reason})",
-                             "speed")
-    return Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
-                period_s=float(row["period_s"]), r=globe.r, g=globe.g, phase=math.radians(rider.phase_deg), row=row,
-                theta=math.radians(rider.theta_deg), alpha=math.radians(row["alpha_deg"]),
-                rate=rider.direction * float(row["omega_rad_s"]))
+def _scalars(arrays: dict, i: int) -> dict:
+    return {k: np.asarray(v)[i].item() for k, v in arrays.items() if np.ndim(v) == 1}
 
 
-def vertical_lane(rider: Rider, globe: Globe) -> Lane:
-    """The vertical lane of ``rider`` (ride --vertical's loop on a great
-    circle); refused when the loop is not ridden at all (no fit, off its
-    plane, too slow at the top)."""
-    row = ride(90.0, vertical=True, v_top=rider.v_top, machine=rider.machine, r=globe.r, g=globe.g, mu=globe.mu,
-               max_g=globe.max_g)[0]
-    if row["status"] in LOOP_REFUSED:
-        raise ParameterError(f"rider {rider.name!r}: v_top: this vertical lane is not feasible ({row['status']}: "
-                             f"{row['reason']}; least top speed {row['v_top_min_m_s']:.3g} m/s)", "v_top")
-    top, bottom = float(row["omega_top_rad_s"]), float(row["omega_bottom_rad_s"])
-    m = 1.0 - (top / bottom) ** 2
-    return Lane(name=rider.name, kind="vertical", machine=rider.machine, width_m=rider.width,
-                period_s=float(4.0 * ellipk(m) / bottom), r=globe.r, g=globe.g, phase=math.radians(rider.phase_deg),
-                row=row,
-                rate=top, rate_bottom=bottom, azimuth=math.radians(rider.azimuth_deg))
+def horizontal_lanes_of(riders: list[Rider], ground, globe) -> list:
+    """The horizontal lanes of ``riders`` (ride's steady orbits), all in one
+    call to the physics; a rider whose lane has no orbit gets a
+    ParameterError (not raised) in his place."""
+    if not riders:
+        return []
+    machines = machine_arrays([r.machine for r in riders])
+    theta = np.radians([r.theta_deg for r in riders])
+    found = horizontal_lanes(theta, np.array([r.speed for r in riders]), ground, globe.g, machines, globe.mu,
+                             globe.max_g)
+    # the lane's tilt as the riders' table reads it, in degrees, so that both agree to the bit
+    alpha_deg = np.degrees(found["alpha"])
+    points = meridian_points(theta, np.radians(alpha_deg), ground, machines)
+    out = []
+    for i, rider in enumerate(riders):
+        orbit = _scalars(found, i)
+        if not found["chosen"][i]:
+            out.append(ParameterError(f"rider {rider.name!r}: speed: no steady orbit at this height and speed "
+                                      f"({REASON_TEXT[orbit['reason']]})", "speed"))
+            continue
+        orbit["alpha_deg"] = float(alpha_deg[i])
+        out.append(Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
+                        period_s=float(orbit["period"]), phase=math.radians(rider.phase_deg), orbit=orbit,
+                        points={k: (float(rho[i]), float(z[i])) for k, (rho, z) in points.items()},
+                        reach=_reach(float(ground.radius), rider.machine), theta=math.radians(rider.theta_deg),
+                        alpha=math.radians(orbit["alpha_deg"]), rate=rider.direction * float(orbit["omega"])))
+    return out
+
+
+def vertical_lanes_of(riders: list[Rider], ground, globe) -> list:
+    """The vertical lanes of ``riders`` (ride --vertical's loops on great
+    circles), all in one call to the physics; a loop not ridden at all (no
+    fit, off its plane, too slow at the top) gets a ParameterError (not
+    raised) in its rider's place."""
+    if not riders:
+        return []
+    machines = machine_arrays([r.machine for r in riders])
+    loops = vertical_loop(GREAT_CIRCLE, np.array([r.v_top for r in riders]), ground, globe.g, machines, globe.mu,
+                          globe.max_g)
+    out = []
+    r = float(ground.radius)
+    for i, rider in enumerate(riders):
+        orbit = _scalars(loops, i)
+        if orbit["status"] in LOOP_REFUSED:
+            out.append(ParameterError(
+                f"rider {rider.name!r}: v_top: this vertical lane is not feasible ({STATUS_LABELS[orbit['status']]}: "
+                f"{REASON_TEXT[orbit['reason']]}; least top speed {orbit['v_top_min']:.3g} m/s)", "v_top"))
+            continue
+        top, bottom = float(orbit["omega_top"]), float(orbit["omega_bottom"])
+        m = 1.0 - (top / bottom) ** 2
+        out.append(Lane(name=rider.name, kind="vertical", machine=rider.machine, width_m=rider.width,
+                        period_s=float(4.0 * ellipk(m) / bottom), phase=math.radians(rider.phase_deg), orbit=orbit,
+                        points={"contact": r, "com": r - rider.machine.com_height,
+                                "head": r - rider.machine.head_height},
+                        reach=_reach(r, rider.machine), rate=top, rate_bottom=bottom,
+                        azimuth=math.radians(rider.azimuth_deg)))
+    return out
 
 
 def build_lanes(plan: Plan) -> list[Lane]:
-    """Every rider's lane, in the plan's order (ParameterError naming the
-    rider and the key for a lane that cannot be ridden at all)."""
-    return [horizontal_lane(r, plan.globe) if r.lane == "horizontal" else vertical_lane(r, plan.globe)
-            for r in plan.riders]
+    """Every rider's lane, in the plan's order: the horizontal ones in one
+    physics call, the vertical ones in another (ParameterError naming the
+    first rider, in the plan's order, and the key for a lane that cannot be
+    ridden at all)."""
+    ground = plan.globe.ground
+    kinds = {"horizontal": horizontal_lanes_of, "vertical": vertical_lanes_of}
+    built = {kind: iter(make([r for r in plan.riders if r.lane == kind], ground, plan.globe))
+             for kind, make in kinds.items()}
+    lanes = [next(built[r.lane]) for r in plan.riders]
+    for lane in lanes:
+        if isinstance(lane, ParameterError):
+            raise lane
+    return lanes

@@ -1,20 +1,24 @@
 """A lane's speed margin (beyond the paper; docs/show.md, "Speed margin"):
 the band of speeds about the planned one in which the lane stays feasible
-under the globe's mu and max_g, found on ``ride``'s own statuses.
+under the globe's mu and max_g, found on the statuses ``ride`` reports.
 
 Horizontal lane: a speed is feasible when some tilt at that height gives it
-with status ok (ride by speed, eq. M12).  Vertical lane: a top speed is
-feasible when ``ride --vertical`` says ok (M22-M24).  The speeds of a
+with status ok (eq. M12, :func:`deathsphere.physics.machine_lanes.speed_is_feasible`).
+Vertical lane: a top speed is feasible when its loop is ok (M22-M24,
+:func:`deathsphere.physics.machine.vertical_loop`).  The speeds of a
 geometric grid about the planned speed (1/16 to 16 times it) are tried at
 once; the run of feasible speeds holding the planned one is bracketed there
-and its two edges found by bisection, both riders' edges in one call to
-ride per step."""
+and its two edges found by bisection, every rider's edges of one kind of
+lane in one physics call per step (their machines as arrays over riders)."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.api.rides import ride
+from deathsphere.physics.machine import vertical_loop
+from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.physics.machine_lanes import speed_is_feasible
+from deathsphere.physics.status import Status
 
 #: The speeds tried, as multiples of the planned one.
 GRID = np.geomspace(1 / 16, 16, 145)
@@ -24,24 +28,21 @@ STEPS = 14
 
 def feasible(lanes, globe, speeds) -> np.ndarray:
     """bool (n, k): lane i stays feasible at speeds[i, j] [m/s] (module
-    docstring); the lanes share one kind and one machine: one call to ride."""
+    docstring); the lanes share one kind: one physics call."""
     speeds = np.asarray(speeds, dtype=float)
-    lane = lanes[0]
-    if lane.kind == "vertical":
-        t = ride(90.0, vertical=True, v_top=speeds.reshape(-1), machine=lane.machine, r=globe.r, g=globe.g,
-                 mu=globe.mu, max_g=globe.max_g)
-        return (np.asarray(t["status"]).reshape(-1) == "ok").reshape(speeds.shape)
-    theta = np.degrees([ln.theta for ln in lanes])[:, None]
-    t = ride(np.broadcast_to(theta, speeds.shape).reshape(-1), speed=speeds.reshape(-1), machine=lane.machine,
-             r=globe.r, g=globe.g, mu=globe.mu, max_g=globe.max_g, stability=False)
-    ok = np.zeros(speeds.size, dtype=bool)
-    rows = np.asarray(t["input_row"]).reshape(-1) - 1
-    ok[rows[np.asarray(t["status"]).reshape(-1) == "ok"]] = True
+    machines = machine_arrays([lane.machine for lane in lanes]).expand(-1)        # (n, 1): one per lane
+    ground = globe.ground
+    if lanes[0].kind == "vertical":
+        loops = vertical_loop(np.radians(90.0), speeds, ground, globe.g, machines, globe.mu, globe.max_g)
+        return loops["status"] == Status.OK
+    theta = np.broadcast_to(np.array([lane.theta for lane in lanes])[:, None], speeds.shape)
+    flat = machines.map(lambda x: np.broadcast_to(x, speeds.shape).reshape(-1))
+    ok = speed_is_feasible(theta.reshape(-1), speeds.reshape(-1), ground, globe.g, flat, globe.mu, globe.max_g)
     return ok.reshape(speeds.shape)
 
 
 def _bands(lanes, globe, planned) -> np.ndarray:
-    """(n, 2) [m/s] low and high edges for lanes of one kind and machine."""
+    """(n, 2) [m/s] low and high edges for lanes of one kind."""
     planned = np.asarray(planned, dtype=float)
     grid = planned[:, None] * GRID
     ok = feasible(lanes, globe, np.concatenate((planned[:, None], grid), axis=1))
@@ -71,13 +72,13 @@ def speed_bands(lanes, globe, planned) -> np.ndarray:
     """(n, 2) [m/s]: for each lane the run of feasible speeds (horizontal:
     the centre of mass's; vertical: at the top) holding the planned one,
     low and high; NaN where the planned speed itself is not feasible or an
-    edge lies beyond 1/16..16 times it.  The lanes of one kind and machine
-    are searched together."""
+    edge lies beyond 1/16..16 times it.  The lanes of one kind are searched
+    together, whatever their machines."""
     planned = np.asarray(planned, dtype=float)
     out = np.full((len(lanes), 2), np.nan)
     groups = {}
     for i, lane in enumerate(lanes):
-        groups.setdefault((lane.kind, lane.machine), []).append(i)
+        groups.setdefault(lane.kind, []).append(i)
     for idx in groups.values():
         out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx])
     return out

@@ -160,8 +160,8 @@ def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[flo
         def apart(delta):
             return clearance(a.at_angle(delta), meridian_b, a.width_m, b.width_m)
 
-        # phi_a - phi_b = delta0 + (Omega_a - Omega_b) t; a point moves r per radian at most
-        c, delta = minimise(apart, 0.0, 2 * math.pi, a.r)
+        # phi_a - phi_b = delta0 + (Omega_a - Omega_b) t; a point moves its reach per radian at most
+        c, delta = minimise(apart, 0.0, 2 * math.pi, a.reach)
         rel = a.rate - b.rate
         t = ((delta - (a.phase - b.phase)) / rel) % (2 * math.pi / abs(rel))
         return c, t, "geometric"
@@ -170,10 +170,11 @@ def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[flo
     return c, t, "act"
 
 
-def contact_angles(lane, t: float) -> tuple[float, float]:
-    """theta and phi [deg] of the lane's contact at time t (phi 0..360)."""
+def contact_angles(lane, t: float, ground) -> tuple[float, float]:
+    """theta and phi [deg] of the lane's contact at time t on the globe
+    ``ground`` (phi 0..360)."""
     p = lane.kinematics(np.array([t]))["contact"][:, 0]
-    theta = math.degrees(math.acos(max(-1.0, min(1.0, p[2] / lane.r))))
+    theta = math.degrees(math.acos(max(-1.0, min(1.0, p[2] / ground.radius))))
     return theta, math.degrees(math.atan2(p[1], p[0])) % 360.0
 
 

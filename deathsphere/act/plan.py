@@ -10,9 +10,12 @@ import pathlib
 from dataclasses import dataclass, replace
 
 from deathsphere import params, units
-from deathsphere.api.arguments import G
-from deathsphere.api.machines import FILE_KEYS, PRESETS, Machine, as_machine, machine_file
+from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.errors import ParameterError
+from deathsphere.physics.ground import Sphere
+from deathsphere.records.machine import Machine
+from deathsphere.records.machine_files import FILE_KEYS, machine_file
+from deathsphere.records.machine_presets import PRESETS, as_machine
 
 #: The keys of the ``[globe]`` table.
 GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "duration")
@@ -41,6 +44,11 @@ class Globe:
     max_g: float = math.inf
     min_clearance: float = DEFAULT_MIN_CLEARANCE
     duration: float | None = None
+
+    @property
+    def ground(self) -> Sphere:
+        """The globe as the ground the riders roll on."""
+        return Sphere(self.r)
 
 
 @dataclass(frozen=True)
@@ -197,7 +205,7 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
         h = _value(where, "height", raw["height"], "length", "height")
         if h > 2 * r:
             _fail(where, "height", f"is outside the globe: at most its diameter {2 * r:g} m (got {h:g} m)")
-        theta = math.degrees(math.acos(min(max(h / r - 1.0, -1.0), 1.0)))
+        theta = math.degrees(float(globe.ground.theta(h)))
     else:
         theta = _value(where, "theta", raw["theta"], "angle", "theta")
     if "speed" not in raw:

@@ -164,7 +164,7 @@ def drift_time(a, b, min_clearance: float, error: float = DRIFT_ERROR) -> float:
         for sense in (1.0, -1.0):
             def apart(x, sense=sense):
                 return clearance(a.at_angle(start + sense * x), meridian_b, a.width_m, b.width_m)
-            soonest = min(soonest, first_below(apart, 0.0, 2 * math.pi, a.r, min_clearance) / rate)
+            soonest = min(soonest, first_below(apart, 0.0, 2 * math.pi, a.reach, min_clearance) / rate)
         return soonest
     horizon = (1.0 / error + 1.0) * max(a.period_s, b.period_s)
     radii = 0.5 * (a.width_m + b.width_m)

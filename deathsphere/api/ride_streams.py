@@ -20,7 +20,7 @@ from deathsphere.api.arguments import (
     refuse_large_grid,
     sphere_radius,
 )
-from deathsphere.api.machines import as_machine
+from deathsphere.records.machine_presets import as_machine
 from deathsphere.api.orbits import MAX_CHUNK_ROWS
 from deathsphere.api.rides import MAX_RIDE_ROWS, ride
 from deathsphere.api.streams import Chunks, cluster_of, evaluated

@@ -21,9 +21,13 @@ from deathsphere.api.arguments import (
     refuse_large_grid,
     sphere_radius,
 )
-from deathsphere.api.machines import DEFAULT_MACHINE, Machine, as_machine
 from deathsphere.params import ParameterError, reduce_angle
-from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from deathsphere.physics.ground import Sphere
+from deathsphere.physics.machine import ride_orbit
+from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.physics.machine_lanes import orbits_for_speed
+from deathsphere.records.machine import Machine
+from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.table import Table
 
@@ -55,21 +59,16 @@ _PHYS = {"omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s", "v_co
          "head_clearance": "head_clearance_m"}
 
 
-def _machine_args(m: Machine):
-    return dict(mass=m.mass, h=m.h, a=m.a, t=m.t, inertia_pitch=m.inertia[1], inertia_yaw=m.inertia[2],
-                spin_inertia=m.spin_inertia)
-
-
 def _evaluate(theta, alpha, r, g, mu, max_g, m: Machine) -> dict:
     """ride_orbit over flat arrays, piece by piece; scalars stay scalars."""
     n = theta.size
-    margs = _machine_args(m)
+    arrays = machine_arrays(m)
     pieces = []
     uniform = [x if x.size == 1 else None for x in (r, g, mu, max_g)]
     for start in range(0, n, CHUNK):
         sl = slice(start, start + CHUNK)
         rr, gg, mm, xg = ((float(u[0]) if u is not None else x[sl]) for u, x in zip(uniform, (r, g, mu, max_g)))
-        pieces.append(ride_orbit(theta[sl], alpha[sl], rr, gg, head=m.head, mu=mm, max_g=xg, **margs))
+        pieces.append(ride_orbit(theta[sl], alpha[sl], Sphere(rr), gg, arrays, mu=mm, max_g=xg))
     if len(pieces) == 1:
         return {k: np.asarray(v).reshape(-1) for k, v in pieces[0].items()}
     return {k: np.concatenate([np.asarray(p[k]).reshape(-1) for p in pieces]) for k in pieces[0]}
@@ -115,22 +114,17 @@ def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability:
         cols[key] = np.full(n, np.nan)
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
     if rows.size:
-        from deathsphere.physics.machine_dynamics import (
-            YAW_UNDETERMINED,
-            MachineParams,
-            machine_stability,
-            yaw_is_determined,
-        )
+        from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, machine_stability, yaw_is_determined
         from deathsphere.physics.stability.verdict import VERDICT_LABELS
 
         rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
-        if not yaw_is_determined(MachineParams(m.a, m.t, 1.0, m.h, 1.0, m.mass, *m.inertia, m.spin_inertia)):
+        arrays = machine_arrays(m)
+        if not yaw_is_determined(arrays):
             cols["stability_method"][rows] = "not analysed: " + YAW_UNDETERMINED
             rows = rows[:0]
         for start in range(0, rows.size, STABILITY_CHUNK):
             idx = rows[start:start + STABILITY_CHUNK]
-            p = MachineParams(m.a, m.t, rr[idx], m.h, gg[idx], m.mass, *m.inertia, m.spin_inertia)
-            st = machine_stability(theta[idx], alpha[idx], p)
+            st = machine_stability(theta[idx], alpha[idx], Sphere(rr[idx]), gg[idx], arrays)
             cols["stability"][idx] = VERDICT_LABELS[st["verdict"]]
             cols["stability_method"][idx] = STABILITY_METHOD
             cols["growth_rate_1_s"][idx] = st["growth_rate"]
@@ -269,8 +263,9 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         raise ParameterError(f"ride evaluates at most {MAX_RIDE_ROWS} orbits at once (got {n}, shape {shape}): "
                              "split the grid")
     rr = flat["r"]
-    if np.any(rr <= m.a):
-        raise ParameterError(f"the wheel (a = {m.a:g} m) does not fit in a sphere of radius {float(rr.min()):g} m "
+    if np.any(rr <= m.wheel_radius):
+        raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius "
+                             f"{float(rr.min()):g} m "
                              "(needs r > a)", "r")
     if height is not None:
         hh = flat["height"]
@@ -278,7 +273,7 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
             i = int(np.argmax(hh > 2 * rr))
             raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * rr[i]:g} m "
                                  f"(got {hh[i]:g})", "height")
-        th = np.arccos(np.clip(hh / rr - 1.0, -1.0, 1.0))
+        th = Sphere(rr).theta(hh)
     else:
         th = np.radians(flat["theta"])
     g_, mu_, xg = flat["g"], flat["mu"], flat["max_g"]
@@ -371,35 +366,27 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
     """One row per tilt giving each speed (eq. M12), a no_orbit row where none
     does; ``theta_deg`` or ``height`` as the request gave it, echoed."""
     n = th.size
-    margs = _machine_args(m)
+    arrays = machine_arrays(m)
     parts = []
     for start in range(0, n, CHUNK):
         sl = slice(start, start + CHUNK)
-        roots = solve_alpha_for_speed(th[sl], v[sl], r[sl], g[sl], **{k: np.full(th[sl].size, x)
-                                                                      for k, x in margs.items()})
-        parts.append(roots)
-    width = max(1, max(p.shape[1] for p in parts))
-    roots = np.concatenate([np.pad(p, ((0, 0), (0, width - p.shape[1])), constant_values=np.nan) for p in parts])
-    found = np.isfinite(roots)
-    count = found.sum(axis=1)
-    reps = np.maximum(count, 1)
+        parts.append(orbits_for_speed(th[sl], v[sl], Sphere(r[sl]), g[sl], arrays, mu[sl], max_g[sl]))
+    width = max(1, max(tilts.shape[1] for tilts, _ in parts))
+
+    def padded(x, empty):
+        return np.pad(x, ((0, 0), (0, width - x.shape[1])), constant_values=empty)
+
+    roots = np.concatenate([padded(tilts, np.nan) for tilts, _ in parts])
+    empty = {"status": Status.NO_ORBIT, "reason": Reason.MACHINE_NO_ALPHA}
+    orbits = {key: np.concatenate([padded(orbit[key], empty.get(key, np.nan)) for _, orbit in parts])
+              for key in parts[0][1]}
+    # the tilts of each request in order (sorted, NaN last), or one no_orbit row where there is none
+    reps = np.maximum(np.isfinite(roots).sum(axis=1), 1)
     req = np.repeat(np.arange(n), reps)
-    # the roots of each request in order, or NaN (none)
-    order = np.argsort(~found, axis=1, kind="stable")
-    roots = np.take_along_axis(roots, order, axis=1)
     slot = np.arange(req.size) - np.repeat(np.cumsum(reps) - reps, reps)
     al = roots[req, slot]
-    none = ~np.isfinite(al)
-    res = _evaluate(th[req], np.where(none, 0.0, al), r[req], g[req], mu[req], max_g[req], m)
-    if none.any():
-        res = {k: np.array(val) for k, val in res.items()}
-        for key, val in res.items():
-            if key == "status":
-                val[none] = Status.NO_ORBIT
-            elif key == "reason":
-                val[none] = Reason.MACHINE_NO_ALPHA
-            elif key != "height":
-                val[none] = np.nan
+    res = {key: val[req, slot] for key, val in orbits.items()}
+    res["height"] = r[req] * (1.0 + np.cos(th[req]))                # every row's, with a tilt or not (Sphere.height)
     given = {"v_cm_m_s": np.asarray(v, dtype=float)[req]}
     if theta_deg is not None:
         given["theta_deg"] = theta_deg[req]
@@ -537,8 +524,7 @@ def _loop(theta, v_top, m: Machine, r, g, mu=INF, max_g=INF) -> Table:
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     th = np.radians(flat["theta"])
-    res = vertical_loop(th, flat["v_top"], flat["r"], flat["g"], m.mass, m.h, m.a, m.t, m.inertia[1],
-                        m.spin_inertia, m.head, flat["mu"], flat["max_g"])
+    res = vertical_loop(th, flat["v_top"], Sphere(flat["r"]), flat["g"], machine_arrays(m), flat["mu"], flat["max_g"])
     res = {k: np.asarray(v).reshape(-1) for k, v in res.items()}
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),
             "theta_deg": flat["theta"], "r_m": flat["r"], "g_m_s2": flat["g"], "v_top_m_s": flat["v_top"],

@@ -174,7 +174,7 @@ def _crosses(victim: Lane, swing_height: float) -> bool:
         return False
     if victim.kind == "vertical":
         return True
-    return victim.r * (1.0 + math.cos(victim.theta)) <= swing_height
+    return victim.orbit["height"] <= swing_height
 
 
 _TEXT = {"name", "lane", "status", "reason", "machine", "rider_a", "rider_b", "verdict", "basis", "rider", "outcome",
@@ -214,7 +214,7 @@ def _crosses_any(lanes, rider, swing_height) -> np.ndarray:
     reach = np.where(swings, swing_height, -np.inf)
     out = np.zeros(rider.size, dtype=bool)
     for k, lane in enumerate(lanes):
-        low = -np.inf if lane.kind == "vertical" else lane.r * (1.0 + math.cos(lane.theta))
+        low = -np.inf if lane.kind == "vertical" else lane.orbit["height"]
         out |= swings & (rider != k) & (low <= reach)
     return out
 
@@ -249,26 +249,28 @@ def _summary_table(result: ShowResult, res: dict, rider) -> Table:
                               np.int64 if c in ("falls", "hits") else float) for c in FALLS_SUMMARY_COLUMNS})
 
 
-def _rider_row(lane: Lane, rider, band) -> dict:
-    """The riders table's row of one lane (ride's row, the speed band)."""
+def _rider_row(lane: Lane, rider, band, ground) -> dict:
+    """The riders table's row of one lane (its orbit as ``ride`` reports it,
+    the speed band)."""
     from deathsphere.act.pairs import contact_angles
 
-    row, nan = lane.row, math.nan
-    theta0, phi0 = contact_angles(lane, 0.0)
+    orbit, nan = lane.orbit, math.nan
+    theta0, phi0 = contact_angles(lane, 0.0, ground)
     out = {"name": lane.name, "lane": lane.kind, "theta_deg": theta0, "phi0_deg": phi0, "machine": lane.machine.name,
-           "width_m": lane.width_m, "status": row["status"], "reason": row["reason"],
-           "mu_required": row["mu_required"], "head_clearance_m": row["head_clearance_m"], "period_s": lane.period_s}
+           "width_m": lane.width_m, "status": lane.status, "reason": lane.reason,
+           "mu_required": orbit["mu_required"], "head_clearance_m": orbit["head_clearance"], "period_s": lane.period_s}
     if lane.kind == "horizontal":
         planned = rider.speed
-        out.update(alpha_deg=row["alpha_deg"], lean_deg=row["lean_deg"], v_cm_m_s=row["v_cm_m_s"],
-                   v_contact_m_s=row["v_contact_m_s"], load_g=row["load_g"], v_top_m_s=nan, v_top_min_m_s=nan,
+        # the centre of mass's speed as planned (ride echoes a speed asked for)
+        out.update(alpha_deg=orbit["alpha_deg"], lean_deg=90.0 - orbit["alpha_deg"], v_cm_m_s=planned,
+                   v_contact_m_s=orbit["v_contact"], load_g=orbit["load_g"], v_top_m_s=nan, v_top_min_m_s=nan,
                    v_bottom_m_s=nan, load_bottom_g=nan)
     else:
         planned = rider.v_top
-        r_g = row["com_loop_radius_m"]
-        out.update(alpha_deg=nan, lean_deg=0.0, v_cm_m_s=planned, v_contact_m_s=planned * lane.r / r_g,
-                   load_g=row["load_bottom_g"], v_top_m_s=planned, v_top_min_m_s=row["v_top_min_m_s"],
-                   v_bottom_m_s=row["v_bottom_m_s"], load_bottom_g=row["load_bottom_g"])
+        r_g = orbit["r_g"]
+        out.update(alpha_deg=nan, lean_deg=0.0, v_cm_m_s=planned, v_contact_m_s=planned * ground.radius / r_g,
+                   load_g=orbit["load_bottom"], v_top_m_s=planned, v_top_min_m_s=orbit["v_top_min"],
+                   v_bottom_m_s=orbit["v_bottom"], load_bottom_g=orbit["load_bottom"])
     out["v_cm_km_h"] = round(out["v_cm_m_s"] * 3.6, 9)
     low, high = band
     out.update(speed_low_m_s=low, speed_high_m_s=high, margin_low_pct=100.0 * (planned - low) / planned,
@@ -282,14 +284,17 @@ def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
 
     planned = [r.speed if r.lane == "horizontal" else r.v_top for r in plan.riders]
     bands = speed_bands(lanes, plan.globe, planned)
-    rows = [_rider_row(lane, rider, band) for lane, rider, band in zip(lanes, plan.riders, bands)]
+    ground = plan.globe.ground
+    rows = [_rider_row(lane, rider, band, ground) for lane, rider, band in zip(lanes, plan.riders, bands)]
     return _rows_table(rows, RIDER_COLUMNS)
 
 
-def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift: bool = True) -> Table:
+def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift: bool = True, *,
+                ground) -> Table:
     """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
     b in the plan), its least clearance over the act, when and where, the
-    verdict and the drift time (NaN: never)."""
+    verdict and the drift time (NaN: never); ``ground`` the globe (its
+    contact angles)."""
     from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict
     from deathsphere.act.timing import drift_time
 
@@ -300,7 +305,7 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
         for j in range(i + 1, len(lanes)):
             b = lanes[j]
             c, t, basis = found[(i, j)] if (i, j) in found else least_clearance(a, b, duration)
-            (ta, pa), (tb, pb) = contact_angles(a, t), contact_angles(b, t)
+            (ta, pa), (tb, pb) = contact_angles(a, t, ground), contact_angles(b, t, ground)
             v = verdict(c, min_clearance)
             dt = drift_time(a, b, min_clearance) if drift and v == "clear" else math.nan
             rows.append({"rider_a": a.name, "rider_b": b.name, "min_clearance_m": c, "t_s": t, "theta_a_deg": ta,
@@ -347,6 +352,6 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         plan = plan.with_phases(phases)
         lanes = build_lanes(plan)
     riders = riders_table(plan, lanes)
-    pairs = pairs_table(lanes, span, plan.globe.min_clearance)
+    pairs = pairs_table(lanes, span, plan.globe.min_clearance, ground=plan.globe.ground)
     return ShowResult(plan=plan, lanes=lanes, riders=riders, pairs=pairs, duration_s=span,
                       commensurate=commensurate, phase_windows=windows)

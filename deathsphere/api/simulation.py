@@ -231,19 +231,21 @@ def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
     eqs. M8, M12, M16-M19): its steady orbit at (theta, alpha), or at the
     tilt ``branch`` giving the centre of mass the ``speed``."""
     from deathsphere import simulation
-    from deathsphere.api.machines import as_machine
-    from deathsphere.simulation.machine_starts import machine_bodies, machine_starts
-
-    from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, MachineParams, yaw_is_determined
+    from deathsphere.physics.ground import Sphere
+    from deathsphere.physics.machine_arrays import machine_arrays
+    from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, yaw_is_determined
+    from deathsphere.records.machine_presets import as_machine
+    from deathsphere.simulation.machine_starts import machine_run, machine_starts
 
     m = as_machine(machine)
-    if not yaw_is_determined(MachineParams(m.a, m.t, 1.0, m.h, 1.0, m.mass, *m.inertia, m.spin_inertia)):
+    if not yaw_is_determined(machine_arrays(m)):
         raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
                              "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
     theta = checked_scalar("theta", theta)
     r, g, mu = checked_scalar("r", r), checked_scalar("g", g), checked_scalar("mu", mu)
-    if not r > m.a:
-        raise ParameterError(f"the wheel (a = {m.a:g} m) does not fit in a sphere of radius {r:g} m (needs r > a)",
+    if not r > m.wheel_radius:
+        raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius {r:g} m "
+                             "(needs r > a)",
                              "r")
     if (alpha is None) == (speed is None):
         raise ParameterError("a machine's steady orbit needs exactly one of alpha (deg) and speed (its centre of "
@@ -257,8 +259,7 @@ def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
     else:
         alpha = checked_scalar("alpha", alpha)
     perturb = run.pop("perturb")
-    bodies = machine_bodies(a=m.a, t=m.t, r=r, h=m.h, g=g, mass=m.mass, inertia=m.inertia, spin=m.spin_inertia,
-                            head=m.head, name=m.name)
+    bodies = machine_run(m, Sphere(r), g)
     try:
         starts = machine_starts(bodies, theta, params.reduce_angle(alpha), perturb_deg=perturb, mu=mu)
         # the tilt is echoed as given, as a wheel's

@@ -60,7 +60,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from deathsphere.physics.machine_lanes import closest_tilt, orbits_for_speed
 from deathsphere.physics.status import Status
 
 __all__ = [
@@ -167,7 +167,7 @@ def _critical_points(c, degree):
     return np.where(deg == 4, quartic, np.where(deg == 3, quad, np.where(deg == 2, line, np.nan)))
 
 
-def ballistic_landing(x0, v0, r, g):
+def ballistic_landing(x0, v0, ground, g):
     """Where and when a centre of mass flying freely from ``x0`` with
     velocity ``v0`` meets the globe's surface (beyond the paper).
 
@@ -175,7 +175,9 @@ def ballistic_landing(x0, v0, r, g):
 
         f(t) = g^2/4 t^4 - g v_z t^3 + (|v0|^2 - g z0) t^2 + 2 (x0 . v0) t + |x0|^2 - r^2.
 
-    x0, v0 : (3, n) [m], [m/s]; r [m], g [m/s^2] (> 0) broadcast to (n,).
+    x0, v0 : (3, n) [m], [m/s]; ``ground`` the globe (a
+    :class:`~deathsphere.physics.ground.Sphere`, its radius r [m]), g [m/s^2]
+    (> 0); r and g broadcast to (n,).
 
     A start on the surface (within ``ON_SURFACE`` r) has the root t = 0
     divided out as often as it is one (a tangent start: twice; a point mass
@@ -202,7 +204,7 @@ def ballistic_landing(x0, v0, r, g):
         empty = np.zeros(0)
         return {"t_land": empty, "x_land": x0.copy(), "v_land": v0.copy(), "impact_speed": empty,
                 "impact_normal": empty, "status": np.zeros(0, dtype=np.int8)}
-    r = np.broadcast_to(np.asarray(r, dtype=float), (n,))
+    r = np.broadcast_to(np.asarray(ground.radius, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
     bad = ~(np.isfinite(x0).all(axis=0) & np.isfinite(v0).all(axis=0) & (r > 0) & (g > 0) & np.isfinite(r * g))
     x0 = np.where(bad, 0.0, x0)
@@ -493,33 +495,27 @@ def drop_velocity(v, speed_fraction):
     return np.asarray(v, dtype=float) * np.asarray(speed_fraction, dtype=float)
 
 
-def horizontal_holds(theta, speed, alpha_before, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia,
-                     head, mu):
+def horizontal_holds(theta, speed, alpha_before, ground, g, machine, mu):
     """Whether a horizontal lane still holds a machine after the drop: some
     tilt alpha at the same contact height (``theta`` [rad]) gives a steady
     orbit whose centre of mass moves at ``speed`` [m/s] with contact, the
     friction within ``mu`` and the head clear (docs/machine.md eqs. M8-M12:
-    every tilt for the speed, :func:`deathsphere.physics.machine.solve_alpha_for_speed`,
-    checked by :func:`deathsphere.physics.machine.ride_orbit`).  Machine
-    parameters as there; all broadcast to (n,).
+    every tilt for the speed and its orbit,
+    :func:`deathsphere.physics.machine_lanes.orbits_for_speed`).  ``ground``
+    the sphere, ``machine`` the machine's arrays
+    (:class:`~deathsphere.physics.machine_arrays.MachineArrays`); all
+    broadcast to (n,).
 
     Returns dict: ``holds`` (n,) bool (False where speed <= 0: a stall holds
     on no lane), ``alpha`` (n,) [rad] the tilt that holds closest to
     ``alpha_before`` (NaN where none does).  Where it does not hold the rider
     leaves the wall at once (stage 2 of the model above).
     """
-    args = np.broadcast_arrays(*(np.asarray(x, dtype=float).reshape(-1) for x in (
-        theta, speed, alpha_before, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia, head, mu)))
-    theta, speed, alpha_before, r, g, mass, h, a, t, ip, iy, js, head, mu = args
+    theta, speed, alpha_before, mu = np.broadcast_arrays(
+        *(np.asarray(x, dtype=float).reshape(-1) for x in (theta, speed, alpha_before, mu)))
     moving = speed > 0
-    roots = solve_alpha_for_speed(theta, np.where(moving, speed, 1.0), r, g, mass, h, a, t, ip, iy, js)
-    found = np.isfinite(roots) & moving[:, None]
-    col = (slice(None), None)
-    orb = ride_orbit(theta[col], np.where(found, roots, 0.0), r[col], g[col], mass[col], h[col], a[col], t[col],
-                     ip[col], iy[col], js[col], head[col], mu[col])
-    ok = found & (orb["status"] == Status.OK)
-    dist = np.where(ok, np.abs(np.where(ok, roots, 0.0) - alpha_before[col]), np.inf)
-    best = np.argmin(dist, axis=1) if dist.shape[1] else np.zeros(theta.shape, dtype=int)
-    holds = ok.any(axis=1) if ok.shape[1] else np.zeros(theta.shape, dtype=bool)
+    roots, orb = orbits_for_speed(theta, np.where(moving, speed, 1.0), ground, g, machine, mu)
+    ok = np.isfinite(roots) & moving[:, None] & (orb["status"] == Status.OK)
+    best, holds = closest_tilt(roots, ok, alpha_before)
     alpha = np.where(holds, roots[np.arange(theta.size), best] if roots.shape[1] else np.nan, np.nan)
     return {"holds": holds, "alpha": alpha}

@@ -26,8 +26,11 @@ The paper's wheel (h = a, t = 0, inertia (k, 2k, k) m a^2, spin_inertia
 2 k m a^2) gives eq. (29) exactly (docs/machine.md, sec. 4).
 
 Every function takes broadcastable float arrays (theta, alpha in radians,
-lengths in m, inertias per unit mass in m^2, g in m/s^2) and loops over no
-orbit.  Statuses and reasons are :mod:`deathsphere.physics.status` codes.
+g in m/s^2), the ground (a :class:`~deathsphere.physics.ground.Sphere`, its
+radius r a number or an array) and the machine's arrays
+(:class:`~deathsphere.physics.machine_arrays.MachineArrays`, from
+:func:`~deathsphere.physics.machine_arrays.machine_arrays`), and loops over
+no orbit.  Statuses and reasons are :mod:`deathsphere.physics.status` codes.
 """
 
 from __future__ import annotations
@@ -35,10 +38,13 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR
+from deathsphere.physics.ground import Sphere
+from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 from deathsphere.physics.trig_roots import evaluate_rows, roots_in
 
-__all__ = ["vertical_loop", "ride_orbit", "speed_polynomial", "solve_alpha_for_speed", "fit_window", "ROOT_MATCH_RTOL"]
+__all__ = ["vertical_loop", "ride_orbit", "meridian_points", "speed_polynomial", "solve_alpha_for_speed", "fit_window",
+           "ROOT_MATCH_RTOL"]
 
 #: A root of the speed polynomial (eq. M12) is kept only where the forward
 #: model gives the target speed back to this relative tolerance (as
@@ -49,15 +55,41 @@ ROOT_MATCH_RTOL = 1e-3
 def _parts(st, ct, sa, ca, r, h, a, t):
     """The lengths of eqs. M2-M6 from sines and cosines (docs/machine.md)."""
     hq = h - t
-    r_g = (r - t) * st - hq * ca                       # M2: CoM distance from the axis
+    r_g = _point(st, ca, r, h, t)                      # M2: CoM distance from the axis
     d_r = t * st + hq * ca                             # M6: (P - G) . r-hat
     d_z = t * ct - hq * sa                             # M6: (P - G) . z-hat
     w = (a - t) + t * (st * ca - ct * sa)              # M4: (a - t) + t sin(theta - alpha)
     return r_g, d_r, d_z, w
 
 
-def ride_orbit(theta, alpha, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia, head,
-               mu=np.inf, max_g=np.inf):
+def _point(sn, cs, r, height, t):
+    """One coordinate of eq. M2's point at ``height`` along the up-axis,
+    Q + (height - t) u with Q = (r - t) n-hat, u = (-cos alpha, sin alpha):
+    rho for (sn, cs) = (sin theta, cos alpha), z for (cos theta, -sin alpha).
+    The one place eq. M2 is written."""
+    return (r - t) * sn - (height - t) * cs
+
+
+def _meridian(st, ct, sa, ca, r, m: MachineArrays) -> dict:
+    t = m.tyre_radius
+    return {"contact": (r * st, r * ct),
+            "com": (_point(st, ca, r, m.com_height, t), _point(ct, -sa, r, m.com_height, t)),
+            "head": (_point(st, ca, r, m.head_height, t), _point(ct, -sa, r, m.head_height, t))}
+
+
+def meridian_points(theta, alpha, ground, machine: MachineArrays) -> dict:
+    """Eq. M2: the contact point P, the centre of mass G = Q + (h - t) u and
+    the head H = Q + (head - t) u as (rho, z) [m] in the contact's meridian
+    plane (rho horizontal from the axis, z up from the sphere's centre), for
+    the contact at polar angle theta and the tilt alpha [rad] (arrays,
+    broadcast against the machine's); Q = (r - t) n-hat is the centre of the
+    tyre's crown circle, u = (-cos alpha, sin alpha) the up-axis.  Keys
+    'contact', 'com', 'head'."""
+    theta, alpha = np.asarray(theta, dtype=float), np.asarray(alpha, dtype=float)
+    return _meridian(np.sin(theta), np.cos(theta), np.sin(alpha), np.cos(alpha), ground.radius, machine)
+
+
+def ride_orbit(theta, alpha, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
     """Every quantity of a machine's steady horizontal orbit inside the sphere,
     vectorised (docs/machine.md eqs. M1-M11).
 
@@ -65,10 +97,11 @@ def ride_orbit(theta, alpha, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, sp
     ----------------------
     theta, alpha : [rad]  polar angle of the contact point; tilt of the up-axis
         above the orbit plane (the paper's alpha for the paper's wheel).
-    r : [m] sphere radius; g [m/s^2]; mass [kg] (> 0); h, a, t, head [m]
-        (CoM height, wheel radius to the crown, crown radius, head height, all
-        along the up-axis above the contact on flat ground); inertia_pitch,
-        inertia_yaw, spin_inertia [kg m^2]; mu friction available; max_g the
+    ground : the sphere (:class:`~deathsphere.physics.ground.Sphere`, radius
+        r [m]); g [m/s^2]; machine the machine's arrays (mass [kg] > 0;
+        com_height h, wheel_radius a, tyre_radius t, head_height [m], all
+        along the up-axis above the contact on flat ground; pitch_inertia,
+        yaw_inertia, spin_inertia [kg m^2]); mu friction available; max_g the
         largest load_g allowed.
 
     Returns
@@ -82,9 +115,10 @@ def ride_orbit(theta, alpha, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, sp
     ``height`` [m] contact above the floor, int8 ``status`` and ``reason``.
     An ok row is all finite.
     """
-    theta, alpha, r, g, mass, h, a, t, ip, iy, js, head, mu, max_g = (
-        np.asarray(x, dtype=float) for x in
-        (theta, alpha, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia, head, mu, max_g))
+    m = machine
+    theta, alpha, r, g, mu, max_g = (np.asarray(x, dtype=float) for x in (theta, alpha, ground.radius, g, mu, max_g))
+    mass, h, a, t, ip, iy, js = (m.mass, m.com_height, m.wheel_radius, m.tyre_radius, m.pitch_inertia,
+                                 m.yaw_inertia, m.spin_inertia)
     st, ct = np.sin(theta), np.cos(theta)
     sa, ca = np.sin(alpha), np.cos(alpha)
     r_g, d_r, d_z, w = _parts(st, ct, sa, ca, r, h, a, t)
@@ -110,9 +144,8 @@ def ride_orbit(theta, alpha, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, sp
     friction = -(centripetal * ct + g * st)                          # M9: F . theta-hat / m
     mu_req = mu_required(normal, friction)
     load = np.sqrt(centripetal * centripetal + g * g) / g            # M11
-    # the head point H = Q + (head - t) u, and its distance from the centre
-    hx = (r - t) * st - (head - t) * ca
-    hz = (r - t) * ct + (head - t) * sa
+    # the head point H (eq. M2), and its distance from the centre
+    hx, hz = _point(st, ca, r, m.head_height, t), _point(ct, -sa, r, m.head_height, t)
     clearance = r - np.sqrt(hx * hx + hz * hz)
     status, reason = first_failure([
         (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT),
@@ -137,7 +170,7 @@ def ride_orbit(theta, alpha, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, sp
         "mu_required": mu_req,
         "load_g": load,
         "head_clearance": clearance,
-        "height": r * (1.0 + ct),
+        "height": r * (1.0 + ct),                                   # Sphere.height, its cosine at hand
         "status": status,
         "reason": reason,
     }
@@ -176,19 +209,21 @@ def _add(p, q):
     return out
 
 
-def speed_polynomial(theta, speed, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia):
+def speed_polynomial(theta, speed, ground, g, m: MachineArrays):
     """Coefficient rows (n, 9) of the trigonometric polynomial in alpha of
     degree 4 whose zeros are the tilts giving the CoM speed ``speed``
-    (docs/machine.md eq. M12), all inputs 1-D of one length n::
+    (docs/machine.md eq. M12), all inputs 1-D of one length n (the sphere's
+    radius and the machine's arrays included)::
 
         f(alpha) = g d_r r_G^2 W - v^2 [sin(alpha) (j r sin(theta) + delta cos(alpha) W) - d_z r_G W]
 
     i.e. (g d_r r_G^2 - v^2 den) W with den the denominator of eq. M8 (W > 0
     wherever the wheel fits, so no zero is added or lost there)."""
+    r, mass, h, a, t = ground.radius, m.mass, m.com_height, m.wheel_radius, m.tyre_radius
     st, ct = np.sin(theta), np.cos(theta)
     hq = h - t
-    j = spin_inertia / mass
-    delta = (inertia_yaw - inertia_pitch) / mass
+    j = m.spin_inertia / mass
+    delta = (m.yaw_inertia - m.pitch_inertia) / mass
     zero = np.zeros_like(st)
     r_g = _lin((r - t) * st, -hq + zero, zero)
     d_r = _lin(t * st, hq + zero, zero)
@@ -203,16 +238,18 @@ def speed_polynomial(theta, speed, r, g, mass, h, a, t, inertia_pitch, inertia_y
     return _add(left, -v2 * den_w)
 
 
-def fit_window(theta, r, a, t):
+def fit_window(theta, ground, machine: MachineArrays):
     """The tilts at which the wheel fits (eq. M10), (lo, hi) [rad]: the open
     interval theta - pi + asin(q) < alpha < theta - asin(q), q = (a-t)/(r-t)."""
+    r, a, t = ground.radius, machine.wheel_radius, machine.tyre_radius
     q = np.arcsin(np.clip((a - t) / (r - t), -1.0, 1.0))
     return theta - np.pi + q, theta - q
 
 
-def solve_alpha_for_speed(theta, speed, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia):
+def solve_alpha_for_speed(theta, speed, ground, g, machine: MachineArrays):
     """Every tilt in the fit window (eq. M10) at which the CoM speed of a
-    steady orbit is ``speed`` (1-D inputs of one length n, speed > 0).
+    steady orbit is ``speed`` (1-D inputs of one length n, speed > 0; the
+    sphere's radius and the machine's arrays broadcast against them).
 
     The zeros of :func:`speed_polynomial` (at most 8 per period) are all
     found as eigenvalues of the companion matrix and refined by bisection
@@ -223,21 +260,23 @@ def solve_alpha_for_speed(theta, speed, r, g, mass, h, a, t, inertia_pitch, iner
     reported.  Returns (n, m) roots, sorted, NaN-padded, m <= 8.
     """
     args = np.broadcast_arrays(*(np.asarray(x, dtype=float).reshape(-1) for x in
-                                 (theta, speed, r, g, mass, h, a, t, inertia_pitch, inertia_yaw, spin_inertia)))
-    theta, speed, r, g, mass, h, a, t, ip, iy, js = args
+                                 (theta, speed, ground.radius, g, *machine)))
+    theta, speed, r, g = args[:4]
+    m = MachineArrays(*args[4:])
     n = theta.size
     if n == 0:
         return np.full((0, 0), np.nan)
-    coef = speed_polynomial(theta, speed, r, g, mass, h, a, t, ip, iy, js)
-    lo, hi = fit_window(theta, r, a, t)
+    coef = speed_polynomial(theta, speed, Sphere(r), g, m)
+    lo, hi = fit_window(theta, Sphere(r), m)
     eps = 1e-12
     roots = roots_in(coef, lo + eps, hi - eps) if hi.size else np.full((n, 0), np.nan)
     found = np.isfinite(roots)
     if roots.shape[1] == 0:
         return roots
     col = (slice(None), None)
-    orb = ride_orbit(theta[col], np.where(found, roots, 0.0), r[col], g[col], mass[col], h[col], a[col], t[col],
-                     ip[col], iy[col], js[col], h[col] + 1.0)
+    # the head set above the centre of mass: only the speed is checked here
+    mc = m._replace(head_height=m.com_height + 1.0).map(lambda x: x[col])
+    orb = ride_orbit(theta[col], np.where(found, roots, 0.0), Sphere(r[col]), g[col], mc)
     with np.errstate(invalid="ignore"):
         found &= np.abs(orb["v_cm"] - speed[col]) <= ROOT_MATCH_RTOL * speed[col]
     roots = np.sort(np.where(found, roots, np.nan), axis=1)
@@ -254,7 +293,7 @@ def polynomial_values(coef, alpha):
 # vertical loops (docs/machine.md sec. 10, eqs. M21-M23)
 # ---------------------------------------------------------------------------
 
-def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head, mu=np.inf, max_g=np.inf):
+def vertical_loop(theta, v_top, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
     """A machine looping in the vertical plane at distance r cos(theta) from
     the sphere's centre, its up-axis towards the loop's centre (docs/machine.md
     sec. 10).  Loop radius rho = r sin(theta), centre-of-mass radius
@@ -280,9 +319,10 @@ def vertical_loop(theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia
     most round the loop), ``phi_worst`` [rad] (where, from the top; also at
     -phi_worst), ``status``, ``reason``.
     """
-    theta, v_top, r, g, mass, h, a, t, ip, js, head, mu, max_g = (
-        np.asarray(x, dtype=float) for x in
-        (theta, v_top, r, g, mass, h, a, t, inertia_pitch, spin_inertia, head, mu, max_g))
+    m = machine
+    theta, v_top, r, g, mu, max_g = (np.asarray(x, dtype=float) for x in (theta, v_top, ground.radius, g, mu, max_g))
+    mass, h, a, t, ip, js, head = (m.mass, m.com_height, m.wheel_radius, m.tyre_radius, m.pitch_inertia,
+                                   m.spin_inertia, m.head_height)
     st, ct = np.sin(theta), np.cos(theta)
     rho = r * st
     r_g = rho - h

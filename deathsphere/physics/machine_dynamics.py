@@ -32,6 +32,14 @@ and solved as a 4x4 linear system per body.  Only +, -, *, / and sqrt are
 used, so a complex step differentiates the whole right-hand side exactly;
 the stability's Jacobian differentiates the residual at the solved
 accelerations instead (implicit function, :func:`_rhs_directional`).
+
+Every function takes the state, the ground (the sphere,
+:class:`~deathsphere.physics.ground.Sphere`, centred at the origin), gravity
+g [m/s^2] and the machine's arrays
+(:class:`~deathsphere.physics.machine_arrays.MachineArrays`), all
+broadcasting against the trailing (body) axes of the state.  The equations
+use the sphere's centre and not its radius, which the state holds (|Q| =
+r - t).
 """
 
 from __future__ import annotations
@@ -39,7 +47,9 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR
+from deathsphere.physics.ground import Sphere
 from deathsphere.physics.machine import ride_orbit
+from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.stability.reduction import (
     COMPLEX_STEP,
     householder_complement,
@@ -49,25 +59,7 @@ from deathsphere.physics.vectors import cross as _cross
 from deathsphere.physics.vectors import dot as _dot
 from deathsphere.physics.vectors import zcross
 
-__all__ = ["MachineParams", "GeometryRates", "yaw_is_determined", "YAW_UNDETERMINED", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
-
-
-class MachineParams(tuple):
-    """(a, t, r, h, g, mass, I_roll, I_pitch, I_yaw, J) as arrays broadcasting
-    against the trailing (body) axes of a state."""
-
-    __slots__ = ()
-    _fields = ("a", "t", "r", "h", "g", "mass", "roll", "pitch", "yaw", "spin")
-
-    def __new__(cls, a, t, r, h, g, mass, roll, pitch, yaw, spin):
-        return super().__new__(cls, tuple(np.asarray(x, dtype=float) for x in
-                                          (a, t, r, h, g, mass, roll, pitch, yaw, spin)))
-
-    def __getattr__(self, name):
-        try:
-            return self[MachineParams._fields.index(name)]
-        except ValueError:
-            raise AttributeError(name) from None
+__all__ = ["GeometryRates", "yaw_is_determined", "YAW_UNDETERMINED", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
 
 
 class _Jet:
@@ -168,7 +160,7 @@ class GeometryRates:
         return (cp2 - 2 * self.e3_1 * self.sc1 - self.e3 * sc2) / self.sc
 
 
-def _residuals(state, p: MachineParams, Wd):
+def _residuals(state, g, p: MachineArrays, Wd):
     """The Euler and axial-balance residuals (4, k, ...) of the machine at
     ``state`` for k trial wheel accelerations ``Wd`` (3, k, ...) and zero
     pitch moment, with the contact forces F (3, k, ...) [N] they need, the
@@ -176,7 +168,7 @@ def _residuals(state, p: MachineParams, Wd):
     is affine in (dw/dt, lambda): R = b + A dw/dt - k lambda, k the pitch
     reaction's column (:func:`_pitch_reaction`, returned with its force)."""
     C, E, W = state[0:3], state[3:6], state[6:9]
-    a, t, h, g, m = p.a, p.t, p.h, p.g, p.mass
+    a, t, h, m = p.wheel_radius, p.tyre_radius, p.com_height, p.mass
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
     C_, E_, W_ = C[add], E[add], W[add]
     geo = GeometryRates(C_, E_, a, t)
@@ -202,13 +194,13 @@ def _residuals(state, p: MachineParams, Wd):
     spin = _jdot(Wj, h1j) - psi
     # the frame turns with w's components across the axle and psi about it
     # (omega_f = w - (w.e1) e1 + psi e1, with e1, e2, e3 orthonormal)
-    L = (e2j * (_jdot(e2j, Wj) * p.roll) + e3j * (_jdot(e3j, Wj) * p.yaw)
-         + h1j * (psi * p.pitch + spin * p.spin))
+    L = (e2j * (_jdot(e2j, Wj) * p.roll_inertia) + e3j * (_jdot(e3j, Wj) * p.yaw_inertia)
+         + h1j * (psi * p.pitch_inertia + spin * p.spin_inertia))
     Ldot = L.x1
     G = C_ - (h - a) * e3j.x0
     torque = _cross(Pj.x0 - G, F)
     euler = Ldot - torque                                         # = lambda k_E
-    axial = p.spin * _dot(Wd, h1j.x0) - _dot(_cross(Pj.x0 - C_, F), h1j.x0)   # = lambda k_A
+    axial = p.spin_inertia * _dot(Wd, h1j.x0) - _dot(_cross(Pj.x0 - C_, F), h1j.x0)   # = lambda k_A
     R = np.concatenate((euler, axial[None]), axis=0)             # (4, k, ...)
     return R, F, vC, Edot, _pitch_reaction(geo)
 
@@ -246,13 +238,13 @@ def _trial_accelerations(shape, dtype):
     return Wd
 
 
-def _acceleration_system(state, p: MachineParams):
+def _acceleration_system(state, g, p: MachineArrays):
     """(A, b) of the accelerations: A (..., 4, 4) x = b (..., 4) for
     x = (dw/dt, lambda), from the residual at the four trials, with the forces
     of the trials (3, 4, ...) and the rates dC/dt, dE/dt, e1."""
-    shape = np.broadcast_shapes(state.shape[1:], np.shape(p.a))
+    shape = np.broadcast_shapes(state.shape[1:], np.shape(p.wheel_radius), np.shape(g))
     Wd = _trial_accelerations(shape, state.dtype if np.iscomplexobj(state) else float)
-    R, F, vC, Edot, (kcol, fpitch) = _residuals(state, p, Wd)
+    R, F, vC, Edot, (kcol, fpitch) = _residuals(state, g, p, Wd)
     base = R[:, 0]
     A = R[:, 1:] - base[:, None]                                  # (4, 3, ...) columns for dw/dt
     Afull = np.concatenate((A, -kcol[:, None]), axis=1)           # (4, 4, ...): R - lambda k = 0
@@ -272,14 +264,15 @@ def _turning(out, state, frame_rate):
     return out
 
 
-def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
+def machine_rhs(state, ground, g, machine: MachineArrays, frame_rate=0.0, forces=False):
     """d(state)/dt of the machine's exact equations (module docstring;
-    docs/machine.md eqs. M16-M19); ``state`` (9, ...) real or complex.
+    docs/machine.md eqs. M16-M19); ``state`` (9, ...) real or complex, inside
+    the sphere ``ground``, gravity ``g`` [m/s^2], the machine's arrays.
     ``frame_rate`` [rad/s]: components in a frame turning at that rate about
     +z.  With ``forces`` also returns (F/m (3, ...), lambda / m): the contact
     force per unit mass and the pitch constraint's multiplier."""
     state = np.asarray(state)
-    Am, bm, F, vC, Edot, fpitch = _acceleration_system(state, p)
+    Am, bm, F, vC, Edot, fpitch = _acceleration_system(state, g, machine)
     x = np.moveaxis(np.linalg.solve(Am, bm[..., None])[..., 0], -1, 0)   # (4, ...)
     Wdot = x[:3]
     out = _turning(np.concatenate((vC, Edot, Wdot)), state, frame_rate)
@@ -288,22 +281,22 @@ def machine_rhs(state, p: MachineParams, frame_rate=0.0, forces=False):
     # m (d2G/dt2 + g z) for the solved accelerations (affine in dw/dt:
     # combine the trials), less the pitch reaction's force: the contact's
     Fsol = F[:, 0] + np.sum((F[:, 1:] - F[:, :1]) * Wdot[None], axis=1) - x[3] * fpitch
-    return out, Fsol / p.mass, x[3] / p.mass
+    return out, Fsol / machine.mass, x[3] / machine.mass
 
 
-def _rhs_directional(X0, dirs, p: MachineParams, frame_rate, step=COMPLEX_STEP):
+def _rhs_directional(X0, dirs, g, p: MachineArrays, frame_rate, step=COMPLEX_STEP):
     """The Jacobian of :func:`machine_rhs` at the real states X0 (9, n)
     along ``dirs`` (9, d, n), exactly (complex step): the accelerations x =
     (dw/dt, lambda) solve A(X) x = b(X), so along dX, A dx = -dR/dX . dX with
     the residual R(X, x) held at the solved x.  One complex evaluation of
     the residual at that x replaces complex trials of all four (the same
     derivative, in a quarter of the second-order work)."""
-    Am, bm, _, _, _, _ = _acceleration_system(X0, p)
+    Am, bm, _, _, _, _ = _acceleration_system(X0, g, p)
     Ainv = np.linalg.inv(Am)                                      # (n, 4, 4): one LU for x and 4 directions
     x = (Ainv @ bm[..., None])[..., 0].T                          # (4, n)
-    pc = MachineParams(*(np.asarray(v)[None] for v in p))
+    pc, gc = p.map(lambda v: np.asarray(v)[None]), np.asarray(g)[None]
     Xc = X0[:, None, :] + 1j * step * dirs                       # (9, d, n)
-    R, _, vC, Edot, (kcol, _) = _residuals(Xc, pc, x[:3, None, None, :])
+    R, _, vC, Edot, (kcol, _) = _residuals(Xc, gc, pc, x[:3, None, None, :])
     R = R[:, 0] - kcol * x[3][None, None, :]
     dR = np.imag(R) / step                                        # (4, d, n)
     dx = -Ainv[:, :3] @ dR.transpose(2, 0, 1)                   # (n, 3, d)
@@ -311,7 +304,7 @@ def _rhs_directional(X0, dirs, p: MachineParams, frame_rate, step=COMPLEX_STEP):
     return _turning(out, dirs, np.asarray(frame_rate)[None])
 
 
-def machine_orbit_state(theta, alpha, p: MachineParams):
+def machine_orbit_state(theta, alpha, ground, g, p: MachineArrays):
     """State (9, ...) of a machine placed on the steady horizontal orbit
     (theta, alpha) at azimuth 0, and its rate Omega (eq. M8; NaN where none):
     C = Q + (a - t) u, e1 = -sin(alpha) r-hat - cos(alpha) z,
@@ -319,15 +312,15 @@ def machine_orbit_state(theta, alpha, p: MachineParams):
     accepted (complex step)."""
     theta, alpha = np.asarray(theta), np.asarray(alpha)
     st, ct, sa, ca = np.sin(theta), np.cos(theta), np.sin(alpha), np.cos(alpha)
-    a, t, r, h = p.a, p.t, p.r, p.h
+    a, t, r, h = p.wheel_radius, p.tyre_radius, ground.radius, p.com_height
     hq = h - t
     r_g = (r - t) * st - hq * ca
     d_r = t * st + hq * ca
     d_z = t * ct - hq * sa
     w = (a - t) + t * (st * ca - ct * sa)
     sigma = r * st / w
-    den = sa * (p.spin / p.mass * sigma + (p.yaw - p.pitch) / p.mass * ca) - d_z * r_g
-    om2 = p.g * d_r / den
+    den = sa * (p.spin_inertia / p.mass * sigma + (p.yaw_inertia - p.pitch_inertia) / p.mass * ca) - d_z * r_g
+    om2 = g * d_r / den
     om = np.sqrt(om2)
     zero = 0 * (st * sa + a)
     one = zero + 1.0
@@ -345,7 +338,7 @@ YAW_UNDETERMINED = ("no yaw inertia and no spinning wheels: a turn about the up-
                     "equations of motion leave the yaw undetermined (the point-mass limit; docs/machine.md sec. 5)")
 
 
-def yaw_is_determined(p: MachineParams):
+def yaw_is_determined(p: MachineArrays):
     """Whether eqs. M16-M19 determine the accelerations (beyond the paper;
     docs/machine.md sec. 5): a machine with I_yaw = 0 and J = 0 (the point
     mass on massless wheels of sec. 4) has nothing that resists or drives a
@@ -354,14 +347,10 @@ def yaw_is_determined(p: MachineParams):
     and its yaw is arbitrary.  Its steady orbits (eq. M8) are well defined;
     their stability and motion are not.  Boolean array of the parameters'
     broadcast shape."""
-    return (np.asarray(p.yaw) > 0) | (np.asarray(p.spin) > 0)
+    return (np.asarray(p.yaw_inertia) > 0) | (np.asarray(p.spin_inertia) > 0)
 
 
-def _params_flat(p: MachineParams, n):
-    return MachineParams(*(np.broadcast_to(x, (n,)) for x in p))
-
-
-def machine_stability(theta, alpha, p: MachineParams):
+def machine_stability(theta, alpha, ground, g, p: MachineArrays):
     """Exact linear stability of a machine's steady horizontal orbits
     (docs/machine.md sec. 5): the eigenvalues of the reduced Jacobian of
     :func:`machine_jacobian`.  The equations are reversible, so the spectrum
@@ -372,13 +361,13 @@ def machine_stability(theta, alpha, p: MachineParams):
 
     Returns dict: ``growth_rate`` [1/s], ``freq_slow``, ``freq_fast``
     [rad/s], ``verdict`` (int8), ``eigenvalues`` (n, 4), ``rate_scale``."""
-    K, scale, Om = machine_jacobian(theta, alpha, p)
+    K, scale, Om = machine_jacobian(theta, alpha, ground, g, p)
     ev, growth, slow, fast, verdict = spectrum_from_invariants(K, scale)
     return {"growth_rate": growth, "freq_slow": slow, "freq_fast": fast, "verdict": verdict,
             "eigenvalues": ev, "rate_scale": scale, "omega": Om}
 
 
-def machine_jacobian(theta, alpha, p: MachineParams):
+def machine_jacobian(theta, alpha, ground, g, p: MachineArrays):
     """The reduced Jacobian K (n, 4, 4) of a machine's steady horizontal
     orbits (docs/machine.md sec. 5): the Jacobian of :func:`machine_rhs` in
     the frame turning at Omega (complex step), on the 7-dimensional
@@ -389,22 +378,25 @@ def machine_jacobian(theta, alpha, p: MachineParams):
     theta = np.asarray(theta, dtype=float).reshape(-1)
     alpha = np.asarray(alpha, dtype=float).reshape(-1)
     n = theta.size
-    p = _params_flat(p, n)
-    res = ride_orbit(theta, alpha, p.r, p.g, p.mass, p.h, p.a, p.t, p.pitch, p.yaw, p.spin, p.h)
-    ok = np.isfinite(res["omega"]) & (np.sin(theta - alpha) * (p.r - p.t) > (p.a - p.t))
+    p = p.flat(n)
+    r, g = (np.broadcast_to(np.asarray(x, dtype=float), (n,)) for x in (ground.radius, g))
+    ground = Sphere(r)
+    # the head at the centre of mass: its clearance is not the stability's business
+    res = ride_orbit(theta, alpha, ground, g, p._replace(head_height=p.com_height))
+    a, t = p.wheel_radius, p.tyre_radius
+    ok = np.isfinite(res["omega"]) & (np.sin(theta - alpha) * (r - t) > (a - t))
     ok &= np.abs(np.sin(theta)) > SINGULAR
     th = np.where(ok, theta, np.pi / 2)
     al = np.where(ok, alpha, np.pi / 4)
     # a placeholder orbit that exists (theta 90, alpha 45 needs d_r > 0 and D > 0: true for h > t >= 0)
-    X0, Om = machine_orbit_state(th, al, p)
+    X0, Om = machine_orbit_state(th, al, ground, g, p)
     Om = np.where(np.isfinite(Om), Om, 1.0)
     X0 = np.where(np.isfinite(X0), X0, 1.0)
     step = COMPLEX_STEP
-    dth = np.imag(machine_orbit_state(th + 1j * step, al, p)[0]) / step
-    dal = np.imag(machine_orbit_state(th, al + 1j * step, p)[0]) / step
+    dth = np.imag(machine_orbit_state(th + 1j * step, al, ground, g, p)[0]) / step
+    dal = np.imag(machine_orbit_state(th, al + 1j * step, ground, g, p)[0]) / step
     C, E, W = X0[0:3], X0[3:6], X0[6:9]
-    a, t = p.a, p.t
-    S = np.sqrt(np.sum(W * W, axis=0) + Om ** 2 + p.g / a)
+    S = np.sqrt(np.sum(W * W, axis=0) + Om ** 2 + g / a)
     D = np.empty((9, n))
     D[0:3], D[3:6], D[6:9] = a, 1.0, S
     # gradients of the constraints |E|^2 = 1 and |Q|^2 = (r - t)^2 in (C, E):
@@ -424,7 +416,7 @@ def machine_jacobian(theta, alpha, p: MachineParams):
     A *= 1.0 / np.sqrt(np.einsum("ikn,ikn->kn", A, A))[None]
     Y = householder_complement(A)                                  # (9, 4, n)
     dirs = Y * D[:, None, :]                                        # (9, 4, n)
-    JdX = _rhs_directional(X0, dirs, p, Om)                         # (9, 4, n)
+    JdX = _rhs_directional(X0, dirs, g, p, Om)                         # (9, 4, n)
     K = np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)

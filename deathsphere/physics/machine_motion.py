@@ -4,18 +4,20 @@ motion (beyond the paper; docs/machine.md sec. 5, eqs. M16-M19): its points
 spin, the contact force, the energy, the constraints, and the start on a
 steady orbit kicked in tilt.
 
-State (9, ...) and parameters as :mod:`deathsphere.physics.machine_dynamics`
-(C, E, W; :class:`MachineParams`); every function is vectorised over the
-trailing (body) axes and loops over no body.
+State (9, ...), ground, gravity and the machine's arrays as
+:mod:`deathsphere.physics.machine_dynamics` (C, E, W;
+:class:`~deathsphere.physics.machine_arrays.MachineArrays`), each function
+taking those it needs; every function is vectorised over the trailing
+(body) axes and loops over no body.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.machine_dynamics import (
     GeometryRates,
-    MachineParams,
     machine_geometry,
     machine_orbit_state,
     machine_rhs,
@@ -28,23 +30,22 @@ __all__ = ["machine_points", "machine_rates", "machine_contact_force", "machine_
            "machine_project", "machine_start"]
 
 
-def machine_points(state, p: MachineParams, head=None) -> dict:
+def machine_points(state, p: MachineArrays) -> dict:
     """The machine's axes and points from a state (eq. M16's geometry):
     ``e1`` the unit axle, ``e3`` the unit vector from the wheel centre
     towards the crown (the up-axis is -e3), ``C`` the wheel centre, ``Q``
     the crown point, ``P`` the contact point, ``G`` = C - (h - a) e3 the
-    centre of mass, and with ``head`` [m] ``H`` = Q - (head - t) e3 the top
-    of the rider's head (eq. M2).  Vectors (3, ...)."""
+    centre of mass and ``H`` = Q - (head - t) e3 the top of the rider's head
+    (eq. M2).  Vectors (3, ...)."""
     state = np.asarray(state)
     C = state[0:3]
-    e1, e3, Q, P = machine_geometry(C, state[3:6], p.a, p.t)
-    out = {"e1": e1, "e3": e3, "C": C, "Q": Q, "P": P, "G": C - (p.h - p.a) * e3}
-    if head is not None:
-        out["H"] = Q - (np.asarray(head, dtype=float) - p.t) * e3
-    return out
+    a, t = p.wheel_radius, p.tyre_radius
+    e1, e3, Q, P = machine_geometry(C, state[3:6], a, t)
+    return {"e1": e1, "e3": e3, "C": C, "Q": Q, "P": P, "G": C - (p.com_height - a) * e3,
+            "H": Q - (p.head_height - t) * e3}
 
 
-def machine_rates(state, p: MachineParams) -> dict:
+def machine_rates(state, p: MachineArrays) -> dict:
     """First-order rates of a state (eqs. M16-M17): ``vC`` = dC/dt (rolling),
     ``e3dot`` = de3/dt, ``vG`` = dG/dt, ``omega_f`` the frame's angular
     velocity, ``psi`` its rate about the axle, ``spin`` s = w.e1 - psi the
@@ -52,7 +53,7 @@ def machine_rates(state, p: MachineParams) -> dict:
     ``e3``."""
     state = np.asarray(state)
     C, E, W = state[0:3], state[3:6], state[6:9]
-    geo = GeometryRates(C, E, p.a, p.t)
+    geo = GeometryRates(C, E, p.wheel_radius, p.tyre_radius)
     e1, e3 = geo.h1, geo.e3
     vC = -cross(W, geo.P - C)
     Edot = cross(W, E)
@@ -61,11 +62,12 @@ def machine_rates(state, p: MachineParams) -> dict:
     psi = -_dot(e3dot, e2)
     w1 = _dot(W, e1)
     omega_f = W - (w1 - psi) * e1
-    return {"vC": vC, "e3dot": e3dot, "vG": vC - (p.h - p.a) * e3dot, "omega_f": omega_f, "psi": psi,
+    return {"vC": vC, "e3dot": e3dot, "vG": vC - (p.com_height - p.wheel_radius) * e3dot, "omega_f": omega_f,
+            "psi": psi,
             "spin": w1 - psi, "e1": e1, "e2": e2, "e3": e3}
 
 
-def machine_contact_force(state, p: MachineParams) -> dict:
+def machine_contact_force(state, ground, g, p: MachineArrays) -> dict:
     """The contact force per unit mass from eq. M18, F/m = d2G/dt2 + g z
     less the pitch constraint's force lambda f/m, with the same keys as :func:`deathsphere.physics.dynamics.contact_force`:
     ``force`` (3, ...), ``normal`` (the part pressing tyre and sphere
@@ -73,8 +75,8 @@ def machine_contact_force(state, p: MachineParams) -> dict:
     (3, ...) the tangential part, ``friction_magnitude`` and ``mu_required``
     (NaN where normal <= 0)."""
     state = np.asarray(state)
-    _, force, _ = machine_rhs(state, p, forces=True)
-    P = machine_geometry(state[0:3], state[3:6], p.a, p.t)[3]
+    _, force, _ = machine_rhs(state, ground, g, p, forces=True)
+    P = machine_geometry(state[0:3], state[3:6], p.wheel_radius, p.tyre_radius)[3]
     n = P / _norm(P)
     fn = _dot(force, n)
     friction = force - fn * n
@@ -87,7 +89,7 @@ def machine_contact_force(state, p: MachineParams) -> dict:
             "mu_required": mu}
 
 
-def machine_energy(state, p: MachineParams):
+def machine_energy(state, g, p: MachineArrays):
     """(energy, kinetic energy) per unit mass [J/kg] (beyond the paper):
     T = m |dG/dt|^2 / 2 + omega_f . I . omega_f / 2 + J s (e1 . omega_f) + J s^2 / 2
     (the locked inertia I holds the wheels' polar moments, so their spin
@@ -100,34 +102,35 @@ def machine_energy(state, p: MachineParams):
     om = rt["omega_f"]
     o1, o2, o3 = _dot(rt["e1"], om), _dot(rt["e2"], om), _dot(rt["e3"], om)
     s = rt["spin"]
-    rot = p.roll * o2 * o2 + p.pitch * o1 * o1 + p.yaw * o3 * o3 + p.spin * s * (2 * o1 + s)
+    rot = (p.roll_inertia * o2 * o2 + p.pitch_inertia * o1 * o1 + p.yaw_inertia * o3 * o3
+           + p.spin_inertia * s * (2 * o1 + s))
     kinetic = 0.5 * _dot(rt["vG"], rt["vG"]) + 0.5 * rot / p.mass
-    G = state[0:3] - (p.h - p.a) * rt["e3"]
-    return kinetic + p.g * G[2], kinetic
+    G = state[0:3] - (p.com_height - p.wheel_radius) * rt["e3"]
+    return kinetic + g * G[2], kinetic
 
 
-def machine_residuals(state, p: MachineParams) -> dict:
+def machine_residuals(state, ground, p: MachineArrays) -> dict:
     """The residuals of eq. M16's constraints (beyond the paper): ``axis``
     |E| - 1 [-], ``contact`` |Q| - (r - t) [m] (the crown point on the
     sphere of radius r - t)."""
     state = np.asarray(state)
-    Q = machine_geometry(state[0:3], state[3:6], p.a, p.t)[2]
-    return {"axis": _norm(state[3:6]) - 1.0, "contact": _norm(Q) - (p.r - p.t)}
+    Q = machine_geometry(state[0:3], state[3:6], p.wheel_radius, p.tyre_radius)[2]
+    return {"axis": _norm(state[3:6]) - 1.0, "contact": _norm(Q) - (ground.radius - p.tyre_radius)}
 
 
-def machine_project(state, p: MachineParams):
+def machine_project(state, ground, p: MachineArrays):
     """The state moved back onto eq. M16's constraints (beyond the paper): E normalised, then C
     shifted along Q/|Q| by (r - t) - |Q|, which keeps e3 and puts the crown
     point exactly on its sphere (as :func:`deathsphere.physics.dynamics.project`)."""
     state = np.array(state, dtype=np.result_type(state, float), copy=True)
     state[3:6] = state[3:6] / _norm(state[3:6])
-    Q = machine_geometry(state[0:3], state[3:6], p.a, p.t)[2]
+    Q = machine_geometry(state[0:3], state[3:6], p.wheel_radius, p.tyre_radius)[2]
     qn = _norm(Q)
-    state[0:3] = state[0:3] + ((p.r - p.t) - qn) * Q / qn
+    state[0:3] = state[0:3] + ((ground.radius - p.tyre_radius) - qn) * Q / qn
     return state
 
 
-def machine_start(theta, alpha, d_alpha, p: MachineParams):
+def machine_start(theta, alpha, d_alpha, ground, g, p: MachineArrays):
     """(state (9, ...), Omega) of a machine on the steady orbit (theta,
     alpha) (eq. M8, :func:`machine_orbit_state`) kicked by a tilt d_alpha
     [rad] about the direction of travel through the crown point Q: Q, hence
@@ -135,6 +138,6 @@ def machine_start(theta, alpha, d_alpha, p: MachineParams):
     wheel centre take the tilt alpha + d_alpha.  Contact holds exactly and
     rolling identically (dC/dt follows from w); the state is off the family
     of steady orbits, since w is that of alpha."""
-    X0, om = machine_orbit_state(theta, alpha, p)
-    Xk, _ = machine_orbit_state(theta, np.asarray(alpha) + d_alpha, p)
+    X0, om = machine_orbit_state(theta, alpha, ground, g, p)
+    Xk, _ = machine_orbit_state(theta, np.asarray(alpha) + d_alpha, ground, g, p)
     return np.concatenate((Xk[0:6], X0[6:9])), om

@@ -55,7 +55,7 @@ Angles are in degrees at this level, as on the command line (the kicks
 rad/s, forces per unit mass in m/s^2.
 """
 
-from deathsphere.simulation.machine_starts import machine_bodies, machine_starts
+from deathsphere.simulation.machine_starts import machine_run, machine_starts
 from deathsphere.simulation.runner import FRAMES, METHODS, Simulation, run_simulation
 from deathsphere.simulation.series import SERIES_COLUMNS, concat_tables
 from deathsphere.simulation.starts import Starts, horizontal_starts, vertical_starts
@@ -64,6 +64,6 @@ from deathsphere.simulation.summary import SUMMARY_COLUMNS
 
 __all__ = [
     "STATUSES", "RunStatus", "SERIES_COLUMNS", "SUMMARY_COLUMNS", "METHODS", "FRAMES",
-    "Starts", "horizontal_starts", "vertical_starts", "machine_starts", "machine_bodies", "Simulation",
+    "Starts", "horizontal_starts", "vertical_starts", "machine_starts", "machine_run", "Simulation",
     "run_simulation", "concat_tables",
 ]

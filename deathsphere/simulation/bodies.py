@@ -10,7 +10,7 @@ the energy, the constraints.  Two models:
   (parameters :class:`~deathsphere.physics.dynamics.BodyParams`);
 * :data:`MACHINE` -- a machine (motorcycle and rider), the exact equations
   M16-M19 of :mod:`deathsphere.physics.machine_dynamics` (parameters
-  :class:`MachineBodies`).
+  :class:`MachineRun`: the machines' arrays, the globe and gravity).
 
 Both states are (C, e1, w) in the same 9 rows, so the integrator's driver
 is the same.  :func:`model_of` picks the model from the parameters' type.
@@ -24,40 +24,63 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import machine_motion as mm
-from deathsphere.physics.machine_dynamics import MachineParams, machine_rhs
+from deathsphere.physics.ground import Sphere
+from deathsphere.physics.machine_arrays import MachineArrays
+from deathsphere.physics.machine_dynamics import machine_rhs
 from deathsphere.physics.vectors import dot as _dot
 
-__all__ = ["MachineBodies", "PAPER", "MACHINE", "model_of", "take", "concat_params"]
+__all__ = ["MachineRun", "PAPER", "MACHINE", "model_of", "take", "concat_params", "broadcast_params"]
 
 
-class MachineBodies(NamedTuple):
-    """Per-body parameters of simulated machines, arrays (n,): wheel radius
-    ``a``, tyre crown radius ``t``, sphere radius ``r``, centre-of-mass
-    height ``h``, ``g``, ``mass``, inertias ``roll``, ``pitch``, ``yaw``,
-    ``spin`` (docs/machine.md sec. 1), the head height ``head`` and the
-    machine's ``name`` (object)."""
+class MachineRun(NamedTuple):
+    """Per-body parameters of simulated machines: the machines' arrays
+    ``machine`` (:class:`~deathsphere.physics.machine_arrays.MachineArrays`,
+    (n,) each; docs/machine.md sec. 1), and the run's: the globe's radius
+    ``r`` [m] and gravity ``g`` [m/s^2] (n,), with each machine's ``name``
+    (object)."""
 
-    a: np.ndarray
-    t: np.ndarray
+    machine: MachineArrays
     r: np.ndarray
-    h: np.ndarray
     g: np.ndarray
-    mass: np.ndarray
-    roll: np.ndarray
-    pitch: np.ndarray
-    yaw: np.ndarray
-    spin: np.ndarray
-    head: np.ndarray
     name: np.ndarray
 
-    def physics(self) -> MachineParams:
-        """The :class:`MachineParams` of the equations of motion."""
-        return MachineParams(*self[:10])
+    @property
+    def a(self) -> np.ndarray:
+        """The wheel radius [m], by the name the runner shares with the paper's bodies."""
+        return self.machine.wheel_radius
+
+    @property
+    def ground(self) -> Sphere:
+        """The globe the machines roll in."""
+        return Sphere(self.r)
+
+
+def _broadcast(x, n: int):
+    if isinstance(x, tuple):
+        return type(x)(*(_broadcast(y, n) for y in x))
+    return np.broadcast_to(x, (n,))
+
+
+def broadcast_params(params, n: int):
+    """Per-body parameters (either kind) with every array broadcast to n bodies."""
+    return _broadcast(params, n)
+
+
+def _take(x, index):
+    if isinstance(x, tuple):
+        return type(x)(*(_take(y, index) for y in x))
+    return np.asarray(x)[index]
+
+
+def _concat(xs):
+    if isinstance(xs[0], tuple):
+        return type(xs[0])(*(_concat(ys) for ys in zip(*xs)))
+    return np.concatenate([np.asarray(x) for x in xs])
 
 
 def take(params, index):
     """The bodies ``index`` of per-body parameters (either kind; beyond the paper)."""
-    return type(params)(*(np.asarray(x)[index] for x in params))
+    return _take(params, index)
 
 
 def concat_params(parts):
@@ -65,7 +88,7 @@ def concat_params(parts):
     kinds = {type(p) for p in parts}
     if len(kinds) != 1:
         raise ValueError("one run simulates one kind of body (wheels and spheres, or machines)")
-    return type(parts[0])(*(np.concatenate([np.asarray(x) for x in xs]) for xs in zip(*parts)))
+    return _concat(list(parts))
 
 
 class _Paper:
@@ -153,10 +176,10 @@ class _Machine:
     summary_extras = ("machine", "min_head_clearance_m")
     extremes = (("min_head_clearance_m", np.fmin, "head_clearance_m"),)
 
-    def summary_echo(self, p: MachineBodies) -> dict:
+    def summary_echo(self, p: MachineRun) -> dict:
         return {"machine": np.asarray(p.name, dtype=object)}
 
-    def fall_note(self, p: MachineBodies, theta, alpha):
+    def fall_note(self, p: MachineRun, theta, alpha):
         """Words appended to the reason of a body whose run ended in a fall
         (contact lost, slips): why, when its steady orbit (theta, alpha
         [rad]) is unstable -- the linearisation's growth rate
@@ -167,13 +190,14 @@ class _Machine:
 
         n = int(np.size(theta))
         notes = np.full(n, "", dtype=object)
-        mp = MachineParams(*(np.broadcast_to(np.asarray(x, dtype=float), (n,)) for x in p.physics()))
+        mp = p.machine.flat(n)
         ok = np.isfinite(theta) & np.isfinite(alpha) & np.broadcast_to(yaw_is_determined(mp), (n,))
         if not ok.any():
             return notes
         idx = np.flatnonzero(ok)
+        r, g = (np.broadcast_to(np.asarray(x, dtype=float), (n,))[idx] for x in (p.r, p.g))
         st = machine_stability(np.asarray(theta, dtype=float)[idx], np.asarray(alpha, dtype=float)[idx],
-                               MachineParams(*(x[idx] for x in mp)))
+                               Sphere(r), g, mp.take(idx))
         for i, verdict, rate in zip(idx, st["verdict"], st["growth_rate"]):
             if verdict == Verdict.UNSTABLE:
                 notes[i] = (f"; its steady orbit is unstable (growth rate {rate:.3g} /s with the steering "
@@ -181,23 +205,23 @@ class _Machine:
                             "holds such a lap by steering")
         return notes
 
-    def ode(self, p: MachineBodies, frame_rate):
+    def ode(self, p: MachineRun, frame_rate):
         n = int(np.size(p.a))
-        mp = p.physics()
+        mp, ground, g = p.machine, p.ground, np.asarray(p.g)
         fr = np.broadcast_to(np.asarray(frame_rate, dtype=float), (n,))
-        mcol = MachineParams(*(np.asarray(x)[:, None] for x in mp))
+        mcol, gcol = mp.map(lambda x: np.asarray(x)[:, None]), g[:, None]
 
         def fun(t, y):
             y = np.asarray(y)
             if y.ndim == 1:
-                return machine_rhs(y.reshape(9, n), mp, fr).reshape(-1)
+                return machine_rhs(y.reshape(9, n), ground, g, mp, fr).reshape(-1)
             m = y.shape[1]
-            return machine_rhs(y.reshape(9, n, m), mcol, fr[:, None]).reshape(9 * n, m)
+            return machine_rhs(y.reshape(9, n, m), ground, gcol, mcol, fr[:, None]).reshape(9 * n, m)
 
         return fun
 
-    def rhs(self, y, p: MachineBodies):
-        return machine_rhs(y, p.physics())
+    def rhs(self, y, p: MachineRun):
+        return machine_rhs(y, p.ground, p.g, p.machine)
 
     def scalar_events(self, p):
         return None
@@ -207,42 +231,42 @@ class _Machine:
         vector path (:meth:`contact_force`) for a machine."""
         raise TypeError("a machine's events use its contact force, not the paper's scalar path")
 
-    def contact_force(self, y, p: MachineBodies):
-        return mm.machine_contact_force(y, p.physics())
+    def contact_force(self, y, p: MachineRun):
+        return mm.machine_contact_force(y, p.ground, p.g, p.machine)
 
-    def contact_point(self, y, p: MachineBodies):
-        return mm.machine_points(y, p.physics())["P"]
+    def contact_point(self, y, p: MachineRun):
+        return mm.machine_points(y, p.machine)["P"]
 
     def marker(self, p):
         return np.zeros(np.shape(p.a), dtype=bool)
 
-    def project(self, y, p: MachineBodies):
-        return mm.machine_project(y, p.physics())
+    def project(self, y, p: MachineRun):
+        return mm.machine_project(y, p.ground, p.machine)
 
-    def energy(self, y, p: MachineBodies):
-        return mm.machine_energy(y, p.physics())[0]
+    def energy(self, y, p: MachineRun):
+        return mm.machine_energy(y, p.g, p.machine)[0]
 
-    def energy_scale(self, y, p: MachineBodies, e0):
-        return np.abs(mm.machine_energy(y, p.physics())[1]) + p.g * p.r
+    def energy_scale(self, y, p: MachineRun, e0):
+        return np.abs(mm.machine_energy(y, p.g, p.machine)[1]) + p.g * p.r
 
-    def tilt_angle(self, y, p: MachineBodies, pvec, zp):
+    def tilt_angle(self, y, p: MachineRun, pvec, zp):
         """The tilt of the up-axis -e3 above the orbit plane (docs/machine.md
         sec. 1), on the paper's convention z' = -cos(alpha) e1 - sin(alpha) e3."""
-        pts = mm.machine_points(y, p.physics())
+        pts = mm.machine_points(y, p.machine)
         return np.arctan2(-np.sum(zp * pts["e3"], axis=0), -np.sum(zp * pts["e1"], axis=0))
 
     def centre_speed(self, y, pvec):
         """The wheel centre's speed |dC/dt| = |w x (P - C)| (eq. M16)."""
         return np.sqrt(np.sum(np.cross(y[6:9], pvec - y[0:3], axis=0) ** 2, axis=0))
 
-    def residual(self, y, p: MachineBodies):
-        res = mm.machine_residuals(y, p.physics())
+    def residual(self, y, p: MachineRun):
+        res = mm.machine_residuals(y, p.ground, p.machine)
         return np.maximum(np.abs(res["axis"]), np.abs(res["contact"]) / p.r)
 
-    def extras(self, y, p: MachineBodies) -> dict:
-        mp = p.physics()
+    def extras(self, y, p: MachineRun) -> dict:
+        mp = p.machine
         vG = mm.machine_rates(y, mp)["vG"]
-        H = mm.machine_points(y, mp, head=p.head)["H"]
+        H = mm.machine_points(y, mp)["H"]
         return {"v_cm_m_s": np.sqrt(_dot(vG, vG)), "head_clearance_m": p.r - np.sqrt(_dot(H, H))}
 
 
@@ -252,6 +276,6 @@ MACHINE = _Machine()
 
 def model_of(params):
     """The body model of per-body parameters (beyond the paper):
-    :data:`MACHINE` for :class:`MachineBodies` (docs/machine.md eqs.
+    :data:`MACHINE` for :class:`MachineRun` (docs/machine.md eqs.
     M16-M19), else :data:`PAPER` (eqs. 2-7b in general form)."""
-    return MACHINE if isinstance(params, MachineBodies) else PAPER
+    return MACHINE if isinstance(params, MachineRun) else PAPER

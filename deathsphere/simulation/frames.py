@@ -17,7 +17,7 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import machine_motion as mm
-from deathsphere.simulation.bodies import MACHINE, PAPER, model_of, take
+from deathsphere.simulation.bodies import MACHINE, PAPER, broadcast_params, model_of, take
 
 __all__ = ["frame_geometry", "machine_frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD",
            "MAX_MOVE_R"]
@@ -165,7 +165,7 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
     """What the 3-D view draws of one machine at its samples (beyond the
     paper; docs/machine.md eqs. M16-M18, docs/simulation.md "3-D view").
 
-    ``params`` is one body's :class:`~deathsphere.simulation.bodies.MachineBodies`.
+    ``params`` is one body's :class:`~deathsphere.simulation.bodies.MachineRun`.
     The keys of :func:`frame_geometry`, with the machine's meanings where
     they differ: ``centre`` the wheel centre C, ``e3`` the unit vector from
     C towards the crown (the up-axis is -e3), ``contact`` P, ``spin`` the
@@ -180,10 +180,10 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
     """
     t = np.asarray(t, dtype=np.float64)
     state = np.asarray(state, dtype=np.float64)
-    mp = params.physics()
-    pts = mm.machine_points(state, mp, head=params.head)
+    mp = params.machine
+    pts = mm.machine_points(state, mp)
     rates = mm.machine_rates(state, mp)
-    f = mm.machine_contact_force(state, mp)
+    f = mm.machine_contact_force(state, params.ground, params.g, mp)
     e1, e3 = pts["e1"], pts["e3"]
     rate = rates["spin"]
     steps = 0.5 * (rate[1:] + rate[:-1]) * np.diff(t)
@@ -238,7 +238,7 @@ def _integrate_between(t, state, params, n, batch=2000, model=PAPER):
         dt = np.diff(t)[k]
         y0 = state[:, k]
         scale_w = np.sqrt(_dot(y0[dyn.W], y0[dyn.W]) + np.asarray(params.g) / np.asarray(params.a))
-        pb = type(params)(*(np.broadcast_to(x, (nb,)) for x in params))
+        pb = broadcast_params(params, nb)
 
         def fun(tau, y):
             # each interval runs in its own time tau in [0, 1], t = t_k + tau dt_k
@@ -280,7 +280,7 @@ def refine_samples(t, state, params: dyn.BodyParams, *, max_turn=MAX_TURN_RAD, m
     state (9, M)), M >= N, increasing in time, holding the given samples
     (the last one, an event's, among them).  ``params``: the paper's body
     (:class:`~deathsphere.physics.dynamics.BodyParams`) or one machine
-    (:class:`~deathsphere.simulation.bodies.MachineBodies`).
+    (:class:`~deathsphere.simulation.bodies.MachineRun`).
     """
     model = model_of(params)
     if model is PAPER:

@@ -14,25 +14,28 @@ import math
 
 import numpy as np
 
+from deathsphere.physics.ground import Sphere
 from deathsphere.physics.machine import ride_orbit
+from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_motion import machine_start
-from deathsphere.simulation.bodies import MachineBodies, take
+from deathsphere.simulation.bodies import MachineRun, take
 from deathsphere.simulation.starts import Starts, start_status
 from deathsphere.simulation.status import RunStatus
 
-__all__ = ["machine_starts", "machine_bodies"]
+__all__ = ["machine_starts", "machine_run"]
 
 
-def machine_bodies(*, a, t, r, h, g, mass, inertia, spin, head, name, n: int = 1) -> MachineBodies:
-    """:class:`MachineBodies` of n identical machines from scalars
-    (``inertia`` = (I_roll, I_pitch, I_yaw) [kg m^2]; docs/machine.md
-    sec. 1, beyond the paper)."""
-    roll, pitch, yaw = inertia
-    numbers = [np.full(n, float(x)) for x in (a, t, r, h, g, mass, roll, pitch, yaw, spin, head)]
-    return MachineBodies(*numbers, np.full(n, name, dtype=object))
+def machine_run(machine, ground: Sphere, g: float, n: int = 1) -> MachineRun:
+    """:class:`MachineRun` of n copies of one machine record (or of its
+    :class:`~deathsphere.physics.machine_arrays.MachineArrays`) in the globe
+    ``ground`` under gravity ``g`` (docs/machine.md sec. 1, beyond the
+    paper)."""
+    arrays = machine_arrays(machine).map(lambda x: np.full(n, float(x)))
+    return MachineRun(arrays, np.full(n, float(ground.radius)), np.full(n, float(g)),
+                      np.full(n, getattr(machine, "name", "custom"), dtype=object))
 
 
-def machine_starts(bodies: MachineBodies, theta_deg, alpha_deg, *, perturb_deg=0.0, mu=math.inf,
+def machine_starts(bodies: MachineRun, theta_deg, alpha_deg, *, perturb_deg=0.0, mu=math.inf,
                    input_row=None) -> Starts:
     """Machines on steady horizontal orbits (beyond the paper; docs/machine.md
     eqs. M8, M16).
@@ -40,7 +43,7 @@ def machine_starts(bodies: MachineBodies, theta_deg, alpha_deg, *, perturb_deg=0
     Parameters (one body per element of ``bodies``; the angles broadcast
     against them)
     ----------
-    bodies : :class:`MachineBodies` (:func:`machine_bodies`)
+    bodies : :class:`~deathsphere.simulation.bodies.MachineRun` (:func:`machine_run`)
     theta_deg : [deg]  polar angle of the contact point (0..180)
     alpha_deg : [deg]  tilt of the up-axis above the orbit plane (lean from
         the vertical = 90 - alpha)
@@ -65,13 +68,14 @@ def machine_starts(bodies: MachineBodies, theta_deg, alpha_deg, *, perturb_deg=0
         raise ValueError("alpha and perturb_deg must be finite (degrees)")
     th, al, d_al = np.deg2rad(th_d), np.deg2rad(al_d), np.deg2rad(kick)
     b = bodies
-    orb = ride_orbit(th, al, b.r, b.g, b.mass, b.h, b.a, b.t, b.pitch, b.yaw, b.spin, b.head)
+    orb = ride_orbit(th, al, b.ground, b.g, b.machine)
     status, reason = start_status(orb)
     ok = status == RunStatus.PENDING
     rate = np.where(ok, orb["omega"], np.nan)
     state = np.full((9, n), np.nan)
     if ok.any():
-        state[:, ok], _ = machine_start(th[ok], al[ok], d_al[ok], take(b, ok).physics())
+        one = take(b, ok)
+        state[:, ok], _ = machine_start(th[ok], al[ok], d_al[ok], one.ground, one.g, one.machine)
     period = np.where(ok, 2 * np.pi / np.where(ok, rate, 1.0), np.nan)
     rows = (np.arange(1, n + 1, dtype=np.int64) if input_row is None
             else np.broadcast_to(np.asarray(input_row, dtype=np.int64), (n,)).copy())

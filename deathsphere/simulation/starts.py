@@ -28,7 +28,7 @@ from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import REASON_TEXT, Status
-from deathsphere.simulation.bodies import MachineBodies, concat_params, take
+from deathsphere.simulation.bodies import MachineRun, concat_params, take
 from deathsphere.simulation.status import NO_FIT_VERTICAL_REASON, RunStatus
 
 __all__ = ["Starts", "horizontal_starts", "vertical_starts", "VERTICAL_FRAME", "wheel_geometry", "wheel_start",
@@ -57,7 +57,7 @@ class Starts:
     """
 
     state: np.ndarray
-    params: dyn.BodyParams | MachineBodies
+    params: dyn.BodyParams | MachineRun
     frame: np.ndarray
     input_row: np.ndarray
     body: np.ndarray

@@ -7,7 +7,8 @@ import pytest
 from scipy.integrate import quad, solve_ivp
 
 from deathsphere.physics import fall
-from deathsphere.physics.machine import vertical_loop
+from deathsphere.physics.ground import Sphere
+from machine_calls import arrays, loop as vertical_loop
 
 G = 9.81
 R = 2.4384                                # a 16-foot globe
@@ -36,7 +37,7 @@ def test_a_stall_above_the_equator_falls_straight_down():
     rho_g = R * np.sin(theta) - 0.6                  # the centre of mass 0.6 m in from the wall
     x0 = np.stack([rho_g * np.cos(phi), rho_g * np.sin(phi), R * np.cos(theta)])
     v_before = np.stack([-np.sin(phi), np.cos(phi), np.zeros(4)]) * 9.0
-    out = fall.ballistic_landing(x0, fall.drop_velocity(v_before, np.zeros(4)), R, G)
+    out = fall.ballistic_landing(x0, fall.drop_velocity(v_before, np.zeros(4)), Sphere(R), G)
     z_floor = -np.sqrt(R * R - rho_g * rho_g)        # where the vertical through G meets the globe
     np.testing.assert_allclose(out["x_land"][:2], x0[:2], atol=1e-12)
     np.testing.assert_allclose(out["x_land"][2], z_floor, rtol=1e-12)
@@ -47,7 +48,7 @@ def test_a_stall_above_the_equator_falls_straight_down():
 
 def test_the_parabola_conserves_energy_and_lands_on_the_globe():
     x0, v0 = random_inside(2000, 1)
-    out = fall.ballistic_landing(x0, v0, R, G)
+    out = fall.ballistic_landing(x0, v0, Sphere(R), G)
     xl = out["x_land"]
     np.testing.assert_allclose(np.linalg.norm(xl, axis=0), R, rtol=1e-12)
     speed2 = np.sum(v0 * v0, axis=0) + 2 * G * (x0[2] - xl[2])
@@ -58,7 +59,7 @@ def test_the_parabola_conserves_energy_and_lands_on_the_globe():
 
 def test_the_landing_is_the_first_time_the_path_reaches_the_globe():
     x0, v0 = random_inside(500, 2)
-    out = fall.ballistic_landing(x0, v0, R, G)
+    out = fall.ballistic_landing(x0, v0, Sphere(R), G)
     t = np.linspace(0.0, 1.0, 1001)[:-1, None] * out["t_land"][None]
     assert (np.linalg.norm(path(x0, v0, t), axis=0) < R).all()   # brute force: inside until then
 
@@ -67,7 +68,7 @@ def test_a_path_that_leaves_the_globe_briefly_lands_at_the_first_crossing():
     # from the floor's centre straight up, nearly to the top: a miss; slightly more: a hit
     x0 = np.zeros((3, 2))
     v0 = np.array([[0.0, 0.0], [0.0, 0.0], [np.sqrt(2 * G * R) * 0.999, np.sqrt(2 * G * R) * 1.001]])
-    out = fall.ballistic_landing(x0, v0, R, G)
+    out = fall.ballistic_landing(x0, v0, Sphere(R), G)
     np.testing.assert_allclose(out["x_land"][2], [-R, R], rtol=1e-12)
     vz = v0[2, 1]
     np.testing.assert_allclose(out["t_land"][1], (vz - np.sqrt(vz * vz - 2 * G * R)) / G, rtol=1e-10)
@@ -77,7 +78,7 @@ def test_a_start_on_the_surface_moving_inward_does_not_land_at_once():
     u = 3.0
     x0 = np.array([[0.0, R, R], [0.0, 0.0, 0.0], [R, 0.0, 0.0]])
     v0 = np.array([[0.0, -u, u], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
-    out = fall.ballistic_landing(x0, v0, R, G)
+    out = fall.ballistic_landing(x0, v0, Sphere(R), G)
     # from the top at rest: down the diameter, 2R = g t^2 / 2
     assert out["t_land"][0] == pytest.approx(2 * np.sqrt(R / G), rel=1e-12)
     # from the equator inwards: (R - u t)^2 + g^2 t^4 / 4 = R^2, t != 0: g^2 t^3/4 + u^2 t - 2 R u = 0
@@ -89,14 +90,14 @@ def test_a_start_on_the_surface_moving_inward_does_not_land_at_once():
 
 def test_a_start_outside_the_globe_or_a_bad_row_is_marked_not_flown():
     x0 = np.array([[0.0, np.nan, 0.0], [0.0, 0.0, 0.0], [1.01 * R, 0.0, 0.0]])
-    out = fall.ballistic_landing(x0, np.zeros((3, 3)), R, np.array([G, G, 0.0]))
+    out = fall.ballistic_landing(x0, np.zeros((3, 3)), Sphere(R), np.array([G, G, 0.0]))
     np.testing.assert_array_equal(out["status"], [fall.STARTS_OUTSIDE, fall.NOT_FLOWN, fall.NOT_FLOWN])
     assert np.isnan(out["t_land"]).all() and np.isnan(out["x_land"]).all()
 
 
 def test_a_hundred_thousand_falls_in_one_call():
     x0, v0 = random_inside(100_000, 3)
-    out = fall.ballistic_landing(x0, v0, R, G)
+    out = fall.ballistic_landing(x0, v0, Sphere(R), G)
     assert out["t_land"].shape == (100_000,) and np.isfinite(out["t_land"]).all()
     assert (out["t_land"] > 0).all()
     np.testing.assert_allclose(np.linalg.norm(out["x_land"], axis=0), R, rtol=1e-12)
@@ -124,7 +125,7 @@ def test_a_point_mass_leaves_where_g_cos_psi_is_v2_over_rho_and_lands_3psi_past_
     v = rho * out["psi_dot_lost"]
     np.testing.assert_allclose(G * cos_psi, v * v / rho, rtol=1e-10)
     x, vel = fall.loop_state(out["psi_lost"], out["psi_dot_lost"], rho, 0.0)
-    land = fall.ballistic_landing(x, vel, R, G)
+    land = fall.ballistic_landing(x, vel, Sphere(R), G)
     past_top = np.arctan2(land["x_land"][0], land["x_land"][2])     # from the top, along the travel
     np.testing.assert_allclose(np.mod(past_top - 3 * psi + np.pi, 2 * np.pi) - np.pi, 0.0, atol=1e-9)
     # the flight lasts 4 v sin(psi) / g (the osculating parabola's other root)
@@ -274,14 +275,18 @@ MACHINE = dict(mass=190.0, h=0.55, a=0.3, t=0.05, inertia_pitch=35.0, inertia_ya
 
 
 def test_a_horizontal_lane_holds_where_a_scan_of_every_tilt_finds_one():
-    from deathsphere.physics.machine import fit_window, ride_orbit
+    from machine_calls import orbit as ride_orbit
+
+    from deathsphere.physics.machine import fit_window
 
     theta = np.radians([60.0, 90.0, 100.0, 120.0])
     speeds = np.array([0.0, 2.0, 4.0, 6.0, 9.0, 13.0])
     th, v = (x.ravel() for x in np.meshgrid(theta, speeds, indexing="ij"))
-    out = fall.horizontal_holds(th, v, 0.2, R, G, mu=0.9, **MACHINE)
+    out = fall.horizontal_holds(th, v, 0.2, Sphere(R), G, arrays(MACHINE["mass"], MACHINE["h"], MACHINE["a"],
+                                MACHINE["t"], MACHINE["inertia_pitch"], MACHINE["inertia_yaw"],
+                                MACHINE["spin_inertia"], MACHINE["head"]), mu=0.9)
     # brute force: a sign change of v_cm - v between neighbouring tilts that both hold
-    lo, hi = fit_window(th, R, MACHINE["a"], MACHINE["t"])
+    lo, hi = fit_window(th, Sphere(R), arrays(MACHINE["mass"], MACHINE["h"], MACHINE["a"], MACHINE["t"]))
     alpha = lo[:, None] + (hi - lo)[:, None] * np.linspace(1e-6, 1 - 1e-6, 20001)[None]
     orb = ride_orbit(th[:, None], alpha, R, G, head=MACHINE["head"], mu=0.9,
                      **{k: x for k, x in MACHINE.items() if k != "head"})

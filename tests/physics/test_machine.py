@@ -11,7 +11,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from machine_calls import loop as vertical_loop
+from machine_calls import orbit as ride_orbit
+from machine_calls import tilts as solve_alpha_for_speed
 from deathsphere.physics.region import solve_alpha
 from deathsphere.physics.status import Reason, Status
 from deathsphere.physics.wheel import horizontal_orbit
@@ -257,7 +259,6 @@ def test_singular_inputs_give_statuses_not_warnings():
 
 def test_the_papers_wheel_loops_like_vertical():
     from deathsphere.api import vertical
-    from deathsphere.physics.machine import vertical_loop
 
     a, r, k, m = 0.3, 3.0, 0.5, 2.0
     i = k * m * a * a
@@ -274,7 +275,6 @@ def test_the_papers_wheel_loops_like_vertical():
 def test_a_point_mass_loops_with_v_top_squared_g_r_minus_h():
     """The task's limit: a point mass on massless wheels needs v^2 >= g (r - h)
     at the top of a great circle; energy alone gives v_b^2 = v_t^2 + 4 g (r - h)."""
-    from deathsphere.physics.machine import vertical_loop
 
     r, h = 2.4384, 0.8
     res = vertical_loop(np.pi / 2, [4.0, 6.0], r, G, 100.0, h, 0.3, 0.0, 0.0, 0.0, 1.6)
@@ -284,7 +284,6 @@ def test_a_point_mass_loops_with_v_top_squared_g_r_minus_h():
 
 
 def test_a_round_tyre_only_loops_on_a_great_circle():
-    from deathsphere.physics.machine import vertical_loop
 
     res = vertical_loop(np.radians([90.0, 70.0]), 8.0, 2.45, G, 165.0, 0.8, 0.3, 0.045, 40.0, 0.8, 1.65)
     assert res["status"].tolist() == [Status.OK, Status.NO_ORBIT]
@@ -295,7 +294,6 @@ def test_the_papers_wheel_needs_the_friction_of_vertical():
     """The friction needed round the loop (eq. M24) for the paper's wheel is
     `vertical`'s mu_required and worst point (eqs. 27-28b), and its slip verdict."""
     from deathsphere.api import vertical
-    from deathsphere.physics.machine import vertical_loop
 
     a, r, k, m = 0.3, 3.0, 0.5, 2.0
     i = k * m * a * a
@@ -335,7 +333,6 @@ def _loop_by_newton(theta, v_top, r, m, h, a, ip, js, n=20001):
     (90.0, 6.0, 0.3, 0.3, 0.2, 0.19),          # a small rider-less wheel: large friction along the path
 ])
 def test_the_loops_friction_and_load_against_newton(theta, v_top, h, a, ip, js):
-    from deathsphere.physics.machine import vertical_loop
 
     r, m = 2.4384, 100.0
     mu, load = _loop_by_newton(np.radians(theta), v_top, r, m, h, a, ip, js)

@@ -6,16 +6,16 @@ equations for any machine."""
 import numpy as np
 import pytest
 
-from deathsphere.api.machines import as_machine
+from machine_calls import Params as MachineParams
+from machine_calls import jacobian as machine_jacobian
+from machine_calls import orbit as ride_orbit
+from machine_calls import orbit_state as machine_orbit_state
+from machine_calls import rhs as machine_rhs
+from machine_calls import stability as machine_stability
+from machine_calls import tilts as solve_alpha_for_speed
+
 from deathsphere.physics import dynamics as dyn
-from deathsphere.physics.machine import ride_orbit
-from deathsphere.physics.machine_dynamics import (
-    MachineParams,
-    machine_jacobian,
-    machine_orbit_state,
-    machine_rhs,
-    machine_stability,
-)
+from deathsphere.records.machine_presets import as_machine
 from deathsphere.physics.stability import wheel_stability
 from deathsphere.physics.stability.verdict import Verdict
 
@@ -96,7 +96,7 @@ def test_the_reduced_jacobian_is_reversible(machine):
     vanish (lambda -> -lambda): checked on K itself, and the eigenvalues
     against a general eigenvalue solver."""
     m = as_machine(machine)
-    p = MachineParams(m.a, m.t, 2.4384, m.h, G, m.mass, *m.inertia, m.spin_inertia)
+    p = MachineParams(m.wheel_radius, m.tyre_radius, 2.4384, m.com_height, G, m.mass, *m.inertia, m.spin_inertia)
     th, al = np.meshgrid(np.radians(np.linspace(20, 170, 16)), np.radians(np.linspace(-20, 70, 16)))
     K, scale, _ = machine_jacobian(th.ravel(), al.ravel(), p)
     known = np.isfinite(scale)
@@ -175,7 +175,9 @@ def test_a_narrow_stable_band_on_the_equator_is_stable_in_the_full_equations():
 def _energy_run(theta_deg, alpha_deg, p, duration, kick):
     from scipy.integrate import solve_ivp
 
-    from deathsphere.physics.machine_motion import machine_energy, machine_residuals, machine_start
+    from machine_calls import energy as machine_energy
+    from machine_calls import residuals as machine_residuals
+    from machine_calls import start as machine_start
 
     X, om = machine_start(np.radians([theta_deg]), np.radians([alpha_deg]), np.radians(kick), p)
     sol = solve_ivp(lambda t, y: machine_rhs(y[:, None], p)[:, 0], (0, duration), X[:, 0], rtol=1e-10,
@@ -210,7 +212,8 @@ def test_the_pitch_reaction_does_no_work_on_any_admissible_motion():
     reaction does no work by rolling, the pitch constraint's by being
     ideal, gravity is in the energy.  Checked by a complex-step derivative
     of the energy along the equations' own rates."""
-    from deathsphere.physics.machine_motion import machine_energy, machine_project
+    from machine_calls import energy as machine_energy
+    from machine_calls import project as machine_project
 
     rng = np.random.default_rng(11)
     n = 200
@@ -253,8 +256,6 @@ def test_flat_ground_capsize_mode(v):
     the lean mode of the single-contact machine is docs/machine.md eq. M20:
     (I_roll + m h^2) lambda^2 = m g h - (m h v + J v/a) J v / (a I_yaw):
     capsize (real lambda) below the critical speed, a wobble above."""
-    from deathsphere.physics.machine import solve_alpha_for_speed
-
     m, h, a, t, i_r, i_p, i_y, j = 165.0, 0.8, 0.3, 0.0, 25.0, 40.0, 20.0, 0.8
     # the turn wide enough that the lean (v^2 / g R) stays below 1 %: M20 is upright running's
     r, R = 1e6, max(2000.0, 12.0 * v * v)

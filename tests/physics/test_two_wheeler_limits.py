@@ -14,8 +14,9 @@ import dataclasses
 
 import numpy as np
 
-from deathsphere.physics.machine import ride_orbit
-from deathsphere.physics.machine_dynamics import MachineParams, machine_stability
+from machine_calls import Params as MachineParams
+from machine_calls import orbit as ride_orbit
+from machine_calls import stability as machine_stability
 from deathsphere.physics.two_wheeler import stability, steady
 from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle

@@ -13,7 +13,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from deathsphere.physics.machine import ride_orbit
+from machine_calls import orbit as ride_orbit
 from deathsphere.physics.two_wheeler import stability, steady
 from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle

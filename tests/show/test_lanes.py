@@ -56,3 +56,18 @@ def test_the_horizontal_lane_is_rides_orbit():
     assert np.allclose(np.linalg.norm(kin["v_com"], axis=0), mine[0]["v_cm_m_s"])
     assert np.allclose(np.linalg.norm(kin["head"], axis=0), R - mine[0]["head_clearance_m"])
     assert np.allclose(kin["contact"][2], 2.0 - R)
+
+
+def test_lanes_hold_no_globe_and_no_gravity_and_take_every_machine_at_once():
+    plan = read_plan({"globe": {"radius": R, "mu": 0.9, "max_g": 8}, "rider": [
+        {"name": "A", "lane": "horizontal", "height": "2.0m", "speed": "30km/h", "machine": "stunt125"},
+        {"name": "B", "lane": "horizontal", "height": "1.2m", "speed": "20km/h", "machine": "benchmark-bicycle"},
+        {"name": "C", "lane": "vertical", "v_top": "6.5m/s", "machine": "stunt125"}]})
+    lanes = build_lanes(plan)
+    for lane in lanes:
+        assert not hasattr(lane, "r") and not hasattr(lane, "g")
+    # each horizontal lane is the one ride gives that machine
+    for lane, height, kmh in zip(lanes[:2], (2.0, 1.2), (30, 20)):
+        rows = deathsphere.ride(height=height, speed=kmh / 3.6, machine=lane.machine, r=R, mu=0.9, max_g=8,
+                                stability=False)
+        assert any(r["alpha_deg"] == lane.orbit["alpha_deg"] and r["period_s"] == lane.period_s for r in rows)

@@ -33,7 +33,7 @@ def test_two_riders_one_lane_phases_apart_closed_form(delta):
     # both segments in meridian planes delta apart, congruent: with rho1, rho2 >= rho_min, the distance^2
     # (rho1 - rho2)^2 + (z1 - z2)^2 + 4 rho1 rho2 sin^2(delta/2) is least at the point nearest the axis on both
     rho_contact = R * math.sin(lane.theta)
-    rho_head = (R - m.t) * math.sin(lane.theta) - (m.head - m.t) * math.cos(alpha)
+    rho_head = (R - m.tyre_radius) * math.sin(lane.theta) - (m.head_height - m.tyre_radius) * math.cos(alpha)
     assert any(r["alpha_deg"] == pytest.approx(math.degrees(alpha)) for r in row)
     expect = 2 * min(rho_contact, rho_head) * math.sin(math.radians(delta) / 2) - m.width
     got = act.pairs[0]

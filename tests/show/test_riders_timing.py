@@ -60,7 +60,8 @@ def test_drift_of_two_riders_in_one_lane_closed_form():
     act = _act(_h("A", 0), _h("B", 100))
     lane = act.lanes[0]
     m = lane.machine
-    rho = min(R * math.sin(lane.theta), (R - m.t) * math.sin(lane.theta) - (m.head - m.t) * math.cos(lane.alpha))
+    rho = min(R * math.sin(lane.theta),
+              (R - m.tyre_radius) * math.sin(lane.theta) - (m.head_height - m.tyre_radius) * math.cos(lane.alpha))
     # the chord 2 rho sin(delta/2) - width reaches 0.15 m at delta*; A 1 % off closes the 100 deg gap at 0.01 Omega
     delta = 2 * math.asin((0.15 + m.width) / (2 * rho))
     expect = (math.radians(100) - delta) / (0.01 * abs(lane.rate))

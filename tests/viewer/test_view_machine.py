@@ -40,8 +40,8 @@ def test_the_page_holds_the_machines_frame_and_rider(machine_page):
     com, head = decode_array(point_set(body, "com"), rows=3), decode_array(point_set(body, "head"), rows=3)
     assert com.shape == head.shape == centre.shape == (3, t.size) and t.size >= len(series)
     # eq. M2: G = C - (h - a) e3, H = Q - (head - t) e3 with Q = C + (a - t) e3 (float32 storage)
-    np.testing.assert_allclose(com, centre - (STUNT.h - STUNT.a) * e3, atol=1e-5)
-    np.testing.assert_allclose(head, centre - (STUNT.head - STUNT.a) * e3, atol=1e-5)
+    np.testing.assert_allclose(com, centre - (STUNT.com_height - STUNT.wheel_radius) * e3, atol=1e-5)
+    np.testing.assert_allclose(head, centre - (STUNT.head_height - STUNT.wheel_radius) * e3, atol=1e-5)
     # the contact, the hub and the head on one line (the up-axis), in that order
     up = head - contact
     along = np.sum((centre - contact) * up, axis=0) / np.sum(up * up, axis=0)
