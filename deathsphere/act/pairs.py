@@ -26,6 +26,7 @@ from fractions import Fraction
 import numpy as np
 
 from deathsphere.act.envelope import clearance, segment_distance
+from deathsphere.act.lipschitz import refine_intervals
 
 #: Every least clearance is found to this [m].
 TOLERANCE_M = 1e-3
@@ -33,8 +34,6 @@ TOLERANCE_M = 1e-3
 TIE_M = 1e-9
 #: The first samples are this far apart in clearance (L dt) [m].
 FIRST_STEP_M = 0.05
-#: Each interval kept is split into this many.
-SPLIT = 8
 #: Periods are commensurate when n_i T_i agree to this relative tolerance
 #: for whole numbers of laps n_i of at most :data:`MAX_LAPS`.
 COMMENSURATE_RTOL = 1e-3
@@ -62,21 +61,14 @@ def refine(f, x, c, lipschitz: float, tol: float = TOLERANCE_M):
     at the evenly spaced x (branch and bound: module docstring)."""
     k = int(np.argmax(c <= c.min() + TIE_M))               # the first of equal least samples
     best, where = float(c[k]), float(x[k])
-    left, width, cl, cr = x[:-1], float(x[1] - x[0]), c[:-1], c[1:]
-    while left.size:
-        keep = 0.5 * (cl + cr) - 0.5 * lipschitz * width < best - tol
-        if not keep.any():
-            break
-        left, cl, cr = left[keep], cl[keep], cr[keep]
-        width /= SPLIT
-        inner = left[:, None] + width * np.arange(1, SPLIT)
-        ci = f(inner.reshape(-1)).reshape(inner.shape)
+
+    def below_best(left, bound):            # reads the least found so far, round by round
+        return bound < best - tol
+
+    for inner, ci in refine_intervals(f, x, c, float(x[1] - x[0]), lipschitz, below_best):
         k = np.unravel_index(int(np.argmin(ci)), ci.shape)
         if ci[k] < best - TIE_M:
             best, where = float(ci[k]), float(inner[k])
-        values = np.concatenate((cl[:, None], ci, cr[:, None]), axis=1)
-        left = (left[:, None] + width * np.arange(SPLIT)).reshape(-1)
-        cl, cr = values[:, :-1].reshape(-1), values[:, 1:].reshape(-1)
     return best, where
 
 

@@ -32,7 +32,8 @@ from dataclasses import replace
 import numpy as np
 
 from deathsphere.act.envelope import segment_distance
-from deathsphere.act.pairs import SAME_RATE_RTOL, SPLIT, TOLERANCE_M, is_geometric
+from deathsphere.act.lipschitz import refine_intervals
+from deathsphere.act.pairs import SAME_RATE_RTOL, TOLERANCE_M, is_geometric
 
 #: Candidate phases per lap of a vertical rider (and samples per lap of the act).
 PHASE_STEPS = 180
@@ -128,21 +129,14 @@ def first_below(f, lo: float, hi: float, lipschitz: float, level: float, tol: fl
     c = f(x)
     below = np.flatnonzero(c < level)
     hit = float(x[below[0]]) if below.size else math.inf
-    left, width, cl, cr = x[:-1], (hi - lo) / n, c[:-1], c[1:]
-    while left.size:
-        keep = (0.5 * (cl + cr) - 0.5 * lipschitz * width < level - tol) & (left < hit)
-        if not keep.any():
-            break
-        left, cl, cr = left[keep], cl[keep], cr[keep]
-        width /= SPLIT
-        inner = left[:, None] + width * np.arange(1, SPLIT)
-        ci = f(inner.reshape(-1)).reshape(inner.shape)
+
+    def before_hit(left, bound):            # reads the first time found so far, round by round
+        return (bound < level - tol) & (left < hit)
+
+    for inner, ci in refine_intervals(f, x, c, (hi - lo) / n, lipschitz, before_hit):
         under = ci < level
         if under.any():
             hit = min(hit, float(inner[under].min()))
-        values = np.concatenate((cl[:, None], ci, cr[:, None]), axis=1)
-        left = (left[:, None] + width * np.arange(SPLIT)).reshape(-1)
-        cl, cr = values[:, :-1].reshape(-1), values[:, 1:].reshape(-1)
     return hit
 
 
