@@ -120,7 +120,9 @@ def _sorted_eigenvalues(values):
 def _eig_cols(values, k) -> dict:
     cols = {}
     for i in range(k):
-        cols[f"eig_{i + 1}_re"], cols[f"eig_{i + 1}_im"] = values[:, i].real.copy(), values[:, i].imag.copy()
+        re = values[:, i].real.copy()
+        # no eigenvalue (no turn, not analysed) is empty in both parts: nan + 0j has an imaginary part 0
+        cols[f"eig_{i + 1}_re"], cols[f"eig_{i + 1}_im"] = re, np.where(np.isnan(re), np.nan, values[:, i].imag)
     return cols
 
 
@@ -128,6 +130,8 @@ def _values(name: str, value, limit: int, option: str | None = None) -> np.ndarr
     """The values asked for (values, ranges, units) as one flat array,
     refused before they are built when there are more than ``limit``."""
     option = option or name
+    if isinstance(value, (list, tuple, np.ndarray)) and np.size(value) == 0:
+        return np.empty(0)      # none asked for: no row, as deathsphere.orbit answers an empty list
     try:
         axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
     except ParameterError as exc:
@@ -162,10 +166,11 @@ def _straight(t: TwoWheeler, g: float, speed, steer: str, summary: bool) -> Tabl
     verdicts, growth = stability.verdict(values)
     if summary:
         ok = verdicts == "stable"
+        high = max(10.0, float(v.max(initial=0.0)))
         return Table({"machine": np.array([t.name], dtype=object), "g_m_s2": np.array([g]),
                       # a motorcycle's speeds lie beyond a bicycle's 10 m/s: searched up to the fastest asked
-                      "weave_speed_m_s": np.array([linear.weave_speed(m, high=max(10.0, float(v.max())))]),
-                      "capsize_speed_m_s": np.array([linear.capsize_speed(m, high=max(10.0, float(v.max())))]),
+                      "weave_speed_m_s": np.array([linear.weave_speed(m, high=high)]),
+                      "capsize_speed_m_s": np.array([linear.capsize_speed(m, high=high)]),
                       "speeds_tried": np.array([v.size], dtype=np.int64),
                       "speeds_stable": np.array([int(ok.sum())], dtype=np.int64)})
     n = v.size
@@ -376,7 +381,7 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     counts = found.sum(axis=1)
     req = np.repeat(np.arange(lanes.size), np.maximum(counts, 1))
     # each request's turns in order of lean, or its one row saying why none
-    slot = np.concatenate([np.flatnonzero(f) if f.any() else [0] for f in found]).astype(np.int64)
+    slot = np.concatenate([np.empty(0)] + [np.flatnonzero(f) if f.any() else [0] for f in found]).astype(np.int64)
     has = found[req, slot]
     n = req.size
 
@@ -419,11 +424,12 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     status[rear | front], status[over] = "slips", "over_g"
     reason[rear & ~front], reason[front & ~rear] = SLIP_REASONS["rear"], SLIP_REASONS["front"]
     reason[rear & front], reason[over] = SLIP_REASONS["both"], OVER_G_REASON
-    # what the request fixes is echoed as asked, not as recomputed (docs/contract.md)
+    # what the request fixes is echoed as asked, not as recomputed, in every row, a turn found or not: two
+    # requests that find none still differ (docs/contract.md, "Inputs are echoed as given")
     if by_torque:
-        cols["steer_torque_n_m"] = np.where(has, values[req], np.nan)
+        cols["steer_torque_n_m"] = values[req]
     else:
-        cols["v_rear_m_s"] = cols["v_contact_m_s"] = np.where(has, values[req], np.nan)
+        cols["v_rear_m_s"] = cols["v_contact_m_s"] = values[req]
     k = tw_stability.eigenvalue_count(globe, steer)
     if request.stability:
         ev = np.where(has[:, None], out[f"eigenvalues_{steer}"][req, slot], np.nan + 0j)
@@ -535,8 +541,10 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
     MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
     <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
     steer, steer_torque = steer_request(steer, steer_torque)
-    if flat:
+    if checked_flag("flat", flat):
         t, steer, g = _machine(machine, steer, g)
+        summary = checked_flag("summary", summary)
+        checked_flag("stability", stability)    # straight running's eigenvalues are its table: always given
         if theta is not None or height is not None or diameter is not None or r is not R:
             raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
                                  "or diameter)", "flat")
