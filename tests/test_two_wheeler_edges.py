@@ -86,3 +86,69 @@ def test_simulate_booleans_are_booleans(kwargs, name):
     with pytest.raises(ParameterError) as err:
         simulate_two_wheeler("benchmark-bicycle", speed=5.0, **({"flat": True} | kwargs))
     assert err.value.param == name
+
+
+BENCHMARK = TWO_WHEELERS["benchmark-bicycle"].benchmark_values()
+
+
+@pytest.mark.parametrize("key, value, words", [
+    ("mB", 1e300, "mB (rear frame mass) must be 0..10000 kg (got 1e+300)"),
+    # a million tonnes was accepted: no two-wheeler weighs that
+    ("mB", 1e9, "mB (rear frame mass) must be 0..10000 kg (got 1000000000)"),
+    ("IBxx", 1e7, "IBxx (rear frame inertia xx) must be 0..100000 kg m^2"),
+    ("w", 1e6, "w (wheel base) must be 0.05..10 m"),
+    ("rF", 1e-6, "rF (front wheel radius) must be 0.01..3 m"),
+    ("xH", 1e6, "xH (front frame mass centre x) must be -10..10 m"),
+])
+def test_a_physically_absurd_parameter_is_refused_naming_it(key, value, words):
+    with pytest.raises(ParameterError) as err:
+        TwoWheeler(**(BENCHMARK | {key: value}))
+    assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_an_absurd_file_key_is_refused_naming_it(tmp_path):
+    from deathsphere.api.two_wheeler_files import two_wheeler_file
+
+    path = tmp_path / "heavy.toml"
+    path.write_text('base = "benchmark-bicycle"\nmB = 1e300\n')
+    with pytest.raises(ParameterError) as err:
+        two_wheeler_file(path)
+    assert "heavy.toml" in str(err.value) and "mB (rear frame mass)" in str(err.value)
+
+
+@pytest.mark.parametrize("corner", [
+    dict(mB=1e4, IBxx=1e5, IByy=1e5, IBzz=1e5, IBxz=0.0),
+    dict(mB=1e4, IBxx=0.0, IByy=0.0, IBzz=0.0, IBxz=0.0, mH=0.0, IHxx=0.0, IHyy=0.0, IHzz=0.0, IHxz=0.0),
+    dict(w=10.0, rR=3.0, rF=3.0, xB=5.0, zB=-10.0, xH=9.0, zH=-5.0),
+    dict(w=0.05, rR=0.01, rF=0.01, xB=0.01, zB=-0.02, xH=0.04, zH=-0.02, c=0.001),
+])
+def test_the_bounds_corners_give_numbers_not_warnings(corner):
+    # the suite turns RuntimeWarning into an error: none may leak at any corner the bounds allow
+    t = TwoWheeler(**(BENCHMARK | corner))
+    table = deathsphere.ride(machine=t, flat=True, speed=[0.0, 1.0, 10.0, 100.0])
+    assert np.isfinite(table["growth_rate_1_s"]).all()
+
+
+@pytest.mark.parametrize("change, words", [
+    # a 2 m front wheel on the benchmark's 1.02 m wheel base: the rims cross
+    (dict(rF=1.0), "the wheels overlap"),
+    (dict(rF=2.0), "the wheels overlap"),
+    # z is down: +0.9 m is below the ground
+    (dict(zB=0.9), "zB = 0.9 m puts the rear frame's mass centre at or below the ground"),
+    (dict(zH=0.0), "zH = 0 m puts the front frame's mass centre at or below the ground"),
+])
+def test_impossible_geometry_is_refused_with_the_reason(change, words):
+    with pytest.raises(ParameterError) as err:
+        TwoWheeler(**(BENCHMARK | change))
+    assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_massless_body_may_sit_anywhere():
+    # no mass, no mass centre to misplace (the motorcycle presets lump their wheels' masses into the frames)
+    TwoWheeler(**(BENCHMARK | dict(mH=0.0, IHxx=0.0, IHyy=0.0, IHzz=0.0, IHxz=0.0, zH=0.5)))
+
+
+def test_wheels_that_do_not_fit_in_the_globe_are_refused():
+    with pytest.raises(ParameterError) as err:
+        deathsphere.ride(machine="benchmark-bicycle", steer="free", theta=120, speed=3.0, r=0.2)
+    assert err.value.param == "r" and "do not fit in a sphere of radius 0.2 m" in str(err.value)

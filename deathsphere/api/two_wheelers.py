@@ -319,6 +319,10 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
     if r is None:
         raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    if max(t.rR, t.rF) >= r:
+        # no lane of this globe has room for the wheel: refused as a single-contact machine's wheel is
+        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in a sphere of "
+                             f"radius {r:g} m (needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
     lane, lane_given, by_theta = _lanes(theta, height, r, MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS)
     if speed is not None and steer_torque is not None:
         raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
