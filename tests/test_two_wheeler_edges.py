@@ -152,3 +152,23 @@ def test_wheels_that_do_not_fit_in_the_globe_are_refused():
     with pytest.raises(ParameterError) as err:
         deathsphere.ride(machine="benchmark-bicycle", steer="free", theta=120, speed=3.0, r=0.2)
     assert err.value.param == "r" and "do not fit in a sphere of radius 0.2 m" in str(err.value)
+
+
+def test_straight_running_refuses_more_speeds_than_it_holds_in_one_line(run):
+    # 2e6 speeds ran out of memory writing the table (1e6 peaked at 1.9 GB): refused from the count
+    result = run("ride", "--machine", "benchmark-bicycle", "--flat", "--speed", "0:2000000:1")
+    assert result.exit_code == 2
+    assert result.stdout == "" and len(result.stderr.strip().splitlines()) == 1
+    assert "at most 500000 values of speed" in result.stderr and "--speed" in result.stderr
+
+
+def test_straight_running_is_the_same_whatever_the_chunk(monkeypatch):
+    import deathsphere.api.two_wheelers as tw
+
+    whole = {steer: deathsphere.ride(machine="benchmark-bicycle", flat=True, speed="0:10:0.25", steer=steer)
+             for steer in ("free", "locked")}
+    monkeypatch.setattr(tw, "STRAIGHT_CHUNK", 3)
+    for steer, same in whole.items():
+        chunked = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed="0:10:0.25", steer=steer)
+        for column in same.columns:
+            np.testing.assert_array_equal(np.asarray(chunked[column]), np.asarray(same[column]))

@@ -36,8 +36,14 @@ STEER_MODES = ("free", "locked")
 #: lane some 10 ms for its lean curve (docs/two-wheeler.md sec. 8.6), so this
 #: is 12 s on a grid of lanes x speeds, 5 minutes if no two lanes agree.
 MAX_TURN_REQUESTS = 30_000
-#: Speeds of straight running one call answers (a few microseconds each).
-MAX_STRAIGHT_SPEEDS = 2_000_000
+#: Speeds of straight running one call answers (a few microseconds each):
+#: the table is held whole (some 0.25 KB a row) and ``ride --flat`` writes it
+#: at once, near 2 KB a row at its peak, so this bounds the command at
+#: about 1 GB (2e6 speeds ran out of memory).
+MAX_STRAIGHT_SPEEDS = 500_000
+#: Speeds whose eigenvalues are found together: the temporaries of a few
+#: 4 x 4 matrices per speed stay small, the table is the only large array.
+STRAIGHT_CHUNK = 1 << 14
 
 def _eig_columns(k: int) -> tuple[str, ...]:
     return tuple(f"eig_{i}_{part}" for i in range(1, k + 1) for part in ("re", "im"))
@@ -149,6 +155,18 @@ def _speeds(speed, limit: int) -> np.ndarray:
     return _values("rear_speed", speed, limit, "speed")
 
 
+def _straight_eigenvalues(m, v, steer: str) -> np.ndarray:
+    """Upright straight running's eigenvalues at the speeds ``v``, largest real part first."""
+    from deathsphere.physics.two_wheeler import linear
+
+    if steer == "free":
+        return _sorted_eigenvalues(linear.eigenvalues(m, v))
+    # steer locked: the lean row alone, M_ll s^2 + v C1_ll s + g K0_ll + v^2 K2_ll = 0
+    a, b, c = m.M[0, 0], v * m.C1[0, 0], m.g * m.K0[0, 0] + v**2 * m.K2[0, 0]
+    root = np.sqrt((b * b - 4 * a * c).astype(complex))
+    return _sorted_eigenvalues(np.stack([(-b + root) / (2 * a), (-b - root) / (2 * a)], axis=-1))
+
+
 def _straight(t: TwoWheeler, g: float, speed, steer: str, summary: bool) -> Table:
     """Upright straight running on flat ground under gravity ``g``: the benchmark's eigenvalues
     against speed (Meijaard et al. 2007, Table 2 and Figure 3; docs/two-wheeler.md sec. 7)."""
@@ -156,13 +174,9 @@ def _straight(t: TwoWheeler, g: float, speed, steer: str, summary: bool) -> Tabl
 
     v = _speeds(speed, MAX_STRAIGHT_SPEEDS)
     m = linear.benchmark_matrices(t.parameters(), g)
-    if steer == "free":
-        values = _sorted_eigenvalues(linear.eigenvalues(m, v))
-    else:
-        # steer locked: the lean row alone, M_ll s^2 + v C1_ll s + g K0_ll + v^2 K2_ll = 0
-        a, b, c = m.M[0, 0], v * m.C1[0, 0], m.g * m.K0[0, 0] + v**2 * m.K2[0, 0]
-        root = np.sqrt((b * b - 4 * a * c).astype(complex))
-        values = _sorted_eigenvalues(np.stack([(-b + root) / (2 * a), (-b - root) / (2 * a)], axis=-1))
+    values = np.empty((v.size, 4 if steer == "free" else 2), dtype=complex)
+    for start in range(0, v.size, STRAIGHT_CHUNK):
+        values[start:start + STRAIGHT_CHUNK] = _straight_eigenvalues(m, v[start:start + STRAIGHT_CHUNK], steer)
     verdicts, growth = stability.verdict(values)
     if summary:
         ok = verdicts == "stable"
