@@ -172,3 +172,86 @@ def test_straight_running_is_the_same_whatever_the_chunk(monkeypatch):
         chunked = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed="0:10:0.25", steer=steer)
         for column in same.columns:
             np.testing.assert_array_equal(np.asarray(chunked[column]), np.asarray(same[column]))
+
+
+# ---------------------------------------------------------------------------
+# words: one definition per lean name, what a disturbance does
+
+def test_stability_kind_from_the_verdicts_tolerances():
+    from deathsphere.physics.stability.verdict import STABLE_TOL, UNSTABLE_TOL, stability_kind
+
+    growth = np.array([-1.0, -0.5 * STABLE_TOL, 0.0, 0.5 * STABLE_TOL, 0.5 * UNSTABLE_TOL, UNSTABLE_TOL, 1.0, np.nan,
+                       0.0])
+    scale = np.array([1.0] * 8 + [0.0])
+    assert stability_kind(growth, scale).tolist() == ["damped", "neutral", "neutral", "neutral", "unknown",
+                                                      "growing", "growing", "", "neutral"]
+
+
+def test_straight_running_says_whether_its_modes_decay():
+    t = deathsphere.ride(machine="benchmark-bicycle", flat=True, speed=[0.0, 5.0, 10.0], g=9.81)
+    # 0 m/s: capsize and inverted pendulum grow; 5 m/s self-stable, every mode decays; 10 m/s the capsize grows
+    assert t["stability_kind"].tolist() == ["growing", "damped", "growing"]
+    assert t.names[-1] == "stability_kind"
+
+
+def test_a_turns_kind_agrees_with_its_eigenvalues_and_is_empty_without_a_turn():
+    t = deathsphere.ride(machine="stunt125-steer", steer="free", height=1.0, speed=[8.0, 10.0, 100.0],
+                         diameter="16ft")
+    for row in t:
+        if row["status"] == "no_orbit":
+            assert row["stability_kind"] == "" or row["stability_kind"] is None
+            continue
+        growth = row["growth_rate_1_s"]
+        assert row["stability_kind"] == ("damped" if growth < 0 else "growing")
+    skipped = deathsphere.ride(machine="stunt125-steer", steer="free", height=1.0, speed=8.0, diameter="16ft",
+                               stability=False)
+    assert all(k in ("", None) for k in skipped["stability_kind"].tolist())
+
+
+def test_each_lean_name_has_one_definition_in_every_two_wheeler_table():
+    kw = dict(machine="stunt125-steer", steer="free", height=[1.0, 2.0], diameter="16ft")
+    turns = deathsphere.ride(**kw, speed=[8.0, 10.0])
+    ok = turns["status"] == "ok"
+    np.testing.assert_array_equal(turns["lean_wall_deg"], turns["lean_surface_deg"])
+    np.testing.assert_array_equal(turns["lean_vertical_deg"], turns["lean_deg"])
+    # from the wall's normal at the rear contact and from the vertical: 180 deg - theta apart
+    np.testing.assert_allclose(turns["lean_vertical_deg"][ok] - turns["lean_wall_deg"][ok],
+                               180.0 - turns["theta_deg"][ok], atol=1e-9)
+    summary = deathsphere.ride(**kw, speed=[8.0, 10.0], summary=True)
+    for lane in range(2):
+        mine = ok & (turns["height_m"] == summary["height_m"][lane])
+        for name in ("lean_vertical", "lean_wall"):
+            assert summary[f"{name}_min_deg"][lane] == turns[f"{name}_deg"][mine].min()
+            assert summary[f"{name}_max_deg"][lane] == turns[f"{name}_deg"][mine].max()
+        assert summary["lean_min_deg"][lane] == summary["lean_vertical_min_deg"][lane]
+
+
+def test_simulate_names_its_lean_from_the_wall_and_its_start_from_the_vertical():
+    from deathsphere.api.two_wheelers import simulate_two_wheeler
+
+    series, summary = simulate_two_wheeler("stunt125-steer", height=2.0, speed=9.0, diameter="16ft", periods=0.1,
+                                           points_per_period=20)
+    np.testing.assert_array_equal(series["lean_wall_deg"], series["lean_surface_deg"])
+    turn = deathsphere.ride(machine="stunt125-steer", steer="free", height=2.0, speed=9.0, diameter="16ft")[0]
+    assert summary["lean_wall_deg"][0] == pytest.approx(turn["lean_wall_deg"], abs=1e-9)
+    assert summary["lean_vertical_deg"][0] == pytest.approx(turn["lean_vertical_deg"], abs=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# the rider's table: the stable speeds the rider can take
+
+TOURER = dict(machine="sport-tourer", steer="locked", diameter="16ft", height=1.0, speed="40:65:3km/h", summary=True)
+
+
+def test_the_stable_band_lies_within_the_limits_given_and_says_what_lies_beyond():
+    free = deathsphere.ride(**TOURER)[0]
+    assert free["speeds_stable"] == 4 and free["stable_beyond_limits"] == 0
+    # the band's load, which no limit bounded: 6 g and more
+    assert free["stable_load_min_g"] > 6.0 and free["stable_load_max_g"] > free["stable_load_min_g"]
+    limited = deathsphere.ride(**TOURER, max_g=5.0, mu=1.0)[0]
+    assert limited["speeds_stable"] == 0 and limited["stable_v_min_m_s"] is None
+    assert limited["stable_load_min_g"] is None
+    # the only stable speeds are past max_g: counted and spanned, not called the rider's
+    assert limited["stable_beyond_limits"] == 4
+    assert (limited["stable_beyond_v_min_m_s"], limited["stable_beyond_v_max_m_s"]) == (
+        free["stable_v_min_m_s"], free["stable_v_max_m_s"])
