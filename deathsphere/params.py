@@ -115,13 +115,35 @@ def _length(name, what, symbol, lo=TINY, **more):
     return Param(name, "m", what, lo, HUGE, symbol=symbol, kind="length", metavar="M", **more)
 
 
+#: A two-wheeler's body parameters (Table 1 of Meijaard et al. 2007) lie
+#: within what any ridden two-wheeler and its riders can be, from a toy to
+#: the heaviest show bike, not merely within float64's comfort (1e-9..1e9):
+#: a mass up to 10 t (the heaviest ridden motorcycles weigh some 5 t, a
+#: touring bike with two riders 0.6 t), a moment of inertia up to 1e5 kg m^2
+#: (10 t at a 3 m radius of gyration), positions within 10 m of the rear
+#: contact, a wheel base of 5 cm (a toy) to 10 m (the longest ridden bikes
+#: are some 7 m), a wheel radius of 1 cm to 3 m (a penny-farthing's is
+#: 0.75 m) and a trail within 2 m either way.  Beyond them the loads and
+#: eigenvalues are numbers of no machine (and, far beyond, inf).
+TW_MAX_MASS = 1e4
+TW_MAX_INERTIA = 1e5
+TW_MAX_POSITION = 10.0
+
+
 def _body(body, what, moments):
     """A two-wheeler's body's mass m<body> and its inertia tensor's entries
     I<body><axes> in the benchmark's axes (kg m^2; a product of inertia, xz,
-    of either sign)."""
-    mass = Param(f"m{body}", "kg", f"{what} mass", 0.0, HUGE, symbol=f"m_{body}", kind="mass", metavar="KG")
-    return (mass, *(Param(f"I{body}{axes}", "kg m^2", f"{what} inertia {axes}", -HUGE if axes == "xz" else 0.0, HUGE,
-                          symbol=f"I_{body}{axes}", metavar="KG_M2") for axes in moments))
+    of either sign), within a ridden two-wheeler's bounds (above)."""
+    mass = Param(f"m{body}", "kg", f"{what} mass", 0.0, TW_MAX_MASS, symbol=f"m_{body}", kind="mass",
+                 metavar="KG")
+    return (mass, *(Param(f"I{body}{axes}", "kg m^2", f"{what} inertia {axes}",
+                          -TW_MAX_INERTIA if axes == "xz" else 0.0, TW_MAX_INERTIA, symbol=f"I_{body}{axes}",
+                          metavar="KG_M2") for axes in moments))
+
+
+def _position(name, what, symbol):
+    """A mass centre's coordinate from the rear contact (m), within a ridden two-wheeler's bounds (above)."""
+    return Param(name, "m", what, -TW_MAX_POSITION, TW_MAX_POSITION, symbol=symbol, kind="length", metavar="M")
 
 
 #: Every parameter, by name.  Angles are in degrees, as on the command line.
@@ -235,19 +257,19 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
                "dependent speeds follow from the rolling constraints)."),
     # the two-wheeler's body (docs/two-wheeler.md sec. 1): Table 1 of Meijaard et al. (2007) by its names, SI,
     # positions from the rear contact upright, z down; its gravity is the run's g
-    _length("w", "wheel base", "w"),
-    Param("c", "m", "trail", -HUGE, HUGE, symbol="c", kind="length", metavar="M"),
+    Param("w", "m", "wheel base", 0.05, 10.0, symbol="w", kind="length", metavar="M"),
+    Param("c", "m", "trail", -2.0, 2.0, symbol="c", kind="length", metavar="M"),
     Param("lam", "rad", "steer axis tilt", -math.pi / 2, math.pi / 2, lo_open=True, hi_open=True, symbol="λ",
           kind="angle", metavar="RAD"),
-    _length("rR", "rear wheel radius", "r_R"),
+    Param("rR", "m", "rear wheel radius", 0.01, 3.0, symbol="r_R", kind="length", metavar="M"),
     *_body("R", "rear wheel", ("xx", "yy")),
-    Param("xB", "m", "rear frame mass centre x", -HUGE, HUGE, symbol="x_B", kind="length", metavar="M"),
-    Param("zB", "m", "rear frame mass centre z down", -HUGE, HUGE, symbol="z_B", kind="length", metavar="M"),
+    _position("xB", "rear frame mass centre x", "x_B"),
+    _position("zB", "rear frame mass centre z down", "z_B"),
     *_body("B", "rear frame", ("xx", "yy", "zz", "xz")),
-    Param("xH", "m", "front frame mass centre x", -HUGE, HUGE, symbol="x_H", kind="length", metavar="M"),
-    Param("zH", "m", "front frame mass centre z down", -HUGE, HUGE, symbol="z_H", kind="length", metavar="M"),
+    _position("xH", "front frame mass centre x", "x_H"),
+    _position("zH", "front frame mass centre z down", "z_H"),
     *_body("H", "front frame", ("xx", "yy", "zz", "xz")),
-    _length("rF", "front wheel radius", "r_F"),
+    Param("rF", "m", "front wheel radius", 0.01, 3.0, symbol="r_F", kind="length", metavar="M"),
     *_body("F", "front wheel", ("xx", "yy")),
     Param("jobs", "", "processes", 1, 256, integer=True, metavar="N", default=1,
           help="Processes working in parallel; the output is the same as with one."),

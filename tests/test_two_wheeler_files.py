@@ -83,7 +83,7 @@ def test_a_spreadsheets_csv_with_a_byte_order_mark_is_read(tmp_path):
     (".toml", b'base = "sport-tourer"\ng = 9.81\n', "g is the run's gravity, not the two-wheeler's"),
     (".toml", b'base = "stunt125"\n', "base must be a two-wheeler preset"),
     (".toml", b'base = "sport-tourer"\nIBxx = "2kg"\n', "IBxx is a plain number"),
-    (".toml", b'base = "sport-tourer"\nw = -1\n', "w (wheel base) must be 1e-09..1e+09 m (got -1)"),
+    (".toml", b'base = "sport-tourer"\nw = -1\n', "w (wheel base) must be 0.05..10 m (got -1)"),
     (".toml", b'base = "sport-tourer"\nwheels = 2\n', "unknown key 'wheels'"),
 ])
 def test_a_bad_file_is_refused_in_one_line(tmp_path, suffix, text, words):

@@ -21,7 +21,7 @@ import pytest
 
 import deathsphere
 from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
-from deathsphere.api.two_wheelers import TURN_COLUMNS, TURN_LIMIT_COLUMNS, turn_request
+from deathsphere.api.two_wheelers import TURN_APPENDED, TURN_COLUMNS, TURN_LIMIT_COLUMNS, turn_request
 
 #: Two lanes of a 16-foot globe and four rear speeds: slow turns there need
 #: the most friction, fast ones load the rider most.
@@ -79,7 +79,7 @@ def test_slips_and_over_g_flip_exactly_where_friction_and_load_cross_the_limits(
     assert np.any((expected == "slips") & (plain["load_g"] > max_g))
     assert np.all(limited["mu_available"] == mu) and np.all(limited["max_g"] == max_g)
     assert limited.names == list(TURN_COLUMNS) + [f"eig_{i}_{p}" for i in range(1, 7) for p in ("re", "im")] + \
-        list(TURN_LIMIT_COLUMNS)
+        list(TURN_LIMIT_COLUMNS) + list(TURN_APPENDED)
     assert np.all(np.isnan(plain["mu_available"])) and np.all(np.isnan(plain["max_g"]))
 
 

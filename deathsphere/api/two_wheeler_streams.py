@@ -61,7 +61,7 @@ def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, stee
                            only=only, streamed=True)
     chunk_size = int(checked_scalar("chunk_size", chunk_size))
     jobs = int(checked_scalar("jobs", jobs))
-    per_chunk = max(1, chunk_size // request.values.size)
+    per_chunk = max(1, chunk_size // max(1, request.values.size))
     return Chunks(evaluated(_lane_chunks(request, per_chunk), partial(_lanes_chunk, request=request), jobs,
                             cluster_of(scheduler, jobs)), request.total)
 

@@ -36,8 +36,14 @@ STEER_MODES = ("free", "locked")
 #: lane some 10 ms for its lean curve (docs/two-wheeler.md sec. 8.6), so this
 #: is 12 s on a grid of lanes x speeds, 5 minutes if no two lanes agree.
 MAX_TURN_REQUESTS = 30_000
-#: Speeds of straight running one call answers (a few microseconds each).
-MAX_STRAIGHT_SPEEDS = 2_000_000
+#: Speeds of straight running one call answers (a few microseconds each):
+#: the table is held whole (some 0.25 KB a row) and ``ride --flat`` writes it
+#: at once, near 2 KB a row at its peak, so this bounds the command at
+#: about 1 GB (2e6 speeds ran out of memory).
+MAX_STRAIGHT_SPEEDS = 500_000
+#: Speeds whose eigenvalues are found together: the temporaries of a few
+#: 4 x 4 matrices per speed stay small, the table is the only large array.
+STRAIGHT_CHUNK = 1 << 14
 
 def _eig_columns(k: int) -> tuple[str, ...]:
     return tuple(f"eig_{i}_{part}" for i in range(1, k + 1) for part in ("re", "im"))
@@ -97,6 +103,8 @@ def as_two_wheeler(machine) -> TwoWheeler:
 
 #: The columns of ``ride --flat``: upright straight running on flat ground.
 STRAIGHT_COLUMNS = ("input_row", "machine", "steer", "speed_m_s", "g_m_s2", "stability", "growth_rate_1_s")
+#: The columns ``ride --flat`` appends after the eigenvalues: what a disturbance does (docs/two-wheeler.md sec. 7).
+STRAIGHT_APPENDED = ("stability_kind",)
 #: The columns of ``ride --flat --summary``.
 STRAIGHT_SUMMARY_COLUMNS = ("machine", "g_m_s2", "weave_speed_m_s", "capsize_speed_m_s", "speeds_tried",
                             "speeds_stable")
@@ -120,7 +128,9 @@ def _sorted_eigenvalues(values):
 def _eig_cols(values, k) -> dict:
     cols = {}
     for i in range(k):
-        cols[f"eig_{i + 1}_re"], cols[f"eig_{i + 1}_im"] = values[:, i].real.copy(), values[:, i].imag.copy()
+        re = values[:, i].real.copy()
+        # no eigenvalue (no turn, not analysed) is empty in both parts: nan + 0j has an imaginary part 0
+        cols[f"eig_{i + 1}_re"], cols[f"eig_{i + 1}_im"] = re, np.where(np.isnan(re), np.nan, values[:, i].imag)
     return cols
 
 
@@ -128,6 +138,8 @@ def _values(name: str, value, limit: int, option: str | None = None) -> np.ndarr
     """The values asked for (values, ranges, units) as one flat array,
     refused before they are built when there are more than ``limit``."""
     option = option or name
+    if isinstance(value, (list, tuple, np.ndarray)) and np.size(value) == 0:
+        return np.empty(0)      # none asked for: no row, as deathsphere.orbit answers an empty list
     try:
         axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
     except ParameterError as exc:
@@ -145,6 +157,18 @@ def _speeds(speed, limit: int) -> np.ndarray:
     return _values("rear_speed", speed, limit, "speed")
 
 
+def _straight_eigenvalues(m, v, steer: str) -> np.ndarray:
+    """Upright straight running's eigenvalues at the speeds ``v``, largest real part first."""
+    from deathsphere.physics.two_wheeler import linear
+
+    if steer == "free":
+        return _sorted_eigenvalues(linear.eigenvalues(m, v))
+    # steer locked: the lean row alone, M_ll s^2 + v C1_ll s + g K0_ll + v^2 K2_ll = 0
+    a, b, c = m.M[0, 0], v * m.C1[0, 0], m.g * m.K0[0, 0] + v**2 * m.K2[0, 0]
+    root = np.sqrt((b * b - 4 * a * c).astype(complex))
+    return _sorted_eigenvalues(np.stack([(-b + root) / (2 * a), (-b - root) / (2 * a)], axis=-1))
+
+
 def _straight(t: TwoWheeler, g: float, speed, steer: str, summary: bool) -> Table:
     """Upright straight running on flat ground under gravity ``g``: the benchmark's eigenvalues
     against speed (Meijaard et al. 2007, Table 2 and Figure 3; docs/two-wheeler.md sec. 7)."""
@@ -152,32 +176,33 @@ def _straight(t: TwoWheeler, g: float, speed, steer: str, summary: bool) -> Tabl
 
     v = _speeds(speed, MAX_STRAIGHT_SPEEDS)
     m = linear.benchmark_matrices(t.parameters(), g)
-    if steer == "free":
-        values = _sorted_eigenvalues(linear.eigenvalues(m, v))
-    else:
-        # steer locked: the lean row alone, M_ll s^2 + v C1_ll s + g K0_ll + v^2 K2_ll = 0
-        a, b, c = m.M[0, 0], v * m.C1[0, 0], m.g * m.K0[0, 0] + v**2 * m.K2[0, 0]
-        root = np.sqrt((b * b - 4 * a * c).astype(complex))
-        values = _sorted_eigenvalues(np.stack([(-b + root) / (2 * a), (-b - root) / (2 * a)], axis=-1))
+    values = np.empty((v.size, 4 if steer == "free" else 2), dtype=complex)
+    for start in range(0, v.size, STRAIGHT_CHUNK):
+        values[start:start + STRAIGHT_CHUNK] = _straight_eigenvalues(m, v[start:start + STRAIGHT_CHUNK], steer)
     verdicts, growth = stability.verdict(values)
     if summary:
         ok = verdicts == "stable"
+        high = max(10.0, float(v.max(initial=0.0)))
         return Table({"machine": np.array([t.name], dtype=object), "g_m_s2": np.array([g]),
                       # a motorcycle's speeds lie beyond a bicycle's 10 m/s: searched up to the fastest asked
-                      "weave_speed_m_s": np.array([linear.weave_speed(m, high=max(10.0, float(v.max())))]),
-                      "capsize_speed_m_s": np.array([linear.capsize_speed(m, high=max(10.0, float(v.max())))]),
+                      "weave_speed_m_s": np.array([linear.weave_speed(m, high=high)]),
+                      "capsize_speed_m_s": np.array([linear.capsize_speed(m, high=high)]),
                       "speeds_tried": np.array([v.size], dtype=np.int64),
                       "speeds_stable": np.array([int(ok.sum())], dtype=np.int64)})
     n = v.size
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, t.name, dtype=object),
             "steer": np.full(n, steer, dtype=object), "speed_m_s": v, "g_m_s2": np.full(n, g),
             "stability": verdicts.astype(object), "growth_rate_1_s": growth}
-    return Table(cols | _eig_cols(values, values.shape[-1]))
+    return Table(cols | _eig_cols(values, values.shape[-1]) | {"stability_kind": stability.kind(values)})
 
 
 #: The columns ``ride --steer`` appends after the eigenvalues: the limits the
 #: statuses were decided with (empty where none was given).
 TURN_LIMIT_COLUMNS = ("mu_available", "max_g")
+#: Then (docs/contract.md): what a disturbance does, and the lean named by
+#: what it is measured from, the wall's normal at the rear contact
+#: (``lean_surface_deg``) and the vertical (``lean_deg``).
+TURN_APPENDED = ("stability_kind", "lean_wall_deg", "lean_vertical_deg")
 #: The columns of ``ride --steer --summary``, the rider's table on the globe:
 #: those of ride's rider's table that keep their meaning (the speeds are the
 #: rear contact's, m/s), then the two-wheeler's own (docs/two-wheeler.md
@@ -187,8 +212,13 @@ TURN_SUMMARY_COLUMNS = (
     "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m", "limits", "mu_available",
     "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit", "steer", "speeds_stable", "stable_v_min_m_s",
     "stable_v_max_m_s", "steer_torque_min_n_m", "steer_torque_max_n_m", "hands_free_turns", "hands_free_stable",
-    "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s",
+    "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s", "lean_vertical_min_deg", "lean_vertical_max_deg",
+    "lean_wall_min_deg", "lean_wall_max_deg", "stable_beyond_limits", "stable_beyond_v_min_m_s",
+    "stable_beyond_v_max_m_s", "stable_load_min_g", "stable_load_max_g", "growth_min_1_s", "growth_max_1_s",
 )
+#: The statuses of a turn that is a turn but beyond the limits given
+#: (--mu, --max-g): its stable speeds are not the rider's.
+BEYOND_LIMITS = ("slips", "over_g")
 #: Why the speeds that fail fail, counted per lane in the rider's table: the
 #: column and the status it counts (the head's is ride's no_fit).
 TURN_FAILURES = {"slips": "slips", "over_g": "over_g", "head_hits": "no_fit", "no_contact": "no_contact",
@@ -209,7 +239,8 @@ SLIP_REASONS = {
     "both": "both wheels need more friction than mu_available (mu_required_rear and mu_required_front exceed it)",
 }
 OVER_G_REASON = "the load load_g (|total contact force| / weight) exceeds the largest given (max_g)"
-__all__ += ["TURN_LIMIT_COLUMNS", "TURN_SUMMARY_COLUMNS", "TurnRequest", "turn_request", "turn_rows"]
+__all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
+            "turn_request", "turn_rows"]
 
 
 def _lanes(theta, height, r, limit: int = MAX_TURN_REQUESTS) -> tuple[np.ndarray, np.ndarray, bool]:
@@ -314,6 +345,10 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
     r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
     if r is None:
         raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    if max(t.rR, t.rF) >= r:
+        # no lane of this globe has room for the wheel: refused as a single-contact machine's wheel is
+        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in a sphere of "
+                             f"radius {r:g} m (needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
     lane, lane_given, by_theta = _lanes(theta, height, r, MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS)
     if speed is not None and steer_torque is not None:
         raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
@@ -376,7 +411,7 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     counts = found.sum(axis=1)
     req = np.repeat(np.arange(lanes.size), np.maximum(counts, 1))
     # each request's turns in order of lean, or its one row saying why none
-    slot = np.concatenate([np.flatnonzero(f) if f.any() else [0] for f in found]).astype(np.int64)
+    slot = np.concatenate([np.empty(0)] + [np.flatnonzero(f) if f.any() else [0] for f in found]).astype(np.int64)
     has = found[req, slot]
     n = req.size
 
@@ -419,11 +454,12 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     status[rear | front], status[over] = "slips", "over_g"
     reason[rear & ~front], reason[front & ~rear] = SLIP_REASONS["rear"], SLIP_REASONS["front"]
     reason[rear & front], reason[over] = SLIP_REASONS["both"], OVER_G_REASON
-    # what the request fixes is echoed as asked, not as recomputed (docs/contract.md)
+    # what the request fixes is echoed as asked, not as recomputed, in every row, a turn found or not: two
+    # requests that find none still differ (docs/contract.md, "Inputs are echoed as given")
     if by_torque:
-        cols["steer_torque_n_m"] = np.where(has, values[req], np.nan)
+        cols["steer_torque_n_m"] = values[req]
     else:
-        cols["v_rear_m_s"] = cols["v_contact_m_s"] = np.where(has, values[req], np.nan)
+        cols["v_rear_m_s"] = cols["v_contact_m_s"] = values[req]
     k = tw_stability.eigenvalue_count(globe, steer)
     if request.stability:
         ev = np.where(has[:, None], out[f"eigenvalues_{steer}"][req, slot], np.nan + 0j)
@@ -435,7 +471,10 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     # inf ("no limit") is empty, as in every table
     limits = {c: np.full(n, np.nan if math.isinf(v) else v) for c, v in zip(TURN_LIMIT_COLUMNS,
                                                                           (request.mu, request.max_g))}
-    table = Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k) | limits)
+    # appended (docs/contract.md): what a disturbance does, and the lean by its two names, each saying from what
+    appended = {"stability_kind": tw_stability.kind(ev), "lean_wall_deg": cols["lean_surface_deg"],
+                "lean_vertical_deg": cols["lean_deg"]}
+    table = Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k) | limits | appended)
     if request.summary:
         return _turn_summary(request, table, first, stop)
     return table if request.only is None else table[np.isin(table["status"], request.only)]
@@ -472,7 +511,10 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
     lane_of = rq // n_values - first
     status = np.asarray(table["status"]).astype(str)
     ok = status == "ok"
-    stable = ok & (np.asarray(table["stability"]).astype(str) == "stable")
+    steady = np.asarray(table["stability"]).astype(str) == "stable"
+    stable = ok & steady
+    # stable turns the rider cannot take: they slip or load past max_g
+    beyond = steady & np.isin(status, BEYOND_LIMITS)
     mu_needed = np.fmax(table["mu_required_rear"], table["mu_required_front"])
     lanes = request.lanes[first:stop]
     free = _hands_free(request, lanes)
@@ -493,6 +535,8 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
         rows["speeds_ok"].append(int(np.unique(on[fine]).size))
         for lo, hi, col in (("v_rear_min_m_s", "v_rear_max_m_s", "v_rear_m_s"),
                             ("lean_min_deg", "lean_max_deg", "lean_deg"), ("load_min_g", "load_max_g", "load_g"),
+                            ("lean_vertical_min_deg", "lean_vertical_max_deg", "lean_vertical_deg"),
+                            ("lean_wall_min_deg", "lean_wall_max_deg", "lean_wall_deg"),
                             ("steer_torque_min_n_m", "steer_torque_max_n_m", "steer_torque_n_m")):
             rows[lo].append(span(col, np.min))
             rows[hi].append(span(col, np.max))
@@ -508,12 +552,24 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
         rows["speeds_stable"].append(int(np.unique(on[calm]).size))
         rows["stable_v_min_m_s"].append(span("v_rear_m_s", np.min, calm))
         rows["stable_v_max_m_s"].append(span("v_rear_m_s", np.max, calm))
+        # the speeds stable only beyond the limits (none of their turns both ok and stable)
+        only_beyond = beyond[sel] & ~np.isin(on, on[calm])
+        rows["stable_beyond_limits"].append(int(np.unique(on[only_beyond]).size))
+        rows["stable_beyond_v_min_m_s"].append(span("v_rear_m_s", np.min, only_beyond))
+        rows["stable_beyond_v_max_m_s"].append(span("v_rear_m_s", np.max, only_beyond))
+        # what the stable band loads the rider with: without max_g it may be a band no rider takes
+        rows["stable_load_min_g"].append(span("load_g", np.min, calm))
+        rows["stable_load_max_g"].append(span("load_g", np.max, calm))
+        # how fast a disturbance grows on the ok turns (the rider's time to act: ln 2 / growth to double)
+        rows["growth_min_1_s"].append(span("growth_rate_1_s", np.min))
+        rows["growth_max_1_s"].append(span("growth_rate_1_s", np.max))
         hands, still = free["v_rear"][i][free["ok"][i]], free["v_rear"][i][free["stable"][i]]
         rows["hands_free_turns"].append(int(hands.size))
         rows["hands_free_stable"].append(int(still.size))
         rows["hands_free_v_rear_m_s"].append(_speed_list(hands))
         rows["hands_free_stable_v_rear_m_s"].append(_speed_list(still))
-    counts = {"speeds_tried", "speeds_ok", "speeds_stable", "hands_free_turns", "hands_free_stable", *TURN_FAILURES}
+    counts = {"speeds_tried", "speeds_ok", "speeds_stable", "hands_free_turns", "hands_free_stable",
+              "stable_beyond_limits", *TURN_FAILURES}
     text = {"limits", "steer", "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s"}
     return Table({c: np.array(v, dtype=np.int64 if c in counts else object if c in text else float)
                   for c, v in rows.items()})
@@ -535,8 +591,10 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
     MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
     <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
     steer, steer_torque = steer_request(steer, steer_torque)
-    if flat:
+    if checked_flag("flat", flat):
         t, steer, g = _machine(machine, steer, g)
+        summary = checked_flag("summary", summary)
+        checked_flag("stability", stability)    # straight running's eigenvalues are its table: always given
         if theta is not None or height is not None or diameter is not None or r is not R:
             raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
                                  "or diameter)", "flat")
@@ -568,13 +626,14 @@ CONTROLS = ("steady-torque", "rider", "hands-free", "locked")
 SIMULATE_COLUMNS = ("t_s", "lean_surface_deg", "steer_deg", "heading_deg", "theta_rear_deg", "lean_rate_deg_s",
                     "steer_rate_deg_s", "v_rear_m_s", "steer_torque_n_m", "normal_rear_per_mass_m_s2",
                     "normal_front_per_mass_m_s2", "friction_rear_per_mass_m_s2", "friction_front_per_mass_m_s2",
-                    "energy_drift", "constraint_residual_m")
+                    "energy_drift", "constraint_residual_m", "lean_wall_deg")
 SIMULATE_SUMMARY_COLUMNS = (
     "machine", "theta_deg", "height_m", "r_m", "v_rear_m_s", "lean_surface_deg", "steer_deg", "steer_torque_n_m",
     "period_s", "perturb_deg", "control", "k_lean_n_m_rad", "k_rate_n_m_s_rad", "mu", "status", "t_event_s",
     "t_end_s", "max_lean_deviation_deg", "final_lean_deviation_deg", "max_energy_drift",
     "max_constraint_residual_m", "min_normal_rear_per_mass_m_s2", "min_normal_front_per_mass_m_s2", "method",
-    "rtol", "surface", "turn_radius_m", "steer", "perturb_lean_rate_deg_s", "perturb_steer_rate_deg_s")
+    "rtol", "surface", "turn_radius_m", "steer", "perturb_lean_rate_deg_s", "perturb_steer_rate_deg_s",
+    "lean_wall_deg", "lean_vertical_deg")
 #: Rows per period of the turn, and periods, one call integrates at most.
 MAX_SIMULATE_ROWS = 1_000_000
 #: The rear wheel's travel one run integrates at most [m]: some 0.1 s of
@@ -736,7 +795,10 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
             "normal_rear_per_mass_m_s2": series["normal_rear"], "normal_front_per_mass_m_s2": series["normal_front"],
             "friction_rear_per_mass_m_s2": series["friction_rear"],
             "friction_front_per_mass_m_s2": series["friction_front"], "energy_drift": series["energy_drift"],
-            "constraint_residual_m": series["constraint_residual"]}
+            "constraint_residual_m": series["constraint_residual"],
+            # the lean by the name that says from what: the surface's normal at the rear contact (the series has no
+            # lean from the vertical: off the steady turn the heading leaves the lane, docs/two-wheeler.md sec. 10.1)
+            "lean_wall_deg": deg(series["lean"])}
     control = "locked" if locked else "hands-free" if hands_free else (
         "rider" if steer_gains is not None else "steady-torque")
     row = {"machine": t.name, "theta_deg": theta_deg, "height_m": h, "r_m": r,
@@ -751,7 +813,11 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
            "min_normal_rear_per_mass_m_s2": summary["min_normal_rear"],
            "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol,
            "surface": grounds.of(ground).surface, "turn_radius_m": radius, "steer": "locked" if locked else "free",
-           "perturb_lean_rate_deg_s": perturb_lean_rate, "perturb_steer_rate_deg_s": perturb_steer_rate}
+           "perturb_lean_rate_deg_s": perturb_lean_rate, "perturb_steer_rate_deg_s": perturb_steer_rate,
+           "lean_wall_deg": math.degrees(q[motion.LEAN]),
+           # the start's lean from the vertical: its steady turn runs along the lane (alpha as ride's), and on flat
+           # ground the surface's normal is the vertical
+           "lean_vertical_deg": math.degrees(q[motion.LEAN]) + (0.0 if flat else 180.0 - theta_deg)}
     summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
                            for k in SIMULATE_SUMMARY_COLUMNS})
     tables = Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table

@@ -54,6 +54,25 @@ def _number(name: str, value) -> float:
     return float(value)
 
 
+def _check_geometry(t) -> None:
+    """Refuse, in one line with the reason, a two-wheeler that cannot be
+    built, whatever the lane: wheels that overlap (the rims, upright in one
+    plane, cross) and a body whose mass centre is at or below the ground
+    line through the contacts (z is down: the frames stand above the
+    ground, so zB and zH are negative where their body has mass)."""
+    gap = math.hypot(t.w, t.rR - t.rF) - (t.rR + t.rF)
+    if gap < 0:
+        raise ParameterError(f"two-wheeler: the wheels overlap: wheel base w = {t.w:g} m is too short for wheels of "
+                             f"radius rR = {t.rR:g} m and rF = {t.rF:g} m (their centres are "
+                             f"{math.hypot(t.w, t.rR - t.rF):g} m apart, less than rR + rF)", "machine")
+    for body, what in (("B", "rear frame"), ("H", "front frame")):
+        z = getattr(t, f"z{body}")
+        if getattr(t, f"m{body}") > 0 and z >= 0:
+            raise ParameterError(f"two-wheeler z{body} = {z:g} m puts the {what}'s mass centre at or below the ground "
+                                 f"(z is down from the rear contact: z{body} must be < 0, above the ground)",
+                                 "machine")
+
+
 @dataclass(frozen=True, kw_only=True)
 class TwoWheeler(BicycleParameters):
     """A two-wheeler (bicycle or motorcycle with its rider) as the Whipple
@@ -69,7 +88,7 @@ class TwoWheeler(BicycleParameters):
     >>> TwoWheeler(**{**benchmark_two_wheeler().benchmark_values(), "w": -1.0})
     Traceback (most recent call last):
     ...
-    deathsphere.ParameterError: two-wheeler w (wheel base) must be 1e-09..1e+09 m (got -1)
+    deathsphere.ParameterError: two-wheeler w (wheel base) must be 0.05..10 m (got -1)
     """
 
     head: tuple[float, float] = DEFAULT_HEAD
@@ -90,6 +109,7 @@ class TwoWheeler(BicycleParameters):
         if not sum(getattr(self, name) for name in _MASSES) > 0:
             raise ParameterError("two-wheeler: the masses mR + mB + mH + mF must add up to more than 0 kg",
                                  "machine")
+        _check_geometry(self)
         for body in ("B", "H"):
             ixx, izz, ixz = (getattr(self, f"I{body}{k}") for k in ("xx", "zz", "xz"))
             if ixz * ixz > ixx * izz * (1 + 1e-9):

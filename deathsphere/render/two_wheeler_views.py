@@ -10,7 +10,7 @@ from __future__ import annotations
 from rich.markup import escape
 
 from deathsphere.render.display_units import AS_TYPED, DisplayUnits
-from deathsphere.render.ride_views import _WhyWraps, _limit, _spans, _stability_cell
+from deathsphere.render.ride_views import _limit, _span, _spans, _stability_cell
 from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
     FitTable,
@@ -119,39 +119,73 @@ def _hands_free_cell(speeds: str, stable: str) -> str:
     return " ".join(cells) if cells else "—"
 
 
-#: Why a speed fails on the globe: count column -> words (ride's, less the head).
-TURN_WHY = (("slips", "slips"), ("over_g", "over g"), ("no_contact", "no contact"), ("no_orbit", "no turn"))
+#: Why a speed fails on the globe: count column -> its letter in the cell
+#: and the words of the legend under the table (ride's causes, less the
+#: head's).  Letters keep the cell to one short line, whatever fails, so the
+#: rider's numbers keep their room on an 80-column console.
+TURN_WHY = (("slips", "s", "slips"), ("over_g", "g", "over max g"), ("no_contact", "c", "no contact (a wheel lifts)"),
+            ("no_orbit", "n", "no turn"))
+#: The legend of the why cell's letters.
+TURN_WHY_LEGEND = "why the others fail: " + ", ".join(f"{letter} {words}" for _, letter, words in TURN_WHY)
 
 
 def _turn_why(get: dict) -> str:
-    parts = [f"{get[col]} {words}" for col, words in TURN_WHY if get[col]]
-    return ", ".join(parts) if parts else "—"
+    parts = [f"{get[col]}{letter}" for col, letter, _ in TURN_WHY if get[col]]
+    return " ".join(parts) if parts else "—"
 
 
 def _ends(lo: str, hi: str):
     return lambda get: (get[lo], get[hi])
 
 
+def _stable_cell(get: dict) -> str:
+    """The stable band within the limits; else, in brackets, the band stable
+    only beyond them (slips or over g: not the rider's)."""
+    if not is_undefined(get["stable_v_min_m_s"]) or is_undefined(get["stable_beyond_v_min_m_s"]):
+        return _span(get["stable_v_min_m_s"], get["stable_v_max_m_s"])
+    return f"({_span(get['stable_beyond_v_min_m_s'], get['stable_beyond_v_max_m_s'])})"
+
+
+#: ln 2: a disturbance growing at rate s doubles in ln 2 / s.
+_LN2 = 0.6931471805599453
+
+
+def _doubling_cell(get: dict) -> str:
+    """How soon a disturbance doubles on the lane's ok turns, the
+    fastest-growing one's (the least time the rider has): ln 2 / its growth
+    rate; ∞ where none grows."""
+    fast = get["growth_max_1_s"]
+    if is_undefined(fast):
+        return "—"
+    return format_number(_LN2 / fast, 2) if fast > 0 else "∞"
+
+
 #: The rider's table on the globe; the rest of its numbers are the CSV's.
+#: What the rider asks stays longest on a narrow console (lean, steer
+#: torque, head clearance, the speeds that work and the hands-free ones,
+#: how soon a disturbance doubles); θ, μ needed, load and the stable band
+#: go first; "why" stays, on one line.
 TURN_SUMMARY_VIEW = (
     HEIGHT,
     ColumnSpec("theta_deg", "θ", "°", drop=1, kind="angle", params=("theta",)),
-    ColumnSpec("ok", "ok", value=lambda get: f"{get['speeds_ok']}/{get['speeds_tried']}"),
+    ColumnSpec("ok", "ok", value=lambda get: f"{get['speeds_ok']}/{get['speeds_tried']}", drop=5),
+    # the speeds that work in the unit typed alone (SI where none was): the rider's room goes to the rest
     ColumnSpec("speed", "v rear", "m/s", value=_ends("v_rear_min_m_s", "v_rear_max_m_s"), format=_spans(),
-               **REAR_SPEED),
-    ColumnSpec("lean", "lean", "°", value=_ends("lean_min_deg", "lean_max_deg"), format=_spans(), drop=2),
-    ColumnSpec("load", "load", "g", value=_ends("load_min_g", "load_max_g"), format=_spans(2)),
-    ColumnSpec("mu_max", "μ\nneeded", digits=2),
-    ColumnSpec("head", "head\nclear", "m", value=lambda get: get["head_clearance_min_m"], digits=2, drop=4,
+               show="display", **REAR_SPEED),
+    ColumnSpec("lean", "lean°\nvert.", value=_ends("lean_vertical_min_deg", "lean_vertical_max_deg"),
+               format=_spans(2), drop=10),
+    ColumnSpec("load", "load", "g", value=_ends("load_min_g", "load_max_g"), format=_spans(2), drop=3),
+    ColumnSpec("mu_max", "μ\nneeded", digits=2, drop=2),
+    ColumnSpec("head", "head\nclear", "m", value=lambda get: get["head_clearance_min_m"], digits=2, drop=8,
                kind="length"),
     ColumnSpec("torque", "T_δ", "N m", value=_ends("steer_torque_min_n_m", "steer_torque_max_n_m"),
-               format=_spans(2), drop=3),
-    ColumnSpec("stable", "stable", "m/s", value=_ends("stable_v_min_m_s", "stable_v_max_m_s"), format=_spans(),
-               **REAR_SPEED),
+               format=_spans(2), drop=6),
+    ColumnSpec("stable", "stable", "m/s", value=_stable_cell, format=str, drop=4),
     # the hands-free speeds are a list in one cell: m/s only
-    ColumnSpec("hands", "hands-\nfree", "m/s", format=str,
+    ColumnSpec("hands", "hands-\nfree", "m/s", format=str, drop=9,
                value=lambda get: _hands_free_cell(get["hands_free_v_rear_m_s"], get["hands_free_stable_v_rear_m_s"])),
-    ColumnSpec("why", "why the others fail", value=_turn_why, justify="left"),
+    ColumnSpec("doubles", "to 2×", "s", value=_doubling_cell, format=str, drop=7),
+    ColumnSpec("why", "why the\nothers\nfail", value=_turn_why, justify="left"),
 )
 
 
@@ -164,7 +198,9 @@ def turn_summary_view(table: Table, total_rows: int | None = None, title: str | 
     first = row_record(table)
     limits = f"μ available {_limit(first['mu_available'])}, max load {_limit(first['max_g'])} g"
     note = (f"{limits}, steer {first['steer']}; ok: rear speeds feasible of those tried; ranges over the ok "
-            "ones, μ needed the most of them, head clear the least; stable: the ok speeds stable with the steer "
-            "so held; hands-free: the lane's turns with no steer torque, at any speed (✓ stable)")
-    return build_table(table, TURN_SUMMARY_VIEW, units=units, title=title, total_rows=total_rows, setup=note,
-                       cls=_WhyWraps)
+            "ones, lean from the vertical, μ needed the most of them, head clear the least; stable: the ok speeds "
+            "stable with the steer so held, (in brackets) stable only beyond the limits; hands-free: the lane's "
+            "turns with no steer torque, at any speed (✓ stable); to 2×: how soon a disturbance doubles on the "
+            f"fastest-growing ok turn, ln 2 / growth rate (∞: none grows); {TURN_WHY_LEGEND} (the speeds so "
+            "failing, counted)")
+    return build_table(table, TURN_SUMMARY_VIEW, units=units, title=title, total_rows=total_rows, setup=note)

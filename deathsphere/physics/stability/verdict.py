@@ -11,7 +11,8 @@ from enum import IntEnum
 
 import numpy as np
 
-__all__ = ["Verdict", "VERDICT_LABELS", "STABLE_TOL", "UNSTABLE_TOL", "verdict_from_growth"]
+__all__ = ["Verdict", "VERDICT_LABELS", "STABLE_TOL", "UNSTABLE_TOL", "verdict_from_growth", "STABILITY_KINDS",
+           "stability_kind"]
 
 
 class Verdict(IntEnum):
@@ -56,3 +57,34 @@ def verdict_from_growth(growth, scale):
     verdict[np.nan_to_num(rel, nan=np.inf) <= STABLE_TOL] = Verdict.STABLE
     verdict[np.nan_to_num(rel, nan=-np.inf) >= UNSTABLE_TOL] = Verdict.UNSTABLE
     return verdict
+
+
+#: The words of :func:`stability_kind`, column ``stability_kind``: what a
+#: disturbance does, where "stable" alone (no mode grows) does not say.
+STABILITY_KINDS = ("damped", "neutral", "growing", "unknown")
+
+
+def stability_kind(growth, scale):
+    """What a small disturbance does, from growth rates [1/s] (the largest
+    real part of the linearised spectrum) and rate scales [1/s], with the
+    verdict's tolerances: ``damped`` where growth/scale < -STABLE_TOL (every
+    mode decays), ``neutral`` where |growth/scale| <= STABLE_TOL (the
+    largest real part zero to the tolerance: a disturbance persists, as on
+    the paper's stable orbits, whose spectrum is imaginary), ``growing``
+    where >= UNSTABLE_TOL (unstable), ``unknown`` between (as the verdict's),
+    '' where the growth rate is NaN (not analysed).  A zero scale with a
+    zero growth rate is neutral.  An object array of those words.
+
+    Beyond the paper: docs/stability.md sec. 1 (the tolerances).
+    """
+    growth = np.asarray(growth, dtype=float)
+    scale = np.broadcast_to(np.asarray(scale, dtype=float), growth.shape)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rel = np.where(scale > 0, growth / np.where(scale > 0, scale, 1.0), np.where(growth == 0, 0.0, np.nan))
+    out = np.full(growth.shape, "unknown", dtype=object)
+    with np.errstate(invalid="ignore"):
+        out[rel < -STABLE_TOL] = "damped"
+        out[np.abs(rel) <= STABLE_TOL] = "neutral"
+        out[rel >= UNSTABLE_TOL] = "growing"
+    out[np.isnan(growth)] = ""
+    return out

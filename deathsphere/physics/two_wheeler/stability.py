@@ -30,7 +30,7 @@ from deathsphere.physics.two_wheeler import grounds, motion, steady
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
 __all__ = ["STABLE_BELOW", "turn_state_vector", "eigenvalue_count", "jacobian", "jacobians", "eigenvalues",
-           "verdict", "turns_with_stability"]
+           "verdict", "kind", "turns_with_stability"]
 
 _STEP = 1e-30
 #: A turn is stable when every eigenvalue's real part is below -STABLE_BELOW (1/s).
@@ -142,6 +142,18 @@ def verdict(values):
     growth = values.real.max(axis=-1)
     out = np.where(growth < -STABLE_BELOW, "stable", np.where(growth > STABLE_BELOW, "unstable", "marginal"))
     return out, growth
+
+
+def kind(values):
+    """``damped``, ``neutral``, ``growing`` or ``unknown`` per row of
+    eigenvalues (..., k) ('' where they are NaN: none): the shared
+    :func:`~deathsphere.physics.stability.verdict.stability_kind` of the
+    growth rate against the spectrum's size, the largest |eigenvalue|
+    (beyond the paper; docs/two-wheeler.md sec. 8.3)."""
+    from deathsphere.physics.stability.verdict import stability_kind
+
+    values = np.asarray(values)
+    return stability_kind(values.real.max(axis=-1), np.abs(values).max(axis=-1))
 
 
 def turns_with_stability(lane, parameters: BicycleParameters, ground, g=STANDARD_GRAVITY, *, speed=None, torque=None,
