@@ -107,7 +107,7 @@ def test_a_physically_absurd_parameter_is_refused_naming_it(key, value, words):
 
 
 def test_an_absurd_file_key_is_refused_naming_it(tmp_path):
-    from deathsphere.api.two_wheeler_files import two_wheeler_file
+    from deathsphere.records.two_wheeler_files import two_wheeler_file
 
     path = tmp_path / "heavy.toml"
     path.write_text('base = "benchmark-bicycle"\nmB = 1e300\n')

@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 import deathsphere
-from deathsphere.api import two_wheeler_presets
+from deathsphere.records import two_wheeler_presets
 from deathsphere.api.machines import PRESETS
-from deathsphere.api.two_wheeler_presets import COSSALTER_TABLE_7_2 as TABLE
+from deathsphere.records.two_wheeler_presets import COSSALTER_TABLE_7_2 as TABLE
 from deathsphere.api.two_wheelers import TWO_WHEELERS, TwoWheeler
 from deathsphere.physics.two_wheeler import linear
 from deathsphere.physics.two_wheeler.parameters import benchmark_bicycle

@@ -46,12 +46,11 @@ _HOME = {
     "STATUSES": "arguments", "ParameterError": "arguments",
     "ride": "rides", "ride_summary": "rides", "ride_sweep": "ride_streams", "Machine": "machines", "TwoWheeler": "two_wheelers", "machines_table": "two_wheelers",
     "machine_file": "machines", "PRESETS": "machines",
-    "two_wheeler_file": "two_wheeler_files", "two_wheeler_text": "two_wheeler_files",
+    "two_wheeler_file": "two_wheelers", "two_wheeler_text": "two_wheelers",
     "show": "shows", "ShowResult": "shows",
 }
 _MODULES = ("arguments", "streams", "orbits", "vertical_orbits", "region_limits", "orbit_stability", "simulation",
-            "paper", "rides", "ride_streams", "machines", "two_wheelers", "shows", "two_wheeler_files",
-            "two_wheeler_presets")
+            "paper", "rides", "ride_streams", "machines", "two_wheelers", "shows")
 
 __all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
            "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "animation_options", "table1",

@@ -22,6 +22,10 @@ from deathsphere.api.machines import PRESETS
 from deathsphere.params import ParameterError
 from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
+# the records' presets and files, as the command line and a notebook reach them
+from deathsphere.records.two_wheeler_files import is_two_wheeler_file, read_machine_file, two_wheeler_file, two_wheeler_text
+from deathsphere.records.two_wheeler_presets import PRESETS as MOTORCYCLES
+from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
 from deathsphere.table import Table
 
 __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_only", "two_wheeler_ride", "STRAIGHT_COLUMNS",
@@ -49,15 +53,6 @@ def _eig_columns(k: int) -> tuple[str, ...]:
     return tuple(f"eig_{i}_{part}" for i in range(1, k + 1) for part in ("re", "im"))
 
 
-def _presets() -> tuple[TwoWheeler, ...]:
-    from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
-
-    return (benchmark_two_wheeler(), *(TwoWheeler(**build(), name=name) for name, build in MOTORCYCLES.items()))
-
-
-#: The two-wheeler presets, by name (``--machine`` with ``--flat`` or
-#: ``--steer``; docs/two-wheeler.md sec. 1).
-TWO_WHEELERS = {t.name: t for t in _presets()}
 
 
 def machines_table():
@@ -85,17 +80,6 @@ def two_wheeler_only(machine) -> bool:
     two-wheeler's questions without ``flat`` or ``steer``."""
     name = machine.strip().lower() if isinstance(machine, str) else None
     return name in TWO_WHEELERS and name not in PRESETS
-
-
-def as_two_wheeler(machine) -> TwoWheeler:
-    """A :class:`TwoWheeler` from one or a preset's name; else one line saying which are."""
-    if isinstance(machine, TwoWheeler):
-        return machine
-    name = getattr(machine, "name", machine)
-    if isinstance(machine, str) and machine.strip().lower() in TWO_WHEELERS:
-        return TWO_WHEELERS[machine.strip().lower()]
-    raise ParameterError(f"flat and steer need a two-wheeler ({' | '.join(TWO_WHEELERS)} or a "
-                         f"deathsphere.TwoWheeler); {name!r} is a single-contact machine", "machine")
 
 
 # ---------------------------------------------------------------------------

@@ -172,7 +172,7 @@ def machine_options(*, without=(), machine_help: str = "A preset machine (see 'd
     :data:`MACHINE_OPTIONS` not in ``without``: a command whose setup
     already takes ``-a/--wheel-radius`` leaves ``a`` out)."""
     from deathsphere.api.machines import PRESETS
-    from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
+    from deathsphere.api.two_wheelers import MOTORCYCLES
 
     names = tuple(PRESETS) + tuple(MOTORCYCLES)
 
@@ -196,7 +196,7 @@ def machine_from_options(machine, machine_file, **overrides):
     override options given (registry names; None: not given); a
     two-wheeler's preset or file gives its TwoWheeler, as it is."""
     from deathsphere import api
-    from deathsphere.api.two_wheeler_files import read_machine_file
+    from deathsphere.api.two_wheelers import read_machine_file
     from deathsphere.api.two_wheelers import TWO_WHEELERS, TwoWheeler
 
     name = (machine or api.machines.DEFAULT_MACHINE).lower()

@@ -149,10 +149,11 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
 
     fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
     shown = display_units(units, click.get_current_context().params)
-    from deathsphere.api.two_wheeler_presets import PRESETS as MOTORCYCLES
+    from deathsphere.api.two_wheelers import is_two_wheeler_file
+    from deathsphere.api.two_wheelers import MOTORCYCLES
 
     if flat or steer is not None or steer_torque or (machine or "").lower() in MOTORCYCLES or (
-            machine_file is not None and api.two_wheeler_files.is_two_wheeler_file(machine_file)):
+            machine_file is not None and is_two_wheeler_file(machine_file)):
         # a two-wheeler (docs/two-wheeler.md): the API refuses what it does not take
         which = machine if machine_file is None and machine is not None else machine_from_options(machine,
                                                                                                    machine_file)

@@ -168,7 +168,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
 
     shown = display_units(units, click.get_current_context().params)
 
-    from deathsphere.api.two_wheeler_files import is_two_wheeler_file
+    from deathsphere.api.two_wheelers import is_two_wheeler_file
     from deathsphere.api.two_wheelers import is_two_wheeler
 
     two_wheeler_only = given(flat=flat or None, turn_radius=turn_radius, duration=duration,

@@ -14,6 +14,7 @@ import numpy as np
 
 from deathsphere import params
 from deathsphere.errors import ParameterError
+from deathsphere.records.machine import echoable_text
 from deathsphere.physics.two_wheeler.parameters import FIELD_NAMES, BicycleParameters, benchmark_bicycle
 
 __all__ = ["TwoWheeler", "DEFAULT_HEAD", "benchmark_two_wheeler"]
@@ -22,24 +23,7 @@ __all__ = ["TwoWheeler", "DEFAULT_HEAD", "benchmark_two_wheeler"]
 #: given: 1.7 m above the ground over the benchmark's rear frame mass centre
 #: (an assumption: the benchmark has no head).
 DEFAULT_HEAD = (0.3, -1.7)
-#: What text echoed in every output row may not hold: CSV rows split at each comma.
-_UNECHOABLE = (",", "\n", "\r")
 _MASSES = ("mR", "mB", "mH", "mF")
-
-
-def _echoable_text(what: str, value) -> str:
-    """``value`` if it is text that can be echoed in every output row (no
-    comma, no line break); else ParameterError naming the character (the
-    single-contact machine's record checks its name the same way; one
-    definition belongs in this layer beside both records)."""
-    if not isinstance(value, str):
-        raise ParameterError(f"{what} must be text (got {value!r})", "machine")
-    bad = next((c for c in _UNECHOABLE if c in value), None)
-    if bad is not None:
-        shown = "a comma" if bad == "," else "a line break"
-        raise ParameterError(f"{what} {value!r} holds {shown}: every output row echoes it and CSV rows must split "
-                             "at each comma (write ';' or a space instead)", "machine")
-    return value
 
 
 def _number(name: str, value) -> float:
@@ -98,7 +82,7 @@ class TwoWheeler(BicycleParameters):
     def __post_init__(self):
         set_ = object.__setattr__
         for field in ("name", "source"):
-            set_(self, field, _echoable_text(f"two-wheeler {field}", getattr(self, field)))
+            set_(self, field, echoable_text(f"two-wheeler {field}", getattr(self, field)))
         for name in FIELD_NAMES:
             set_(self, name, _number(name, getattr(self, name)))
         head = self.head

@@ -3,7 +3,7 @@ docs/two-wheeler.md sec. 1.4): the BicycleParameters library's benchmark
 format (``<Name>Benchmark.txt``: ``name = value`` or ``name =
 value+/-uncertainty`` lines, the benchmark's 26 names) and the project's
 machine file (TOML ``key = value`` lines or a CSV header and row, read as
-:func:`~deathsphere.api.machines.machine_file` reads them) whose keys are
+:func:`~deathsphere.records.machine_files.machine_file` reads them) whose keys are
 the benchmark's names.  A bad file is refused in one line.
 
 Gravity is the run's, not the two-wheeler's: a BicycleParameters file's
@@ -18,8 +18,11 @@ import math
 import re
 from pathlib import Path
 
-from deathsphere.api.machines import DEFAULT_MACHINE, UNECHOABLE, machine_file, machine_file_data, machine_file_text
-from deathsphere.api.two_wheelers import DEFAULT_HEAD, TWO_WHEELERS, TwoWheeler
+from deathsphere.records.machine import UNECHOABLE
+from deathsphere.records.machine_files import machine_file, machine_file_data, machine_file_text
+from deathsphere.records.machine_presets import DEFAULT_MACHINE
+from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler
+from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
 from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.params import PARAMS, ParameterError
 from deathsphere.physics.two_wheeler.parameters import FIELD_NAMES, PARAMETER_NAMES
@@ -186,8 +189,8 @@ def two_wheeler_file(path, base=None) -> TwoWheeler:
 def read_machine_file(path, base=DEFAULT_MACHINE):
     """A machine file's machine: a :class:`TwoWheeler` when it is a
     two-wheeler's (:func:`is_two_wheeler_file`), else the single-contact
-    :class:`~deathsphere.api.machines.Machine` of
-    :func:`~deathsphere.api.machines.machine_file`; ``base`` the preset
+    :class:`~deathsphere.records.machine.Machine` of
+    :func:`~deathsphere.records.machine_files.machine_file`; ``base`` the preset
     whose values the keys not given keep."""
     if is_two_wheeler_file(path):
         return two_wheeler_file(path, base=base)
@@ -201,8 +204,6 @@ def two_wheeler_text(machine, style: str = "toml") -> str:
     ``bicycleparameters``, the library's benchmark format (the 26 sorted by
     name, as its writer sorts them; no uncertainties, no head; its ``g``,
     which the format needs, standard gravity, the run's by default)."""
-    from deathsphere.api.two_wheelers import as_two_wheeler
-
     t = as_two_wheeler(machine)
     if style not in FILE_STYLES:
         raise ParameterError(f"style must be one of {' | '.join(FILE_STYLES)} (got {style!r})", "style")

@@ -17,10 +17,12 @@ import math
 
 import numpy as np
 
-from deathsphere.api.machines import stunt125
+from deathsphere.errors import ParameterError
+from deathsphere.records.machine_presets import stunt125
+from deathsphere.records.two_wheeler import TwoWheeler, benchmark_two_wheeler
 
 __all__ = ["COSSALTER_TABLE_7_2", "inertia_tensor", "front_assembly", "whipple_parameters", "sport_tourer",
-           "stunt125_steer", "PRESETS"]
+           "stunt125_steer", "PRESETS", "TWO_WHEELERS", "as_two_wheeler"]
 
 #: V. Cossalter, Motorcycle Dynamics, 2nd ed. (2006), Table 7.2 p. 260, the
 #: sport touring motorcycle with its rider, SI (caster in degrees): the
@@ -172,3 +174,21 @@ def stunt125_steer() -> dict:
 #: The presets' names and builders, in the order ``deathsphere machines``
 #: lists them (the names known without building them: ``--machine``'s choices).
 PRESETS = {"sport-tourer": sport_tourer, "stunt125-steer": stunt125_steer}
+
+
+#: The two-wheeler presets, by name (``--machine`` with ``--flat`` or
+#: ``--steer``; docs/two-wheeler.md sec. 1): the benchmark bicycle, then the
+#: motorcycles above.
+TWO_WHEELERS = {t.name: t for t in (benchmark_two_wheeler(),
+                                    *(TwoWheeler(**build(), name=name) for name, build in PRESETS.items()))}
+
+
+def as_two_wheeler(machine) -> TwoWheeler:
+    """A :class:`TwoWheeler` from one or a preset's name; else one line saying which are."""
+    if isinstance(machine, TwoWheeler):
+        return machine
+    name = getattr(machine, "name", machine)
+    if isinstance(machine, str) and machine.strip().lower() in TWO_WHEELERS:
+        return TWO_WHEELERS[machine.strip().lower()]
+    raise ParameterError(f"flat and steer need a two-wheeler ({' | '.join(TWO_WHEELERS)} or a "
+                         f"deathsphere.TwoWheeler); {name!r} is a single-contact machine", "machine")
