@@ -43,11 +43,13 @@ COLUMNS = (
     "omega3_min_real_rad_s", "omega3_min_contact_rad_s", "max_accel_g",
     # the load a rider feels (|a - g| / g, what --max-g limits) and that limit by its own name
     "load_g", "max_g",
+    # what a disturbance does on an analysed orbit: neutral (the paper's stable), damped or growing
+    "stability_kind",
 )
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
 #: float64 (input_row is int).
-TEXT_COLUMNS = frozenset({"body", "side", "status", "reason", "stability", "stability_method"})
+TEXT_COLUMNS = frozenset({"body", "side", "status", "reason", "stability", "stability_method", "stability_kind"})
 
 #: Physics output key -> contract column.
 _PHYSICS_COLUMNS = {
@@ -525,7 +527,8 @@ def finite_or_blank(columns: dict) -> np.ndarray | None:
 def _no_stability(n: int) -> dict:
     blank = np.full(n, "", dtype=object)
     return {"stability": blank, "stability_method": blank.copy(), "growth_rate_1_s": np.full(n, np.nan),
-            "freq_slow_rad_s": np.full(n, np.nan), "freq_fast_rad_s": np.full(n, np.nan)}
+            "freq_slow_rad_s": np.full(n, np.nan), "freq_fast_rad_s": np.full(n, np.nan),
+            "stability_kind": blank.copy()}
 
 
 #: ``stability_method`` values.
@@ -548,6 +551,7 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, s
     (:func:`text_codes` of BODIES) and ``outside`` are each row's too.
     """
     from deathsphere.physics import stability as exact
+    from deathsphere.physics.stability.verdict import stability_kind
 
     n = len(columns["status"])
     out = _no_stability(n)
@@ -571,6 +575,7 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, s
         out["growth_rate_1_s"][rows] = res["growth_rate"]
         out["freq_slow_rad_s"][rows] = res["freq_slow"]
         out["freq_fast_rad_s"][rows] = res["freq_fast"]
+        out["stability_kind"][rows] = stability_kind(res["growth_rate"], res["rate_scale"])
     rows = np.flatnonzero(live & particle)
     out["stability"][rows] = "unknown"
     out["stability_method"][rows] = "not analysed (sliding particle)"

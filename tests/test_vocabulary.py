@@ -145,3 +145,17 @@ def test_sweep_and_limits_and_stability_read_input_files(run):
 def test_every_help_fits_80_columns(run, command):
     text = run(command, "--help", env={"COLUMNS": "200"}).stdout
     assert text and max(len(line) for line in text.splitlines()) <= 80, command
+
+
+def test_stability_kind_says_what_a_disturbance_does(run):
+    """The paper's wheel conserves energy: a stable orbit is neutral (its
+    spectrum imaginary), never damped; an unstable one grows; an orbit not
+    analysed has no kind."""
+    out = rows(run("orbit", "--theta", "90", "--alpha", "10", "--alpha", "45", "--alpha", "80", "--alpha", "120",
+                   "--format", "csv").stdout)
+    kinds = {(r["stability"], r["stability_kind"]) for r in out}
+    assert kinds <= {("stable", "neutral"), ("unstable", "growing"), ("", "")}
+    assert ("stable", "neutral") in kinds and ("unstable", "growing") in kinds and ("", "") in kinds
+    for r in out:
+        if r["stability_kind"] == "neutral":
+            assert abs(float(r["growth_rate_1_s"])) < 1e-6
