@@ -55,7 +55,10 @@ def decode_run(given: Mapping, keys: Keys, read, defaults: Mapping) -> Run:
 def _within(height, ground: Sphere, keys: Keys, key: str):
     """A height inside the globe, else refused (naming the lowest offender)."""
     h, top = np.asarray(height, dtype=float), 2.0 * np.asarray(ground.radius, dtype=float)
-    out = h > top
+    try:
+        out = h > top
+    except ValueError:      # not broadcast together: refused as such where the grid is built
+        return height
     if np.any(out):
         i = np.unravel_index(int(np.argmax(out)), out.shape) if out.ndim else ()
         t = top if top.ndim == 0 else np.broadcast_to(top, out.shape)[i]
@@ -75,11 +78,13 @@ def decode_lane(given: Mapping, keys: Keys, read, ground: Sphere, cone: bool = F
     other = LANE_KEYS["vertical" if kind == "horizontal" else "horizontal"]
     wrong = [k for k in other if given.get(k) is not None and not (cone and k == "theta")]
     if wrong:
-        keys.fail(wrong[0], f"is not a key of a {kind} lane")
+        keys.refuse(wrong[0], f"is not a key of a {kind} lane")
     if kind == "vertical":
         if given.get("v_top") is None:
             keys.fail("v_top", "a vertical lane needs v_top (the centre of mass's speed at the top)", missing=True)
         extra = {k: read(k, given[k]) for k in ("azimuth", "theta") if given.get(k) is not None}
+        if cone and given.get("theta") is None:
+            keys.fail("theta", "a vertical loop needs theta (its cone angle; 90: a great circle)", missing=True)
         return Vertical(v_top=read("v_top", given["v_top"]), **extra)
     key, raw = _one_of(given, keys, "theta", "height", " (the contact's height above the floor)")
     at = Theta(read(key, raw)) if key == "theta" else Height(_within(read(key, raw), ground, keys, key))

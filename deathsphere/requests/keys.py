@@ -22,3 +22,8 @@ class Keys:
         if self.where is None:
             raise ParameterError(what, key, missing=missing)
         raise ParameterError(f"{self.where}: {key}: {what}" if key else f"{self.where}: {what}", key)
+
+    def refuse(self, key: str, predicate: str):
+        """Refuse ``key`` with what is wrong with it (``"is not a key of a
+        vertical lane"``): under a table after the key, else after its name."""
+        self.fail(key, predicate if self.where is not None else f"{key} {predicate}")
