@@ -3,8 +3,9 @@ run it rides in (the ground, gravity, the limits, the solver), declared once
 and built by one decoder from keys as typed: a show plan's tables, the
 command line's options or the API's keywords (docs/api.md, "Requests").
 
-A lane is a tagged union, so "exactly one of theta and height" and "alpha
-or speed" are a matter of structure, decided once in :mod:`.decode`."""
+A lane is a tagged union, so which of theta and height, and which of alpha
+and speed, a rider gave is a matter of structure, decided once in
+:mod:`.decode`."""
 
 from deathsphere.requests.records import (
     Height,
