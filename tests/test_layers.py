@@ -67,6 +67,8 @@ ALLOWED = {
     # a body's record is validated with the registry; its parameter files are text read once
     "records": {"physics", "params", "units", "errors", "constants", "table"},
     "model": {"physics", "table", "params", "constants", "errors"},
+    # a request (a rider and its run) is decoded once, from keys as typed, into records of bodies and grounds
+    "requests": {"physics", "records", "params", "units", "errors", "constants"},
     "inputs": {"model", "params", "errors", "units", "table"},
     # verify checks claims about motion with the simulator
     "results": {"physics", "model", "table", "params", "constants", "parallel", "simulation"},
@@ -75,9 +77,10 @@ ALLOWED = {
     "render": {"table", "model", "constants", "params"},
     "viewer": {"table", "render"},
     "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
-            "parallel", "cluster", "units", "errors", "act", "records"},
+            "parallel", "cluster", "units", "errors", "act", "records", "requests"},
     # the show's parts (an act of several riders) compute on the machine's physics and records
-    "act": {"physics", "records", "table", "params", "units", "errors", "constants", "parallel", "cluster"},
+    "act": {"physics", "records", "requests", "table", "params", "units", "errors", "constants", "parallel",
+            "cluster"},
     "__main__": {"cli"},
     # the option parser reads the unit a value was typed in, to show it back beside SI (docs/units.md)
     "cli": {"api", "render", "viewer", "writers", "table", "params", "constants", "exitcodes", "errors", "topics",

@@ -9,69 +9,94 @@ import math
 import pathlib
 from dataclasses import dataclass, replace
 
-from deathsphere import params, units
+from deathsphere import requests
 from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.errors import ParameterError
 from deathsphere.physics.ground import Sphere
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_files import FILE_KEYS, machine_file
 from deathsphere.records.machine_presets import PRESETS, as_machine
+from deathsphere.requests import decode
+from deathsphere.requests.keys import Keys
+from deathsphere.requests.records import Run
+from deathsphere.requests.values import typed_value, table_reader
 
 #: The keys of the ``[globe]`` table.
 GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "duration")
 #: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
 RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "direction", "phase", "azimuth", "v_top",
               "width")
-#: Keys that belong to one lane only.
-HORIZONTAL_ONLY = ("height", "theta", "speed", "direction")
-VERTICAL_ONLY = ("azimuth", "v_top")
 #: The crew's rule when the plan gives none [m] (the spacing quoted for an
 #: eight-rider act is 10-15 cm).
 DEFAULT_MIN_CLEARANCE = 0.15
-LANES = ("horizontal", "vertical")
-DIRECTIONS = {"ccw": 1, "cw": -1}
+#: The globe's keys a plan may leave out.
+GLOBE_DEFAULTS = {"g": G, "mu": math.inf, "max_g": math.inf}
 
 
 @dataclass(frozen=True)
 class Globe:
-    """The globe: radius r [m], gravity g [m/s^2], the friction available
-    mu, the largest load max_g [g], the crew's least clearance [m] and the
-    act's duration [s] when the plan gives one (None: not given)."""
+    """The globe: the run the riders share (its ground, gravity g [m/s^2],
+    the friction available mu, the largest load max_g [g], the act's
+    duration [s] when the plan gives one, None: not given) and the crew's
+    least clearance [m]."""
 
-    r: float
-    g: float = G
-    mu: float = math.inf
-    max_g: float = math.inf
+    run: Run
     min_clearance: float = DEFAULT_MIN_CLEARANCE
-    duration: float | None = None
 
     @property
     def ground(self) -> Sphere:
         """The globe as the ground the riders roll on."""
-        return Sphere(self.r)
+        return self.run.ground
+
+    r = property(lambda self: self.run.r, doc="The globe's radius [m].")
+    g = property(lambda self: self.run.g, doc="Gravity [m/s^2].")
+    mu = property(lambda self: self.run.mu, doc="The friction available.")
+    max_g = property(lambda self: self.run.max_g, doc="The largest load allowed [g].")
+    duration = property(lambda self: self.run.duration, doc="The act's length [s] (None: not given).")
 
 
 @dataclass(frozen=True)
 class Rider:
-    """One rider of the plan, checked: lane 'horizontal' (theta_deg of the
-    contact, speed of the centre of mass [m/s], direction +1 ccw / -1 cw
-    seen from above, phase_deg the contact's azimuth at t = 0) or
-    'vertical' (azimuth_deg of the loop's plane, v_top [m/s] the centre of
-    mass's speed at the top, phase_deg the angle psi from the top at t = 0)."""
+    """One rider of the plan, checked: its request (body, lane, direction,
+    phase, name) on the globe ``ground``, read as the act reads a rider:
+    lane 'horizontal' (theta_deg of the contact, speed of the centre of
+    mass [m/s], direction +1 ccw / -1 cw seen from above, phase_deg the
+    contact's azimuth at t = 0) or 'vertical' (azimuth_deg of the loop's
+    plane, v_top [m/s] the centre of mass's speed at the top, phase_deg the
+    angle psi from the top at t = 0)."""
 
-    name: str
-    machine: Machine
-    lane: str
-    phase_deg: float = 0.0
-    theta_deg: float = math.nan
-    speed: float = math.nan
-    direction: int = 1
-    azimuth_deg: float = math.nan
-    v_top: float = math.nan
+    request: requests.RiderRequest
+    ground: Sphere
+
+    name = property(lambda self: self.request.name)
+    machine = property(lambda self: self.request.body)
+    lane = property(lambda self: self.request.lane.kind)
+    phase_deg = property(lambda self: self.request.phase)
+    direction = property(lambda self: self.request.direction)
 
     @property
     def width(self) -> float:
         return self.machine.width
+
+    @property
+    def theta_deg(self) -> float:
+        at = getattr(self.request.lane, "at", None)
+        if isinstance(at, requests.Height):
+            return math.degrees(float(self.ground.theta(at.height)))
+        return at.theta if at is not None else math.nan
+
+    @property
+    def speed(self) -> float:
+        by = getattr(self.request.lane, "by", None)
+        return by.speed if isinstance(by, requests.Speed) else math.nan
+
+    @property
+    def azimuth_deg(self) -> float:
+        return getattr(self.request.lane, "azimuth", math.nan)
+
+    @property
+    def v_top(self) -> float:
+        return getattr(self.request.lane, "v_top", math.nan)
 
 
 @dataclass(frozen=True)
@@ -86,35 +111,13 @@ class Plan:
 
     def with_phases(self, phases: dict) -> Plan:
         """The plan with some riders' phases [deg] replaced, by name."""
-        return replace(self, riders=tuple(replace(r, phase_deg=float(phases.get(r.name, r.phase_deg)))
-                                          for r in self.riders))
+        return replace(self, riders=tuple(
+            replace(r, request=replace(r.request, phase=float(phases.get(r.name, r.phase_deg))))
+            for r in self.riders))
 
 
 def _fail(where: str, key: str | None, what: str):
-    raise ParameterError(f"{where}: {key}: {what}" if key else f"{where}: {what}", key)
-
-
-def _value(where: str, key: str, raw, kind: str, param: str | None = None, lo=None, hi=None,
-           lo_open=False) -> float:
-    """One number of the plan: a number, or text with a unit of ``kind``;
-    within the registry's bounds of ``param`` or [lo, hi]."""
-    if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
-        _fail(where, key, f"must be a number or text with a unit (got {raw!r})")
-    try:
-        value = units.parse_value(raw, kind, key) if isinstance(raw, str) else float(raw)
-    except ParameterError as exc:
-        _fail(where, key, str(exc))
-    if param is not None:
-        reason = params.problems(param, [value])[0]
-        if reason:
-            _fail(where, key, reason)
-    if not math.isfinite(value) and not (param in ("mu", "max_g") and value == math.inf):
-        _fail(where, key, f"must be a finite number (got {raw!r})")
-    if lo is not None and (value < lo or (lo_open and value == lo)):
-        _fail(where, key, f"must be {'above' if lo_open else 'at least'} {lo:g} (got {raw!r})")
-    if hi is not None and value > hi:
-        _fail(where, key, f"must be at most {hi:g} (got {raw!r})")
-    return value
+    Keys(where).fail(key, what)
 
 
 def _unknown(where: str, table: dict, known) -> None:
@@ -124,24 +127,15 @@ def _unknown(where: str, table: dict, known) -> None:
 
 
 def _globe(raw) -> Globe:
-    where = "globe"
+    keys = Keys("globe")
     if not isinstance(raw, dict):
-        _fail(where, None, "the plan needs a [globe] table (diameter or radius, mu, max_g, min_clearance)")
-    _unknown(where, raw, GLOBE_KEYS)
-    if ("diameter" in raw) == ("radius" in raw):
-        _fail(where, "diameter", "give exactly one of diameter and radius")
-    if "diameter" in raw:
-        r = _value(where, "diameter", raw["diameter"], "length", "diameter") / 2
-    else:
-        r = _value(where, "radius", raw["radius"], "length", "r")
-    g = _value(where, "g", raw.get("g", G), "acceleration", "g")
-    mu = _value(where, "mu", raw.get("mu", math.inf), "none", "mu")
-    max_g = _value(where, "max_g", raw.get("max_g", math.inf), "load", "max_g")
-    clear = _value(where, "min_clearance", raw.get("min_clearance", DEFAULT_MIN_CLEARANCE), "length", lo=0.0)
-    duration = None
+        keys.fail(None, "the plan needs a [globe] table (diameter or radius, mu, max_g, min_clearance)")
+    _unknown(keys.where, raw, GLOBE_KEYS)
+    run = decode.decode_run(raw, keys, table_reader(keys), GLOBE_DEFAULTS)
+    clear = typed_value(keys, "min_clearance", raw.get("min_clearance", DEFAULT_MIN_CLEARANCE), "length", lo=0.0)
     if "duration" in raw:
-        duration = _value(where, "duration", raw["duration"], "none", lo=0.0, lo_open=True)
-    return Globe(r=r, g=g, mu=mu, max_g=max_g, min_clearance=clear, duration=duration)
+        run = replace(run, duration=typed_value(keys, "duration", raw["duration"], "none", lo=0.0, lo_open=True))
+    return Globe(run=run, min_clearance=clear)
 
 
 def _machine(where: str, raw, base_dir: pathlib.Path | None) -> Machine:
@@ -178,43 +172,19 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     name = raw.get("name")
     if not isinstance(name, str) or not name.strip() or any(c in name for c in ",\n\r"):
         _fail(f"rider {i + 1}", "name", f"must be a non-empty text without a comma or line break (got {name!r})")
-    where = f"rider {name!r}"
-    _unknown(where, raw, RIDER_KEYS)
-    lane = raw.get("lane")
-    if lane not in LANES:
-        _fail(where, "lane", f"must be horizontal or vertical (got {lane!r})")
-    machine = _machine(where, raw.get("machine", "stunt125"), base_dir)
+    keys = Keys(f"rider {name!r}")
+    _unknown(keys.where, raw, RIDER_KEYS)
+    if raw.get("lane") not in decode.LANES:     # a plan names its lane (no default)
+        keys.fail("lane", f"must be horizontal or vertical (got {raw.get('lane')!r})")
+    machine = _machine(keys.where, raw.get("machine", "stunt125"), base_dir)
     if "width" in raw:
-        machine = replace(machine, width=_value(where, "width", raw["width"], "length", "width"))
+        machine = replace(machine, width=typed_value(keys, "width", raw["width"], "length", "width"))
     if machine.width is None:
-        _fail(where, "width", f"machine {machine.name!r} has no width: give width (handlebar or shoulders)")
-    phase = _value(where, "phase", raw.get("phase", 0.0), "angle")
-    wrong = [k for k in (VERTICAL_ONLY if lane == "horizontal" else HORIZONTAL_ONLY) if k in raw]
-    if wrong:
-        _fail(where, wrong[0], f"is not a key of a {lane} lane")
-    r = globe.r
-    if lane == "vertical":
-        if "v_top" not in raw:
-            _fail(where, "v_top", "a vertical lane needs v_top (the centre of mass's speed at the top)")
-        return Rider(name=name, machine=machine, lane=lane, phase_deg=phase,
-                     azimuth_deg=_value(where, "azimuth", raw.get("azimuth", 0.0), "angle"),
-                     v_top=_value(where, "v_top", raw["v_top"], "speed", "v_top"))
-    if ("height" in raw) == ("theta" in raw):
-        _fail(where, "height", "give exactly one of height (of the contact above the floor) and theta")
-    if "height" in raw:
-        h = _value(where, "height", raw["height"], "length", "height")
-        if h > 2 * r:
-            _fail(where, "height", f"is outside the globe: at most its diameter {2 * r:g} m (got {h:g} m)")
-        theta = math.degrees(float(globe.ground.theta(h)))
-    else:
-        theta = _value(where, "theta", raw["theta"], "angle", "theta")
-    if "speed" not in raw:
-        _fail(where, "speed", "a horizontal lane needs speed (of the centre of mass)")
-    direction = raw.get("direction", "ccw")
-    if direction not in DIRECTIONS:
-        _fail(where, "direction", f"must be ccw or cw, seen from above (got {direction!r})")
-    return Rider(name=name, machine=machine, lane=lane, phase_deg=phase, theta_deg=theta,
-                 speed=_value(where, "speed", raw["speed"], "speed", "speed"), direction=DIRECTIONS[direction])
+        keys.fail("width", f"machine {machine.name!r} has no width: give width (handlebar or shoulders)")
+    if raw["lane"] == "horizontal" and "speed" not in raw:   # a show's rider rides a speed, not a tilt
+        keys.fail("speed", "a horizontal lane needs speed (of the centre of mass)")
+    rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground)
+    return Rider(request=rider, ground=globe.ground)
 
 
 def read_plan(plan) -> Plan:

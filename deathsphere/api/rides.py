@@ -5,6 +5,7 @@ contains as the machine ``paper-wheel``)."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -19,7 +20,6 @@ from deathsphere.api.arguments import (
     checked_statuses,
     grid_shape,
     refuse_large_grid,
-    sphere_radius,
 )
 from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.ground import Sphere
@@ -29,6 +29,9 @@ from deathsphere.physics.machine_lanes import orbits_for_speed
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
+from deathsphere.requests.decode import decode_rider, decode_run
+from deathsphere.requests.keys import Keys
+from deathsphere.requests.records import RiderRequest, Run, Theta, Tilt
 from deathsphere.table import Table
 
 #: Orbits evaluated per piece (temporaries stay in cache, as the wheel's).
@@ -227,36 +230,76 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     if checked_flag("flat", flat) or steer is not None or steer_torque is not None or (
             is_two_wheeler(machine) and not isinstance(machine, str)) or two_wheeler_only(machine):
         return _two_wheeler(machine, locals())
-    m = as_machine(machine).with_overrides(
+    body = as_machine(machine).with_overrides(
         mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,
         pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
-    stability, keep = checked_flag("stability", stability), checked_statuses(only)
-    summary = checked_flag("summary", summary)
-    stability = stability and not summary       # the rider's table has no stability column
-    if summary and keep is not None:
-        raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
-                             "only")
-    if checked_flag("vertical", vertical):
-        if summary:
-            raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop",
-                                 "summary")
-        if alpha is not None or speed is not None or height is not None:
-            raise ParameterError("a vertical loop takes theta and v_top (not alpha, speed or height)", "v_top")
-        table = _loop(theta, v_top, m, sphere_radius(r, diameter), g, mu, max_g)
-        return table if keep is None else table[np.isin(table["status"], keep)]
-    if v_top is not None:
-        raise ParameterError("v_top is for a vertical loop: pass vertical=True", "v_top")
-    if (theta is None) == (height is None):
-        raise ParameterError("give exactly one of theta and height (the contact's height above the floor)", "theta",
-                             missing=theta is None)
-    if (alpha is None) == (speed is None):
-        raise ParameterError("give exactly one of alpha and speed", "alpha", missing=alpha is None)
-    r = sphere_radius(r, diameter)
-    given = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "r": r, "g": g, "mu": mu,
-             "max_g": max_g}
-    checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
+    options = RideOptions.checked(stability=stability, summary=summary, only=only)
+    vertical = checked_flag("vertical", vertical)
+    if vertical and options.summary:
+        raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop", "summary")
+    typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "v_top": v_top, "r": r,
+             "diameter": diameter, "g": g, "mu": mu, "max_g": max_g}
+    rider, run = ride_request(typed, body, vertical)
+    return ride_table(rider, run, options)
+
+
+@dataclass(frozen=True)
+class RideOptions:
+    """What to make of a ride's orbits: the stability columns, the rider's
+    table (summary) instead, the statuses kept (None: all)."""
+
+    stability: bool = True
+    summary: bool = False
+    keep: tuple | None = None
+
+    @classmethod
+    def checked(cls, stability=True, summary=False, only=None) -> RideOptions:
+        stability, keep, summary = checked_flag("stability", stability), checked_statuses(only), \
+            checked_flag("summary", summary)
+        if summary and keep is not None:
+            raise ParameterError("the rider's table (summary) counts every status: give only or summary, not both",
+                                 "only")
+        # the rider's table has no stability column
+        return cls(stability=stability and not summary, summary=summary, keep=keep)
+
+    def kept(self, table: Table) -> Table:
+        return table if self.keep is None else table[np.isin(table["status"], self.keep)]
+
+
+def _read(key: str, raw):
+    """One keyword's values, checked against the registry (any shape)."""
+    return checked_array(key, raw)
+
+
+def ride_request(typed: dict, body: Machine, vertical: bool = False) -> tuple[RiderRequest, Run]:
+    """The rider (``body`` on the lane the keywords describe) and its run,
+    from ``ride``'s keywords as typed (None: not given; ``r`` the Table I
+    default unless a diameter is given)."""
+    keys = Keys()
+    given = {k: v for k, v in typed.items() if v is not None}
+    if "diameter" in given and given.get("r") is R:
+        del given["r"]                      # the default radius yields to a diameter
+    run = decode_run(given, keys, _read, {"g": G, "mu": INF, "max_g": INF})
+    if vertical:
+        given["lane"] = "vertical"
+    return decode_rider(given, keys, _read, body, run.ground, cone=True), run
+
+
+def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions()) -> Table:
+    """``ride``'s table of one rider request (its lane's values broadcast as
+    a grid) in ``run``: the steady orbits of a horizontal lane (by tilt or
+    by speed), or the loops of a vertical one."""
+    m, lane = rider.body, rider.lane
+    if lane.kind == "vertical":
+        return options.kept(_loop(lane.theta, lane.v_top, m, run))
+    stability = options.stability
+    where = ("theta", lane.at.theta) if isinstance(lane.at, Theta) else ("height", lane.at.height)
+    how = ("alpha", lane.by.alpha) if isinstance(lane.by, Tilt) else ("speed", lane.by.speed)
+    by_height, by_speed = where[0] == "height", how[0] == "speed"
+    checked = {where[0]: where[1], how[0]: how[1], "r": checked_array("r", run.r), "g": run.g, "mu": run.mu,
+               "max_g": run.max_g}
     refuse_large_grid(grid_shape(checked), command="ride", limit=MAX_RIDE_ROWS,
-                      per_point=TILTS_PER_SPEED if speed is not None else 1)
+                      per_point=TILTS_PER_SPEED if by_speed else 1)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     if n > MAX_RIDE_ROWS:
@@ -267,39 +310,28 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius "
                              f"{float(rr.min()):g} m "
                              "(needs r > a)", "r")
-    if height is not None:
-        hh = flat["height"]
-        if np.any(hh > 2 * rr):
-            i = int(np.argmax(hh > 2 * rr))
-            raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * rr[i]:g} m "
-                                 f"(got {hh[i]:g})", "height")
-        th = Sphere(rr).theta(hh)
-    else:
-        th = np.radians(flat["theta"])
+    th = Sphere(rr).theta(flat["height"]) if by_height else np.radians(flat["theta"])
     g_, mu_, xg = flat["g"], flat["mu"], flat["max_g"]
-    if alpha is not None:
+    if not by_speed:
         al = np.radians(reduce_angle(flat["alpha"]))
         res = _evaluate(th, al, rr, g_, mu_, xg, m)
         given = {"alpha_deg": flat["alpha"].astype(float)}
-        if height is None:
-            given["theta_deg"] = flat["theta"].astype(float)
-        else:
+        if by_height:
             given["height_m"] = flat["height"].astype(float)
+        else:
+            given["theta_deg"] = flat["theta"].astype(float)
         table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given,
                        axes=_axes(checked, shape))
     else:
         table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
-                          theta_deg=None if height is not None else flat["theta"].astype(float),
-                          height=None if height is None else flat["height"].astype(float))
+                          theta_deg=None if by_height else flat["theta"].astype(float),
+                          height=None if not by_height else flat["height"].astype(float))
         if len(table) == n and shape:   # one row per request: a grid keeps its shape (one request stays a row)
             table = Table(table.columns, shape=shape, axes=_axes(checked, shape))
-    if summary:
-        how = "alpha" if alpha is not None else "speed"
-        return ride_summary(table, groups=_contact_groups(checked, shape, how),
-                            tried="tilts" if how == "alpha" else "speeds")
-    if keep is not None:
-        return table[np.isin(table["status"], keep)]
-    return table
+    if options.summary:
+        return ride_summary(table, groups=_contact_groups(checked, shape, how[0]),
+                            tried="speeds" if by_speed else "tilts")
+    return options.kept(table)
 
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
@@ -512,14 +544,12 @@ LOOP_COLUMNS = ("input_row", "machine", "theta_deg", "r_m", "g_m_s2", "v_top_m_s
                 "phi_worst_deg")
 
 
-def _loop(theta, v_top, m: Machine, r, g, mu=INF, max_g=INF) -> Table:
+def _loop(theta, v_top, m: Machine, run: Run) -> Table:
     """Vertical loops of a machine (docs/machine.md sec. 10, eqs. M21-M24)."""
     from deathsphere.physics.machine import vertical_loop
 
-    if theta is None or v_top is None:
-        raise ParameterError("a vertical loop needs theta (its cone angle) and v_top", "v_top", missing=True)
-    checked = {name: checked_array(name, v) for name, v in
-               (("theta", theta), ("v_top", v_top), ("r", r), ("g", g), ("mu", mu), ("max_g", max_g))}
+    checked = {"theta": theta, "v_top": v_top, "r": checked_array("r", run.r), "g": run.g, "mu": run.mu,
+               "max_g": run.max_g}
     refuse_large_grid(grid_shape(checked), command="ride --vertical", limit=MAX_RIDE_ROWS)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)

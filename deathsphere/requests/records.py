@@ -1,0 +1,114 @@
+"""The request records: frozen, one concept each.  A value is a number, or
+an array of them for a grid of requests (ride's axes broadcast); its unit
+and bounds are the registry's (:data:`deathsphere.params.PARAMS`) and were
+checked by the decoder that built the record."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.physics.ground import Sphere
+from deathsphere.records.machine import Machine
+
+
+@dataclass(frozen=True)
+class Theta:
+    """Where a horizontal lane runs: the contact's polar angle from the
+    upward vertical [deg] (registry ``theta``)."""
+
+    theta: object
+
+
+@dataclass(frozen=True)
+class Height:
+    """Where a horizontal lane runs: the contact's height above the globe's
+    floor [m] (registry ``height``), within the globe."""
+
+    height: object
+
+
+@dataclass(frozen=True)
+class Tilt:
+    """How a horizontal lane is held: the machine's tilt alpha [deg]."""
+
+    alpha: object
+
+
+@dataclass(frozen=True)
+class Speed:
+    """How a horizontal lane is held: the centre of mass's speed [m/s]
+    (every tilt giving it)."""
+
+    speed: object
+
+
+@dataclass(frozen=True)
+class Horizontal:
+    """A steady horizontal orbit: where (by theta or height) and how (by
+    tilt or speed)."""
+
+    at: Theta | Height
+    by: Tilt | Speed
+
+    kind = "horizontal"
+
+
+@dataclass(frozen=True)
+class Vertical:
+    """A vertical loop: the centre of mass's speed at the top [m/s], the
+    loop's plane's azimuth [deg] and its cone angle theta [deg] (90: a great
+    circle, as a show's loopers ride)."""
+
+    v_top: object
+    azimuth: float = 0.0
+    theta: object = 90.0
+
+    kind = "vertical"
+
+
+@dataclass(frozen=True)
+class RiderRequest:
+    """One rider's request: its body, its lane, its direction (+1 ccw, -1 cw
+    seen from above), its phase at t = 0 [deg] (a horizontal lane's azimuth
+    of the contact, a loop's angle from the top), a kick (a start's
+    perturbation, None: none) and its name (a show's)."""
+
+    body: Machine
+    lane: Horizontal | Vertical
+    direction: int = 1
+    phase: float = 0.0
+    kick: object = None
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Solver:
+    """The integrator's options: scipy's method and its tolerances (atol
+    None: = rtol)."""
+
+    method: str = "DOP853"
+    rtol: float = 1e-10
+    atol: float | None = None
+
+
+@dataclass(frozen=True)
+class Run:
+    """What every rider of a request shares: the ground (the globe), gravity
+    [m/s^2], the limits (friction available mu, the largest load max_g [g];
+    inf: no limit), the solver and the run's length (a duration [s] or a
+    number of periods; None: the command's own)."""
+
+    ground: Sphere
+    g: object = STANDARD_GRAVITY
+    mu: object = math.inf
+    max_g: object = math.inf
+    solver: Solver | None = None
+    duration: float | None = None
+    periods: float | None = None
+
+    @property
+    def r(self):
+        """The globe's radius [m]."""
+        return self.ground.radius
