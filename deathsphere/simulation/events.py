@@ -19,6 +19,7 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.bodies import PAPER
+from deathsphere.simulation.event import Event
 from deathsphere.simulation.status import RunStatus
 
 __all__ = ["ContactEvents", "EVENT_STATUSES", "EVENT_TOL", "stopped_at_start"]
@@ -75,19 +76,16 @@ class ContactEvents:
         self._cache = (t, y, vals)
         return vals
 
-    def events(self):
-        """The terminal event functions (least value over the bodies), in
-        the order of :data:`EVENT_STATUSES`."""
+    def events(self) -> list[Event]:
+        """The terminal events (least value over the bodies), in the order
+        of :data:`EVENT_STATUSES`."""
         def contact_lost(t, y):
             return float(np.min(self.values(t, y)[0]))
 
         def slips(t, y):
             return float(np.min(self.values(t, y)[1]))
 
-        for ev in (contact_lost, slips):
-            ev.terminal = True
-            ev.direction = -1
-        return [contact_lost, slips]
+        return [Event(contact_lost, EVENT_STATUSES[0]), Event(slips, EVENT_STATUSES[1])]
 
 
 def stopped_at_start(normal, friction, mu):
