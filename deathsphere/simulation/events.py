@@ -18,7 +18,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from deathsphere.physics import dynamics as dyn
-from deathsphere.simulation.bodies import PAPER
 from deathsphere.simulation.event import Event
 from deathsphere.simulation.status import RunStatus
 
@@ -35,21 +34,29 @@ EVENT_TOL = 1e-9
 
 @dataclass
 class ContactEvents:
-    """The event functions of the bodies integrated together right now (a
-    subset of the run), for :func:`scipy.integrate.solve_ivp`."""
+    """The terminal events of the bodies integrated together right now (a
+    subset of the run), for :func:`scipy.integrate.solve_ivp`: a sequence
+    of :class:`Event` (in the order of :data:`EVENT_STATUSES`) whose values
+    per body :meth:`values` gives."""
 
-    idx: np.ndarray            # indices into the run's bodies
     params: dyn.BodyParams
-    turning: np.ndarray
     mu: np.ndarray
     g: np.ndarray
-    model: object = PAPER      # the body model (simulation.bodies) of params
+    model: object              # the body model (simulation.bodies) of params
     _cache: tuple = field(default=(None, None, None))
     _scalar: tuple | None = None
+    _events: list = field(default_factory=list)
 
     def __post_init__(self):
-        if self.idx.size == 1:      # the model's one-body float path, if it has one
+        if self.mu.size == 1:      # the model's one-body float path, if it has one
             self._scalar = self.model.scalar_events(self.params)
+        self._events = self.events()
+
+    def __len__(self):
+        return len(self._events)
+
+    def __getitem__(self, k):
+        return self._events[k]
 
     def values(self, t, y):
         """(normal/g, (mu N - |F|)/g) per body at (t, y), cached for the

@@ -3,7 +3,9 @@
 
 Every body's run goes through :func:`integrate`: the paper's bodies and the
 machines (period by period, from :class:`deathsphere.simulation.runner.Simulation`)
-and the two-wheeler (one call, :mod:`deathsphere.simulation.two_wheeler`).
+and the two-wheeler (one call, :mod:`deathsphere.simulation.two_wheeler`); so
+does the 3-D view's re-integration between recorded samples
+(:mod:`deathsphere.simulation.frames`, without events).
 It returns the solution with the terminal :class:`Event` that stopped it,
 if one did, so that every caller reads the event the same way.
 """
@@ -39,9 +41,10 @@ def integrate(fun: Callable, t_span, y0, events: Sequence[Event], *, method: str
     """Integrate y' = fun(t, y) over ``t_span`` from ``y0`` with
     solve_ivp (``method``, ``rtol``, ``atol``, ``t_eval``, ``dense_output``,
     ``vectorized`` and the ``options`` passed through as they are), stopping
-    at the first terminal event of ``events``."""
-    sol = solve_ivp(fun, t_span, y0, method=method, t_eval=t_eval, events=list(events), rtol=rtol, atol=atol,
-                    dense_output=dense_output, vectorized=vectorized, **options)
+    at the first terminal event of ``events`` (none: an empty sequence)."""
+    # no events: None, solve_ivp's own default (no event bookkeeping at all)
+    sol = solve_ivp(fun, t_span, y0, method=method, t_eval=t_eval, events=list(events) or None, rtol=rtol,
+                    atol=atol, dense_output=dense_output, vectorized=vectorized, **options)
     # the earliest event that fired (solve_ivp records at most one terminal
     # event per call; the earliest, and the first on a tie, if ever more)
     k_event, t_event = -1, np.nan

@@ -18,7 +18,7 @@ from deathsphere.simulation.event import Event
 from deathsphere.simulation.integrator import integrate, past_at_start
 from deathsphere.simulation.status import RunStatus
 
-__all__ = ["TWO_WHEELER", "simulate"]
+__all__ = ["TWO_WHEELER", "run_two_wheeler"]
 
 #: Right-hand sides evaluated between two reports to ``progress`` (some 5 ms of work).
 _PROGRESS_EVERY = 100
@@ -83,7 +83,7 @@ class _TwoWheeler:
 TWO_WHEELER = _TwoWheeler()
 
 
-def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.FLAT, g=STANDARD_GRAVITY,
+def run_two_wheeler(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.FLAT, g=STANDARD_GRAVITY,
              steering=tw.Steering(), kick=tw.Kick(), solver=tw.Solver(), mu=np.inf, progress=None):
     """Integrate from (q0, u_ind0) (a steady turn's q and its independent
     speeds (lean rate, rear wheel rate, steer rate)) on ``ground`` under

@@ -20,7 +20,7 @@ from deathsphere.physics.two_wheeler import motion, stability, steady
 from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
 from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering, lock_torque
-from deathsphere.simulation.two_wheeler import simulate
+from deathsphere.simulation.two_wheeler import run_two_wheeler as simulate
 
 GLOBE = 2.4384      # a 16-foot globe's radius, m
 SPHERE, FLAT = Sphere(GLOBE), Plane()

@@ -180,7 +180,8 @@ def start(parameters: BicycleParameters, q0, u_ind0, *, ground=motion.FLAT, g=ST
 
 
 def steer_torque(y, run: Run):
-    """The steer torque at the state(s) y (11, ...) (N m)."""
+    """The steer torque at the state(s) y (11, ...) (N m; beyond the paper;
+    docs/two-wheeler.md sec. 10.1)."""
     if run.locked:
         return lock_torque(y[:8], y[8:], run.values, run.ground)[0]
     return rider_torque(y[motion.LEAN], y[8], *run.gains)
@@ -188,7 +189,8 @@ def steer_torque(y, run: Run):
 
 def rates(y, run: Run):
     """dy/dt at the state y (11,): the coordinates' rates (the eight
-    speeds) and the independent speeds' accelerations."""
+    speeds) and the independent speeds' accelerations (Kane's reduced
+    equations; beyond the paper; docs/two-wheeler.md sec. 10.1)."""
     q, u_ind = y[:8], y[8:]
     if run.locked:
         _, a, u = lock_torque(q, u_ind, run.values, run.ground)
@@ -199,7 +201,8 @@ def rates(y, run: Run):
 
 def state_forces(y, run: Run):
     """:func:`contact_forces` (normal_rear, friction_rear, normal_front,
-    friction_front) at the state y (11,)."""
+    friction_front) at the state y (11,) (beyond the paper;
+    docs/two-wheeler.md sec. 10.1)."""
     q, u_ind = y[:8], y[8:]
     u = motion.dependent_speeds(q, u_ind, run.values, run.ground)
     udot, lam = motion.accelerations(q, u, run.values, steer_torque(y, run), run.ground)
