@@ -13,7 +13,7 @@ from deathsphere import simulation as sim
 from deathsphere.api import prepare_simulation
 from deathsphere.model import Setup
 from deathsphere.params import RTOL_MIN, ParameterError
-from deathsphere.simulation import runner
+from deathsphere.simulation import integrator, runner
 
 
 #: The warnings a fresh interpreter does not show (Python's default filters).
@@ -113,7 +113,7 @@ def test_memory_is_bounded_by_splitting_long_periods(monkeypatch):
     whole, whole_summary = sim.Simulation(starts, periods=1, points_per_period=10).run()
 
     kept = []
-    real = runner.solve_ivp
+    real = integrator.solve_ivp
 
     def counting(*args, **kwargs):
         out = real(*args, **kwargs)
@@ -121,7 +121,7 @@ def test_memory_is_bounded_by_splitting_long_periods(monkeypatch):
         return out
 
     monkeypatch.setattr(runner, "_STEPS_PER_CALL", 400)
-    monkeypatch.setattr(runner, "solve_ivp", counting)
+    monkeypatch.setattr(integrator, "solve_ivp", counting)   # the one call every run goes through
     split = sim.Simulation(starts, periods=1, points_per_period=10)
     assert split.pieces_per_chunk == 7
     calls = []

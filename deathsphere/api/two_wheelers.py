@@ -693,7 +693,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     from deathsphere.simulation.runner import METHODS
     from deathsphere.physics.two_wheeler import grounds, motion
     from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering
-    from deathsphere.physics.two_wheeler.simulate import simulate as integrate
+    from deathsphere.simulation.two_wheeler import run_two_wheeler as integrate
 
     t = as_two_wheeler(machine)
     if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:

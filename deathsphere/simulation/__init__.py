@@ -21,8 +21,17 @@ Modules
 * :mod:`~deathsphere.simulation.runner` -- the integrator driver:
   :class:`Simulation` (solve_ivp, chunking period by period, recorded
   states), :func:`run_simulation`, :data:`METHODS`, :data:`FRAMES`;
+* :mod:`~deathsphere.simulation.body` -- the protocol every body model
+  keeps (state, right-hand side, contact forces, energy, projection,
+  events, series);
+* :mod:`~deathsphere.simulation.integrator` -- the one solve_ivp call every
+  run goes through;
+* :mod:`~deathsphere.simulation.event` -- one terminal event as a record
+  (its condition, the status it ends a body with);
 * :mod:`~deathsphere.simulation.events` -- the terminal events
-  (contact lost, slips);
+  (contact lost, slips) of the paper's bodies and machines;
+* :mod:`~deathsphere.simulation.two_wheeler` -- the Whipple two-wheeler's
+  body model and run (docs/two-wheeler.md sec. 10.1);
 * :mod:`~deathsphere.simulation.series` -- the time series: quantities at
   each sample, row assembly, :data:`SERIES_COLUMNS`, :func:`concat_tables`;
 * :mod:`~deathsphere.simulation.summary` -- the summary: per-body

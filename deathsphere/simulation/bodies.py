@@ -28,8 +28,20 @@ from deathsphere.physics.ground import Sphere
 from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.machine_dynamics import machine_rhs
 from deathsphere.physics.vectors import dot as _dot
+from deathsphere.simulation.events import ContactEvents
 
-__all__ = ["MachineRun", "PAPER", "MACHINE", "model_of", "take", "concat_params", "broadcast_params"]
+__all__ = ["STATE_NAMES", "STATE_UNITS", "MachineRun", "PAPER", "MACHINE", "model_of", "take", "concat_params", "broadcast_params"]
+
+
+#: the state's 9 rows, the same for both models: the wheel's (or ball's)
+#: centre C, its axis 1 e1 and its angular velocity w, lab (or turning) components
+STATE_NAMES = ("c_x", "c_y", "c_z", "e1_x", "e1_y", "e1_z", "w_x", "w_y", "w_z")
+STATE_UNITS = ("m", "m", "m", "1", "1", "1", "rad/s", "rad/s", "rad/s")
+
+
+def _contact_events(model, p, mu):
+    """:class:`deathsphere.simulation.events.ContactEvents` of the bodies p."""
+    return ContactEvents(p, np.asarray(mu, dtype=float), p.g, model)
 
 
 class MachineRun(NamedTuple):
@@ -95,6 +107,7 @@ class _Paper:
     """The paper's wheel and sphere (:mod:`deathsphere.physics.dynamics`)."""
 
     name = "paper"
+    state_names, state_units = STATE_NAMES, STATE_UNITS
     #: series and summary columns beyond the shared ones
     series_extras: tuple = ()
     summary_extras: tuple = ()
@@ -115,6 +128,10 @@ class _Paper:
 
     def rhs(self, y, p):
         return dyn.rhs(y, p)
+
+    def terminal_events(self, p, mu):
+        """Contact lost and slips (:mod:`deathsphere.simulation.events`)."""
+        return _contact_events(self, p, mu)
 
     def scalar_events(self, p):
         """(coefficients, g) of the one-body float path of the events, or None."""
@@ -170,6 +187,7 @@ class _Machine:
     """A machine: eqs. M16-M19 (:mod:`deathsphere.physics.machine_dynamics`)."""
 
     name = "machine"
+    state_names, state_units = STATE_NAMES, STATE_UNITS
     #: appended to the wheel's columns: the centre of mass's speed and the
     #: head's clearance from the globe (r - |H|), as ``ride`` names them
     series_extras = ("v_cm_m_s", "head_clearance_m")
@@ -222,6 +240,10 @@ class _Machine:
 
     def rhs(self, y, p: MachineRun):
         return machine_rhs(y, p.ground, p.g, p.machine)
+
+    def terminal_events(self, p: MachineRun, mu):
+        """Contact lost and slips, on eq. M18's contact force."""
+        return _contact_events(self, p, mu)
 
     def scalar_events(self, p):
         return None

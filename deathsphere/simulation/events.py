@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from deathsphere.physics import dynamics as dyn
-from deathsphere.simulation.bodies import PAPER
+from deathsphere.simulation.event import Event
 from deathsphere.simulation.status import RunStatus
 
 __all__ = ["ContactEvents", "EVENT_STATUSES", "EVENT_TOL", "stopped_at_start"]
@@ -34,21 +34,29 @@ EVENT_TOL = 1e-9
 
 @dataclass
 class ContactEvents:
-    """The event functions of the bodies integrated together right now (a
-    subset of the run), for :func:`scipy.integrate.solve_ivp`."""
+    """The terminal events of the bodies integrated together right now (a
+    subset of the run), for :func:`scipy.integrate.solve_ivp`: a sequence
+    of :class:`Event` (in the order of :data:`EVENT_STATUSES`) whose values
+    per body :meth:`values` gives."""
 
-    idx: np.ndarray            # indices into the run's bodies
     params: dyn.BodyParams
-    turning: np.ndarray
     mu: np.ndarray
     g: np.ndarray
-    model: object = PAPER      # the body model (simulation.bodies) of params
+    model: object              # the body model (simulation.bodies) of params
     _cache: tuple = field(default=(None, None, None))
     _scalar: tuple | None = None
+    _events: list = field(default_factory=list)
 
     def __post_init__(self):
-        if self.idx.size == 1:      # the model's one-body float path, if it has one
+        if self.mu.size == 1:      # the model's one-body float path, if it has one
             self._scalar = self.model.scalar_events(self.params)
+        self._events = self.events()
+
+    def __len__(self):
+        return len(self._events)
+
+    def __getitem__(self, k):
+        return self._events[k]
 
     def values(self, t, y):
         """(normal/g, (mu N - |F|)/g) per body at (t, y), cached for the
@@ -75,19 +83,16 @@ class ContactEvents:
         self._cache = (t, y, vals)
         return vals
 
-    def events(self):
-        """The terminal event functions (least value over the bodies), in
-        the order of :data:`EVENT_STATUSES`."""
+    def events(self) -> list[Event]:
+        """The terminal events (least value over the bodies), in the order
+        of :data:`EVENT_STATUSES`."""
         def contact_lost(t, y):
             return float(np.min(self.values(t, y)[0]))
 
         def slips(t, y):
             return float(np.min(self.values(t, y)[1]))
 
-        for ev in (contact_lost, slips):
-            ev.terminal = True
-            ev.direction = -1
-        return [contact_lost, slips]
+        return [Event(contact_lost, EVENT_STATUSES[0]), Event(slips, EVENT_STATUSES[1])]
 
 
 def stopped_at_start(normal, friction, mu):

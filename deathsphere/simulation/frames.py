@@ -228,7 +228,7 @@ def _integrate_between(t, state, params, n, batch=2000, model=PAPER):
     """States at the n_k - 1 evenly spaced times inside each interval k with
     n_k > 1, integrated afresh (solve_ivp, DOP853, lab frame) from the
     sample at its start; returns (times, states (9, M))."""
-    from scipy.integrate import solve_ivp
+    from deathsphere.simulation.integrator import integrate   # scipy's integrate only when drawn
 
     ks = np.flatnonzero(n > 1)
     times, states = [], []
@@ -250,8 +250,9 @@ def _integrate_between(t, state, params, n, batch=2000, model=PAPER):
         atol = np.concatenate((np.broadcast_to(1e-10 * np.asarray(pb.r), (3, nb)), np.broadcast_to(marker, (3, nb)),
                                np.broadcast_to(1e-10 * scale_w, (3, nb)))).reshape(-1)
         max_step = 2.0 / float(np.max(scale_w * dt))
-        sol = solve_ivp(fun, (0.0, 1.0), y0.reshape(-1), method="DOP853", rtol=1e-10, atol=atol,
-                        dense_output=True, max_step=max_step)
+        # a drawing of a run already decided: no events, no statuses
+        sol = integrate(fun, (0.0, 1.0), y0.reshape(-1), (), method="DOP853", rtol=1e-10, atol=atol,
+                        dense_output=True, max_step=max_step).sol
         if sol.status != 0:
             raise RuntimeError(f"the view's frames could not be integrated: {sol.message}")
         for m in np.unique(n[k]):

@@ -5,7 +5,8 @@
 body model, :mod:`deathsphere.simulation.bodies`: the paper's
 :mod:`deathsphere.physics.dynamics`, or a machine's eqs. M16-M19) for all bodies of a :class:`Starts` at
 once (one state vector of 9 n rows, one vectorised right-hand side) with
-:func:`scipy.integrate.solve_ivp`, period by period (:meth:`Simulation.chunks`),
+:func:`scipy.integrate.solve_ivp` (through :func:`deathsphere.simulation.integrator.integrate`),
+period by period (:meth:`Simulation.chunks`),
 stopping a body at the terminal events of
 :mod:`deathsphere.simulation.events`; :func:`simulate` runs it to the end.
 """
@@ -17,17 +18,12 @@ import time
 from collections.abc import Callable, Iterator
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from deathsphere.params import RTOL_MIN
 from deathsphere.physics import dynamics as dyn
 from deathsphere.simulation.bodies import model_of, take
-from deathsphere.simulation.events import (
-    EVENT_STATUSES,
-    EVENT_TOL,
-    ContactEvents,
-    stopped_at_start,
-)
+from deathsphere.simulation.events import EVENT_STATUSES, EVENT_TOL, stopped_at_start
+from deathsphere.simulation.integrator import integrate
 from deathsphere.simulation.series import (
     concat_tables,
     rows_table,
@@ -256,8 +252,8 @@ class Simulation:
         y = self.starts.state[:, active]
         span = 200 * _MAX_STEP_RATES / float(np.max(self._rate_scale[active]))
         wall0 = time.perf_counter()
-        sol, _ = self._solve(active, y, 0.0, span)
-        return (time.perf_counter() - wall0) / max(len(sol.t) - 1, 1)
+        done, _ = self._solve(active, y, 0.0, span)
+        return (time.perf_counter() - wall0) / max(len(done.sol.t) - 1, 1)
 
     # ---- samples and rows -------------------------------------------------------
 
@@ -354,11 +350,13 @@ class Simulation:
 
     def _solve(self, active, y, t_cur, t_b):
         """One solve_ivp call (dense output, terminal events) for the bodies
-        ``active`` at states y from t_cur to t_b.  Returns (solution, events)."""
+        ``active`` at states y from t_cur to t_b, through the one driver
+        (:func:`~deathsphere.simulation.integrator.integrate`).  Returns
+        (:class:`~deathsphere.simulation.integrator.Solved`, the events)."""
         s = self.starts
         nA = active.size
         p = take(s.params, active)
-        events = ContactEvents(active, p, self._frame_rate[active], self.mu[active], p.g, self.model)
+        events = self.model.terminal_events(p, self.mu[active])
         fun = self.model.ode(p, self._frame_rate[active])
         w0 = s.state[dyn.W][:, active]
         scale_w = np.sqrt(np.sum(w0 * w0, axis=0) + s.rate[active] ** 2 + p.g / p.a)
@@ -372,17 +370,17 @@ class Simulation:
         options = {"max_step": _MAX_STEP_RATES / float(np.max(scale_w))}
         if self.method in ("Radau", "BDF") and nA > 1:
             options["jac_sparsity"] = _jac_sparsity(nA)
-        sol = solve_ivp(fun, (t_cur, t_b), y.reshape(-1), method=self.method, rtol=self.rtol, atol=atol,
-                        dense_output=True, events=events.events(), vectorized=self.method not in _EXPLICIT,
-                        **options)
-        return sol, events
+        done = integrate(fun, (t_cur, t_b), y.reshape(-1), events, method=self.method, rtol=self.rtol, atol=atol,
+                         dense_output=True, vectorized=self.method not in _EXPLICIT, **options)
+        return done, events
 
     def _integrate(self, active, y, t_cur, t_b, j0, j1, ledger, rows):
         """One solve_ivp call for the bodies ``active`` from t_cur to t_b or
         to the first terminal event; samples the dense output on the grid.
         Returns the bodies still running, their state and the time reached."""
         nA = active.size
-        sol, events = self._solve(active, y, t_cur, t_b)
+        done, events = self._solve(active, y, t_cur, t_b)
+        sol = done.sol
         ledger.n_steps += max(len(sol.t) - 1, 0)
         ledger.n_fev += int(sol.nfev)
         t_stop = float(sol.t[-1])
@@ -394,7 +392,7 @@ class Simulation:
             return active[:0], y[:, :0], t_b
         if sol.status != 1:
             return active, sol.y[:, -1].reshape(9, nA), t_b
-        return self._stop_at_event(active, sol, events, ledger, rows)
+        return self._stop_at_event(active, done, events, ledger, rows)
 
     def _sample_grid(self, active, sol, t_cur, t_stop, j0, j1, ledger, rows):
         """Sample the dense output ``sol`` on the grid points j0 < j <= j1
@@ -420,24 +418,22 @@ class Simulation:
         has = n_in > 0
         ledger.acc["t_done"][active[has]] = ts[n_in[has] - 1]
 
-    def _stop_at_event(self, active, sol, events, ledger, rows):
+    def _stop_at_event(self, active, done, events, ledger, rows):
         """After a terminal event: stop every body whose event value reached
         zero there (the one that fired, and any within :data:`EVENT_TOL`);
         an event after a body's end time completes it instead.  Returns the
         bodies still running, their state and the event time."""
         nA = active.size
         end = self.t_end[active] + self._tol
-        fired = [len(te) > 0 for te in sol.t_events]
-        k_fired = fired.index(True)
-        t_ev = float(sol.t_events[k_fired][0])
-        y_ev = np.asarray(sol.y_events[k_fired][0]).reshape(9, nA)
+        k_fired, t_ev = done.k_event, done.t_event
+        y_ev = done.y_event.reshape(9, nA)
         vals = events.values(t_ev, y_ev.reshape(-1))
         q = self._sample(active, y_ev[:, None, :], np.array([t_ev]), ledger)
         in_time = t_ev <= end
         ledger.fold(active, q, in_time[None, :])
         stopped = np.zeros(nA, dtype=bool)
-        for k_ev, status in enumerate(EVENT_STATUSES):
-            v = vals[k_ev]
+        for k_ev, event in enumerate(events):
+            v, status = vals[k_ev], event.status
             hit = (v <= EVENT_TOL) & ~stopped
             if k_ev == k_fired:
                 hit[np.argmin(v)] = True

@@ -14,7 +14,7 @@ from enum import IntEnum
 
 import numpy as np
 
-__all__ = ["RunStatus", "STATUSES", "RUN_LABELS", "NO_FIT_VERTICAL_REASON", "failed_reason", "status_labels"]
+__all__ = ["RunStatus", "STATUSES", "RUN_LABELS", "ENDED_EARLY", "ENDED_EARLY_LABELS", "NO_FIT_VERTICAL_REASON", "failed_reason", "status_labels"]
 
 
 class RunStatus(IntEnum):
@@ -59,6 +59,11 @@ NO_FIT_VERTICAL_REASON = "the wheel does not fit on this vertical circle (needs 
 
 #: Final statuses (summary column ``status``), in code order.
 STATUSES = tuple(s.label for s in RunStatus if s is not RunStatus.PENDING)
+
+#: the statuses of a run that ended before its time, at an event time
+#: (the summary's event time; ``failed``: where the integrator gave up)
+ENDED_EARLY = (RunStatus.CONTACT_LOST, RunStatus.SLIPS, RunStatus.FAILED)
+ENDED_EARLY_LABELS = tuple(s.label for s in ENDED_EARLY)
 
 #: label of every code, indexable by an int8 code array
 RUN_LABELS = np.array([s.label for s in RunStatus], dtype=object)

@@ -35,7 +35,9 @@ __all__ = ["Scene", "Track", "Readout", "sphere_ground", "plane_ground", "revolu
 #: real time down: a fast run plays at the largest that does not alias
 PLAYBACK_FACTORS = (10.0, 5.0, 2.0, 1.0) + tuple(
     1.0 / (m * 10.0 ** e) for e in range(4) for m in (1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10) if m * 10 ** e > 1)
-#: statuses that end a run at an event of the simulation
+#: statuses that end a run at an event of the simulation: the labels of
+#: deathsphere.simulation.status.ENDED_EARLY, written out because the viewer
+#: reads tables only (a test keeps the two equal)
 EVENT_STATUSES = ("contact_lost", "slips", "failed")
 #: the drawing primitives a track's items name (their keys: docs/simulation.md, "3-D view")
 DRAW_KINDS = ("wheel", "ball", "chain", "ring", "dot", "path", "arrow", "capsule", "cross", "label")

@@ -1,5 +1,6 @@
 """The Whipple bicycle's nonlinear motion integrated
-(deathsphere.physics.two_wheeler.simulate), beyond the paper.
+(deathsphere.physics.two_wheeler.simulate, run by
+deathsphere.simulation.two_wheeler), beyond the paper.
 
 Checked against what is known independently: energy is conserved without
 a steer torque; the benchmark's published self-stable speed window
@@ -18,7 +19,8 @@ from scipy.linalg import expm
 from deathsphere.physics.two_wheeler import motion, stability, steady
 from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
-from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering, lock_torque, simulate
+from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering, lock_torque
+from deathsphere.simulation.two_wheeler import run_two_wheeler as simulate
 
 GLOBE = 2.4384      # a 16-foot globe's radius, m
 SPHERE, FLAT = Sphere(GLOBE), Plane()

@@ -23,6 +23,12 @@ the total from the mass centre's acceleration (m a - m g), the rear's the
 difference; the mass centre's acceleration by a central difference of its
 position along the motion's second-order Taylor path (step 1e-4 s, relative
 error ~1e-8 of the force).
+
+The run's pieces live here, pure: its start (:func:`start`), its rates
+(:func:`rates`), the contact forces at a state (:func:`state_forces`) and
+the series and summary of a trajectory (:func:`records`); the integration,
+its events and its statuses are the simulation's
+(:mod:`deathsphere.simulation.two_wheeler`).
 """
 
 from __future__ import annotations
@@ -35,14 +41,11 @@ from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.physics.two_wheeler import geometry, grounds, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["STATUSES", "Steering", "Kick", "Solver", "rider_torque", "lock_torque", "contact_forces", "simulate"]
+__all__ = ["Steering", "Kick", "Solver", "Run", "rider_torque", "lock_torque", "contact_forces", "start",
+           "steer_torque", "rates", "state_forces", "records"]
 
-#: How a run ends.
-STATUSES = ("completed", "contact_lost", "slips", "failed")
 #: The time step of the mass centre's acceleration by central differences (s).
 _H = 1e-4
-#: Right-hand sides evaluated between two reports to ``progress`` (some 5 ms of work).
-_PROGRESS_EVERY = 100
 
 
 @dataclass(frozen=True)
@@ -140,100 +143,83 @@ def _residual(q, p, ground):
     return np.abs(h[0])
 
 
-def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.FLAT, g=STANDARD_GRAVITY,
-             steering=Steering(), kick=Kick(), solver=Solver(), mu=np.inf, progress=None):
-    """Integrate from (q0, u_ind0) (a steady turn's q and its independent
-    speeds (lean rate, rear wheel rate, steer rate)) on ``ground`` under
-    gravity ``g`` with the start kicked by ``kick`` (:class:`Kick`), the
-    steer held as ``steering`` says (:class:`Steering`: the torque
-    :func:`rider_torque`, T_0 about lean_0, default q0's lean; or zero,
-    hands-free; or, locked, the steer held at q0's steer, its rate zero, any
-    given dropped, the torque :func:`lock_torque`), for ``t_end`` s,
-    integrated as ``solver`` says (:class:`Solver`); events stop the run: a normal force reaching zero (``contact_lost``) or the
-    friction exceeding ``mu`` times the normal at either wheel (``slips``)
-    (beyond the paper; docs/two-wheeler.md sec. 10.1).  ``progress``, if
-    given, is told (t, t_end) now and then as the integrator advances (a run
-    of a few periods takes seconds).  Returns (series
-    dict of (n,) arrays and the coordinates ``q`` (8, n), summary dict)."""
-    from scipy.integrate import solve_ivp
+@dataclass(frozen=True)
+class Run:
+    """What a run of a two-wheeler integrates with: the ``parameters``,
+    their ``values`` under gravity ``g`` on ``ground``, the steer
+    ``locked`` or held by the torque :func:`rider_torque` with ``gains``
+    (T_0, lean_0, k_lean, k_rate) and the lean ``lean0`` the deviations are
+    measured from."""
 
-    p, steer_locked = parameters, steering.locked
-    values = motion.parameter_values(p, g, ground)
+    parameters: BicycleParameters
+    values: object
+    ground: object
+    g: float
+    locked: bool
+    gains: tuple
+    lean0: float
+
+
+def start(parameters: BicycleParameters, q0, u_ind0, *, ground=motion.FLAT, g=STANDARD_GRAVITY,
+          steering=Steering(), kick=Kick()):
+    """(run, y0): the :class:`Run` and the state (q, u_ind) (11,) it starts
+    from: (q0, u_ind0) kicked by ``kick``, the pitch re-solved, a locked
+    steer's rate zero (docs/two-wheeler.md sec. 10.1)."""
+    values = motion.parameter_values(parameters, g, ground)
     q0 = np.array(q0, float)
     lean0 = float(q0[motion.LEAN]) if steering.lean0 is None else float(steering.lean0)
     q0[motion.LEAN] += kick.lean
     q0 = motion.pitch(q0, values, ground)
     u_ind0 = np.array(u_ind0, float) + np.array([kick.lean_rate, 0.0, kick.steer_rate])
-    if steer_locked:
+    if steering.locked:
         u_ind0[2] = 0.0
-    y0 = np.concatenate([q0, u_ind0])
     gains = (0.0, 0.0, 0.0, 0.0) if steering.hands_free else (steering.torque0, lean0, steering.k_lean,
                                                               steering.k_rate)
+    run = Run(parameters, values, ground, g, bool(steering.locked), gains, lean0)
+    return run, np.concatenate([q0, u_ind0])
 
-    def torque(y):
-        if steer_locked:
-            return lock_torque(y[:8], y[8:], values, ground)[0]
-        return rider_torque(y[motion.LEAN], y[8], *gains)
 
-    calls = [0]
+def steer_torque(y, run: Run):
+    """The steer torque at the state(s) y (11, ...) (N m; beyond the paper;
+    docs/two-wheeler.md sec. 10.1)."""
+    if run.locked:
+        return lock_torque(y[:8], y[8:], run.values, run.ground)[0]
+    return rider_torque(y[motion.LEAN], y[8], *run.gains)
 
-    def rates(t, y):
-        calls[0] += 1
-        if progress is not None and calls[0] % _PROGRESS_EVERY == 0:
-            progress(min(t, t_end), t_end)
-        q, u_ind = y[:8], y[8:]
-        if steer_locked:
-            _, a, u = lock_torque(q, u_ind, values, ground)
-            return np.concatenate([u, a, [0.0]])
-        Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, values, torque(y), ground)
-        return np.concatenate([u, np.linalg.solve(Mr, Fr)])
 
-    last = {}
+def rates(y, run: Run):
+    """dy/dt at the state y (11,): the coordinates' rates (the eight
+    speeds) and the independent speeds' accelerations (Kane's reduced
+    equations; beyond the paper; docs/two-wheeler.md sec. 10.1)."""
+    q, u_ind = y[:8], y[8:]
+    if run.locked:
+        _, a, u = lock_torque(q, u_ind, run.values, run.ground)
+        return np.concatenate([u, a, [0.0]])
+    Mr, Fr, u = motion.reduced_mass_and_forcing(q, u_ind, run.values, steer_torque(y, run), run.ground)
+    return np.concatenate([u, np.linalg.solve(Mr, Fr)])
 
-    def forces(y):
-        # both events ask at the same state: computed once
-        key = y.tobytes()
-        if key not in last:
-            q, u_ind = y[:8], y[8:]
-            u = motion.dependent_speeds(q, u_ind, values, ground)
-            udot, lam = motion.accelerations(q, u, values, torque(y), ground)
-            last.clear()
-            last[key] = contact_forces(q, u, udot, lam, p, ground, g)
-        return last[key]
 
-    def lost(t, y):
-        n_rear, _, n_front, _ = forces(y)
-        return min(n_rear, n_front)
+def state_forces(y, run: Run):
+    """:func:`contact_forces` (normal_rear, friction_rear, normal_front,
+    friction_front) at the state y (11,) (beyond the paper;
+    docs/two-wheeler.md sec. 10.1)."""
+    q, u_ind = y[:8], y[8:]
+    u = motion.dependent_speeds(q, u_ind, run.values, run.ground)
+    udot, lam = motion.accelerations(q, u, run.values, steer_torque(y, run), run.ground)
+    return contact_forces(q, u, udot, lam, run.parameters, run.ground, run.g)
 
-    def slip(t, y):
-        n_rear, f_rear, n_front, f_front = forces(y)
-        return min(mu * n_rear - f_rear, mu * n_front - f_front)
 
-    lost.terminal = slip.terminal = True
-    lost.direction = slip.direction = -1
-    events = [lost] + ([slip] if np.isfinite(mu) else [])
-    t_eval = np.linspace(0.0, t_end, max(int(solver.n_points), 2))
-    # an event already past at the start is not a crossing: solve_ivp would never see it
-    start = [e(0.0, y0) for e in events]
-    if min(start) <= 0:
-        status, t_event, ts, Y, nfev = STATUSES[1 + int(np.argmin(start))], 0.0, np.zeros(1), y0[:, None], 0
-    else:
-        sol = solve_ivp(rates, (0.0, t_end), y0, method=solver.method, t_eval=t_eval, events=events,
-                        rtol=solver.rtol, atol=solver.rtol if solver.atol is None else solver.atol)
-        status, t_event, ts, Y, nfev = "completed", np.nan, sol.t, sol.y, sol.nfev
-        for k, times in enumerate(sol.t_events):
-            if len(times) and not t_event <= times[0]:
-                # the event's state closes the series
-                status, t_event = STATUSES[1 + k], float(times[0])
-                ts, Y = np.append(ts, t_event), np.concatenate([Y, sol.y_events[k][:1].T], axis=1)
-        if not sol.success and status == "completed":
-            status = "failed"
+def records(ts, Y, run: Run):
+    """(series, summary) of the trajectory Y (11, n) at the times ts (n,):
+    the series dict of (n,) arrays and the coordinates ``q`` (8, n), the
+    summary's extremes and drifts (docs/two-wheeler.md sec. 10.1)."""
+    p, values, ground, lean0 = run.parameters, run.values, run.ground, run.lean0
     q, u_ind = Y[:8], Y[8:]
     u = motion.dependent_speeds(q, u_ind, values, ground)
-    T = torque(Y)
+    T = steer_torque(Y, run)
     T = np.broadcast_to(T, ts.shape)
     udot, lam = motion.accelerations(q, u, values, T, ground)
-    n_rear, f_rear, n_front, f_front = contact_forces(q, u, udot, lam, p, ground, g)
+    n_rear, f_rear, n_front, f_front = contact_forces(q, u, udot, lam, p, ground, run.g)
     E = motion.energy(q, u, values, ground)
     kinetic0 = grounds.of(ground).energy(q[:, :1], u[:, :1], values)[0][0]
     series = {"t": ts, "lean": q[motion.LEAN], "steer": q[motion.STEER], "heading": q[motion.HEADING],
@@ -242,11 +228,10 @@ def simulate(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=motion.
               "steer_torque": T, "normal_rear": n_rear, "normal_front": n_front, "friction_rear": f_rear,
               "friction_front": f_front, "energy_drift": (E - E[0]) / kinetic0,
               "constraint_residual": _residual(q, values, ground), "q": q}
-    summary = {"status": status, "t_event": t_event, "t_end": float(ts[-1]),
+    summary = {"t_end": float(ts[-1]),
                "max_lean_deviation": float(np.max(np.abs(q[motion.LEAN] - lean0))),
                "final_lean_deviation": float(q[motion.LEAN, -1] - lean0),
                "max_energy_drift": float(np.max(np.abs(series["energy_drift"]))),
                "max_constraint_residual": float(np.max(series["constraint_residual"])),
-               "min_normal_rear": float(np.min(n_rear)), "min_normal_front": float(np.min(n_front)),
-               "n_evaluations": int(nfev)}
+               "min_normal_rear": float(np.min(n_rear)), "min_normal_front": float(np.min(n_front))}
     return series, summary
