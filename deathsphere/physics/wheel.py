@@ -250,13 +250,13 @@ def horizontal_orbit(theta, alpha, a, r, k, g, outside=False, mu=np.inf):
     return {key: value.reshape(shape) for key, value in out.items()}
 
 
-def g_load(theta, alpha, a, r, k):
+def centre_accel_g(theta, alpha, a, r, k):
     """Centre acceleration in units of g, eq. (36): cot(alpha) / (2k+1 + k (a/r') cos(alpha)).
 
     Independent of g; equals r' Omega^2 / g from eq. (29) *signed*: on a
     real orbit (Omega^2 > 0) it is negative where r' < 0, the centre across
     the axis from the contact point.  :func:`horizontal_orbit`'s ``accel_g``
-    is the magnitude |r'| Omega^2 / g, so ``accel_g == abs(g_load)`` on an
+    is the magnitude |r'| Omega^2 / g, so ``accel_g == abs(centre_accel_g)`` on an
     ``ok`` orbit.  NaN where r' = 0 or the denominator vanishes.
     """
     cos_alpha = np.cos(alpha)

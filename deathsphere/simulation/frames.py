@@ -123,8 +123,11 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
     ``normal_force``, ``friction_force``  its parts along and across the
                   contact normal (they add up to ``force``)
     ``acceleration``  d2c/dt2 = F/m - g z [m/s^2]
-    ``g_load``    |d2c/dt2| / g: the centre's acceleration in g (eq. 36 on
+    ``accel_g``   |d2c/dt2| / g: the centre's acceleration in g (eq. 36 on
                   a steady orbit)
+    ``load_g``    |F|/(m g): the load a rider feels, |a - g| / g (the
+                  orbit's and ride's load_g; sqrt(1 + accel_g^2) on a
+                  steady horizontal orbit)
     ``rate``      |w| [rad/s]: how fast the body turns (any way), which
                   bounds the angle it turns between two frames
     ``speed``     |dc/dt| = |a e3 x w| [m/s] (eq. 6); ``speed_km_h`` the same in km/h
@@ -154,7 +157,8 @@ def frame_geometry(t, state, params: dyn.BodyParams, psi0=0.0):
         "centre": c, "axis": e1, "e3": e3, "contact": pvec,
         "spin": spin, "spoke": spoke,
         "force": force, "normal_force": force - friction, "friction_force": friction,
-        "acceleration": accel, "g_load": np.sqrt(_dot(accel, accel)) / params.g,
+        "acceleration": accel, "accel_g": np.sqrt(_dot(accel, accel)) / params.g,
+        "load_g": np.sqrt(_dot(force, force)) / params.g,
         "rate": _norm(state[dyn.W]), "speed": speed, "speed_km_h": speed * _KM_H_PER_M_S,
         "normal": f["normal"], "friction_magnitude": f["friction_magnitude"], "mu_required": f["mu_required"],
         "force_angle_deg": np.degrees(np.arctan2(f["friction_magnitude"], f["normal"])),
@@ -171,7 +175,7 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
     C towards the crown (the up-axis is -e3), ``contact`` P, ``spin`` the
     angle of the marked spoke from the wheels' spin s = w.e1 - psi
     relative to the frame (eq. M17), ``force`` F/m of eq. M18,
-    ``acceleration`` that of the centre of mass, ``g_load`` |F|/(m g)
+    ``acceleration`` that of the centre of mass, ``load_g`` |F|/(m g)
     (what the rider feels, ``ride``'s load_g), ``speed`` |dC/dt| (the
     drawn wheel's, which bounds the frames' spacing); and the frame and
     rider: ``com`` the centre of mass G = C - (h - a) e3, ``head`` the top
@@ -197,7 +201,7 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
         "centre": pts["C"], "axis": e1, "e3": e3, "contact": pts["P"],
         "spin": spin, "spoke": np.cos(spin) * e3 + np.sin(spin) * u,
         "force": force, "normal_force": force - friction, "friction_force": friction,
-        "acceleration": accel, "g_load": _norm(force) / g,
+        "acceleration": accel, "load_g": _norm(force) / g,
         "rate": _norm(state[dyn.W]), "speed": speed, "speed_km_h": speed * _KM_H_PER_M_S,
         "normal": f["normal"], "friction_magnitude": f["friction_magnitude"], "mu_required": f["mu_required"],
         "force_angle_deg": np.degrees(np.arctan2(f["friction_magnitude"], f["normal"])),

@@ -50,7 +50,7 @@ def _panel(geo: dict, theta, alpha, mu_available) -> list:
     return [Readout("speed", "speed", " m/s", 2, speed),
             Readout("speed_km_h", "", " km/h", 1, 3.6 * speed if "rider_speed" in geo else geo["speed_km_h"],
                     loop_join=" = "),
-            Readout("g_load", "g-load", " g", 2, geo["g_load"]),
+            Readout("load_g", "load", " g", 2, geo["load_g"]),
             Readout("mu", "\u03bc needed", "", 3, geo["mu_required"]),
             Readout("mu_available", "\u03bc available", "", 3, value=mu_available, none_text="no limit",
                     loop_join=", "),

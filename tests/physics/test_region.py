@@ -41,9 +41,9 @@ def _physical(theta, alpha, a, r, k, outside):
     with np.errstate(divide="ignore", invalid="ignore"):
         mu_req = np.abs(f_theta) / normal
     return {"fit": fit, "om2": om2, "normal": normal, "mu": mu_req,
-            "g": np.abs(wheel.g_load(theta, alpha, a, r, k)),   # g_load keeps the sign of r'
+            "g": np.abs(wheel.centre_accel_g(theta, alpha, a, r, k)),   # keeps the sign of r'
             # what the rider feels: |F|/(m g) with F/m = g z-hat - r' Omega^2 r'-hat (eq. 32)
-            "load": np.hypot(1.0, wheel.g_load(theta, alpha, a, r, k))}
+            "load": np.hypot(1.0, wheel.centre_accel_g(theta, alpha, a, r, k))}
 
 
 def _load(orb):

@@ -112,7 +112,7 @@ def test_contact_force_eq30_equals_eq32(theta_d, alpha_d, a, rr, k):
 @settings(max_examples=200, deadline=None)
 @given(st.floats(20.0, 160.0), st.floats(1.0, 60.0), radius_a, st.floats(5.0, 100.0), inertia,
        st.floats(0.01, 100.0))
-def test_mu_and_g_load_invariant_under_scaling(theta_d, alpha_d, a, rr, k, scale):
+def test_mu_and_centre_accel_invariant_under_scaling(theta_d, alpha_d, a, rr, k, scale):
     theta, alpha = deg(theta_d), deg(alpha_d)
     one = wheel.horizontal_orbit(theta, alpha, a, a * rr, k, G)
     big = wheel.horizontal_orbit(theta, alpha, scale * a, scale * a * rr, k, G)
@@ -134,15 +134,15 @@ def test_ok_rows_are_finite_and_consistent(theta_d, alpha_d, a, rr, k, mu, outsi
         assert res["normal"] > 0
         assert res["mu_required"] <= mu
         # eq. (36): g-load from the geometry alone equals r' Omega^2 / g
-        assert abs(wheel.g_load(deg(theta_d), deg(alpha_d), a, a * rr, k)) == pytest.approx(res["accel_g"], rel=1e-9)
+        assert abs(wheel.centre_accel_g(deg(theta_d), deg(alpha_d), a, a * rr, k)) == pytest.approx(res["accel_g"], rel=1e-9)
     assert np.isfinite(res["r_prime"])
 
 
-def test_g_load_is_eq36():
+def test_centre_accel_g_is_eq36():
     theta, alpha, a, r, k = deg(60), deg(10), 0.3, 3.0, 0.5
     rp = r_prime(theta, alpha, a, r)
     expected = (1 / np.tan(alpha)) / (2 * k + 1 + k * (a / rp) * np.cos(alpha))
-    assert wheel.g_load(theta, alpha, a, r, k) == pytest.approx(expected, rel=1e-14)
+    assert wheel.centre_accel_g(theta, alpha, a, r, k) == pytest.approx(expected, rel=1e-14)
 
 
 def test_fit_condition_matches_printed_eq0():

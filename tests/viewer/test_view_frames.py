@@ -61,7 +61,10 @@ def test_steady_orbit_keeps_the_papers_tilt_and_loads():
     assert np.allclose(geo["e3"], np.cos(al) * rhat - np.sin(al) * z, atol=1e-9)
     assert np.allclose(np.arccos(geo["contact"][2] / p.r), th, atol=1e-9)
     orbit = wheel.horizontal_orbit(th, al, p.a, p.r, p.k, p.g)
-    assert np.allclose(geo["g_load"], orbit["accel_g"], rtol=1e-9)
+    assert np.allclose(geo["accel_g"], orbit["accel_g"], rtol=1e-9)
+    # the readout is the load the rider feels, the orbit's load_g (|F| / (m g)), not eq. 36
+    assert np.allclose(geo["load_g"], orbit["load_g"], rtol=1e-9)
+    assert np.all(geo["load_g"] > geo["accel_g"])
     assert np.allclose(series["mu_required"], 1.19, atol=5e-3)
     # the spin rate is constant on a steady orbit: the angle grows linearly
     rate = np.diff(geo["spin"]) / np.diff(states["t_s"])
