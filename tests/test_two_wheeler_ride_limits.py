@@ -185,7 +185,8 @@ def test_a_head_that_reaches_the_globe_is_no_fit_and_counted():
     and the rider's table counts those speeds as ``head_hits``."""
     from dataclasses import replace
 
-    from deathsphere.api.two_wheelers import HEAD_HITS_REASON, TWO_WHEELERS
+    from deathsphere.api.two_wheelers import TWO_WHEELERS
+    from deathsphere.physics.status import REASONS, Reason
 
     tall = replace(TWO_WHEELERS["benchmark-bicycle"], head=(0.3, -2.6), name="tall")
     ask = dict(machine=tall, steer="free", diameter="16ft", height=[2.0, 3.0], speed=[4.0, 6.0, 8.0])
@@ -194,7 +195,7 @@ def test_a_head_that_reaches_the_globe_is_no_fit_and_counted():
     hits = turned & ~(table["head_clearance_m"] > 0)
     assert hits.sum() >= 1 and (turned & ~hits).sum() >= 3
     assert list(table["status"][hits]) == ["no_fit"] * int(hits.sum())
-    assert set(table["reason"][hits]) == {HEAD_HITS_REASON}
+    assert set(table["reason"][hits]) == {REASONS[Reason.TURN_HEAD_HITS]} and "head" in REASONS[Reason.TURN_HEAD_HITS]
     assert "no_fit" not in set(table["status"][~hits])
     summary = deathsphere.ride(**ask, summary=True)
     for i, height in enumerate(ask["height"]):

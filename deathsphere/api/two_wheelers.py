@@ -21,6 +21,7 @@ from deathsphere.api.arguments import (INF, G, R, checked_array, checked_axis, c
 from deathsphere.api.machines import PRESETS
 from deathsphere.params import ParameterError
 from deathsphere.physics.ground import Plane, Sphere
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
 # the records' presets and files, as the command line and a notebook reach them
 from deathsphere.records.two_wheeler_files import is_two_wheeler_file, read_machine_file, two_wheeler_file, two_wheeler_text
@@ -214,15 +215,6 @@ MAX_STREAMED_LANES = 1_000_000
 #: least one): a lane costs its lean curve (sec. 8.2) once, some 0.3 s, and
 #: each speed a few ms more, so a chunk is a second or two of work.
 TURN_CHUNK = 8
-#: Why a turn's status is no_fit: the rider's head, as ride's machine's.
-HEAD_HITS_REASON = "the rider's head reaches the globe on this turn (head_clearance_m <= 0)"
-#: Why a turn slips: which wheel needs more friction than given.
-SLIP_REASONS = {
-    "rear": "the rear wheel needs more friction than mu_available (mu_required_rear exceeds it)",
-    "front": "the front wheel needs more friction than mu_available (mu_required_front exceeds it)",
-    "both": "both wheels need more friction than mu_available (mu_required_rear and mu_required_front exceed it)",
-}
-OVER_G_REASON = "the load load_g (|total contact force| / weight) exceeds the largest given (max_g)"
 __all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
             "turn_request", "turn_rows"]
 
@@ -363,14 +355,6 @@ def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=N
                        only=None if keep is None else tuple(keep))
 
 
-def _over_limits(ok, mu_rear, mu_front, load, mu: float, max_g: float):
-    """Which turns that are otherwise ok slip at the rear, at the front, or
-    carry more than max_g: ride's statuses in ride's order (no_fit, no_orbit,
-    no_contact, then slips, then over_g; docs/contract.md)."""
-    rear, front = ok & (mu_rear > mu), ok & (mu_front > mu)
-    return rear, front, ok & ~(rear | front) & (load > max_g)
-
-
 def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> Table:
     """Every steady turn at the lanes ``first:stop`` of ``request`` and each
     of its speeds or steer torques, one row each, and its stability
@@ -406,12 +390,6 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     th = lanes[req]
     alpha = np.degrees(th) - 90.0 - np.degrees(lean)
     contact = pick("contact") == 1
-    # ride's order: the head that reaches the globe (no_fit) before a wheel that lifts
-    hits = has & ~(pick("head_clearance") > 0)
-    status = np.where(~has, "no_orbit", np.where(hits, "no_fit", np.where(contact, "ok", "no_contact"))).astype(object)
-    reason = np.where(has, np.where(hits, HEAD_HITS_REASON, np.where(
-        contact, "", "a wheel would lift: its normal force does not push")),
-        np.asarray(out["reason"], dtype=object)[req]).astype(object)
     omega = pick("omega")
     with np.errstate(divide="ignore"):
         period = np.where(has, 2 * np.pi / np.abs(np.where(omega == 0, np.nan, omega)), np.nan)
@@ -420,7 +398,7 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
         "theta_deg": given[req] if by_theta else np.degrees(th), "alpha_deg": np.where(has, alpha, np.nan),
         "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
         "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, request.g),
-        "status": status, "reason": reason, "omega_rad_s": omega, "period_s": period,
+        "omega_rad_s": omega, "period_s": period,
         "v_cm_m_s": pick("v_cm"), "v_cm_km_h": np.round(pick("v_cm") * 3.6, 9), "v_contact_m_s": pick("v_rear"),
         "load_g": pick("load_g"), "head_clearance_m": pick("head_clearance"),
         "steer_deg": np.degrees(pick("steer")), "steer_torque_n_m": pick("steer_torque"),
@@ -433,11 +411,12 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
         "lean_surface_deg": np.degrees(lean), "v_rear_m_s": pick("v_rear"), "v_front_m_s": pick("v_front"),
         "theta_front_deg": np.degrees(pick("theta_front")), "steer": np.full(n, steer, dtype=object),
     }
-    rear, front, over = _over_limits(status == "ok", cols["mu_required_rear"], cols["mu_required_front"],
-                                     cols["load_g"], request.mu, request.max_g)
-    status[rear | front], status[over] = "slips", "over_g"
-    reason[rear & ~front], reason[front & ~rear] = SLIP_REASONS["rear"], SLIP_REASONS["front"]
-    reason[rear & front], reason[over] = SLIP_REASONS["both"], OVER_G_REASON
+    # the physics' status stage, in ride's order (no_orbit, no_fit: the head, no_contact, slips, over_g)
+    codes, why = steady.turn_status(has, cols["head_clearance_m"], contact, cols["mu_required_rear"],
+                                    cols["mu_required_front"], cols["load_g"], request.mu, request.max_g,
+                                    why_none=np.asarray(out["reason"])[req])
+    cols["status"], cols["reason"] = STATUS_LABELS[codes], REASON_TEXT[why]
+    status = cols["status"]
     # what the request fixes is echoed as asked, not as recomputed, in every row, a turn found or not: two
     # requests that find none still differ (docs/contract.md, "Inputs are echoed as given")
     if by_torque:
@@ -469,14 +448,15 @@ def _hands_free(request: TurnRequest, lanes) -> dict:
     their rear speeds (n, k), which are ok by the request's limits and
     which of those are stable with the steer free (sec. 8.2-8.3)."""
     from deathsphere.physics.two_wheeler import stability as tw_stability
+    from deathsphere.physics.two_wheeler import steady
 
     t = request.machine
     out = tw_stability.turns_with_stability(lanes, t.parameters(), Sphere(request.r), request.g,
                                             torque=np.zeros(lanes.size), head=t.head)
-    ok = np.isfinite(out["lean"]) & (out["contact"] == 1) & (out["head_clearance"] > 0)
-    rear, front, over = _over_limits(ok, out["mu_required_rear"], out["mu_required_front"], out["load_g"],
-                                     request.mu, request.max_g)
-    ok &= ~(rear | front | over)
+    codes, _ = steady.turn_status(np.isfinite(out["lean"]), out["head_clearance"], out["contact"] == 1,
+                                  out["mu_required_rear"], out["mu_required_front"], out["load_g"], request.mu,
+                                  request.max_g)
+    ok = codes == Status.OK
     return {"v_rear": out["v_rear"], "ok": ok, "stable": ok & (out["stability_free"] == "stable")}
 
 

@@ -69,6 +69,16 @@ class Reason(IntEnum):
     LOOP_TOP_TOO_SLOW = 36
     LOOP_SLIPS = 37
     LOOP_OVER_G = 38
+    TURN_BAD_LANE = 39
+    TURN_BAD_SPEED = 40
+    TURN_BAD_TORQUE = 41
+    TURN_NONE = 42
+    TURN_HEAD_HITS = 43
+    TURN_WHEEL_LIFTS = 44
+    TURN_SLIPS_REAR = 45
+    TURN_SLIPS_FRONT = 46
+    TURN_SLIPS_BOTH = 47
+    TURN_OVER_G = 48
 
 
 REASONS = {
@@ -111,6 +121,19 @@ REASONS = {
     Reason.LOOP_TOP_TOO_SLOW: "the machine leaves the wall at the top of the loop (machine.md eq. M22 needs v_top^2 >= g r_G)",
     Reason.LOOP_SLIPS: "somewhere round the loop rolling needs more friction than given: mu_required (the most round the loop; machine.md eq. M24) exceeds mu_available",
     Reason.LOOP_OVER_G: "the load at the bottom of the loop load_bottom_g (the most round it; machine.md eq. M23) exceeds the largest given (max_g)",
+    # the two-wheeler's steady turns (docs/two-wheeler.md sec. 8)
+    Reason.TURN_BAD_LANE: "theta must be finite and strictly between 0 and 180 degrees (the poles have no lap); "
+                          "on flat ground the curvature must be finite",
+    Reason.TURN_BAD_SPEED: "the speed must be finite and positive",
+    Reason.TURN_BAD_TORQUE: "the steer torque must be finite",
+    Reason.TURN_NONE: "no steady turn at this lane and speed or torque",
+    Reason.TURN_HEAD_HITS: "the rider's head reaches the globe on this turn (head_clearance_m <= 0)",
+    Reason.TURN_WHEEL_LIFTS: "a wheel would lift: its normal force does not push",
+    Reason.TURN_SLIPS_REAR: "the rear wheel needs more friction than mu_available (mu_required_rear exceeds it)",
+    Reason.TURN_SLIPS_FRONT: "the front wheel needs more friction than mu_available (mu_required_front exceeds it)",
+    Reason.TURN_SLIPS_BOTH: "both wheels need more friction than mu_available (mu_required_rear and mu_required_front "
+                            "exceed it)",
+    Reason.TURN_OVER_G: "the load load_g (|total contact force| / weight) exceeds the largest given (max_g)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

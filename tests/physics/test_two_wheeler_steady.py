@@ -259,3 +259,27 @@ def test_the_linearisation_predicts_the_nonlinear_motion_near_a_turn():
         # observed 2e-6 and 5e-6: the kick's own second order and the integrator
         assert np.abs(deviation[:, k] - want).max() < 1e-4 * np.abs(want).max()
     assert np.abs(deviation[:, 1]).max() > 3 * kick
+
+
+def test_turn_status_names_the_first_failure_in_rides_order():
+    """The status stage of the two-wheeler's turns is the physics', in every
+    body's order: no turn, the head, a wheel that lifts, friction (naming
+    the wheel), the load; each later failure shows only where no earlier one
+    does."""
+    from deathsphere.physics.status import Reason, Status
+
+    found = np.array([False, True, True, True, True, True, True, True])
+    head = np.array([1.0, -0.1, -0.1, 1.0, 1.0, 1.0, 1.0, 1.0])
+    contact = np.array([True, True, False, False, True, True, True, True])
+    mu_rear = np.array([np.nan, 2.0, 2.0, np.nan, 2.0, 2.0, 0.5, 0.5])
+    mu_front = np.array([np.nan, 2.0, 2.0, np.nan, 2.0, 0.5, 2.0, 0.5])
+    load = np.full(8, 9.0)
+    status, reason = steady.turn_status(found, head, contact, mu_rear, mu_front, load, mu=1.0, max_g=5.0,
+                                        why_none=np.full(8, Reason.TURN_BAD_LANE, dtype=np.int8))
+    assert status.tolist() == [Status.NO_ORBIT, Status.NO_FIT, Status.NO_FIT, Status.NO_CONTACT, Status.SLIPS,
+                               Status.SLIPS, Status.SLIPS, Status.OVER_G]
+    assert reason.tolist() == [Reason.TURN_BAD_LANE, Reason.TURN_HEAD_HITS, Reason.TURN_HEAD_HITS,
+                               Reason.TURN_WHEEL_LIFTS, Reason.TURN_SLIPS_BOTH, Reason.TURN_SLIPS_REAR,
+                               Reason.TURN_SLIPS_FRONT, Reason.TURN_OVER_G]
+    ok, why = steady.turn_status(found[-1:], head[-1:], contact[-1:], mu_rear[-1:], mu_front[-1:], load[-1:])
+    assert ok.tolist() == [Status.OK] and why.tolist() == [Reason.NONE]

@@ -27,10 +27,11 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.physics.status import Reason, Status, first_failure
 from deathsphere.physics.two_wheeler import geometry, grounds, motion
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 
-__all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "configuration", "turn_coefficients", "solve_steer",
+__all__ = ["LEAN_GRID", "MAX_SPEED", "POLE", "REASONS", "turn_status", "configuration", "turn_coefficients", "solve_steer",
            "lean_curve", "turns_for_speed", "turns_for_torque", "turn_state"]
 
 #: The scan in lean (rad): 0.5 degree steps, up to 89 degrees either side.
@@ -316,15 +317,10 @@ def _solve(lane, curve, lanes, w2, torque, parameters, ground, g):
     return L, S, counts
 
 
-#: Why a lane has no row: ``reason`` of :func:`turns_for_speed` and :func:`turns_for_torque`.
-REASONS = {
-    "ok": "",
-    "lane": "theta must be finite and strictly between 0 and 180 degrees (the poles have no lap); "
-            "on flat ground the curvature must be finite",
-    "speed": "the speed must be finite and positive",
-    "torque": "the steer torque must be finite",
-    "none": "no steady turn at this lane and speed or torque",
-}
+#: Why a lane has no row: the ``reason`` codes (:class:`~deathsphere.physics.status.Reason`)
+#: of :func:`turns_for_speed` and :func:`turns_for_torque`.
+REASONS = {"ok": Reason.NONE, "lane": Reason.TURN_BAD_LANE, "speed": Reason.TURN_BAD_SPEED,
+           "torque": Reason.TURN_BAD_TORQUE, "none": Reason.TURN_NONE}
 #: Lanes closer to a pole than this (rad) are refused: the sphere's coordinates are singular there.
 POLE = grounds.POLE
 
@@ -349,7 +345,7 @@ def _turns(lane, value, kind, parameters, ground, g, head):
     out = turn_state(np.broadcast_to(lane[:, None], L.shape), L, S, parameters, ground, g, head)
     reason = np.where(counts > 0, REASONS["ok"], REASONS["none"])
     reason = np.where(good_value, reason, REASONS[kind])
-    reason = np.where(good_lane, reason, REASONS["lane"])
+    reason = np.where(good_lane, reason, REASONS["lane"]).astype(np.int8)
     return out | {"count": counts, "reason": reason}
 
 
@@ -357,8 +353,8 @@ def turns_for_speed(lane, speed, parameters: BicycleParameters, ground, g=STANDA
     """Every steady turn of each lane (theta on a Sphere ``ground``,
     curvature on a Plane) under gravity ``g`` at the rear contact's speed ``speed`` (m/s, what a rear-wheel
     speedometer reads): (n, k) NaN-padded arrays of :func:`turn_state`, sorted
-    by lean, ``count`` (n,) and ``reason`` (n,: empty where a turn was
-    found, else why not, :data:`REASONS`) (beyond the paper;
+    by lean, ``count`` (n,) and ``reason`` (n,: int8 Reason codes, NONE where
+    a turn was found, else why not, :data:`REASONS`) (beyond the paper;
     docs/two-wheeler.md sec. 8)."""
     return _turns(lane, speed, "speed", parameters, ground, g, head)
 
@@ -450,3 +446,31 @@ def _turn_state(lane0, lean0, steer0, p, ground, g, head):
     out["contact"] = ((out["normal_rear"] > 0) & (out["normal_front"] > 0)).astype(float)
     out["q"], out["u"] = q, u
     return valid, out
+
+
+def turn_status(found, head_clearance, contact, mu_rear, mu_front, load, mu=np.inf, max_g=np.inf, why_none=None):
+    """Status and reason codes (int8, :mod:`deathsphere.physics.status`) of
+    steady turns, in the order every body's statuses take (docs/contract.md):
+    no_orbit where no turn was ``found`` (``why_none``: the lane's reason
+    code, default TURN_NONE), no_fit where the rider's head reaches the
+    globe (head_clearance <= 0), no_contact where a wheel would lift
+    (``contact`` false), slips where a wheel needs more friction than ``mu``
+    (the reason names which), over_g where the load exceeds ``max_g``.
+    Arrays broadcast; beyond the paper (docs/two-wheeler.md sec. 8)."""
+    found = np.asarray(found, dtype=bool)
+    why_none = Reason.TURN_NONE if why_none is None else why_none
+    head_hits = found & ~(np.asarray(head_clearance) > 0)
+    lifts = found & ~np.asarray(contact, dtype=bool)
+    with np.errstate(invalid="ignore"):
+        rear, front = np.asarray(mu_rear) > mu, np.asarray(mu_front) > mu
+        over = np.asarray(load) > max_g
+    return first_failure([
+        (~found, Status.NO_ORBIT, why_none),
+        (head_hits, Status.NO_FIT, Reason.TURN_HEAD_HITS),
+        (lifts, Status.NO_CONTACT, Reason.TURN_WHEEL_LIFTS),
+        (rear & front, Status.SLIPS, Reason.TURN_SLIPS_BOTH),
+        (rear, Status.SLIPS, Reason.TURN_SLIPS_REAR),
+        (front, Status.SLIPS, Reason.TURN_SLIPS_FRONT),
+        (over, Status.OVER_G, Reason.TURN_OVER_G),
+    ])
+
