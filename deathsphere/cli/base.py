@@ -18,6 +18,7 @@ import errno
 import importlib.util
 import os
 import sys
+import threading
 import time
 from contextlib import contextmanager
 from functools import partial
@@ -123,11 +124,20 @@ class _Progress:
         self.bar, self.task = bar, task
         self.started = False
         self._since = time.monotonic()
+        self._lock = threading.Lock()
 
     def _show(self) -> None:
-        if not self.started and time.monotonic() - self._since >= PROGRESS_DELAY_S:
-            self.bar.start()
-            self.started = True
+        # also called from the timer of progress() (work that reports nothing)
+        with self._lock:
+            if not self.started and time.monotonic() - self._since >= PROGRESS_DELAY_S:
+                self.bar.start()
+                self.started = True
+
+    def _stop(self) -> None:
+        with self._lock:
+            if self.started:
+                self.bar.stop()
+            self.started = True  # a timer firing late draws nothing
 
     def advance(self, n: int = 1, description: str | None = None) -> None:
         if self.bar is not None:
@@ -149,7 +159,11 @@ def progress(label: str, total: int, streaming: bool = False):
 
     ``streaming``: results go to stdout while the bar runs; if stdout is the
     same terminal the rows themselves show the progress, and a bar would
-    mix with them (a CSV header landing on the bar's line), so none is drawn."""
+    mix with them (a CSV header landing on the bar's line), so none is drawn.
+
+    Work that reports nothing (``total`` None and no call) still shows its
+    bar once it has run :data:`PROGRESS_DELAY_S`: a pulse and the time
+    elapsed, so that a long wait is never a silent one."""
     if not _isatty(sys.stderr) or (streaming and _isatty(sys.stdout)):
         yield _Progress()
         return
@@ -164,11 +178,14 @@ def progress(label: str, total: int, streaming: bool = False):
     bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                    console=stderr_console(), transient=True, redirect_stdout=False, redirect_stderr=False)
     state = _Progress(bar, bar.add_task(label, total=total))
+    timer = threading.Timer(PROGRESS_DELAY_S, state._show)
+    timer.daemon = True
+    timer.start()
     try:
         yield state
     finally:
-        if state.started:
-            bar.stop()
+        timer.cancel()
+        state._stop()
 
 
 def _isatty(stream) -> bool:
@@ -226,6 +243,32 @@ def stream(chunks, fmt: str, *, label: str, title: str | None = None, view=None,
     if fmt == "table" and shown is not None:
         stdout_console().print(shown[0])
     return tally
+
+
+#: Rows per piece when a table computed whole is written piece by piece
+#: (:func:`pieces`): a progress bar's step, a few tenths of a second of CSV.
+PIECE_ROWS = 50_000
+
+
+def pieces(table, rows: int = PIECE_ROWS):
+    """A table computed whole as :class:`~deathsphere.api.streams.Chunks`
+    of consecutive rows, for :func:`stream` to write with its progress bar
+    (writing a million rows takes longer than computing them).  A table of
+    one piece is handed on as it is (a grid keeps its shape for the view)."""
+    from deathsphere.api.streams import Chunks
+
+    n = len(table)
+    if n <= rows:
+        return Chunks(iter([(n, table)]), total=n)
+    return Chunks(((min(rows, n - start), table[start:start + rows]) for start in range(0, n, rows)), total=n)
+
+
+def say_written(output: str, rows: int | None = None, size: int | None = None) -> None:
+    """The one line on stderr naming a file a command wrote: with its row
+    count (a table) or its size (a page, a figure), when known."""
+    what = f" ({rows} row{'s' if rows != 1 else ''})" if rows is not None else \
+        f" ({size / 1e6:.2f} MB)" if size is not None else ""
+    stderr_console().print(f"deathsphere: wrote {output}{what}", soft_wrap=True, markup=False, highlight=False)
 
 
 def collect(chunks, label: str):

@@ -17,7 +17,7 @@ from deathsphere.cli.base import (
     given,
     one_line,
     progress,
-    stderr_console,
+    say_written,
     stdout_console,
     stream,
 )
@@ -80,10 +80,13 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
 
         try:
             import_matplotlib()  # before the work: a missing extra is one line, at once
-            plot_map(api.region_curves(stability=stability, **options), output=output)
+            # the curves report no progress (a few seconds with --stability): the bar shows the time taken
+            with progress("map", None):
+                curves = api.region_curves(stability=stability, **options)
+            plot_map(curves, output=output)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
-        stderr_console().print(f"deathsphere: wrote {output}")
+        say_written(output)
         return
     fmt = choose_format(fmt)
     if fmt == "table":

@@ -7,7 +7,7 @@ from __future__ import annotations
 import click
 
 from deathsphere import api
-from deathsphere.cli.base import OutputPath, choose_format, cli, finish, given, stream
+from deathsphere.cli.base import OutputPath, choose_format, cli, finish, given, say_written, stream
 from deathsphere.cli.options import (
     body_option,
     display_units,
@@ -151,4 +151,7 @@ def sweep_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, d
                     a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     chunks = orbit_chunks(input, stability, only, options, **given(chunk_size=chunk_size, jobs=jobs,
                                                                         scheduler=scheduler))
-    finish(stream(chunks, fmt, label="sweep", output=output))
+    tally = stream(chunks, fmt, label="sweep", output=output)
+    if output is not None:
+        say_written(output, rows=tally.rows)
+    finish(tally)

@@ -8,7 +8,7 @@ import click
 import numpy as np
 
 from deathsphere import api
-from deathsphere.cli.base import OutputPath, choose_format, cli, emit, finish, stream
+from deathsphere.cli.base import OutputPath, choose_format, cli, emit, finish, pieces, say_written, stream
 from deathsphere.cli.options import (
     display_units,
     jobs_option,
@@ -170,7 +170,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         if flat:
             table = api.ride(flat=True, **given)
             title = f"{name}: straight running on flat ground (docs/two-wheeler.md sec. 7)"
-            emit([table], fmt, title, view=_two_wheeler_view("straight_view", title, shown), output=output)
+            rows = emit([table], fmt, title, view=_two_wheeler_view("straight_view", title, shown), output=output)
+            if output is not None:
+                say_written(output, rows=rows)
             return
         # the globe's lanes stream a few at a time (flat memory, --jobs, --scheduler)
         from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
@@ -178,8 +180,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         chunks = two_wheeler_ride_sweep(**given, jobs=jobs or 1, scheduler=scheduler)
         title = (f"{name}: the rider's table on the globe, per lane (docs/two-wheeler.md sec. 10)" if summary
                  else f"{name}: steady turns on the globe (docs/two-wheeler.md sec. 8)")
-        finish(stream(chunks, fmt, label="ride", title=title, view=_two_wheeler_view("turns_view", title, shown),
-                      output=output))
+        finish(_written(stream(chunks, fmt, label="ride", title=title,
+                               view=_two_wheeler_view("turns_view", title, shown), output=output), output))
         return
     chosen = machine_from_options(machine, machine_file, mass=mass, com_height=com_height, a=a,
                                   tyre_radius=tyre_radius, roll_inertia=roll_inertia, pitch_inertia=pitch_inertia,
@@ -194,8 +196,9 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         where, how, friction = _grid(_axis("theta", theta), _axis("v_top", v_top), mus)
         table = api.ride(where, vertical=True, v_top=how, machine=chosen, only=only or None, **friction, **setup)
         title = f"Vertical loops of {chosen.name} (docs/machine.md sec. 10)"
-        emit([table], fmt, title, view=_view("loop_view", title=title, units=shown),
-             output=output)
+        # computed whole in well under a second; writing a million loops takes longer: the bar follows that
+        _written(stream(pieces(table), fmt, label="ride --vertical", title=title,
+                        view=_view("loop_view", title=title, units=shown), output=output), output)
         return
     if theta and height:
         raise click.UsageError("give --theta or --height, not both")
@@ -212,19 +215,53 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                                         "speed": speed}),
                           command="ride", limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
         where, how, friction = _grid(_axis(*at), _axis(*by), mus)
-        table = api.ride(**{at[0]: where, by[0]: how}, machine=chosen, stability=stability and not summary,
-                         only=only or None, summary=summary, **friction, **setup)
+        kwargs = dict(machine=chosen, stability=stability and not summary, only=only or None, summary=summary,
+                      **friction, **setup)
         title = (f"Feasible speeds by height: {chosen.name} (docs/machine.md)" if summary
                  else f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)")
-        emit([table], fmt, title, view=_view("ride_view", title=title, units=shown), output=output)
+        chunks = (_summary_chunks(at[0], where, by[0], how, kwargs) if summary
+                  else pieces(api.ride(**{at[0]: where, by[0]: how}, **kwargs)))
+        _written(stream(chunks, fmt, label="ride", title=title, view=_view("ride_view", title=title, units=shown),
+                        output=output), output)
         return
     # one orbit per grid point and one mu: streamed chunk by chunk, as sweep (flat memory, --jobs, --scheduler)
     friction = {"mu": float(mus[0])} if mus is not None else {}
     chunks = api.ride_sweep(**{at[0]: list(at[1]), by[0]: list(by[1])}, machine=chosen, stability=stability,
                             only=only or None, jobs=jobs or 1, scheduler=scheduler, **friction, **setup)
     title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
-    finish(stream(chunks, fmt, label="ride", title=title, view=_view("ride_view", title=title, units=shown),
-                  output=output))
+    finish(_written(stream(chunks, fmt, label="ride", title=title,
+                           view=_view("ride_view", title=title, units=shown), output=output), output))
+
+
+#: Orbits evaluated per piece of the rider's table: a progress bar's step
+#: (about a second of work), never less than one contact point.
+SUMMARY_PIECE_ORBITS = 10_000
+
+
+def _summary_chunks(at: str, where, by: str, how, kwargs: dict):
+    """The rider's table, a piece of contact points at a time (each of its
+    rows is one contact point's, with every speed or tilt and every mu
+    tried there: the pieces join into the table of the whole grid), as
+    :class:`~deathsphere.api.streams.Chunks` for the progress bar."""
+    from deathsphere.api.streams import Chunks
+
+    per_point = how.size * (kwargs["mu"].size if "mu" in kwargs and np.ndim(kwargs["mu"]) else 1)
+    step = max(1, SUMMARY_PIECE_ORBITS // max(per_point, 1))
+    rows_per_point = per_point // how.size
+    n = where.shape[0]
+
+    def evaluated():
+        for start in range(0, n, step):
+            part = where[start:start + step]
+            yield part.shape[0] * rows_per_point, api.ride(**{at: part, by: how}, **kwargs)
+    return Chunks(evaluated(), total=n * rows_per_point)
+
+
+def _written(tally, output):
+    """After a table went to the file ``output`` (None: stdout), the line saying so."""
+    if output is not None:
+        say_written(output, rows=tally.rows)
+    return tally
 
 
 @cli.command("machines", short_help="The preset machines of 'ride' with their parameters and sources.")
