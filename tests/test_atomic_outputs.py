@@ -21,10 +21,21 @@ WRITES = re.compile(r"""savefig\(|ParquetWriter\(|\.write_table\(|write_bytes\(|
                     r"""open\([^)]*["'][wax]b?["']""")
 
 
+#: Modules that start a process writing to the terminal only, never a file:
+#: ``deathsphere docs TOPIC`` hands a long page to the user's pager on a terminal.
+TERMINAL_ONLY = {"cli/docs.py"}
+
+
 def test_every_module_that_writes_a_file_writes_it_through_atomic():
     package = pathlib.Path(deathsphere.__file__).parent
     unguarded = []
     for path in package.rglob("*.py"):
+        if str(path.relative_to(package)) in TERMINAL_ONLY:
+            text = path.read_text(encoding="utf-8")
+            # its one process is the pager, and nothing else in it writes
+            assert [line for line in text.splitlines() if WRITES.search(line)] == [
+                line for line in text.splitlines() if "Popen(" in line and "PIPE" in line], path
+            continue
         text = path.read_text(encoding="utf-8")
         lines = [line for line in text.splitlines() if WRITES.search(line) and ">>>" not in line]
         if lines and path.name != "atomic.py" and "deathsphere.writers.atomic" not in text:

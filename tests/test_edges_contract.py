@@ -286,8 +286,8 @@ def test_the_equator_reason_names_k_when_k_is_what_vanishes():
 
 
 def test_simulate_echoes_its_tilt_as_given():
-    from deathsphere.api.simulation import prepare_simulation
+    from deathsphere.api.simulation import prepare_simulation, simulation_request
 
-    sim = prepare_simulation(60, 10.123456789, periods=0.01, points_per_period=4)
+    sim = prepare_simulation(*simulation_request(dict(theta=60, alpha=10.123456789, periods=0.01, points_per_period=4)))
     list(sim.chunks())
     assert sim.summary()["alpha_deg"][0] == 10.123456789

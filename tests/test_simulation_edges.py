@@ -10,7 +10,7 @@ import pytest
 
 import deathsphere
 from deathsphere import simulation as sim
-from deathsphere.api import prepare_simulation
+from deathsphere.api import prepare_simulation, simulation_request
 from deathsphere.model import Setup
 from deathsphere.params import RTOL_MIN, ParameterError
 from deathsphere.simulation import integrator, runner
@@ -51,7 +51,7 @@ def test_tiny_a_over_r_is_refused_not_reported_as_contact_lost(a, r):
     even hold the start state (alpha read back 10 deg off), so the run used
     to end at once with a bogus contact_lost.  It is refused, saying why."""
     with pytest.raises(ParameterError, match="float64") as err:
-        prepare_simulation(60, 10, a=a, r=r, periods=1)
+        prepare_simulation(*simulation_request(dict(theta=60, alpha=10, a=a, r=r, periods=1)))
     assert "a/r >=" in str(err.value)
     # the orbit itself is fine there: only the integration is refused
     assert str(deathsphere.orbit(60, 10, a=a, r=r)["status"]) == "ok"
@@ -63,13 +63,13 @@ def test_tiny_a_over_r_is_refused_on_the_command_line_in_one_line(run):
 
 def test_the_spin_ratio_limit_is_not_a_budget():
     with pytest.raises(ParameterError, match="float64"):
-        prepare_simulation(60, 10, a=1e-9, r=1e9, periods=1e-12, max_steps=10**15)
+        prepare_simulation(*simulation_request(dict(theta=60, alpha=10, a=1e-9, r=1e9, periods=1e-12, max_steps=10**15)))
 
 
 def test_a_small_but_allowed_scale_stays_on_its_orbit():
     """a/r = 1e-3: the wheel spins ~870 radians per radian of orbit, ~2700
     steps a period; the steady orbit stays put."""
-    sim_ = prepare_simulation(60, 10, a=0.03, r=30, periods=1, points_per_period=10)
+    sim_ = prepare_simulation(*simulation_request(dict(theta=60, alpha=10, a=0.03, r=30, periods=1, points_per_period=10)))
     assert sim_.spin_ratio[0] == pytest.approx(866, rel=0.01)
     _, summary = sim_.run()
     assert str(summary["status"][0]) == "completed"
@@ -80,12 +80,12 @@ def test_a_small_but_allowed_scale_stays_on_its_orbit():
 
 def test_a_run_over_the_step_budget_is_refused_before_any_work_with_its_estimate():
     with pytest.raises(ParameterError, match="max_steps") as err:
-        prepare_simulation(60, 10, a=1e-3, r=1e3, periods=1)
+        prepare_simulation(*simulation_request(dict(theta=60, alpha=10, a=1e-3, r=1e3, periods=1)))
     assert "2.7e+06 steps" in str(err.value)
 
 
 def test_the_budget_can_be_raised_and_the_estimate_is_the_step_cap():
-    sim_ = prepare_simulation(60, 10, a=1e-3, r=1e3, periods=1, max_steps=3_000_000)
+    sim_ = prepare_simulation(*simulation_request(dict(theta=60, alpha=10, a=1e-3, r=1e3, periods=1, max_steps=3_000_000)))
     # one period needs ~pi times the spin ratio steps (the cap h <= 2 / S)
     assert sim_.estimated_steps == pytest.approx(np.pi * sim_.spin_ratio[0], rel=1e-3)
     assert 2.7e6 < sim_.estimated_steps < 2.75e6
@@ -95,7 +95,7 @@ def test_the_budget_can_be_raised_and_the_estimate_is_the_step_cap():
 
 
 def test_the_default_table1_run_is_well_within_the_budget():
-    sim_ = prepare_simulation(60, 10)
+    sim_ = prepare_simulation(*simulation_request(dict(theta=60, alpha=10)))
     assert sim_.estimated_steps < 1000 and sim_.pieces_per_chunk == 1 and sim_.n_progress == sim_.n_chunks
 
 
@@ -140,7 +140,7 @@ def test_memory_is_bounded_by_splitting_long_periods(monkeypatch):
 
 def test_rtol_below_100_eps_is_refused():
     with pytest.raises(ParameterError, match="rtol"):
-        prepare_simulation(60, 10, rtol=1e-14)
+        prepare_simulation(*simulation_request(dict(theta=60, alpha=10, rtol=1e-14)))
     starts = sim.horizontal_starts(Setup(), 60.0, 10.0)
     with pytest.raises(ValueError, match="100 eps"):
         sim.Simulation(starts, rtol=1e-14)

@@ -142,7 +142,8 @@ def test_the_hands_free_speeds_are_where_the_tables_steer_torque_changes_sign(su
 
 
 def test_a_streamed_request_travels_to_other_processes():
-    request = turn_request("benchmark-bicycle", theta=[100.0, 110.0], speed="8:9:1", diameter="16ft", mu=0.5)
+    request = turn_request("benchmark-bicycle", {"theta": [100.0, 110.0], "speed": "8:9:1", "diameter": "16ft",
+                                                "mu": 0.5})
     again = pickle.loads(pickle.dumps(request))
     assert again.machine == request.machine and np.array_equal(again.lanes, request.lanes)
     assert (again.mu, again.max_g, again.total) == (0.5, math.inf, 4)

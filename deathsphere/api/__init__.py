@@ -38,7 +38,7 @@ _HOME = {
     "region": "region_limits", "region_cells": "region_limits", "region_curves": "region_limits", "limits": "region_limits", "limits_input": "region_limits",
     "MAX_LIMIT_THETAS": "region_limits",
     "stability": "orbit_stability", "stability_input": "orbit_stability",
-    "simulate": "simulation", "prepare_simulation": "simulation", "animation_options": "simulation", "METHODS": "simulation", "FRAMES": "simulation",
+    "simulate": "simulation", "prepare_simulation": "simulation", "simulation_request": "simulation", "SimulationOptions": "simulation", "animation_options": "simulation", "METHODS": "simulation", "FRAMES": "simulation",
     "table1": "paper", "verify": "paper", "n_claims": "paper", "verify_counts": "paper",
     "table1_printed": "paper",
     "Chunks": "streams",
@@ -53,7 +53,7 @@ _MODULES = ("arguments", "streams", "orbits", "vertical_orbits", "region_limits"
             "paper", "rides", "ride_streams", "machines", "two_wheelers", "shows")
 
 __all__ = ["orbit", "sweep", "orbit_input", "vertical", "vertical_sweep", "vertical_input", "region",
-           "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "animation_options", "table1",
+           "region_cells", "region_curves", "limits", "limits_input", "stability", "stability_input", "simulate", "prepare_simulation", "simulation_request", "SimulationOptions", "animation_options", "table1",
            "verify", "Chunks", "ParameterError", "ride", "ride_sweep", "ride_summary", "Machine", "TwoWheeler", "machines_table", "machine_file", "show",
            "two_wheeler_file", "two_wheeler_text"]
 __getattr__, __dir__ = lazy_exports(globals(), _HOME, _MODULES)

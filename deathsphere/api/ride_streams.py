@@ -23,7 +23,7 @@ from deathsphere.api.arguments import (
 from deathsphere.records.machine_presets import as_machine
 from deathsphere.api.orbits import MAX_CHUNK_ROWS
 from deathsphere.api.rides import MAX_RIDE_ROWS, ride
-from deathsphere.api.streams import Chunks, cluster_of, evaluated
+from deathsphere.api.streams import Chunks, cluster_of, evaluated, grid_requests
 from deathsphere.params import CHUNK, ParameterError
 from deathsphere.table import Table
 
@@ -97,16 +97,14 @@ def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, 
         ride(**probe, **{**fixed, "only": only, "stability": False})
     total = len(where[1]) * len(how[1])
     work = partial(_ride_chunk, **fixed)
-    return Chunks(evaluated(_grid_requests(where, how, chunk_size), work, jobs, cluster_of(scheduler, jobs)), total)
+    batches = grid_requests(dict((where, how)), chunk_size, _ride_request, {})   # how fastest
+    return Chunks(evaluated(batches, work, jobs, cluster_of(scheduler, jobs)), total)
 
 
-def _grid_requests(where, how, chunk_size: int):
-    """``(n, request)`` per chunk of the grid flattened (``how`` fastest)."""
-    (row_name, rows), (col_name, cols) = where, how
-    total, width = len(rows) * len(cols), len(cols)
-    for start in range(0, total, chunk_size):
-        index = np.arange(start, min(start + chunk_size, total), dtype=np.int64)
-        yield index.size, {row_name: rows.take(index // width), col_name: cols.take(index % width), "first": start}
+def _ride_request(n: int, input_row, **axes) -> dict:
+    """A chunk's request: its axes' values and its first grid point's index
+    (ride numbers its rows from 1 within the chunk)."""
+    return {**axes, "first": int(input_row[0]) - 1 if n else 0}
 
 
 def _ride_chunk(request: dict, **fixed) -> Table:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -77,11 +78,23 @@ def _evaluate(theta, alpha, r, g, mu, max_g, m: Machine) -> dict:
     return {k: np.concatenate([np.asarray(p[k]).reshape(-1) for p in pieces]) for k in pieces[0]}
 
 
-def _table(req_index, theta, alpha, r, g, mu, max_g, res, m: Machine, stability: bool, shape=None,
+class RowRun(NamedTuple):
+    """A run's values row by row, as the rows of a table hold them (flat
+    arrays, or one value for every row): the globe's radius [m], gravity
+    [m/s^2], the friction available and the largest load [g]."""
+
+    r: object
+    g: object
+    mu: object
+    max_g: object
+
+
+def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: bool, shape=None,
            given: dict | None = None, axes=None) -> Table:
     """The rows of ``ride``.  ``given`` holds the requested inputs per row
     (``theta_deg``, ``alpha_deg``, ``v_cm_m_s``, NaN where not given), echoed
     as typed rather than as recomputed (docs/contract.md)."""
+    r, g, mu, max_g = run
     n = theta.size
     given = given or {}
     status = res["status"]
@@ -320,7 +333,7 @@ def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions
             given["height_m"] = flat["height"].astype(float)
         else:
             given["theta_deg"] = flat["theta"].astype(float)
-        table = _table(np.arange(n), th, al, rr, g_, mu_, xg, res, m, stability, shape=shape, given=given,
+        table = _table(np.arange(n), th, al, RowRun(rr, g_, mu_, xg), res, m, stability, shape=shape, given=given,
                        axes=_axes(checked, shape))
     else:
         table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
@@ -424,7 +437,8 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
         given["theta_deg"] = theta_deg[req]
     if height is not None:
         given["height_m"] = height[req]
-    return _table(req, th[req], al, r[req], g[req], mu[req], max_g[req], res, m, stability, given=given)
+    return _table(req, th[req], al, RowRun(r[req], g[req], mu[req], max_g[req]), res, m, stability,
+                  given=given)
 
 
 #: Columns of the rider's table (:func:`ride_summary`): ``speeds_tried``

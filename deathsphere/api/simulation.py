@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import dataclasses
+import inspect
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -17,9 +21,13 @@ from deathsphere.api.arguments import (
     checked_optional,
     checked_scalar,
     checked_setup,
-    sphere_radius,
 )
+from deathsphere.model import Setup
 from deathsphere.params import ParameterError
+from deathsphere.requests.decode import decode_run
+from deathsphere.requests.keys import Keys
+from deathsphere.requests.records import (Horizontal, PaperBody, Rate, RiderRequest, Run, Solver, Speed, Spin,
+                                          Theta, Tilt, Vertical)
 from deathsphere.table import Table
 
 #: solve_ivp's methods and the frames :func:`simulate` integrates in
@@ -112,69 +120,103 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
     >>> len(series), str(summary["status"][0])
     (3, 'completed')
     """
-    return prepare_simulation(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3,
-                              omega=omega, branch=branch, vertical=vertical, v_top=v_top, perturb=perturb,
-                              periods=periods, points_per_period=points_per_period, method=method, rtol=rtol,
-                              atol=atol, frame=frame, max_steps=max_steps, speed=speed, diameter=diameter,
-                              machine=machine).run()
+    typed = {"theta": theta, "alpha": alpha, "body": body, "side": side, "a": a, "r": r, "k": k, "g": g, "mu": mu,
+             "omega3": omega3, "omega": omega, "branch": branch, "vertical": vertical, "v_top": v_top,
+             "perturb": perturb, "periods": periods, "points_per_period": points_per_period, "method": method,
+             "rtol": rtol, "atol": atol, "frame": frame, "max_steps": max_steps, "speed": speed,
+             "diameter": diameter, "machine": machine}
+    return prepare_simulation(*simulation_request(typed)).run()
 
 
-def prepare_simulation(theta, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None,
-                       g=G, mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None,
-                       perturb=0.0, periods=20.0, points_per_period=100, method: str = "DOP853",
-                       rtol: float = 1e-10, atol: float | None = None, frame: str = "turning",
-                       record_states: bool = False, max_steps=1_000_000, speed=None, diameter=None, machine=None):
-    """The validated :class:`deathsphere.simulation.Simulation` behind
-    :func:`simulate` (same parameters), not yet run: for streaming the time
-    series chunk by chunk (``sim.chunks()``, then ``sim.summary()``), as the
-    command line does; ``record_states`` keeps the full states for the 3-D
-    view.  Bad input raises :class:`ParameterError`.
+@dataclass(frozen=True)
+class SimulationOptions:
+    """What a run records beyond its physics: rows per period, the frame
+    its angles are measured in, its step budget (a run estimated to need
+    more is refused before it starts) and whether the full states are kept
+    (for the 3-D view)."""
+
+    points_per_period: int = 100
+    frame: str = "turning"
+    max_steps: int = 1_000_000
+    record_states: bool = False
+
+
+def _keywords() -> dict:
+    """:func:`simulate`'s keywords and their defaults, read off its
+    signature so that the mapping form cannot drift from the keyword one
+    (``theta``, which has none: None, refused as missing)."""
+    return {name: None if p.default is p.empty else p.default
+            for name, p in inspect.signature(simulate).parameters.items()}
+
+
+def simulation_request(typed: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]:
+    """The rider, its run and the run's options from :func:`simulate`'s
+    keywords as typed (a key not given: its default), plus
+    ``record_states`` (keep the full states for the 3-D view).  Bad input
+    raises :class:`ParameterError` naming the keyword (the command line
+    shows it as its option).
 
     Examples
     --------
-    >>> sim = prepare_simulation(60, 10, periods=0.1, points_per_period=20)
-    >>> sum(len(chunk) for chunk in sim.chunks()), str(sim.summary()["status"][0])
-    (3, 'completed')
+    >>> rider, run, options = simulation_request({"theta": 60, "alpha": 10, "periods": 0.1})
+    >>> rider.lane.by, run.periods
+    (Tilt(alpha=10.0), 0.1)
     """
-    from deathsphere import simulation
-
-    if theta is None:
+    keywords = _keywords()
+    unknown = sorted(set(typed) - set(keywords) - {"record_states"})
+    if unknown:
+        raise TypeError(f"simulation_request() got an unexpected key {unknown[0]!r}")
+    given = {**keywords, "record_states": False, **typed}
+    if given["theta"] is None:
         raise ParameterError("give theta (the steady orbit's polar angle, deg)", "theta", missing=True)
-    if machine is not None:
-        if vertical is not False:
-            raise ParameterError("vertical loops of a machine are not simulated (their steady values: ride with "
-                                 "vertical=True, 'deathsphere ride --vertical'); a machine's run starts on a "
-                                 "horizontal orbit", "vertical")
-        refused = [name for name, v in (("body", body), ("a", a), ("k", k), ("omega", omega), ("omega3", omega3),
-                                        ("v_top", v_top)) if v is not None]
-        refused += ["side='outside'"] if side != "inside" else []
-        if refused:
-            raise ParameterError(f"with machine= the body is the machine (its wheel radius is its own): "
-                                 f"{', '.join(refused)} not allowed; give theta and alpha or speed (and branch), "
-                                 "r or diameter, g, mu, perturb and the run's options", "machine")
-        return _prepare_machine(theta, alpha, speed, branch, machine, sphere_radius(r, diameter), g, mu,
-                                _run_options(perturb, periods, points_per_period, method, rtol, atol, frame,
-                                             record_states, max_steps))
-    setup = checked_setup("wheel" if body is None else body, side, A if a is None else a,
-                          sphere_radius(r, diameter), k, g, mu)
-    theta = checked_scalar("theta", theta)
-    alpha, omega3, omega, v_top, speed = (
-        None if v is None else checked_scalar(name, v) for name, v in
-        (("alpha", alpha), ("omega3", omega3), ("omega", omega), ("v_top", v_top), ("speed", speed)))
-    vertical = checked_flag("vertical", vertical)
-    run = _run_options(perturb, periods, points_per_period, method, rtol, atol, frame, record_states, max_steps)
-    perturb = run.pop("perturb")
-    requested = {"speed": speed, "rate": omega, "omega3": omega3}
-    if setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None):
-        # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved), the root ``branch``
-        alpha = _tilt_for(setup, theta, speed, omega, branch)
-        omega = None
-    elif isinstance(branch, bool) or branch not in (0, 1):
+    if given["machine"] is not None:
+        _refuse_for_machine(given)
+    ground = {k: given[k] for k in ("r", "diameter") if given[k] is not None}
+    if "diameter" in ground and ground.get("r") is R:
+        del ground["r"]                     # the default radius yields to a diameter
+    run = decode_run({**(ground or {"r": R}), "g": given["g"], "mu": given["mu"]}, Keys(), _read,
+                     {"g": G, "mu": INF, "max_g": INF})
+    solver, periods, kick, options = _run_options(given)
+    run = dataclasses.replace(run, solver=solver, periods=periods)
+    rider = _machine_rider(given, run) if given["machine"] is not None else _paper_rider(given, run)
+    return dataclasses.replace(rider, kick=kick), run, options
+
+
+def _read(key: str, raw) -> float:
+    """One keyword's value: one value, checked against the registry."""
+    return checked_scalar(key, raw)
+
+
+def _run_options(given: Mapping) -> tuple[Solver, float, float, SimulationOptions]:
+    """The checked solver, run length, kick and options, whatever rolls."""
+    method = checked_choice("method", given["method"], METHODS_LOWER)
+    kick, periods = checked_scalar("perturb", given["perturb"]), checked_scalar("periods", given["periods"])
+    points = int(checked_scalar("points_per_period", given["points_per_period"]))
+    solver = Solver(method=METHODS[METHODS_LOWER.index(method)], rtol=checked_scalar("rtol", given["rtol"]),
+                    atol=checked_optional("atol", given["atol"]))
+    frame = checked_choice("frame", given["frame"], FRAMES)
+    options = SimulationOptions(points_per_period=points, frame=frame,
+                                record_states=checked_flag("record_states", given["record_states"]),
+                                max_steps=int(checked_scalar("max_steps", given["max_steps"])))
+    return solver, periods, kick, options
+
+
+def _paper_rider(given: Mapping, run: Run) -> RiderRequest:
+    """A wheel or a sphere of the paper on the lane its keywords describe
+    (the command line's rules, in words naming the keywords)."""
+    setup = checked_setup("wheel" if given["body"] is None else given["body"], given["side"],
+                          A if given["a"] is None else given["a"], run.r, given["k"], run.g, run.mu)
+    theta = checked_scalar("theta", given["theta"])
+    alpha, omega3, omega, v_top, speed = (None if given[name] is None else checked_scalar(name, given[name])
+                                          for name in ("alpha", "omega3", "omega", "v_top", "speed"))
+    vertical, branch = checked_flag("vertical", given["vertical"]), given["branch"]
+    # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved,
+    # the root ``branch``), found when the run is prepared
+    by_value = setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None)
+    if not by_value and (isinstance(branch, bool) or branch not in (0, 1)):
         raise ParameterError(f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
-    elif speed is not None:
+    if not by_value and speed is not None:
         raise ParameterError("speed is an input for a wheel's horizontal orbit", "speed")
-    # which inputs each kind of run takes (the command line's rules, in words
-    # naming the parameters of this function)
     if setup.body == "particle":
         raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)")
     if vertical:
@@ -182,27 +224,125 @@ def prepare_simulation(theta, alpha=None, *, body: str | None = None, side: str 
             raise ParameterError("vertical=True simulates a wheel: give theta and v_top (no alpha)")
     elif v_top is not None:
         raise ParameterError("v_top is for vertical orbits (vertical=True)")
-    elif setup.body == "wheel" and (alpha is None or omega3 is not None or omega is not None):
+    elif setup.body == "wheel" and (omega3 is not None or (speed is not None and omega is not None) if by_value
+                                    else alpha is None or omega3 is not None or omega is not None):
         raise ParameterError("a wheel's steady orbit needs alpha (deg) or its speed or rate (no omega3)")
     elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
         raise ParameterError("a sphere's steady orbit needs exactly one of omega3 and omega (no alpha)")
     if setup.k == 0:
         raise ParameterError("simulate needs k > 0: at k = 0 the equations of motion are singular")
+    body = PaperBody(kind=setup.body, side=setup.side, a=setup.a, k=setup.k)
+    if vertical:
+        return RiderRequest(body=body, lane=Vertical(v_top=v_top, theta=theta))
+    by = (Tilt(alpha) if alpha is not None else Speed(speed, branch) if speed is not None
+          else Spin(omega3, branch) if omega3 is not None else Rate(omega, branch))
+    return RiderRequest(body=body, lane=Horizontal(at=Theta(theta), by=by))
+
+
+def _refuse_for_machine(given: Mapping) -> None:
+    """What a machine's run does not take, refused by name: its body is the
+    machine (its wheel radius its own) and it starts on a horizontal orbit."""
+    if given["vertical"] is not False:
+        raise ParameterError("vertical loops of a machine are not simulated (their steady values: ride with "
+                             "vertical=True, 'deathsphere ride --vertical'); a machine's run starts on a "
+                             "horizontal orbit", "vertical")
+    refused = [name for name in ("body", "a", "k", "omega", "omega3", "v_top") if given[name] is not None]
+    refused += ["side='outside'"] if given["side"] != "inside" else []
+    if refused:
+        raise ParameterError(f"with machine= the body is the machine (its wheel radius is its own): "
+                             f"{', '.join(refused)} not allowed; give theta and alpha or speed (and branch), "
+                             "r or diameter, g, mu, perturb and the run's options", "machine")
+
+
+def _machine_rider(given: Mapping, run: Run) -> RiderRequest:
+    """A machine (beyond the paper; docs/machine.md) on a horizontal lane
+    at theta, by its tilt or by its centre of mass's speed."""
+    from deathsphere.physics.machine_arrays import machine_arrays
+    from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, yaw_is_determined
+    from deathsphere.records.machine_presets import as_machine
+
+    m = as_machine(given["machine"])
+    if not yaw_is_determined(machine_arrays(m)):
+        raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
+                             "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
+    theta = checked_scalar("theta", given["theta"])
+    if not run.r > m.wheel_radius:
+        raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius {run.r:g} m "
+                             "(needs r > a)",
+                             "r")
+    alpha, speed, branch = given["alpha"], given["speed"], given["branch"]
+    if (alpha is None) == (speed is None):
+        raise ParameterError("a machine's steady orbit needs exactly one of alpha (deg) and speed (its centre of "
+                             "mass's, m/s)", "alpha", missing=alpha is None)
+    if speed is not None:
+        by = Speed(checked_scalar("speed", speed), branch)
+    elif isinstance(branch, bool) or branch != 0:
+        raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
+                             "branch")
+    else:
+        by = Tilt(checked_scalar("alpha", alpha))
+    return RiderRequest(body=m, lane=Horizontal(at=Theta(theta), by=by))
+
+
+def prepare_simulation(rider: RiderRequest, run: Run, options: SimulationOptions = SimulationOptions()):
+    """The :class:`deathsphere.simulation.Simulation` of ``rider`` in ``run``
+    (records from :func:`simulation_request`), not yet run: for streaming
+    the time series chunk by chunk (``sim.chunks()``, then
+    ``sim.summary()``), as the command line does.  A speed or rate is
+    solved for its tilt here; bad input raises :class:`ParameterError`.
+
+    Examples
+    --------
+    >>> sim = prepare_simulation(*simulation_request({"theta": 60, "alpha": 10, "periods": 0.1,
+    ...                                               "points_per_period": 20}))
+    >>> sum(len(chunk) for chunk in sim.chunks()), str(sim.summary()["status"][0])
+    (3, 'completed')
+    """
+    from deathsphere import simulation
+
+    starts = _paper_starts(rider, run) if isinstance(rider.body, PaperBody) else _machine_starts(rider, run)
+    solver = run.solver or Solver()
     try:
-        if vertical:
-            starts = simulation.vertical_starts(setup, theta, v_top, perturb_deg=perturb)
-        elif setup.body == "wheel":
-            starts = simulation.horizontal_starts(setup, theta, params.reduce_angle(alpha), perturb_deg=perturb)
-            # the tilt is echoed as given (the reduction to (-180, 180] may
-            # change its last bits: 10.123456789 -> 10.123456788999988)
-            starts = dataclasses.replace(starts, alpha_deg=np.full(len(starts), alpha))
-        else:
-            starts = simulation.horizontal_starts(setup, theta, omega3=omega3, omega=omega, branch=branch,
-                                                  perturb_deg=perturb)
-        sim = simulation.Simulation(_echo_requested(starts, **requested), **run)
+        return simulation.Simulation(starts, periods=run.periods, points_per_period=options.points_per_period,
+                                     method=solver.method, rtol=solver.rtol, atol=solver.atol, frame=options.frame,
+                                     record_states=options.record_states, max_steps=options.max_steps)
     except ValueError as exc:  # the simulation's own checks (method, frame, tolerances)
         raise ParameterError(str(exc)) from None
-    return sim
+
+
+def _paper_starts(rider: RiderRequest, run: Run):
+    """The start of a wheel's or a sphere's run: its steady orbit kicked by ``rider.kick`` [deg]."""
+    from deathsphere import simulation
+
+    body, lane, kick = rider.body, rider.lane, 0.0 if rider.kick is None else rider.kick
+    setup = Setup(body=body.kind, side=body.side, a=body.a, r=run.r, k=body.k, g=run.g, mu=run.mu)
+    if lane.kind == "vertical":
+        starts_of = partial(simulation.vertical_starts, setup, lane.theta, lane.v_top, perturb_deg=kick)
+        return _started(starts_of, None)
+    theta, by = lane.at.theta, lane.by
+    speed = by.speed if isinstance(by, Speed) else None
+    omega = by.omega if isinstance(by, Rate) else None
+    omega3 = by.omega3 if isinstance(by, Spin) else None
+    requested = {"speed": speed, "rate": omega, "omega3": omega3}
+    if body.kind == "wheel":
+        alpha = by.alpha if isinstance(by, Tilt) else _tilt_for(setup, theta, speed, omega, by.branch)
+        starts_of = partial(simulation.horizontal_starts, setup, theta, params.reduce_angle(alpha),
+                            perturb_deg=kick)
+        return _echo_requested(_started(starts_of, alpha), **requested)
+    starts_of = partial(simulation.horizontal_starts, setup, theta, omega3=omega3, omega=omega, branch=by.branch,
+                        perturb_deg=kick)
+    return _echo_requested(_started(starts_of, None), **requested)
+
+
+def _started(starts_of, alpha):
+    """``starts_of()``, its tilt echoed as given (``alpha``; None: its own):
+    the reduction to (-180, 180] may change its last bits
+    (10.123456789 -> 10.123456788999988)."""
+    try:
+        starts = starts_of()
+    except ValueError as exc:  # the starts' own checks
+        raise ParameterError(str(exc)) from None
+    return starts if alpha is None else dataclasses.replace(starts, alpha_deg=np.full(len(starts), alpha))
 
 
 def _echo_requested(starts, **requested):
@@ -215,58 +355,20 @@ def _echo_requested(starts, **requested):
     return dataclasses.replace(starts, **given) if given else starts
 
 
-def _run_options(perturb, periods, points_per_period, method, rtol, atol, frame, record_states, max_steps) -> dict:
-    """The checked kick and :class:`deathsphere.simulation.Simulation` options, whatever rolls."""
-    method = checked_choice("method", method, METHODS_LOWER)
-    return {"perturb": checked_scalar("perturb", perturb), "periods": checked_scalar("periods", periods),
-            "points_per_period": int(checked_scalar("points_per_period", points_per_period)),
-            "method": METHODS[METHODS_LOWER.index(method)], "rtol": checked_scalar("rtol", rtol),
-            "atol": checked_optional("atol", atol), "frame": checked_choice("frame", frame, FRAMES),
-            "record_states": checked_flag("record_states", record_states),
-            "max_steps": int(checked_scalar("max_steps", max_steps))}
-
-
-def _prepare_machine(theta, alpha, speed, branch, machine, r, g, mu, run: dict):
-    """:func:`prepare_simulation` of a machine (beyond the paper; docs/machine.md
-    eqs. M8, M12, M16-M19): its steady orbit at (theta, alpha), or at the
-    tilt ``branch`` giving the centre of mass the ``speed``."""
-    from deathsphere import simulation
+def _machine_starts(rider: RiderRequest, run: Run):
+    """The start of a machine's run (beyond the paper; docs/machine.md eqs.
+    M8, M12, M16-M19): its steady orbit at (theta, alpha), or at the tilt
+    ``branch`` giving the centre of mass the speed, kicked by ``rider.kick``."""
     from deathsphere.physics.ground import Sphere
-    from deathsphere.physics.machine_arrays import machine_arrays
-    from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, yaw_is_determined
-    from deathsphere.records.machine_presets import as_machine
     from deathsphere.simulation.machine_starts import machine_run, machine_starts
 
-    m = as_machine(machine)
-    if not yaw_is_determined(machine_arrays(m)):
-        raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
-                             "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
-    theta = checked_scalar("theta", theta)
-    r, g, mu = checked_scalar("r", r), checked_scalar("g", g), checked_scalar("mu", mu)
-    if not r > m.wheel_radius:
-        raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius {r:g} m "
-                             "(needs r > a)",
-                             "r")
-    if (alpha is None) == (speed is None):
-        raise ParameterError("a machine's steady orbit needs exactly one of alpha (deg) and speed (its centre of "
-                             "mass's, m/s)", "alpha", missing=alpha is None)
-    if speed is not None:
-        speed = checked_scalar("speed", speed)
-        alpha = _machine_tilt_for(m, theta, speed, branch, r, g)
-    elif isinstance(branch, bool) or branch != 0:
-        raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
-                             "branch")
-    else:
-        alpha = checked_scalar("alpha", alpha)
-    perturb = run.pop("perturb")
-    bodies = machine_run(m, Sphere(r), g)
-    try:
-        starts = machine_starts(bodies, theta, params.reduce_angle(alpha), perturb_deg=perturb, mu=mu)
-        # the tilt is echoed as given, as a wheel's
-        starts = dataclasses.replace(starts, alpha_deg=np.full(len(starts), alpha))
-        return simulation.Simulation(_echo_requested(starts, speed=speed), **run)
-    except ValueError as exc:
-        raise ParameterError(str(exc)) from None
+    m, theta, by = rider.body, rider.lane.at.theta, rider.lane.by
+    kick = 0.0 if rider.kick is None else rider.kick
+    speed = by.speed if isinstance(by, Speed) else None
+    alpha = by.alpha if speed is None else _machine_tilt_for(m, theta, speed, by.branch, run.r, run.g)
+    bodies = machine_run(m, Sphere(run.r), run.g)
+    starts_of = partial(machine_starts, bodies, theta, params.reduce_angle(alpha), perturb_deg=kick, mu=run.mu)
+    return _echo_requested(_started(starts_of, alpha), speed=speed)
 
 
 def _machine_tilt_for(m, theta: float, speed: float, branch, r: float, g: float) -> float:

@@ -71,9 +71,12 @@ class Chunks:
 
 
 def grid_requests(axes: dict, chunk_size: int, make, fixed: dict) -> Iterator[tuple[int, dict]]:
-    """``(n, requests)`` per chunk of the grid of ``axes``, numbered from 1 in grid order."""
+    """``(n, requests)`` per chunk of the grid of ``axes``, numbered from 1 in
+    grid order (last axis fastest): the one chunker of a grid of requests,
+    whatever command's (``make`` builds a chunk's request from its axes'
+    values and ``input_row``)."""
     for first, grid in grid_chunks(axes, chunk_size):
-        n = len(grid["theta"])
+        n = len(next(iter(grid.values())))
         yield n, make(n, input_row=np.arange(first + 1, first + n + 1), **fixed, **grid)
 
 

@@ -11,7 +11,7 @@ from functools import partial
 from deathsphere.api.arguments import INF, G, R, checked_scalar
 from deathsphere.api.rides import SINGLE_CONTACT_ONLY, refuse_single_contact
 from deathsphere.api.streams import Chunks, cluster_of, evaluated
-from deathsphere.api.two_wheelers import TURN_CHUNK, TurnRequest, turn_request, turn_rows
+from deathsphere.api.two_wheelers import TURN_CHUNK, TURN_KEYS, TurnRequest, turn_request, turn_rows
 from deathsphere.table import Table
 
 
@@ -56,9 +56,8 @@ def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, stee
     if unknown:
         raise TypeError(f"two_wheeler_ride_sweep() got an unexpected keyword argument {unknown[0]!r}")
     refuse_single_contact(single_contact)
-    request = turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque, steer=steer,
-                           r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary, stability=stability,
-                           only=only, streamed=True)
+    typed = {key: value for key, value in locals().items() if key in TURN_KEYS}   # the keywords, as typed
+    request = turn_request(machine, typed, streamed=True)
     chunk_size = int(checked_scalar("chunk_size", chunk_size))
     jobs = int(checked_scalar("jobs", jobs))
     per_chunk = max(1, chunk_size // max(1, request.values.size))

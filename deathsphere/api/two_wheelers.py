@@ -10,6 +10,8 @@ A two-wheeler is validated once, at construction: a bad one raises
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import math
 import re
 from dataclasses import dataclass
@@ -307,14 +309,25 @@ class TurnRequest:
         return self.lanes.size * self.values.size
 
 
-def turn_request(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
-                 diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True, only=None,
-                 streamed=False) -> TurnRequest:
-    """``ride --steer``'s request checked, every value, before any work: a
-    bad one raises :class:`~deathsphere.ParameterError` in one line.  At
-    most MAX_TURN_REQUESTS lanes x speeds at once, or ``streamed`` (the
-    lanes answered a chunk at a time) MAX_STREAMED_LANES lanes of at most
+#: ``ride --steer``'s keys and their defaults (a key not given: its default).
+TURN_KEYS = {"theta": None, "height": None, "speed": None, "steer_torque": None, "steer": None, "r": R,
+             "diameter": None, "g": G, "mu": INF, "max_g": INF, "summary": False, "stability": True, "only": None}
+
+
+def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest:
+    """``ride --steer``'s request from its keys as typed (:data:`TURN_KEYS`,
+    those of :func:`deathsphere.ride` for a two-wheeler), checked, every
+    value, before any work: a bad one raises
+    :class:`~deathsphere.ParameterError` in one line.  At most
+    MAX_TURN_REQUESTS lanes x speeds at once, or ``streamed`` (the lanes
+    answered a chunk at a time) MAX_STREAMED_LANES lanes of at most
     MAX_TURN_REQUESTS speeds each."""
+    unknown = sorted(set(typed) - set(TURN_KEYS))
+    if unknown:
+        raise TypeError(f"turn_request() got an unexpected key {unknown[0]!r}")
+    given = {**TURN_KEYS, **typed}
+    theta, height, speed, steer_torque, steer, r, diameter, g, mu, max_g, summary, stability, only = (
+        given[key] for key in TURN_KEYS)
     steer, steer_torque = steer_request(steer, steer_torque)
     t, steer, g = _machine(machine, steer, g)
     r = sphere_radius(r, diameter)
@@ -572,9 +585,8 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
             raise ParameterError("upright straight running on flat ground has no status to keep: only is for the "
                                  "globe", "only")
         return _straight(t, g, speed, steer, summary)
-    return turn_rows(turn_request(machine, theta=theta, height=height, speed=speed, steer_torque=steer_torque,
-                                  steer=steer, r=r, diameter=diameter, g=g, mu=mu, max_g=max_g, summary=summary,
-                                  stability=stability, only=only))
+    typed = {key: value for key, value in locals().items() if key in TURN_KEYS}   # the keywords, as typed
+    return turn_rows(turn_request(machine, typed))
 
 
 def _one_g(g):

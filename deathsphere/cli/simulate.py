@@ -218,12 +218,14 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         raise click.UsageError(f"{', '.join(flags)} {what}: give --machine (or --machine-file)")
     loop = api.animation_options(output, **given(loop_seconds=loop_seconds, playback=playback))
     view = output is not None and _preflight_output(output)
-    sim = api.prepare_simulation(
-        theta, branch=branch, vertical=vertical, method=method, frame=frame, record_states=view,
+    rider, run, options = api.simulation_request({
+        "theta": theta, "branch": branch, "vertical": vertical, "method": method, "frame": frame,
+        "record_states": view,
         **given(alpha=alpha, speed=speed, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
                 omega3=omega3, omega=omega,
                 v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
-                atol=atol, max_steps=max_steps, machine=chosen))
+                atol=atol, max_steps=max_steps, machine=chosen)})
+    sim = api.prepare_simulation(rider, run, options)
     fmt = choose_format(fmt)
     table_file = view_format(output) if output is not None and view_format(output) in TABLE_OUTPUTS else None
     series = []

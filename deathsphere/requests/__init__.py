@@ -10,13 +10,16 @@ and speed, a rider gave is a matter of structure, decided once in
 from deathsphere.requests.records import (
     Height,
     Horizontal,
+    PaperBody,
+    Rate,
     RiderRequest,
     Run,
     Solver,
     Speed,
+    Spin,
     Theta,
     Tilt,
     Vertical,
 )
 
-__all__ = ["Height", "Horizontal", "RiderRequest", "Run", "Solver", "Speed", "Theta", "Tilt", "Vertical"]
+__all__ = ["Height", "Horizontal", "PaperBody", "Rate", "RiderRequest", "Run", "Solver", "Speed", "Spin", "Theta", "Tilt", "Vertical"]

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from deathsphere.constants import STANDARD_GRAVITY
+from deathsphere.constants import STANDARD_GRAVITY, TABLE1_WHEEL_RADIUS
 from deathsphere.physics.ground import Sphere
 from deathsphere.records.machine import Machine
 
@@ -42,6 +42,39 @@ class Speed:
     (every tilt giving it)."""
 
     speed: object
+    #: which of the tilts giving it a run starts on (0: the first in
+    #: increasing alpha); ride lists them all
+    branch: int = 0
+
+
+@dataclass(frozen=True)
+class Rate:
+    """How a horizontal lane is held: the orbital rate Omega [rad/s] (a
+    wheel: the tilt ``branch`` giving it; a sphere: its root ``branch``)."""
+
+    omega: object
+    branch: int = 0
+
+
+@dataclass(frozen=True)
+class Spin:
+    """How a sphere's horizontal lane is held: its spin omega3 [rad/s]
+    about the radius to the contact, the orbit's root ``branch``."""
+
+    omega3: object
+    branch: int = 0
+
+
+@dataclass(frozen=True)
+class PaperBody:
+    """One of the paper's bodies: a ``"wheel"`` or a ``"sphere"`` of radius
+    ``a`` [m] and inertia factor ``k`` (None: the body's own), rolling on
+    the ``"inside"`` or ``"outside"`` of the globe (the run's ground)."""
+
+    kind: str = "wheel"
+    side: str = "inside"
+    a: float = TABLE1_WHEEL_RADIUS
+    k: float | None = None
 
 
 @dataclass(frozen=True)
@@ -50,7 +83,7 @@ class Horizontal:
     tilt or speed)."""
 
     at: Theta | Height
-    by: Tilt | Speed
+    by: Tilt | Speed | Rate | Spin
 
     kind = "horizontal"
 
@@ -70,12 +103,13 @@ class Vertical:
 
 @dataclass(frozen=True)
 class RiderRequest:
-    """One rider's request: its body, its lane, its direction (+1 ccw, -1 cw
+    """One rider's request: its body (a machine record, or one of the
+    paper's bodies to simulate), its lane, its direction (+1 ccw, -1 cw
     seen from above), its phase at t = 0 [deg] (a horizontal lane's azimuth
     of the contact, a loop's angle from the top), a kick (a start's
     perturbation, None: none) and its name (a show's)."""
 
-    body: Machine
+    body: Machine | PaperBody
     lane: Horizontal | Vertical
     direction: int = 1
     phase: float = 0.0

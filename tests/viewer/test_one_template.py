@@ -43,8 +43,8 @@ def _orbit():
 
 
 def _machine():
-    sim = deathsphere.api.prepare_simulation(60, 14.05, machine="stunt125", diameter="16ft", periods=0.2,
-                                             points_per_period=20, record_states=True)
+    sim = deathsphere.api.prepare_simulation(*deathsphere.api.simulation_request(dict(theta=60, alpha=14.05, machine="stunt125", diameter="16ft", periods=0.2,
+                                             points_per_period=20, record_states=True)))
     series, summary = sim.run()
     return build_scene(series, summary, sim.view_frames())
 

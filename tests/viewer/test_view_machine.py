@@ -17,8 +17,8 @@ STUNT = PRESETS["stunt125"]
 
 
 def _run(**kw):
-    sim = deathsphere.api.prepare_simulation(60, 14.05, machine="stunt125", diameter="16ft", perturb=0.01, periods=0.5,
-                                             points_per_period=20, record_states=True, **kw)
+    sim = deathsphere.api.prepare_simulation(*deathsphere.api.simulation_request(dict(theta=60, alpha=14.05, machine="stunt125", diameter="16ft", perturb=0.01, periods=0.5,
+                                             points_per_period=20, record_states=True, **kw)))
     series, summary = sim.run()
     return sim, series, summary
 
@@ -60,7 +60,7 @@ def test_the_page_holds_the_machines_frame_and_rider(machine_page):
 
 
 def test_a_wheels_page_has_no_machine():
-    sim = deathsphere.api.prepare_simulation(60, 10, periods=0.2, points_per_period=10, record_states=True)
+    sim = deathsphere.api.prepare_simulation(*deathsphere.api.simulation_request(dict(theta=60, alpha=10, periods=0.2, points_per_period=10, record_states=True)))
     series, summary = sim.run()
     (scene,) = build_scene(series, summary, sim.view_frames()).tracks
     assert "com" not in scene.points and "head" not in scene.points
