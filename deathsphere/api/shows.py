@@ -344,8 +344,6 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
     except ValueError as exc:
         raise ParameterError(str(exc), "duration") from None
-    if duration is not None:
-        span = float(duration)
     windows = {}
     if phase == "auto":
         phases, windows = auto_phases(lanes, span, plan.globe.min_clearance)

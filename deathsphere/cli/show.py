@@ -145,8 +145,8 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
              "act), falls (of --fail or --monte-carlo), summary (the Monte Carlo's) [default: on a terminal "
              "riders and pairs (and the falls); piped, falls with --fail or --monte-carlo, else riders].")
 @single("--duration", type=click.FloatRange(0, None, min_open=True), default=None, metavar="SECONDS",
-        help="The act's length [s] when the riders' periods are not commensurate [default: the plan's "
-             "duration].")
+        help="The act's length [s] when the riders' periods are not commensurate; when they are, the act "
+             "is their common period and a duration is not used [default: the plan's duration].")
 @single("--phase", type=click.Choice(("plan", "auto"), case_sensitive=False), default=None,
         help="auto: each vertical rider's phase, in plan order, that maximises the least clearance (the "
              "safe window is reported) [default: plan, the phases as written].")
