@@ -40,3 +40,21 @@ def test_the_common_period_wins_over_a_duration():
     plan = example()
     plan["globe"]["duration"] = 1
     assert deathsphere.show(plan).duration_s == plain.duration_s
+
+
+def test_a_long_act_is_searched_chunk_by_chunk(monkeypatch):
+    from deathsphere.act import pairs
+
+    whole = deathsphere.show(example(), duration=1)
+    seen = []
+    part = pairs._grid_part
+
+    def counted(*args):
+        seen.append(part(*args).size)
+        return part(*args)
+
+    monkeypatch.setattr(pairs, "CHUNK_SAMPLES", 64)
+    monkeypatch.setattr(pairs, "_grid_part", counted)
+    chunked = deathsphere.show(example(), duration=1)
+    assert len(seen) > 1 and max(seen) <= 65
+    assert np.allclose(chunked.pairs["min_clearance_m"], whole.pairs["min_clearance_m"], rtol=0, atol=1e-3)
