@@ -65,8 +65,15 @@ class ShowResult:
 
     def positions(self, t) -> dict:
         """Each rider's 'contact', 'head' and 'com' points (3, n) [m, the
-        globe's frame] at the times t (n,) [s], by name."""
-        t = np.asarray(t, dtype=float).reshape(-1)
+        globe's frame] at the times t (n,) [s], by name; ParameterError for
+        a time that is not a finite number."""
+        try:
+            t = np.asarray(t, dtype=float).reshape(-1)
+        except (TypeError, ValueError):
+            raise ParameterError(f"t must be times in seconds (got {t!r})", "t") from None
+        if not np.isfinite(t).all():
+            bad = t[~np.isfinite(t)][0]
+            raise ParameterError(f"t must be finite times in seconds (got {float(bad)!r})", "t")
         return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
                 for lane in self.lanes}
 
@@ -84,7 +91,8 @@ class ShowResult:
         names = [lane.name for lane in self.lanes]
         if rider not in names:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
-        t = _number("t", t, 0.0, math.inf)
+        # a time beyond the act is not in it (and an enormous one rounds the flight away)
+        t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
         k = names.index(rider)
         res = simulate_falls(self.lanes, self.plan.globe, [k], [t], [speed_fraction])
@@ -145,10 +153,11 @@ MAX_FALLS = 10_000_000
 FALLS_CHUNK = 4096
 
 
-def _number(name: str, value, lo: float, hi: float) -> float:
+def _number(name: str, value, lo: float, hi: float, what: str = "") -> float:
+    """value as a float, or ParameterError naming ``name`` and the range (``what`` follows it)."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) or not (
             lo <= value <= hi):
-        raise ParameterError(f"{name} must be a number in [{lo:g}, {hi:g}] (got {value!r})", name)
+        raise ParameterError(f"{name} must be a number in [{lo:g}, {hi:g}]{what} (got {value!r})", name)
     return float(value)
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 
 import click
-
+from deathsphere.errors import ParameterError
 from deathsphere.cli.base import (
     OutputPath,
     choose_format,
@@ -59,7 +59,7 @@ def _fail_option(ctx, param, values):
     out = []
     for value in values:
         try:
-            out.append(parse_fail(value))
+            out.append((*parse_fail(value), value))
         except ValueError as exc:
             raise click.BadParameter(str(exc), ctx=ctx, param=param) from None
     return tuple(out)
@@ -132,7 +132,12 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
     if monte_carlo is not None:
         return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
                             **({"scheduler": scheduler} if scheduler is not None else {}))
-    tables = [result.fall(name, t, **({"speed_fraction": f} if f is not None else {})) for name, t, f in fails]
+    tables = []
+    for name, t, f, typed in fails:
+        try:
+            tables.append(result.fall(name, t, **({"speed_fraction": f} if f is not None else {})))
+        except ParameterError as exc:     # named as typed: the API's 't' is the T of --fail NAME@T
+            raise click.BadParameter(f"{typed!r}: {exc}", param_hint="'--fail'") from None
     return Table.concat(tables), None
 
 

@@ -287,6 +287,11 @@ def test_a_fall_of_an_unknown_rider_is_refused(run, plan_file):
     _refused(run("show", plan_file, "--fail", "Zed@1"), "Zed")
 
 
+@pytest.mark.parametrize("value", ["Ana@inf", "Ana@1e300:0", "Ana@nan", "Ana@9999"])
+def test_a_fall_outside_the_act_is_refused_naming_the_value_typed(run, plan_file, value):
+    _refused(run("show", plan_file, "--fail", value), f"'--fail': '{value}'")
+
+
 @pytest.mark.parametrize("text, expected", [
     ("Ana@3.5:0.4", ("Ana", 3.5, 0.4)), ("Ana@3.5", ("Ana", 3.5, None)), ("Ana@2s:0", ("Ana", 2.0, 0.0)),
     ("Mary Ann@0.25", ("Mary Ann", 0.25, None)),

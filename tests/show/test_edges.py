@@ -58,3 +58,16 @@ def test_a_long_act_is_searched_chunk_by_chunk(monkeypatch):
     chunked = deathsphere.show(example(), duration=1)
     assert len(seen) > 1 and max(seen) <= 65
     assert np.allclose(chunked.pairs["min_clearance_m"], whole.pairs["min_clearance_m"], rtol=0, atol=1e-3)
+
+
+@pytest.mark.parametrize("t", [math.inf, -math.inf, math.nan, 1e300, -1.0])
+def test_a_fall_outside_the_act_is_refused(t):
+    act = deathsphere.show(example())
+    with pytest.raises(deathsphere.ParameterError, match=r"^t must be a number in \[0, 1.27381\] s"):
+        act.fall("Cal", t, 0.0)
+
+
+@pytest.mark.parametrize("t", [math.nan, math.inf, [0.0, -math.inf]])
+def test_positions_at_times_that_are_not_finite_are_refused(t):
+    with pytest.raises(deathsphere.ParameterError, match="^t must be finite"):
+        deathsphere.show(example()).positions(t)
