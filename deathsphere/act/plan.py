@@ -26,6 +26,8 @@ GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "durati
 #: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
 RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "direction", "phase", "azimuth", "v_top",
               "width")
+#: Characters a rider's name may not hold (the tables' and --fail's separators).
+NOT_IN_NAMES = ",@\n\r"
 #: The crew's rule when the plan gives none [m] (the spacing quoted for an
 #: eight-rider act is 10-15 cm).
 DEFAULT_MIN_CLEARANCE = 0.15
@@ -170,8 +172,10 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     if not isinstance(raw, dict):
         _fail(f"rider {i + 1}", None, f"must be a table (got {raw!r})")
     name = raw.get("name")
-    if not isinstance(name, str) or not name.strip() or any(c in name for c in ",\n\r"):
-        _fail(f"rider {i + 1}", "name", f"must be a non-empty text without a comma or line break (got {name!r})")
+    # the names a plan takes are those --fail NAME@T can name: no '@', no space at either end
+    if not isinstance(name, str) or not name.strip() or name != name.strip() or any(c in name for c in NOT_IN_NAMES):
+        _fail(f"rider {i + 1}", "name", "must be a non-empty text without a comma, '@', line break or space at "
+                                        f"either end (got {name!r})")
     keys = Keys(f"rider {name!r}")
     _unknown(keys.where, raw, RIDER_KEYS)
     if raw.get("lane") not in decode.LANES:     # a plan names its lane (no default)

@@ -71,3 +71,21 @@ def test_a_fall_outside_the_act_is_refused(t):
 def test_positions_at_times_that_are_not_finite_are_refused(t):
     with pytest.raises(deathsphere.ParameterError, match="^t must be finite"):
         deathsphere.show(example()).positions(t)
+
+
+@pytest.mark.parametrize("name", ["A@b", " Ana", "Ana "])
+def test_a_name_that_fail_cannot_take_is_refused(name):
+    plan = example()
+    plan["rider"][0]["name"] = name
+    with pytest.raises(deathsphere.ParameterError, match=r"^rider 1: name: .*'@'"):
+        deathsphere.show(plan)
+
+
+def test_every_name_a_plan_takes_is_one_fail_can_name():
+    from deathsphere.cli.show import parse_fail
+
+    plan = example()
+    plan["rider"][0]["name"] = "Mary-Ann: the 2nd"
+    act = deathsphere.show(plan)
+    name, t, fraction = parse_fail(f"{act.riders['name'][0]}@0.5:0")
+    assert act.fall(name, t, fraction)["rider"][0] == "Mary-Ann: the 2nd"
