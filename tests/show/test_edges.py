@@ -89,3 +89,14 @@ def test_every_name_a_plan_takes_is_one_fail_can_name():
     act = deathsphere.show(plan)
     name, t, fraction = parse_fail(f"{act.riders['name'][0]}@0.5:0")
     assert act.fall(name, t, fraction)["rider"][0] == "Mary-Ann: the 2nd"
+
+
+@pytest.mark.parametrize("k", [0, 3])          # a horizontal lane and a loop
+def test_a_rider_too_wide_for_the_globe_is_refused(k):
+    plan = example()
+    plan["rider"][k]["width"] = "100m"
+    name = plan["rider"][k]["name"]
+    with pytest.raises(deathsphere.ParameterError, match=rf"^rider '{name}': width: 100 m does not fit"):
+        deathsphere.show(plan)
+    plan["rider"][k]["width"] = "0.6m"
+    assert deathsphere.show(plan).riders["status"][k] == "ok"
