@@ -21,7 +21,7 @@ from deathsphere.cli.base import (
     stderr_console,
     stdout_console,
 )
-from deathsphere.cli.options import display_units, output_options, scheduler_option, single, units_option
+from deathsphere.cli.options import display_units, output_options, single, units_option
 
 #: The tables the command writes (``--table``): the riders' lanes, every
 #: pair over the act, the falls (of --fail or --monte-carlo) and the
@@ -90,10 +90,12 @@ def _preflight_view(output: str) -> None:
         fail(one_line(str(exc)))
 
 
-def _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output):
-    """The options that do not go together, refused before the plan is read."""
+def _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output, others=()):
+    """The options that do not go together, refused before the plan is read
+    (``others``: whether each remaining option was given)."""
     if example:
-        if plan is not None or table or fails or monte_carlo is not None or output is not None:
+        if plan is not None or table or fails or monte_carlo is not None or output is not None or seed is not None \
+                or scheduler is not None or any(others):
             raise click.UsageError("--example prints the example plan and takes nothing else")
         return
     if plan is None:
@@ -163,7 +165,12 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
         help="N falls of random riders at random times with random speed fractions in [0, 1): the outcomes "
              "and a summary (who hits whom, the worst landing speeds).")
 @single("--seed", type=int, default=None, help="Seed of --monte-carlo's draws (the same seed, the same rows).")
-@scheduler_option()
+# the show's own: it has no --jobs to be kept apart from
+@single("--scheduler", default=None, metavar="ADDRESS",
+        help="With --monte-carlo: evaluate the falls on the dask.distributed cluster whose scheduler is at "
+             "ADDRESS (tcp://host:8786; the distributed extra); the rows are those of a local run.  A scheduler "
+             "that does not answer within 5 s is a usage error (importing distributed adds a few seconds before "
+             "that).")
 @single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
         help="Draw the act in 3-D: .html (interactive, self-contained), .gif or .mp4 (plot extra; .mp4 "
              "ffmpeg), every rider's envelope moving with the clock, the least-clearance pair marked, with "
@@ -194,7 +201,8 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
       deathsphere show act.toml --fail Ben@1.2:0.3 --output act.html
     """
     table = table.lower() if table else None
-    _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output)
+    _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output,
+                   [v is not None for v in (duration, phase, fmt, units)])
     if example:
         from deathsphere.api.shows import EXAMPLE_PLAN
 

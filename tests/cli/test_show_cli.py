@@ -234,6 +234,11 @@ def test_html_view_is_written(run, plan_file, tmp_path):
 @pytest.mark.parametrize("args, words", [
     ((), ["--example"]),
     (("PLAN", "--example"), ["--example"]),
+    (("--example", "--format", "json"), ["--example"]),
+    (("--example", "--duration", "3"), ["--example"]),
+    (("--example", "--phase", "auto"), ["--example"]),
+    (("--example", "--units", "si"), ["--example"]),
+    (("--example", "--seed", "1"), ["--example"]),
     (("PLAN", "--fail", "Ana@1", "--monte-carlo", "10"), ["--fail", "--monte-carlo"]),
     (("PLAN", "--fail", "Ana"), ["NAME@T[:FRACTION]"]),
     (("PLAN", "--fail", "Ana@soon"), ["number"]),
@@ -354,3 +359,9 @@ def test_a_hit_is_red_on_the_line_of_the_rider_fallen_into(run, plan_file):
     for victim, was_hit in hit.items():
         line = next(line for line in text.splitlines() if re.search(rf"Ana\S*\s+\S*{victim}\b", ANSI.sub("", line)))
         assert bool(re.search(r"\x1b\[(1;)?31mHIT", line)) == was_hit, repr(line)
+
+
+def test_help_names_only_options_the_command_has(run):
+    res = run("show", "--help")
+    assert res.exit_code == 0
+    assert "--jobs" not in res.stdout and "--scheduler" in res.stdout
