@@ -9,6 +9,8 @@ import math
 import pathlib
 from dataclasses import dataclass, replace
 
+import numpy as np
+
 from deathsphere import requests
 from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.errors import ParameterError
@@ -191,6 +193,18 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     return Rider(request=rider, ground=globe.ground)
 
 
+def _plain(raw):
+    """A plan dict with numpy scalars as the Python numbers they hold (the
+    API takes a numpy number wherever it takes a number)."""
+    if isinstance(raw, dict):
+        return {k: _plain(v) for k, v in raw.items()}
+    if isinstance(raw, (list, tuple)):
+        return [_plain(v) for v in raw]
+    if isinstance(raw, np.generic):
+        return raw.item()
+    return raw
+
+
 def read_plan(plan) -> Plan:
     """A checked :class:`Plan` from a path to a TOML file (str or
     pathlib.Path) or a dict of the same tables ({"globe": {...}, "rider":
@@ -214,6 +228,7 @@ def read_plan(plan) -> Plan:
         except tomllib.TOMLDecodeError as exc:
             raise ParameterError(f"plan: {path.name} is not TOML ({exc})", "plan") from None
         base_dir = path.parent
+    plan = _plain(plan)
     if not isinstance(plan, dict):
         raise ParameterError(f"plan must be a path to a TOML file or a dict (got {type(plan).__name__})", "plan")
     _unknown("plan", plan, ("globe", "rider"))

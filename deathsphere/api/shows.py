@@ -153,6 +153,22 @@ MAX_FALLS = 10_000_000
 FALLS_CHUNK = 4096
 
 
+def _duration(value) -> float:
+    """The act's duration [s] as the API takes a number: a number, a numpy
+    scalar or text ("60"); ParameterError naming ``duration`` otherwise."""
+    from deathsphere import units
+
+    raw = value.item() if isinstance(value, np.generic) else value
+    if isinstance(raw, str):
+        try:
+            raw = units.parse_value(raw, "none", "duration")
+        except ParameterError:
+            pass
+    if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not 0 < raw < math.inf:
+        raise ParameterError(f"duration must be a number of seconds > 0 (got {value!r})", "duration")
+    return float(raw)
+
+
 def _number(name: str, value, lo: float, hi: float, what: str = "") -> float:
     """value as a float, or ParameterError naming ``name`` and the range (``what`` follows it)."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) or not (
@@ -346,8 +362,7 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         raise ParameterError(f"phase must be plan or auto (got {phase!r})", "phase")
     plan = read_plan(plan)
     if duration is not None:
-        if isinstance(duration, bool) or not isinstance(duration, (int, float)) or not 0 < duration < math.inf:
-            raise ParameterError(f"duration must be a number of seconds > 0 (got {duration!r})", "duration")
+        duration = _duration(duration)
     lanes = build_lanes(plan)
     try:
         span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)

@@ -100,3 +100,28 @@ def test_a_rider_too_wide_for_the_globe_is_refused(k):
         deathsphere.show(plan)
     plan["rider"][k]["width"] = "0.6m"
     assert deathsphere.show(plan).riders["status"][k] == "ok"
+
+
+@pytest.mark.parametrize("duration", ["60", np.int64(60), np.float64(60.0), 60])
+def test_the_api_takes_a_duration_as_it_takes_any_number(duration):
+    plan = example()
+    plan["rider"][0]["height"] = "1.45m"          # no common period: the duration is used
+    act = deathsphere.show(plan, duration=duration)
+    assert act.duration_s == 60.0 and not act.commensurate
+
+
+@pytest.mark.parametrize("bad", ["soon", "-1", np.float64(math.nan), True])
+def test_a_bad_api_duration_is_refused_naming_it(bad):
+    with pytest.raises(deathsphere.ParameterError, match="^duration must be"):
+        deathsphere.show(example(), duration=bad)
+
+
+def test_a_plan_dict_takes_numpy_numbers():
+    plan = example()
+    plan["rider"][0]["height"] = np.int64(2)
+    plan["rider"][0]["phase"] = np.float64(10.0)
+    plan["globe"]["mu"] = np.float32(0.9)
+    act = deathsphere.show(plan, duration=60)
+    assert act.riders["phi0_deg"][0] == pytest.approx(10.0)
+    assert act.plan.riders[0].theta_deg == deathsphere.show(
+        {**example(), "rider": [{**example()["rider"][0], "height": 2}]}).plan.riders[0].theta_deg
