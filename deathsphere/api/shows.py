@@ -63,6 +63,12 @@ class ShowResult:
     commensurate: bool
     phase_windows: dict = field(default_factory=dict)
 
+    @property
+    def infeasible(self) -> dict:
+        """{name: status} of the riders whose lane is not ok (the act cannot
+        be ridden as planned)."""
+        return {str(n): str(st) for n, st in zip(self.riders["name"], self.riders["status"]) if st != "ok"}
+
     def positions(self, t) -> dict:
         """Each rider's 'contact', 'head' and 'com' points (3, n) [m, the
         globe's frame] at the times t (n,) [s], by name; ParameterError for

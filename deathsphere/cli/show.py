@@ -8,9 +8,11 @@ and the key, exit status 2)."""
 from __future__ import annotations
 
 import re
+import sys
 
 import click
 from deathsphere.errors import ParameterError
+from deathsphere.exitcodes import ExitCode
 from deathsphere.cli.base import (
     OutputPath,
     choose_format,
@@ -240,12 +242,24 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
                 if k:
                     console.print()
                 console.print(rendered)
+        _finish(result)
         return
     if table is None:
         table = "falls" if falls is not None else "riders"
     emit([tables[table]], fmt_out, view=_view(VIEW_OF[table], result=result, units=shown_units), output=output)
     if output is not None:
         stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+    _finish(result)
+
+
+def _finish(result) -> None:
+    """Exit status 1, with one line on stderr, when a lane is not feasible
+    (as a command with invalid rows: the tables are still written)."""
+    if result.infeasible:
+        who = ", ".join(f"{name} ({status})" for name, status in result.infeasible.items())
+        stderr_console().print(f"deathsphere: not feasible as planned: {who}; see the riders' status",
+                               style="yellow", soft_wrap=True, markup=False)
+        sys.exit(ExitCode.INVALID_ROWS)
 
 
 def emit_view(table, name: str, result, units=None):

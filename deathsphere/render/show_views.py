@@ -149,8 +149,18 @@ def riders_view(table: Table, total_rows: int | None = None, result=None,
             notes.append(f"[dim]{escape(str(get['name']))}: least top speed {speed_cell(least, unit)} "
                          f"{_speed_words(unit)}; bottom load {format_number(get.get('load_bottom_g'), 3)} g[/dim]")
     notes += [line for line in status_legend(head) if not line.startswith(status_text("ok"))]
+    notes += _infeasible_verdict(result)
     return build_table(table, specs, units=units, title=_title("Riders", result), total_rows=total_rows,
                        notes=notes)
+
+
+def _infeasible_verdict(result) -> list[str]:
+    """The verdict line of a plan with a lane that is not ok (none else)."""
+    bad = getattr(result, "infeasible", None) or {}
+    if not bad:
+        return []
+    who = ", ".join(f"{name} ({status})" for name, status in bad.items())
+    return [f"[bold red]not feasible as planned: {escape(who)}[/bold red]"]
 
 
 def _title(what: str, result) -> str:
@@ -240,6 +250,12 @@ def _pair_notes(head: Table, result) -> list[str]:
         notes.append(f"[dim]{escape(', '.join(geometric))}: horizontal lanes of different periods pass at every "
                      "relative phase; their least clearance is the geometric one (both riders in one meridian "
                      "plane), whatever the phases[/dim]")
+    bad = getattr(result, "infeasible", None) or {}
+    marked = [f"{a} – {b}" for a, b in zip(_column(head, "rider_a"), _column(head, "rider_b"))
+              if a in bad or b in bad]
+    if marked:
+        notes.append(f"[bold red]{escape(', '.join(marked))}: a lane that is not feasible "
+                     f"({escape(', '.join(bad))}); its clearances are of the lane as planned[/bold red]")
     windows = getattr(result, "phase_windows", None) or {}
     for name, window in dict(windows).items():
         notes.append(f"[dim]{escape(str(name))}: safe phases {escape(_window_text(window))}[/dim]")

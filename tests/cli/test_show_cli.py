@@ -365,3 +365,39 @@ def test_help_names_only_options_the_command_has(run):
     res = run("show", "--help")
     assert res.exit_code == 0
     assert "--jobs" not in res.stdout and "--scheduler" in res.stdout
+
+
+#: A horizontal lane at the top of the globe (no contact) and a looper.
+AT_THE_TOP = """
+[globe]
+diameter = "16ft"
+mu = 0.9
+max_g = 8
+duration = 60
+
+[[rider]]
+name = "Ana"
+lane = "horizontal"
+height = "16ft"
+speed = "1m/s"
+
+[[rider]]
+name = "Ben"
+lane = "vertical"
+azimuth = 0
+v_top = "6.5m/s"
+"""
+
+
+def test_an_infeasible_lane_is_a_verdict_marks_its_pairs_and_exits_1(run, tmp_path):
+    plan = tmp_path / "top.toml"
+    plan.write_text(AT_THE_TOP, encoding="utf-8")
+    res = run("show", str(plan), "--format", "json")
+    assert res.exit_code == 1
+    assert [r["status"] for r in json.loads(res.stdout)] == ["no_contact", "ok"]
+    assert res.stderr.strip() == "deathsphere: not feasible as planned: Ana (no_contact); see the riders' status"
+    shown = run("show", str(plan), "--format", "table", env={"COLUMNS": "100", "NO_COLOR": "1"})
+    assert shown.exit_code == 1
+    screen = ANSI.sub("", shown.stdout)
+    assert "not feasible as planned: Ana (no_contact)" in screen
+    assert "Ana – Ben: a lane that is not feasible (Ana)" in screen
