@@ -401,3 +401,14 @@ def test_an_infeasible_lane_is_a_verdict_marks_its_pairs_and_exits_1(run, tmp_pa
     screen = ANSI.sub("", shown.stdout)
     assert "not feasible as planned: Ana (no_contact)" in screen
     assert "Ana – Ben: a lane that is not feasible (Ana)" in screen
+
+
+def test_a_fall_closer_than_the_plans_rule_is_a_conflict_not_clear(run, tmp_path):
+    plan = tmp_path / "act.toml"
+    plan.write_text(EXAMPLE_PLAN, encoding="utf-8")
+    rows = json.loads(run("show", str(plan), "--fail", "Ana@0.5443:0", "--format", "json").stdout)
+    (eve,) = [r for r in rows if r["victim"] == "Eve"]
+    assert 0 < eve["min_clearance_m"] < 0.15
+    screen = ANSI.sub("", _screen(run, ("show", str(plan), "--fail", "Ana@0.5443:0", "--table", "falls"), 100))
+    (line,) = [ln for ln in screen.splitlines() if " Eve " in ln]
+    assert "conflict" in line and "clear " not in line.replace("least clear", "")
