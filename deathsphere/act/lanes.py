@@ -225,7 +225,7 @@ def build_lanes(plan: Plan) -> list[Lane]:
     """Every rider's lane, in the plan's order: the horizontal ones in one
     physics call, the vertical ones in another (ParameterError naming the
     first rider, in the plan's order, and the key for a lane that cannot be
-    ridden at all)."""
+    ridden at all, or a rider too wide for the globe)."""
     ground = plan.globe.ground
     kinds = {"horizontal": horizontal_lanes_of, "vertical": vertical_lanes_of}
     built = {kind: iter(make([r for r in plan.riders if r.lane == kind], ground, plan.globe))
@@ -234,4 +234,17 @@ def build_lanes(plan: Plan) -> list[Lane]:
     for lane in lanes:
         if isinstance(lane, ParameterError):
             raise lane
+        _check_width(lane, float(ground.radius))
     return lanes
+
+
+def _check_width(lane: Lane, r: float) -> None:
+    """ParameterError naming ``width`` when the rider does not fit: his
+    envelope's ends across the lane at the head (the handlebar or the
+    shoulders, width/2 either side) would lie outside the globe."""
+    head = lane.points["head"]
+    from_centre = math.hypot(*head) if lane.kind == "horizontal" else abs(head)
+    reach = math.hypot(from_centre, 0.5 * lane.width_m)
+    if reach > r:
+        raise ParameterError(f"rider {lane.name!r}: width: {lane.width_m:g} m does not fit in this globe (at his "
+                             f"head its ends would be {reach - r:.3g} m outside the wall)", "width")

@@ -114,8 +114,8 @@ def _clearance_at(a, b, clock_a=1.0):
 def least_clearances(lanes, pairs, duration: float) -> list[tuple[float, float]]:
     """[(least clearance [m], when [s])] of the pairs (i, j) of ``lanes``
     searched over the act's times [0, duration]: every lane sampled once on
-    one grid fine enough for the fastest pair, all pairs' distances at once,
-    then each pair refined (:func:`refine`)."""
+    one grid fine enough for the fastest pair, chunk by chunk, all pairs'
+    distances at once, then each pair refined (:func:`refine`)."""
     rigid = [p for p in pairs if is_rigid(lanes[p[0]], lanes[p[1]])]
     if rigid:
         moving = [p for p in pairs if p not in rigid]
@@ -125,10 +125,36 @@ def least_clearances(lanes, pairs, duration: float) -> list[tuple[float, float]]
         return []
     bound = [lane.speed_bound() for lane in lanes]
     fastest = max(bound[i] + bound[j] for i, j in pairs)
-    x = np.linspace(0.0, float(duration), _samples(float(duration), fastest) + 1)
+    n = _samples(float(duration), fastest)
+    best = [(math.inf, math.nan)] * len(pairs)
+    for start in range(0, n, CHUNK_SAMPLES):
+        x = _grid_part(float(duration), n, start, min(start + CHUNK_SAMPLES, n))
+        found = _chunk_clearances(lanes, pairs, x, bound)
+        # each chunk's least is found to the tolerance: the act's is the least of theirs (the earliest of equal ones)
+        best = [new if new[0] < old[0] - TIE_M else old for old, new in zip(best, found)]
+    return best
+
+
+#: Act samples held at once by :func:`least_clearances` (memory stays
+#: bounded however long the act: the act is searched chunk by chunk).
+CHUNK_SAMPLES = 1 << 16
+
+
+def _grid_part(duration: float, n: int, start: int, stop: int) -> np.ndarray:
+    """Samples start..stop of np.linspace(0, duration, n + 1), bit for bit,
+    without building the whole grid."""
+    x = np.arange(start, stop + 1, dtype=float) * (duration / n)
+    if stop == n:
+        x[-1] = duration
+    return x
+
+
+def _chunk_clearances(lanes, pairs, x, bound) -> list[tuple[float, float]]:
+    """[(least clearance, when)] of the pairs over the evenly spaced times x:
+    every lane sampled once, the pairs' distances in batches, each refined."""
     ends = [lane.ends(x) for lane in lanes]
     out = []
-    per_batch = max(1, BATCH_SAMPLES // x.size)       # memory stays bounded however long the act
+    per_batch = max(1, BATCH_SAMPLES // x.size)
     for start in range(0, len(pairs), per_batch):
         batch = pairs[start:start + per_batch]
         first, second = np.array([i for i, _ in batch]), np.array([j for _, j in batch])

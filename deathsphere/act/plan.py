@@ -9,6 +9,8 @@ import math
 import pathlib
 from dataclasses import dataclass, replace
 
+import numpy as np
+
 from deathsphere import requests
 from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.errors import ParameterError
@@ -26,6 +28,8 @@ GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "durati
 #: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
 RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "direction", "phase", "azimuth", "v_top",
               "width")
+#: Characters a rider's name may not hold (the tables' and --fail's separators).
+NOT_IN_NAMES = ",@\n\r"
 #: The crew's rule when the plan gives none [m] (the spacing quoted for an
 #: eight-rider act is 10-15 cm).
 DEFAULT_MIN_CLEARANCE = 0.15
@@ -170,8 +174,10 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     if not isinstance(raw, dict):
         _fail(f"rider {i + 1}", None, f"must be a table (got {raw!r})")
     name = raw.get("name")
-    if not isinstance(name, str) or not name.strip() or any(c in name for c in ",\n\r"):
-        _fail(f"rider {i + 1}", "name", f"must be a non-empty text without a comma or line break (got {name!r})")
+    # the names a plan takes are those --fail NAME@T can name: no '@', no space at either end
+    if not isinstance(name, str) or not name.strip() or name != name.strip() or any(c in name for c in NOT_IN_NAMES):
+        _fail(f"rider {i + 1}", "name", "must be a non-empty text without a comma, '@', line break or space at "
+                                        f"either end (got {name!r})")
     keys = Keys(f"rider {name!r}")
     _unknown(keys.where, raw, RIDER_KEYS)
     if raw.get("lane") not in decode.LANES:     # a plan names its lane (no default)
@@ -185,6 +191,18 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
         keys.fail("speed", "a horizontal lane needs speed (of the centre of mass)")
     rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground)
     return Rider(request=rider, ground=globe.ground)
+
+
+def _plain(raw):
+    """A plan dict with numpy scalars as the Python numbers they hold (the
+    API takes a numpy number wherever it takes a number)."""
+    if isinstance(raw, dict):
+        return {k: _plain(v) for k, v in raw.items()}
+    if isinstance(raw, (list, tuple)):
+        return [_plain(v) for v in raw]
+    if isinstance(raw, np.generic):
+        return raw.item()
+    return raw
 
 
 def read_plan(plan) -> Plan:
@@ -210,6 +228,7 @@ def read_plan(plan) -> Plan:
         except tomllib.TOMLDecodeError as exc:
             raise ParameterError(f"plan: {path.name} is not TOML ({exc})", "plan") from None
         base_dir = path.parent
+    plan = _plain(plan)
     if not isinstance(plan, dict):
         raise ParameterError(f"plan must be a path to a TOML file or a dict (got {type(plan).__name__})", "plan")
     _unknown("plan", plan, ("globe", "rider"))

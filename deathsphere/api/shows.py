@@ -63,10 +63,23 @@ class ShowResult:
     commensurate: bool
     phase_windows: dict = field(default_factory=dict)
 
+    @property
+    def infeasible(self) -> dict:
+        """{name: status} of the riders whose lane is not ok (the act cannot
+        be ridden as planned)."""
+        return {str(n): str(st) for n, st in zip(self.riders["name"], self.riders["status"]) if st != "ok"}
+
     def positions(self, t) -> dict:
         """Each rider's 'contact', 'head' and 'com' points (3, n) [m, the
-        globe's frame] at the times t (n,) [s], by name."""
-        t = np.asarray(t, dtype=float).reshape(-1)
+        globe's frame] at the times t (n,) [s], by name; ParameterError for
+        a time that is not a finite number."""
+        try:
+            t = np.asarray(t, dtype=float).reshape(-1)
+        except (TypeError, ValueError):
+            raise ParameterError(f"t must be times in seconds (got {t!r})", "t") from None
+        if not np.isfinite(t).all():
+            bad = t[~np.isfinite(t)][0]
+            raise ParameterError(f"t must be finite times in seconds (got {float(bad)!r})", "t")
         return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
                 for lane in self.lanes}
 
@@ -84,7 +97,8 @@ class ShowResult:
         names = [lane.name for lane in self.lanes]
         if rider not in names:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
-        t = _number("t", t, 0.0, math.inf)
+        # a time beyond the act is not in it (and an enormous one rounds the flight away)
+        t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
         k = names.index(rider)
         res = simulate_falls(self.lanes, self.plan.globe, [k], [t], [speed_fraction])
@@ -145,10 +159,27 @@ MAX_FALLS = 10_000_000
 FALLS_CHUNK = 4096
 
 
-def _number(name: str, value, lo: float, hi: float) -> float:
+def _duration(value) -> float:
+    """The act's duration [s] as the API takes a number: a number, a numpy
+    scalar or text ("60"); ParameterError naming ``duration`` otherwise."""
+    from deathsphere import units
+
+    raw = value.item() if isinstance(value, np.generic) else value
+    if isinstance(raw, str):
+        try:
+            raw = units.parse_value(raw, "none", "duration")
+        except ParameterError:
+            pass
+    if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not 0 < raw < math.inf:
+        raise ParameterError(f"duration must be a number of seconds > 0 (got {value!r})", "duration")
+    return float(raw)
+
+
+def _number(name: str, value, lo: float, hi: float, what: str = "") -> float:
+    """value as a float, or ParameterError naming ``name`` and the range (``what`` follows it)."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) or not (
             lo <= value <= hi):
-        raise ParameterError(f"{name} must be a number in [{lo:g}, {hi:g}] (got {value!r})", name)
+        raise ParameterError(f"{name} must be a number in [{lo:g}, {hi:g}]{what} (got {value!r})", name)
     return float(value)
 
 
@@ -337,15 +368,12 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         raise ParameterError(f"phase must be plan or auto (got {phase!r})", "phase")
     plan = read_plan(plan)
     if duration is not None:
-        if isinstance(duration, bool) or not isinstance(duration, (int, float)) or not 0 < duration < math.inf:
-            raise ParameterError(f"duration must be a number of seconds > 0 (got {duration!r})", "duration")
+        duration = _duration(duration)
     lanes = build_lanes(plan)
     try:
         span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
     except ValueError as exc:
         raise ParameterError(str(exc), "duration") from None
-    if duration is not None:
-        span = float(duration)
     windows = {}
     if phase == "auto":
         phases, windows = auto_phases(lanes, span, plan.globe.min_clearance)

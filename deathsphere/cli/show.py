@@ -8,9 +8,11 @@ and the key, exit status 2)."""
 from __future__ import annotations
 
 import re
+import sys
 
 import click
-
+from deathsphere.errors import ParameterError
+from deathsphere.exitcodes import ExitCode
 from deathsphere.cli.base import (
     OutputPath,
     choose_format,
@@ -21,7 +23,7 @@ from deathsphere.cli.base import (
     stderr_console,
     stdout_console,
 )
-from deathsphere.cli.options import display_units, output_options, scheduler_option, single, units_option
+from deathsphere.cli.options import display_units, output_options, single, units_option
 
 #: The tables the command writes (``--table``): the riders' lanes, every
 #: pair over the act, the falls (of --fail or --monte-carlo) and the
@@ -59,7 +61,7 @@ def _fail_option(ctx, param, values):
     out = []
     for value in values:
         try:
-            out.append(parse_fail(value))
+            out.append((*parse_fail(value), value))
         except ValueError as exc:
             raise click.BadParameter(str(exc), ctx=ctx, param=param) from None
     return tuple(out)
@@ -90,10 +92,12 @@ def _preflight_view(output: str) -> None:
         fail(one_line(str(exc)))
 
 
-def _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output):
-    """The options that do not go together, refused before the plan is read."""
+def _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output, others=()):
+    """The options that do not go together, refused before the plan is read
+    (``others``: whether each remaining option was given)."""
     if example:
-        if plan is not None or table or fails or monte_carlo is not None or output is not None:
+        if plan is not None or table or fails or monte_carlo is not None or output is not None or seed is not None \
+                or scheduler is not None or any(others):
             raise click.UsageError("--example prints the example plan and takes nothing else")
         return
     if plan is None:
@@ -132,7 +136,12 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
     if monte_carlo is not None:
         return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
                             **({"scheduler": scheduler} if scheduler is not None else {}))
-    tables = [result.fall(name, t, **({"speed_fraction": f} if f is not None else {})) for name, t, f in fails]
+    tables = []
+    for name, t, f, typed in fails:
+        try:
+            tables.append(result.fall(name, t, **({"speed_fraction": f} if f is not None else {})))
+        except ParameterError as exc:     # named as typed: the API's 't' is the T of --fail NAME@T
+            raise click.BadParameter(f"{typed!r}: {exc}", param_hint="'--fail'") from None
     return Table.concat(tables), None
 
 
@@ -145,8 +154,8 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
              "act), falls (of --fail or --monte-carlo), summary (the Monte Carlo's) [default: on a terminal "
              "riders and pairs (and the falls); piped, falls with --fail or --monte-carlo, else riders].")
 @single("--duration", type=click.FloatRange(0, None, min_open=True), default=None, metavar="SECONDS",
-        help="The act's length [s] when the riders' periods are not commensurate [default: the plan's "
-             "duration].")
+        help="The act's length [s] when the riders' periods are not commensurate; when they are, the act "
+             "is their common period and a duration is not used [default: the plan's duration].")
 @single("--phase", type=click.Choice(("plan", "auto"), case_sensitive=False), default=None,
         help="auto: each vertical rider's phase, in plan order, that maximises the least clearance (the "
              "safe window is reported) [default: plan, the phases as written].")
@@ -158,7 +167,12 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
         help="N falls of random riders at random times with random speed fractions in [0, 1): the outcomes "
              "and a summary (who hits whom, the worst landing speeds).")
 @single("--seed", type=int, default=None, help="Seed of --monte-carlo's draws (the same seed, the same rows).")
-@scheduler_option()
+# the show's own: it has no --jobs to be kept apart from
+@single("--scheduler", default=None, metavar="ADDRESS",
+        help="With --monte-carlo: evaluate the falls on the dask.distributed cluster whose scheduler is at "
+             "ADDRESS (tcp://host:8786; the distributed extra); the rows are those of a local run.  A scheduler "
+             "that does not answer within 5 s is a usage error (importing distributed adds a few seconds before "
+             "that).")
 @single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
         help="Draw the act in 3-D: .html (interactive, self-contained), .gif or .mp4 (plot extra; .mp4 "
              "ffmpeg), every rider's envelope moving with the clock, the least-clearance pair marked, with "
@@ -189,7 +203,8 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
       deathsphere show act.toml --fail Ben@1.2:0.3 --output act.html
     """
     table = table.lower() if table else None
-    _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output)
+    _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, output,
+                   [v is not None for v in (duration, phase, fmt, units)])
     if example:
         from deathsphere.api.shows import EXAMPLE_PLAN
 
@@ -227,12 +242,24 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
                 if k:
                     console.print()
                 console.print(rendered)
+        _finish(result)
         return
     if table is None:
         table = "falls" if falls is not None else "riders"
     emit([tables[table]], fmt_out, view=_view(VIEW_OF[table], result=result, units=shown_units), output=output)
     if output is not None:
         stderr_console().print(f"deathsphere: wrote {output}", soft_wrap=True)
+    _finish(result)
+
+
+def _finish(result) -> None:
+    """Exit status 1, with one line on stderr, when a lane is not feasible
+    (as a command with invalid rows: the tables are still written)."""
+    if result.infeasible:
+        who = ", ".join(f"{name} ({status})" for name, status in result.infeasible.items())
+        stderr_console().print(f"deathsphere: not feasible as planned: {who}; see the riders' status",
+                               style="yellow", soft_wrap=True, markup=False)
+        sys.exit(ExitCode.INVALID_ROWS)
 
 
 def emit_view(table, name: str, result, units=None):

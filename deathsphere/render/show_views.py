@@ -149,8 +149,18 @@ def riders_view(table: Table, total_rows: int | None = None, result=None,
             notes.append(f"[dim]{escape(str(get['name']))}: least top speed {speed_cell(least, unit)} "
                          f"{_speed_words(unit)}; bottom load {format_number(get.get('load_bottom_g'), 3)} g[/dim]")
     notes += [line for line in status_legend(head) if not line.startswith(status_text("ok"))]
+    notes += _infeasible_verdict(result)
     return build_table(table, specs, units=units, title=_title("Riders", result), total_rows=total_rows,
                        notes=notes)
+
+
+def _infeasible_verdict(result) -> list[str]:
+    """The verdict line of a plan with a lane that is not ok (none else)."""
+    bad = getattr(result, "infeasible", None) or {}
+    if not bad:
+        return []
+    who = ", ".join(f"{name} ({status})" for name, status in bad.items())
+    return [f"[bold red]not feasible as planned: {escape(who)}[/bold red]"]
 
 
 def _title(what: str, result) -> str:
@@ -240,6 +250,12 @@ def _pair_notes(head: Table, result) -> list[str]:
         notes.append(f"[dim]{escape(', '.join(geometric))}: horizontal lanes of different periods pass at every "
                      "relative phase; their least clearance is the geometric one (both riders in one meridian "
                      "plane), whatever the phases[/dim]")
+    bad = getattr(result, "infeasible", None) or {}
+    marked = [f"{a} – {b}" for a, b in zip(_column(head, "rider_a"), _column(head, "rider_b"))
+              if a in bad or b in bad]
+    if marked:
+        notes.append(f"[bold red]{escape(', '.join(marked))}: a lane that is not feasible "
+                     f"({escape(', '.join(bad))}); its clearances are of the lane as planned[/bold red]")
     windows = getattr(result, "phase_windows", None) or {}
     for name, window in dict(windows).items():
         notes.append(f"[dim]{escape(str(name))}: safe phases {escape(_window_text(window))}[/dim]")
@@ -273,12 +289,23 @@ def _fall_line(get: dict, unit: DisplayUnit | None = KM_H) -> str:
             f"{speed_cell(get['impact_speed_m_s'], unit)} {_speed_words(unit)}")
 
 
-def _hit_cell(value, clearance=None, crosses=None) -> str:
-    """HIT in red, clear in green; a swing that crosses the rider's lane
-    in yellow; — when there was no flight to check."""
+def _hit_cell(value, clearance=None, crosses=None, rule: float = 0.0) -> str:
+    """HIT in red, conflict (closer than the plan's ``rule`` [m]) in
+    yellow, clear in green; a swing that crosses the rider's lane in
+    yellow; — when there was no flight to check."""
     if clearance is not None and is_undefined(clearance):
         return "[yellow]crosses his lane[/yellow]" if _true(crosses) else "—"
-    return "[bold red]HIT[/bold red]" if _true(value) else "[green]clear[/green]"
+    if _true(value):
+        return "[bold red]HIT[/bold red]"
+    if clearance is not None and float(clearance) < rule:
+        return "[yellow]conflict[/yellow]"
+    return "[green]clear[/green]"
+
+
+def _min_clearance(result) -> float:
+    """The plan's min_clearance [m] (0 without a plan: only a hit is not clear)."""
+    globe = getattr(getattr(result, "plan", None), "globe", None)
+    return float(getattr(globe, "min_clearance", 0.0) or 0.0)
 
 
 def _true(value) -> bool:
@@ -298,15 +325,18 @@ def _clearance(decimals: int, header: str) -> ColumnSpec:
                       value=lambda get: get.get("min_clearance_m"))
 
 
-#: A few falls: per other rider the least clearance (a hit in red).
-FALL_VIEW = (
-    _text("rider", "rider"),
-    _text("victim", "other rider", "(alone)"),
-    ColumnSpec("hit", "", justify="left", format=str,
-               value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"), get.get("crosses_lane"))),
-    _clearance(3, "least\nclear"),
-    ColumnSpec("t_min_s", "at t", "s", value=lambda get: get.get("t_min_s")),
-)
+def _fall_view(rule: float) -> tuple:
+    """A few falls: per other rider the least clearance (a hit in red, a
+    conflict under the plan's ``rule`` [m] in yellow)."""
+    return (
+        _text("rider", "rider"),
+        _text("victim", "other rider", "(alone)"),
+        ColumnSpec("hit", "", justify="left", format=str,
+                   value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"), get.get("crosses_lane"),
+                                               rule)),
+        _clearance(3, "least\nclear"),
+        ColumnSpec("t_min_s", "at t", "s", value=lambda get: get.get("t_min_s")),
+    )
 
 
 def falls_view(table: Table, total_rows: int | None = None, result=None,
@@ -319,15 +349,15 @@ def falls_view(table: Table, total_rows: int | None = None, result=None,
     for i, key in enumerate(zip(_column(head, "rider"), _column(head, "t_fail_s"), _column(head, "speed_fraction"))):
         firsts.setdefault(key, i)
     if len(firsts) > FALLS_AS_BLOCKS:
-        return _falls_list(table, total_rows, units)
+        return _falls_list(table, total_rows, units, _min_clearance(result))
     unit = _speed_unit(units)
     lines = [_fall_line(row_record(head, i), unit) for i in firsts.values()]
     notes = ["[dim]least clear: between the falling rider (a ball of half his width about his centre of "
              "mass) and the other's envelope, during the fall; below zero he falls into him[/dim]"]
-    return build_table(table, FALL_VIEW, units=units, title="\n".join(lines), total_rows=total_rows, notes=notes)
+    return build_table(table, _fall_view(_min_clearance(result)), units=units, title="\n".join(lines), total_rows=total_rows, notes=notes)
 
 
-def _falls_list(table: Table, total_rows, units: DisplayUnits) -> FitTable:
+def _falls_list(table: Table, total_rows, units: DisplayUnits, rule: float = 0.0) -> FitTable:
     specs = (
         _text("rider", "rider"),
         ColumnSpec("t_fail_s", "fails\nat t s", drop=2, value=lambda get: get.get("t_fail_s")),
@@ -336,7 +366,7 @@ def _falls_list(table: Table, total_rows, units: DisplayUnits) -> FitTable:
                    value=lambda get: get.get("outcome")),
         _text("victim", "other"),
         ColumnSpec("hit", "", justify="left", format=str,
-                   value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"))),
+                   value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"), rule=rule)),
         _clearance(3, "least\nclear m"),
         _speed_spec("impact_speed_m_s", "impact", units, value=lambda get: get.get("impact_speed_m_s")),
         ColumnSpec("fall_time_s", "fall", "s", digits=3, drop=1, value=lambda get: get.get("fall_time_s")),

@@ -234,6 +234,11 @@ def test_html_view_is_written(run, plan_file, tmp_path):
 @pytest.mark.parametrize("args, words", [
     ((), ["--example"]),
     (("PLAN", "--example"), ["--example"]),
+    (("--example", "--format", "json"), ["--example"]),
+    (("--example", "--duration", "3"), ["--example"]),
+    (("--example", "--phase", "auto"), ["--example"]),
+    (("--example", "--units", "si"), ["--example"]),
+    (("--example", "--seed", "1"), ["--example"]),
     (("PLAN", "--fail", "Ana@1", "--monte-carlo", "10"), ["--fail", "--monte-carlo"]),
     (("PLAN", "--fail", "Ana"), ["NAME@T[:FRACTION]"]),
     (("PLAN", "--fail", "Ana@soon"), ["number"]),
@@ -285,6 +290,11 @@ def test_a_missing_plan_file_is_refused(run, tmp_path):
 
 def test_a_fall_of_an_unknown_rider_is_refused(run, plan_file):
     _refused(run("show", plan_file, "--fail", "Zed@1"), "Zed")
+
+
+@pytest.mark.parametrize("value", ["Ana@inf", "Ana@1e300:0", "Ana@nan", "Ana@9999"])
+def test_a_fall_outside_the_act_is_refused_naming_the_value_typed(run, plan_file, value):
+    _refused(run("show", plan_file, "--fail", value), f"'--fail': '{value}'")
 
 
 @pytest.mark.parametrize("text, expected", [
@@ -349,3 +359,56 @@ def test_a_hit_is_red_on_the_line_of_the_rider_fallen_into(run, plan_file):
     for victim, was_hit in hit.items():
         line = next(line for line in text.splitlines() if re.search(rf"Ana\S*\s+\S*{victim}\b", ANSI.sub("", line)))
         assert bool(re.search(r"\x1b\[(1;)?31mHIT", line)) == was_hit, repr(line)
+
+
+def test_help_names_only_options_the_command_has(run):
+    res = run("show", "--help")
+    assert res.exit_code == 0
+    assert "--jobs" not in res.stdout and "--scheduler" in res.stdout
+
+
+#: A horizontal lane at the top of the globe (no contact) and a looper.
+AT_THE_TOP = """
+[globe]
+diameter = "16ft"
+mu = 0.9
+max_g = 8
+duration = 60
+
+[[rider]]
+name = "Ana"
+lane = "horizontal"
+height = "16ft"
+speed = "1m/s"
+
+[[rider]]
+name = "Ben"
+lane = "vertical"
+azimuth = 0
+v_top = "6.5m/s"
+"""
+
+
+def test_an_infeasible_lane_is_a_verdict_marks_its_pairs_and_exits_1(run, tmp_path):
+    plan = tmp_path / "top.toml"
+    plan.write_text(AT_THE_TOP, encoding="utf-8")
+    res = run("show", str(plan), "--format", "json")
+    assert res.exit_code == 1
+    assert [r["status"] for r in json.loads(res.stdout)] == ["no_contact", "ok"]
+    assert res.stderr.strip() == "deathsphere: not feasible as planned: Ana (no_contact); see the riders' status"
+    shown = run("show", str(plan), "--format", "table", env={"COLUMNS": "100", "NO_COLOR": "1"})
+    assert shown.exit_code == 1
+    screen = ANSI.sub("", shown.stdout)
+    assert "not feasible as planned: Ana (no_contact)" in screen
+    assert "Ana – Ben: a lane that is not feasible (Ana)" in screen
+
+
+def test_a_fall_closer_than_the_plans_rule_is_a_conflict_not_clear(run, tmp_path):
+    plan = tmp_path / "act.toml"
+    plan.write_text(EXAMPLE_PLAN, encoding="utf-8")
+    rows = json.loads(run("show", str(plan), "--fail", "Ana@0.5443:0", "--format", "json").stdout)
+    (eve,) = [r for r in rows if r["victim"] == "Eve"]
+    assert 0 < eve["min_clearance_m"] < 0.15
+    screen = ANSI.sub("", _screen(run, ("show", str(plan), "--fail", "Ana@0.5443:0", "--table", "falls"), 100))
+    (line,) = [ln for ln in screen.splitlines() if " Eve " in ln]
+    assert "conflict" in line and "clear " not in line.replace("least clear", "")
