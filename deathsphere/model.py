@@ -164,7 +164,7 @@ def validate_scalars(body, side, a, r, k, g, mu=math.inf) -> str:
 
 def _combination_problem(side, a, r) -> str:
     if too_big_inside(a, r, side == "outside"):
-        return f"r (sphere radius) must be > a = {a:g} m for a body inside (got {r:g})"
+        return f"r (sphere radius) must be > a = {a:g} m for a body inside (got {params.shown_number(float(r))})"
     return ""
 
 
@@ -272,7 +272,7 @@ def validate_requests(req: dict) -> np.ndarray:
         domain(name, ~np.isnan(v))
     with np.errstate(invalid="ignore"):
         checks.append((is_wheel & (omega < 0),
-                       lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {omega[i]:g})"))
+                       lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {params.shown_number(float(omega[i]))})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
     checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))

@@ -291,3 +291,13 @@ def test_simulate_echoes_its_tilt_as_given():
     sim = prepare_simulation(*simulation_request(dict(theta=60, alpha=10.123456789, periods=0.01, points_per_period=4)))
     list(sim.chunks())
     assert sim.summary()["alpha_deg"][0] == 10.123456789
+
+
+def test_a_value_just_past_a_bound_is_echoed_as_given(run):
+    """A height a hair above the globe's diameter says what was typed, not a
+    rounded 6 that looks allowed."""
+    out = run("ride", "--speed", "8", "-r", "3", "--height", "6.0000001", "--format", "csv")
+    assert out.exit_code == 2 and "6.0000001" in out.stderr
+    out = run("ride", "--machine", "stunt125-steer", "--steer", "free", "-r", "3", "--height", "6.0000001",
+              "--speed", "8", "--format", "csv")
+    assert out.exit_code == 2 and "6.0000001" in out.stderr

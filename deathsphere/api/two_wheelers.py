@@ -21,7 +21,7 @@ import numpy as np
 from deathsphere.api.arguments import (INF, G, R, checked_array, checked_axis, checked_flag, checked_statuses,
                                        sphere_radius)
 from deathsphere.api.machines import PRESETS
-from deathsphere.params import ParameterError
+from deathsphere.params import ParameterError, shown_number
 from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
@@ -233,7 +233,7 @@ def _lanes(theta, height, r, limit: int = MAX_TURN_REQUESTS) -> tuple[np.ndarray
     if np.any(given > 2 * r):
         bad = float(given[np.argmax(given > 2 * r)])
         raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
-                             f"(got {bad:g})", "height")
+                             f"(got {shown_number(bad)})", "height")
     return np.arccos(np.clip(given / r - 1.0, -1.0, 1.0)), given, False
 
 
@@ -817,7 +817,7 @@ def _lane(theta, height, r) -> tuple[float, float]:
     h = checked_scalar("height", height)
     if h > 2 * r:
         raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
-                             f"(got {h:g})", "height")
+                             f"(got {shown_number(h)})", "height")
     return math.degrees(math.acos(min(max(h / r - 1.0, -1.0), 1.0))), h
 
 

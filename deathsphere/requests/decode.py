@@ -14,6 +14,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from deathsphere.params import shown_number
 from deathsphere.physics.ground import Sphere
 from deathsphere.requests.keys import Keys
 from deathsphere.requests.records import Height, Horizontal, RiderRequest, Run, Speed, Theta, Tilt, Vertical
@@ -63,7 +64,7 @@ def _within(height, ground: Sphere, keys: Keys, key: str):
         i = np.unravel_index(int(np.argmax(out)), out.shape) if out.ndim else ()
         t = top if top.ndim == 0 else np.broadcast_to(top, out.shape)[i]
         keys.fail(key, f"height (contact height) is outside the globe: it must be at most the globe's diameter "
-                       f"{float(t):g} m (got {float(h[i]):g})")
+                       f"{float(t):g} m (got {shown_number(float(h[i]))})")
     return height
 
 
