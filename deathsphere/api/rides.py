@@ -538,19 +538,6 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
     return Table(cols)
 
 
-def typed_speed_unit(values) -> tuple[str, float] | None:
-    """The unit the first of the speeds ``values`` (texts such as
-    ``"20:40:5km/h"``) with one was typed in, and how many of it make one
-    m/s, for a view to show the speeds as typed; None when none has a unit."""
-    from deathsphere.units import factor, split_unit
-
-    for text in values:
-        unit = split_unit(str(text))[1] if isinstance(text, str) else None
-        if unit:
-            return unit, 1.0 / factor(unit, "speed", "v_top")
-    return None
-
-
 #: The columns of ``deathsphere ride --vertical``.
 LOOP_COLUMNS = ("input_row", "machine", "theta_deg", "r_m", "g_m_s2", "v_top_m_s", "status", "reason",
                 "v_top_min_m_s", "v_bottom_m_s", "omega_top_rad_s", "omega_bottom_rad_s", "com_loop_radius_m",

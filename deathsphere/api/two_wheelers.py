@@ -52,11 +52,6 @@ MAX_STRAIGHT_SPEEDS = 500_000
 #: 4 x 4 matrices per speed stay small, the table is the only large array.
 STRAIGHT_CHUNK = 1 << 14
 
-def _eig_columns(k: int) -> tuple[str, ...]:
-    return tuple(f"eig_{i}_{part}" for i in range(1, k + 1) for part in ("re", "im"))
-
-
-
 
 def machines_table():
     """``deathsphere machines``: the presets, one row each: the

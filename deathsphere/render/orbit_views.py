@@ -291,12 +291,6 @@ def _split_name(name: str) -> tuple[str, str]:
     return _words(name), ""
 
 
-def column_header(name: str) -> str:
-    """``v_min_m_s`` -> ``v min`` over ``m/s``: the unit stays in the header."""
-    words, unit = _split_name(name)
-    return f"{words}\n{unit}" if unit else words
-
-
 def quantity_kind(name: str) -> str | None:
     """The kind of quantity a column holds, read off its name's unit."""
     return next((kind for suffix, kind in SUFFIX_KINDS if name.endswith(suffix) and len(name) > len(suffix)), None)

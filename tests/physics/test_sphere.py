@@ -192,12 +192,20 @@ def test_statuses_and_outputs():
 
 
 def test_singular_inputs_give_statuses_not_warnings():
+    """No warning of any kind on the singular inputs (asserted here, not only
+    through the suite's RuntimeWarning filter), and a status on every row."""
+    import warnings
+
     theta = np.array([0.0, np.pi / 2, np.pi, 1e-300, np.pi - 1e-15, np.radians(90.0)])
-    for outside in (False, True):
-        for k in (0.0, 0.4):
-            for a in (0.3, 3.0, 5.0):
-                for w3 in (0.0, -1e-300, 50.0, 1e8):
-                    S.sphere_orbit(theta, w3, a, R, k, G, outside, mu=0.0)
-                    S.sphere_orbit_from_rate(theta, w3, a, R, k, G, outside)
-                    S.contact_spin_window(theta, a, R, k, G, outside)
-                    S.omega3_min_contact(theta, a, R, k, G, outside)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for outside in (False, True):
+            for k in (0.0, 0.4):
+                for a in (0.3, 3.0, 5.0):
+                    for w3 in (0.0, -1e-300, 50.0, 1e8):
+                        out = S.sphere_orbit(theta, w3, a, R, k, G, outside, mu=0.0)
+                        assert np.shape(out["status"])[0] == theta.size      # a row per theta (and branch)
+                        S.sphere_orbit_from_rate(theta, w3, a, R, k, G, outside)
+                        S.contact_spin_window(theta, a, R, k, G, outside)
+                        S.omega3_min_contact(theta, a, R, k, G, outside)
+    assert [str(w.message) for w in caught] == []
