@@ -10,7 +10,6 @@ import numpy as np
 
 from deathsphere import params
 from deathsphere.constants import (
-    BODIES,
     SIDES,
 )
 from deathsphere.grid import (
@@ -24,6 +23,7 @@ from deathsphere.model import (
     Setup,
 )
 from deathsphere.params import ParameterError
+from deathsphere.requests.decode import decode_paper_body
 from deathsphere.physics.status import STATUS_LABELS
 from deathsphere.table import Table
 
@@ -158,7 +158,7 @@ def broadcast_flat(values: dict[str, np.ndarray]) -> tuple[tuple[int, ...], dict
 
 def checked_setup(body, side, a, r, k, g, mu) -> Setup:
     """A :class:`Setup` from one value each (the command's scalar options)."""
-    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     numbers = {name: checked_scalar(name, v) for name, v in (("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu))
                if v is not None}
     try:

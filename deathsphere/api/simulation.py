@@ -24,6 +24,7 @@ from deathsphere.api.arguments import (
 )
 from deathsphere.model import Setup
 from deathsphere.params import ParameterError
+from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
 from deathsphere.requests.decode import decode_run
 from deathsphere.requests.keys import Keys
 from deathsphere.requests.records import (Horizontal, PaperBody, Rate, RiderRequest, Run, Solver, Speed, Spin,
@@ -204,7 +205,7 @@ def _run_options(given: Mapping) -> tuple[Solver, float, float, SimulationOption
 def _paper_rider(given: Mapping, run: Run) -> RiderRequest:
     """A wheel or a sphere of the paper on the lane its keywords describe
     (the command line's rules, in words naming the keywords)."""
-    setup = checked_setup("wheel" if given["body"] is None else given["body"], given["side"],
+    setup = checked_setup(WHEEL if given["body"] is None else given["body"], given["side"],
                           A if given["a"] is None else given["a"], run.r, given["k"], run.g, run.mu)
     theta = checked_scalar("theta", given["theta"])
     alpha, omega3, omega, v_top, speed = (None if given[name] is None else checked_scalar(name, given[name])
@@ -212,22 +213,23 @@ def _paper_rider(given: Mapping, run: Run) -> RiderRequest:
     vertical, branch = checked_flag("vertical", given["vertical"]), given["branch"]
     # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved,
     # the root ``branch``), found when the run is prepared
-    by_value = setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None)
+    wheel = isinstance(setup.body, Wheel)
+    by_value = wheel and not vertical and alpha is None and (speed is not None or omega is not None)
     if not by_value and (isinstance(branch, bool) or branch not in (0, 1)):
         raise ParameterError(f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
     if not by_value and speed is not None:
         raise ParameterError("speed is an input for a wheel's horizontal orbit", "speed")
-    if setup.body == "particle":
+    if not setup.body.rolls:
         raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)")
     if vertical:
-        if setup.body != "wheel" or alpha is not None or v_top is None:
+        if not wheel or alpha is not None or v_top is None:
             raise ParameterError("vertical=True simulates a wheel: give theta and v_top (no alpha)")
     elif v_top is not None:
         raise ParameterError("v_top is for vertical orbits (vertical=True)")
-    elif setup.body == "wheel" and (omega3 is not None or (speed is not None and omega is not None) if by_value
+    elif wheel and (omega3 is not None or (speed is not None and omega is not None) if by_value
                                     else alpha is None or omega3 is not None or omega is not None):
         raise ParameterError("a wheel's steady orbit needs alpha (deg) or its speed or rate (no omega3)")
-    elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
+    elif isinstance(setup.body, Ball) and (alpha is not None or (omega3 is None) == (omega is None)):
         raise ParameterError("a sphere's steady orbit needs exactly one of omega3 and omega (no alpha)")
     if setup.k == 0:
         raise ParameterError("simulate needs k > 0: at k = 0 the equations of motion are singular")
@@ -316,7 +318,7 @@ def _paper_starts(rider: RiderRequest, run: Run):
 
     body, lane, kick = rider.body, rider.lane, 0.0 if rider.kick is None else rider.kick
     setup = Setup(body=body.kind, side=body.side, a=body.a, r=run.r, k=body.k, g=run.g, mu=run.mu)
-    if lane.kind == "vertical":
+    if isinstance(lane, Vertical):
         starts_of = partial(simulation.vertical_starts, setup, lane.theta, lane.v_top, perturb_deg=kick)
         return _started(starts_of, None)
     theta, by = lane.at.theta, lane.by
@@ -324,7 +326,7 @@ def _paper_starts(rider: RiderRequest, run: Run):
     omega = by.omega if isinstance(by, Rate) else None
     omega3 = by.omega3 if isinstance(by, Spin) else None
     requested = {"speed": speed, "rate": omega, "omega3": omega3}
-    if body.kind == "wheel":
+    if isinstance(body.kind, Wheel):
         alpha = by.alpha if isinstance(by, Tilt) else _tilt_for(setup, theta, speed, omega, by.branch)
         starts_of = partial(simulation.horizontal_starts, setup, theta, params.reduce_angle(alpha),
                             perturb_deg=kick)

@@ -37,6 +37,7 @@ from deathsphere.constants import (
     SIDES,
 )
 from deathsphere.params import ParameterError
+from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.table import Table
 
 #: Output columns of ``vertical`` that echo an input, read back under that
@@ -186,7 +187,7 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
 
 def _vertical_setup(side, a, r, k, g, mu) -> dict:
     """The scalar options of a vertical orbit, checked (a wheel; r > a inside)."""
-    setup = checked_setup("wheel", side, a, r, k, g, mu)
+    setup = checked_setup(WHEEL, side, a, r, k, g, mu)
     return dict(side=setup.side, a=setup.a, r=setup.r, k=setup.k, g=setup.g, mu=setup.mu)
 
 

@@ -14,8 +14,10 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from deathsphere.params import shown_number
+from deathsphere.errors import ParameterError
+from deathsphere.params import choice, shown_number
 from deathsphere.physics.ground import Sphere
+from deathsphere.records.paper_bodies import PAPER_BODIES, PaperBodyKind
 from deathsphere.requests.keys import Keys
 from deathsphere.requests.records import Height, Horizontal, RiderRequest, Run, Speed, Theta, Tilt, Vertical
 
@@ -107,3 +109,52 @@ def decode_rider(given: Mapping, keys: Keys, read, body, ground: Sphere, cone: b
     return RiderRequest(body=body, lane=decode_lane(given, keys, read, ground, cone),
                         direction=DIRECTIONS[direction],
                         phase=0.0 if phase is None else read("phase", phase), name=str(given.get("name") or ""))
+
+
+# ---------------------------------------------------------------------------
+# the paper's bodies: the one place a word names one
+
+#: The paper's bodies by the word that names them (``--body``, the API's
+#: ``body=``, an input CSV's ``body`` column, a result table's read back).
+PAPER_BODY_WORDS = {body.word: body for body in PAPER_BODIES}
+
+
+def decode_paper_body(raw, key: str = "body", allowed=PAPER_BODIES) -> PaperBodyKind:
+    """The paper's body ``raw`` names (case aside, as the command line
+    takes it) or ``raw`` itself if a body's record, one of ``allowed``;
+    anything else refused naming ``key``."""
+    words = tuple(body.word for body in allowed)
+    if isinstance(raw, PaperBodyKind) and raw in allowed:
+        return raw
+    if not isinstance(raw, str):
+        raise ParameterError(f"{key} must be one of {' | '.join(words)} (got {raw!r})", key)
+    return PAPER_BODY_WORDS[choice(key, raw, words)]
+
+
+def paper_body_named(word) -> PaperBodyKind | None:
+    """The paper's body ``word`` names exactly (None: it names none)."""
+    return PAPER_BODY_WORDS.get(word) if isinstance(word, str) else None
+
+
+def text_codes(values: np.ndarray, vocabulary: tuple) -> np.ndarray:
+    """The index of each text value in ``vocabulary`` (int8; -1 for none of
+    them).  A request batch compares its text columns once, here, and
+    integers from then on: comparing an object array costs a Python call
+    per element, and a sweep's batch holds one body and one side in every
+    row (one comparison decides it)."""
+    codes = np.full(values.size, -1, dtype=np.int8)
+    if values.size == 0:
+        return codes
+    first = values[0]
+    if isinstance(first, str) and np.all(values == first):
+        codes[:] = vocabulary.index(first) if first in vocabulary else -1
+        return codes
+    for j, word in enumerate(vocabulary):
+        codes[values == word] = j
+    return codes
+
+
+def paper_body_codes(words: np.ndarray) -> np.ndarray:
+    """Each row's body code (its index in :data:`PAPER_BODIES`; -1: a word
+    that names none), from a column of words as typed or printed."""
+    return text_codes(np.asarray(words, dtype=object).reshape(-1), tuple(PAPER_BODY_WORDS))

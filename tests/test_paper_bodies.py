@@ -1,0 +1,43 @@
+"""The paper's bodies as records: a word names one only through the
+decoder, and a record's attributes are the paper's."""
+
+import numpy as np
+import pytest
+
+from deathsphere.model import Setup
+from deathsphere.params import ParameterError
+from deathsphere.records.paper_bodies import BALL, PAPER_BODIES, PARTICLE, WHEEL, Ball
+from deathsphere.requests.decode import decode_paper_body, paper_body_codes, paper_body_named
+
+
+def test_a_word_decodes_to_its_record_case_aside():
+    assert decode_paper_body("Sphere") is BALL and decode_paper_body(" wheel ") is WHEEL
+    assert decode_paper_body(PARTICLE) is PARTICLE          # a record passes through
+    assert paper_body_named("Sphere") is None               # a table's word is read exactly
+
+
+def test_a_word_naming_no_body_is_refused_naming_the_key_as_typed():
+    with pytest.raises(ParameterError, match=r"^shape must be one of wheel \| sphere \(got 'particle'\)$"):
+        decode_paper_body("particle", key="shape", allowed=(WHEEL, BALL))
+    with pytest.raises(ParameterError, match=r"body must be one of wheel \| sphere \| particle \(got 3\)"):
+        decode_paper_body(3)
+
+
+def test_a_column_of_words_decodes_to_codes_in_the_records_order():
+    codes = paper_body_codes(np.array(["sphere", "wheel", "disc", "particle", ""], dtype=object))
+    assert codes.tolist() == [BALL.code, WHEEL.code, -1, PARTICLE.code, -1]
+    assert [PAPER_BODIES[c] for c in codes[[0, 1, 3]]] == [BALL, WHEEL, PARTICLE]
+    assert paper_body_codes(np.full(4, "wheel", dtype=object)).tolist() == [0] * 4   # one word: decided once
+
+
+def test_the_records_default_inertia_is_the_papers():
+    # Table 1's wheel has its mass on the rim (I11 = 2 k m a^2 = m a^2: k = 1/2); a solid ball
+    # has I = 2/5 m a^2 (sec. 4); a point particle no rotational inertia
+    assert (WHEEL.default_k, BALL.default_k, PARTICLE.default_k) == (0.5, 0.4, 0.0)
+    assert Setup(body="sphere").k == 0.4 and isinstance(Setup(body="sphere").body, Ball)
+    assert (WHEEL.rolls, BALL.rolls, PARTICLE.rolls) == (True, True, False)
+
+
+def test_a_setup_refuses_a_word_naming_no_body():
+    with pytest.raises(ValueError, match=r"body must be one of wheel \| sphere \| particle \(got 'disc'\)"):
+        Setup(body="disc")
