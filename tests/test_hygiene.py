@@ -123,3 +123,51 @@ def test_no_body_is_tested_by_its_name_outside_the_decoder():
         meanings = next((names for where, names in OTHER_MEANINGS.items() if rel.startswith(where)), ())
         found += [f"{rel}:{line}" for line in _body_word_comparisons(path.read_text(encoding="utf-8"), meanings)]
     assert found == []
+
+
+# ---------------------------------------------------------------------------
+# the package: long keyword lists only at the edges
+
+#: Parameters a function may take (self, *args and **kwargs aside) unless it
+#: is an adapter: a command's click callback (one parameter per option) or
+#: one of the API's public keyword functions, which pack what a notebook
+#: types into requests and records for what lies beneath them.
+MOST_PARAMETERS = 12
+KEYWORD_ADAPTERS = {
+    "api/orbits.py": {"orbit", "sweep", "orbit_input"},
+    "api/vertical_orbits.py": {"vertical", "vertical_sweep", "vertical_input"},
+    "api/region_limits.py": {"region"},
+    "api/orbit_stability.py": {"stability"},
+    "api/rides.py": {"ride"},
+    "api/ride_streams.py": {"ride_sweep"},
+    "api/simulation.py": {"simulate"},
+    "api/two_wheelers.py": {"simulate_two_wheeler"},
+    "api/two_wheeler_streams.py": {"two_wheeler_ride_sweep"},
+}
+
+
+def _parameter_count(function: ast.FunctionDef | ast.AsyncFunctionDef) -> int:
+    args = function.args
+    names = [a.arg for a in args.posonlyargs + args.args + args.kwonlyargs]
+    return len(names) - (1 if names and names[0] in ("self", "cls") else 0)
+
+
+def test_only_the_adapters_take_more_than_twelve_parameters():
+    long_lists = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        rel = path.relative_to(PACKAGE).as_posix()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            if _parameter_count(node) <= MOST_PARAMETERS or node.name in KEYWORD_ADAPTERS.get(rel, ()):
+                continue
+            if rel.startswith("cli/") and node.name.endswith("_command"):
+                continue
+            long_lists.append(f"{rel}:{node.lineno} {node.name} ({_parameter_count(node)})")
+    assert long_lists == []
+
+
+def test_the_parameter_count_leaves_out_self_and_the_starred():
+    tree = ast.parse("class C:\n    def m(self, a, /, b, *args, c, **kw): pass\ndef f(a, b=1, *, c): pass\n")
+    counts = {n.name: _parameter_count(n) for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)}
+    assert counts == {"m": 3, "f": 3}
