@@ -26,9 +26,10 @@ from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
 # the records' presets and files, as the command line and a notebook reach them
-from deathsphere.records.two_wheeler_files import is_two_wheeler_file, read_machine_file, two_wheeler_file, two_wheeler_text
+from deathsphere.records.two_wheeler_files import is_two_wheeler_file, two_wheeler_file, two_wheeler_text
 from deathsphere.records.two_wheeler_presets import PRESETS as MOTORCYCLES
 from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
+from deathsphere.requests.decode import read_machine_file
 from deathsphere.table import Table
 
 __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_only", "two_wheeler_ride", "STRAIGHT_COLUMNS",

@@ -158,3 +158,63 @@ def paper_body_codes(words: np.ndarray) -> np.ndarray:
     """Each row's body code (its index in :data:`PAPER_BODIES`; -1: a word
     that names none), from a column of words as typed or printed."""
     return text_codes(np.asarray(words, dtype=object).reshape(-1), tuple(PAPER_BODY_WORDS))
+
+
+# ---------------------------------------------------------------------------
+# a machine file: its keys as typed, each value within the registry's bounds
+
+def decode_machine_file(path, base=None):
+    """A single-contact machine from its file (``--machine-file``, a show
+    plan's ``machine_file``; docs/machine.md sec. 7): a small TOML file
+    (``key = value`` lines) or a CSV file (a header naming the keys, one row
+    of values), keys ``name``, ``source``, ``base`` and those of
+    :data:`~deathsphere.records.machine_files.FILE_KEYS`.  Each value is read
+    as a plan's are (a number, or text with a unit suffix: ``"16in"``),
+    within the registry's bounds of the parameter it sets; a key not given
+    keeps ``base``'s value (a preset; default the default machine).  A
+    refusal names the file and the key as typed (``machine file bike.toml:
+    wheel_radius: ...``), reported under ``machine_file``."""
+    from dataclasses import replace
+
+    from deathsphere.params import PARAMS
+    from deathsphere.records.machine import UNECHOABLE
+    from deathsphere.records.machine_files import FILE_KEYS, file_source, machine_file_data
+    from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
+    from deathsphere.requests.values import typed_value
+
+    data, p = machine_file_data(path)
+    keys = Keys(where=f"machine file {p.name}", param="machine_file")
+    unknown = sorted(set(data) - set(FILE_KEYS) - {"name", "source", "base"})
+    if unknown:
+        keys.fail(None, f"unknown key {unknown[0]!r} (known: name, source, base, {', '.join(FILE_KEYS)})")
+    values = {param: typed_value(keys, key, data[key], PARAMS[param].kind, param)
+              for key, param in FILE_KEYS.items() if key in data}
+    try:
+        start = as_machine(str(data.get("base", DEFAULT_MACHINE if base is None else base)))
+    except ParameterError as exc:
+        keys.fail("base", str(exc))
+    try:
+        machine = start.with_overrides(**values)    # the record's own rules: how its values go together
+    except ParameterError as exc:
+        keys.fail(None, str(exc))
+    if "name" not in data and any(c in p.stem for c in UNECHOABLE):
+        keys.fail(None, f"its name (the file's name: {p.stem!r}) holds a comma or a line break, which the CSV "
+                        "output cannot echo; give a name key")
+    try:
+        return replace(machine, name=str(data.get("name", p.stem)), source=str(data.get("source", file_source(p.name))))
+    except ParameterError as exc:
+        keys.fail("name" if "name" in data else "source", str(exc))
+
+
+def read_machine_file(path, base=None):
+    """A machine file's machine: a two-wheeler when it is a two-wheeler's
+    (:func:`~deathsphere.records.two_wheeler_files.is_two_wheeler_file`,
+    read by :func:`~deathsphere.records.two_wheeler_files.two_wheeler_file`),
+    else the single-contact machine of :func:`decode_machine_file`;
+    ``base`` the preset whose values the keys not given keep."""
+    from deathsphere.records.machine_presets import DEFAULT_MACHINE
+    from deathsphere.records.two_wheeler_files import is_two_wheeler_file, two_wheeler_file
+
+    if is_two_wheeler_file(path):
+        return two_wheeler_file(path, base=DEFAULT_MACHINE if base is None else base)
+    return decode_machine_file(path, base=base)
