@@ -7,7 +7,7 @@ import pytest
 from deathsphere.model import Setup
 from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import BALL, PAPER_BODIES, PARTICLE, WHEEL, Ball
-from deathsphere.requests.decode import decode_paper_body, paper_body_codes, paper_body_named
+from deathsphere.requests.decode import decode_paper_body, decode_paper_lane, paper_body_codes, paper_body_named
 
 
 def test_a_word_decodes_to_its_record_case_aside():
@@ -41,3 +41,32 @@ def test_the_records_default_inertia_is_the_papers():
 def test_a_setup_refuses_a_word_naming_no_body():
     with pytest.raises(ValueError, match=r"body must be one of wheel \| sphere \| particle \(got 'disc'\)"):
         Setup(body="disc")
+
+
+def _lane(body, **given):
+    return decode_paper_lane({"theta": 60.0, **given}, body, lambda key, raw: float(raw))
+
+
+def test_which_key_holds_a_lane_is_the_bodys():
+    from deathsphere.requests.records import Horizontal, Rate, Speed, Spin, Theta, Tilt, Vertical
+
+    assert _lane(WHEEL, alpha=10) == Horizontal(at=Theta(60.0), by=Tilt(10.0))
+    assert _lane(WHEEL, speed=7, branch=3) == Horizontal(at=Theta(60.0), by=Speed(7.0, 3))   # checked once solved
+    assert _lane(BALL, omega3=40, branch=1) == Horizontal(at=Theta(60.0), by=Spin(40.0, 1))
+    assert _lane(BALL, omega=-2) == Horizontal(at=Theta(60.0), by=Rate(-2.0, 0))
+    assert _lane(WHEEL, vertical=True, v_top=6) == Vertical(v_top=6.0, theta=60.0)
+
+
+@pytest.mark.parametrize("body, given, words", [
+    (WHEEL, {}, "a wheel's steady orbit needs alpha"),
+    (WHEEL, {"alpha": 10, "speed": 7}, "one of them alone"),
+    (WHEEL, {"omega3": 40}, "no omega3"),
+    (BALL, {"alpha": 10}, "a sphere's steady orbit needs exactly one of omega3 and omega"),
+    (BALL, {"omega3": 40, "omega": 2}, "exactly one of omega3 and omega"),
+    (BALL, {"omega3": 40, "branch": 2}, "branch must be 0"),
+    (BALL, {"vertical": True, "v_top": 6}, "vertical=True simulates a wheel"),
+    (WHEEL, {"alpha": 10, "v_top": 6}, "v_top is for vertical orbits"),
+])
+def test_a_lane_its_body_cannot_hold_is_refused(body, given, words):
+    with pytest.raises(ParameterError, match=words):
+        _lane(body, **given)

@@ -107,14 +107,20 @@ def checked_flag(name: str, value) -> bool:
     raise ParameterError(f"{name} must be True or False (got {value!r})", name)
 
 
+def refuse_radius_with_diameter(r, diameter) -> None:
+    """A globe is given by its radius or by its diameter: both refused (the
+    default radius yields to a diameter)."""
+    if diameter is not None and is_given(r) and r is not R:
+        raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
+
+
 def sphere_radius(r, diameter):
     """The sphere's radius from ``r`` or ``diameter`` (one of them; a globe
     is sold by its diameter).  Returns ``r`` unchanged when no diameter is
     given (it is checked where it is used, as a scalar or an array)."""
     if diameter is None:
         return r
-    if r is not None and r is not R:
-        raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
+    refuse_radius_with_diameter(r, diameter)
     d = _real_array("diameter", diameter)
     reason = params.first_problem("diameter", d)
     if reason:

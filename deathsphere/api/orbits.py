@@ -27,6 +27,7 @@ from deathsphere.api.arguments import (
     one_default,
     radii_of,
     raise_if_all_invalid,
+    refuse_radius_with_diameter,
     sphere_radius,
 )
 from deathsphere.api.streams import (
@@ -267,9 +268,8 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
     chunk_size = min(chunk_size, MAX_CHUNK_ROWS)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    refuse_radius_with_diameter(r, diameter)
     if diameter is not None:
-        if is_given(r) and r is not R:
-            raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
         r = None
     if not is_given(theta):
         raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",

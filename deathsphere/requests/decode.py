@@ -17,9 +17,10 @@ import numpy as np
 from deathsphere.errors import ParameterError
 from deathsphere.params import choice, shown_number
 from deathsphere.physics.ground import Sphere
-from deathsphere.records.paper_bodies import PAPER_BODIES, PaperBodyKind
+from deathsphere.records.paper_bodies import PAPER_BODIES, Ball, PaperBodyKind, Wheel
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import Height, Horizontal, RiderRequest, Run, Speed, Theta, Tilt, Vertical
+from deathsphere.requests.records import (Height, Horizontal, Rate, RiderRequest, Run, Speed, Spin, Theta, Tilt,
+                                          Vertical)
 
 #: The ways a lane may be held, by kind.
 LANES = ("horizontal", "vertical")
@@ -218,3 +219,56 @@ def read_machine_file(path, base=None):
     if is_two_wheeler_file(path):
         return two_wheeler_file(path, base=DEFAULT_MACHINE if base is None else base)
     return decode_machine_file(path, base=base)
+
+
+# ---------------------------------------------------------------------------
+# a paper body's lane in a run (``simulate``): which keys hold it, decided once
+
+#: The keys of which one holds each paper body's steady horizontal orbit
+#: (a wheel: its tilt, or its speed or rate, eq. 29 solved for the tilt; a
+#: ball: its spin or its rate, eq. 55), and the rule in words.
+HELD_BY = {
+    Wheel: (("alpha", "speed", "omega"), "a wheel's steady orbit needs alpha (deg), or its speed or rate: one of them alone "
+                                         "(no omega3)"),
+    Ball: (("omega3", "omega"), "a sphere's steady orbit needs exactly one of omega3 and omega (no alpha or speed)"),
+}
+#: How a horizontal lane is held, by the key that holds it.
+HOLDS = {"alpha": Tilt, "speed": Speed, "omega": Rate, "omega3": Spin}
+#: The keys of a lane of ``simulate``'s: a horizontal lane's holders and a loop's top speed.
+RUN_LANE_KEYS = (*HOLDS, "v_top")
+
+
+def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Keys()) -> Horizontal | Vertical:
+    """The lane a paper body's run starts on, from ``simulate``'s keys as
+    typed: with ``vertical`` a wheel's loop at its top speed ``v_top`` and
+    cone angle ``theta``; else the horizontal orbit at ``theta`` held by
+    one of the body's keys alone (:data:`HELD_BY`), on the root
+    ``branch`` where several orbits share it (0 first; the tilt's in
+    increasing alpha, or eq. 55's slow and fast root)."""
+    theta = read("theta", given["theta"])
+    typed = {key: read(key, given[key]) for key in RUN_LANE_KEYS if given.get(key) is not None}
+    branch = given.get("branch", 0)
+    if given.get("vertical"):
+        if not isinstance(body, Wheel) or set(typed) != {"v_top"}:
+            keys.fail(None, "vertical=True simulates a wheel: give theta and v_top (no alpha, speed, omega or omega3)")
+        _paper_branch(branch, keys)
+        return Vertical(v_top=typed["v_top"], theta=theta)
+    if "v_top" in typed:
+        keys.fail(None, "v_top is for vertical orbits (vertical=True)")
+    holders, rule = HELD_BY[type(body)]
+    if len(typed) != 1 or next(iter(typed)) not in holders:
+        keys.fail(None, rule)
+    (key, value), = typed.items()
+    if key == "alpha":
+        _paper_branch(branch, keys)
+        return Horizontal(at=Theta(theta), by=Tilt(value))
+    if isinstance(body, Ball):
+        _paper_branch(branch, keys)
+    # a wheel's speed or rate: its tilt, the root ``branch``, is found when the run is prepared
+    return Horizontal(at=Theta(theta), by=HOLDS[key](value, branch))
+
+
+def _paper_branch(branch, keys: Keys) -> None:
+    """A branch where at most two orbits share a lane (eq. 55's roots)."""
+    if isinstance(branch, bool) or branch not in (0, 1):
+        keys.fail(None, f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
