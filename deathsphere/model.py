@@ -28,7 +28,7 @@ from deathsphere.physics import wheel
 from deathsphere.physics.geometry import too_big_inside
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.records.paper_bodies import BALL, PAPER_BODIES, PARTICLE, WHEEL, Ball, PaperBodyKind, Particle, Wheel
-from deathsphere.requests.decode import paper_body_codes, paper_body_named, text_codes
+from deathsphere.requests.decode import as_typed, paper_body_codes, paper_body_named, text_codes
 from deathsphere.table import Table
 from deathsphere.table.reasons import echo
 
@@ -185,12 +185,14 @@ def _as_array(value, n, dtype):
     return np.broadcast_to(arr, (n,)).copy() if arr.shape != (n,) else arr.copy()
 
 
-def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **fields) -> dict:
+def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, typed=None, **fields) -> dict:
     """Build a request batch of ``n`` rows from scalars or length-n arrays.
 
     ``fields`` are the :data:`REQUEST_FIELDS` (theta and alpha in degrees);
     missing ones take their defaults; ``k=None`` or NaN means "by body".
-    ``invalid`` is an object array of reasons ('' for rows parsed fine).
+    ``invalid`` is an object array of reasons ('' for rows parsed fine);
+    ``typed``: field -> the name an input file's header gave its column
+    (a row's refusal names it as typed).
     """
     req = {}
     for name, (default, _, _) in REQUEST_FIELDS.items():
@@ -203,6 +205,7 @@ def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **f
             req[name] = _as_array(np.nan if value is None else value, n, float)
     req["input_row"] = np.arange(1, n + 1) if input_row is None else _as_array(input_row, n, np.int64)
     req["invalid"] = _as_array("" if invalid is None else invalid, n, object)
+    req["typed"] = dict(typed or {})
     return req
 
 
@@ -230,6 +233,7 @@ def validate_requests(req: dict) -> np.ndarray:
     req["k"] = k
     reason = req["invalid"].copy()
     pending = reason == ""
+    typed = req.get("typed", {})
     checks = [
         (body_code < 0, lambda i: f"body must be one of {' | '.join(BODIES)} (got {echo(body[i])})"),
         (side_code < 0, lambda i: f"side must be one of {' | '.join(SIDES)} (got {echo(side[i])})"),
@@ -248,7 +252,7 @@ def validate_requests(req: dict) -> np.ndarray:
             bad = params.failing(name, values)
             if given is not None:
                 bad &= given
-        checks.append((bad, lambda i: params.problems(name, values[i:i + 1])[0]))
+        checks.append((bad, lambda i: as_typed(name, params.problems(name, values[i:i + 1])[0], typed)))
 
     for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)

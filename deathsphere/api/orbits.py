@@ -363,4 +363,6 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     reader = request_reader(source, REQUEST_FIELDS, overrides, ALIASES, COLUMNS)
     work = partial(evaluate_filtered, stability=stability, keep=keep)
     cluster = cluster_of(scheduler, jobs)
-    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work, jobs, cluster))
+    # a row's refusal names its column as the file's header typed it
+    make = partial(make_requests, typed=reader.typed)
+    return Chunks(evaluated(input_requests(reader, chunk_size, make), work, jobs, cluster))

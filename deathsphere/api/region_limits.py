@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 
 from deathsphere.api.arguments import (
     CHUNK,
@@ -271,4 +272,5 @@ def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=
 
     def work(req):
         return limits_rows(req, highest=False)
-    return Chunks((n, work(req)) for n, req in input_requests(reader, chunk_size, make_requests))
+    make = partial(make_requests, typed=reader.typed)     # a row's refusal names its column as typed
+    return Chunks((n, work(req)) for n, req in input_requests(reader, chunk_size, make))

@@ -272,3 +272,15 @@ def _paper_branch(branch, keys: Keys) -> None:
     """A branch where at most two orbits share a lane (eq. 55's roots)."""
     if isinstance(branch, bool) or branch not in (0, 1):
         keys.fail(None, f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
+
+
+# ---------------------------------------------------------------------------
+# a request table's rows (``--input``): a refusal names the column as typed
+
+def as_typed(key: str, reason: str, typed: Mapping) -> str:
+    """``reason`` (a refusal of the registry's ``key``, in its words) naming
+    the column as its header typed it when that is another name (an alias:
+    ``theta_deg: theta (polar angle) must be ...``); ``typed``: field -> the
+    header's name (those the header names alike need no more)."""
+    name = typed.get(key, key)
+    return reason if name == key else f"{name}: {reason}"
