@@ -69,3 +69,22 @@ def test_a_rows_refusal_names_its_column_as_the_header_typed_it(tmp_path):
     path.write_text("theta,alpha\n200,10\n60,oops\n")
     reasons = deathsphere.orbit_input(str(path), stability=False).table()["reason"].tolist()
     assert reasons == ["theta (polar angle) must be 0..180 deg (got 200)", "alpha: 'oops' is not a number"]
+
+
+def test_a_vertical_rows_refusal_names_its_column_as_typed(tmp_path):
+    import deathsphere
+
+    path = tmp_path / "loops.csv"
+    path.write_text("theta_deg,v_cm_m_s,g_m_s2\n90,6,9.8\n90,-1,9.8\n90,6,-3\n")
+    table = deathsphere.vertical_input(str(path), stability=False).table()
+    assert table["status"].tolist()[0] != "invalid" and table["reason"].tolist()[1:] == [
+        "v_cm_m_s: v_top (top speed) must be 0..1e+09 m/s (got -1)",
+        "g_m_s2: g (gravity) must be 1e-09..1e+09 m/s^2 (got -3)"]
+
+
+def test_no_reason_stays_none_whatever_the_column_is_called():
+    from deathsphere.requests.decode import as_typed
+
+    assert as_typed("theta", "", {"theta": "theta_deg"}) == ""
+    assert as_typed("theta", "bad", {"theta": "theta"}) == "bad"
+    assert as_typed("theta", "bad", {"theta": "THETA"}) == "THETA: bad"

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import numpy as np
 
@@ -298,5 +299,6 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     # both outputs can be fed back: the summary and the orbit point by point
     outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
     reader = request_reader(source, {**VERTICAL_FIELDS, **PHI_FIELD}, overrides, VERTICAL_ECHO, outputs)
-    batches = input_requests(reader, _vertical_chunk(points), requests_at_phi)
+    # a row's refusal names its column as the file's header typed it
+    batches = input_requests(reader, _vertical_chunk(points), partial(requests_at_phi, typed=reader.typed))
     return Chunks(_vertical_work(points, stability, keep)(batches))

@@ -281,6 +281,7 @@ def as_typed(key: str, reason: str, typed: Mapping) -> str:
     """``reason`` (a refusal of the registry's ``key``, in its words) naming
     the column as its header typed it when that is another name (an alias:
     ``theta_deg: theta (polar angle) must be ...``); ``typed``: field -> the
-    header's name (those the header names alike need no more)."""
+    header's name (those the header names alike need no more); no reason
+    ('') stays none."""
     name = typed.get(key, key)
-    return reason if name == key else f"{name}: {reason}"
+    return reason if name == key or not reason else f"{name}: {reason}"

@@ -31,6 +31,7 @@ from deathsphere.model import (
 from deathsphere.physics import vertical_orbit
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.paper_bodies import WHEEL
+from deathsphere.requests.decode import as_typed
 
 #: Request fields of a vertical orbit (CSV header names for --input).
 VERTICAL_FIELDS = {
@@ -92,9 +93,10 @@ def _validate(req) -> np.ndarray:
     both_or_none = np.isnan(v) == np.isnan(w)
     for i in np.flatnonzero((reason == "") & both_or_none):
         reason[i] = "give exactly one of v_top (m/s) and phidot_top (rad/s)"
+    typed = req.get("typed", {})
     for name, given in (("v_top", ~np.isnan(v)), ("phidot_top", ~np.isnan(w))):
         rows = np.flatnonzero((reason == "") & given)
-        reason[rows] = params.problems(name, req[name][rows])
+        reason[rows] = [as_typed(name, words, typed) for words in params.problems(name, req[name][rows])]
     return reason
 
 
