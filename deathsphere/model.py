@@ -261,7 +261,7 @@ def validate_requests(req: dict) -> np.ndarray:
                        lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
     is_wheel, is_sphere = body_code == WHEEL.code, body_code == BALL.code
-    targets = (~np.isnan(alpha)).astype(int) + (~np.isnan(omega)) + (~np.isnan(speed))
+    targets = sum((~np.isnan(req[key])).astype(int) for key in WHEEL.held_by)
     checks.append((is_wheel & (targets != 1),
                    lambda i: "a wheel needs exactly one of alpha | speed (m/s) | omega (rad/s)"))
     for name, v in (("alpha", alpha), ("speed", speed), ("omega", omega), ("omega3", omega3)):
@@ -270,7 +270,7 @@ def validate_requests(req: dict) -> np.ndarray:
         checks.append((is_wheel & (omega < 0),
                        lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {params.shown_number(float(omega[i]))})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
-    checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
+    checks.append((is_sphere & (sum((~np.isnan(req[key])).astype(int) for key in BALL.held_by) != 1),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
     checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
     # a result CSV fed back carries a sphere's fixed bank angle as alpha_deg: that one is accepted

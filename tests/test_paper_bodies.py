@@ -36,6 +36,8 @@ def test_the_records_default_inertia_is_the_papers():
     assert (WHEEL.default_k, BALL.default_k, PARTICLE.default_k) == (0.5, 0.4, 0.0)
     assert Setup(body="sphere").k == 0.4 and isinstance(Setup(body="sphere").body, Ball)
     assert (WHEEL.rolls, BALL.rolls, PARTICLE.rolls) == (True, True, False)
+    # eq. 29 fixes a wheel's orbit at theta by one of its tilt, speed, rate; eq. 55 a ball's by its spin or rate
+    assert (WHEEL.held_by, BALL.held_by, PARTICLE.held_by) == (("alpha", "speed", "omega"), ("omega3", "omega"), ())
 
 
 def test_a_setup_refuses_a_word_naming_no_body():

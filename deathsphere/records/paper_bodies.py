@@ -22,12 +22,15 @@ class PaperBodyKind:
     are a request's).  ``word``: what a table's ``body`` column prints;
     ``default_k``: its inertia factor when none is given; ``rolls``: it has
     rolling dynamics (the runner integrates it); ``fixed_tilt``: its tilt
-    follows from theta (a ball's bank angle), not a request's alpha."""
+    follows from theta (a ball's bank angle), not a request's alpha;
+    ``held_by``: the request's keys of which exactly one fixes its steady
+    horizontal orbit at a theta (none: theta alone)."""
 
     word: ClassVar[str]
     default_k: ClassVar[float]
     rolls: ClassVar[bool]
     fixed_tilt: ClassVar[bool] = False
+    held_by: ClassVar[tuple[str, ...]] = ()
 
     @property
     def code(self) -> int:
@@ -47,6 +50,8 @@ class Wheel(PaperBodyKind):
     word: ClassVar[str] = "wheel"
     default_k: ClassVar[float] = DEFAULT_INERTIA[word]
     rolls: ClassVar[bool] = True
+    # its tilt, or its speed or rate, eq. 29 solved for the tilt
+    held_by: ClassVar[tuple[str, ...]] = ("alpha", "speed", "omega")
 
 
 @dataclass(frozen=True)
@@ -59,6 +64,8 @@ class Ball(PaperBodyKind):
     default_k: ClassVar[float] = DEFAULT_INERTIA[word]
     rolls: ClassVar[bool] = True
     fixed_tilt: ClassVar[bool] = True
+    # its spin about the contact normal or its orbital rate, eq. 55
+    held_by: ClassVar[tuple[str, ...]] = ("omega3", "omega")
 
 
 @dataclass(frozen=True)

@@ -224,13 +224,11 @@ def read_machine_file(path, base=None):
 # ---------------------------------------------------------------------------
 # a paper body's lane in a run (``simulate``): which keys hold it, decided once
 
-#: The keys of which one holds each paper body's steady horizontal orbit
-#: (a wheel: its tilt, or its speed or rate, eq. 29 solved for the tilt; a
-#: ball: its spin or its rate, eq. 55), and the rule in words.
+#: The rule that one of a paper body's keys holds its steady horizontal
+#: orbit (the record's ``held_by``), in words.
 HELD_BY = {
-    Wheel: (("alpha", "speed", "omega"), "a wheel's steady orbit needs alpha (deg), or its speed or rate: one of them alone "
-                                         "(no omega3)"),
-    Ball: (("omega3", "omega"), "a sphere's steady orbit needs exactly one of omega3 and omega (no alpha or speed)"),
+    Wheel: "a wheel's steady orbit needs alpha (deg), or its speed or rate: one of them alone (no omega3)",
+    Ball: "a sphere's steady orbit needs exactly one of omega3 and omega (no alpha or speed)",
 }
 #: How a horizontal lane is held, by the key that holds it.
 HOLDS = {"alpha": Tilt, "speed": Speed, "omega": Rate, "omega3": Spin}
@@ -242,7 +240,7 @@ def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Ke
     """The lane a paper body's run starts on, from ``simulate``'s keys as
     typed: with ``vertical`` a wheel's loop at its top speed ``v_top`` and
     cone angle ``theta``; else the horizontal orbit at ``theta`` held by
-    one of the body's keys alone (:data:`HELD_BY`), on the root
+    one of the body's keys alone (its record's ``held_by``), on the root
     ``branch`` where several orbits share it (0 first; the tilt's in
     increasing alpha, or eq. 55's slow and fast root)."""
     theta = read("theta", given["theta"])
@@ -255,9 +253,8 @@ def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Ke
         return Vertical(v_top=typed["v_top"], theta=theta)
     if "v_top" in typed:
         keys.fail(None, "v_top is for vertical orbits (vertical=True)")
-    holders, rule = HELD_BY[type(body)]
-    if len(typed) != 1 or next(iter(typed)) not in holders:
-        keys.fail(None, rule)
+    if len(typed) != 1 or next(iter(typed)) not in body.held_by:
+        keys.fail(None, HELD_BY[type(body)])
     (key, value), = typed.items()
     if key == "alpha":
         _paper_branch(branch, keys)
