@@ -366,9 +366,9 @@ def _two_wheeler(machine, given: dict) -> Table:
     from deathsphere.api.two_wheelers import two_wheeler_ride
 
     refuse_single_contact(given)
-    return two_wheeler_ride(machine, **{k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
-                                                               "steer", "r", "diameter", "g", "mu", "max_g",
-                                                               "summary", "stability", "only")})
+    return two_wheeler_ride(machine, {k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
+                                                              "steer", "r", "diameter", "g", "mu", "max_g",
+                                                              "summary", "stability", "only")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).
