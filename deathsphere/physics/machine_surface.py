@@ -100,8 +100,9 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
     MS1-MS7: the keys of :func:`~deathsphere.physics.machine.ride_orbit`
     (``friction`` positive down the wall, ``head_clearance`` the ground's
     clearance of the head point) and ``rho_contact`` [m], ``wall_angle``
-    [rad].  On the sphere every value is ride_orbit's to rounding.  An ok
-    row is all finite."""
+    [rad].  On the sphere every value is ride_orbit's to rounding, its
+    reasons for a wheel that does not fit, a head that hits and a contact
+    that pulls worded for any wall (MS5-MS7).  An ok row is all finite."""
     m = machine
     c = contact_on(height, ground)
     alpha, g, mu, max_g = (np.asarray(x, dtype=float) for x in (alpha, g, mu, max_g))
@@ -141,12 +142,12 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
     head = _up(c, sa, ca, m.head_height, t)
     clearance = np.asarray(ground.clearance(*head), dtype=float)     # MS7
     status, reason = first_failure([
-        (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT),
-        (~(clearance > 0), Status.NO_FIT, Reason.HEAD_HITS),
+        (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT_WALL),
+        (~(clearance > 0), Status.NO_FIT, Reason.HEAD_HITS_WALL),
         (singular, Status.NO_ORBIT, Reason.MACHINE_ZERO_DENOMINATOR),
         (om2_zero, Status.NO_ORBIT, Reason.MACHINE_OMEGA_ZERO),
         (~real, Status.NO_ORBIT, Reason.MACHINE_OMEGA_IMAGINARY),
-        (~(normal > 0), Status.NO_CONTACT, Reason.MACHINE_NO_CONTACT),
+        (~(normal > 0), Status.NO_CONTACT, Reason.MACHINE_NO_CONTACT_WALL),
         (mu_req > mu, Status.SLIPS, Reason.SLIPS),
         (load > max_g, Status.OVER_G, Reason.MACHINE_OVER_G),
     ])

@@ -22,7 +22,7 @@ from deathsphere.physics.machine_surface import (
     solve_alpha_for_rate_on,
     solve_alpha_for_speed_on,
 )
-from deathsphere.physics.status import Status
+from deathsphere.physics.status import Reason, Status
 from deathsphere.records.machine_presets import PRESETS
 
 G = 9.80665
@@ -43,7 +43,10 @@ def test_on_the_sphere_every_output_is_the_spheres_machine(name, r):
     ref = ride_orbit(theta, alpha, ground, G, m, mu=1.0, max_g=6.0)
     got = ride_orbit_on(height, alpha, ground, G, m, mu=1.0, max_g=6.0)
     np.testing.assert_array_equal(got["status"], ref["status"])
-    np.testing.assert_array_equal(got["reason"], ref["reason"])
+    # the same reasons, those of a wheel, head and contact worded for any wall
+    wall = {Reason.MACHINE_NO_FIT_WALL: Reason.MACHINE_NO_FIT, Reason.HEAD_HITS_WALL: Reason.HEAD_HITS,
+            Reason.MACHINE_NO_CONTACT_WALL: Reason.MACHINE_NO_CONTACT}
+    np.testing.assert_array_equal(np.vectorize(lambda x: wall.get(Reason(x), x))(got["reason"]), ref["reason"])
     assert (ref["status"] == Status.OK).sum() > 200
     for key in KEYS:
         scale = np.nanmax(np.abs(ref[key][np.isfinite(ref[key])]))
