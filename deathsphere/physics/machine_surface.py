@@ -55,7 +55,7 @@ class Contact(NamedTuple):
 
 
 def contact_on(height, ground) -> Contact:
-    """The ground's answers at ``height`` [m] (any shape) as a
+    """Beyond the paper (docs/machine.md, eq. MS1): the ground's answers at ``height`` [m] (any shape) as a
     :class:`Contact`: the normal's components are the ground's own, so a
     vertical wall's cos(beta) is exactly 0."""
     height = np.asarray(height, dtype=float)
@@ -72,7 +72,7 @@ def _up(c: Contact, sa, ca, length, t):
 
 
 def meridian_points_on(height, alpha, ground, machine: MachineArrays) -> dict:
-    """Eq. MS1: the contact P, the centre of mass G and the head H as (rho,
+    """Eq. MS1 (beyond the paper, docs/machine.md): the contact P, the centre of mass G and the head H as (rho,
     z) [m] in the contact's meridian plane (the ground's coordinates), for
     the lane at ``height`` [m] and the tilt ``alpha`` [rad] (broadcast).
     Keys 'contact', 'com', 'head' (as :func:`~deathsphere.physics.machine.meridian_points`)."""
@@ -95,7 +95,7 @@ def _fits(c: Contact, sab, a, t):
 
 
 def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
-    """Every quantity of a machine's steady horizontal orbit on ``ground``
+    """Every quantity of a machine's steady horizontal orbit on ``ground`` (beyond the paper, docs/machine.md)
     at the lane ``height`` [m] and tilt ``alpha`` [rad] (broadcast), eqs.
     MS1-MS7: the keys of :func:`~deathsphere.physics.machine.ride_orbit`
     (``friction`` positive down the wall, ``head_clearance`` the ground's
@@ -175,7 +175,7 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
 
 
 def fit_window_on(height, ground, machine: MachineArrays):
-    """The tilts at which the wheel fits (eq. MS6), (lo, hi) [rad]: the open
+    """The tilts at which the wheel fits (eq. MS6, beyond the paper: docs/machine.md), (lo, hi) [rad]: the open
     interval asin(q) - beta < alpha < pi - asin(q) - beta with
     q = (a - t) kappa / (1 - t kappa); an empty interval (lo = hi = NaN)
     where no tilt fits.  On the sphere: M10's theta - pi + asin(q) <
@@ -216,8 +216,9 @@ def _den_w(r_g, d_z, w, sin_a, cos_a, j_rho, delta):
 
 
 def speed_polynomial_on(height, speed, ground, g, m: MachineArrays):
-    """Coefficient rows (n, 9) in alpha whose zeros are the tilts giving the
-    centre of mass ``speed`` (eq. M12 on the ground, MS4 times r_G^2 W):
+    """Beyond the paper (docs/machine.md, M12 with MS2-MS3): coefficient
+    rows (n, 9) in alpha whose zeros are the tilts giving the centre of
+    mass ``speed`` (eq. M12 on the ground, MS4 times r_G^2 W):
     g d_r r_G^2 W - v^2 D W, all inputs 1-D of one length n."""
     r_g, d_r, d_z, w, sin_a, cos_a, j_rho, delta = _rows(height, ground, m)
     left = _mul(_mul(_mul(d_r, r_g), r_g), w) * np.asarray(g, dtype=float)[:, None]
@@ -226,8 +227,9 @@ def speed_polynomial_on(height, speed, ground, g, m: MachineArrays):
 
 
 def rate_polynomial_on(height, omega, ground, g, m: MachineArrays):
-    """Coefficient rows (n, 7) in alpha whose zeros are the tilts of the
-    orbit at rate ``omega`` [rad/s] (MS4 times W): Omega^2 D W - g d_r W."""
+    """Beyond the paper (docs/machine.md, M8 with MS2-MS3): coefficient
+    rows (n, 7) in alpha whose zeros are the tilts of the orbit at rate
+    ``omega`` [rad/s] (MS4 times W): Omega^2 D W - g d_r W."""
     r_g, d_r, d_z, w, sin_a, cos_a, j_rho, delta = _rows(height, ground, m)
     om2 = (np.asarray(omega, dtype=float) ** 2)[:, None]
     return _add(om2 * _den_w(r_g, d_z, w, sin_a, cos_a, j_rho, delta),
@@ -263,7 +265,7 @@ def _solve(poly, key, height, target, ground, g, machine: MachineArrays):
 
 
 def solve_alpha_for_speed_on(height, speed, ground, g, machine: MachineArrays):
-    """Every tilt in the fit window (MS6) at which the centre of mass's speed
+    """Beyond the paper (docs/machine.md, M12): every tilt in the fit window (MS6) at which the centre of mass's speed
     on the lane at ``height`` is ``speed`` > 0 (1-D inputs of one length,
     the machine's arrays broadcast): the zeros of
     :func:`speed_polynomial_on`, each checked with :func:`ride_orbit_on`
@@ -273,7 +275,7 @@ def solve_alpha_for_speed_on(height, speed, ground, g, machine: MachineArrays):
 
 
 def solve_alpha_for_rate_on(height, omega, ground, g, machine: MachineArrays):
-    """Every tilt in the fit window (MS6) of the orbit at rate ``omega`` > 0
+    """Beyond the paper (docs/machine.md, M8): every tilt in the fit window (MS6) of the orbit at rate ``omega`` > 0
     [rad/s] on the lane at ``height`` (the zeros of
     :func:`rate_polynomial_on`, each checked with :func:`ride_orbit_on`).
     Returns (n, k) sorted, NaN-padded."""
