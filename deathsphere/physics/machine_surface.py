@@ -17,6 +17,8 @@ kappa = sin(beta) / rho_P, all answered by the ground (its protocol,
     N/m = r_G Omega^2 sin(beta) + g cos(beta),
     F_down/m = r_G Omega^2 cos(beta) - g sin(beta)                       (MS5)
     fit: sin(alpha + beta) (1 - t kappa) > (a - t) kappa                 (MS6)
+    clearances: the ground's of the head; the tyre's and the head's
+    height above the floor z = lowest                                     (MS7)
 
 On the sphere (beta = pi - theta, kappa = 1/r) each is M1-M10 exactly.
 A lane is the contact's height above the ground's lowest point (the floor
@@ -94,13 +96,28 @@ def _fits(c: Contact, sab, a, t):
     return finite & (sab * (1.0 - t * kappa) > (a - t) * kappa)
 
 
+def _floor_clearance(c: Contact, sa, ca, head_z, ground, m: MachineArrays):
+    """Eq. MS7: the height [m] above the floor (the horizontal plane through
+    the ground's lowest point) of the lower of the head and the tyre's
+    lowest point.  The crown circle about the axle C = Q + (a - t) u, in
+    the plane of u and the (horizontal) direction of travel, reaches down
+    to C_z - (a - t) |sin(alpha)|, the tyre a further t.  Inside the globe
+    it is never below its floor; on a drum or a cone it stops a lane
+    ridden too low."""
+    a, t = m.wheel_radius, m.tyre_radius
+    _, axle_z = _up(c, sa, ca, a, t)
+    tyre_z = axle_z - (a - t) * np.abs(sa) - t
+    return np.minimum(tyre_z, head_z) - ground.lowest
+
+
 def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
     """Every quantity of a machine's steady horizontal orbit on ``ground`` (beyond the paper, docs/machine.md)
     at the lane ``height`` [m] and tilt ``alpha`` [rad] (broadcast), eqs.
     MS1-MS7: the keys of :func:`~deathsphere.physics.machine.ride_orbit`
     (``friction`` positive down the wall, ``head_clearance`` the ground's
-    clearance of the head point) and ``rho_contact`` [m], ``wall_angle``
-    [rad].  On the sphere every value is ride_orbit's to rounding, its
+    clearance of the head point) and ``floor_clearance`` [m] (the tyre's
+    and the head's least height above the floor, MS7), ``rho_contact``
+    [m], ``wall_angle`` [rad].  On the sphere every value is ride_orbit's to rounding, its
     reasons for a wheel that does not fit, a head that hits and a contact
     that pulls worded for any wall (MS5-MS7).  An ok row is all finite."""
     m = machine
@@ -141,9 +158,11 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
     load = np.sqrt(centripetal * centripetal + g * g) / g            # M11
     head = _up(c, sa, ca, m.head_height, t)
     clearance = np.asarray(ground.clearance(*head), dtype=float)     # MS7
+    floor = _floor_clearance(c, sa, ca, head[1], ground, m)
     status, reason = first_failure([
         (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT_WALL),
         (~(clearance > 0), Status.NO_FIT, Reason.HEAD_HITS_WALL),
+        (~(floor > 0), Status.NO_FIT, Reason.MACHINE_HITS_FLOOR),
         (singular, Status.NO_ORBIT, Reason.MACHINE_ZERO_DENOMINATOR),
         (om2_zero, Status.NO_ORBIT, Reason.MACHINE_OMEGA_ZERO),
         (~real, Status.NO_ORBIT, Reason.MACHINE_OMEGA_IMAGINARY),
@@ -164,6 +183,7 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
         "mu_required": mu_req,
         "load_g": load,
         "head_clearance": clearance,
+        "floor_clearance": floor,
         "height": c.height,
         "rho_contact": c.rho,
         "wall_angle": np.arctan2(c.sin_beta, c.cos_beta),

@@ -275,3 +275,25 @@ def test_singular_lanes_give_statuses_not_warnings():
     assert np.all(orb["status"] != Status.OK)
     assert np.isnan(lo).all() and np.isnan(hi).all()
     assert np.isnan(tilts[0]).all()
+
+
+def test_the_floor_clearance_is_the_lowest_of_the_tyre_sampled_and_the_head():
+    m = machine_arrays(PRESETS["stunt125"])
+    a, t = float(m.wheel_radius), float(m.tyre_radius)
+    ground = Cylinder(16 * FT, 12 * FT)
+    psi = np.linspace(0, 2 * np.pi, 3601)
+    heights = np.array([0.02, 0.05, 0.3, 1.0])
+    alphas = np.radians(np.linspace(-60, 60, 25))
+    orb = ride_orbit_on(heights[:, None], alphas[None, :], ground, G, m)
+    head_z = meridian_points_on(heights[:, None], alphas[None, :], ground, m)["head"][1]
+    for i, h in enumerate(heights):
+        for k, alpha in enumerate(alphas):
+            _, _, _, c, _, e1, u = _vectors(ground, h, alpha, m)
+            ring = c[:, None] + (a - t) * (-np.cos(psi) * u[:, None] + np.sin(psi) * np.cross(e1, u)[:, None])
+            want = min(ring[2].min() - t, head_z[i, k]) - ground.lowest
+            assert abs(orb["floor_clearance"][i, k] - want) < 1e-6
+    hits = orb["floor_clearance"] <= 0
+    assert hits.any() and (~hits).any()
+    assert np.all(orb["reason"][hits & (orb["reason"] != Reason.MACHINE_NO_FIT_WALL)
+                                & (orb["reason"] != Reason.HEAD_HITS_WALL)] == Reason.MACHINE_HITS_FLOOR)
+    assert np.all(orb["reason"][~hits] != Reason.MACHINE_HITS_FLOOR)
