@@ -85,3 +85,10 @@ def test_a_lane_a_wall_does_not_have_is_refused_in_one_line(kw, param):
     with pytest.raises(ParameterError) as err:
         deathsphere.ride(machine="stunt125", surface="cylinder", diameter="32ft", wall_height="12ft", **kw)
     assert err.value.param == param and "\n" not in str(err.value)
+
+
+def test_a_two_wheeler_refuses_a_wall_rather_than_riding_the_globe():
+    with pytest.raises(ParameterError) as err:
+        deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="cylinder", diameter="32ft", height=1,
+                         speed=8)
+    assert err.value.param == "surface"

@@ -399,7 +399,8 @@ def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
 SINGLE_CONTACT_ONLY = ("alpha", "v_top", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
-                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
+                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
+                       "surface", "wall_angle", "wall_height")
 
 
 def refuse_single_contact(given: dict) -> None:
