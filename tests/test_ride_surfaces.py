@@ -92,3 +92,14 @@ def test_a_two_wheeler_refuses_a_wall_rather_than_riding_the_globe():
         deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="cylinder", diameter="32ft", height=1,
                          speed=8)
     assert err.value.param == "surface"
+
+
+def test_the_riders_table_counts_a_head_reaching_a_wall_as_head_hits():
+    # a cone leaning in at 140 degrees: upright tilts put the head into the overhang
+    kw = dict(machine="stunt125", surface="cone", wall_angle=140, r=2.0, height=0.8,
+              alpha=np.linspace(-80, 170, 51))
+    rows = deathsphere.ride(**kw, stability=False)
+    hits = int(np.sum(rows["reason"] == deathsphere.api.rides.REASON_TEXT[deathsphere.api.rides.Reason.HEAD_HITS_WALL]))
+    assert hits > 0
+    table = deathsphere.ride(**kw, summary=True)
+    assert int(table["head_hits"][0]) == hits

@@ -543,7 +543,7 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
     rows = {c: [] for c in names}
     status_all = np.asarray(table["status"]).reshape(-1)
     reason_all = np.asarray(table["reason"]).reshape(-1)
-    head_text = REASON_TEXT[Reason.HEAD_HITS]
+    head_text = (REASON_TEXT[Reason.HEAD_HITS], REASON_TEXT[Reason.HEAD_HITS_WALL])   # the globe's, a wall's
     order = np.unique(row_group)
     for gv in order:
         sel = row_group == gv
@@ -574,7 +574,7 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
         rows["limits"].append(" ".join(failed) if failed else "")
         rows["mu_available"].append(first("mu_available"))
         rows["max_g"].append(first("max_g"))
-        head = reason_all[sel] == head_text
+        head = np.isin(reason_all[sel], head_text)
         for col, (st, _) in FAILURES.items():
             hit = np.isin(status, st)
             if col == "head_hits":

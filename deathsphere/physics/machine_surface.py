@@ -157,7 +157,9 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
     mu_req = mu_required(normal, friction)
     load = np.sqrt(centripetal * centripetal + g * g) / g            # M11
     head = _up(c, sa, ca, m.head_height, t)
-    clearance = np.asarray(ground.clearance(*head), dtype=float)     # MS7
+    # a head past the axis is in the opposite half of the meridian plane: by
+    # the symmetry of revolution, its distance from the axis is |rho|
+    clearance = np.asarray(ground.clearance(np.abs(head[0]), head[1]), dtype=float)     # MS7
     floor = _floor_clearance(c, sa, ca, head[1], ground, m)
     status, reason = first_failure([
         (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT_WALL),
