@@ -29,14 +29,22 @@ STABILITY_NOT_ON_SURFACE = ("not analysed: the machine's stability is derived on
 
 
 def _lanes(ground, height) -> np.ndarray:
-    """The heights, each on the wall: above the top (or a cone's apex) refused in one line."""
+    """The heights, each on the wall: above the ground's highest lane (its
+    wall's top, a cone's apex) refused in one line."""
     top = ground.highest_lane
     if np.any(height > top):
-        over = float(np.max(height))
-        what = "the wall's top" if top == getattr(ground, "wall_height", math.inf) else "the cone's apex"
-        raise ParameterError(f"height must be at most {shown_number(top)} m on this {ground.name}, {what} "
-                             f"(got {shown_number(over)} m)", "height")
+        raise ParameterError(f"height must be at most {shown_number(top)} m on this {ground.name}, its highest "
+                             f"lane (the wall's top, or a cone's apex; got {shown_number(float(np.max(height)))} m)",
+                             "height")
     return height
+
+
+def floor_radius(ground) -> float:
+    """The arena's radius at its floor [m]: the contact's distance from the
+    axis on the lowest lane (the ground protocol's answer, whatever the
+    ground)."""
+    rho, _ = ground.contact(np.zeros(1))
+    return float(np.asarray(rho).reshape(-1)[0])
 
 
 def ride_on_surface(ground, typed: dict, m, options, rides):
@@ -64,9 +72,10 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
                       per_point=TILTS_PER_SPEED if by_speed else 1)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
-    if m.wheel_radius >= ground.radius:
+    radius = floor_radius(ground)
+    if m.wheel_radius >= radius:
         raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a {ground.name} of radius "
-                             f"{ground.radius:g} m (needs r > a)", "r")
+                             f"{radius:g} m at its floor (needs r > a)", "r")
     height, g, mu, max_g = _lanes(ground, flat["height"]), flat["g"], flat["mu"], flat["max_g"]
     arrays = machine_arrays(m)
     if by_speed:
@@ -92,7 +101,7 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
     rho, _ = ground.contact(height[req])
     res["height"], res["rho_contact"] = height[req], np.asarray(rho, dtype=float)
     res["wall_angle"] = np.asarray(ground.wall_angle(height[req]), dtype=float)
-    run = rides.RowRun(np.full(req.size, float(ground.radius)), g[req], mu[req], max_g[req])
+    run = rides.RowRun(np.full(req.size, radius), g[req], mu[req], max_g[req])
     table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=False, given=given,
                          surface=ground.name, stability_note=STABILITY_NOT_ON_SURFACE if options.stability else "")
     if len(table) == n and shape:

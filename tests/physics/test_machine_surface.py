@@ -297,3 +297,30 @@ def test_the_floor_clearance_is_the_lowest_of_the_tyre_sampled_and_the_head():
     assert np.all(orb["reason"][hits & (orb["reason"] != Reason.MACHINE_NO_FIT_WALL)
                                 & (orb["reason"] != Reason.HEAD_HITS_WALL)] == Reason.MACHINE_HITS_FLOOR)
     assert np.all(orb["reason"][~hits] != Reason.MACHINE_HITS_FLOOR)
+
+
+class _ProtocolOnly:
+    """A ground that answers the protocol and nothing else (no radius, no
+    class the physics could know), as any meridian from samples would."""
+
+    name = "profile"
+
+    def __init__(self, inner):
+        self._inner = inner
+        self.lowest, self.highest_lane = inner.lowest, inner.highest_lane
+
+    def __getattr__(self, key):
+        if key in ("contact", "wall_angle", "normal", "curvatures", "clearance"):
+            return getattr(self._inner, key)
+        raise AttributeError(key)
+
+
+def test_the_machine_needs_of_a_ground_its_protocol_only():
+    m = machine_arrays(PRESETS["stunt125"])
+    cone = Cone(4.0, math.radians(80), 5.0)
+    h, alpha = np.linspace(0.2, 4.0, 9)[:, None], np.radians(np.linspace(-40, 80, 13))[None, :]
+    ref, got = ride_orbit_on(h, alpha, cone, G, m), ride_orbit_on(h, alpha, _ProtocolOnly(cone), G, m)
+    for key in ref:
+        np.testing.assert_array_equal(got[key], ref[key], err_msg=key)
+    np.testing.assert_array_equal(solve_alpha_for_speed_on(h[:, 0], np.full(9, 12.0), _ProtocolOnly(cone), G, m),
+                                  solve_alpha_for_speed_on(h[:, 0], np.full(9, 12.0), cone, G, m))
