@@ -200,8 +200,11 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("max_g", max_g)) if v is not None}
     mus = _axis("mu", mu) if mu else None
     if on_wall:
+        if (jobs is not None and str(jobs).strip() != "1") or scheduler is not None:
+            raise click.UsageError("--jobs and --scheduler spread the globe's grids: a drum's or a cone's ride is "
+                                   "computed in one process (at most 2e+06 rows)")
         wall = {"surface": surface, "wall_angle": wall_angle, "wall_height": wall_height}
-        return _ride_on_wall(chosen, wall, setup, mus, theta=theta, height=height, alpha=alpha, speed=speed,
+        return _ride_on_wall(chosen, wall, setup, mu, mus, theta=theta, height=height, alpha=alpha, speed=speed,
                              vertical=vertical, v_top=v_top, summary=summary, only=only, stability=stability,
                              fmt=fmt, output=output, shown=shown)
     if vertical:
@@ -249,7 +252,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                            view=_view("ride_view", title=title, units=shown), output=output), output))
 
 
-def _ride_on_wall(chosen, wall: dict, setup: dict, mus, *, theta, height, alpha, speed, vertical, v_top, summary,
+def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, *, theta, height, alpha, speed, vertical, v_top, summary,
                   only, stability, fmt, output, shown):
     """``ride`` on a drum or a cone (docs/machine.md, "On any surface of
     revolution"): the grid of heights, each --mu and the speeds or tilts,
@@ -270,7 +273,7 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mus, *, theta, height, alpha,
     if not alpha and not speed:
         raise click.UsageError("give --alpha or --speed")
     by = ("alpha", alpha) if alpha else ("speed", speed)
-    refuse_large_grid(value_counts({"height": height, "mu": mu_values(mus), by[0]: by[1]}), command="ride",
+    refuse_large_grid(value_counts({"height": height, "mu": mu, by[0]: by[1]}), command="ride",
                       limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
     where, how, friction = _grid(_axis("height", height), _axis(*by), mus)
     table = api.ride(height=where, **{by[0]: how}, machine=chosen, stability=stability and not summary,
@@ -280,11 +283,6 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mus, *, theta, height, alpha,
              else f"Laps of {chosen.name} on the {kind} (docs/machine.md eqs. MS1-MS7)")
     _written(stream(pieces(table), fmt, label="ride", title=title, view=_view("ride_view", title=title, units=shown),
                     output=output), output)
-
-
-def mu_values(mus):
-    """The --mu values as value_counts counts them (None: not given)."""
-    return [] if mus is None else list(mus)
 
 
 #: Orbits evaluated per piece of the rider's table: a progress bar's step

@@ -41,3 +41,8 @@ def test_what_a_wall_does_not_take_is_one_line_and_exit_2(run, args, named):
     assert res.exit_code == 2
     lines = res.stderr.strip().splitlines()
     assert len(lines) == 1 and named in lines[0] and "Traceback" not in res.stderr
+
+
+def test_a_wall_refuses_jobs_rather_than_ignoring_them(run):
+    res = run("ride", "--surface", "cylinder", "--diameter", "32ft", "--height", "1", "--speed", "10", "--jobs", "2")
+    assert res.exit_code == 2 and len(res.stderr.strip().splitlines()) == 1 and "--jobs" in res.stderr
