@@ -77,6 +77,8 @@ class Param:
     flags: tuple[str, ...] = ()
     metavar: str = "X"
     column: str | None = None
+    #: a word among these instead of a number (the ground's kind: ``surface``)
+    choices: tuple[str, ...] = ()
 
     def label(self) -> str:
         """``name (what)``, e.g. ``a (body radius)``."""
@@ -85,6 +87,8 @@ class Param:
     def allowed(self) -> str:
         """The allowed values in words, e.g. ``1e-09..1e+09 m``."""
         unit = f" {self.unit}" if self.unit else ""
+        if self.choices:
+            return " \\| ".join(self.choices)
         if self.allow_inf:
             return f">= {self.lo:g} or inf (no limit)"
         if self.integer:
@@ -238,6 +242,17 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     _length("height", "contact height", "z", lo=0.0,
             help="Ride: height of the contact point above the globe's floor instead of --theta (0 .. the "
                  "diameter)."),
+    # the arena a machine rides in (docs/machine.md, "On any surface of revolution")
+    Param("surface", "", "arena", 0.0, 0.0, choices=("sphere", "cylinder", "cone"), metavar="SURFACE",
+          default_text="sphere",
+          help="Ride: the arena, the globe (sphere), the wall of death's drum (cylinder) or the well of death "
+               "(cone, with --wall-angle); -r or --diameter its size at the floor."),
+    Param("wall_angle", "deg", "wall angle", 0.0, 180.0, lo_open=True, hi_open=True, symbol="β", kind="angle",
+          metavar="DEG", column="wall_angle_deg",
+          help="Ride, a cone: the wall's angle from the horizontal (90 a drum's wall, under 90 leaning out)."),
+    _length("wall_height", "wall height", "H", allow_inf=False, default=math.inf, default_text="no top",
+            help="Ride, a drum or a cone: the height of the wall's top above the floor; a lane above it is "
+                 "refused."),
     # the two-wheeler of `deathsphere ride --flat/--steer` (docs/two-wheeler.md)
     Param("rear_speed", "m/s", "rear contact speed", 0.0, HUGE, symbol="v_rear", kind="speed", metavar="M_S"),
     Param("steer_torque", "N m", "steer torque", -HUGE, HUGE, symbol="T_δ", metavar="N_M",

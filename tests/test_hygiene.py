@@ -51,7 +51,7 @@ BODY_WORDS = frozenset({"wheel", "sphere", "particle"})
 #: Where a word may be compared with them: the decoder, which turns words
 #: into body records, and the terminal views, which label a finished
 #: table's rows by the text its ``body`` column prints (output, not input).
-MAY_COMPARE_BODY_WORDS = ("requests/decode.py", "render/")
+MAY_COMPARE_BODY_WORDS = ("requests/decode.py", "requests/arena.py", "render/")
 #: Where the same words name something else, by the name of the value
 #: compared: the 3-D scene's data format (a ground's or a drawing item's
 #: ``kind``: "sphere" the globe, "wheel" a drawn disc) and the two-wheeler's

@@ -5,6 +5,7 @@ contains as the machine ``paper-wheel``)."""
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -50,7 +51,7 @@ RIDE_COLUMNS = (
     "max_g", "status", "reason", "omega_rad_s", "period_s", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s",
     "wheel_spin_rad_s", "com_orbit_radius_m", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
     "load_g", "head_clearance_m", "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s",
-    "freq_fast_rad_s",
+    "freq_fast_rad_s", "surface", "rho_contact_m", "wall_angle_deg",
 )
 
 #: What the stability columns say on every analysed row (docs/machine.md sec. 5).
@@ -90,10 +91,14 @@ class RowRun(NamedTuple):
 
 
 def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: bool, shape=None,
-           given: dict | None = None, axes=None) -> Table:
+           given: dict | None = None, axes=None, surface: str = "sphere", stability_note: str = "") -> Table:
     """The rows of ``ride``.  ``given`` holds the requested inputs per row
     (``theta_deg``, ``alpha_deg``, ``v_cm_m_s``, NaN where not given), echoed
-    as typed rather than as recomputed (docs/contract.md)."""
+    as typed rather than as recomputed (docs/contract.md).  ``surface``
+    names the arena; its contact radius and wall angle are ``res``'s
+    ``rho_contact`` and ``wall_angle`` where given, else the globe's
+    (r sin(theta), 180 deg - theta).  ``stability_note``: what the
+    stability method says on the rows with an orbit when not analysed."""
     r, g, mu, max_g = run
     n = theta.size
     given = given or {}
@@ -129,6 +134,9 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
     for key in ("growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s"):
         cols[key] = np.full(n, np.nan)
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
+    if stability_note:
+        cols["stability_method"][has_orbit] = stability_note
+    _arena_columns(cols, res, surface, run.r, theta, n)
     if rows.size:
         from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, machine_stability, yaw_is_determined
         from deathsphere.physics.stability.verdict import VERDICT_LABELS
@@ -149,11 +157,24 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
     return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape, axes=axes)
 
 
+def _arena_columns(cols: dict, res: dict, surface: str, r, theta, n: int) -> None:
+    """The arena's columns, appended to the ride table (docs/contract.md):
+    the surface's name, the contact's distance from the axis [m] and the
+    wall angle from the horizontal [deg] (on the globe 180 - theta)."""
+    cols["surface"] = np.full(n, surface, dtype=object)
+    if "rho_contact" in res:
+        cols["rho_contact_m"] = np.asarray(res["rho_contact"], dtype=float).reshape(-1)
+        cols["wall_angle_deg"] = np.degrees(np.asarray(res["wall_angle"], dtype=float).reshape(-1))
+    else:
+        cols["rho_contact_m"] = np.broadcast_to(r, (n,)) * np.sin(theta)
+        cols["wall_angle_deg"] = 180.0 - np.degrees(theta)
+
+
 def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None,
          height=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
          mass=None, com_height=None, wheel_radius=None, tyre_radius=None, roll_inertia=None, pitch_inertia=None,
          yaw_inertia=None, spin_inertia=None, head_height=None, flat: bool = False, steer=None,
-         steer_torque=None) -> Table:
+         steer_torque=None, surface=None, wall_angle=None, wall_height=None) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -178,7 +199,17 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         The machine's overrides, named as the command line's options
         (``--mass`` ...), numbers in SI or text with a unit (``"16in"``):
         the machine with these replaced (:meth:`Machine.with_overrides`).
-    r, diameter : sphere radius or diameter [m] (one of them).
+    r, diameter : sphere radius or diameter [m] (one of them); on a drum or
+        a cone its radius or diameter at the floor.
+    surface, wall_angle, wall_height : str, float or str
+        The arena (docs/machine.md, "On any surface of revolution"):
+        ``"sphere"`` (the globe, default), ``"cylinder"`` (the wall of
+        death's drum) or ``"cone"`` (the well of death, its wall at
+        ``wall_angle`` degrees from the horizontal); ``wall_height`` the
+        wall's top above the floor (a lane above it is refused).  On a drum
+        or a cone the lane is given by ``height`` (theta is refused), one
+        radius, no vertical loops and no stability analysis (the columns
+        say so).
     g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
         (|contact force| / (m g), what the rider feels) allowed.
     speed : float or array_like
@@ -247,6 +278,14 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,
         pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     options = RideOptions.checked(stability=stability, summary=summary, only=only)
+    if surface is not None or wall_angle is not None or wall_height is not None:
+        ground = _arena(surface, r, diameter, wall_angle, wall_height)
+        if ground is not None:
+            from deathsphere.api import ride_surfaces
+
+            typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "vertical": vertical,
+                     "v_top": v_top, "g": g, "mu": mu, "max_g": max_g}
+            return ride_surfaces.ride_on_surface(ground, typed, body, options, sys.modules[__name__])
     vertical = checked_flag("vertical", vertical)
     if vertical and options.summary:
         raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop", "summary")
@@ -277,6 +316,17 @@ class RideOptions:
 
     def kept(self, table: Table) -> Table:
         return table if self.keep is None else table[np.isin(table["status"], self.keep)]
+
+
+def _arena(surface, r, diameter, wall_angle, wall_height):
+    """The drum or cone the keywords name (requests.arena), or None for the
+    globe, surface "sphere", which rides as it always has (a wall's keyword
+    on it is refused there)."""
+    from deathsphere.physics.ground import Sphere
+    from deathsphere.requests.arena import arena
+
+    ground = arena(surface, None if (r is R and diameter is not None) else r, diameter, wall_angle, wall_height)
+    return None if isinstance(ground, Sphere) else ground
 
 
 def _read(key: str, raw):
@@ -349,7 +399,8 @@ def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
 SINGLE_CONTACT_ONLY = ("alpha", "v_top", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
-                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
+                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
+                       "surface", "wall_angle", "wall_height")
 
 
 def refuse_single_contact(given: dict) -> None:
@@ -492,7 +543,7 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
     rows = {c: [] for c in names}
     status_all = np.asarray(table["status"]).reshape(-1)
     reason_all = np.asarray(table["reason"]).reshape(-1)
-    head_text = REASON_TEXT[Reason.HEAD_HITS]
+    head_text = (REASON_TEXT[Reason.HEAD_HITS], REASON_TEXT[Reason.HEAD_HITS_WALL])   # the globe's, a wall's
     order = np.unique(row_group)
     for gv in order:
         sel = row_group == gv
@@ -523,7 +574,7 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
         rows["limits"].append(" ".join(failed) if failed else "")
         rows["mu_available"].append(first("mu_available"))
         rows["max_g"].append(first("max_g"))
-        head = reason_all[sel] == head_text
+        head = np.isin(reason_all[sel], head_text)
         for col, (st, _) in FAILURES.items():
             hit = np.isin(status, st)
             if col == "head_hits":

@@ -78,6 +78,9 @@ def _grid(where, how, mus):
 @machine_options()
 @param_option("r")
 @param_option("diameter")
+@param_option("surface")
+@param_option("wall_angle")
+@param_option("wall_height")
 @param_option("g")
 @param_option("mu", multiple=True, help="Friction coefficient available; an orbit needing more has status "
               "slips (e.g. 0.8:1:0.1: each value a set of rows; the rider's table a row per height and value; a "
@@ -110,9 +113,9 @@ def _grid(where, how, mus):
 @output_options(FORMATS + ("parquet",))
 @units_option()
 def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
-                 roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
-                 vertical, v_top, summary, only, stability, flat, steer, steer_torque, jobs, scheduler, output,
-                 fmt, units):
+                 roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, surface,
+                 wall_angle, wall_height, g, mu, max_g, vertical, v_top, summary, only, stability, flat, steer,
+                 steer_torque, jobs, scheduler, output, fmt, units):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
     Every combination of the --theta (or --height) and --alpha (or --speed)
@@ -134,6 +137,10 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
       deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 \\
           --output ride.parquet
+      deathsphere ride --machine stunt125 --surface cylinder --diameter 32ft \\
+          --wall-height 12ft --height 5ft --speed 40km/h
+      deathsphere ride --surface cone --wall-angle 80 --diameter 32ft \\
+          --height 5ft --speed 30:80:10km/h --mu 1 --summary
       deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1
       deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1 \\
           --summary
@@ -152,8 +159,14 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     from deathsphere.api.two_wheelers import is_two_wheeler_file
     from deathsphere.api.two_wheelers import MOTORCYCLES
 
+    from deathsphere.api.ride_surfaces import names_a_wall
+
+    on_wall = names_a_wall(surface, wall_angle, wall_height)
     if flat or steer is not None or steer_torque or (machine or "").lower() in MOTORCYCLES or (
             machine_file is not None and is_two_wheeler_file(machine_file)):
+        if on_wall:
+            raise click.UsageError("a two-wheeler rides the globe only: --surface, --wall-angle and --wall-height "
+                                   "are the single-contact machine's")
         # a two-wheeler (docs/two-wheeler.md): the API refuses what it does not take
         which = machine if machine_file is None and machine is not None else machine_from_options(machine,
                                                                                                    machine_file)
@@ -188,6 +201,16 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                                   yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("max_g", max_g)) if v is not None}
     mus = _axis("mu", mu) if mu else None
+    if on_wall:
+        if (jobs is not None and str(jobs).strip() != "1") or scheduler is not None:
+            raise click.UsageError("--jobs and --scheduler spread the globe's grids: a drum's or a cone's ride is "
+                                   "computed in one process (at most 2e+06 rows)")
+        wall = {"surface": surface, "wall_angle": wall_angle, "wall_height": wall_height}
+        lane = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "vertical": vertical,
+                "v_top": v_top}
+        return _ride_on_wall(chosen, wall, setup, mu, mus, lane,
+                             {"summary": summary, "only": only, "stability": stability, "fmt": fmt,
+                              "output": output, "shown": shown})
     if vertical:
         if not theta or not v_top or height or alpha or speed or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
@@ -231,6 +254,44 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     title = f"Horizontal orbits of {chosen.name} (docs/machine.md eqs. M1-M12)"
     finish(_written(stream(chunks, fmt, label="ride", title=title,
                            view=_view("ride_view", title=title, units=shown), output=output), output))
+
+
+def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_shown: dict):
+    """``ride`` on a drum or a cone (docs/machine.md, "On any surface of
+    revolution"): the grid of heights, each --mu and the speeds or tilts,
+    computed in one API call (a lane is refused there in one line: --theta,
+    --vertical, a height above the wall) and rendered.  ``lane`` holds the
+    lane's options as typed, ``how_shown`` what to compute and how to
+    render (summary, only, stability, fmt, output, shown)."""
+    theta, height, alpha, speed, vertical, v_top = (lane[k] for k in ("theta", "height", "alpha", "speed",
+                                                                      "vertical", "v_top"))
+    summary, only, stability, fmt, output, shown = (how_shown[k] for k in ("summary", "only", "stability", "fmt",
+                                                                           "output", "shown"))
+    from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
+
+    if vertical or v_top:
+        raise click.UsageError("a vertical loop is the globe's: --vertical takes no --surface, --wall-angle or "
+                               "--wall-height")
+    if theta:
+        raise click.BadParameter("theta is the globe's polar angle: on a drum or a cone give --height (the "
+                                 "contact's height above the floor)", param_hint="'--theta'")
+    if not height:
+        raise click.UsageError("give --height (the contact's height above the floor)")
+    if alpha and speed:
+        raise click.UsageError("give --alpha or --speed, not both")
+    if not alpha and not speed:
+        raise click.UsageError("give --alpha or --speed")
+    by = ("alpha", alpha) if alpha else ("speed", speed)
+    refuse_large_grid(value_counts({"height": height, "mu": mu, by[0]: by[1]}), command="ride",
+                      limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
+    where, how, friction = _grid(_axis("height", height), _axis(*by), mus)
+    table = api.ride(height=where, **{by[0]: how}, machine=chosen, stability=stability and not summary,
+                     only=only or None, summary=summary, **wall, **friction, **setup)
+    kind = str(wall["surface"]).strip().lower()      # given: the API refuses a wall's option on the globe
+    title = (f"Feasible speeds by height on the {kind}: {chosen.name} (docs/machine.md)" if summary
+             else f"Laps of {chosen.name} on the {kind} (docs/machine.md eqs. MS1-MS7)")
+    _written(stream(pieces(table), fmt, label="ride", title=title, view=_view("ride_view", title=title, units=shown),
+                    output=output), output)
 
 
 #: Orbits evaluated per piece of the rider's table: a progress bar's step

@@ -16,9 +16,10 @@ import numpy as np
 from deathsphere.physics.ground import Sphere
 from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
 from deathsphere.physics.machine_arrays import MachineArrays
+from deathsphere.physics.machine_surface import ride_orbit_on, solve_alpha_for_speed_on
 from deathsphere.physics.status import Reason, Status
 
-__all__ = ["orbits_for_speed", "closest_tilt", "horizontal_lanes", "speed_is_feasible"]
+__all__ = ["orbits_for_speed", "closest_tilt", "horizontal_lanes", "speed_is_feasible", "orbits_for_speed_on"]
 
 
 def _flat(theta, speed, ground, g, machine: MachineArrays, *more):
@@ -105,3 +106,25 @@ def speed_is_feasible(theta, speed, ground, g, machine: MachineArrays, mu=np.inf
     feasible (docs/show.md, "Speed margin")."""
     tilts, orbit = orbits_for_speed(theta, speed, ground, g, machine, mu, max_g)
     return (np.isfinite(tilts) & (orbit["status"] == Status.OK)).any(axis=1)
+
+
+def orbits_for_speed_on(height, speed, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
+    """:func:`orbits_for_speed` on any ground (docs/machine.md, "On any
+    surface of revolution"): every tilt giving the centre of mass ``speed``
+    on the lane at ``height`` [m] ((n,) each, g, mu, max_g and the machine's
+    arrays broadcast against them; one ground for all) and
+    :func:`~deathsphere.physics.machine_surface.ride_orbit_on`'s quantities
+    at each ((n, k)); where none is: NaN, status no_orbit, reason
+    machine_no_alpha."""
+    args = np.broadcast_arrays(*(np.asarray(x, dtype=float).reshape(-1) for x in
+                                 (height, speed, g, mu, max_g, *machine)))
+    (height, speed, g, mu, max_g), m = args[:5], MachineArrays(*args[5:])
+    tilts = solve_alpha_for_speed_on(height, speed, ground, g, m)
+    rows, cols = np.nonzero(np.isfinite(tilts))
+    found = ride_orbit_on(height[rows], tilts[rows, cols], ground, g[rows], m.take(rows), mu[rows], max_g[rows])
+    empty = {"status": Status.NO_ORBIT, "reason": Reason.MACHINE_NO_ALPHA}
+    orbit = {}
+    for key, val in found.items():
+        orbit[key] = np.full(tilts.shape, empty.get(key, np.nan), dtype=val.dtype)
+        orbit[key][rows, cols] = val
+    return tilts, orbit

@@ -79,6 +79,10 @@ class Reason(IntEnum):
     TURN_SLIPS_FRONT = 46
     TURN_SLIPS_BOTH = 47
     TURN_OVER_G = 48
+    MACHINE_NO_FIT_WALL = 49
+    MACHINE_NO_CONTACT_WALL = 50
+    HEAD_HITS_WALL = 51
+    MACHINE_HITS_FLOOR = 52
 
 
 REASONS = {
@@ -134,6 +138,10 @@ REASONS = {
     Reason.TURN_SLIPS_BOTH: "both wheels need more friction than mu_available (mu_required_rear and mu_required_front "
                             "exceed it)",
     Reason.TURN_OVER_G: "the load load_g (|total contact force| / weight) exceeds the largest given (max_g)",
+    Reason.MACHINE_NO_FIT_WALL: "the wheel does not fit against the wall at this tilt (machine.md eq. MS6 needs sin(alpha + beta) (1 - t kappa) > (a - t) kappa)",
+    Reason.MACHINE_NO_CONTACT_WALL: "contact force pulls away from the wall (machine.md eq. MS5 needs r_G Omega^2 sin(beta) + g cos(beta) > 0)",
+    Reason.HEAD_HITS_WALL: "the rider's head reaches the wall at this tilt (head_clearance_m <= 0)",
+    Reason.MACHINE_HITS_FLOOR: "the tyre or the rider's head reaches the floor at this tilt (machine.md eq. MS7)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -140,6 +140,10 @@ def one_orbit_view(table: Table, units: DisplayUnits = AS_TYPED) -> FitTable:
     get = row_record(table)
     rows = quantity_rows(get, ORBIT_FIELDS, units)
     where = f"θ = {format_number(get['theta_deg'])}°, α = {format_number(get['alpha_deg'])}°"
+    if get.get("surface") not in (None, "sphere"):
+        # a drum's or a cone's lane has no theta: the wall's angle says where
+        where = (f"on the {get['surface']}, wall at {format_number(get['wall_angle_deg'])}°, "
+                 f"α = {format_number(get['alpha_deg'])}°")
     title = f"{get['machine']}, {where}\n{_setup_line(get, units=units)}"
     return quantity_table(title, {**get, **_stability_rows(get)}, rows, OK_REASON)
 

@@ -1,0 +1,113 @@
+"""``ride`` on the wall of death's drum and the well of death's cone: a
+machine's steady laps on any ground but the globe (beyond the paper;
+docs/machine.md, "On any surface of revolution" and "The wall of death").
+
+The globe stays on :mod:`deathsphere.api.rides` (its tables byte for
+byte); this module takes the lane by its height up the wall, the tilt or
+the centre of mass's speed, and gives the same columns, theta empty and the
+arena's in ``surface``, ``rho_contact_m``, ``wall_angle_deg``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from deathsphere.api.arguments import TILTS_PER_SPEED, broadcast_flat, checked_array, grid_shape, refuse_large_grid
+from deathsphere.params import ParameterError, reduce_angle, shown_number
+from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.physics.machine_lanes import orbits_for_speed_on
+from deathsphere.physics.machine_surface import ride_orbit_on
+from deathsphere.physics.status import Reason, Status
+from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks through the API)
+
+__all__ = ["ride_on_surface", "STABILITY_NOT_ON_SURFACE"]
+
+#: What the stability columns say on a drum or a cone.
+STABILITY_NOT_ON_SURFACE = ("not analysed: the machine's stability is derived on the globe only "
+                            "(docs/machine.md sec. 5)")
+
+
+def _lanes(ground, height) -> np.ndarray:
+    """The heights, each on the wall: above the ground's highest lane (its
+    wall's top, a cone's apex) refused in one line."""
+    top = ground.highest_lane
+    if np.any(height > top):
+        raise ParameterError(f"height must be at most {shown_number(top)} m on this {ground.name}, its highest "
+                             f"lane (the wall's top, or a cone's apex; got {shown_number(float(np.max(height)))} m)",
+                             "height")
+    return height
+
+
+def floor_radius(ground) -> float:
+    """The arena's radius at its floor [m]: the contact's distance from the
+    axis on the lowest lane (the ground protocol's answer, whatever the
+    ground)."""
+    rho, _ = ground.contact(np.zeros(1))
+    return float(np.asarray(rho).reshape(-1)[0])
+
+
+def ride_on_surface(ground, typed: dict, m, options, rides):
+    """``ride``'s table on ``ground`` (not the globe): ``typed`` the
+    keywords as given (height, alpha or speed, g, mu, max_g; theta is
+    refused: a lane on a wall is its height), ``m`` the machine record,
+    ``options`` the :class:`~deathsphere.api.rides.RideOptions`, ``rides``
+    the module whose table builder and rider's table it shares."""
+    if typed.get("theta") is not None:
+        raise ParameterError(f"theta is the globe's polar angle: on a {ground.name} give height (the contact's "
+                             "height above the floor)", "theta")
+    for key in ("vertical", "v_top"):
+        if typed.get(key):
+            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name}", key)
+    if typed.get("height") is None:
+        raise ParameterError(f"give height (the contact's height above the {ground.name}'s floor)", "height",
+                             missing=True)
+    if (typed.get("alpha") is None) == (typed.get("speed") is None):
+        raise ParameterError("give exactly one of alpha and speed", "alpha", missing=typed.get("alpha") is None)
+    by_speed = typed.get("speed") is not None
+    how = "speed" if by_speed else "alpha"
+    checked = {"height": checked_array("height", typed["height"]), how: checked_array(how, typed[how]),
+               **{k: checked_array(k, typed[k]) for k in ("g", "mu", "max_g")}}
+    refuse_large_grid(grid_shape(checked), command="ride", limit=rides.MAX_RIDE_ROWS,
+                      per_point=TILTS_PER_SPEED if by_speed else 1)
+    shape, flat = broadcast_flat(checked)
+    n = math.prod(shape)
+    radius = floor_radius(ground)
+    if m.wheel_radius >= radius:
+        raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a {ground.name} of radius "
+                             f"{radius:g} m at its floor (needs r > a)", "r")
+    height, g, mu, max_g = _lanes(ground, flat["height"]), flat["g"], flat["mu"], flat["max_g"]
+    arrays = machine_arrays(m)
+    if by_speed:
+        tilts, orbits = orbits_for_speed_on(height, flat["speed"], ground, g, arrays, mu, max_g)
+        reps = np.maximum(np.isfinite(tilts).sum(axis=1), 1)
+        req = np.repeat(np.arange(n), reps)
+        slot = np.arange(req.size) - np.repeat(np.cumsum(reps) - reps, reps)
+        alpha = tilts[req, slot] if tilts.shape[1] else np.full(req.size, np.nan)
+        if tilts.shape[1]:
+            res = {key: val[req, slot] for key, val in orbits.items()}
+        else:
+            res = {key: np.full(req.size, np.nan) for key in orbits}
+            res["status"] = np.full(req.size, Status.NO_ORBIT, dtype=np.int8)
+            res["reason"] = np.full(req.size, Reason.MACHINE_NO_ALPHA, dtype=np.int8)
+        given = {"v_cm_m_s": flat["speed"][req], "height_m": height[req]}
+    else:
+        req = np.arange(n)
+        alpha = np.radians(reduce_angle(flat["alpha"]))
+        res = {k: np.asarray(v).reshape(-1) for k, v in
+               ride_orbit_on(height, alpha, ground, g, arrays, mu, max_g).items()}
+        given = {"alpha_deg": flat["alpha"].astype(float), "height_m": height}
+    # every row's lane, with a tilt or not
+    rho, _ = ground.contact(height[req])
+    res["height"], res["rho_contact"] = height[req], np.asarray(rho, dtype=float)
+    res["wall_angle"] = np.asarray(ground.wall_angle(height[req]), dtype=float)
+    run = rides.RowRun(np.full(req.size, radius), g[req], mu[req], max_g[req])
+    table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=False, given=given,
+                         surface=ground.name, stability_note=STABILITY_NOT_ON_SURFACE if options.stability else "")
+    if len(table) == n and shape:
+        table = type(table)(table.columns, shape=shape)
+    if options.summary:
+        return rides.ride_summary(table, groups=rides._contact_groups(checked, shape, how),
+                                  tried="speeds" if by_speed else "tilts")
+    return options.kept(table)
