@@ -221,9 +221,12 @@ TURN_FAILURES = {"slips": "slips", "over_g": "over_g", "head_hits": "no_fit", "n
 #: at most MAX_TURN_REQUESTS of them).
 MAX_STREAMED_LANES = 1_000_000
 #: Requests (lanes x speeds) per chunk of a streamed ride, in whole lanes (at
-#: least one): a lane costs its lean curve (sec. 8.2) once, some 0.3 s, and
-#: each speed a few ms more, so a chunk is a second or two of work.
-TURN_CHUNK = 8
+#: least one): the physics is vectorised over a chunk's requests, and with
+#: the stability each costs some 0.35 ms on a grid (sec. 8.6), so a chunk is
+#: under a second of work, a step of the progress bar and of ``--jobs``;
+#: fewer, one lane of 100 speeds per chunk, made the command 2.5-3.7 times
+#: slower than one API call (benchmarks/bench_two_wheeler_ride.py).
+TURN_CHUNK = 2048
 __all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
             "turn_request", "turn_rows"]
 
