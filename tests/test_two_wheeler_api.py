@@ -236,17 +236,16 @@ def test_a_two_wheelers_grid_is_the_streamed_outer_product():
     """The API's grid of a column of heights and a row of speeds is the
     command line's outer product of its options, row for row."""
     from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
+    from deathsphere.table import Table
 
     kw = dict(KINDS["two-wheeler"], **BROADCAST, stability=False)
-    grid = deathsphere.ride(height=[[1.0], [2.0]], speed=[8.0, 10.0, 12.0], **kw)
-    streamed = two_wheeler_ride_sweep(height=[1.0, 2.0], speed=[8.0, 10.0, 12.0], chunk_size=1, **kw).table()
-    assert grid.names == streamed.names and len(grid) == len(streamed) == 6
-    for name in grid.names:
-        a, b = np.asarray(grid[name]), np.asarray(streamed[name])
-        if a.dtype.kind == "f":
-            np.testing.assert_array_equal(a, b)
-        else:
-            assert list(a) == list(b), name
+    grid = deathsphere.ride(height=[[1.0], [2.0], [1.5]], speed=[8.0, 10.0, 12.0], **kw)
+    assert len(grid) == 9 and grid.shape == (3, 3)       # one turn per request
+    for chunk_size, rows in ((1, [3, 3, 3]), (7, [6, 3])):      # a lane, then two lanes per chunk
+        chunks = list(two_wheeler_ride_sweep(height=[1.0, 2.0, 1.5], speed=[8.0, 10.0, 12.0], chunk_size=chunk_size,
+                                             **kw))
+        assert [len(t) for t in chunks] == rows
+        assert Table.concat(chunks).to_csv() == grid.to_csv()
 
 
 def test_a_two_wheelers_rider_table_has_a_row_per_lane_asked():

@@ -228,7 +228,7 @@ MAX_STREAMED_LANES = 1_000_000
 #: slower than one API call (benchmarks/bench_two_wheeler_ride.py).
 TURN_CHUNK = 2048
 __all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
-            "turn_request", "turn_rows"]
+            "TurnBatch", "turn_request", "turn_rows"]
 
 
 def _lanes(theta, height, r, limit: int = MAX_TURN_REQUESTS, shaped: bool = False) -> tuple[np.ndarray, np.ndarray,
