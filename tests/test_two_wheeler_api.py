@@ -257,3 +257,20 @@ def test_a_two_wheelers_rider_table_has_a_row_per_lane_asked():
     assert grid["height_m"].tolist() == [1.0, 2.0] and grid["speeds_tried"].tolist() == [3, 3]
     pairs = deathsphere.ride(height=[1.0, 2.0], speed=[8.0, 10.0], **kw)
     assert pairs["height_m"].tolist() == [1.0, 2.0] and pairs["speeds_tried"].tolist() == [1, 1]
+
+
+def test_both_kinds_of_machines_grid_exports_with_its_axes_as_coordinates():
+    """xarray and pandas: the grid of a column of heights and a row of
+    speeds has the heights and the speeds asked as its coordinates, for a
+    two-wheeler as for a single-contact machine; a 2-D array of heights
+    names no axis (no dimension twice)."""
+    import xarray as xr      # the dataframes extra, which the test extra installs
+    heights, speeds = [1.0, 2.0], [8.0, 10.0]
+    for kw in KINDS.values():
+        t = deathsphere.ride(height=[[h] for h in heights], speed=speeds, **kw, **BROADCAST, stability=False)
+        ds = t.to_xarray()
+        assert isinstance(ds, xr.Dataset) and ds["status"].dims == t.axes
+        assert ds[t.axes[0]].values.tolist() == heights and ds[t.axes[1]].values.tolist() == speeds
+        assert len(t.to_pandas()) == 4
+        square = deathsphere.ride(height=[[1.0, 1.5], [2.0, 2.5]], speed=10.0, **kw, **BROADCAST, stability=False)
+        assert square.to_xarray()["status"].dims == ("dim_0", "dim_1")
