@@ -58,7 +58,7 @@ def grid_chunks(axes: dict, rows: int) -> Iterator[GridChunk]:
     """The chunks of ``rows`` rows (the last may be shorter) of the outer
     product of ``axes`` (name -> :class:`~deathsphere.grid.Axis` or array),
     in row order; a caller that wants whole lines of the last axis per
-    chunk asks for a multiple of its length.  None for an empty grid."""
+    chunk asks for a multiple of its length.  An empty grid has no chunk."""
     names = list(axes)
     shape = tuple(len(axes[n]) for n in names)
     total = grid_size(axes)

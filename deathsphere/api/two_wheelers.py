@@ -336,9 +336,9 @@ class TurnRequest:
         ndim = len(self.shape)
         lane = (1,) * (ndim - self.lanes.ndim) + self.lanes.shape
         value = (1,) * (ndim - self.values.ndim) + self.values.shape
-        names = ("theta_deg" if self.by_theta else "height_m", "steer_torque_n_m" if self.by_torque
-                 else "v_contact_m_s")
-        return tuple(None if (lane[d] > 1) == (value[d] > 1) else names[value[d] > 1] for d in range(ndim))
+        at = "theta_deg" if self.by_theta else "height_m"
+        by = "steer_torque_n_m" if self.by_torque else "v_contact_m_s"
+        return tuple(None if (lane[d] > 1) == (value[d] > 1) else by if value[d] > 1 else at for d in range(ndim))
 
     def batch(self) -> TurnBatch:
         """Every request, flat in row order (a lane of the rider's table:
