@@ -25,7 +25,7 @@ import time
 
 import numpy as np
 
-from deathsphere.grid import grid_chunks
+from deathsphere.chunker import grid_chunks
 from deathsphere.model import TEXT_COLUMNS, evaluate, make_requests
 from deathsphere.writers import parquet, polars_csv
 from deathsphere.writers.stream import write_csv
@@ -37,9 +37,10 @@ def tables(rows: int):
     side = int(np.ceil(np.sqrt(rows)))
     axes = {"theta": np.linspace(0, 180, side), "alpha": np.linspace(-90, 90, side)}
     produced = 0
-    for first, grid in grid_chunks(axes, CHUNK):
+    for chunk in grid_chunks(axes, CHUNK):
         if produced >= rows:
             return
+        grid, first = chunk.values(), chunk.first
         n = min(len(grid["theta"]), rows - produced)
         yield evaluate(make_requests(n, input_row=np.arange(first + 1, first + n + 1),
                                      theta=grid["theta"][:n], alpha=grid["alpha"][:n]))

@@ -1,5 +1,5 @@
-"""Parsing values and ``start:stop:step`` ranges into lazy axes, cartesian
-grids and chunks.
+"""Parsing values and ``start:stop:step`` ranges into lazy axes, and the
+size of their cartesian grid (cut into chunks by :mod:`deathsphere.chunker`).
 
 A range includes its stop when the stop falls on the grid, as a physicist
 reads it: ``5:175:1`` is the 171 values 5, 6, ..., 175.  Value i is
@@ -8,7 +8,7 @@ reads it: ``5:175:1`` is the 171 values 5, 6, ..., 175.  Value i is
 than 0.30000000000000004 ...): inputs are echoed as given.
 
 An axis is never materialised: it is a list of segments, and a chunk of a
-grid computes only its own values.  A sweep over a 1e9-value axis therefore
+grid computes only its own values (:mod:`deathsphere.chunker`).  A sweep over a 1e9-value axis therefore
 runs in the memory of one chunk.
 """
 
@@ -185,20 +185,3 @@ def grid_size(axes: dict) -> int:
     if total > MAX_GRID_ROWS:
         raise RangeError(f"the grid has {total:.3g} orbits, more than {MAX_GRID_ROWS:.0e}")
     return total
-
-
-def grid_chunks(axes: dict, chunk: int):
-    """Yield ``(first_row, {name: values})`` over the cartesian product of
-    ``axes`` (each an :class:`Axis` or an array) in row-major order (last
-    axis fastest), ``chunk`` rows at a time.
-
-    Only one chunk is in memory at once, however large the grid.
-    """
-    names = list(axes)
-    axes = {n: a if isinstance(a, Axis) else Axis.of(a) for n, a in axes.items()}
-    shape = tuple(len(axes[n]) for n in names)
-    total = grid_size(axes)
-    for first in range(0, total, chunk):
-        flat = np.arange(first, min(first + chunk, total), dtype=np.int64)
-        index = np.unravel_index(flat, shape)
-        yield first, {n: axes[n].take(i) for n, i in zip(names, index)}

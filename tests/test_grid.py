@@ -1,10 +1,10 @@
 import numpy as np
 import pytest
 
+from deathsphere.chunker import grid_chunks
 from deathsphere.grid import (
     Axis,
     RangeError,
-    grid_chunks,
     parse_many,
     parse_segment,
     parse_values,
@@ -55,15 +55,34 @@ def test_axes_are_lazy():
     """A 5e8-value axis is never built: a chunk computes only its own values."""
     axis = Axis([parse_segment("0:1:2e-9")])
     assert len(axis) == 5 * 10**8 + 1
-    first, grid = next(grid_chunks({"theta": axis}, 4))
-    np.testing.assert_allclose(grid["theta"], [0, 2e-9, 4e-9, 6e-9])
+    chunk = next(grid_chunks({"theta": axis}, 4))
+    np.testing.assert_allclose(chunk.values()["theta"], [0, 2e-9, 4e-9, 6e-9])
     assert axis.take([5 * 10**8])[0] == 1.0
 
 
 def test_chunks_cover_the_grid_in_order():
     axes = {"theta": np.array([1.0, 2.0, 3.0]), "alpha": np.array([10.0, 20.0])}
     chunks = list(grid_chunks(axes, 4))
-    assert [first for first, _ in chunks] == [0, 4]
-    theta = np.concatenate([c["theta"] for _, c in chunks])
-    alpha = np.concatenate([c["alpha"] for _, c in chunks])
+    assert [c.first for c in chunks] == [0, 4] and [len(c) for c in chunks] == [4, 2]
+    theta = np.concatenate([c.values()["theta"] for c in chunks])
+    alpha = np.concatenate([c.values()["alpha"] for c in chunks])
     assert theta.tolist() == [1, 1, 2, 2, 3, 3] and alpha.tolist() == [10, 20] * 3
+    assert np.concatenate([c.input_row for c in chunks]).tolist() == [1, 2, 3, 4, 5, 6]
+
+
+def test_a_chunk_gives_each_axis_its_index_in_row_order():
+    """The rows of an outer product, last axis fastest: row i of a 3 x 2
+    grid is (i // 2, i % 2), whatever the chunk size, and a chunk of a
+    whole number of lines of the last axis starts a line."""
+    axes = {"lane": np.array([7.0, 8.0, 9.0]), "speed": Axis([parse_segment("1:2:1")])}
+    for rows in (1, 2, 4, 6, 100):
+        chunks = list(grid_chunks(axes, rows))
+        lane = np.concatenate([c.index["lane"] for c in chunks])
+        speed = np.concatenate([c.index["speed"] for c in chunks])
+        assert lane.tolist() == [0, 0, 1, 1, 2, 2] and speed.tolist() == [0, 1] * 3
+        assert [c.first for c in chunks] == list(range(0, 6, rows))
+    assert [c.index["speed"][0] for c in grid_chunks(axes, 4)] == [0, 0]
+
+
+def test_an_empty_axis_gives_no_chunk():
+    assert list(grid_chunks({"lane": np.empty(0), "speed": np.array([1.0])}, 4)) == []

@@ -56,6 +56,8 @@ ALLOWED = {
     "units": {"errors"},
     "params": {"units", "errors", "constants"},
     "grid": set(),
+    # the one chunker of a grid of requests: an outer product of the grid's axes
+    "chunker": {"grid"},
     # the two-wheeler's derivation written out as the numpy code the physics core ships
     "codegen": {"physics"},
     # a dask cluster is the other place parallel work can run (the distributed extra)
@@ -77,7 +79,7 @@ ALLOWED = {
     "writers": {"table", "model"},
     "render": {"table", "model", "constants", "params"},
     "viewer": {"table", "render"},
-    "api": {"physics", "model", "table", "params", "constants", "grid", "inputs", "results", "simulation",
+    "api": {"physics", "model", "table", "params", "constants", "grid", "chunker", "inputs", "results", "simulation",
             "parallel", "cluster", "units", "errors", "act", "records", "requests"},
     # the show's parts (an act of several riders) compute on the machine's physics and records
     "act": {"physics", "records", "requests", "table", "params", "units", "errors", "constants", "parallel",

@@ -133,6 +133,21 @@ def test_xarray_names_an_ambiguous_axis_dim_and_a_flat_table_row(table):
     assert flat["branch"].values[-6:-2].tolist() == [0.0, 1.0, 0.0, 1.0]
 
 
+def test_an_input_given_as_a_2d_array_names_no_axis():
+    """A producer names each axis after the one input along it (Table.axes);
+    an input that varies along both axes of a 2-D array is neither's
+    coordinate: the dimensions stay distinct, dim_0 and dim_1."""
+    height = np.array([[1.0, 1.5], [2.0, 2.5]])
+    t = Table({"height_m": height.reshape(-1), "x": np.arange(4.0)}, shape=(2, 2), axes=("height_m", "height_m"))
+    ds = t.to_xarray()
+    assert ds["x"].dims == ("dim_0", "dim_1") and not ds.coords
+    np.testing.assert_array_equal(ds["height_m"].values, height)
+    # along one axis alone it is that axis's coordinate, once
+    rows = Table({"height_m": np.repeat([1.0, 2.0], 2), "x": np.arange(4.0)}, shape=(2, 2),
+                 axes=("height_m", None))
+    assert rows.to_xarray()["x"].dims == ("height_m", "dim_1")
+
+
 def test_vertical_points_axis_is_named_after_phi():
     ds = deathsphere.vertical(90, [6, 7], points=5).to_xarray()
     # the speed changes around the loop: no input column follows the first axis alone

@@ -109,8 +109,10 @@ def test_a_bad_two_wheeler_is_refused_in_one_line(change, words):
     ({"machine": "benchmark-bicycle", "steer": "torque=abc", "theta": 90}, "steer_torque"),
     ({"machine": "benchmark-bicycle", "steer": "torque=0", "flat": True, "speed": 5}, "is for the globe"),
     ({"machine": "benchmark-bicycle", "flat": "yes", "speed": 5}, "flat must be True or False"),
-    ({"machine": "benchmark-bicycle", "steer": "free", "theta": "10:170:0.01", "speed": "1:20:0.1"},
-     "at most 30000 lanes and speeds"),
+    ({"machine": "benchmark-bicycle", "steer": "free", "theta": "10:170:0.01", "speed": [[1.0], [2.0]]},
+     "at most 30000 lanes and speeds (or torques) at once (got 2 x 16001)"),
+    ({"machine": "benchmark-bicycle", "steer": "free", "theta": [90, 100], "speed": [5, 6, 7]},
+     "cannot be broadcast together (shapes: theta (2,), speed (3,))"),
     ({"machine": "benchmark-bicycle", "flat": True, "speed": "0:100:1e-5"}, "at most 500000 values of speed"),
 ])
 def test_bad_combinations_are_refused_in_one_line(kwargs, words):
@@ -155,7 +157,7 @@ def test_steer_torque_mode_is_the_held_torque():
 
 
 def test_every_request_on_the_globe_gets_its_rows_in_order():
-    t = deathsphere.ride(machine="benchmark-bicycle", steer="locked", theta=[100.0, 0.0], r=GLOBE,
+    t = deathsphere.ride(machine="benchmark-bicycle", steer="locked", theta=[[100.0], [0.0]], r=GLOBE,
                          speed=[0.0, 8.0])
     rows = list(t["input_row"])
     assert rows == sorted(rows) and set(rows) == {1, 2, 3, 4}
@@ -178,3 +180,97 @@ def test_machines_lists_the_two_wheeler_with_its_geometry():
     assert two["wheel_base_m"][0] == 1.02 and two["trail_m"][0] == 0.08
     assert two["steer_axis_tilt_deg"][0] == pytest.approx(18.0, abs=1e-12)
     assert two["mass_kg"][0] == 94.0 and "Meijaard" in two["source"][0]
+
+
+#: The same keywords asked of the single-contact machine and of its two-wheeler.
+BROADCAST = dict(diameter="16ft")
+KINDS = {"single-contact": dict(machine="stunt125"), "two-wheeler": dict(machine="stunt125-steer", steer="free")}
+
+
+@pytest.mark.parametrize("height, speed, shape", [
+    ([1.0, 2.0], [8.0, 10.0], (2,)),                 # elementwise: two requests
+    ([[1.0], [2.0]], [8.0, 10.0], (2, 2)),           # a column and a row: their grid
+    ([1.0, 2.0], 10.0, (2,)),                        # a scalar goes with every element
+])
+def test_both_kinds_of_machine_broadcast_the_same_keywords_to_the_same_rows_and_axes(height, speed, shape):
+    """numpy's broadcasting, whatever the body: the same shape, rows and
+    axes, each axis named after the column that echoes the keyword that
+    varies along it (the height as given; the speed asked, which for a
+    two-wheeler is its rear contact's)."""
+    from deathsphere.table.frames import axis_names
+
+    tables = {kind: deathsphere.ride(height=height, speed=speed, **kw, **BROADCAST) for kind, kw in KINDS.items()}
+    single, two = tables["single-contact"], tables["two-wheeler"]
+    assert len(single) == len(two) == math.prod(shape) and single.shape == two.shape == shape
+    assert [row for row in two["input_row"]] == list(range(1, len(two) + 1))
+    asked = {"height": np.broadcast_to(np.asarray(height), shape), "speed": np.broadcast_to(np.asarray(speed), shape)}
+    for table in tables.values():
+        assert len(table.axes) == len(shape) and table.axes[0] in ("height_m", None)
+        # along an axis where only one keyword varies, the axis is its echo; where both do, neither
+        for d, name in enumerate(table.axes):
+            varies = [k for k, v in asked.items() if v.shape[d] > 1 and not np.all(v == np.take(v, [0], axis=d))]
+            if len(varies) == 1:
+                np.testing.assert_array_equal(table.grid(name), asked[varies[0]])
+            else:
+                assert name is None
+        np.testing.assert_array_equal(table.grid("height_m"), asked["height"])
+    assert axis_names(single)[0][0] == axis_names(two)[0][0]
+    assert len(axis_names(single)[0]) == len(axis_names(two)[0])
+
+
+def test_a_two_wheelers_requests_broadcast_elementwise_as_one_request_each():
+    """Row i of the broadcast call is the turn of the call with the i-th
+    height and speed alone (the same numbers, its input_row i + 1)."""
+    heights, speeds = [1.0, 2.0, 1.5], [8.0, 10.0, 9.0]
+    kw = dict(KINDS["two-wheeler"], **BROADCAST, stability=False)
+    both = deathsphere.ride(height=heights, speed=speeds, **kw)
+    assert len(both) == 3
+    for i, (h, v) in enumerate(zip(heights, speeds)):
+        alone = deathsphere.ride(height=h, speed=v, **kw)
+        for name in ("height_m", "v_rear_m_s", "lean_deg", "steer_torque_n_m", "status"):
+            assert both[i][name] == alone[0][name], name
+        assert both[i]["input_row"] == i + 1
+
+
+def test_a_two_wheelers_grid_is_the_streamed_outer_product():
+    """The API's grid of a column of heights and a row of speeds is the
+    command line's outer product of its options, row for row."""
+    from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
+    from deathsphere.table import Table
+
+    kw = dict(KINDS["two-wheeler"], **BROADCAST, stability=False)
+    grid = deathsphere.ride(height=[[1.0], [2.0], [1.5]], speed=[8.0, 10.0, 12.0], **kw)
+    assert len(grid) == 9 and grid.shape == (3, 3)       # one turn per request
+    for chunk_size, rows in ((1, [3, 3, 3]), (7, [6, 3])):      # a lane, then two lanes per chunk
+        chunks = list(two_wheeler_ride_sweep(height=[1.0, 2.0, 1.5], speed=[8.0, 10.0, 12.0], chunk_size=chunk_size,
+                                             **kw))
+        assert [len(t) for t in chunks] == rows
+        assert Table.concat(chunks).to_csv() == grid.to_csv()
+
+
+def test_a_two_wheelers_rider_table_has_a_row_per_lane_asked():
+    """summary groups the requests that differ only where the speeds vary:
+    a column of heights against a row of speeds is a row per height, each
+    over every speed; heights and speeds side by side are a row each."""
+    kw = dict(KINDS["two-wheeler"], **BROADCAST, summary=True)
+    grid = deathsphere.ride(height=[[1.0], [2.0]], speed=[8.0, 9.0, 10.0], **kw)
+    assert grid["height_m"].tolist() == [1.0, 2.0] and grid["speeds_tried"].tolist() == [3, 3]
+    pairs = deathsphere.ride(height=[1.0, 2.0], speed=[8.0, 10.0], **kw)
+    assert pairs["height_m"].tolist() == [1.0, 2.0] and pairs["speeds_tried"].tolist() == [1, 1]
+
+
+def test_both_kinds_of_machines_grid_exports_with_its_axes_as_coordinates():
+    """xarray and pandas: the grid of a column of heights and a row of
+    speeds has the heights and the speeds asked as its coordinates, for a
+    two-wheeler as for a single-contact machine; a 2-D array of heights
+    names no axis (no dimension twice)."""
+    import xarray as xr      # the dataframes extra, which the test extra installs
+    heights, speeds = [1.0, 2.0], [8.0, 10.0]
+    for kw in KINDS.values():
+        t = deathsphere.ride(height=[[h] for h in heights], speed=speeds, **kw, **BROADCAST, stability=False)
+        ds = t.to_xarray()
+        assert isinstance(ds, xr.Dataset) and ds["status"].dims == t.axes
+        assert ds[t.axes[0]].values.tolist() == heights and ds[t.axes[1]].values.tolist() == speeds
+        assert len(t.to_pandas()) == 4
+        square = deathsphere.ride(height=[[1.0, 1.5], [2.0, 2.5]], speed=10.0, **kw, **BROADCAST, stability=False)
+        assert square.to_xarray()["status"].dims == ("dim_0", "dim_1")

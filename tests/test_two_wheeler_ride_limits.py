@@ -23,9 +23,11 @@ import deathsphere
 from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
 from deathsphere.api.two_wheelers import TURN_APPENDED, TURN_COLUMNS, TURN_LIMIT_COLUMNS, turn_request
 
-#: Two lanes of a 16-foot globe and four rear speeds: slow turns there need
-#: the most friction, fast ones load the rider most.
-ASK = {"machine": "benchmark-bicycle", "steer": "free", "diameter": "16ft", "height": [0.4, 1.0],
+#: Two lanes of a 16-foot globe and four rear speeds, each lane with each
+#: speed (a column of heights and a row of speeds broadcast to their grid,
+#: as the streamed ride's outer product): slow turns there need the most
+#: friction, fast ones load the rider most.
+ASK = {"machine": "benchmark-bicycle", "steer": "free", "diameter": "16ft", "height": [[0.4], [1.0]],
        "speed": [3.0, 4.0, 11.0, 12.0]}
 
 
@@ -143,7 +145,7 @@ def test_the_hands_free_speeds_are_where_the_tables_steer_torque_changes_sign(su
 
 def test_a_streamed_request_travels_to_other_processes():
     request = turn_request("benchmark-bicycle", {"theta": [100.0, 110.0], "speed": "8:9:1", "diameter": "16ft",
-                                                "mu": 0.5})
+                                                "mu": 0.5}, streamed=True)
     again = pickle.loads(pickle.dumps(request))
     assert again.machine == request.machine and np.array_equal(again.lanes, request.lanes)
     assert (again.mu, again.max_g, again.total) == (0.5, math.inf, 4)
@@ -166,7 +168,7 @@ def test_bad_limits_and_summaries_are_refused_in_one_line(kwargs, words):
 
 def test_a_grid_too_large_to_hold_says_how_to_stream_it():
     with pytest.raises(deathsphere.ParameterError) as err:
-        deathsphere.ride(**{**ASK, "height": "0:2:0.01", "speed": "1:20:0.1"})
+        deathsphere.ride(**{**ASK, "height": np.arange(201)[:, None] * 0.01, "speed": "1:20:0.1"})
     words = str(err.value)
     assert "201 x 191" in words and "\n" not in words
     # the function it names exists
@@ -190,7 +192,7 @@ def test_a_head_that_reaches_the_globe_is_no_fit_and_counted():
     from deathsphere.physics.status import REASONS, Reason
 
     tall = replace(TWO_WHEELERS["benchmark-bicycle"], head=(0.3, -2.6), name="tall")
-    ask = dict(machine=tall, steer="free", diameter="16ft", height=[2.0, 3.0], speed=[4.0, 6.0, 8.0])
+    ask = dict(machine=tall, steer="free", diameter="16ft", height=[[2.0], [3.0]], speed=[4.0, 6.0, 8.0])
     table = deathsphere.ride(**ask, stability=False)
     turned = np.isfinite(table["lean_deg"])
     hits = turned & ~(table["head_clearance_m"] > 0)

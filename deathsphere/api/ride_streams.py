@@ -23,7 +23,8 @@ from deathsphere.api.arguments import (
 from deathsphere.records.machine_presets import as_machine
 from deathsphere.api.orbits import MAX_CHUNK_ROWS
 from deathsphere.api.rides import MAX_RIDE_ROWS, ride
-from deathsphere.api.streams import Chunks, cluster_of, evaluated, grid_requests
+from deathsphere.api.streams import Chunks, cluster_of, evaluated
+from deathsphere.chunker import grid_chunks
 from deathsphere.params import CHUNK, ParameterError
 from deathsphere.table import Table
 
@@ -97,14 +98,11 @@ def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, 
         ride(**probe, **{**fixed, "only": only, "stability": False})
     total = len(where[1]) * len(how[1])
     work = partial(_ride_chunk, **fixed)
-    batches = grid_requests(dict((where, how)), chunk_size, _ride_request, {})   # how fastest
+    # a chunk's request: its axes' values (how fastest) and the grid points before it (ride numbers its rows
+    # from 1 within the chunk)
+    batches = ((len(chunk), {**chunk.values(), "first": chunk.first})
+               for chunk in grid_chunks(dict((where, how)), chunk_size))
     return Chunks(evaluated(batches, work, jobs, cluster_of(scheduler, jobs)), total)
-
-
-def _ride_request(n: int, input_row, **axes) -> dict:
-    """A chunk's request: its axes' values and its first grid point's index
-    (ride numbers its rows from 1 within the chunk)."""
-    return {**axes, "first": int(input_row[0]) - 1 if n else 0}
 
 
 def _ride_chunk(request: dict, **fixed) -> Table:

@@ -9,9 +9,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from deathsphere.grid import (
-    grid_chunks,
-)
+from deathsphere.chunker import grid_chunks
 from deathsphere.model import (
     evaluate,
 )
@@ -72,12 +70,10 @@ class Chunks:
 
 def grid_requests(axes: dict, chunk_size: int, make, fixed: dict) -> Iterator[tuple[int, dict]]:
     """``(n, requests)`` per chunk of the grid of ``axes``, numbered from 1 in
-    grid order (last axis fastest): the one chunker of a grid of requests,
-    whatever command's (``make`` builds a chunk's request from its axes'
-    values and ``input_row``)."""
-    for first, grid in grid_chunks(axes, chunk_size):
-        n = len(next(iter(grid.values())))
-        yield n, make(n, input_row=np.arange(first + 1, first + n + 1), **fixed, **grid)
+    grid order (last axis fastest), cut by :func:`deathsphere.chunker.grid_chunks`
+    (``make`` builds a chunk's request from its axes' values and ``input_row``)."""
+    for chunk in grid_chunks(axes, chunk_size):
+        yield len(chunk), make(len(chunk), input_row=chunk.input_row, **fixed, **chunk.values())
 
 
 def evaluated(batches, work, jobs: int = 1, cluster=None) -> Iterator[tuple[int, Table]]:

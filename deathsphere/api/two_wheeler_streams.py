@@ -8,11 +8,13 @@ from __future__ import annotations
 
 from functools import partial
 
+import numpy as np
+
 from deathsphere.api.arguments import INF, G, R, checked_scalar
 from deathsphere.api.rides import SINGLE_CONTACT_ONLY, refuse_single_contact
 from deathsphere.api.streams import Chunks, cluster_of, evaluated
-from deathsphere.api.two_wheelers import TURN_CHUNK, TURN_KEYS, TurnRequest, turn_request, turn_rows
-from deathsphere.table import Table
+from deathsphere.api.two_wheelers import TURN_CHUNK, TURN_KEYS, TurnBatch, TurnRequest, turn_request, turn_rows
+from deathsphere.chunker import grid_chunks
 
 
 def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
@@ -32,10 +34,13 @@ def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, stee
     Returns
     -------
     Chunks
-        Together the rows that one :func:`deathsphere.ride` call gives
-        (the same whatever ``chunk_size``, ``jobs`` or ``scheduler``), up to
-        MAX_STREAMED_LANES lanes of MAX_TURN_REQUESTS speeds each rather than
-        MAX_TURN_REQUESTS lanes x speeds.
+        The rows of every lane with every speed (or torque), their outer
+        product in row order, the speeds fastest, as the command line's
+        options give them: together those of one :func:`deathsphere.ride`
+        call with a column of lanes and a row of speeds (the API
+        broadcasts), the same whatever ``chunk_size``, ``jobs`` or
+        ``scheduler``; up to MAX_STREAMED_LANES lanes of MAX_TURN_REQUESTS
+        speeds each rather than MAX_TURN_REQUESTS requests.
 
     Raises
     ------
@@ -60,19 +65,23 @@ def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, stee
     request = turn_request(machine, typed, streamed=True)
     chunk_size = int(checked_scalar("chunk_size", chunk_size))
     jobs = int(checked_scalar("jobs", jobs))
-    per_chunk = max(1, chunk_size // max(1, request.values.size))
-    return Chunks(evaluated(_lane_chunks(request, per_chunk), partial(_lanes_chunk, request=request), jobs,
-                            cluster_of(scheduler, jobs)), request.total)
+    width = request.values.size
+    # whole lanes per chunk: a lane's lean curve is found once, and its rider's table row sees all its speeds
+    rows = max(1, chunk_size // max(1, width)) * max(1, width)
+    return Chunks(evaluated(_batches(request, rows), partial(turn_rows, request), jobs, cluster_of(scheduler, jobs)),
+                  request.total)
 
 
-def _lane_chunks(request: TurnRequest, per_chunk: int):
-    """``(requests, (first, stop))`` per chunk of ``per_chunk`` lanes."""
-    lanes, width = request.lanes.size, request.values.size
-    for first in range(0, lanes, per_chunk):
-        stop = min(first + per_chunk, lanes)
-        yield (stop - first) * width, (first, stop)
-
-
-def _lanes_chunk(bounds: tuple[int, int], request: TurnRequest) -> Table:
-    """The rows (or rider's table) of the lanes ``first:stop``."""
-    return turn_rows(request, *bounds)
+def _batches(request: TurnRequest, rows: int):
+    """``(requests, batch)`` per chunk of ``rows`` requests of the lanes x
+    values, in row order (:func:`deathsphere.chunker.grid_chunks`)."""
+    lanes, given = request.lanes.reshape(-1), request.lanes_given.reshape(-1)
+    if request.total == 0:
+        # nothing asked for: one empty table, so that the output still has its columns
+        empty = np.empty(0, dtype=np.int64)
+        yield 0, TurnBatch(lane=lanes[empty], given=given[empty], value=request.values[empty], first=0, group=empty)
+        return
+    for chunk in grid_chunks({"lane": lanes, "value": request.values}, rows):
+        lane = chunk.index["lane"]
+        yield len(chunk), TurnBatch(lane=lanes[lane], given=given[lane], value=request.values[chunk.index["value"]],
+                                    first=chunk.first, group=lane - lane[0])

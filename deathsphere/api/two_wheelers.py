@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from deathsphere.api.arguments import (INF, G, R, checked_array, checked_axis, checked_flag, checked_statuses,
-                                       sphere_radius)
+                                       grid_shape, sphere_radius)
 from deathsphere.api.machines import PRESETS
 from deathsphere.params import ParameterError, shown_number
 from deathsphere.physics.ground import Plane, Sphere
@@ -117,27 +117,39 @@ def _eig_cols(values, k) -> dict:
     return cols
 
 
-def _values(name: str, value, limit: int, option: str | None = None) -> np.ndarray:
-    """The values asked for (values, ranges, units) as one flat array,
-    refused before they are built when there are more than ``limit``."""
+def _values(name: str, value, limit: int, option: str | None = None, shaped: bool = False) -> np.ndarray:
+    """The values asked for (values, ranges, units) as one flat array, or
+    with ``shaped`` in the shape they were given (numbers and arrays keep
+    theirs, to broadcast; text, a range or a list holding one, is a line of
+    values), refused before they are built when there are more than ``limit``."""
     option = option or name
     if isinstance(value, (list, tuple, np.ndarray)) and np.size(value) == 0:
         return np.empty(0)      # none asked for: no row, as deathsphere.orbit answers an empty list
+    text = isinstance(value, str) or (isinstance(value, (list, tuple))
+                                      and any(isinstance(v, str) for v in np.ravel(np.asarray(value, dtype=object))))
     try:
-        axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
+        if shaped and not (text and ":" in str(value)):
+            values = checked_array(name, value)
+        else:
+            axis = checked_axis(name, value if isinstance(value, (str, list, tuple)) else np.asarray(value))
+            if len(axis) > limit:
+                values = None
+            else:
+                values = np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
     except ParameterError as exc:
         raise ParameterError(str(exc).replace(name, option, 1), option) from None
-    if len(axis) > limit:
-        raise ParameterError(f"a two-wheeler takes at most {limit} values of {option} at once (got {len(axis)}): "
+    count = len(axis) if values is None else values.size
+    if count > limit:
+        raise ParameterError(f"a two-wheeler takes at most {limit} values of {option} at once (got {count}): "
                              "split the range", option)
-    return np.asarray(axis.take(np.arange(len(axis))), dtype=float).reshape(-1)
+    return values
 
 
-def _speeds(speed, limit: int) -> np.ndarray:
+def _speeds(speed, limit: int, shaped: bool = False) -> np.ndarray:
     """The rear contact's speeds asked for."""
     if speed is None:
         raise ParameterError("give speed: the rear contact's speed(s) in m/s", "speed", missing=True)
-    return _values("rear_speed", speed, limit, "speed")
+    return _values("rear_speed", speed, limit, "speed", shaped)
 
 
 def _straight_eigenvalues(m, v, steer: str) -> np.ndarray:
@@ -210,24 +222,29 @@ TURN_FAILURES = {"slips": "slips", "over_g": "over_g", "head_hits": "no_fit", "n
 #: at most MAX_TURN_REQUESTS of them).
 MAX_STREAMED_LANES = 1_000_000
 #: Requests (lanes x speeds) per chunk of a streamed ride, in whole lanes (at
-#: least one): a lane costs its lean curve (sec. 8.2) once, some 0.3 s, and
-#: each speed a few ms more, so a chunk is a second or two of work.
-TURN_CHUNK = 8
+#: least one): the physics is vectorised over a chunk's requests, and with
+#: the stability each costs some 0.35 ms on a grid (sec. 8.6), so a chunk is
+#: under a second of work, a step of the progress bar and of ``--jobs``;
+#: fewer, one lane of 100 speeds per chunk, made the command 2.5-3.7 times
+#: slower than one API call (benchmarks/bench_two_wheeler_ride.py).
+TURN_CHUNK = 2048
 __all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
-            "turn_request", "turn_rows"]
+            "TurnBatch", "turn_request", "turn_rows"]
 
 
-def _lanes(theta, height, r, limit: int = MAX_TURN_REQUESTS) -> tuple[np.ndarray, np.ndarray, bool]:
-    """The rear contacts' theta (rad) asked for, and their values as given."""
+def _lanes(theta, height, r, limit: int = MAX_TURN_REQUESTS, shaped: bool = False) -> tuple[np.ndarray, np.ndarray,
+                                                                                             bool]:
+    """The rear contacts' theta (rad) asked for, and their values as given
+    (flat, or with ``shaped`` in the shape given: see :func:`_values`)."""
     if (theta is None) == (height is None):
         raise ParameterError("give exactly one of theta and height (the rear contact's height above the floor)",
                              "theta", missing=theta is None)
     if theta is not None:
-        given = _values("theta", theta, limit)
+        given = _values("theta", theta, limit, shaped=shaped)
         return np.radians(given), given, True
-    given = _values("height", height, limit)
+    given = _values("height", height, limit, shaped=shaped)
     if np.any(given > 2 * r):
-        bad = float(given[np.argmax(given > 2 * r)])
+        bad = float(given.reshape(-1)[np.argmax(given.reshape(-1) > 2 * r)])
         raise ParameterError(f"height (contact height) must be at most the globe's diameter {2 * r:g} m "
                              f"(got {shown_number(bad)})", "height")
     return np.arccos(np.clip(given / r - 1.0, -1.0, 1.0)), given, False
@@ -280,9 +297,12 @@ def _gravity(g) -> float:
 @dataclass(frozen=True, eq=False)
 class TurnRequest:
     """A checked request of ``ride --steer`` (:func:`turn_request`): the
-    lanes (the rear contact's theta, rad, and as given), the rear speeds or
-    steer torques tried at each, the globe, the limits and what to give.
-    :func:`turn_rows` answers it lane by lane."""
+    lanes (the rear contact's theta, rad, and as given) and the rear speeds
+    or steer torques tried there, arrays that broadcast together to
+    :attr:`shape` (one request per element, as :func:`deathsphere.ride`
+    broadcasts; a streamed request's are a column of lanes and a row of
+    values, their outer product), the globe, the limits and what to give.
+    :func:`turn_rows` answers it, whole or a :class:`TurnBatch` at a time."""
 
     machine: TwoWheeler
     g: float
@@ -300,9 +320,62 @@ class TurnRequest:
     only: tuple | None = None
 
     @property
+    def shape(self) -> tuple[int, ...]:
+        """The requests' shape: the lanes' and the values' broadcast together."""
+        return np.broadcast_shapes(self.lanes.shape, self.values.shape)
+
+    @property
     def total(self) -> int:
-        """The requests: lanes x speeds (or torques)."""
-        return self.lanes.size * self.values.size
+        """The requests (lanes x speeds, or torques, for a streamed one)."""
+        return math.prod(self.shape)
+
+    @property
+    def axes(self) -> tuple[str | None, ...]:
+        """The column that echoes the one input varying along each axis of
+        :attr:`shape` (None where both or neither vary): a grid's axes, as
+        :func:`deathsphere.ride` names a single-contact machine's."""
+        ndim = len(self.shape)
+        lane = (1,) * (ndim - self.lanes.ndim) + self.lanes.shape
+        value = (1,) * (ndim - self.values.ndim) + self.values.shape
+        at = "theta_deg" if self.by_theta else "height_m"
+        by = "steer_torque_n_m" if self.by_torque else "v_contact_m_s"
+        return tuple(None if (lane[d] > 1) == (value[d] > 1) else by if value[d] > 1 else at for d in range(ndim))
+
+    def batch(self) -> TurnBatch:
+        """Every request, flat in row order (a lane of the rider's table:
+        the requests that differ only along the axes where the values alone
+        vary, as a single-contact machine's contact point)."""
+        shape, ndim = self.shape, len(self.shape)
+        lane = np.broadcast_to(self.lanes, shape).reshape(-1)
+        if ndim == 0:
+            group = np.zeros(1, dtype=np.int64)
+        else:
+            padded = (1,) * (ndim - self.lanes.ndim) + self.lanes.shape
+            index = np.indices(shape).reshape(ndim, -1)
+            index[[d for d in range(ndim) if padded[d] == 1]] = 0
+            _, first, group = np.unique(np.ravel_multi_index(index, shape), return_index=True, return_inverse=True)
+            rank = np.empty(first.size, dtype=np.int64)
+            rank[np.argsort(first, kind="stable")] = np.arange(first.size)   # in the order asked
+            group = rank[group.reshape(-1)]
+        return TurnBatch(lane=lane, given=np.broadcast_to(self.lanes_given, shape).reshape(-1),
+                         value=np.broadcast_to(self.values, shape).reshape(-1), first=0, group=group)
+
+
+@dataclass(frozen=True, eq=False)
+class TurnBatch:
+    """Requests of a :class:`TurnRequest`, flat: each one's lane (rad), the
+    lane as given and its speed or torque; ``first`` the requests before
+    them (their ``input_row`` continues from it) and ``group`` each one's
+    lane in the rider's table (0, 1, ... in order)."""
+
+    lane: np.ndarray
+    given: np.ndarray
+    value: np.ndarray
+    first: int
+    group: np.ndarray
+
+    def __len__(self) -> int:
+        return self.lane.size
 
 
 #: ``ride --steer``'s keys and their defaults (a key not given: its default).
@@ -314,10 +387,11 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
     """``ride --steer``'s request from its keys as typed (:data:`TURN_KEYS`,
     those of :func:`deathsphere.ride` for a two-wheeler), checked, every
     value, before any work: a bad one raises
-    :class:`~deathsphere.ParameterError` in one line.  At most
-    MAX_TURN_REQUESTS lanes x speeds at once, or ``streamed`` (the lanes
-    answered a chunk at a time) MAX_STREAMED_LANES lanes of at most
-    MAX_TURN_REQUESTS speeds each."""
+    :class:`~deathsphere.ParameterError` in one line.  The lanes and the
+    speeds (or torques) broadcast together, as :func:`deathsphere.ride`'s
+    arguments, to at most MAX_TURN_REQUESTS requests; ``streamed`` (answered
+    a chunk at a time): every lane with every value, their outer product,
+    MAX_STREAMED_LANES lanes of at most MAX_TURN_REQUESTS values each."""
     unknown = sorted(set(typed) - set(TURN_KEYS))
     if unknown:
         raise TypeError(f"turn_request() got an unexpected key {unknown[0]!r}")
@@ -334,19 +408,26 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         # no lane of this globe has room for the wheel: refused as a single-contact machine's wheel is
         raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in a sphere of "
                              f"radius {r:g} m (needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
-    lane, lane_given, by_theta = _lanes(theta, height, r, MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS)
+    lane, lane_given, by_theta = _lanes(theta, height, r, MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS,
+                                        shaped=not streamed)
     if speed is not None and steer_torque is not None:
         raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
     by_torque = steer_torque is not None
     if speed is None and steer_torque is None:
         raise ParameterError("give speed (the rear contact's, m/s) or steer_torque (N m; 0: hands-free)", "speed")
-    value = _values("steer_torque", steer_torque, MAX_TURN_REQUESTS) if by_torque else _speeds(speed, MAX_TURN_REQUESTS)
-    if not streamed and lane.size * value.size > MAX_TURN_REQUESTS:
-        raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes and "
-                             f"speeds (or torques) at once (got {lane.size} x {value.size}): split the grid, or "
-                             "stream it a few lanes at a time with deathsphere.api.two_wheeler_streams."
-                             "two_wheeler_ride_sweep (what 'deathsphere ride --steer' runs; --jobs N)",
-                             "steer_torque" if by_torque else "speed")
+    value = (_values("steer_torque", steer_torque, MAX_TURN_REQUESTS, shaped=not streamed) if by_torque
+             else _speeds(speed, MAX_TURN_REQUESTS, shaped=not streamed))
+    if streamed:
+        # every lane with every value: a column of lanes and a row of values broadcast to their outer product
+        lane, lane_given = lane[:, None], lane_given[:, None]
+    else:
+        shape = grid_shape({"theta" if by_theta else "height": lane, "steer_torque" if by_torque else "speed": value})
+        if math.prod(shape) > MAX_TURN_REQUESTS:
+            raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes "
+                                 f"and speeds (or torques) at once (got {' x '.join(map(str, shape))}): split the "
+                                 "grid, or stream it a few lanes at a time with deathsphere.api.two_wheeler_streams."
+                                 "two_wheeler_ride_sweep (what 'deathsphere ride --steer' runs; --jobs N)",
+                                 "steer_torque" if by_torque else "speed")
     stability, summary = checked_flag("stability", stability), checked_flag("summary", summary)
     if summary and by_torque:
         raise ParameterError("the rider's table (summary) is over rear speeds: give speed, not steer_torque (it "
@@ -364,18 +445,20 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
                        only=None if keep is None else tuple(keep))
 
 
-def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> Table:
-    """Every steady turn at the lanes ``first:stop`` of ``request`` and each
-    of its speeds or steer torques, one row each, and its stability
-    (docs/two-wheeler.md sec. 8); ``input_row`` numbers the whole request.
-    With ``summary``: the rider's table of those lanes instead."""
+def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
+    """Every steady turn of the requests ``batch`` (None: the whole
+    ``request``) at its lane and speed or steer torque, one row each, and
+    its stability (docs/two-wheeler.md sec. 8); ``input_row`` numbers the
+    whole request.  The whole request's table keeps its :attr:`~TurnRequest.shape`
+    and axes when each request has one row, as :func:`deathsphere.ride`'s.
+    With ``summary``: the rider's table of the batch's lanes instead."""
     from deathsphere.physics.two_wheeler import stability as tw_stability
     from deathsphere.physics.two_wheeler import steady
 
     t, r, steer = request.machine, request.r, request.steer
-    stop = request.lanes.size if stop is None else stop
-    lanes, values = (x.reshape(-1) for x in np.meshgrid(request.lanes[first:stop], request.values, indexing="ij"))
-    given = np.repeat(request.lanes_given[first:stop], request.values.size)
+    whole = batch is None
+    batch = request.batch() if whole else batch
+    lanes, values, given = batch.lane, batch.value, batch.given
     by_theta, by_torque = request.by_theta, request.by_torque
     p, globe = t.parameters(), Sphere(r)
     kwargs = {"torque": values} if by_torque else {"speed": values}
@@ -403,7 +486,7 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     with np.errstate(divide="ignore"):
         period = np.where(has, 2 * np.pi / np.abs(np.where(omega == 0, np.nan, omega)), np.nan)
     cols = {
-        "input_row": req + 1 + first * request.values.size, "machine": np.full(n, t.name, dtype=object),
+        "input_row": req + 1 + batch.first, "machine": np.full(n, t.name, dtype=object),
         "theta_deg": given[req] if by_theta else np.degrees(th), "alpha_deg": np.where(has, alpha, np.nan),
         "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
         "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, request.g),
@@ -447,8 +530,10 @@ def turn_rows(request: TurnRequest, first: int = 0, stop: int | None = None) -> 
     appended = {"stability_kind": tw_stability.kind(ev), "lean_wall_deg": cols["lean_surface_deg"],
                 "lean_vertical_deg": cols["lean_deg"]}
     table = Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k) | limits | appended)
+    if whole and n == lanes.size and request.shape:   # one row per request: a grid keeps its shape
+        table = Table(table.columns, shape=request.shape, axes=request.axes)
     if request.summary:
-        return _turn_summary(request, table, first, stop)
+        return _turn_summary(request, table, batch)
     return table if request.only is None else table[np.isin(table["status"], request.only)]
 
 
@@ -474,14 +559,15 @@ def _speed_list(speeds) -> str:
     return " ".join(repr(float(v)) for v in np.sort(speeds))
 
 
-def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> Table:
-    """The rider's table of the lanes ``first:stop`` (one row each) from
+def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table:
+    """The rider's table of the lanes of ``batch`` (one row each) from
     their rows ``table``: as ride's rider's table (docs/machine.md sec. 8)
     over the rear speeds tried, then the stable speeds, the steer torque
     and the lane's hands-free turns (docs/two-wheeler.md sec. 10)."""
-    n_values = request.values.size
     rq = np.asarray(table["input_row"], dtype=np.int64) - 1
-    lane_of = rq // n_values - first
+    lane_of = batch.group[rq - batch.first]
+    tried = np.bincount(batch.group, minlength=int(batch.group.max(initial=-1)) + 1)
+    heads = np.unique(batch.group, return_index=True)[1]      # each lane's first request
     status = np.asarray(table["status"]).astype(str)
     ok = status == "ok"
     steady = np.asarray(table["stability"]).astype(str) == "stable"
@@ -489,10 +575,10 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
     # stable turns the rider cannot take: they slip or load past max_g
     beyond = steady & np.isin(status, BEYOND_LIMITS)
     mu_needed = np.fmax(table["mu_required_rear"], table["mu_required_front"])
-    lanes = request.lanes[first:stop]
+    lanes, lanes_given = batch.lane[heads], batch.given[heads]
     free = _hands_free(request, lanes)
     rows = {c: [] for c in TURN_SUMMARY_COLUMNS}
-    for i in range(stop - first):
+    for i in range(heads.size):
         sel = lane_of == i
         on, fine, calm = rq[sel], ok[sel], stable[sel]
 
@@ -500,11 +586,11 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
             vals = (np.asarray(table[col], dtype=float) if values is None else values)[sel][mask]
             return float(fn(vals)) if vals.size else math.nan
 
-        theta = float(request.lanes_given[first + i]) if request.by_theta else math.degrees(lanes[i])
+        theta = float(lanes_given[i]) if request.by_theta else math.degrees(lanes[i])
         rows["height_m"].append(request.r * (1 + math.cos(lanes[i])) if request.by_theta
-                                else float(request.lanes_given[first + i]))
+                                else float(lanes_given[i]))
         rows["theta_deg"].append(theta)
-        rows["speeds_tried"].append(n_values)
+        rows["speeds_tried"].append(int(tried[i]))
         rows["speeds_ok"].append(int(np.unique(on[fine]).size))
         for lo, hi, col in (("v_rear_min_m_s", "v_rear_max_m_s", "v_rear_m_s"),
                             ("lean_min_deg", "lean_max_deg", "lean_deg"), ("load_min_g", "load_max_g", "load_g"),
@@ -563,9 +649,16 @@ def two_wheeler_ride(machine, typed: Mapping) -> Table:
     friction than ``mu`` at either wheel has status ``slips``, one loading
     the rider more than ``max_g`` (load_g) ``over_g``; ``summary`` gives the
     rider's table, a row per lane (:data:`TURN_SUMMARY_COLUMNS`); ``only``
-    keeps the turns of those statuses (ride's ``only``).  At most
-    MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
-    <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more.
+    keeps the turns of those statuses (ride's ``only``).  The lanes (theta
+    or height) and the speeds (or torques) broadcast as numpy arrays, as a
+    single-contact machine's do: ``height=[1, 2], speed=[8, 10]`` is two
+    requests, a column of heights and a row of speeds their grid, whose
+    table keeps its shape and axes (``table.shape``, ``to_xarray()``) when
+    each request has one row; text (``"5:10:0.5"``, ``"16ft"``) is a line
+    of values.  At most MAX_TURN_REQUESTS requests:
+    :func:`two_wheeler_ride_sweep
+    <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams
+    the outer product of more, as the command line does.
     ``typed``: :func:`deathsphere.ride`'s keys for a two-wheeler
     (:data:`RIDE_KEYS`; one not given: its default)."""
     unknown = sorted(set(typed) - set(RIDE_KEYS))

@@ -126,14 +126,20 @@ def pandas_frame(arrow, like, method: str = "Table.to_pandas"):
     return frame.astype(exact) if exact else frame
 
 
-def _varies_along(values: np.ndarray) -> int | None:
-    """The one axis a grid of values changes along (None: none, or several)."""
+def _varied_axes(values: np.ndarray) -> list[int]:
+    """The axes a grid of values changes along."""
     axes = []
     for d in range(values.ndim):
         first = np.take(values, [0], axis=d)
         same = (values == first) | (np.isnan(values) & np.isnan(first))
         if not same.all():
             axes.append(d)
+    return axes
+
+
+def _varies_along(values: np.ndarray) -> int | None:
+    """The one axis a grid of values changes along (None: none, or several)."""
+    axes = _varied_axes(values)
     return axes[0] if len(axes) == 1 else None
 
 
@@ -147,7 +153,9 @@ def axis_names(table) -> tuple[list[str], dict[str, int]]:
     """The dimension names of a grid table and the columns that become its
     coordinates (column -> axis): an axis along which exactly one input
     column of :data:`AXIS_COLUMNS` varies, and nothing else of them, is
-    named after it; any other axis is ``dim_<i>``."""
+    named after it, or after the input its producer names
+    (:attr:`~Table.axes`) where that column varies along it alone; any
+    other axis is ``dim_<i>``, and no name is given twice."""
     shape = table.shape
     named = table.axes or (None,) * len(shape)
     along: dict[int, list[str]] = {}
@@ -163,7 +171,10 @@ def axis_names(table) -> tuple[list[str], dict[str, int]]:
             dims[d] = names[0]
             coords[names[0]] = d
     for d, name in enumerate(named):
-        if name is not None and name in table and _varies_along(table.grid(name)) in (d, None):
+        # the producer's name, where its column is that axis's coordinate: it changes along that axis alone
+        # (or nowhere), and names no other (an input given as a 2-D array varies along both: neither is it)
+        if name is not None and name in table and name not in coords and \
+                _varied_axes(table.grid(name)) in ([d], []):
             dims[d] = name
             coords[name] = d
     return dims, coords
