@@ -79,6 +79,7 @@ class Reason(IntEnum):
     TURN_SLIPS_FRONT = 46
     TURN_SLIPS_BOTH = 47
     TURN_OVER_G = 48
+    CONTACT_ON_AXIS = 49
 
 
 REASONS = {
@@ -134,6 +135,8 @@ REASONS = {
     Reason.TURN_SLIPS_BOTH: "both wheels need more friction than mu_available (mu_required_rear and mu_required_front "
                             "exceed it)",
     Reason.TURN_OVER_G: "the load load_g (|total contact force| / weight) exceeds the largest given (max_g)",
+    Reason.CONTACT_ON_AXIS: "the contact is on the vertical axis (theta 0 or 180 deg): it does not move on any "
+                            "orbit so no contact speed holds one (give com_speed or alpha)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.
