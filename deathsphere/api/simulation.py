@@ -377,7 +377,7 @@ def _machine_tilt_for(m, theta: float, speed: float, branch, r: float, g: float)
     those eq. M12 gives (as ``ride`` lists them)."""
     from deathsphere.api.rides import ride
 
-    rows = ride(theta, speed=speed, machine=m, r=r, g=g, stability=False)
+    rows = ride(theta, com_speed=speed, machine=m, r=r, g=g, stability=False)
     tilts = np.sort(np.asarray(rows["alpha_deg"], dtype=float))
     tilts = tilts[np.isfinite(tilts)]
     if not tilts.size:

@@ -74,7 +74,13 @@ def _grid(where, how, mus):
 @param_option("height", multiple=True)
 @param_option("alpha", multiple=True, help="Tilt of the machine's up-axis above the orbit plane (lean from "
               "the vertical = 90 - alpha).")
-@param_option("speed", multiple=True, help="Speed of the centre of mass; every tilt giving it, one row each.")
+@param_option("speed", multiple=True, help="The contact's speed along the ground, what a speedometer reads (a "
+              "two-wheeler's: the rear contact's); it fixes the lap rate, Omega = speed / (r sin theta); every tilt "
+              "giving it, one row each.")
+@param_option("com_speed", multiple=True, help="The centre of mass's speed instead of --speed; every tilt giving it, "
+              "one row each.")
+@param_option("period", multiple=True, help="The lap time instead of --speed (e.g. 1.3s), Omega = 2 pi / T; every "
+              "tilt giving it, one row each.")
 @machine_options()
 @param_option("r")
 @param_option("diameter")
@@ -109,15 +115,17 @@ def _grid(where, how, mus):
              "of stdout.  Parquet needs the fast extra.")
 @output_options(FORMATS + ("parquet",))
 @units_option()
-def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
+def ride_command(theta, height, alpha, speed, com_speed, period, machine, machine_file, mass, com_height, a, tyre_radius,
                  roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, g, mu, max_g,
                  vertical, v_top, summary, only, stability, flat, steer, steer_torque, jobs, scheduler, output,
                  fmt, units):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
-    Every combination of the --theta (or --height) and --alpha (or --speed)
-    values.  Each row: the orbit rate and period, the speed of the centre of
-    mass and of the contact, the wheels' spin, the force on the tyre (normal,
+    Every combination of the --theta (or --height) and --alpha (or --speed,
+    --com-speed, --period) values; --speed is the contact's (a
+    speedometer's), --com-speed the centre of mass's.  Each row: the orbit
+    rate and period, the speed of the centre of mass and of the contact, the
+    wheels' spin, the force on the tyre (normal,
     friction, mu needed), the load the rider feels (load_g) and the clearance
     of the rider's head from the globe (docs/machine.md).  An unsteered
     machine is expected to be unstable on most orbits: a rider steers.
@@ -125,6 +133,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     \b
     Examples:
       deathsphere ride --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere ride --height 5ft --period 1.3s --diameter 16ft
+      deathsphere ride --height 5ft --com-speed 30km/h --diameter 16ft
       deathsphere ride --height 1.2m --alpha 10:30:5 --machine benchmark-bicycle
       deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
@@ -162,7 +172,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                          spin_inertia=spin_inertia, head_height=head_height)
         lists = {k: list(v) for k, v in (("theta", theta), ("height", height), ("speed", speed),
                                          ("steer_torque", steer_torque), ("alpha", alpha), ("v_top", v_top),
-                                         ("mu", mu)) if v}
+                                         ("com_speed", com_speed), ("period", period), ("mu", mu)) if v}
         given = dict(machine=which, steer=steer, summary=summary, stability=stability, only=only or None,
                      vertical=vertical, **lists, **setup_of(r, diameter, g, max_g),
                      **{k: v for k, v in overrides.items() if v is not None})
@@ -189,7 +199,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     setup = {k: v for k, v in (("r", r), ("diameter", diameter), ("g", g), ("max_g", max_g)) if v is not None}
     mus = _axis("mu", mu) if mu else None
     if vertical:
-        if not theta or not v_top or height or alpha or speed or summary:
+        if not theta or not v_top or height or alpha or speed or com_speed or period or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
         refuse_large_grid(value_counts({"theta": theta, "mu": mu, "v_top": v_top}), command="ride --vertical",
                           limit=api.rides.MAX_RIDE_ROWS)
@@ -204,16 +214,18 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --theta or --height, not both")
     if not theta and not height:
         raise click.UsageError("give --theta or --height (the contact's height above the floor)")
-    if alpha and speed:
-        raise click.UsageError("give --alpha or --speed, not both")
-    if not alpha and not speed:
-        raise click.UsageError("give --alpha or --speed")
-    at, by = ("theta", theta) if theta else ("height", height), ("alpha", alpha) if alpha else ("speed", speed)
+    holds = [(name, values) for name, values in (("alpha", alpha), ("speed", speed), ("com_speed", com_speed),
+                                                 ("period", period)) if values]
+    if len(holds) != 1:
+        typed = f"--{holds[1][0].replace('_', '-')}: " if holds else ""
+        raise click.UsageError(f"{typed}give exactly one of --alpha, --speed (the contact's), --com-speed (the "
+                               "centre of mass's) and --period (the lap time)")
+    at, by = ("theta", theta) if theta else ("height", height), holds[0]
     if summary or (mus is not None and mus.size > 1):
         # the rider's table and a range of mu keep the request's grid in memory (grouped by request)
-        refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, "alpha": alpha,
-                                        "speed": speed}),
-                          command="ride", limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
+        refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, by[0]: by[1]}),
+                          command="ride", limit=api.rides.MAX_RIDE_ROWS,
+                          per_point=TILTS_PER_SPEED if by[0] != "alpha" else 1)
         where, how, friction = _grid(_axis(*at), _axis(*by), mus)
         kwargs = dict(machine=chosen, stability=stability and not summary, only=only or None, summary=summary,
                       **friction, **setup)
