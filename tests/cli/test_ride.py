@@ -158,3 +158,18 @@ def test_the_speed_options_one_at_a_time_naming_the_one_typed(run):
     assert res.exit_code == 2 and "--period" in res.output and "a time in s or min" in res.output
     (row,) = _rows(run("ride", "--height", "5ft", "--period", "1.3s", "--diameter", "16ft", "--format", "csv").stdout)
     assert row["period_s"] == "1.3" and row["status"] == "ok"
+
+
+def test_the_centre_speed_keeps_its_meaning_in_orbit_and_simulate_under_either_name(run):
+    """orbit's and simulate's --speed is the centre's (ride's is the contact's):
+    --com-speed is the same there, and both at once is refused naming it."""
+    speed = run("orbit", "--theta", "60", "--speed", "7", "--format", "csv")
+    com = run("orbit", "--theta", "60", "--com-speed", "7", "--format", "csv")
+    assert speed.exit_code == com.exit_code == 0 and speed.stdout == com.stdout
+    assert _rows(speed.stdout)[0]["v_cm_m_s"] == "7.0"
+    both = run("sweep", "--theta", "60", "--speed", "7", "--com-speed", "7")
+    assert both.exit_code == 2 and "--com-speed" in both.output and "Traceback" not in both.output
+    for args in (("--speed", "25km/h"), ("--com-speed", "25km/h")):
+        res = run("simulate", "--machine", "stunt125", "--diameter", "16ft", "--theta", "100", *args, "--periods",
+                  "0.05", "--format", "csv", "--summary-only")
+        assert res.exit_code == 0 and float(_rows(res.stdout)[0]["speed_m_s"]) == pytest.approx(25 / 3.6)
