@@ -293,3 +293,16 @@ def test_a_contact_speed_at_the_floor_is_a_no_orbit_row_with_its_reason():
     t = deathsphere.ride(height=[0.0, 1.0], speed=8.0, diameter="16ft", stability=False)
     assert list(t["status"]) == ["no_orbit", "ok"]
     assert "vertical axis" in t["reason"][0]
+
+
+def test_a_two_wheelers_speed_is_its_rear_contacts_as_the_single_contact_machines():
+    """The same word on both models: a two-wheeler's speed runs its rear
+    contact round the parallel r sin(theta_rear) at the turn's rate."""
+    r = 16 * 0.3048 / 2
+    (turn,) = deathsphere.ride(machine="stunt125-steer", steer="free", height="5ft", speed="40km/h",
+                               diameter="16ft", stability=False)
+    assert turn["v_contact_m_s"] == turn["v_rear_m_s"] == 40 / 3.6
+    assert turn["omega_rad_s"] * r * np.sin(np.radians(turn["theta_deg"])) == pytest.approx(40 / 3.6, rel=1e-9)
+    (one,) = deathsphere.ride(machine="stunt125", height="5ft", speed="40km/h", diameter="16ft", stability=False)
+    assert one["theta_deg"] == pytest.approx(turn["theta_deg"], abs=1e-9)
+    assert round(turn["load_g"], 2) == 3.62 and round(one["load_g"], 2) == 3.81
