@@ -236,8 +236,9 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     Raises
     ------
     ParameterError
-        A value outside its set, a bad machine, theta and height (or alpha
-        and speed) both or neither given, a height above the globe's top, a
+        A value outside its set, a bad machine, theta and height both or
+        neither given (or not exactly one of alpha, speed, com_speed and
+        period), a height above the globe's top, a
         wheel that does not fit in the sphere.
 
     Examples
