@@ -36,15 +36,6 @@ AXES = ("theta", "alpha", "omega3", "omega", "speed")
 INPUT_FIELDS = "theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu, max_g"
 
 
-#: The paper's bodies' --speed in orbit, sweep and simulate: the wheel's
-#: centre's, said so (ride's --speed and a show's speed are the contact's).
-CENTRE_SPEED_HELP = ("The wheel's centre speed v_cm (its centre's, not the contact's as ride's --speed); every "
-                     "tilt alpha giving it (eq. 29 solved, one row each, branch = root number in increasing "
-                     "alpha).")
-#: --com-speed where --speed is already the centre's: the name ride and a show use for it.
-COM_SPEED_HELP = "The same as --speed here (the wheel's centre speed v_cm), by the name ride and a show give it."
-
-
 def centre_speed(speed, com_speed):
     """--speed or --com-speed, both the centre's speed in orbit, sweep and
     simulate (a usage error when both are given)."""
@@ -58,8 +49,8 @@ def orbit_options(f):
     """The options orbit and sweep share: one vocabulary."""
     for option in reversed([
         params_options("theta", "alpha", "omega3", "omega", multiple=AXES),
-        param_option("speed", multiple=True, help=CENTRE_SPEED_HELP),
-        param_option("com_speed", multiple=True, help=COM_SPEED_HELP),
+        param_option("speed", multiple=True),
+        param_option("com_speed", multiple=True),
         input_option(INPUT_FIELDS),
         body_option(),
         setup_options(multiple=("a", "r", "diameter", "k")),

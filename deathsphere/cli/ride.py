@@ -74,11 +74,8 @@ def _grid(where, how, mus):
 @param_option("height", multiple=True)
 @param_option("alpha", multiple=True, help="Tilt of the machine's up-axis above the orbit plane (lean from "
               "the vertical = 90 - alpha).")
-@param_option("speed", multiple=True, help="The contact's speed along the ground, what a speedometer reads (a "
-              "two-wheeler's: the rear contact's); it fixes the lap rate, Omega = speed / (r sin theta); every tilt "
-              "giving it, one row each.")
-@param_option("com_speed", multiple=True, help="The centre of mass's speed instead of --speed; every tilt giving it, "
-              "one row each.")
+@param_option("speed", multiple=True)
+@param_option("com_speed", multiple=True)
 @param_option("period", multiple=True, help="The lap time instead of --speed (e.g. 1.3s), Omega = 2 pi / T; every "
               "tilt giving it, one row each.")
 @machine_options()

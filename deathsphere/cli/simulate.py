@@ -66,11 +66,8 @@ def _preflight_output(output) -> bool:
               "90 = great circle).")
 @param_option("height", help="A two-wheeler: the rear contact's height above the globe's floor instead of --theta.")
 @param_option("alpha")
-@param_option("speed", help="A wheel's centre speed v_cm, a machine's centre of mass's (not the contact's as "
-              "ride's --speed), a two-wheeler's rear contact's; a wheel's or machine's tilt is the one giving it "
-              "(--branch).")
-@param_option("com_speed", help="The same as --speed for a wheel or a machine here (the centre's speed), by the "
-              "name ride and a show give it.")
+@param_option("speed")
+@param_option("com_speed")
 @params_options("omega", "omega3")
 @single("--branch", type=click.IntRange(0, None), default=0,
         help="Which orbit when several give the request: a sphere with --omega3, the root of eq. 55 (0 slow, "
