@@ -252,7 +252,7 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     ('stunt125 (modified)', 'ok', 75.0)
     >>> row = deathsphere.ride(height="5ft", speed="40km/h", diameter="16ft")[0]
     >>> round(row["v_contact_m_s"] * 3.6, 6), round(row["v_cm_km_h"], 1), row["status"]
-    (40.0, 31.2, 'ok')
+    (40.0, 26.4, 'ok')
     """
     from deathsphere.api.two_wheelers import is_two_wheeler, two_wheeler_only
 
