@@ -357,6 +357,8 @@ class RequestReader:
                 raise InputError(f"{self.source}: column {field!r} appears more than once ({both})")
             seen[field] = written
             columns.append(field)
+        #: field -> its column's name as typed (an alias, another case): a cell's refusal names it
+        self.typed = seen
         return columns
 
     def _header_line(self) -> str | None:
@@ -494,7 +496,7 @@ class RequestReader:
             try:
                 out = np.fromiter(map(float, [cell or "0" for cell in column]), dtype=np.float64, count=n)
             except ValueError:
-                return self._convert_cells(name, column, invalid, default, infinite_ok)
+                return self._convert_cells(name, column, invalid, default, infinite_ok, self.typed.get(name, name))
         bad = np.isnan(out) if infinite_ok else ~np.isfinite(out)
         if empty is not None:
             bad &= ~empty
@@ -502,14 +504,15 @@ class RequestReader:
         if bad.any():
             for i in np.flatnonzero(bad):
                 if not invalid[i]:
-                    invalid[i] = f"{name}: {echo(column[i].strip())} is not a finite number"
+                    invalid[i] = f"{self.typed.get(name, name)}: {echo(column[i].strip())} is not a finite number"
             out[bad] = math.nan
         return out
 
     @staticmethod
-    def _convert_cells(name, column, invalid, default, infinite_ok) -> np.ndarray:
+    def _convert_cells(name, column, invalid, default, infinite_ok, typed) -> np.ndarray:
         """Cells one by one (some are not plain numbers): a unit suffix or a
-        typographic minus is read as the command line's option reads it."""
+        typographic minus is read as the command line's option reads it;
+        a refusal names the column ``typed`` (as its header wrote it)."""
         from deathsphere import units
         from deathsphere.params import PARAMS
 
@@ -520,18 +523,18 @@ class RequestReader:
                 out[i] = default
                 continue
             try:
-                number = units.parse_value(cell, kind, name)
+                number = units.parse_value(cell, kind, typed)
             except ValueError as exc:
                 if not invalid[i]:
                     # a unit of the wrong kind: the units' own words; else the cell is no number
                     words = str(exc)
-                    invalid[i] = (f"{name}: {echo(cell)} is not a number" if "must be a number" in words
+                    invalid[i] = (f"{typed}: {echo(cell)} is not a number" if "must be a number" in words
                                   or "takes no unit" in words or "unknown unit" in words else words)
                 number = math.nan
             else:
                 if math.isnan(number) or (math.isinf(number) and not infinite_ok):
                     if not invalid[i]:
-                        invalid[i] = f"{name}: {echo(cell)} is not a finite number"
+                        invalid[i] = f"{typed}: {echo(cell)} is not a finite number"
                     number = math.nan
             out[i] = number
         return out

@@ -16,7 +16,6 @@ import numpy as np
 from deathsphere import params
 from deathsphere.constants import (
     BODIES,
-    DEFAULT_INERTIA,
     SIDES,
     STANDARD_GRAVITY,
     TABLE1_SPHERE_RADIUS,
@@ -28,6 +27,8 @@ from deathsphere.constants import (
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import too_big_inside
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
+from deathsphere.records.paper_bodies import BALL, PAPER_BODIES, PARTICLE, WHEEL, Ball, PaperBodyKind, Particle, Wheel
+from deathsphere.requests.decode import as_typed, paper_body_codes, paper_body_named, text_codes
 from deathsphere.table import Table
 from deathsphere.table.reasons import echo
 
@@ -72,7 +73,7 @@ _PHYSICS_COLUMNS = {
 #: Request fields: name -> (default, unit, what it is), from the parameter
 #: registry (body and side are the two text fields).
 REQUEST_FIELDS = {
-    "body": ("wheel", "", "wheel | sphere | particle"),
+    "body": (WHEEL.word, "", " | ".join(BODIES)),
     "side": ("inside", "", "inside | outside"),
     **{name: (params.PARAMS[name].default, params.PARAMS[name].unit, params.PARAMS[name].what)
        for name in ("theta", "alpha", "a", "r", "k", "g", "mu", "max_g", "omega3", "omega", "speed")},
@@ -86,6 +87,8 @@ class Setup:
     Parameters are SI: ``a`` body radius [m], ``r`` sphere radius [m], ``k``
     inertia factor (wheel: I11 = 2 k m a^2; sphere: I = k m a^2; default by
     body, see :data:`deathsphere.constants.DEFAULT_INERTIA`), ``g`` [m/s^2],
+    ``body`` one of the paper's body records (:mod:`deathsphere.records.paper_bodies`;
+    a word naming one is decoded),
     ``mu`` friction coefficient available (``inf``: unlimited).  Raises
     ``ValueError`` with a clear message for invalid values; a physically
     impossible orbit is never an error (it is a status).
@@ -94,7 +97,7 @@ class Setup:
     (0.3, 3.0, 0.5)
     """
 
-    body: str = "wheel"
+    body: PaperBodyKind | str = WHEEL
     side: str = "inside"
     a: float = TABLE1_WHEEL_RADIUS
     r: float = TABLE1_SPHERE_RADIUS
@@ -103,9 +106,13 @@ class Setup:
     mu: float = math.inf
 
     def __post_init__(self):
-        k = DEFAULT_INERTIA.get(self.body, 0.0) if self.k is None else self.k
+        body = self.body if isinstance(self.body, PaperBodyKind) else paper_body_named(self.body)
+        if body is None:
+            raise ValueError(f"body must be one of {' | '.join(BODIES)} (got {self.body!r})")
+        object.__setattr__(self, "body", body)
+        k = body.default_k if self.k is None else self.k
         object.__setattr__(self, "k", k)
-        problem = validate_scalars(self.body, self.side, self.a, self.r, k, self.g, self.mu)
+        problem = validate_scalars(body, self.side, self.a, self.r, k, self.g, self.mu)
         if problem:
             raise ValueError(problem)
         for name in ("a", "r", "k", "g", "mu"):
@@ -139,7 +146,7 @@ class Setup:
             raise params.ParameterError("the arguments cannot be broadcast together") from None
         n = math.prod(shape)
         flat = {name: np.broadcast_to(v, shape).reshape(-1) for name, v in given.items()}
-        req = make_requests(n, body=self.body, side=self.side, a=self.a, r=self.r, k=self.k, g=self.g,
+        req = make_requests(n, body=self.body.word, side=self.side, a=self.a, r=self.r, k=self.k, g=self.g,
                             mu=self.mu, **flat)
         table = evaluate(req, stability=stability)
         if len(table) and np.all(table["status"] == "invalid"):
@@ -148,8 +155,9 @@ class Setup:
 
 
 def validate_scalars(body, side, a, r, k, g, mu=math.inf) -> str:
-    """The first problem with one set of parameters, in words ('' if none)."""
-    if body not in BODIES:
+    """The first problem with one set of parameters, in words ('' if none);
+    ``body`` a paper body's record."""
+    if not isinstance(body, PaperBodyKind):
         return f"body must be one of {' | '.join(BODIES)} (got {body!r})"
     if side not in SIDES:
         return f"side must be one of {' | '.join(SIDES)} (got {side!r})"
@@ -177,22 +185,27 @@ def _as_array(value, n, dtype):
     return np.broadcast_to(arr, (n,)).copy() if arr.shape != (n,) else arr.copy()
 
 
-def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, **fields) -> dict:
+def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, typed=None, **fields) -> dict:
     """Build a request batch of ``n`` rows from scalars or length-n arrays.
 
     ``fields`` are the :data:`REQUEST_FIELDS` (theta and alpha in degrees);
     missing ones take their defaults; ``k=None`` or NaN means "by body".
-    ``invalid`` is an object array of reasons ('' for rows parsed fine).
+    ``invalid`` is an object array of reasons ('' for rows parsed fine);
+    ``typed``: field -> the name an input file's header gave its column
+    (a row's refusal names it as typed).
     """
     req = {}
     for name, (default, _, _) in REQUEST_FIELDS.items():
         value = fields.get(name, default)
+        if isinstance(value, PaperBodyKind):
+            value = value.word      # the batch's body column is the words it prints
         if name in ("body", "side"):
             req[name] = _as_array(value, n, object)
         else:
             req[name] = _as_array(np.nan if value is None else value, n, float)
     req["input_row"] = np.arange(1, n + 1) if input_row is None else _as_array(input_row, n, np.int64)
     req["invalid"] = _as_array("" if invalid is None else invalid, n, object)
+    req["typed"] = dict(typed or {})
     return req
 
 
@@ -200,24 +213,6 @@ def fixed_bank_angle(theta_deg, outside):
     """A sphere's bank angle [deg]: theta - 90 inside, theta + 90 outside
     (sec. 4); ``outside`` booleans."""
     return theta_deg + np.where(outside, 90.0, -90.0)
-
-
-def text_codes(values: np.ndarray, vocabulary: tuple) -> np.ndarray:
-    """The index of each text value in ``vocabulary`` (int8; -1 for none of
-    them).  A request batch compares its text columns once, here, and
-    integers from then on: comparing an object array costs a Python call
-    per element, and a sweep's batch holds one body and one side in every
-    row (one comparison decides it)."""
-    codes = np.full(values.size, -1, dtype=np.int8)
-    if values.size == 0:
-        return codes
-    first = values[0]
-    if isinstance(first, str) and np.all(values == first):
-        codes[:] = vocabulary.index(first) if first in vocabulary else -1
-        return codes
-    for j, word in enumerate(vocabulary):
-        codes[values == word] = j
-    return codes
 
 
 def validate_requests(req: dict) -> np.ndarray:
@@ -229,15 +224,16 @@ def validate_requests(req: dict) -> np.ndarray:
     """
     body, side = req["body"], req["side"]
     # the text columns as codes, kept for the solvers (:func:`evaluate`)
-    req["body_code"] = body_code = text_codes(body, BODIES)
+    req["body_code"] = body_code = paper_body_codes(body)
     side_code = text_codes(side, SIDES)
     req["outside"] = outside = side_code == SIDES.index("outside")
     k = req["k"].copy()
-    for b, default in DEFAULT_INERTIA.items():
-        k[np.isnan(k) & (body_code == BODIES.index(b))] = default
+    by_body = np.isnan(k)
+    k[by_body] = _DEFAULT_K[body_code[by_body]]   # an unknown body (code -1) keeps NaN
     req["k"] = k
     reason = req["invalid"].copy()
     pending = reason == ""
+    typed = req.get("typed", {})
     checks = [
         (body_code < 0, lambda i: f"body must be one of {' | '.join(BODIES)} (got {echo(body[i])})"),
         (side_code < 0, lambda i: f"side must be one of {' | '.join(SIDES)} (got {echo(side[i])})"),
@@ -256,7 +252,7 @@ def validate_requests(req: dict) -> np.ndarray:
             bad = params.failing(name, values)
             if given is not None:
                 bad &= given
-        checks.append((bad, lambda i: params.problems(name, values[i:i + 1])[0]))
+        checks.append((bad, lambda i: as_typed(name, params.problems(name, values[i:i + 1])[0], typed)))
 
     for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
         domain(name)
@@ -264,8 +260,8 @@ def validate_requests(req: dict) -> np.ndarray:
         checks.append((too_big_inside(req["a"], req["r"], side_code != SIDES.index("inside")),
                        lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
-    is_wheel, is_sphere = body_code == BODIES.index("wheel"), body_code == BODIES.index("sphere")
-    targets = (~np.isnan(alpha)).astype(int) + (~np.isnan(omega)) + (~np.isnan(speed))
+    is_wheel, is_sphere = body_code == WHEEL.code, body_code == BALL.code
+    targets = sum((~np.isnan(req[key])).astype(int) for key in WHEEL.held_by)
     checks.append((is_wheel & (targets != 1),
                    lambda i: "a wheel needs exactly one of alpha | speed (m/s) | omega (rad/s)"))
     for name, v in (("alpha", alpha), ("speed", speed), ("omega", omega), ("omega3", omega3)):
@@ -274,7 +270,7 @@ def validate_requests(req: dict) -> np.ndarray:
         checks.append((is_wheel & (omega < 0),
                        lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {params.shown_number(float(omega[i]))})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
-    checks.append((is_sphere & (np.isnan(omega3) == np.isnan(omega)),
+    checks.append((is_sphere & (sum((~np.isnan(req[key])).astype(int) for key in BALL.held_by) != 1),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
     checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
     # a result CSV fed back carries a sphere's fixed bank angle as alpha_deg: that one is accepted
@@ -284,7 +280,7 @@ def validate_requests(req: dict) -> np.ndarray:
             tilted_sphere &= np.abs(params.reduce_angle(alpha - fixed_bank_angle(req["theta"], outside))) >= 1e-9
     checks.append((tilted_sphere,
                    lambda i: "a sphere's tilt is fixed (theta - 90 deg inside; theta + 90 deg outside): no alpha"))
-    checks.append(((body_code == BODIES.index("particle")) & ~(np.isnan(alpha) & np.isnan(omega)),
+    checks.append(((body_code == PARTICLE.code) & ~(np.isnan(alpha) & np.isnan(omega)),
                    lambda i: "a particle takes only theta (no alpha or omega)"))
     for failed, words in checks:
         hit = pending & failed
@@ -371,7 +367,11 @@ def _particle(req, rows):
     return [(rows, np.full(rows.size, -1), res)]
 
 
-SOLVERS = {"wheel": _wheel, "sphere": _sphere, "particle": _particle}
+#: The solver of each of the paper's bodies, by its record's type.
+SOLVERS = {Wheel: _wheel, Ball: _sphere, Particle: _particle}
+#: Each body code's inertia factor when none is given (the last entry:
+#: code -1, a word naming no body, keeps NaN; its row is invalid).
+_DEFAULT_K = np.array([body.default_k for body in PAPER_BODIES] + [np.nan])
 
 
 def evaluate(req: dict, stability: bool = True) -> Table:
@@ -396,10 +396,10 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     body, body_code = req["body"], req["body_code"]
     bad = np.flatnonzero(~ok)
     parts = [(bad, np.full(bad.size, -1), None)]
-    for name, solver in SOLVERS.items():
-        rows = np.flatnonzero(ok & (body_code == BODIES.index(name)))
+    for one in PAPER_BODIES:
+        rows = np.flatnonzero(ok & (body_code == one.code))
         if rows.size:
-            parts.extend(solver(req, rows))
+            parts.extend(SOLVERS[type(one)](req, rows))
 
     source = np.concatenate([p[0] for p in parts]).astype(np.int64)
     branch = np.concatenate([p[1] for p in parts]).astype(np.int64)
@@ -430,7 +430,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     pick = source[order]
     # text compared once per request, not per row and column (an object
     # comparison costs a Python call per element)
-    is_sphere, is_particle = body_code == BODIES.index("sphere"), body_code == BODIES.index("particle")
+    is_sphere, is_particle = body_code == BALL.code, body_code == PARTICLE.code
     if is_sphere.any():
         sphere_alpha = fixed_bank_angle(req["theta"], req["outside"])
         alpha = np.where(is_sphere[source], sphere_alpha[source], alpha)
@@ -548,7 +548,7 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, s
     ``theta_rad`` and ``alpha_rad`` are each row's angles as the request's
     radians (converted once, in :func:`evaluate`), not read back from the
     degree columns; ``status`` (int8 :class:`Status` codes), ``body_code``
-    (:func:`text_codes` of BODIES) and ``outside`` are each row's too.
+    (:func:`deathsphere.requests.decode.paper_body_codes`) and ``outside`` are each row's too.
     """
     from deathsphere.physics import stability as exact
     from deathsphere.physics.stability.verdict import stability_kind
@@ -558,17 +558,18 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, s
     live = np.isin(status, LIVE_CODES)
     theta = theta_rad
     par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}
-    particle = body_code == BODIES.index("particle")
+    particle = body_code == PARTICLE.code
     singular = live & (columns["k"] == 0) & ~particle
     out["stability"][singular] = "unknown"
     out["stability_method"][singular] = NOT_ANALYSED_K0
     live &= ~singular
-    for name in ("wheel", "sphere"):
-        rows = np.flatnonzero(live & (body_code == BODIES.index(name)))
+    # a wheel's orbit is fixed by its tilt, a ball's by its orbital rate (eqs. 29, 55)
+    analysed = {WHEEL: (exact.wheel_stability, alpha_rad), BALL: (exact.sphere_stability, columns["omega_rad_s"])}
+    for one, (solver, seconds) in analysed.items():
+        rows = np.flatnonzero(live & (body_code == one.code))
         if not rows.size:
             continue
-        second = alpha_rad[rows] if name == "wheel" else columns["omega_rad_s"][rows]
-        solver = exact.wheel_stability if name == "wheel" else exact.sphere_stability
+        second = seconds[rows]
         res = solver(theta[rows], second, *(par[key][rows] for key in ("a", "r", "k", "g")), outside=outside[rows])
         out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]
         out["stability_method"][rows] = EXACT_METHOD

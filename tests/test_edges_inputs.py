@@ -50,3 +50,41 @@ def test_a_body_cell_with_a_comma_is_echoed_without_it(tmp_path):
     assert list(t["body"]) == ["bi;ke", "wheel"] and list(t["side"]) == ["inside", "in;side"]
     # the reason still shows the text typed, recoverably (a comma as \x2c)
     assert "(got 'bi\\x2cke')" in t["reason"][0]
+
+
+def test_a_rows_refusal_names_its_column_as_the_header_typed_it(tmp_path):
+    """A result CSV fed back names its columns theta_deg, alpha_deg,
+    mu_available: a bad cell or a value out of bounds is refused under that
+    name (the registry's words after it); a column named as the registry
+    names it reads as before."""
+    import deathsphere
+
+    path = tmp_path / "back.csv"
+    path.write_text("theta_deg,alpha_deg,mu_available\n200,10,1\n60,oops,1\n60,10,-1\n60,10kg,1\n")
+    reasons = deathsphere.orbit_input(str(path), stability=False).table()["reason"].tolist()
+    assert reasons == ["theta_deg: theta (polar angle) must be 0..180 deg (got 200)",
+                       "alpha_deg: 'oops' is not a number",
+                       "mu_available: mu (friction coefficient) must be >= 0 or inf (no limit) (got -1)",
+                       "alpha_deg must be an angle in deg or rad (got '10kg': kg is a mass)"]
+    path.write_text("theta,alpha\n200,10\n60,oops\n")
+    reasons = deathsphere.orbit_input(str(path), stability=False).table()["reason"].tolist()
+    assert reasons == ["theta (polar angle) must be 0..180 deg (got 200)", "alpha: 'oops' is not a number"]
+
+
+def test_a_vertical_rows_refusal_names_its_column_as_typed(tmp_path):
+    import deathsphere
+
+    path = tmp_path / "loops.csv"
+    path.write_text("theta_deg,v_cm_m_s,g_m_s2\n90,6,9.8\n90,-1,9.8\n90,6,-3\n")
+    table = deathsphere.vertical_input(str(path), stability=False).table()
+    assert table["status"].tolist()[0] != "invalid" and table["reason"].tolist()[1:] == [
+        "v_cm_m_s: v_top (top speed) must be 0..1e+09 m/s (got -1)",
+        "g_m_s2: g (gravity) must be 1e-09..1e+09 m/s^2 (got -3)"]
+
+
+def test_no_reason_stays_none_whatever_the_column_is_called():
+    from deathsphere.requests.decode import as_typed
+
+    assert as_typed("theta", "", {"theta": "theta_deg"}) == ""
+    assert as_typed("theta", "bad", {"theta": "theta"}) == "bad"
+    assert as_typed("theta", "bad", {"theta": "THETA"}) == "THETA: bad"

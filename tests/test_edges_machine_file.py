@@ -63,3 +63,35 @@ def test_mass_in_pounds_and_max_g_with_its_g():
     assert float(with_g["max_g"]) == 5.0 and str(with_g["status"]) == str(plain["status"])
     with pytest.raises(ParameterError, match="kg is a mass"):
         deathsphere.ride(90, 10, machine="stunt125", max_g="5kg")
+
+
+@pytest.mark.parametrize("text, key, words", [
+    ("wheel_radius = -1\n", "wheel_radius", "must be 1e-09..1e+09 m (got -1)"),     # the registry's a, typed as its key
+    ('mass = "8m"\n', "mass", "is a length"),
+    ("mass = true\n", "mass", "must be a number"),
+    ('base = "no-such-bike"\n', "base", "no-such-bike"),
+])
+def test_a_bad_value_is_refused_naming_the_file_and_its_key_as_typed(tmp_path, text, key, words):
+    f = tmp_path / "bike.toml"
+    f.write_text(text)
+    with pytest.raises(ParameterError) as err:
+        machine_file(f)
+    assert str(err.value).startswith(f"machine file bike.toml: {key}: ") and words in str(err.value)
+    assert err.value.param == "machine_file"       # the option that named the file, not --wheel-radius
+
+
+def test_values_that_do_not_go_together_are_refused_under_the_file(tmp_path):
+    f = tmp_path / "bike.csv"
+    f.write_text("wheel_radius,tyre_radius\n0.3,0.35\n")
+    with pytest.raises(ParameterError, match=r"^machine file bike.csv: tyre_radius t \(0.35 m\) must be less") as err:
+        machine_file(f)
+    assert err.value.param == "machine_file"
+
+
+def test_the_command_line_names_the_file_option_for_a_bad_file_value(run, tmp_path):
+    f = tmp_path / "bike.toml"
+    f.write_text("wheel_radius = -1\n")
+    result = run("ride", "--theta", "90", "--alpha", "10", "--machine-file", str(f))
+    assert result.exit_code == 2 and "Traceback" not in result.stderr
+    line, = [t for t in result.stderr.splitlines() if t.strip()]
+    assert "Invalid value for '--machine-file': machine file bike.toml: wheel_radius: " in line

@@ -66,13 +66,14 @@ ALLOWED = {
     "topics": set(),
     # a body's record is validated with the registry; its parameter files are text read once
     "records": {"physics", "params", "units", "errors", "constants", "table"},
-    "model": {"physics", "table", "params", "constants", "errors"},
+    # the paper's bodies are records, named by a word in one place: the requests' decoder
+    "model": {"physics", "table", "params", "constants", "errors", "records", "requests"},
     # a request (a rider and its run) is decoded once, from keys as typed, into records of bodies and grounds
     "requests": {"physics", "records", "params", "units", "errors", "constants"},
     "inputs": {"model", "params", "errors", "units", "table"},
     # verify checks claims about motion with the simulator
-    "results": {"physics", "model", "table", "params", "constants", "parallel", "simulation"},
-    "simulation": {"physics", "model", "table", "params", "constants", "records"},
+    "results": {"physics", "model", "table", "params", "constants", "parallel", "simulation", "records", "requests"},
+    "simulation": {"physics", "model", "table", "params", "constants", "records", "requests"},
     "writers": {"table", "model"},
     "render": {"table", "model", "constants", "params"},
     "viewer": {"table", "render"},

@@ -10,8 +10,9 @@ import pytest
 import deathsphere
 from deathsphere import params
 from deathsphere.api import machines as api_machines
-from deathsphere.records import machine_files, machine_presets
+from deathsphere.records import machine_presets
 from deathsphere.records.machine import ALIASES, FIELD_PARAMS, Machine
+from deathsphere.requests import decode
 
 
 def test_the_records_fields_are_the_registrys_names():
@@ -47,7 +48,7 @@ def test_overrides_take_the_registrys_names_and_the_fields():
 def test_the_api_names_are_the_records():
     assert deathsphere.Machine is Machine is api_machines.Machine
     assert api_machines.PRESETS is machine_presets.PRESETS
-    assert api_machines.machine_file is machine_files.machine_file
+    assert api_machines.machine_file is decode.decode_machine_file
     for name in ("stunt125", "DEFAULT_MACHINE", "echoable_text", "machine_file_data", "machine_file_text",
                  "UNECHOABLE", "FILE_KEYS", "as_machine", "paper_wheel", "benchmark_bicycle"):
         assert hasattr(api_machines, name), name

@@ -73,7 +73,7 @@ def test_two_wheeler_ride_itself_takes_no_text_for_flat():
     from deathsphere.api.two_wheelers import two_wheeler_ride
 
     with pytest.raises(ParameterError) as err:
-        two_wheeler_ride("benchmark-bicycle", flat="no", steer="free", height=1.0, speed=5.0, diameter="16ft")
+        two_wheeler_ride("benchmark-bicycle", dict(flat="no", steer="free", height=1.0, speed=5.0, diameter="16ft"))
     assert err.value.param == "flat"
 
 

@@ -14,7 +14,8 @@ import pytest
 
 import deathsphere
 from deathsphere import ParameterError
-from deathsphere.records.two_wheeler_files import read_machine_file, two_wheeler_file, two_wheeler_text
+from deathsphere.records.two_wheeler_files import two_wheeler_file, two_wheeler_text
+from deathsphere.requests.decode import read_machine_file
 from deathsphere.api.two_wheelers import TWO_WHEELERS
 
 #: Meijaard, Papadopoulos, Ruina & Schwab (2007), Table 1.

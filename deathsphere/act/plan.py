@@ -16,7 +16,7 @@ from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.errors import ParameterError
 from deathsphere.physics.ground import Sphere
 from deathsphere.records.machine import Machine
-from deathsphere.records.machine_files import FILE_KEYS, machine_file
+from deathsphere.records.machine_files import FILE_KEYS
 from deathsphere.records.machine_presets import PRESETS, as_machine
 from deathsphere.requests import decode
 from deathsphere.requests.keys import Keys
@@ -187,7 +187,7 @@ def _machine(where: str, raw, base_dir: pathlib.Path | None) -> Machine:
         path = base_dir / path
     if path.suffix.lower() in (".toml", ".csv") and path.is_file():
         try:
-            return machine_file(path)
+            return decode.decode_machine_file(path)
         except ParameterError as exc:
             _fail(where, "machine", str(exc))
     _fail(where, "machine", f"unknown machine {raw!r} (a preset: {' | '.join(PRESETS)}; or a .toml/.csv machine "

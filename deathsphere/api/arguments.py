@@ -10,7 +10,6 @@ import numpy as np
 
 from deathsphere import params
 from deathsphere.constants import (
-    BODIES,
     SIDES,
 )
 from deathsphere.grid import (
@@ -24,6 +23,7 @@ from deathsphere.model import (
     Setup,
 )
 from deathsphere.params import ParameterError
+from deathsphere.requests.decode import decode_paper_body
 from deathsphere.physics.status import STATUS_LABELS
 from deathsphere.table import Table
 
@@ -107,14 +107,20 @@ def checked_flag(name: str, value) -> bool:
     raise ParameterError(f"{name} must be True or False (got {value!r})", name)
 
 
+def refuse_radius_with_diameter(r, diameter) -> None:
+    """A globe is given by its radius or by its diameter: both refused (the
+    default radius yields to a diameter)."""
+    if diameter is not None and is_given(r) and r is not R:
+        raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
+
+
 def sphere_radius(r, diameter):
     """The sphere's radius from ``r`` or ``diameter`` (one of them; a globe
     is sold by its diameter).  Returns ``r`` unchanged when no diameter is
     given (it is checked where it is used, as a scalar or an array)."""
     if diameter is None:
         return r
-    if r is not None and r is not R:
-        raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
+    refuse_radius_with_diameter(r, diameter)
     d = _real_array("diameter", diameter)
     reason = params.first_problem("diameter", d)
     if reason:
@@ -158,7 +164,7 @@ def broadcast_flat(values: dict[str, np.ndarray]) -> tuple[tuple[int, ...], dict
 
 def checked_setup(body, side, a, r, k, g, mu) -> Setup:
     """A :class:`Setup` from one value each (the command's scalar options)."""
-    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     numbers = {name: checked_scalar(name, v) for name, v in (("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu))
                if v is not None}
     try:

@@ -27,6 +27,7 @@ from deathsphere.api.arguments import (
     one_default,
     radii_of,
     raise_if_all_invalid,
+    refuse_radius_with_diameter,
     sphere_radius,
 )
 from deathsphere.api.streams import (
@@ -39,7 +40,6 @@ from deathsphere.api.streams import (
     request_reader,
 )
 from deathsphere.constants import (
-    BODIES,
     SIDES,
 )
 from deathsphere.model import (
@@ -50,6 +50,8 @@ from deathsphere.model import (
     validate_requests,
 )
 from deathsphere.params import ParameterError
+from deathsphere.records.paper_bodies import Ball, Wheel
+from deathsphere.requests.decode import decode_paper_body
 from deathsphere.table import Table
 
 #: Peak memory one call of :func:`orbit` or :func:`~deathsphere.api.vertical`
@@ -181,7 +183,7 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     ...
     deathsphere.ParameterError: theta (polar angle) must be 0..180 deg (got 200)
     """
-    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     r = sphere_radius(r, diameter)
     given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "max_g": max_g,
@@ -191,7 +193,8 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, **flat), stability=stability))
-    several = (body == "wheel" and alpha is None) or (body == "sphere" and omega3 is not None)
+    # a wheel solved for its tilt, a ball given its spin: a row per root
+    several = (isinstance(body, Wheel) and alpha is None) or (isinstance(body, Ball) and omega3 is not None)
     if keep is not None:
         return table[np.isin(table["status"], keep)]
     return table if several else Table(table.columns, shape=shape)
@@ -260,14 +263,13 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     >>> [row["alpha_deg"] for chunk in ok for row in chunk]
     [10.0, 30.0]
     """
-    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
+    body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     g, mu, max_g = checked_scalar("g", g), checked_scalar("mu", mu), checked_scalar("max_g", max_g)
     chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
     chunk_size = min(chunk_size, MAX_CHUNK_ROWS)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    refuse_radius_with_diameter(r, diameter)
     if diameter is not None:
-        if is_given(r) and r is not R:
-            raise ParameterError("give the sphere's radius r or its diameter, not both", "diameter")
         r = None
     if not is_given(theta):
         raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
@@ -347,7 +349,7 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     overrides = {}
     if body is not None:
-        overrides["body"] = checked_choice("body", body, BODIES)
+        overrides["body"] = decode_paper_body(body).word
     if side is not None:
         overrides["side"] = checked_choice("side", side, SIDES)
     r = sphere_radius(r, diameter)
@@ -361,4 +363,6 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     reader = request_reader(source, REQUEST_FIELDS, overrides, ALIASES, COLUMNS)
     work = partial(evaluate_filtered, stability=stability, keep=keep)
     cluster = cluster_of(scheduler, jobs)
-    return Chunks(evaluated(input_requests(reader, chunk_size, make_requests), work, jobs, cluster))
+    # a row's refusal names its column as the file's header typed it
+    make = partial(make_requests, typed=reader.typed)
+    return Chunks(evaluated(input_requests(reader, chunk_size, make), work, jobs, cluster))

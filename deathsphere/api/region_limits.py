@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 
 from deathsphere.api.arguments import (
     CHUNK,
@@ -25,10 +26,11 @@ from deathsphere.api.arguments import (
 )
 from deathsphere.api.streams import Chunks, cluster_of, input_requests, request_reader
 from deathsphere.constants import (
-    BODIES,
     SIDES,
 )
 from deathsphere.params import ParameterError
+from deathsphere.records.paper_bodies import WHEEL, Wheel
+from deathsphere.requests.decode import decode_paper_body
 from deathsphere.table import Table
 
 #: theta values :func:`limits` evaluates at once (each a root search).
@@ -42,7 +44,7 @@ def _ratio(a, r, side, g=G, diameter=None) -> tuple[float, float]:
     side = checked_choice("side", side, SIDES)
     # g is checked but changes nothing: the region's angles and the load
     # in g do not depend on it (it scales every speed by sqrt(g))
-    setup = checked_setup("wheel", side, a, sphere_radius(r, diameter), None, g, INF)
+    setup = checked_setup(WHEEL, side, a, sphere_radius(r, diameter), None, g, INF)
     return float(f"{setup.a / setup.r:.15g}"), side
 
 
@@ -213,8 +215,8 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     from deathsphere.model import make_requests
     from deathsphere.results.limits import limits_rows
 
-    body, side = checked_choice("body", body, BODIES), checked_choice("side", side, SIDES)
-    if body != "wheel":
+    body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
+    if not isinstance(body, Wheel):
         from deathsphere.results.limits import NOT_A_WHEEL
 
         raise ParameterError(NOT_A_WHEEL, "body")
@@ -256,7 +258,7 @@ def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=
 
     overrides = {}
     if body is not None:
-        overrides["body"] = checked_choice("body", body, BODIES)
+        overrides["body"] = decode_paper_body(body).word
     if side is not None:
         overrides["side"] = checked_choice("side", side, SIDES)
     for name, value in (("theta", theta), ("a", a), ("r", sphere_radius(r, diameter)), ("k", k), ("g", g),
@@ -270,4 +272,5 @@ def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=
 
     def work(req):
         return limits_rows(req, highest=False)
-    return Chunks((n, work(req)) for n, req in input_requests(reader, chunk_size, make_requests))
+    make = partial(make_requests, typed=reader.typed)     # a row's refusal names its column as typed
+    return Chunks((n, work(req)) for n, req in input_requests(reader, chunk_size, make))

@@ -370,8 +370,8 @@ _HOW = {Tilt: lambda by: ("alpha", by.alpha), ContactSpeed: lambda by: ("speed",
         ComSpeed: lambda by: ("com_speed", by.speed), Period: lambda by: ("period", by.period)}
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
-SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
-                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
+SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius",
+                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
 
 
 def refuse_single_contact(given: dict) -> None:
@@ -388,9 +388,9 @@ def _two_wheeler(machine, given: dict) -> Table:
     from deathsphere.api.two_wheelers import two_wheeler_ride
 
     refuse_single_contact(given)
-    return two_wheeler_ride(machine, **{k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
-                                                               "steer", "r", "diameter", "g", "mu", "max_g",
-                                                               "summary", "stability", "only")})
+    return two_wheeler_ride(machine, {k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
+                                                              "steer", "r", "diameter", "g", "mu", "max_g",
+                                                              "summary", "stability", "only")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).

@@ -24,10 +24,11 @@ from deathsphere.api.arguments import (
 )
 from deathsphere.model import Setup
 from deathsphere.params import ParameterError
-from deathsphere.requests.decode import decode_run
+from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
+from deathsphere.requests.decode import decode_lane, decode_paper_lane, decode_run
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import (Horizontal, PaperBody, Rate, RiderRequest, Run, Solver, Speed, Spin,
-                                          Theta, Tilt, Vertical)
+from deathsphere.requests.records import (ContactSpeed, Horizontal, PaperBody, Rate, RiderRequest, Run, Solver,
+                                          Speed, Spin, Theta, Tilt, Vertical)
 from deathsphere.table import Table
 
 #: solve_ivp's methods and the frames :func:`simulate` integrates in
@@ -203,40 +204,15 @@ def _run_options(given: Mapping) -> tuple[Solver, float, float, SimulationOption
 
 def _paper_rider(given: Mapping, run: Run) -> RiderRequest:
     """A wheel or a sphere of the paper on the lane its keywords describe
-    (the command line's rules, in words naming the keywords)."""
-    setup = checked_setup("wheel" if given["body"] is None else given["body"], given["side"],
+    (decided by the decoder: which keys hold a body's orbit is its record's)."""
+    setup = checked_setup(WHEEL if given["body"] is None else given["body"], given["side"],
                           A if given["a"] is None else given["a"], run.r, given["k"], run.g, run.mu)
-    theta = checked_scalar("theta", given["theta"])
-    alpha, omega3, omega, v_top, speed = (None if given[name] is None else checked_scalar(name, given[name])
-                                          for name in ("alpha", "omega3", "omega", "v_top", "speed"))
-    vertical, branch = checked_flag("vertical", given["vertical"]), given["branch"]
-    # a wheel given its speed or rate: the tilt of that orbit (eq. 29 solved,
-    # the root ``branch``), found when the run is prepared
-    by_value = setup.body == "wheel" and not vertical and alpha is None and (speed is not None or omega is not None)
-    if not by_value and (isinstance(branch, bool) or branch not in (0, 1)):
-        raise ParameterError(f"branch must be 0 (slow root of eq. 55) or 1 (fast root) (got {branch!r})")
-    if not by_value and speed is not None:
-        raise ParameterError("speed is an input for a wheel's horizontal orbit", "speed")
-    if setup.body == "particle":
+    if not setup.body.rolls:
         raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)")
-    if vertical:
-        if setup.body != "wheel" or alpha is not None or v_top is None:
-            raise ParameterError("vertical=True simulates a wheel: give theta and v_top (no alpha)")
-    elif v_top is not None:
-        raise ParameterError("v_top is for vertical orbits (vertical=True)")
-    elif setup.body == "wheel" and (omega3 is not None or (speed is not None and omega is not None) if by_value
-                                    else alpha is None or omega3 is not None or omega is not None):
-        raise ParameterError("a wheel's steady orbit needs alpha (deg) or its speed or rate (no omega3)")
-    elif setup.body == "sphere" and (alpha is not None or (omega3 is None) == (omega is None)):
-        raise ParameterError("a sphere's steady orbit needs exactly one of omega3 and omega (no alpha)")
+    lane = decode_paper_lane({**given, "vertical": checked_flag("vertical", given["vertical"])}, setup.body, _read)
     if setup.k == 0:
         raise ParameterError("simulate needs k > 0: at k = 0 the equations of motion are singular")
-    body = PaperBody(kind=setup.body, side=setup.side, a=setup.a, k=setup.k)
-    if vertical:
-        return RiderRequest(body=body, lane=Vertical(v_top=v_top, theta=theta))
-    by = (Tilt(alpha) if alpha is not None else Speed(speed, branch) if speed is not None
-          else Spin(omega3, branch) if omega3 is not None else Rate(omega, branch))
-    return RiderRequest(body=body, lane=Horizontal(at=Theta(theta), by=by))
+    return RiderRequest(body=PaperBody(kind=setup.body, side=setup.side, a=setup.a, k=setup.k), lane=lane)
 
 
 def _refuse_for_machine(given: Mapping) -> None:
@@ -265,23 +241,20 @@ def _machine_rider(given: Mapping, run: Run) -> RiderRequest:
     if not yaw_is_determined(machine_arrays(m)):
         raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
                              "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
-    theta = checked_scalar("theta", given["theta"])
     if not run.r > m.wheel_radius:
         raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius {run.r:g} m "
                              "(needs r > a)",
                              "r")
-    alpha, speed, branch = given["alpha"], given["speed"], given["branch"]
-    if (alpha is None) == (speed is None):
-        raise ParameterError("a machine's steady orbit needs exactly one of alpha (deg) and speed (its centre of "
-                             "mass's, m/s)", "alpha", missing=alpha is None)
-    if speed is not None:
-        by = Speed(checked_scalar("speed", speed), branch)
+    # at theta, by its tilt or its centre of mass's speed: decided by the decoder
+    lane = decode_lane({key: given[key] for key in ("theta", "alpha", "speed")}, Keys(), _read, run.ground)
+    branch = given["branch"]
+    # simulate's speed is still the centre of mass's (ride's and a plan's is the contact's)
+    if isinstance(lane.by, (Speed, ContactSpeed)):
+        lane = dataclasses.replace(lane, by=Speed(lane.by.speed, branch))
     elif isinstance(branch, bool) or branch != 0:
         raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
                              "branch")
-    else:
-        by = Tilt(checked_scalar("alpha", alpha))
-    return RiderRequest(body=m, lane=Horizontal(at=Theta(theta), by=by))
+    return RiderRequest(body=m, lane=lane)
 
 
 def prepare_simulation(rider: RiderRequest, run: Run, options: SimulationOptions = SimulationOptions()):
@@ -316,7 +289,7 @@ def _paper_starts(rider: RiderRequest, run: Run):
 
     body, lane, kick = rider.body, rider.lane, 0.0 if rider.kick is None else rider.kick
     setup = Setup(body=body.kind, side=body.side, a=body.a, r=run.r, k=body.k, g=run.g, mu=run.mu)
-    if lane.kind == "vertical":
+    if isinstance(lane, Vertical):
         starts_of = partial(simulation.vertical_starts, setup, lane.theta, lane.v_top, perturb_deg=kick)
         return _started(starts_of, None)
     theta, by = lane.at.theta, lane.by
@@ -324,7 +297,7 @@ def _paper_starts(rider: RiderRequest, run: Run):
     omega = by.omega if isinstance(by, Rate) else None
     omega3 = by.omega3 if isinstance(by, Spin) else None
     requested = {"speed": speed, "rate": omega, "omega3": omega3}
-    if body.kind == "wheel":
+    if isinstance(body.kind, Wheel):
         alpha = by.alpha if isinstance(by, Tilt) else _tilt_for(setup, theta, speed, omega, by.branch)
         starts_of = partial(simulation.horizontal_starts, setup, theta, params.reduce_angle(alpha),
                             perturb_deg=kick)

@@ -26,9 +26,10 @@ from deathsphere.physics.ground import Plane, Sphere
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
 # the records' presets and files, as the command line and a notebook reach them
-from deathsphere.records.two_wheeler_files import is_two_wheeler_file, read_machine_file, two_wheeler_file, two_wheeler_text
+from deathsphere.records.two_wheeler_files import is_two_wheeler_file, two_wheeler_file, two_wheeler_text
 from deathsphere.records.two_wheeler_presets import PRESETS as MOTORCYCLES
 from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
+from deathsphere.requests.decode import read_machine_file
 from deathsphere.table import Table
 
 __all__ = ["TwoWheeler", "TWO_WHEELERS", "machines_table", "as_two_wheeler", "is_two_wheeler", "two_wheeler_only", "two_wheeler_ride", "STRAIGHT_COLUMNS",
@@ -547,8 +548,11 @@ def _turn_summary(request: TurnRequest, table: Table, first: int, stop: int) -> 
                   for c, v in rows.items()})
 
 
-def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torque=None, flat=False, steer=None,
-                     r=R, diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True, only=None) -> Table:
+#: The keys of a two-wheeler's ``ride`` as typed and their defaults: a turn's and ``flat``.
+RIDE_KEYS = {**TURN_KEYS, "flat": False}
+
+
+def two_wheeler_ride(machine, typed: Mapping) -> Table:
     """``ride`` for a two-wheeler (:func:`deathsphere.ride` with ``flat``,
     ``steer`` or ``steer_torque``; docs/two-wheeler.md sec. 10): on flat
     ground the eigenvalues of upright straight running at each rear contact
@@ -561,8 +565,17 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
     rider's table, a row per lane (:data:`TURN_SUMMARY_COLUMNS`); ``only``
     keeps the turns of those statuses (ride's ``only``).  At most
     MAX_TURN_REQUESTS lanes x speeds: :func:`two_wheeler_ride_sweep
-    <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more."""
-    steer, steer_torque = steer_request(steer, steer_torque)
+    <deathsphere.api.two_wheeler_streams.two_wheeler_ride_sweep>` streams more.
+    ``typed``: :func:`deathsphere.ride`'s keys for a two-wheeler
+    (:data:`RIDE_KEYS`; one not given: its default)."""
+    unknown = sorted(set(typed) - set(RIDE_KEYS))
+    if unknown:
+        raise TypeError(f"two_wheeler_ride() got an unexpected key {unknown[0]!r}")
+    given = {**RIDE_KEYS, **typed}
+    theta, height, diameter, r, g, mu, max_g, summary, stability, only, flat = (
+        given[key] for key in ("theta", "height", "diameter", "r", "g", "mu", "max_g", "summary", "stability",
+                               "only", "flat"))
+    steer, steer_torque = steer_request(given["steer"], given["steer_torque"])
     if checked_flag("flat", flat):
         t, steer, g = _machine(machine, steer, g)
         summary = checked_flag("summary", summary)
@@ -579,9 +592,9 @@ def two_wheeler_ride(machine, *, theta=None, height=None, speed=None, steer_torq
         if only is not None:
             raise ParameterError("upright straight running on flat ground has no status to keep: only is for the "
                                  "globe", "only")
-        return _straight(t, g, speed, steer, summary)
-    typed = {key: value for key, value in locals().items() if key in TURN_KEYS}   # the keywords, as typed
-    return turn_rows(turn_request(machine, typed))
+        return _straight(t, g, given["speed"], steer, summary)
+    turn = {key: given[key] for key in TURN_KEYS}       # the keywords as typed, the steer's read once
+    return turn_rows(turn_request(machine, {**turn, "steer": steer, "steer_torque": steer_torque}))
 
 
 def _one_g(g):
@@ -676,12 +689,35 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     frames and head, in the core's axes: origin the sphere's centre, z
     down).
     """
+    typed = {key: value for key, value in locals().items() if key in RUN_KEYS}   # the keywords, as typed
+    return two_wheeler_run(machine, typed, view=view, progress=progress)
+
+
+#: The keys of a two-wheeler's run as typed (:func:`simulate_two_wheeler`'s
+#: keywords but the machine, the view and the progress) and their defaults.
+RUN_KEYS = {"theta": None, "height": None, "speed": None, "r": R, "diameter": None, "g": G, "mu": INF, "branch": 0,
+            "perturb": 0.0, "periods": None, "points_per_period": 100, "steer_gains": None, "hands_free": False,
+            "steer": "free", "method": "DOP853", "rtol": 1e-10, "atol": None, "flat": False, "turn_radius": None,
+            "duration": None, "perturb_lean_rate": 0.0, "perturb_steer_rate": 0.0}
+
+
+def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple:
+    """:func:`simulate_two_wheeler` from its keys as typed (:data:`RUN_KEYS`;
+    one not given: its default): every value checked, the start found, the
+    run integrated."""
     from deathsphere.api.arguments import checked_choice, checked_flag, checked_optional, checked_scalar
     from deathsphere.simulation.runner import METHODS
     from deathsphere.physics.two_wheeler import grounds, motion
     from deathsphere.physics.two_wheeler.simulate import Kick, Solver, Steering
     from deathsphere.simulation.two_wheeler import run_two_wheeler as integrate
 
+    unknown = sorted(set(typed) - set(RUN_KEYS))
+    if unknown:
+        raise TypeError(f"two_wheeler_run() got an unexpected key {unknown[0]!r}")
+    given = {**RUN_KEYS, **typed}
+    (theta, height, speed, r, diameter, g, mu, branch, perturb, periods, points_per_period, steer_gains, hands_free,
+     steer, method, rtol, atol, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate) = (
+        given[key] for key in RUN_KEYS)
     t = as_two_wheeler(machine)
     if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
         raise ParameterError(f"steer must be one of {' | '.join(STEER_MODES)} (got {steer!r})", "steer")

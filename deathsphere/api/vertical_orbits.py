@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import numpy as np
 
@@ -37,6 +38,7 @@ from deathsphere.constants import (
     SIDES,
 )
 from deathsphere.params import ParameterError
+from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.table import Table
 
 #: Output columns of ``vertical`` that echo an input, read back under that
@@ -186,7 +188,7 @@ def vertical(theta, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r
 
 def _vertical_setup(side, a, r, k, g, mu) -> dict:
     """The scalar options of a vertical orbit, checked (a wheel; r > a inside)."""
-    setup = checked_setup("wheel", side, a, r, k, g, mu)
+    setup = checked_setup(WHEEL, side, a, r, k, g, mu)
     return dict(side=setup.side, a=setup.a, r=setup.r, k=setup.k, g=setup.g, mu=setup.mu)
 
 
@@ -297,5 +299,6 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     # both outputs can be fed back: the summary and the orbit point by point
     outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
     reader = request_reader(source, {**VERTICAL_FIELDS, **PHI_FIELD}, overrides, VERTICAL_ECHO, outputs)
-    batches = input_requests(reader, _vertical_chunk(points), requests_at_phi)
+    # a row's refusal names its column as the file's header typed it
+    batches = input_requests(reader, _vertical_chunk(points), partial(requests_at_phi, typed=reader.typed))
     return Chunks(_vertical_work(points, stability, keep)(batches))

@@ -15,6 +15,7 @@ table, a progress bar, a note on stderr), so a piped command never pays for it.
 from __future__ import annotations
 
 import errno
+import math
 import importlib.util
 import os
 import sys
@@ -112,7 +113,19 @@ class OutputPath(click.ParamType):
 
 #: Work that ends sooner draws no progress bar: a bar that flashes up for a
 #: fraction of a second only leaves a flicker (or, mixed with output, residue).
+#: The environment variable DEATHSPHERE_PROGRESS_DELAY (seconds) sets it for
+#: a run: 0 shows the bar of any work at once (the tests of the bar use it,
+#: so that they need not run seconds of work to see one).
 PROGRESS_DELAY_S = 1.0
+
+
+def _progress_delay() -> float:
+    text = os.environ.get("DEATHSPHERE_PROGRESS_DELAY", "")
+    try:
+        delay = float(text)
+    except ValueError:
+        return PROGRESS_DELAY_S
+    return delay if math.isfinite(delay) and delay >= 0 else PROGRESS_DELAY_S
 
 
 class _Progress:
@@ -120,8 +133,8 @@ class _Progress:
     Without a bar (not a terminal) both do nothing.  The bar is drawn only
     once the work has run :data:`PROGRESS_DELAY_S`."""
 
-    def __init__(self, bar=None, task=None):
-        self.bar, self.task = bar, task
+    def __init__(self, bar=None, task=None, delay: float = PROGRESS_DELAY_S):
+        self.bar, self.task, self.delay = bar, task, delay
         self.started = False
         self._since = time.monotonic()
         self._lock = threading.Lock()
@@ -129,7 +142,7 @@ class _Progress:
     def _show(self) -> None:
         # also called from the timer of progress() (work that reports nothing)
         with self._lock:
-            if not self.started and time.monotonic() - self._since >= PROGRESS_DELAY_S:
+            if not self.started and time.monotonic() - self._since >= self.delay:
                 self.bar.start()
                 self.started = True
 
@@ -177,8 +190,9 @@ def progress(label: str, total: int, streaming: bool = False):
 
     bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                    console=stderr_console(), transient=True, redirect_stdout=False, redirect_stderr=False)
-    state = _Progress(bar, bar.add_task(label, total=total))
-    timer = threading.Timer(PROGRESS_DELAY_S, state._show)
+    delay = _progress_delay()
+    state = _Progress(bar, bar.add_task(label, total=total), delay)
+    timer = threading.Timer(delay, state._show)
     timer.daemon = True
     timer.start()
     try:

@@ -1,14 +1,14 @@
 """Machine files (``--machine-file``): a machine's parameters in a small
 TOML file or a one-row CSV file, over a preset's values (docs/machine.md
-sec. 7); the two-wheeler's files are read by the same reader."""
+sec. 7).  Here the file becomes its keys and values as typed (the
+two-wheeler's files are read by the same reader); the requests' decoder
+(:func:`deathsphere.requests.decode.decode_machine_file`) makes them a
+machine, each value checked once against the registry and a refusal
+naming the key as typed."""
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from deathsphere.errors import ParameterError
-from deathsphere.records.machine import UNECHOABLE, Machine
-from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
 
 #: Keys of a machine file (TOML or CSV) -> registry parameter.
 FILE_KEYS = {"mass": "mass", "com_height": "com_height", "wheel_radius": "a", "tyre_radius": "tyre_radius",
@@ -16,34 +16,12 @@ FILE_KEYS = {"mass": "mass", "com_height": "com_height", "wheel_radius": "a", "t
              "spin_inertia": "spin_inertia", "head_height": "head_height", "width": "width"}
 
 
-def machine_file(path, base=DEFAULT_MACHINE) -> Machine:
-    """A machine from a small TOML file (``key = value`` lines) or a CSV file
-    (a header naming the keys, one row of values): keys ``name``, ``source``
-    and those of :data:`FILE_KEYS` (numbers, or text with a unit suffix:
-    ``"16in"``); a key not given keeps ``base``'s value (a preset)."""
-    data, p = machine_file_data(path)
-    unknown = sorted(set(data) - set(FILE_KEYS) - {"name", "source", "base"})
-    if unknown:
-        raise ParameterError(f"machine file {p.name}: unknown key {unknown[0]!r} (known: name, source, base, "
-                             f"{', '.join(FILE_KEYS)})", "machine_file")
-    start = as_machine(str(data.get("base", base)))
-    values = {FILE_KEYS[k]: v for k, v in data.items() if k in FILE_KEYS}
-    machine = start.with_overrides(**values)
-    if "name" not in data and any(c in p.stem for c in UNECHOABLE):
-        raise ParameterError(f"machine file {p.name}: its name (the file's name: {p.stem!r}) holds a comma or a line "
-                             "break, which the CSV output cannot echo; give a name key", "machine_file")
-    from deathsphere.table.reasons import reason_text
-
-    # the file's name as the default source, written as a reason is (no comma, one line)
-    return replace(machine, name=str(data.get("name", p.stem)),
-                   source=str(data.get("source", reason_text(f"file {p.name}"))))
-
-
 def machine_file_data(path) -> tuple[dict, "pathlib.Path"]:
     """The keys and values of a machine file, TOML (``.toml``: ``key =
     value`` lines) or CSV (a header naming the keys, one row of values),
     and its path; what is not such a file is refused in one line
-    (:func:`machine_file`; the two-wheeler's files read them too)."""
+    (:func:`~deathsphere.requests.decode.decode_machine_file`; the
+    two-wheeler's files read them too)."""
     import csv
     import tomllib
 
@@ -91,3 +69,11 @@ def _machine_text(raw: bytes, name: str) -> str:
         shown = encoding.upper().replace("-SIG", "")
         raise ParameterError(f"machine file {name}: not {shown} text (byte {exc.start}: "
                              f"{raw[exc.start:exc.start + 1]!r}); save it as UTF-8", "machine_file") from None
+
+
+def file_source(name: str) -> str:
+    """A machine's source when its file gives none: the file's name,
+    written as a reason is (no comma, one line: every output row echoes it)."""
+    from deathsphere.table.reasons import reason_text
+
+    return reason_text(f"file {name}")

@@ -3,7 +3,7 @@ docs/two-wheeler.md sec. 1.4): the BicycleParameters library's benchmark
 format (``<Name>Benchmark.txt``: ``name = value`` or ``name =
 value+/-uncertainty`` lines, the benchmark's 26 names) and the project's
 machine file (TOML ``key = value`` lines or a CSV header and row, read as
-:func:`~deathsphere.records.machine_files.machine_file` reads them) whose keys are
+:func:`~deathsphere.requests.decode.decode_machine_file` reads them) whose keys are
 the benchmark's names.  A bad file is refused in one line.
 
 Gravity is the run's, not the two-wheeler's: a BicycleParameters file's
@@ -19,15 +19,14 @@ import re
 from pathlib import Path
 
 from deathsphere.records.machine import UNECHOABLE
-from deathsphere.records.machine_files import machine_file, machine_file_data, machine_file_text
-from deathsphere.records.machine_presets import DEFAULT_MACHINE
+from deathsphere.records.machine_files import machine_file_data, machine_file_text
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler
 from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
 from deathsphere.constants import STANDARD_GRAVITY
 from deathsphere.params import PARAMS, ParameterError
 from deathsphere.physics.two_wheeler.parameters import FIELD_NAMES, PARAMETER_NAMES
 
-__all__ = ["two_wheeler_file", "read_machine_file", "is_two_wheeler_file", "two_wheeler_text", "FILE_STYLES"]
+__all__ = ["two_wheeler_file", "is_two_wheeler_file", "two_wheeler_text", "FILE_STYLES"]
 
 #: The texts :func:`two_wheeler_text` writes.
 FILE_STYLES = ("toml", "bicycleparameters")
@@ -184,17 +183,6 @@ def two_wheeler_file(path, base=None) -> TwoWheeler:
     head = tuple(_value(k, data[k], p.name) if k in data else h for k, h in zip(("head_x", "head_z"), head))
     return _built(values, head, _name(data, p.stem, p.name), str(data.get("source", reason_text(f"file {p.name}"))),
                   p.name)
-
-
-def read_machine_file(path, base=DEFAULT_MACHINE):
-    """A machine file's machine: a :class:`TwoWheeler` when it is a
-    two-wheeler's (:func:`is_two_wheeler_file`), else the single-contact
-    :class:`~deathsphere.records.machine.Machine` of
-    :func:`~deathsphere.records.machine_files.machine_file`; ``base`` the preset
-    whose values the keys not given keep."""
-    if is_two_wheeler_file(path):
-        return two_wheeler_file(path, base=base)
-    return machine_file(path, base=base)
 
 
 def two_wheeler_text(machine, style: str = "toml") -> str:

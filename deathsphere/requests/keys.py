@@ -13,15 +13,18 @@ from deathsphere.errors import ParameterError
 @dataclass(frozen=True)
 class Keys:
     """``where``: the table the keys were typed in (``"globe"``, ``"rider
-    'Ana'"``), None for options and keywords."""
+    'Ana'"``, ``"machine file bike.toml"``), None for options and keywords;
+    ``param``: the option a refusal is reported under when the keys were
+    typed in a file that option names (``machine_file``; None: the key)."""
 
     where: str | None = None
+    param: str | None = None
 
     def fail(self, key: str | None, what: str, missing: bool = False):
         """Refuse in one line naming ``key`` (raises ParameterError)."""
         if self.where is None:
-            raise ParameterError(what, key, missing=missing)
-        raise ParameterError(f"{self.where}: {key}: {what}" if key else f"{self.where}: {what}", key)
+            raise ParameterError(what, self.param or key, missing=missing)
+        raise ParameterError(f"{self.where}: {key}: {what}" if key else f"{self.where}: {what}", self.param or key)
 
     def refuse(self, key: str, predicate: str):
         """Refuse ``key`` with what is wrong with it (``"is not a key of a

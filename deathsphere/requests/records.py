@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from deathsphere.constants import STANDARD_GRAVITY, TABLE1_WHEEL_RADIUS
 from deathsphere.physics.ground import Sphere
 from deathsphere.records.machine import Machine
+from deathsphere.records.paper_bodies import WHEEL, PaperBodyKind
 
 
 @dataclass(frozen=True)
@@ -102,11 +103,12 @@ class Spin:
 
 @dataclass(frozen=True)
 class PaperBody:
-    """One of the paper's bodies: a ``"wheel"`` or a ``"sphere"`` of radius
-    ``a`` [m] and inertia factor ``k`` (None: the body's own), rolling on
-    the ``"inside"`` or ``"outside"`` of the globe (the run's ground)."""
+    """One of the paper's bodies: ``kind`` its record (the wheel or the
+    ball, :mod:`deathsphere.records.paper_bodies`) of radius ``a`` [m] and
+    inertia factor ``k`` (None: the body's own), rolling on the
+    ``"inside"`` or ``"outside"`` of the globe (the run's ground)."""
 
-    kind: str = "wheel"
+    kind: PaperBodyKind = WHEEL
     side: str = "inside"
     a: float = TABLE1_WHEEL_RADIUS
     k: float | None = None

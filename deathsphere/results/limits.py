@@ -12,6 +12,8 @@ from deathsphere.constants import BOUNDARY_LABELS
 from deathsphere.model import Setup, Table
 from deathsphere.parallel import ordered_map
 from deathsphere.physics import region
+from deathsphere.records.paper_bodies import WHEEL
+from deathsphere.requests.decode import paper_body_codes
 
 #: Boundary name -> the equation it comes from (inside, outside).
 EQUATIONS = {
@@ -179,9 +181,9 @@ def limits_rows(req: dict, highest: bool) -> Table:
         probe[name] = np.full(n, np.nan)
     if highest:
         probe["theta"] = np.full(n, 90.0)
-    wheel = req["body"] == "wheel"
+    body = paper_body_codes(req["body"])
     # a known body that is not a wheel: the reason is that limits are a wheel's
-    reason = np.where((reason == "") & ~wheel & np.isin(req["body"], ("sphere", "particle")), NOT_A_WHEEL, reason)
+    reason = np.where((reason == "") & (body >= 0) & (body != WHEEL.code), NOT_A_WHEEL, reason)
     reason = np.where(reason == "", validate_requests(probe), reason)
     req = {**req, "k": probe["k"]}  # the validator fills k by body
     ok = reason == ""

@@ -14,6 +14,8 @@ import numpy as np
 from deathsphere import params
 from deathsphere.model import EXACT_METHOD, LIVE_STATUSES
 from deathsphere.physics import stability as exact_stability
+from deathsphere.records.paper_bodies import WHEEL
+from deathsphere.requests.decode import paper_body_codes
 from deathsphere.table import Table
 
 #: The report's columns (appended to, never reordered: input_row, body and
@@ -77,7 +79,7 @@ def stability_report(orbits: Table) -> Table:
                           exact=np.where(analysed, cells, None), deviation=blank,
                           note=np.where(analysed, _EXACT_NOTE, why_not), validity_limit=blank,
                           present=np.ones(n, bool)))
-    wheels = np.flatnonzero(analysed & (orbits["body"] == "wheel"))
+    wheels = np.flatnonzero(analysed & (paper_body_codes(orbits["body"]) == WHEEL.code))
     if wheels.size:
         theta = np.deg2rad(orbits["theta_deg"][wheels])
         alpha = np.deg2rad(params.reduce_angle(orbits["alpha_deg"][wheels]))

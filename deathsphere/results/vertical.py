@@ -18,7 +18,6 @@ import math
 import numpy as np
 
 from deathsphere import params
-from deathsphere.constants import DEFAULT_INERTIA
 from deathsphere.model import COLUMNS as ORBIT_COLUMNS
 from deathsphere.model import (
     NOT_ANALYSED_K0,
@@ -31,6 +30,8 @@ from deathsphere.model import (
 )
 from deathsphere.physics import vertical_orbit
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+from deathsphere.records.paper_bodies import WHEEL
+from deathsphere.requests.decode import as_typed
 
 #: Request fields of a vertical orbit (CSV header names for --input).
 VERTICAL_FIELDS = {
@@ -40,7 +41,7 @@ VERTICAL_FIELDS = {
     "phidot_top": (None, "rad/s", "orbital rate at the top"),
     **{name: REQUEST_FIELDS[name] for name in ("a", "r", "g", "mu")},
     # a vertical orbit is a wheel's: its inertia factor defaults to the wheel's
-    "k": (DEFAULT_INERTIA["wheel"], *REQUEST_FIELDS["k"][1:]),
+    "k": (WHEEL.default_k, *REQUEST_FIELDS["k"][1:]),
 }
 
 #: Summary columns: the orbit contract's first 22 (without omega3/branch),
@@ -79,7 +80,7 @@ def vertical_requests(n: int, invalid=None, input_row=None, v_top=None, phidot_t
     """A vertical-orbit request batch: an orbit request of a wheel in the
     orbit plane (alpha = 0 inside, 180 deg outside) plus the top speed/rate."""
     side = np.broadcast_to(np.asarray(fields.pop("side", "inside"), dtype=object), (n,))
-    req = make_requests(n, invalid=invalid, input_row=input_row, body="wheel", side=side,
+    req = make_requests(n, invalid=invalid, input_row=input_row, body=WHEEL, side=side,
                         alpha=np.where(side == "outside", 180.0, 0.0), **fields)
     for name, value in (("v_top", v_top), ("phidot_top", phidot_top)):
         req[name] = np.broadcast_to(np.asarray(math.nan if value is None else value, dtype=float), (n,)).copy()
@@ -92,9 +93,10 @@ def _validate(req) -> np.ndarray:
     both_or_none = np.isnan(v) == np.isnan(w)
     for i in np.flatnonzero((reason == "") & both_or_none):
         reason[i] = "give exactly one of v_top (m/s) and phidot_top (rad/s)"
+    typed = req.get("typed", {})
     for name, given in (("v_top", ~np.isnan(v)), ("phidot_top", ~np.isnan(w))):
         rows = np.flatnonzero((reason == "") & given)
-        reason[rows] = params.problems(name, req[name][rows])
+        reason[rows] = [as_typed(name, words, typed) for words in params.problems(name, req[name][rows])]
     return reason
 
 

@@ -17,6 +17,8 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import machine_motion as mm
+from deathsphere.records.paper_bodies import Ball
+from deathsphere.requests.decode import paper_body_named
 from deathsphere.simulation.bodies import MACHINE, PAPER, broadcast_params, model_of, take
 
 __all__ = ["frame_geometry", "machine_frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD",
@@ -339,7 +341,7 @@ def body_frames(summary, states: dict, *, refine: bool = True, params=None) -> d
             geometry = machine_frame_geometry
         else:
             one = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
-                                 summary["side"][i] == "outside", summary["body"][i] == "sphere")
+                                 summary["side"][i] == "outside", isinstance(paper_body_named(summary["body"][i]), Ball))
             geometry = frame_geometry
         if refine:
             t, y = refine_samples(t, y, one)

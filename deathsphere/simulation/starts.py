@@ -28,6 +28,7 @@ from deathsphere.physics import vertical_orbit as vert
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import r_prime
 from deathsphere.physics.status import REASON_TEXT, Status
+from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
 from deathsphere.simulation.bodies import MachineRun, concat_params, take
 from deathsphere.simulation.status import NO_FIT_VERTICAL_REASON, RunStatus
 
@@ -120,8 +121,8 @@ class Starts:
 
 
 def _check_setup(setup: Setup):
-    if setup.body not in ("wheel", "sphere"):
-        raise ValueError(f"simulation needs body wheel or sphere (got {setup.body!r})")
+    if not setup.body.rolls:
+        raise ValueError(f"simulation needs body wheel or sphere (got {setup.body.word!r})")
     if not setup.k > 0:
         raise ValueError(f"simulation needs an inertia factor k > 0 (got {setup.k:g}): "
                          "the equations of motion are singular at k = 0")
@@ -318,14 +319,14 @@ def horizontal_starts(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, o
     _check_setup(setup)
     _check_angles(theta_deg, perturb_deg, perturb_theta_deg)
     outside = setup.side == "outside"
-    if setup.body == "wheel":
+    if isinstance(setup.body, Wheel):
         h = _wheel_horizontal(setup, theta_deg, alpha_deg, perturb_deg, perturb_theta_deg, phi_deg, outside)
     else:
         h = _sphere_horizontal(setup, theta_deg, omega3, omega, branch, perturb_deg, perturb_theta_deg, phi_deg,
                                outside)
     n = h.theta.size
     params = dyn.BodyParams(*(np.full(n, v, dtype=float) for v in (setup.a, setup.r, setup.k, setup.g)),
-                            np.full(n, outside), np.full(n, setup.body == "sphere"))
+                            np.full(n, outside), np.full(n, isinstance(setup.body, Ball)))
     ok = h.status == RunStatus.PENDING
     state = h.state
     if ok.any():
@@ -333,7 +334,7 @@ def horizontal_starts(setup: Setup, theta_deg, alpha_deg=None, *, omega3=None, o
     period = np.where(ok, 2 * np.pi / np.abs(np.where(ok, h.rate, 1.0)), np.nan)
     return Starts(
         state=state, params=params, frame=np.broadcast_to(np.eye(3), (n, 3, 3)).copy(),
-        input_row=_input_rows(input_row, n), body=np.full(n, setup.body, dtype=object),
+        input_row=_input_rows(input_row, n), body=np.full(n, setup.body.word, dtype=object),
         side=np.full(n, setup.side, dtype=object), orbit=np.full(n, "horizontal", dtype=object),
         theta=h.theta, alpha=h.alpha, theta_deg=h.theta_deg, alpha_deg=h.alpha_deg, rate=h.rate,
         turning=np.where(ok, h.rate, 0.0), period=period,
@@ -394,7 +395,7 @@ def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, pertur
     the top: eq. 28a) stops at once with status contact_lost.
     """
     _check_setup(setup)
-    if setup.body != "wheel":
+    if not isinstance(setup.body, Wheel):
         raise ValueError("vertical orbits are for a wheel (body wheel)")
     _check_angles(theta_deg, perturb_deg, perturb_theta_deg)
     th_d, v, ps_d, kick_al, kick_th = _flat(theta_deg, speed, phi_start_deg, perturb_deg, perturb_theta_deg)
@@ -425,7 +426,7 @@ def vertical_starts(setup: Setup, theta_deg, speed, *, phi_start_deg=0.0, pertur
         state[:, ok] = dyn.project(lab, dyn.BodyParams(*(x[ok] for x in params)))
     return Starts(
         state=state, params=params, frame=np.broadcast_to(VERTICAL_FRAME, (n, 3, 3)).copy(),
-        input_row=_input_rows(input_row, n), body=np.full(n, "wheel", dtype=object),
+        input_row=_input_rows(input_row, n), body=np.full(n, WHEEL.word, dtype=object),
         side=np.full(n, setup.side, dtype=object), orbit=np.full(n, "vertical", dtype=object),
         theta=th, alpha=al, theta_deg=th_d, alpha_deg=np.full(n, 180.0 if outside else 0.0), rate=rate,
         turning=np.zeros(n), period=period, phi0=ph,

@@ -61,14 +61,26 @@ def _panel(geo: dict, theta, alpha, mu_available) -> list:
             Readout("friction", "F_f", " m/s\u00b2", 2, geo["friction_magnitude"], note=True, loop=False)]
 
 
+#: How each word of the summary's ``body`` column is drawn (the run's table
+#: read as data; any other body, a machine, rolls on a wheel): its drawing
+#: item's kind and fields but the radius, its legend and its name in the title.
+DRAWN = {
+    "sphere": ({"kind": "ball", "name": "ball", "centre": "centre", "marker": "axis"},
+               "ball, red seam and marker", "ball"),
+}
+WHEEL_DRAWN = ({"kind": "wheel", "name": "wheel", "centre": "centre", "axis": "axis", "e3": "e3", "spin": "spin"},
+               "wheel, red: the marked spoke", None)
+
+
+def _drawn(body: str) -> tuple:
+    return DRAWN.get(body, WHEEL_DRAWN)
+
+
 def _draw(body: str, machine: bool, a: float, r: float, g: float) -> list:
     """The body's items: the wheel (or ball), a machine's frame and rider,
     the trail, the force arrows (colours: the page's, on its dark
     background; ``print``: the loop's, on white)."""
-    shape = ({"kind": "ball", "name": "ball", "centre": "centre", "marker": "axis", "radius": a} if body == "sphere"
-             else {"kind": "wheel", "name": "wheel", "centre": "centre", "axis": "axis", "e3": "e3", "spin": "spin",
-                   "radius": a})
-    items = [shape]
+    items = [{**_drawn(body)[0], "radius": a}]
     if machine:
         # a line from the contact through the hub up to the head, the
         # centre of mass a dot on it, the head a ring
@@ -89,8 +101,7 @@ def _draw(body: str, machine: bool, a: float, r: float, g: float) -> list:
 
 
 def _legend(body: str, machine: bool) -> list:
-    rows = [{"colour": "#e8c547", "text": "ball, red seam and marker" if body == "sphere"
-             else "wheel, red: the marked spoke"}]
+    rows = [{"colour": "#e8c547", "text": _drawn(body)[1]}]
     if machine:
         rows.append({"colour": "#c77dff", "text": "frame and rider: contact, hub, head; pink: centre of mass"})
     return rows + [{"colour": "#5fd3ff", "text": "trail of the contact point"},
@@ -99,7 +110,7 @@ def _legend(body: str, machine: bool) -> list:
 
 
 def _title(meta: dict, title: str) -> str:
-    what = f"{'ball' if meta['body'] == 'sphere' else meta['body']} {meta['side']} the sphere, {meta['orbit']} orbit"
+    what = f"{_drawn(meta['body'])[2] or meta['body']} {meta['side']} the sphere, {meta['orbit']} orbit"
     start = (f"\u03b8 = {meta['theta0_deg']:.1f}\u00b0" if meta["orbit"] == "vertical"
              else f"\u03b8\u2080 = {meta['theta0_deg']:.1f}\u00b0, \u03b1\u2080 = {meta['alpha0_deg']:.1f}\u00b0")
     return (f"{title}: " if title else "") + f"{what} ({start}, a = {meta['a']:g} m, r = {meta['r']:g} m)"

@@ -10,13 +10,12 @@ import sys
 import pytest
 from test_sweep import _with_stderr_on_a_terminal
 
-# each takes several seconds (well past the bar's delay however fast the machine)
+# work of several chunks, its bar drawn at once (no delay: DEATHSPHERE_PROGRESS_DELAY=0)
 LONG = {
-    "ride --summary": ["ride", "--diameter", "16ft", "--height", "0:2.4:0.002", "--speed", "5:35:0.5km/h",
+    "ride --summary": ["ride", "--diameter", "16ft", "--height", "0:2.4:0.1", "--speed", "5:35:0.5km/h",
                        "--mu", "1", "--max-g", "5", "--summary"],
-    # computed in a fraction of a second, written in seconds (JSON lines)
     "ride --vertical": ["ride", "--vertical", "--diameter", "16ft", "--theta", "0:180:1",
-                        "--v-top", "20:40:0.01km/h", "--format", "ndjson"],
+                        "--v-top", "20:40:0.5km/h", "--format", "ndjson"],
 }
 
 
@@ -29,7 +28,7 @@ def test_long_ride_shows_its_bar_on_stderr_only(name):
     args = LONG[name]
     piped = _piped(*args)
     assert piped.returncode == 0 and piped.stderr == b""  # no bar into a pipe
-    proc, seen = _with_stderr_on_a_terminal(*args)
+    proc, seen = _with_stderr_on_a_terminal(*args, delay=0)
     assert proc.returncode == 0
     assert proc.stdout == piped.stdout  # the bar never reaches the data
     assert b"ride" in seen and b"\xe2\x94\x81" in seen  # the label and the bar's line, on the terminal
@@ -38,7 +37,8 @@ def test_long_ride_shows_its_bar_on_stderr_only(name):
 def test_map_figure_with_stability_shows_a_bar_while_the_curves_are_found(tmp_path):
     pytest.importorskip("matplotlib")
     out = tmp_path / "map.png"
-    proc, seen = _with_stderr_on_a_terminal("map", "--stability", "-a", "0.9", "-r", "3", "--output", str(out))
+    proc, seen = _with_stderr_on_a_terminal("map", "--stability", "-a", "0.9", "-r", "3", "--step", "5",
+                                            "--output", str(out), delay=0)
     assert proc.returncode == 0 and proc.stdout == b"" and out.stat().st_size > 0
     assert b"map" in seen and b"0:00:0" in seen  # the label and the time elapsed
     assert f"deathsphere: wrote {out}".encode() in seen

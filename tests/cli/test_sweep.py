@@ -42,8 +42,11 @@ def test_sweep_into_head_ends_quietly():
     assert "Traceback" not in proc.stderr and "Error" not in proc.stderr
 
 
-def _with_stderr_on_a_terminal(*args):
+def _with_stderr_on_a_terminal(*args, delay=None):
     """Run the command with stderr on a pseudo-terminal; (process, what the terminal saw).
+
+    ``delay``: the progress bar's delay for this run (DEATHSPHERE_PROGRESS_DELAY;
+    0 draws the bar of any work at once, so a test need not run seconds of it).
 
     The terminal is read while the command runs, as a terminal would: a
     pseudo-terminal holds a few kB, and a progress bar that redraws for
@@ -69,7 +72,9 @@ def _with_stderr_on_a_terminal(*args):
     reader.start()
     try:
         proc = subprocess.run([sys.executable, "-m", "deathsphere", *args], stdout=subprocess.PIPE, stderr=follower,
-                              timeout=300, env={**os.environ, "COLUMNS": "80"})
+                              timeout=300,
+                              env={**os.environ, "COLUMNS": "80",
+                                   **({} if delay is None else {"DEATHSPHERE_PROGRESS_DELAY": str(delay)})})
         os.close(follower)
         reader.join(timeout=10)
     finally:
@@ -78,13 +83,13 @@ def _with_stderr_on_a_terminal(*args):
 
 
 def test_progress_bar_on_a_terminal_never_swallows_stdout():
-    """With stderr a terminal the progress bar of a long sweep (a few
-    seconds) shows there, and every CSV row still goes to stdout (rich's
-    Live must not redirect stdout)."""
-    # 1.3 M orbits: a few seconds, well past the bar's delay however fast the sweep
-    proc, seen = _with_stderr_on_a_terminal("sweep", "--theta", "0:180:0.05", "--alpha", "0:90:0.25")
+    """With stderr a terminal the progress bar of a sweep in several chunks
+    shows there (drawn at once: no delay), and every CSV row still goes to
+    stdout (rich's Live must not redirect stdout)."""
+    # 65 k orbits: four chunks of the sweep
+    proc, seen = _with_stderr_on_a_terminal("sweep", "--theta", "0:180:0.5", "--alpha", "0:90:0.5", delay=0)
     lines = proc.stdout.decode().splitlines()
-    assert proc.returncode == 0 and len(lines) == 1 + 3601 * 361
+    assert proc.returncode == 0 and len(lines) == 1 + 361 * 181
     assert b"input_row" not in seen and b"sweep" in seen  # the bar, not the data, on the terminal
 
 

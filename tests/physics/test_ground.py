@@ -4,18 +4,24 @@ agree with each other and with an independent reading of its surface."""
 import numpy as np
 import pytest
 
-from deathsphere.physics.ground import Ground, Plane, Sphere
+from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Sphere
 
-GROUNDS = [Sphere(2.4384), Plane()]
-LANES = {"sphere": np.linspace(0.05, 4.8, 23), "plane": np.linspace(0.5, 30.0, 23)}
+GROUNDS = [Sphere(2.4384), Plane(), Cylinder(4.8768, 3.6576), Cone(3.0, np.radians(80.0), 9.0),
+           Cone(3.0, np.radians(100.0)), Cone(12.0, np.radians(45.0), 4.0)]
+LANES = {"sphere": np.linspace(0.05, 4.8, 23), "plane": np.linspace(0.5, 30.0, 23),
+         "cylinder": np.linspace(0.0, 3.6, 23), "cone": np.linspace(0.0, 4.0, 23)}
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=lambda g: g.name)
+def _id(ground):
+    return ground.name + (f"{np.degrees(ground.wall_angle_rad):.0f}" if isinstance(ground, Cone) else "")
+
+
+@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
 def test_every_ground_speaks_the_protocol(ground):
     assert isinstance(ground, Ground)
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=lambda g: g.name)
+@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
 def test_contact_lies_on_the_surface_and_the_normal_faces_inside(ground):
     lane = LANES[ground.name]
     rho, z = ground.contact(lane)
@@ -32,7 +38,7 @@ def test_contact_lies_on_the_surface_and_the_normal_faces_inside(ground):
     assert np.all(ground.implicit(x + 1e-3 * n_rho * np.cos(0.7), y + 1e-3 * n_rho * np.sin(0.7), z + 1e-3 * n_z) < 0)
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=lambda g: g.name)
+@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
 def test_wall_angle_is_the_meridians_slope(ground):
     """beta from the contact curve's tangent by finite differences, and the
     normal (-sin beta, cos beta)."""
@@ -75,3 +81,58 @@ def test_hessians():
     hs = Sphere(3.0).hessian(x, y, z)
     assert hs.shape == (3, 3, 2) and np.array_equal(hs[..., 1], np.eye(3))
     assert np.array_equal(Plane().hessian(x, y, z), np.zeros((3, 3, 2)))
+
+
+@pytest.mark.parametrize("ground", [g for g in GROUNDS if not isinstance(g, Plane)], ids=_id)
+def test_curvatures_from_the_meridian(ground):
+    """kappa_meridian = d(beta)/ds along the meridian and kappa_parallel =
+    sin(beta) / rho (Meusnier), by finite differences of the contact curve."""
+    lane = LANES[ground.name][1:-1]
+    h = 1e-5
+    rho1, z1 = ground.contact(lane - h)
+    rho2, z2 = ground.contact(lane + h)
+    ds = np.hypot(rho2 - rho1, z2 - z1)
+    k_m = (ground.wall_angle(lane + h) - ground.wall_angle(lane - h)) / ds
+    rho, _ = ground.contact(lane)
+    k_m_given, k_p_given = ground.curvatures(lane)
+    assert np.allclose(k_m, k_m_given, rtol=1e-6, atol=1e-9)
+    assert np.allclose(np.sin(ground.wall_angle(lane)) / rho, k_p_given, rtol=1e-12)
+
+
+@pytest.mark.parametrize("ground", [g for g in GROUNDS if not isinstance(g, Plane)], ids=_id)
+def test_clearance_is_the_distance_to_the_surface(ground):
+    """A point stepped d along the inward normal from a contact is d inside."""
+    lane = LANES[ground.name][1:-1]
+    rho, z = ground.contact(lane)
+    n_rho, n_z = ground.normal(lane)
+    d = np.linspace(0.01, 0.5, lane.size)
+    assert np.allclose(ground.clearance(rho + d * n_rho, z + d * n_z), d, rtol=0, atol=1e-12)
+    assert np.allclose(ground.clearance(rho, z), 0.0, atol=1e-12)
+
+
+@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
+def test_gradient_and_hessian_are_the_implicit_functions_derivatives(ground):
+    rng = np.random.default_rng(3)
+    x, y, z = rng.uniform(0.5, 2.0, (3, 8))
+    h = 1e-6
+    grad, hess = ground.gradient(x, y, z), ground.hessian(x, y, z)
+    for i in range(3):
+        step = np.zeros((3, 1))
+        step[i] = h
+        up, down = (x, y, z) + step, (x, y, z) - step
+        assert np.allclose((ground.implicit(*up) - ground.implicit(*down)) / (2 * h), grad[i], atol=1e-7)
+        assert np.allclose((ground.gradient(*up) - ground.gradient(*down)) / (2 * h), hess[:, i], atol=1e-6)
+
+
+def test_the_upright_cone_is_the_drum():
+    drum, cone = Cylinder(4.0), Cone(4.0, np.pi / 2)
+    lane = np.linspace(0.0, 5.0, 7)
+    for answer in ("contact", "wall_angle", "normal", "curvatures"):
+        assert np.array_equal(np.asarray(getattr(drum, answer)(lane)), np.asarray(getattr(cone, answer)(lane)))
+
+
+def test_a_cone_leaning_in_ends_at_its_apex():
+    cone = Cone(3.0, np.radians(120.0), wall_height=10.0)
+    assert cone.highest_lane == pytest.approx(3.0 * np.tan(np.radians(60.0)))
+    assert cone.contact(cone.highest_lane)[0] == pytest.approx(0.0, abs=1e-12)
+    assert Cone(3.0, np.radians(60.0), 2.0).highest_lane == 2.0 and Cylinder(3.0).highest_lane == np.inf

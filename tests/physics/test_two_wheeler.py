@@ -169,40 +169,57 @@ def test_the_constraint_matrix_and_the_forcing_at_rest_are_the_equations_own(gro
                                atol=1e-12 * np.abs(rest).max())
 
 
-@pytest.fixture(scope="module")
-def derivations():
-    """Both grounds' fresh symbolic equations (some 50 s of sympy)."""
-    from deathsphere.physics.two_wheeler import derivation
-
-    return {s: derivation.derive(s) for s in derivation.SURFACES}
-
-
-def test_regenerating_the_shipped_code_changes_nothing(derivations):
-    """The generator writes today, for both grounds (flat and the sphere's),
-    exactly the shipped _generated.py, byte for byte: its functions, and the
-    import of their runtime from _blocks.py (regenerate with
-    ``python tools/generate_two_wheeler.py --write``)."""
+def _shipped_blocks():
+    """The shipped _generated.py cut where the generator joins its parts:
+    (header, {surface: that surface's functions}).  The generator writes the
+    header, then for each surface "\n\n" and its functions; each surface's
+    block starts at the decorator of its first function."""
     from deathsphere import codegen
+    from deathsphere.physics.two_wheeler.derivation import SURFACES
 
     shipped = codegen.GENERATED.read_text(encoding="utf-8")
-    assert codegen.generated_source(tuple(derivations), derivations) == shipped
-    for d in derivations.values():
-        assert codegen.generated_functions(d) in shipped
-    assert "def _in_blocks" not in shipped and _generated.BLOCK_BYTES == 32768
+    starts = [shipped.index(f"\n\n@_in_blocks(2)\ndef {s}_equations(") for s in SURFACES]
+    assert starts == sorted(starts)
+    ends = starts[1:] + [len(shipped)]
+    return shipped[:starts[0]], {s: shipped[a + 2:b] for s, a, b in zip(SURFACES, starts, ends)}
 
 
-def test_the_shipped_code_is_a_fresh_derivation(derivations):
-    """_generated.py is what derivation.py derives today: the fresh symbolic
-    equations on flat ground, evaluated at a random state, agree with the
-    shipped numeric code (regenerate with
-    ``python tools/generate_two_wheeler.py --write``)."""
+def test_the_shipped_header_is_the_generators():
+    """The shipped file is the generator's header and the surfaces' blocks,
+    nothing else: with each block checked against a fresh derivation below,
+    the whole file is what the generator writes today."""
     import sympy as sm
 
     from deathsphere import codegen
+    from deathsphere.physics.two_wheeler.derivation import SURFACES
 
-    d = derivations["flat"]
-    # the generator writes today, for flat ground, exactly the shipped text
-    assert codegen.generated_functions(d) in codegen.GENERATED.read_text(encoding="utf-8")
+    header, blocks = _shipped_blocks()
+    assert header == codegen._HEADER.format(version=sm.__version__, surfaces=tuple(SURFACES))
+    assert codegen.GENERATED.read_text(encoding="utf-8") == header + "".join("\n\n" + blocks[s] for s in SURFACES)
+    assert "def _in_blocks" not in header and _generated.BLOCK_BYTES == 32768
+
+
+@pytest.mark.parametrize("surface", ["flat", "sphere"])
+def test_regenerating_the_shipped_code_changes_nothing(surface):
+    """The generator writes today, for each ground, exactly the shipped
+    functions of _generated.py, byte for byte (regenerate with
+    ``python tools/generate_two_wheeler.py --write``).  One test per ground,
+    so that the two derivations (the suite's most expensive work, tens of
+    seconds of sympy each) run side by side on a parallel run.  On flat
+    ground the fresh symbolic equations, evaluated at a random state, also
+    agree with the shipped numeric code."""
+    from deathsphere import codegen
+    from deathsphere.physics.two_wheeler import derivation
+
+    d = derivation.derive(surface)
+    assert codegen.generated_functions(d) == _shipped_blocks()[1][surface]
+    if surface == "flat":
+        _fresh_equations_agree_with_the_shipped(d)
+
+
+def _fresh_equations_agree_with_the_shipped(d):
+    import sympy as sm
+
     rng = np.random.default_rng(7)
     q, u = rng.uniform(-0.5, 0.5, 8), rng.uniform(-2.0, 2.0, 8)
     p = np.array(benchmark_bicycle().values(BENCHMARK_GRAVITY)) * rng.uniform(0.8, 1.2, 26)

@@ -1,0 +1,103 @@
+"""The well of death and the banked track: a cone about the vertical axis
+(beyond the paper; docs/surfaces.md)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Cone"]
+
+
+@dataclass(frozen=True)
+class Cone:
+    """A cone about the z-axis: its wall meets the floor z = 0 on the circle
+    of radius ``radius`` [m] and rises at ``wall_angle`` beta [rad] from the
+    horizontal (0 < beta < pi): pi/2 is the drum, under pi/2 it leans out
+    (a well of death at about 80 degrees, a board track at 45), over pi/2
+    it leans in.  The contact at height h above the floor is at
+    rho = radius + h cot(beta); a lane runs from the floor up to
+    ``wall_height`` [m] (inf: no top) and, leaning in, below the apex."""
+
+    radius: float
+    wall_angle_rad: float
+    wall_height: float = math.inf
+    name: str = "cone"
+
+    #: z of the floor [m].
+    lowest = 0.0
+
+    @property
+    def apex_height(self) -> float:
+        """The height where a wall leaning in meets the axis [m] (inf when it leans out or is vertical)."""
+        if self.wall_angle_rad <= math.pi / 2:
+            return math.inf
+        return self.radius * math.tan(math.pi - self.wall_angle_rad)
+
+    @property
+    def highest_lane(self) -> float:
+        """The greatest height a lane can have [m]: the wall's top, or the apex."""
+        return min(self.wall_height, self.apex_height)
+
+    def _cot(self) -> float:
+        # cos/sin, exactly 0 for the upright wall (cos(pi/2) is 6e-17)
+        if self.wall_angle_rad == math.pi / 2:
+            return 0.0
+        return math.cos(self.wall_angle_rad) / math.sin(self.wall_angle_rad)
+
+    def contact(self, height):
+        height = np.asarray(height, dtype=float)
+        return self.radius + height * self._cot(), height + 0.0
+
+    def wall_angle(self, height):
+        return np.full(np.shape(height), float(self.wall_angle_rad))
+
+    def normal(self, height):
+        shape = np.shape(height)
+        cos_beta = 0.0 if self.wall_angle_rad == math.pi / 2 else math.cos(self.wall_angle_rad)
+        return np.full(shape, -math.sin(self.wall_angle_rad)), np.full(shape, cos_beta)
+
+    def curvatures(self, height):
+        rho, _ = self.contact(height)
+        safe = np.where(rho > 0, rho, 1.0)
+        # Meusnier: the parallel's normal curvature sin(beta) / rho; the generator is straight
+        return np.zeros(np.shape(rho)), np.where(rho > 0, math.sin(self.wall_angle_rad) / safe, np.inf)
+
+    def clearance(self, rho, z):
+        """The distance [m] of a point inside from the cone's generator line
+        through (radius, 0): (p - (radius, 0)) . n with n the inward normal
+        (the distance to the wall wherever the foot of the perpendicular
+        lies on it)."""
+        n_rho, n_z = -math.sin(self.wall_angle_rad), math.cos(self.wall_angle_rad)
+        return (np.asarray(rho, dtype=float) - self.radius) * n_rho + np.asarray(z, dtype=float) * n_z
+
+    def implicit(self, x, y, z):
+        """F = (rho - radius) sin(beta) - z cos(beta): the signed distance
+        from the generator (F < 0 inside)."""
+        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
+        return -self.clearance(np.hypot(x, y), z)
+
+    def _rho(self, x, y):
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        rho = np.hypot(x, y)
+        # on the axis the cone's function is not differentiable: its values
+        # there are the limit along +x (the axis is never a contact)
+        on_axis = rho == 0
+        return np.where(on_axis, 1.0, x), np.where(on_axis, 0.0, y), np.where(on_axis, 1.0, rho)
+
+    def gradient(self, x, y, z):
+        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
+        xs, ys, rho = self._rho(x, y)
+        s, c = math.sin(self.wall_angle_rad), math.cos(self.wall_angle_rad)
+        return np.stack((s * xs / rho, s * ys / rho, np.full(z.shape, -c)))
+
+    def hessian(self, x, y, z):
+        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
+        xs, ys, rho = self._rho(x, y)
+        s = math.sin(self.wall_angle_rad)
+        ux, uy = xs / rho, ys / rho
+        zero = np.zeros(x.shape)
+        hxx, hxy, hyy = s * (1 - ux * ux) / rho, -s * ux * uy / rho, s * (1 - uy * uy) / rho
+        return np.stack((np.stack((hxx, hxy, zero)), np.stack((hxy, hyy, zero)), np.stack((zero, zero, zero))))

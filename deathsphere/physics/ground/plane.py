@@ -1,0 +1,50 @@
+"""Flat ground, the plane z = 0 (the two-wheeler's flat-ground turns)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Plane"]
+
+
+@dataclass(frozen=True)
+class Plane:
+    """Flat ground, the plane z = 0, normal up.  A lane on it is a circle of
+    the contact about the turn's centre (radius ``rho``), not a height:
+    :meth:`contact` takes that radius."""
+
+    name: str = "plane"
+
+    #: z of the ground [m].
+    lowest = 0.0
+
+    def contact(self, rho):
+        rho = np.asarray(rho, dtype=float)
+        return rho, np.zeros_like(rho)
+
+    def wall_angle(self, rho):
+        return np.zeros(np.shape(rho))
+
+    def normal(self, rho):
+        return np.zeros(np.shape(rho)), np.ones(np.shape(rho))
+
+    def clearance(self, rho, z):
+        """z: a point's height above the ground [m]."""
+        return np.asarray(z, dtype=float) + 0.0 * np.asarray(rho, dtype=float)
+
+    def curvatures(self, rho):
+        z = np.zeros(np.shape(rho))
+        return z, z.copy()
+
+    def implicit(self, x, y, z):
+        return -np.broadcast_arrays(x, y, np.asarray(z, dtype=float))[2]
+
+    def gradient(self, x, y, z):
+        x, y, z = np.broadcast_arrays(x, y, np.asarray(z, dtype=float))
+        return np.stack((np.zeros_like(x), np.zeros_like(y), -np.ones_like(z)))
+
+    def hessian(self, x, y, z):
+        shape = np.broadcast(x, y, z).shape
+        return np.zeros((3, 3) + shape)

@@ -1,0 +1,81 @@
+"""The ground a body rolls on: one small protocol for every arena.
+
+Beyond the paper, which has one ground, the sphere.  A ground is a fixed
+surface of revolution about the vertical z-axis (or the flat plane z = 0).
+Physics functions take a ground record and arrays; they never take "a
+radius" or the name of a surface.  (The habit of SymBRiM's ground
+interface, ``GroundBase.get_normal(position)``: the body asks the ground
+where its contact can be and which way the surface faces there.)
+
+A lane on a surface of revolution is a parallel, given by the contact's
+``height`` above the surface's lowest point (``lowest`` is that point's z
+in the ground's own coordinates: -r for the globe, centred at the origin;
+0 for the drum and the cone, whose floor is the plane z = 0).  In the
+contact's meridian plane (unit vectors rho-hat horizontal outwards, z-hat
+up) every ground answers, vectorised over heights:
+
+* ``contact(height)``: the contact point (rho, z) [m];
+* ``wall_angle(height)``: beta [rad], the meridian's angle from the
+  horizontal at the contact, the meridian's tangent pointing up the wall
+  being (cos beta, sin beta) (0 a floor, pi/2 a vertical wall, over pi/2
+  an overhang; on the sphere beta = pi - theta);
+* ``normal(height)``: the unit normal (n_rho, n_z) = (-sin beta, cos beta)
+  pointing into the concave side, the side a rider rides ("inside");
+* ``curvatures(height)``: the principal curvatures (kappa_meridian,
+  kappa_parallel) [1/m] of the surface at the contact, positive where it
+  bends towards that normal (for a surface of revolution the parallel's
+  normal curvature is Meusnier's sin(beta) / rho);
+* ``clearance(rho, z)``: the distance [m] of a point of the meridian plane
+  from the surface, positive on the inside (a rider's head clearance);
+* ``highest_lane``: the greatest height a lane can have [m];
+* ``implicit(x, y, z)``, ``gradient(x, y, z)``, ``hessian(x, y, z)``: a
+  function F with the surface at F = 0 (F < 0 on the inside) and its first
+  and second derivatives, for the equations of motion and for finding a
+  contact from a position.
+
+Implementations: :class:`Sphere` (the globe, and the one place the paper's
+theta and a height convert), :class:`Cylinder` (the wall of death),
+:class:`Cone` (the well of death, a board track), :class:`Plane` (flat
+ground, whose lane is a turn radius rather than a height).
+"""
+
+from __future__ import annotations
+
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+__all__ = ["Ground", "meridian_frame"]
+
+
+@runtime_checkable
+class Ground(Protocol):
+    """What every ground answers (module docstring); arrays in, arrays out."""
+
+    name: str
+
+    def contact(self, height): ...
+
+    def wall_angle(self, height): ...
+
+    def normal(self, height): ...
+
+    def curvatures(self, height): ...
+
+    def clearance(self, rho, z): ...
+
+    def implicit(self, x, y, z): ...
+
+    def gradient(self, x, y, z): ...
+
+    def hessian(self, x, y, z): ...
+
+
+def meridian_frame(beta):
+    """The tangent up the meridian (cos beta, sin beta) and the inward
+    normal (-sin beta, cos beta) at wall angle beta [rad], each as a pair of
+    arrays (rho, z components): the frame that splits a contact force into
+    friction along the wall and the normal push (docs/surfaces.md)."""
+    beta = np.asarray(beta, dtype=float)
+    s, c = np.sin(beta), np.cos(beta)
+    return (c, s), (-s, c)
