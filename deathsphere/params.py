@@ -184,9 +184,21 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
           metavar="RAD_S",
           help="Orbital rate Omega. Wheel (> 0): every tilt alpha giving it (eq. 29 solved, one row each). "
                "Sphere: signed about the upward vertical; omega3 follows (eq. 55)."),
-    Param("speed", "m/s", "centre speed", TINY, HUGE, symbol="v_cm", kind="speed", metavar="M_S",
-          help="Wheel: centre speed v_cm; every tilt alpha giving it (eq. 29 solved, one row each, branch "
-               "= root number in increasing alpha)."),
+    # one word, one point per command: ride and a show's plan take the contact's speed (a speedometer's
+    # reading); orbit, sweep and simulate still take the wheel's (or machine's) centre speed (docs/contract.md)
+    Param("speed", "m/s", "contact or centre speed", TINY, HUGE, symbol="v", kind="speed", metavar="M_S",
+          help="The speed, by command: ride and a show's plan, the contact's along the ground (a "
+               "speedometer's; a two-wheeler's rear contact's), the lap rate Omega = speed / (r sin theta); "
+               "orbit, sweep, stability and simulate, the centre's (the wheel's v_cm, a machine's centre of "
+               "mass). Every tilt alpha giving it, one row each (branch = root number in increasing alpha)."),
+    Param("com_speed", "m/s", "centre-of-mass speed", TINY, HUGE, symbol="v_cm", kind="speed", metavar="M_S",
+          column="v_cm_m_s",
+          help="The centre of mass's speed (a wheel's centre speed v_cm): ride and a show's plan, instead of "
+               "--speed (the contact's there); orbit, sweep and simulate, the same as --speed. Every tilt "
+               "giving it, one row each (docs/machine.md eq. M12)."),
+    Param("period", "s", "lap time", TINY, HUGE, symbol="T", kind="time", metavar="S", column="period_s",
+          help="Ride and a show's plan: the lap time instead of --speed, Omega = 2 pi / T; every tilt giving "
+               "it, one row each (docs/machine.md eq. M12r)."),
     Param("v_top", "m/s", "top speed", 0.0, HUGE, kind="speed", metavar="M_S",
           help="Vertical orbit: speed of the wheel's centre at the top, >= 0."),
     Param("phidot_top", "rad/s", "top rate", 0.0, HUGE, kind="rate", metavar="RAD_S",

@@ -35,6 +35,7 @@ KINDS: dict[str, str] = {
     "acceleration": "m/s^2",
     "mass": "kg",
     "load": "g",
+    "time": "s",
     "none": "",
 }
 
@@ -48,16 +49,18 @@ COMMON: dict[str, tuple[str, ...]] = {
     "acceleration": ("m/s^2", "ft/s^2", "g"),
     "mass": ("kg", "lb"),
     "load": ("g", "m/s^2"),
+    "time": ("s", "min"),
     "none": (),
 }
 
 _NOUN = {"length": "a length", "speed": "a speed", "rate": "an angular rate", "angle": "an angle",
          "acceleration": "an acceleration", "mass": "a mass", "load": "a load in g",
-         "none": "a plain number"}
+         "time": "a time", "none": "a plain number"}
 
 #: pint's spelling of each API unit, for the conversion and the dimension check.
 _PINT_API = {"length": "meter", "speed": "meter / second", "rate": "radian / second", "angle": "degree",
-             "acceleration": "meter / second ** 2", "mass": "kilogram", "load": "standard_gravity"}
+             "acceleration": "meter / second ** 2", "mass": "kilogram", "load": "standard_gravity",
+             "time": "second"}
 
 #: pint has no angle dimension (a radian is 1), so it would take ``2Hz`` or
 #: ``3%`` for an angular rate or an angle; angles are recognised by name.
@@ -202,6 +205,7 @@ _KNOWN: dict[tuple[str, str], Fraction] = {
     ("ft/s^2", "acceleration"): Fraction(381, 1250), ("g", "acceleration"): Fraction(196133, 20000),
     ("lb", "mass"): Fraction(45359237, 100000000),
     ("m/s^2", "load"): Fraction(20000, 196133),
+    ("min", "time"): Fraction(60),
 }
 
 

@@ -94,10 +94,11 @@ def test_a_stable_stunt125_orbit_stays_bounded():
 
 
 def test_a_machine_given_its_speed_rides_that_speed():
-    """speed is the centre of mass's (as ride's): the tilt is ride's for it
-    (eq. M12), and the simulated v_cm holds it on the steady orbit."""
+    """simulate's speed is the centre of mass's (ride's com_speed): the tilt
+    is ride's for it (eq. M12), and the simulated v_cm holds it on the
+    steady orbit."""
     v = 30 / 3.6
-    ride = deathsphere.ride(60, speed=v, machine="stunt125", diameter="16ft", stability=False)
+    ride = deathsphere.ride(60, com_speed=v, machine="stunt125", diameter="16ft", stability=False)
     series, summary = deathsphere.simulate(60, machine="stunt125", speed=v, diameter="16ft", periods=0.5,
                                            points_per_period=10)
     assert float(summary["alpha_deg"][0]) == pytest.approx(float(np.min(ride["alpha_deg"])), abs=1e-12)

@@ -81,8 +81,8 @@ def test_ride_reproduces_orbit_for_the_papers_wheel():
 
 
 def test_every_tilt_for_a_speed_and_the_rows_verify():
-    t = deathsphere.ride(height=[[0.3], [1.2], [2.4]], speed=["25km/h", "40km/h"], machine="stunt125", diameter="16ft",
-                         stability=False)
+    t = deathsphere.ride(height=[[0.3], [1.2], [2.4]], com_speed=["25km/h", "40km/h"], machine="stunt125",
+                         diameter="16ft", stability=False)
     assert t.shape == (3, 2) and len(t) == 6      # one tilt per speed here: the grid keeps its axes
     assert set(t["input_row"].tolist()) == set(range(1, 7))
     found = np.isfinite(t["alpha_deg"])
@@ -103,7 +103,7 @@ def test_a_speed_no_tilt_gives_is_one_no_orbit_row():
 def test_inputs_are_checked():
     with pytest.raises(ParameterError, match="exactly one of theta and height"):
         deathsphere.ride(90, height=1.0, alpha=10, machine="stunt125")
-    with pytest.raises(ParameterError, match="exactly one of alpha and speed"):
+    with pytest.raises(ParameterError, match="exactly one of alpha, speed, com_speed and period"):
         deathsphere.ride(90, machine="stunt125")
     with pytest.raises(ParameterError, match="at most the globe's diameter"):
         deathsphere.ride(height=6.0, alpha=10, machine="stunt125", diameter="16ft")
@@ -186,7 +186,7 @@ def test_the_api_speaks_the_commands_language():
 
 def test_a_speed_grid_keeps_its_axes_in_xarray_with_units():
     pytest.importorskip("xarray")
-    t = deathsphere.ride(height=[[0.8], [1.6], [2.4]], speed=["15km/h", "20km/h", "25km/h", "30km/h"],
+    t = deathsphere.ride(height=[[0.8], [1.6], [2.4]], com_speed=["15km/h", "20km/h", "25km/h", "30km/h"],
                          diameter="16ft", stability=False)
     ds = t.to_xarray()
     assert ds["load_g"].dims == ("height_m", "v_cm_m_s") and ds.sizes == {"height_m": 3, "v_cm_m_s": 4}
@@ -195,6 +195,10 @@ def test_a_speed_grid_keeps_its_axes_in_xarray_with_units():
     assert (ds["load_g"].attrs["units"], ds["height_m"].attrs["units"], ds["v_cm_km_h"].attrs["units"],
             ds["mu_required"].attrs["units"], ds["omega_rad_s"].attrs["units"]) == ("g", "m", "km/h", "1", "rad/s")
     assert "units" not in ds["status"].attrs
+    by_contact = deathsphere.ride(height=[[0.8], [1.6]], speed=["30km/h", "40km/h"], diameter="16ft",
+                                  stability=False).to_xarray()
+    assert by_contact["load_g"].dims == ("height_m", "v_contact_m_s")
+    np.testing.assert_allclose(by_contact["v_contact_m_s"].values, [30 / 3.6, 40 / 3.6])
     by_theta = deathsphere.ride([60, 90], [[5], [15]], diameter="16ft", stability=False).to_xarray()
     assert by_theta["v_cm_m_s"].dims == ("alpha_deg", "theta_deg")
 
@@ -237,3 +241,68 @@ def test_ride_summary_of_a_table_groups_by_the_inputs_as_given():
         assert s["theta_deg"].tolist() == [179.999, 180.0] and s["speeds_tried"].tolist() == [3, 3]
     with pytest.raises(ParameterError, match="tried"):
         deathsphere.ride_summary(t, tried="laps")
+
+
+def test_the_speed_is_the_contacts_and_the_centre_of_mass_runs_at_omega_r_g():
+    """For random lanes: the row's contact speed is the one asked for, by the
+    sphere's geometry (the contact at r sin(theta) from the axis), and its
+    centre of mass runs at Omega |r_G| of the forward model at the tilt
+    returned (ride by alpha: an independent evaluation)."""
+    rng = np.random.default_rng(11)
+    height = rng.uniform(0.3, 2.6, 12)
+    v = rng.uniform(20.0, 45.0, 12) / 3.6
+    t = deathsphere.ride(height=height, speed=v, machine="stunt125", diameter="16ft", stability=False)
+    found = np.isfinite(t["alpha_deg"])
+    assert found.sum() >= 8
+    req = t["input_row"][found] - 1
+    r = 16 * 0.3048 / 2
+    theta = np.arccos(height[req] / r - 1.0)
+    np.testing.assert_allclose(t["omega_rad_s"][found] * r * np.sin(theta), v[req], rtol=1e-9)
+    np.testing.assert_array_equal(t["v_contact_m_s"][found], v[req])        # echoed as asked
+    again = deathsphere.ride(t["theta_deg"][found], t["alpha_deg"][found], machine="stunt125", diameter="16ft",
+                             stability=False)
+    np.testing.assert_allclose(again["v_contact_m_s"], v[req], rtol=1e-9)
+    np.testing.assert_allclose(t["v_cm_m_s"][found], again["omega_rad_s"] * np.abs(again["com_orbit_radius_m"]),
+                               rtol=1e-9)
+
+
+def test_a_lap_time_is_the_rate_two_pi_over_it_and_a_16ft_globe_lane_moves_as_the_changelog_says():
+    t = deathsphere.ride(height="5ft", period=["1.3s", "0.02min"], machine="stunt125", diameter="16ft",
+                         stability=False)
+    assert list(t["period_s"]) == [1.3, 1.2] and list(t["status"]) == ["ok", "ok"]
+    np.testing.assert_allclose(t["omega_rad_s"], 2 * np.pi / np.array([1.3, 1.2]), rtol=1e-9)
+    contact = deathsphere.ride(height="5ft", speed="40km/h", diameter="16ft", stability=False)[0]
+    centre = deathsphere.ride(height="5ft", com_speed="40km/h", diameter="16ft", stability=False)[0]
+    assert round(contact["load_g"], 2) == 3.81 and round(centre["load_g"], 2) == 8.63
+    assert round(contact["v_cm_km_h"], 1) == 26.4 and round(centre["v_contact_m_s"] * 3.6, 1) == 61.6
+
+
+def test_exactly_one_way_to_hold_a_lane_and_the_refusal_names_the_keyword():
+    for extra, named in (({"speed": 8, "com_speed": 8}, "com_speed"), ({"alpha": 10, "period": 1.3}, "period"),
+                         ({"speed": 8, "period": 1.3}, "period")):
+        with pytest.raises(ParameterError) as err:
+            deathsphere.ride(90, machine="stunt125", diameter="16ft", **extra)
+        assert err.value.param == named and "exactly one of" in str(err.value)
+    with pytest.raises(ParameterError, match="does not take com_speed"):
+        deathsphere.ride(machine="stunt125-steer", steer="free", height=1, com_speed=5, diameter="16ft")
+    with pytest.raises(ParameterError, match="period"):
+        deathsphere.ride(90, period=0, diameter="16ft")
+
+
+def test_a_contact_speed_at_the_floor_is_a_no_orbit_row_with_its_reason():
+    t = deathsphere.ride(height=[0.0, 1.0], speed=8.0, diameter="16ft", stability=False)
+    assert list(t["status"]) == ["no_orbit", "ok"]
+    assert "vertical axis" in t["reason"][0]
+
+
+def test_a_two_wheelers_speed_is_its_rear_contacts_as_the_single_contact_machines():
+    """The same word on both models: a two-wheeler's speed runs its rear
+    contact round the parallel r sin(theta_rear) at the turn's rate."""
+    r = 16 * 0.3048 / 2
+    (turn,) = deathsphere.ride(machine="stunt125-steer", steer="free", height="5ft", speed="40km/h",
+                               diameter="16ft", stability=False)
+    assert turn["v_contact_m_s"] == turn["v_rear_m_s"] == 40 / 3.6
+    assert turn["omega_rad_s"] * r * np.sin(np.radians(turn["theta_deg"])) == pytest.approx(40 / 3.6, rel=1e-9)
+    (one,) = deathsphere.ride(machine="stunt125", height="5ft", speed="40km/h", diameter="16ft", stability=False)
+    assert one["theta_deg"] == pytest.approx(turn["theta_deg"], abs=1e-9)
+    assert round(turn["load_g"], 2) == 3.62 and round(one["load_g"], 2) == 3.81

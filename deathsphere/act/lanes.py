@@ -1,12 +1,15 @@
 """Each rider's lane (beyond the paper; docs/show.md, "Lanes"): where his
 contact, head and centre of mass are at any time.
 
-A horizontal lane is ``ride``'s steady orbit (docs/machine.md eqs. M1-M12)
-at the plan's height and centre-of-mass speed: the contact at r (sin theta
+A horizontal lane is ``ride``'s steady orbit (docs/machine.md eqs. M1-M12r)
+at the plan's height, held as the plan holds it: by the contact's speed
+(the rate Omega = v / (r sin theta)), the lap time (Omega = 2 pi / T), the
+lap of another rider (his lap time), or the centre of mass's speed (eq.
+M12): the contact at r (sin theta
 cos phi, sin theta sin phi, cos theta), phi = phase +- Omega t, the machine's
 up-axis u = -cos(alpha) rho-hat + sin(alpha) z-hat in the contact's meridian
 plane, the centre of mass G = Q + (h - t) u and the head H = Q + (head - t) u
-with Q = (r - t) n-hat (eq. M2).  Of the tilts giving the speed (eq. M12)
+with Q = (r - t) n-hat (eq. M2).  Of the tilts giving the speed or rate
 the lane takes the one closest to upright on the wall (alpha = theta - 90
 deg, the up-axis along the inward normal) among those with status ok, or,
 when none is ok, among all (the table then reports the status).
@@ -32,7 +35,7 @@ from deathsphere.act.plan import Plan, Rider
 from deathsphere.errors import ParameterError
 from deathsphere.physics.machine import meridian_points, vertical_loop
 from deathsphere.physics.machine_arrays import machine_arrays
-from deathsphere.physics.machine_lanes import horizontal_lanes
+from deathsphere.physics.machine_lanes import contact_rate, horizontal_lanes, horizontal_lanes_at_rate
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.machine import Machine
 
@@ -162,16 +165,49 @@ def _scalars(arrays: dict, i: int) -> dict:
     return {k: np.asarray(v)[i].item() for k, v in arrays.items() if np.ndim(v) == 1}
 
 
-def horizontal_lanes_of(riders: list[Rider], ground, globe) -> list:
-    """The horizontal lanes of ``riders`` (ride's steady orbits), all in one
-    call to the physics; a rider whose lane has no orbit gets a
+def _found_lanes(riders: list[Rider], theta, ground, globe, machines, laps: dict) -> dict:
+    """The physics' lanes of ``riders`` (one call for those held by the
+    centre of mass's speed, one for those held at a rate: a contact speed,
+    a lap time, or the lap in ``laps`` [s] of the rider named by
+    same_lap_as), as (n,) arrays in the riders' order."""
+    by_com = np.array([math.isfinite(r.com_speed) for r in riders])
+    omega = np.empty(len(riders))
+    for i, rider in enumerate(riders):
+        if math.isfinite(rider.speed):
+            omega[i] = contact_rate(theta[i], rider.speed, ground)
+        elif math.isfinite(rider.period):
+            omega[i] = 2.0 * math.pi / rider.period
+        elif rider.same_lap_as is not None:
+            omega[i] = 2.0 * math.pi / laps[rider.same_lap_as]
+        else:
+            omega[i] = math.nan
+    parts = []
+    for sel, make, value in ((by_com, horizontal_lanes, np.array([r.com_speed for r in riders])),
+                             (~by_com, horizontal_lanes_at_rate, omega)):
+        idx = np.flatnonzero(sel)
+        if idx.size:
+            parts.append((idx, make(theta[idx], value[idx], ground, globe.g, machines.take(idx), globe.mu,
+                                    globe.max_g)))
+    keys = [k for k in parts[0][1] if k != "tilts"]
+    out = {}
+    for key in keys:
+        first = np.asarray(parts[0][1][key])
+        out[key] = np.empty(len(riders), dtype=first.dtype)
+        for idx, found in parts:
+            out[key][idx] = np.asarray(found[key])
+    return out
+
+
+def horizontal_lanes_of(riders: list[Rider], ground, globe, laps: dict | None = None) -> list:
+    """The horizontal lanes of ``riders`` (ride's steady orbits), in two
+    calls to the physics at most; ``laps`` the lap times [s] of the riders
+    they name by same_lap_as; a rider whose lane has no orbit gets a
     ParameterError (not raised) in his place."""
     if not riders:
         return []
     machines = machine_arrays([r.machine for r in riders])
     theta = np.radians([r.theta_deg for r in riders])
-    found = horizontal_lanes(theta, np.array([r.speed for r in riders]), ground, globe.g, machines, globe.mu,
-                             globe.max_g)
+    found = _found_lanes(riders, theta, ground, globe, machines, laps or {})
     # the lane's tilt as the riders' table reads it, in degrees, so that both agree to the bit
     alpha_deg = np.degrees(found["alpha"])
     points = meridian_points(theta, np.radians(alpha_deg), ground, machines)
@@ -179,8 +215,10 @@ def horizontal_lanes_of(riders: list[Rider], ground, globe) -> list:
     for i, rider in enumerate(riders):
         orbit = _scalars(found, i)
         if not found["chosen"][i]:
-            out.append(ParameterError(f"rider {rider.name!r}: speed: no steady orbit at this height and speed "
-                                      f"({REASON_TEXT[orbit['reason']]})", "speed"))
+            key = _hold_key(rider)
+            out.append(ParameterError(f"rider {rider.name!r}: {key}: no steady orbit at this height and "
+                                      f"{'lap' if key in ('period', 'same_lap_as') else 'speed'} "
+                                      f"({REASON_TEXT[orbit['reason']]})", key))
             continue
         orbit["alpha_deg"] = float(alpha_deg[i])
         out.append(Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
@@ -189,6 +227,13 @@ def horizontal_lanes_of(riders: list[Rider], ground, globe) -> list:
                         reach=_reach(float(ground.radius), rider.machine), theta=math.radians(rider.theta_deg),
                         alpha=math.radians(orbit["alpha_deg"]), rate=rider.direction * float(orbit["omega"])))
     return out
+
+
+def _hold_key(rider: Rider) -> str:
+    """The plan's key that holds a horizontal lane (what a refusal names)."""
+    if rider.same_lap_as is not None:
+        return "same_lap_as"
+    return next(k for k in ("speed", "com_speed", "period") if math.isfinite(getattr(rider, k)))
 
 
 def vertical_lanes_of(riders: list[Rider], ground, globe) -> list:
@@ -223,17 +268,39 @@ def vertical_lanes_of(riders: list[Rider], ground, globe) -> list:
 
 def build_lanes(plan: Plan) -> list[Lane]:
     """Every rider's lane, in the plan's order: the horizontal ones in one
-    physics call, the vertical ones in another (ParameterError naming the
-    first rider, in the plan's order, and the key for a lane that cannot be
-    ridden at all, or a rider too wide for the globe)."""
+    physics call (two where some ride by the centre of mass's speed and
+    some at a rate), the vertical ones in another, then those that take
+    another rider's lap (same_lap_as) once his is known (ParameterError
+    naming the first rider, in the plan's order, and the key for a lane
+    that cannot be ridden at all, or a rider too wide for the globe)."""
     ground = plan.globe.ground
-    kinds = {"horizontal": horizontal_lanes_of, "vertical": vertical_lanes_of}
-    built = {kind: iter(make([r for r in plan.riders if r.lane == kind], ground, plan.globe))
-             for kind, make in kinds.items()}
-    lanes = [next(built[r.lane]) for r in plan.riders]
+    built: dict[str, Lane | ParameterError] = {}
+    borrowed = set()               # riders refused only because the lap they take cannot be ridden
+    pending = list(plan.riders)
+    while pending:                  # read_plan refused circles: each round builds at least one rider
+        ready = [r for r in pending if r.same_lap_as is None or r.same_lap_as in built]
+        pending = [r for r in pending if r not in ready]
+        laps = {}
+        for rider in ready:
+            ahead = built.get(rider.same_lap_as) if rider.same_lap_as is not None else None
+            if isinstance(ahead, ParameterError):
+                borrowed.add(rider.name)
+                built[rider.name] = ParameterError(f"rider {rider.name!r}: same_lap_as: {rider.same_lap_as!r}'s "
+                                                   "lane cannot be ridden, so neither can his lap", "same_lap_as")
+            elif ahead is not None:
+                laps[rider.same_lap_as] = ahead.period_s
+        ready = [r for r in ready if r.name not in built]
+        horizontal = [r for r in ready if r.lane == "horizontal"]
+        vertical = [r for r in ready if r.lane == "vertical"]
+        for riders, lanes in ((horizontal, horizontal_lanes_of(horizontal, ground, plan.globe, laps)),
+                              (vertical, vertical_lanes_of(vertical, ground, plan.globe))):
+            built.update((r.name, lane) for r, lane in zip(riders, lanes))
+    lanes = [built[r.name] for r in plan.riders]
+    # the first refusal of a lane of its own (not one only following another's) names the cause
+    for rider in sorted(plan.riders, key=lambda r: r.name in borrowed):
+        if isinstance(built[rider.name], ParameterError):
+            raise built[rider.name]
     for lane in lanes:
-        if isinstance(lane, ParameterError):
-            raise lane
         _check_width(lane, float(ground.radius))
     return lanes
 

@@ -2,8 +2,9 @@
 the band of speeds about the planned one in which the lane stays feasible
 under the globe's mu and max_g, found on the statuses ``ride`` reports.
 
-Horizontal lane: a speed is feasible when some tilt at that height gives it
-with status ok (eq. M12, :func:`deathsphere.physics.machine_lanes.speed_is_feasible`).
+Horizontal lane: a speed of the contact is feasible when some tilt at that
+height turns at its rate Omega = v / (r sin theta) with status ok (eq. M12r,
+:func:`deathsphere.physics.machine_lanes.rate_is_feasible`).
 Vertical lane: a top speed is feasible when its loop is ok (M22-M24,
 :func:`deathsphere.physics.machine.vertical_loop`).  The speeds of a
 geometric grid about the planned speed (1/16 to 16 times it) are tried at
@@ -17,7 +18,7 @@ import numpy as np
 
 from deathsphere.physics.machine import vertical_loop
 from deathsphere.physics.machine_arrays import machine_arrays
-from deathsphere.physics.machine_lanes import speed_is_feasible
+from deathsphere.physics.machine_lanes import contact_rate, rate_is_feasible
 from deathsphere.physics.status import Status
 
 #: The speeds tried, as multiples of the planned one.
@@ -37,7 +38,8 @@ def feasible(lanes, globe, speeds) -> np.ndarray:
         return loops["status"] == Status.OK
     theta = np.broadcast_to(np.array([lane.theta for lane in lanes])[:, None], speeds.shape)
     flat = machines.map(lambda x: np.broadcast_to(x, speeds.shape).reshape(-1))
-    ok = speed_is_feasible(theta.reshape(-1), speeds.reshape(-1), ground, globe.g, flat, globe.mu, globe.max_g)
+    omega = contact_rate(theta.reshape(-1), speeds.reshape(-1), ground)
+    ok = rate_is_feasible(theta.reshape(-1), omega, ground, globe.g, flat, globe.mu, globe.max_g)
     return ok.reshape(speeds.shape)
 
 
@@ -70,7 +72,8 @@ def _bands(lanes, globe, planned) -> np.ndarray:
 
 def speed_bands(lanes, globe, planned) -> np.ndarray:
     """(n, 2) [m/s]: for each lane the run of feasible speeds (horizontal:
-    the centre of mass's; vertical: at the top) holding the planned one,
+    the contact's, however the plan holds the lane; vertical: the centre of
+    mass's at the top) holding the planned one,
     low and high; NaN where the planned speed itself is not feasible or an
     edge lies beyond 1/16..16 times it.  The lanes of one kind are searched
     together, whatever their machines."""

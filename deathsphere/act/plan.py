@@ -26,8 +26,11 @@ from deathsphere.requests.values import typed_value, table_reader
 #: The keys of the ``[globe]`` table.
 GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "duration")
 #: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
-RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "direction", "phase", "azimuth", "v_top",
-              "width")
+RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "com_speed", "period", "same_lap_as",
+              "direction", "phase", "azimuth", "v_top", "width")
+#: How a show's horizontal lane may be held (one of them): the contact's speed
+#: (a speedometer's), the centre of mass's, the lap time, another rider's lap.
+HOLDS = ("speed", "com_speed", "period", "same_lap_as")
 #: Characters a rider's name may not hold (the tables' and --fail's separators).
 NOT_IN_NAMES = ",@\n\r"
 #: The crew's rule when the plan gives none [m] (the spacing quoted for an
@@ -63,9 +66,11 @@ class Globe:
 class Rider:
     """One rider of the plan, checked: its request (body, lane, direction,
     phase, name) on the globe ``ground``, read as the act reads a rider:
-    lane 'horizontal' (theta_deg of the contact, speed of the centre of
-    mass [m/s], direction +1 ccw / -1 cw seen from above, phase_deg the
-    contact's azimuth at t = 0) or 'vertical' (azimuth_deg of the loop's
+    lane 'horizontal' (theta_deg of the contact, held by one of the
+    contact's speed [m/s] ``speed``, the centre of mass's ``com_speed``, the
+    lap time ``period`` [s] or another rider's lap ``same_lap_as`` (NaN or
+    None where not given), direction +1 ccw / -1 cw seen from above,
+    phase_deg the contact's azimuth at t = 0) or 'vertical' (azimuth_deg of the loop's
     plane, v_top [m/s] the centre of mass's speed at the top, phase_deg the
     angle psi from the top at t = 0)."""
 
@@ -91,8 +96,27 @@ class Rider:
 
     @property
     def speed(self) -> float:
+        """The contact's speed along the ground [m/s] as planned (NaN: not given)."""
         by = getattr(self.request.lane, "by", None)
-        return by.speed if isinstance(by, requests.Speed) else math.nan
+        return by.speed if isinstance(by, requests.ContactSpeed) else math.nan
+
+    @property
+    def com_speed(self) -> float:
+        """The centre of mass's speed [m/s] as planned (NaN: not given)."""
+        by = getattr(self.request.lane, "by", None)
+        return by.speed if isinstance(by, requests.ComSpeed) else math.nan
+
+    @property
+    def period(self) -> float:
+        """The lap time [s] as planned (NaN: not given)."""
+        by = getattr(self.request.lane, "by", None)
+        return by.period if isinstance(by, requests.Period) else math.nan
+
+    @property
+    def same_lap_as(self) -> str | None:
+        """The rider whose lap this one rides (None: its own)."""
+        by = getattr(self.request.lane, "by", None)
+        return by.name if isinstance(by, requests.SameLap) else None
 
     @property
     def azimuth_deg(self) -> float:
@@ -187,9 +211,11 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
         machine = replace(machine, width=typed_value(keys, "width", raw["width"], "length", "width"))
     if machine.width is None:
         keys.fail("width", f"machine {machine.name!r} has no width: give width (handlebar or shoulders)")
-    if raw["lane"] == "horizontal" and "speed" not in raw:   # a show's rider rides a speed, not a tilt
-        keys.fail("speed", "a horizontal lane needs speed (of the centre of mass)")
-    rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground)
+    if raw["lane"] == "horizontal" and not any(k in raw for k in HOLDS):   # a show's rider rides a speed, not a tilt
+        keys.fail("speed", "a horizontal lane needs speed (the contact's along the ground, what a speedometer "
+                           "reads), com_speed (the centre of mass's), period (the lap time) or same_lap_as (a "
+                           "rider's name)")
+    rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground, plan=True)
     return Rider(request=rider, ground=globe.ground)
 
 
@@ -244,7 +270,26 @@ def read_plan(plan) -> Plan:
         if rider.name in seen:
             _fail(f"rider {rider.name!r}", "name", "is given twice (names must differ)")
         seen.add(rider.name)
+    _check_laps(riders)
     return Plan(globe=globe, riders=riders)
+
+
+def _check_laps(riders) -> None:
+    """Every ``same_lap_as`` names another rider of the plan, and following
+    them from any rider ends at a rider whose lap is his own (no circle)."""
+    named = {r.name: r.same_lap_as for r in riders}
+    for rider in riders:
+        seen, name = [rider.name], rider.same_lap_as
+        while name is not None:
+            if name not in named:
+                _fail(f"rider {rider.name!r}", "same_lap_as", f"names no rider of the plan (got {name!r}; riders: "
+                                                               f"{', '.join(named)})")
+            if name in seen:
+                _fail(f"rider {rider.name!r}", "same_lap_as", "the riders' same_lap_as go round in a circle ("
+                                                               + " -> ".join([*seen, name]) + "): one of them "
+                                                               "needs a lap of its own (speed, com_speed or period)")
+            seen.append(name)
+            name = named[name]
 
 
 #: A commented plan to start from (``deathsphere show --example``): a
@@ -263,14 +308,17 @@ min_clearance = "0.15m"    # the crew's rule: closer than this is a conflict
                            # (here every lap takes 1.274 s: the act is one lap)
 
 # A horizontal lane: the contact at height above the floor (or theta from the
-# top), phi = phase + Omega t (ccw) or phase - Omega t (cw), ride's steady orbit.
+# top), phi = phase + Omega t (ccw) or phase - Omega t (cw), ride's steady orbit,
+# held by one of: speed (the contact's along the ground, what the speedometer
+# reads), com_speed (the centre of mass's), period (the lap time) or
+# same_lap_as (another rider's lap).
 [[rider]]
 name = "Ana"
 machine = "stunt125"       # a preset, a machine file, or an inline table of its parameters
 width = "0.6m"             # handlebar or shoulders, the wider (here narrowed bars; else the machine's)
 lane = "horizontal"
 height = "1.4m"            # of the contact above the globe's floor (or theta)
-speed = "25.58km/h"        # of the centre of mass, as for ride: a lap in the loopers' 1.274 s
+speed = "39.18km/h"        # the contact's, as for ride: a lap in the loopers' 1.274 s
 direction = "ccw"          # seen from above
 phase = 0                  # deg: azimuth of the contact at t = 0
 
@@ -280,7 +328,7 @@ machine = "stunt125"
 width = "0.6m"
 lane = "horizontal"
 height = "2.0m"
-speed = "28.86km/h"
+period = "1.274s"          # the lap time
 direction = "ccw"
 phase = 40
 
@@ -290,7 +338,7 @@ machine = "stunt125"
 width = "0.6m"
 lane = "horizontal"
 height = "2.7m"
-speed = "29.35km/h"
+same_lap_as = "Ben"        # a looper's lap, whatever it is
 direction = "ccw"
 phase = 0
 

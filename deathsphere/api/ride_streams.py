@@ -30,18 +30,20 @@ from deathsphere.table import Table
 
 
 def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None,
-               height=None, only=None, stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1,
+               height=None, com_speed=None, period=None, only=None, stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1,
                scheduler=None) -> Chunks:
     """Every combination of the axes, chunk by chunk: ``deathsphere ride``
     (docs/machine.md eqs. M1-M12, through :func:`deathsphere.api.ride`).
 
     Parameters
     ----------
-    theta or height, alpha or speed : float, array_like or str
+    theta or height, alpha, speed, com_speed or period : float, array_like or str
         The grid's axes (units as in :func:`~deathsphere.api.ride`): a
         value, a list or array, or the command line's text, a value or a
         range ``"start:stop:step"``, or a list mixing both.  Grid order is
-        theta (or height), then alpha (or speed) fastest.
+        theta (or height), then alpha (or the speed, the centre of mass's
+        speed or the lap time) fastest; ``speed`` is the contact's, as for
+        :func:`~deathsphere.api.ride`.
     machine, r, diameter, g, mu, max_g, only, stability : as for
         :func:`~deathsphere.api.ride` (r, g, mu, max_g one value each).
     chunk_size : int
@@ -74,12 +76,16 @@ def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, 
     if (theta is None) == (height is None):
         raise ParameterError("give exactly one of theta and height (the contact's height above the floor)", "theta",
                              missing=theta is None)
-    if (alpha is None) == (speed is None):
-        raise ParameterError("give exactly one of alpha and speed", "alpha", missing=alpha is None)
+    holds = {k: v for k, v in (("alpha", alpha), ("speed", speed), ("com_speed", com_speed), ("period", period))
+             if v is not None}
+    if len(holds) != 1:
+        raise ParameterError("give exactly one of alpha, speed (the contact's), com_speed (the centre of mass's) "
+                             "and period (the lap time)", list(holds)[1] if holds else "alpha", missing=not holds)
     chunk_size = min(int(checked_scalar("chunk_size", chunk_size)), MAX_CHUNK_ROWS)
     jobs = int(checked_scalar("jobs", jobs))
     where = ("theta", checked_axis("theta", theta)) if height is None else ("height", checked_axis("height", height))
-    how = ("alpha", checked_axis("alpha", alpha)) if speed is None else ("speed", checked_axis("speed", speed))
+    (name, values), = holds.items()
+    how = (name, checked_axis(name, values))
     setup = {"r": checked_scalar("r", sphere_radius(r, diameter)), "g": checked_scalar("g", g),
              "mu": checked_scalar("mu", mu), "max_g": checked_scalar("max_g", max_g)}
     fixed = dict(machine=m, only=only, stability=stability, **setup)
@@ -87,7 +93,7 @@ def ride_sweep(theta=None, alpha=None, *, machine, r=R, g=G, mu=INF, max_g=INF, 
     # its count alone, one longer than ride holds; the grid itself streams
     for name, values in (where, how):
         refuse_large_grid({name: len(values)}, command="ride", limit=MAX_RIDE_ROWS, param=name,
-                          per_point=TILTS_PER_SPEED if how[0] == "speed" else 1)
+                          per_point=TILTS_PER_SPEED if how[0] != "alpha" else 1)
     # every value of each axis is checked now, by ride's own rules (a
     # height above the globe, a wheel that does not fit): along one line
     # and one column of the grid, without the stability analysis

@@ -3,8 +3,8 @@ machine's steady laps on any ground but the globe (beyond the paper;
 docs/machine.md, "On any surface of revolution" and "The wall of death").
 
 The globe stays on :mod:`deathsphere.api.rides` (its tables byte for
-byte); this module takes the lane by its height up the wall, the tilt or
-the centre of mass's speed, and gives the same columns, theta empty and the
+byte); this module takes the lane by its height up the wall, the tilt,
+the contact's speed, the centre of mass's speed or the lap time, and gives the same columns, theta empty and the
 arena's in ``surface``, ``rho_contact_m``, ``wall_angle_deg``.
 """
 
@@ -17,7 +17,7 @@ import numpy as np
 from deathsphere.api.arguments import TILTS_PER_SPEED, broadcast_flat, checked_array, grid_shape, refuse_large_grid
 from deathsphere.params import ParameterError, reduce_angle, shown_number
 from deathsphere.physics.machine_arrays import machine_arrays
-from deathsphere.physics.machine_lanes import orbits_for_speed_on
+from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
 from deathsphere.physics.machine_surface import ride_orbit_on
 from deathsphere.physics.status import Reason, Status
 from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks through the API)
@@ -63,14 +63,17 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
     if typed.get("height") is None:
         raise ParameterError(f"give height (the contact's height above the {ground.name}'s floor)", "height",
                              missing=True)
-    if (typed.get("alpha") is None) == (typed.get("speed") is None):
-        raise ParameterError("give exactly one of alpha and speed", "alpha", missing=typed.get("alpha") is None)
-    by_speed = typed.get("speed") is not None
-    how = "speed" if by_speed else "alpha"
+    holds = [key for key in ("alpha", "speed", "com_speed", "period") if typed.get(key) is not None]
+    if len(holds) != 1:
+        raise ParameterError("give exactly one of alpha, speed (the contact's), com_speed (the centre of mass's) "
+                             "and period" + (f" (got {' and '.join(holds)})" if holds else ""),
+                             holds[1] if len(holds) > 1 else "alpha", missing=not holds)
+    how = holds[0]
+    by_value = how != "alpha"
     checked = {"height": checked_array("height", typed["height"]), how: checked_array(how, typed[how]),
                **{k: checked_array(k, typed[k]) for k in ("g", "mu", "max_g")}}
     refuse_large_grid(grid_shape(checked), command="ride", limit=rides.MAX_RIDE_ROWS,
-                      per_point=TILTS_PER_SPEED if by_speed else 1)
+                      per_point=TILTS_PER_SPEED if by_value else 1)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     radius = floor_radius(ground)
@@ -79,8 +82,14 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
                              f"{radius:g} m at its floor (needs r > a)", "r")
     height, g, mu, max_g = _lanes(ground, flat["height"]), flat["g"], flat["mu"], flat["max_g"]
     arrays = machine_arrays(m)
-    if by_speed:
-        tilts, orbits = orbits_for_speed_on(height, flat["speed"], ground, g, arrays, mu, max_g)
+    if by_value:
+        value = flat[how]
+        if how == "com_speed":
+            tilts, orbits = orbits_for_speed_on(height, value, ground, g, arrays, mu, max_g)
+        else:
+            # the contact's speed and a lap time each fix the rate: v_contact = Omega rho_P, Omega = 2 pi / T
+            omega = contact_rate_on(height, value, ground) if how == "speed" else 2.0 * np.pi / value
+            tilts, orbits = orbits_for_rate_on(height, omega, ground, g, arrays, mu, max_g)
         reps = np.maximum(np.isfinite(tilts).sum(axis=1), 1)
         req = np.repeat(np.arange(n), reps)
         slot = np.arange(req.size) - np.repeat(np.cumsum(reps) - reps, reps)
@@ -91,7 +100,8 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
             res = {key: np.full(req.size, np.nan) for key in orbits}
             res["status"] = np.full(req.size, Status.NO_ORBIT, dtype=np.int8)
             res["reason"] = np.full(req.size, Reason.MACHINE_NO_ALPHA, dtype=np.int8)
-        given = {"v_cm_m_s": flat["speed"][req], "height_m": height[req]}
+        echo = {"speed": "v_contact_m_s", "com_speed": "v_cm_m_s", "period": "period_s"}[how]
+        given = {echo: value[req], "height_m": height[req]}
     else:
         req = np.arange(n)
         alpha = np.radians(reduce_angle(flat["alpha"]))
@@ -109,5 +119,5 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
         table = type(table)(table.columns, shape=shape)
     if options.summary:
         return rides.ride_summary(table, groups=rides._contact_groups(checked, shape, how),
-                                  tried="speeds" if by_speed else "tilts")
+                                  tried="speeds" if by_value else "tilts")
     return options.kept(table)

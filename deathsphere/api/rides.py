@@ -27,13 +27,13 @@ from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.ground import Sphere
 from deathsphere.physics.machine import ride_orbit
 from deathsphere.physics.machine_arrays import machine_arrays
-from deathsphere.physics.machine_lanes import orbits_for_speed
+from deathsphere.physics.machine_lanes import contact_rate, orbits_for_rate, orbits_for_speed
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.requests.decode import decode_rider, decode_run
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import RiderRequest, Run, Theta, Tilt
+from deathsphere.requests.records import ComSpeed, ContactSpeed, Period, RiderRequest, Run, Theta, Tilt
 from deathsphere.table import Table
 
 #: Orbits evaluated per piece (temporaries stay in cache, as the wheel's).
@@ -93,12 +93,13 @@ class RowRun(NamedTuple):
 def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: bool, shape=None,
            given: dict | None = None, axes=None, surface: str = "sphere", stability_note: str = "") -> Table:
     """The rows of ``ride``.  ``given`` holds the requested inputs per row
-    (``theta_deg``, ``alpha_deg``, ``v_cm_m_s``, NaN where not given), echoed
-    as typed rather than as recomputed (docs/contract.md).  ``surface``
-    names the arena; its contact radius and wall angle are ``res``'s
-    ``rho_contact`` and ``wall_angle`` where given, else the globe's
-    (r sin(theta), 180 deg - theta).  ``stability_note``: what the
-    stability method says on the rows with an orbit when not analysed."""
+    (``theta_deg``, ``alpha_deg``, ``v_contact_m_s``, ``v_cm_m_s``,
+    ``period_s``, NaN where not given), echoed as typed rather than as
+    recomputed (docs/contract.md).  ``surface`` names the arena; its contact
+    radius and wall angle are ``res``'s ``rho_contact`` and ``wall_angle``
+    where given, else the globe's (r sin(theta), 180 deg - theta).
+    ``stability_note``: what the stability method says on the rows with an
+    orbit when not analysed."""
     r, g, mu, max_g = run
     n = theta.size
     given = given or {}
@@ -171,7 +172,7 @@ def _arena_columns(cols: dict, res: dict, surface: str, r, theta, n: int) -> Non
 
 
 def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, max_g=INF, speed=None, diameter=None,
-         height=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
+         height=None, com_speed=None, period=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
          mass=None, com_height=None, wheel_radius=None, tyre_radius=None, roll_inertia=None, pitch_inertia=None,
          yaw_inertia=None, spin_inertia=None, head_height=None, flat: bool = False, steer=None,
          steer_torque=None, surface=None, wall_angle=None, wall_height=None) -> Table:
@@ -190,7 +191,7 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     alpha : float or array_like
         Tilt of the machine's up-axis above the orbit plane [deg] (the
         paper's alpha for its wheel; lean from the vertical = 90 - alpha).
-        Give exactly one of ``alpha`` and ``speed``.
+        Give exactly one of ``alpha``, ``speed``, ``com_speed`` and ``period``.
     machine : Machine or str
         A :class:`deathsphere.Machine` or a preset's name
         (``deathsphere.api.machines.PRESETS``; ``deathsphere machines``),
@@ -213,9 +214,20 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
         (|contact force| / (m g), what the rider feels) allowed.
     speed : float or array_like
-        Speed of the centre of mass [m/s]; every tilt in the range where the
-        wheel fits that gives it, one row each (``input_row`` shared); a
-        speed no tilt gives is one ``no_orbit`` row.
+        The contact's speed along the ground [m/s], what a speedometer reads
+        (``v_contact_m_s``): the contact runs round its parallel of radius
+        r sin(theta), so it fixes the rate Omega = speed / (r sin(theta));
+        every tilt in the range where the wheel fits that turns at that rate
+        (docs/machine.md eq. M12r), one row each (``input_row`` shared); a
+        speed no tilt gives is one ``no_orbit`` row (as is a contact on the
+        axis, theta 0 or 180, which does not move: reason contact_on_axis).
+        A two-wheeler's is its rear contact's.
+    com_speed : float or array_like
+        The centre of mass's speed [m/s] instead (``v_cm_m_s``; eq. M12):
+        what ``speed`` meant before; every tilt giving it, as for ``speed``.
+    period : float or array_like
+        The lap time [s] instead (``period_s``): the rate Omega = 2 pi /
+        period, every tilt giving it, as for ``speed``.
     height : float or array_like
         Height of the contact point above the globe's floor [m] instead of
         theta: theta = arccos(height / r - 1).
@@ -255,8 +267,9 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     Raises
     ------
     ParameterError
-        A value outside its set, a bad machine, theta and height (or alpha
-        and speed) both or neither given, a height above the globe's top, a
+        A value outside its set, a bad machine, theta and height both or
+        neither given (or not exactly one of alpha, speed, com_speed and
+        period), a height above the globe's top, a
         wheel that does not fit in the sphere.
 
     Examples
@@ -265,9 +278,12 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
     >>> t = deathsphere.ride(90, 15, machine="stunt125", diameter="16ft")
     >>> str(t["status"]), round(float(t["v_cm_km_h"]), 1), round(float(t["load_g"]), 2)
     ('ok', 29.9, 4.34)
-    >>> row = deathsphere.ride(90, speed="30km/h", diameter="16ft", mass=150)[0]
+    >>> row = deathsphere.ride(90, com_speed="30km/h", diameter="16ft", mass=150)[0]
     >>> row["machine"], row["status"], round(row["lean_deg"], 1)
     ('stunt125 (modified)', 'ok', 75.0)
+    >>> row = deathsphere.ride(height="5ft", speed="40km/h", diameter="16ft")[0]
+    >>> round(row["v_contact_m_s"] * 3.6, 6), round(row["v_cm_km_h"], 1), row["status"]
+    (40.0, 26.4, 'ok')
     """
     from deathsphere.api.two_wheelers import is_two_wheeler, two_wheeler_only
 
@@ -283,13 +299,14 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         if ground is not None:
             from deathsphere.api import ride_surfaces
 
-            typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "vertical": vertical,
-                     "v_top": v_top, "g": g, "mu": mu, "max_g": max_g}
+            typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "com_speed": com_speed,
+                     "period": period, "vertical": vertical, "v_top": v_top, "g": g, "mu": mu, "max_g": max_g}
             return ride_surfaces.ride_on_surface(ground, typed, body, options, sys.modules[__name__])
     vertical = checked_flag("vertical", vertical)
     if vertical and options.summary:
         raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop", "summary")
-    typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "v_top": v_top, "r": r,
+    typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "com_speed": com_speed,
+             "period": period, "v_top": v_top, "r": r,
              "diameter": diameter, "g": g, "mu": mu, "max_g": max_g}
     rider, run = ride_request(typed, body, vertical)
     return ride_table(rider, run, options)
@@ -350,15 +367,16 @@ def ride_request(typed: dict, body: Machine, vertical: bool = False) -> tuple[Ri
 
 def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions()) -> Table:
     """``ride``'s table of one rider request (its lane's values broadcast as
-    a grid) in ``run``: the steady orbits of a horizontal lane (by tilt or
-    by speed), or the loops of a vertical one."""
+    a grid) in ``run``: the steady orbits of a horizontal lane (by tilt, by
+    the contact's or the centre of mass's speed, or by the lap time), or the
+    loops of a vertical one."""
     m, lane = rider.body, rider.lane
     if lane.kind == "vertical":
         return options.kept(_loop(lane.theta, lane.v_top, m, run))
     stability = options.stability
     where = ("theta", lane.at.theta) if isinstance(lane.at, Theta) else ("height", lane.at.height)
-    how = ("alpha", lane.by.alpha) if isinstance(lane.by, Tilt) else ("speed", lane.by.speed)
-    by_height, by_speed = where[0] == "height", how[0] == "speed"
+    how = _HOW[type(lane.by)](lane.by)
+    by_height, by_speed = where[0] == "height", how[0] != "alpha"
     checked = {where[0]: where[1], how[0]: how[1], "r": checked_array("r", run.r), "g": run.g, "mu": run.mu,
                "max_g": run.max_g}
     refuse_large_grid(grid_shape(checked), command="ride", limit=MAX_RIDE_ROWS,
@@ -386,7 +404,7 @@ def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions
         table = _table(np.arange(n), th, al, RowRun(rr, g_, mu_, xg), res, m, stability, shape=shape, given=given,
                        axes=_axes(checked, shape))
     else:
-        table = _by_speed(th, flat["speed"], rr, g_, mu_, xg, m, stability,
+        table = _by_speed(th, how[0], flat[how[0]], rr, g_, mu_, xg, m, stability,
                           theta_deg=None if by_height else flat["theta"].astype(float),
                           height=None if not by_height else flat["height"].astype(float))
         if len(table) == n and shape:   # one row per request: a grid keeps its shape (one request stays a row)
@@ -397,9 +415,13 @@ def ride_table(rider: RiderRequest, run: Run, options: RideOptions = RideOptions
     return options.kept(table)
 
 
+#: How a horizontal lane is held -> (the keyword, its values).
+_HOW = {Tilt: lambda by: ("alpha", by.alpha), ContactSpeed: lambda by: ("speed", by.speed),
+        ComSpeed: lambda by: ("com_speed", by.speed), Period: lambda by: ("period", by.period)}
+
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
-SINGLE_CONTACT_ONLY = ("alpha", "v_top", "vertical", "mass", "com_height", "wheel_radius", "tyre_radius",
-                       "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
+SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius",
+                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
                        "surface", "wall_angle", "wall_height")
 
 
@@ -423,7 +445,8 @@ def _two_wheeler(machine, given: dict) -> Table:
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).
-_ECHO = {"theta": "theta_deg", "height": "height_m", "alpha": "alpha_deg", "speed": "v_cm_m_s", "r": "r_m",
+_ECHO = {"theta": "theta_deg", "height": "height_m", "alpha": "alpha_deg", "speed": "v_contact_m_s",
+         "com_speed": "v_cm_m_s", "period": "period_s", "r": "r_m",
          "g": "g_m_s2", "mu": "mu_available", "max_g": "max_g"}
 
 
@@ -458,15 +481,31 @@ def _contact_groups(checked: dict, shape: tuple, how: str) -> np.ndarray:
     return rank[group.reshape(-1)]
 
 
-def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None, height=None) -> Table:
-    """One row per tilt giving each speed (eq. M12), a no_orbit row where none
+#: A lane held by a value: the column echoing it.
+_BY_VALUE = {"speed": "v_contact_m_s", "com_speed": "v_cm_m_s", "period": "period_s"}
+
+
+def _orbits_for(how: str, th, v, ground: Sphere, g, arrays, mu, max_g):
+    """Every tilt holding the lane ``how`` (the contact's speed, the centre
+    of mass's speed or the lap time ``v``) and the orbit at each: a contact
+    speed and a lap time fix the rate (eq. M12r), the centre's speed is
+    eq. M12's."""
+    if how == "com_speed":
+        return orbits_for_speed(th, v, ground, g, arrays, mu, max_g)
+    omega = contact_rate(th, v, ground) if how == "speed" else 2.0 * np.pi / v
+    return orbits_for_rate(th, omega, ground, g, arrays, mu, max_g)
+
+
+def _by_speed(th, how: str, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=None, height=None) -> Table:
+    """One row per tilt holding each value of ``how`` (``speed``,
+    ``com_speed`` or ``period``: eqs. M12, M12r), a no_orbit row where none
     does; ``theta_deg`` or ``height`` as the request gave it, echoed."""
     n = th.size
     arrays = machine_arrays(m)
     parts = []
     for start in range(0, n, CHUNK):
         sl = slice(start, start + CHUNK)
-        parts.append(orbits_for_speed(th[sl], v[sl], Sphere(r[sl]), g[sl], arrays, mu[sl], max_g[sl]))
+        parts.append(_orbits_for(how, th[sl], v[sl], Sphere(r[sl]), g[sl], arrays, mu[sl], max_g[sl]))
     width = max(1, max(tilts.shape[1] for tilts, _ in parts))
 
     def padded(x, empty):
@@ -483,7 +522,7 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
     al = roots[req, slot]
     res = {key: val[req, slot] for key, val in orbits.items()}
     res["height"] = r[req] * (1.0 + np.cos(th[req]))                # every row's, with a tilt or not (Sphere.height)
-    given = {"v_cm_m_s": np.asarray(v, dtype=float)[req]}
+    given = {_BY_VALUE[how]: np.asarray(v, dtype=float)[req]}
     if theta_deg is not None:
         given["theta_deg"] = theta_deg[req]
     if height is not None:
@@ -494,10 +533,13 @@ def _by_speed(th, v, r, g, mu, max_g, m: Machine, stability: bool, theta_deg=Non
 
 #: Columns of the rider's table (:func:`ride_summary`): ``speeds_tried``
 #: and ``speeds_ok`` are ``tilts_tried`` and ``tilts_ok`` where tilts were
-#: tried (``alpha``); the counts of failing speeds by cause are appended.
+#: tried (``alpha``); the counts of failing speeds by cause are appended;
+#: ``v_min_km_h`` and ``v_max_km_h`` are the centre of mass's speeds, the
+#: contact's (a speedometer's) are appended after them in m/s.
 SUMMARY_COLUMNS = ("height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_min_km_h", "v_max_km_h",
                    "lean_min_deg", "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m",
-                   "limits", "mu_available", "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit")
+                   "limits", "mu_available", "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit",
+                   "v_contact_min_m_s", "v_contact_max_m_s")
 #: Why a speed fails, as counted in the rider's table: column -> (status,
 #: and the reason when one status has several causes).
 FAILURES = {"slips": ("slips", None), "over_g": ("over_g", None), "head_hits": ("no_fit", Reason.HEAD_HITS),
@@ -508,7 +550,8 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
     """The rider's question answered per contact point (one row per contact
     point asked for, in order): how many speeds (or tilts) were tried, which
     are ``ok`` (feasible with the friction and the load limit given), and
-    over those the speed range, the lean from the vertical, the load, the
+    over those the speed ranges (the centre of mass's in km/h, the
+    contact's in m/s), the lean from the vertical, the load, the
     friction needed and the least head clearance; ``limits`` names the
     statuses that stop the others, and ``slips``, ``over_g``,
     ``head_hits``, ``no_contact`` and ``no_orbit`` (no tilt gives the speed,
@@ -564,6 +607,8 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
         rows[ok_name].append(int(np.unique(rq[ok]).size))
         rows["v_min_km_h"].append(span("v_cm_km_h", np.min))
         rows["v_max_km_h"].append(span("v_cm_km_h", np.max))
+        rows["v_contact_min_m_s"].append(span("v_contact_m_s", np.min))
+        rows["v_contact_max_m_s"].append(span("v_contact_m_s", np.max))
         rows["lean_min_deg"].append(span("lean_deg", np.min))
         rows["lean_max_deg"].append(span("lean_deg", np.max))
         rows["load_min_g"].append(span("load_g", np.min))

@@ -23,8 +23,9 @@ __all__ = ["show", "ShowResult", "EXAMPLE_PLAN", "RIDER_COLUMNS", "PAIR_COLUMNS"
 #: vertical lane has no alpha, leans 0 (upright in its loop's plane), its
 #: v_cm the centre of mass's speed at the top and its load_g the bottom's,
 #: and fills ``v_top_m_s`` .. ``load_bottom_g``; the speed band is of the
-#: centre of mass's speed (horizontal) or of v_top (vertical), empty where
-#: the planned speed is not feasible or an edge lies beyond 1/16..16 times it.
+#: contact's speed (horizontal, however the plan holds the lane) or of v_top
+#: (vertical), empty where the planned speed is not feasible or an edge lies
+#: beyond 1/16..16 times it.
 RIDER_COLUMNS = ("name", "lane", "theta_deg", "phi0_deg", "alpha_deg", "lean_deg", "v_cm_m_s", "v_cm_km_h",
                  "v_contact_m_s", "period_s", "load_g", "mu_required", "head_clearance_m", "status", "reason",
                  "speed_low_m_s", "speed_high_m_s", "margin_low_pct", "margin_high_pct", "v_top_m_s",
@@ -289,12 +290,15 @@ def _rider_row(lane: Lane, rider, band, ground) -> dict:
     theta0, phi0 = contact_angles(lane, 0.0, ground)
     out = {"name": lane.name, "lane": lane.kind, "theta_deg": theta0, "phi0_deg": phi0, "machine": lane.machine.name,
            "width_m": lane.width_m, "status": lane.status, "reason": lane.reason,
-           "mu_required": orbit["mu_required"], "head_clearance_m": orbit["head_clearance"], "period_s": lane.period_s}
+           "mu_required": orbit["mu_required"], "head_clearance_m": orbit["head_clearance"],
+           # a lap time as planned (the lane's, solved, agrees to ROOT_MATCH_RTOL)
+           "period_s": rider.period if math.isfinite(getattr(rider, "period", math.nan)) else lane.period_s}
     if lane.kind == "horizontal":
-        planned = rider.speed
-        # the centre of mass's speed as planned (ride echoes a speed asked for)
-        out.update(alpha_deg=orbit["alpha_deg"], lean_deg=90.0 - orbit["alpha_deg"], v_cm_m_s=planned,
-                   v_contact_m_s=orbit["v_contact"], load_g=orbit["load_g"], v_top_m_s=nan, v_top_min_m_s=nan,
+        # a speed as planned (ride echoes a speed asked for); the band is of the contact's
+        planned = rider.speed if math.isfinite(rider.speed) else orbit["v_contact"]
+        v_cm = rider.com_speed if math.isfinite(rider.com_speed) else orbit["v_cm"]
+        out.update(alpha_deg=orbit["alpha_deg"], lean_deg=90.0 - orbit["alpha_deg"], v_cm_m_s=v_cm,
+                   v_contact_m_s=planned, load_g=orbit["load_g"], v_top_m_s=nan, v_top_min_m_s=nan,
                    v_bottom_m_s=nan, load_bottom_g=nan)
     else:
         planned = rider.v_top
@@ -313,7 +317,8 @@ def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
     """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per rider in the plan's order."""
     from deathsphere.act.margins import speed_bands
 
-    planned = [r.speed if r.lane == "horizontal" else r.v_top for r in plan.riders]
+    planned = [(r.speed if math.isfinite(r.speed) else lane.orbit["v_contact"]) if r.lane == "horizontal"
+               else r.v_top for r, lane in zip(plan.riders, lanes)]
     bands = speed_bands(lanes, plan.globe, planned)
     ground = plan.globe.ground
     rows = [_rider_row(lane, rider, band, ground) for lane, rider, band in zip(lanes, plan.riders, bands)]

@@ -27,8 +27,8 @@ from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
 from deathsphere.requests.decode import decode_lane, decode_paper_lane, decode_run
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import (Horizontal, PaperBody, Rate, RiderRequest, Run, Solver, Speed, Spin,
-                                          Theta, Tilt, Vertical)
+from deathsphere.requests.records import (ContactSpeed, Horizontal, PaperBody, Rate, RiderRequest, Run, Solver,
+                                          Speed, Spin, Theta, Tilt, Vertical)
 from deathsphere.table import Table
 
 #: solve_ivp's methods and the frames :func:`simulate` integrates in
@@ -248,7 +248,8 @@ def _machine_rider(given: Mapping, run: Run) -> RiderRequest:
     # at theta, by its tilt or its centre of mass's speed: decided by the decoder
     lane = decode_lane({key: given[key] for key in ("theta", "alpha", "speed")}, Keys(), _read, run.ground)
     branch = given["branch"]
-    if isinstance(lane.by, Speed):
+    # simulate's speed is still the centre of mass's (ride's and a plan's is the contact's)
+    if isinstance(lane.by, (Speed, ContactSpeed)):
         lane = dataclasses.replace(lane, by=Speed(lane.by.speed, branch))
     elif isinstance(branch, bool) or branch != 0:
         raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
@@ -349,7 +350,7 @@ def _machine_tilt_for(m, theta: float, speed: float, branch, r: float, g: float)
     those eq. M12 gives (as ``ride`` lists them)."""
     from deathsphere.api.rides import ride
 
-    rows = ride(theta, speed=speed, machine=m, r=r, g=g, stability=False)
+    rows = ride(theta, com_speed=speed, machine=m, r=r, g=g, stability=False)
     tilts = np.sort(np.asarray(rows["alpha_deg"], dtype=float))
     tilts = tilts[np.isfinite(tilts)]
     if not tilts.size:

@@ -36,10 +36,21 @@ AXES = ("theta", "alpha", "omega3", "omega", "speed")
 INPUT_FIELDS = "theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu, max_g"
 
 
+def centre_speed(speed, com_speed):
+    """--speed or --com-speed, both the centre's speed in orbit, sweep and
+    simulate (a usage error when both are given)."""
+    if speed and com_speed:
+        raise click.UsageError("--com-speed: give --speed or --com-speed, not both (here both are the wheel's "
+                               "centre speed)")
+    return speed or com_speed
+
+
 def orbit_options(f):
     """The options orbit and sweep share: one vocabulary."""
     for option in reversed([
-        params_options("theta", "alpha", "omega3", "omega", "speed", multiple=AXES),
+        params_options("theta", "alpha", "omega3", "omega", multiple=AXES),
+        param_option("speed", multiple=True),
+        param_option("com_speed", multiple=True),
         input_option(INPUT_FIELDS),
         body_option(),
         setup_options(multiple=("a", "r", "diameter", "k")),
@@ -65,7 +76,7 @@ def orbit_chunks(input, stability, only, options, **more):
 @orbit_options
 @output_options()
 @units_option()
-def orbit_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
+def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
                   stability, fmt, units):
     """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, load.
 
@@ -89,6 +100,7 @@ def orbit_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, d
       deathsphere orbit --body particle --theta 120:170:10
       printf 'theta,alpha\\n60,10\\n90,25\\n' | deathsphere orbit --input -
     """
+    speed = centre_speed(speed, com_speed)
     options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
                     a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     chunks = orbit_chunks(input, stability, only, options)
@@ -127,7 +139,7 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
         help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
              "of stdout.  Parquet needs the fast extra.")
 @output_options(tuple(SWEEP_FORMATS))
-def sweep_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
+def sweep_command(theta, alpha, omega3, omega, speed, com_speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
                   stability, chunk_size, jobs, scheduler, output, fmt):
     """Stream a grid of orbits (all combinations) as CSV, NDJSON, JSON or Parquet.
 
@@ -147,6 +159,7 @@ def sweep_command(theta, alpha, omega3, omega, speed, input, body, side, a, r, d
       deathsphere sweep --theta 0:180:0.1 --alpha 0:90:1 --scheduler tcp://h:8786
     """
     fmt = sweep_format(fmt, output)
+    speed = centre_speed(speed, com_speed)
     options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
                     a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     chunks = orbit_chunks(input, stability, only, options, **given(chunk_size=chunk_size, jobs=jobs,

@@ -74,7 +74,10 @@ def _grid(where, how, mus):
 @param_option("height", multiple=True)
 @param_option("alpha", multiple=True, help="Tilt of the machine's up-axis above the orbit plane (lean from "
               "the vertical = 90 - alpha).")
-@param_option("speed", multiple=True, help="Speed of the centre of mass; every tilt giving it, one row each.")
+@param_option("speed", multiple=True)
+@param_option("com_speed", multiple=True)
+@param_option("period", multiple=True, help="The lap time instead of --speed (e.g. 1.3s), Omega = 2 pi / T; every "
+              "tilt giving it, one row each.")
 @machine_options()
 @param_option("r")
 @param_option("diameter")
@@ -112,15 +115,17 @@ def _grid(where, how, mus):
              "of stdout.  Parquet needs the fast extra.")
 @output_options(FORMATS + ("parquet",))
 @units_option()
-def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_height, a, tyre_radius,
-                 roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter, surface,
-                 wall_angle, wall_height, g, mu, max_g, vertical, v_top, summary, only, stability, flat, steer,
-                 steer_torque, jobs, scheduler, output, fmt, units):
+def ride_command(theta, height, alpha, speed, com_speed, period, machine, machine_file, mass, com_height, a,
+                 tyre_radius, roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter,
+                 surface, wall_angle, wall_height, g, mu, max_g, vertical, v_top, summary, only, stability, flat,
+                 steer, steer_torque, jobs, scheduler, output, fmt, units):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
-    Every combination of the --theta (or --height) and --alpha (or --speed)
-    values.  Each row: the orbit rate and period, the speed of the centre of
-    mass and of the contact, the wheels' spin, the force on the tyre (normal,
+    Every combination of the --theta (or --height) and --alpha (or --speed,
+    --com-speed, --period) values; --speed is the contact's (a
+    speedometer's), --com-speed the centre of mass's.  Each row: the orbit
+    rate and period, the speed of the centre of mass and of the contact, the
+    wheels' spin, the force on the tyre (normal,
     friction, mu needed), the load the rider feels (load_g) and the clearance
     of the rider's head from the globe (docs/machine.md).  An unsteered
     machine is expected to be unstable on most orbits: a rider steers.
@@ -128,6 +133,8 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
     \b
     Examples:
       deathsphere ride --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere ride --height 5ft --period 1.3s --diameter 16ft
+      deathsphere ride --height 5ft --com-speed 30km/h --diameter 16ft
       deathsphere ride --height 1.2m --alpha 10:30:5 --machine benchmark-bicycle
       deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
@@ -175,7 +182,7 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
                          spin_inertia=spin_inertia, head_height=head_height)
         lists = {k: list(v) for k, v in (("theta", theta), ("height", height), ("speed", speed),
                                          ("steer_torque", steer_torque), ("alpha", alpha), ("v_top", v_top),
-                                         ("mu", mu)) if v}
+                                         ("com_speed", com_speed), ("period", period), ("mu", mu)) if v}
         given = dict(machine=which, steer=steer, summary=summary, stability=stability, only=only or None,
                      vertical=vertical, **lists, **setup_of(r, diameter, g, max_g),
                      **{k: v for k, v in overrides.items() if v is not None})
@@ -206,13 +213,13 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
             raise click.UsageError("--jobs and --scheduler spread the globe's grids: a drum's or a cone's ride is "
                                    "computed in one process (at most 2e+06 rows)")
         wall = {"surface": surface, "wall_angle": wall_angle, "wall_height": wall_height}
-        lane = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "vertical": vertical,
-                "v_top": v_top}
+        lane = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "com_speed": com_speed,
+                "period": period, "vertical": vertical, "v_top": v_top}
         return _ride_on_wall(chosen, wall, setup, mu, mus, lane,
                              {"summary": summary, "only": only, "stability": stability, "fmt": fmt,
                               "output": output, "shown": shown})
     if vertical:
-        if not theta or not v_top or height or alpha or speed or summary:
+        if not theta or not v_top or height or alpha or speed or com_speed or period or summary:
             raise click.UsageError("--vertical takes --theta (the loop's cone angle) and --v-top only")
         refuse_large_grid(value_counts({"theta": theta, "mu": mu, "v_top": v_top}), command="ride --vertical",
                           limit=api.rides.MAX_RIDE_ROWS)
@@ -227,16 +234,18 @@ def ride_command(theta, height, alpha, speed, machine, machine_file, mass, com_h
         raise click.UsageError("give --theta or --height, not both")
     if not theta and not height:
         raise click.UsageError("give --theta or --height (the contact's height above the floor)")
-    if alpha and speed:
-        raise click.UsageError("give --alpha or --speed, not both")
-    if not alpha and not speed:
-        raise click.UsageError("give --alpha or --speed")
-    at, by = ("theta", theta) if theta else ("height", height), ("alpha", alpha) if alpha else ("speed", speed)
+    holds = [(name, values) for name, values in (("alpha", alpha), ("speed", speed), ("com_speed", com_speed),
+                                                 ("period", period)) if values]
+    if len(holds) != 1:
+        typed = f"--{holds[1][0].replace('_', '-')}: " if holds else ""
+        raise click.UsageError(f"{typed}give exactly one of --alpha, --speed (the contact's), --com-speed (the "
+                               "centre of mass's) and --period (the lap time)")
+    at, by = ("theta", theta) if theta else ("height", height), holds[0]
     if summary or (mus is not None and mus.size > 1):
         # the rider's table and a range of mu keep the request's grid in memory (grouped by request)
-        refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, "alpha": alpha,
-                                        "speed": speed}),
-                          command="ride", limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
+        refuse_large_grid(value_counts({"theta": theta, "height": height, "mu": mu, by[0]: by[1]}),
+                          command="ride", limit=api.rides.MAX_RIDE_ROWS,
+                          per_point=TILTS_PER_SPEED if by[0] != "alpha" else 1)
         where, how, friction = _grid(_axis(*at), _axis(*by), mus)
         kwargs = dict(machine=chosen, stability=stability and not summary, only=only or None, summary=summary,
                       **friction, **setup)
@@ -263,8 +272,8 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_show
     --vertical, a height above the wall) and rendered.  ``lane`` holds the
     lane's options as typed, ``how_shown`` what to compute and how to
     render (summary, only, stability, fmt, output, shown)."""
-    theta, height, alpha, speed, vertical, v_top = (lane[k] for k in ("theta", "height", "alpha", "speed",
-                                                                      "vertical", "v_top"))
+    theta, height, vertical, v_top = (lane[k] for k in ("theta", "height", "vertical", "v_top"))
+    holds = [k for k in ("alpha", "speed", "com_speed", "period") if lane[k]]
     summary, only, stability, fmt, output, shown = (how_shown[k] for k in ("summary", "only", "stability", "fmt",
                                                                            "output", "shown"))
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
@@ -277,13 +286,13 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_show
                                  "contact's height above the floor)", param_hint="'--theta'")
     if not height:
         raise click.UsageError("give --height (the contact's height above the floor)")
-    if alpha and speed:
-        raise click.UsageError("give --alpha or --speed, not both")
-    if not alpha and not speed:
-        raise click.UsageError("give --alpha or --speed")
-    by = ("alpha", alpha) if alpha else ("speed", speed)
+    if len(holds) != 1:
+        typed = " and ".join("--" + k.replace("_", "-") for k in holds)
+        raise click.UsageError("give exactly one of --alpha, --speed, --com-speed and --period"
+                               + (f", not {typed}" if holds else ""))
+    by = (holds[0], lane[holds[0]])
     refuse_large_grid(value_counts({"height": height, "mu": mu, by[0]: by[1]}), command="ride",
-                      limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if speed else 1)
+                      limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if by[0] != "alpha" else 1)
     where, how, friction = _grid(_axis("height", height), _axis(*by), mus)
     table = api.ride(height=where, **{by[0]: how}, machine=chosen, stability=stability and not summary,
                      only=only or None, summary=summary, **wall, **friction, **setup)

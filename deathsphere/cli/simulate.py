@@ -65,7 +65,10 @@ def _preflight_output(output) -> bool:
 @param_option("theta", help="Polar angle of the contact point (a vertical orbit: the cone angle, "
               "90 = great circle).")
 @param_option("height", help="A two-wheeler: the rear contact's height above the globe's floor instead of --theta.")
-@params_options("alpha", "speed", "omega", "omega3")
+@param_option("alpha")
+@param_option("speed")
+@param_option("com_speed")
+@params_options("omega", "omega3")
 @single("--branch", type=click.IntRange(0, None), default=0,
         help="Which orbit when several give the request: a sphere with --omega3, the root of eq. 55 (0 slow, "
              "1 fast); a wheel with --speed or --omega, the tilt (0 first, in increasing alpha) [default: 0].")
@@ -104,7 +107,7 @@ def _preflight_output(output) -> bool:
 @output_options()
 @units_option()
 def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate,
-                     steer_gains, hands_free, alpha, speed, omega, omega3, branch, vertical, v_top, perturb, periods,
+                     steer_gains, hands_free, alpha, speed, com_speed, omega, omega3, branch, vertical, v_top, perturb, periods,
                      points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, loop_seconds,
                      playback, body, machine,
                      machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
@@ -176,7 +179,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     two_wheeler_file = machine_file is not None and is_two_wheeler_file(machine_file)
     if (steer is not None or steer_gains is not None or hands_free or two_wheeler_only or is_two_wheeler(machine)
             or two_wheeler_file):
-        refused = [flag for flag, value in (("--alpha", alpha), ("--omega", omega), ("--omega3", omega3),
+        refused = [flag for flag, value in (("--alpha", alpha), ("--com-speed", com_speed), ("--omega", omega),
+                                            ("--omega3", omega3),
                                             ("--vertical", vertical or None), ("--v-top", v_top), ("--body", body),
                                             ("--machine-file", None if two_wheeler_file else machine_file),
                                             ("-a", a), ("-k", k),
@@ -204,6 +208,10 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         return
     if height is not None:
         raise click.UsageError("--height is a two-wheeler's lane (with --steer); give --theta")
+    if speed is not None and com_speed is not None:
+        raise click.UsageError("--com-speed: give --speed or --com-speed, not both (here both are the centre's "
+                               "speed)")
+    speed = com_speed if speed is None else speed
 
     overrides = {"mass": mass, "com_height": com_height, "tyre_radius": tyre_radius, "roll_inertia": roll_inertia,
                  "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia, "spin_inertia": spin_inertia,

@@ -43,8 +43,8 @@ from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 from deathsphere.physics.trig_roots import evaluate_rows, roots_in
 
-__all__ = ["vertical_loop", "ride_orbit", "meridian_points", "speed_polynomial", "solve_alpha_for_speed", "fit_window",
-           "ROOT_MATCH_RTOL"]
+__all__ = ["vertical_loop", "ride_orbit", "meridian_points", "speed_polynomial", "solve_alpha_for_speed",
+           "rate_polynomial", "solve_alpha_for_rate", "fit_window", "ROOT_MATCH_RTOL"]
 
 #: A root of the speed polynomial (eq. M12) is kept only where the forward
 #: model gives the target speed back to this relative tolerance (as
@@ -209,16 +209,10 @@ def _add(p, q):
     return out
 
 
-def speed_polynomial(theta, speed, ground, g, m: MachineArrays):
-    """Coefficient rows (n, 9) of the trigonometric polynomial in alpha of
-    degree 4 whose zeros are the tilts giving the CoM speed ``speed``
-    (docs/machine.md eq. M12), all inputs 1-D of one length n (the sphere's
-    radius and the machine's arrays included)::
-
-        f(alpha) = g d_r r_G^2 W - v^2 [sin(alpha) (j r sin(theta) + delta cos(alpha) W) - d_z r_G W]
-
-    i.e. (g d_r r_G^2 - v^2 den) W with den the denominator of eq. M8 (W > 0
-    wherever the wheel fits, so no zero is added or lost there)."""
+def _balance_terms(theta, ground, g, m: MachineArrays):
+    """Coefficient rows of eq. M8's parts (docs/machine.md eq. M12): ``(d_r,
+    W, r_G, den W)``, den the denominator of eq. M8, so that Omega^2 =
+    g d_r W / (den W) wherever the wheel fits (W > 0)."""
     r, mass, h, a, t = ground.radius, m.mass, m.com_height, m.wheel_radius, m.tyre_radius
     st, ct = np.sin(theta), np.cos(theta)
     hq = h - t
@@ -231,11 +225,39 @@ def speed_polynomial(theta, speed, ground, g, m: MachineArrays):
     w = _lin((a - t) + zero, t * st, -t * ct)
     sin_a = _lin(zero, zero, 1.0 + zero)
     cos_a = _lin(zero, 1.0 + zero, zero)
-    v2 = (speed * speed)[:, None]
-    left = _mul(_mul(_mul(d_r, r_g), r_g), w) * g[:, None]
     bracket = _add(_lin(j * r * st, zero, zero), _mul(cos_a, w) * delta[:, None])
     den_w = _add(_mul(sin_a, bracket), -_mul(_mul(d_z, r_g), w))
+    return d_r, w, r_g, den_w
+
+
+def speed_polynomial(theta, speed, ground, g, m: MachineArrays):
+    """Coefficient rows (n, 9) of the trigonometric polynomial in alpha of
+    degree 4 whose zeros are the tilts giving the CoM speed ``speed``
+    (docs/machine.md eq. M12), all inputs 1-D of one length n (the sphere's
+    radius and the machine's arrays included)::
+
+        f(alpha) = g d_r r_G^2 W - v^2 [sin(alpha) (j r sin(theta) + delta cos(alpha) W) - d_z r_G W]
+
+    i.e. (g d_r r_G^2 - v^2 den) W with den the denominator of eq. M8 (W > 0
+    wherever the wheel fits, so no zero is added or lost there)."""
+    d_r, w, r_g, den_w = _balance_terms(theta, ground, g, m)
+    v2 = (speed * speed)[:, None]
+    left = _mul(_mul(_mul(d_r, r_g), r_g), w) * g[:, None]
     return _add(left, -v2 * den_w)
+
+
+def rate_polynomial(theta, omega, ground, g, m: MachineArrays):
+    """Coefficient rows (n, 7) of the trigonometric polynomial in alpha of
+    degree 3 whose zeros are the tilts of a steady orbit at the rate
+    ``omega`` (docs/machine.md eq. M12r, beyond the paper: eq. M8 with
+    Omega given instead of v_cm = Omega |r_G|)::
+
+        f(alpha) = g d_r W - Omega^2 [sin(alpha) (j r sin(theta) + delta cos(alpha) W) - d_z r_G W]
+
+    i.e. (g d_r - Omega^2 den) W, as :func:`speed_polynomial` without the
+    factor r_G^2 (all inputs 1-D of one length n)."""
+    d_r, w, _, den_w = _balance_terms(theta, ground, g, m)
+    return _add(_mul(d_r, w) * g[:, None], -(omega * omega)[:, None] * den_w)
 
 
 def fit_window(theta, ground, machine: MachineArrays):
@@ -259,14 +281,34 @@ def solve_alpha_for_speed(theta, speed, ground, g, machine: MachineArrays):
     where the speed is exactly a local extremum of v_cm(alpha), are not
     reported.  Returns (n, m) roots, sorted, NaN-padded, m <= 8.
     """
+    return _tilts_giving(theta, speed, ground, g, machine, speed_polynomial, "v_cm")
+
+
+def solve_alpha_for_rate(theta, omega, ground, g, machine: MachineArrays):
+    """Every tilt in the fit window (eq. M10) at which a steady orbit turns
+    at the rate ``omega`` [rad/s] > 0 about the vertical (docs/machine.md
+    eq. M12r, beyond the paper): the zeros of :func:`rate_polynomial` (at
+    most 6 per period), kept where :func:`ride_orbit` gives Omega back to
+    :data:`ROOT_MATCH_RTOL`, as :func:`solve_alpha_for_speed` (1-D inputs
+    of one length n).  A contact speed v_contact fixes Omega = v_contact /
+    (r sin(theta)) whatever the tilt (the contact runs round the parallel of
+    radius r sin(theta)), and a lap time T fixes Omega = 2 pi / T: both are
+    lanes by rate.  Returns (n, m) roots, sorted, NaN-padded, m <= 6.
+    """
+    return _tilts_giving(theta, omega, ground, g, machine, rate_polynomial, "omega")
+
+
+def _tilts_giving(theta, target, ground, g, machine: MachineArrays, polynomial, key: str):
+    """The zeros of ``polynomial`` in the fit window at which ride_orbit's
+    ``key`` is ``target`` (the shared body of the two solves above)."""
     args = np.broadcast_arrays(*(np.asarray(x, dtype=float).reshape(-1) for x in
-                                 (theta, speed, ground.radius, g, *machine)))
-    theta, speed, r, g = args[:4]
+                                 (theta, target, ground.radius, g, *machine)))
+    theta, target, r, g = args[:4]
     m = MachineArrays(*args[4:])
     n = theta.size
     if n == 0:
         return np.full((0, 0), np.nan)
-    coef = speed_polynomial(theta, speed, Sphere(r), g, m)
+    coef = polynomial(theta, target, Sphere(r), g, m)
     lo, hi = fit_window(theta, Sphere(r), m)
     eps = 1e-12
     roots = roots_in(coef, lo + eps, hi - eps) if hi.size else np.full((n, 0), np.nan)
@@ -274,11 +316,11 @@ def solve_alpha_for_speed(theta, speed, ground, g, machine: MachineArrays):
     if roots.shape[1] == 0:
         return roots
     col = (slice(None), None)
-    # the head set above the centre of mass: only the speed is checked here
+    # the head set above the centre of mass: only the speed (or rate) is checked here
     mc = m._replace(head_height=m.com_height + 1.0).map(lambda x: x[col])
     orb = ride_orbit(theta[col], np.where(found, roots, 0.0), Sphere(r[col]), g[col], mc)
     with np.errstate(invalid="ignore"):
-        found &= np.abs(orb["v_cm"] - speed[col]) <= ROOT_MATCH_RTOL * speed[col]
+        found &= np.abs(orb[key] - target[col]) <= ROOT_MATCH_RTOL * target[col]
     roots = np.sort(np.where(found, roots, np.nan), axis=1)
     width = max(1, int(np.max(np.sum(np.isfinite(roots), axis=1), initial=0)))
     return roots[:, :width]

@@ -1,9 +1,11 @@
-"""A machine's lane at a given speed: every tilt that gives a height and a
-speed, the orbit at each, and the one a rider takes (beyond the paper;
-docs/machine.md eqs. M8-M12, docs/show.md "Lanes").
+"""A machine's lane at a given speed or rate: every tilt that gives a
+height and a centre-of-mass speed (eq. M12) or an orbital rate (eq. M12r:
+a contact speed or a lap time), the orbit at each, and the one a rider
+takes (beyond the paper; docs/machine.md eqs. M8-M12r, docs/show.md
+"Lanes").
 
 Vectorised over lanes: arrays of contact polar angles theta [rad] and
-centre-of-mass speeds [m/s] (n,), the ground (a
+speeds [m/s] or rates [rad/s] (n,), the ground (a
 :class:`~deathsphere.physics.ground.Sphere`), gravity and the machine's
 arrays (:class:`~deathsphere.physics.machine_arrays.MachineArrays`, one
 machine or one per lane) broadcast against them.
@@ -14,12 +16,15 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.physics.ground import Sphere
-from deathsphere.physics.machine import ride_orbit, solve_alpha_for_speed
+from deathsphere.physics.geometry import SINGULAR
+from deathsphere.physics.machine import ride_orbit, solve_alpha_for_rate, solve_alpha_for_speed
 from deathsphere.physics.machine_arrays import MachineArrays
-from deathsphere.physics.machine_surface import ride_orbit_on, solve_alpha_for_speed_on
+from deathsphere.physics.machine_surface import ride_orbit_on, solve_alpha_for_rate_on, solve_alpha_for_speed_on
 from deathsphere.physics.status import Reason, Status
 
-__all__ = ["orbits_for_speed", "closest_tilt", "horizontal_lanes", "speed_is_feasible", "orbits_for_speed_on"]
+__all__ = ["orbits_for_speed", "orbits_for_rate", "contact_rate", "closest_tilt", "horizontal_lanes",
+           "horizontal_lanes_at_rate", "speed_is_feasible", "rate_is_feasible", "orbits_for_speed_on",
+           "orbits_for_rate_on", "contact_rate_on"]
 
 
 def _flat(theta, speed, ground, g, machine: MachineArrays, *more):
@@ -38,6 +43,44 @@ def orbits_for_speed(theta, speed, ground, g, machine: MachineArrays, mu=np.inf,
     where none is: NaN, status no_orbit and reason machine_no_alpha."""
     (theta, speed, r, g, mu, max_g), m = _flat(theta, speed, ground, g, machine, mu, max_g)
     tilts = solve_alpha_for_speed(theta, speed, Sphere(r), g, m)
+    return tilts, _at_tilts(theta, tilts, r, g, m, mu, max_g)
+
+
+def orbits_for_rate(theta, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
+    """Every tilt of a steady orbit at the rate ``omega`` [rad/s] about the
+    vertical at ``theta`` (eq. M12r,
+    :func:`~deathsphere.physics.machine.solve_alpha_for_rate`) and
+    :func:`~deathsphere.physics.machine.ride_orbit`'s quantities at each, as
+    :func:`orbits_for_speed`.  A rate that is not finite and positive (a
+    contact speed with the contact on the axis: :func:`contact_rate`) has
+    no tilt: status no_orbit, reason contact_on_axis."""
+    (theta, omega, r, g, mu, max_g), m = _flat(theta, omega, ground, g, machine, mu, max_g)
+    moving = np.isfinite(omega) & (omega > 0)
+    tilts = solve_alpha_for_rate(theta, np.where(moving, omega, 1.0), Sphere(r), g, m)
+    tilts = np.where(moving[:, None], tilts, np.nan)
+    orbit = _at_tilts(theta, tilts, r, g, m, mu, max_g)
+    orbit["reason"] = np.where(moving[:, None], orbit["reason"], Reason.CONTACT_ON_AXIS).astype(np.int8)
+    return tilts, orbit
+
+
+def contact_rate(theta, v_contact, ground):
+    """The orbital rate Omega [rad/s] at which the contact runs along the
+    ground at ``v_contact`` [m/s] (arrays, broadcast): on a steady
+    horizontal orbit the contact runs round the parallel of radius rho_P =
+    r sin(theta) (the contact's distance from the vertical axis), so
+    v_contact = Omega rho_P whatever the tilt (beyond the paper;
+    docs/machine.md eq. M12r).  NaN where the contact is on the axis
+    (rho_P = 0: it does not move on any orbit)."""
+    theta, v = np.asarray(theta, dtype=float), np.asarray(v_contact, dtype=float)
+    r = np.asarray(ground.radius, dtype=float)
+    rho = r * np.sin(theta)
+    on_axis = ~(np.abs(rho) > SINGULAR * r)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(on_axis, np.nan, v / np.where(on_axis, 1.0, np.abs(rho)))
+
+
+def _at_tilts(theta, tilts, r, g, m: MachineArrays, mu, max_g) -> dict:
+    """ride_orbit's quantities at the tilts found ((n, k), NaN: none)."""
     rows, cols = np.nonzero(np.isfinite(tilts))
     found = ride_orbit(theta[rows], tilts[rows, cols], Sphere(r[rows]), g[rows], m.take(rows), mu[rows],
                        max_g[rows])
@@ -46,7 +89,7 @@ def orbits_for_speed(theta, speed, ground, g, machine: MachineArrays, mu=np.inf,
     for key, val in found.items():
         orbit[key] = np.full(tilts.shape, empty.get(key, np.nan), dtype=val.dtype)
         orbit[key][rows, cols] = val
-    return tilts, orbit
+    return orbit
 
 
 def closest_tilt(tilts, keep, target):
@@ -77,7 +120,21 @@ def horizontal_lanes(theta, speed, ground, g, machine: MachineArrays, mu=np.inf,
     reason machine_no_alpha where no tilt gives the speed at all) and NaN.
     """
     theta = np.asarray(theta, dtype=float).reshape(-1)
-    tilts, orbit = orbits_for_speed(theta, speed, ground, g, machine, mu, max_g)
+    return _rider_choice(theta, *orbits_for_speed(theta, speed, ground, g, machine, mu, max_g), ground)
+
+
+def horizontal_lanes_at_rate(theta, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf) -> dict:
+    """:func:`horizontal_lanes` for lanes held at an orbital rate ``omega``
+    [rad/s] (n,) (eq. M12r: a contact speed, :func:`contact_rate`, or a lap
+    time 2 pi / T): the same rider's choice among the tilts giving the
+    rate; reason contact_on_axis where the rate is not finite."""
+    theta = np.asarray(theta, dtype=float).reshape(-1)
+    return _rider_choice(theta, *orbits_for_rate(theta, omega, ground, g, machine, mu, max_g), ground)
+
+
+def _rider_choice(theta, tilts, orbit, ground) -> dict:
+    """The tilt a rider takes of ``tilts`` (n, k) with ``orbit`` at each
+    (:func:`horizontal_lanes`' rule) and the orbit there."""
     if tilts.shape[1] == 0:                      # no lanes: one (empty) column of tilts
         tilts = np.full((theta.size, 1), np.nan)
         orbit = {key: np.zeros((theta.size, 1), dtype=np.asarray(val).dtype) for key, val in orbit.items()}
@@ -92,7 +149,7 @@ def horizontal_lanes(theta, speed, ground, g, machine: MachineArrays, mu=np.inf,
     out = {key: np.where(chosen, np.asarray(val)[rows, col], np.nan) for key, val in orbit.items()}
     none = ~found[:, 0]
     out["status"] = np.where(none, Status.NO_ORBIT, orbit["status"][rows, col]).astype(np.int8)
-    out["reason"] = np.where(none, Reason.MACHINE_NO_ALPHA, orbit["reason"][rows, col]).astype(np.int8)
+    out["reason"] = np.where(none, orbit["reason"][rows, 0], orbit["reason"][rows, col]).astype(np.int8)
     out["height"] = np.broadcast_to(ground.height(theta), theta.shape)
     out["alpha"] = np.where(chosen, tilts[rows, col], np.nan)
     out["chosen"] = chosen
@@ -120,6 +177,45 @@ def orbits_for_speed_on(height, speed, ground, g, machine: MachineArrays, mu=np.
                                  (height, speed, g, mu, max_g, *machine)))
     (height, speed, g, mu, max_g), m = args[:5], MachineArrays(*args[5:])
     tilts = solve_alpha_for_speed_on(height, speed, ground, g, m)
+    return tilts, _at_tilts_on(height, tilts, ground, g, m, mu, max_g)
+
+
+def orbits_for_rate_on(height, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
+    """:func:`orbits_for_rate` on any ground (docs/machine.md, "On any
+    surface of revolution"): every tilt of a steady orbit at the rate
+    ``omega`` [rad/s] on the lane at ``height`` [m] and
+    :func:`~deathsphere.physics.machine_surface.ride_orbit_on`'s quantities
+    at each ((n, k)).  A rate that is not finite and positive (a contact
+    speed with the contact on the axis) has no tilt: status no_orbit, reason
+    contact_on_axis."""
+    args = np.broadcast_arrays(*(np.asarray(x, dtype=float).reshape(-1) for x in
+                                 (height, omega, g, mu, max_g, *machine)))
+    (height, omega, g, mu, max_g), m = args[:5], MachineArrays(*args[5:])
+    moving = np.isfinite(omega) & (omega > 0)
+    tilts = solve_alpha_for_rate_on(height, np.where(moving, omega, 1.0), ground, g, m)
+    tilts = np.where(moving[:, None], tilts, np.nan)
+    orbit = _at_tilts_on(height, tilts, ground, g, m, mu, max_g)
+    orbit["reason"] = np.where(moving[:, None], orbit["reason"], Reason.CONTACT_ON_AXIS).astype(np.int8)
+    return tilts, orbit
+
+
+def contact_rate_on(height, v_contact, ground):
+    """The orbital rate Omega [rad/s] at which the contact runs along any
+    ground at ``v_contact`` [m/s] on the lane at ``height``: v_contact =
+    Omega rho_P, rho_P the contact's distance from the axis (as
+    :func:`contact_rate` on the globe; beyond the paper, docs/machine.md eq.
+    M12r).  NaN where the contact is on the
+    axis (a cone's apex)."""
+    rho, _ = ground.contact(height)
+    rho, v = np.asarray(rho, dtype=float), np.asarray(v_contact, dtype=float)
+    scale = np.maximum(np.abs(rho), 1.0)
+    on_axis = ~(np.abs(rho) > SINGULAR * scale)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(on_axis, np.nan, v / np.where(on_axis, 1.0, np.abs(rho)))
+
+
+def _at_tilts_on(height, tilts, ground, g, m: MachineArrays, mu, max_g) -> dict:
+    """ride_orbit_on's quantities at the tilts found ((n, k), NaN: none)."""
     rows, cols = np.nonzero(np.isfinite(tilts))
     found = ride_orbit_on(height[rows], tilts[rows, cols], ground, g[rows], m.take(rows), mu[rows], max_g[rows])
     empty = {"status": Status.NO_ORBIT, "reason": Reason.MACHINE_NO_ALPHA}
@@ -127,4 +223,13 @@ def orbits_for_speed_on(height, speed, ground, g, machine: MachineArrays, mu=np.
     for key, val in found.items():
         orbit[key] = np.full(tilts.shape, empty.get(key, np.nan), dtype=val.dtype)
         orbit[key][rows, cols] = val
-    return tilts, orbit
+    return orbit
+
+
+def rate_is_feasible(theta, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
+    """bool (n,): some tilt at ``theta`` gives a steady orbit at the rate
+    ``omega`` (n,) with status ok (eqs. M8-M12r): a horizontal lane held by
+    its contact's speed or its lap time is feasible (docs/show.md, "Speed
+    margin")."""
+    tilts, orbit = orbits_for_rate(theta, omega, ground, g, machine, mu, max_g)
+    return (np.isfinite(tilts) & (orbit["status"] == Status.OK)).any(axis=1)

@@ -83,6 +83,7 @@ class Reason(IntEnum):
     MACHINE_NO_CONTACT_WALL = 50
     HEAD_HITS_WALL = 51
     MACHINE_HITS_FLOOR = 52
+    CONTACT_ON_AXIS = 53
 
 
 REASONS = {
@@ -142,6 +143,8 @@ REASONS = {
     Reason.MACHINE_NO_CONTACT_WALL: "contact force pulls away from the wall (machine.md eq. MS5 needs r_G Omega^2 sin(beta) + g cos(beta) > 0)",
     Reason.HEAD_HITS_WALL: "the rider's head reaches the wall at this tilt (head_clearance_m <= 0)",
     Reason.MACHINE_HITS_FLOOR: "the tyre or the rider's head reaches the floor at this tilt (machine.md eq. MS7)",
+    Reason.CONTACT_ON_AXIS: "the contact is on the vertical axis (theta 0 or 180 deg): it does not move on any "
+                            "orbit so no contact speed holds one (give com_speed or alpha)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -54,13 +54,17 @@ def _any(column: str):
     return lambda head: any(head.columns[column].tolist())
 
 
-#: A rider's speed: km/h (or the unit typed) where the safety columns are.
+#: A rider's speed, the contact's (his speedometer's; --speed): km/h (or the
+#: unit typed) where the safety columns are; the centre of mass's (--com-speed) beside it.
 SPEED = dict(kind="speed", params=("speed",), crew=KM_H)
+COM_SPEED = dict(kind="speed", params=("com_speed",), crew=KM_H)
 LENGTH = dict(kind="length")
 
 #: The one-orbit view, the crew's first: (spec) per row, source in ``source``.
 ORBIT_FIELDS = (
-    ColumnSpec("v_cm_m_s", "speed of the centre of mass", "m/s", source="eq. M8", show="display", **SPEED),
+    ColumnSpec("v_contact_m_s", "speed of the contact (speedometer)", "m/s", source="Ω r sin θ", show="display",
+               **SPEED),
+    ColumnSpec("v_cm_m_s", "speed of the centre of mass", "m/s", source="eq. M8", show="display", **COM_SPEED),
     ColumnSpec("lean_deg", "lean from the vertical, 90° − α", "deg"),
     ColumnSpec("load_g", "load on the rider |F|/(m g)", "g", source="eq. M11"),
     ColumnSpec("mu_required", "μ required", source="eq. M9"),
@@ -69,7 +73,6 @@ ORBIT_FIELDS = (
     ColumnSpec("com_orbit_radius_m", "radius of the CoM's lap", "m", source="eq. M3", **LENGTH),
     ColumnSpec("omega_rad_s", "Ω lap rate", "rad/s", source="eq. M8", kind="rate"),
     ColumnSpec("period_s", "lap time 2π/Ω", "s"),
-    ColumnSpec("v_contact_m_s", "speed of the contact point", "m/s", kind="speed"),
     ColumnSpec("wheel_spin_rad_s", "wheel spin (relative to frame)", "rad/s", source="eq. M4", kind="rate"),
     ColumnSpec("normal_per_mass_m_s2", "normal force / m", "m/s²", source="eq. M9"),
     ColumnSpec("friction_per_mass_m_s2", "friction / m (+ down the wall)", "m/s²", source="eq. M9"),
@@ -89,13 +92,17 @@ MANY_COLUMNS = (
     ColumnSpec("height_m", "height", "m", kind="length", params=("height",)),
     ColumnSpec("theta_deg", "θ", "°", drop=6, kind="angle", params=("theta",)),
     ColumnSpec("status", "status", format=status_text, justify="left"),
-    ColumnSpec("v_cm_km_h", "speed", "m/s", value=lambda get: get["v_cm_m_s"], show="display", **SPEED),
+    ColumnSpec("v_contact_km_h", "speed", "m/s", value=lambda get: get["v_contact_m_s"], show="display", **SPEED),
+    # the centre of mass's beside it, left out after alpha and theta (the speedometer's is the rider's)
+    ColumnSpec("v_cm_km_h", "CoM\nspeed", "m/s", value=lambda get: get["v_cm_m_s"], show="display", drop=6.5,
+               **COM_SPEED),
     ColumnSpec("lean_deg", "lean", "°"),
     ColumnSpec("load_g", "load", "g"),
     ColumnSpec("mu_required", "μ\nneeded"),
     ColumnSpec("head_clearance_m", "head\nclear", "m", **LENGTH),
     ColumnSpec("alpha_deg", "α", "°", drop=5, kind="angle", params=("alpha",)),
-    ColumnSpec("v_cm_m_s", "speed", "m/s", drop=4, show="echo", **SPEED),
+    ColumnSpec("v_contact_m_s", "speed", "m/s", drop=4, show="echo", **SPEED),
+
     ColumnSpec("period_s", "lap", "s", drop=3),
     ColumnSpec("stability", "stability", format=_stability_cell, drop=2, when=_any("stability")),
     ColumnSpec("growth_rate_1_s", "growth", "1/s", drop=1, when=_any("stability")),
@@ -178,7 +185,8 @@ SUMMARY_VIEW = (
     ColumnSpec("mu_available", "μ", format=_limit, when=_varies("mu_available")),
     ColumnSpec("max_g", "max", "g", format=_limit, when=_varies("max_g")),
     ColumnSpec("ok", "ok", value=lambda get: f"{get[_tried(get) + '_ok']}/{get[_tried(get) + '_tried']}"),
-    ColumnSpec("speed", "speed", "m/s", value=lambda get: (_m_s(get["v_min_km_h"]), _m_s(get["v_max_km_h"])),
+    # the speedometer's range (the contact's); the centre of mass's is the CSV's v_min_km_h, v_max_km_h
+    ColumnSpec("speed", "speed", "m/s", value=lambda get: (get["v_contact_min_m_s"], get["v_contact_max_m_s"]),
                format=_spans(), show="display", **SPEED),
     ColumnSpec("lean", "lean", "°", value=lambda get: (get["lean_min_deg"], get["lean_max_deg"]), format=_spans(),
                drop=2),
@@ -193,11 +201,6 @@ SUMMARY_VIEW = (
 def _tried(get) -> str:
     """What the rider's table counts: speeds tried, or tilts (``--alpha``)."""
     return "tilts" if "tilts_tried" in get else "speeds"
-
-
-def _m_s(km_h):
-    # the rider's table holds the speeds in km/h (its CSV's); a view converts from SI
-    return km_h if is_undefined(km_h) else km_h / KM_H.per_api_unit
 
 
 class _WhyWraps(FitTable):

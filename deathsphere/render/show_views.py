@@ -99,8 +99,9 @@ def _margin(lo, hi) -> str:
 
 
 def _lane_speed(get: dict):
-    """A horizontal rider's centre-of-mass speed, a looper's at the top."""
-    return get.get("v_top_m_s") if get.get("lane") == "vertical" else get.get("v_cm_m_s")
+    """A horizontal rider's speedometer (his contact's speed), a looper's
+    centre of mass's at the top."""
+    return get.get("v_top_m_s") if get.get("lane") == "vertical" else get.get("v_contact_m_s")
 
 
 def _clearance_spec(key: str, header: str, decimals: int, **more) -> ColumnSpec:
@@ -138,9 +139,10 @@ def riders_view(table: Table, total_rows: int | None = None, result=None,
         _digits("period_s", "lap", "s", drop=2),
         _speed_spec("v_bottom", "bottom", units, drop=5, when=lambda head: any(vertical),
                     value=lambda get: get.get("v_bottom_m_s") if get.get("lane") == "vertical" else ""),
-        _digits("v_contact_m_s", "contact", "m/s", drop=1),
+        _digits("v_cm_m_s", "CoM", "m/s", drop=1),
     ]
-    notes = ["[dim]speed: a horizontal rider's centre of mass, a looper's at the top; margin: the band of "
+    notes = ["[dim]speed: a horizontal rider's contact (his speedometer), a looper's centre of mass at the top "
+             "(CoM: a horizontal rider's centre of mass); margin: the band of "
              "speeds, in % of the planned one, in which the lane stays feasible[/dim]"]
     looper = [row_record(head, i) for i in range(len(head)) if vertical[i]]
     for get in looper:

@@ -1,7 +1,8 @@
 """The one decoder: request records from a mapping of keys as typed (a show
 plan's ``[globe]`` and ``[[rider]]`` tables, the command line's options, the
-API's keywords).  Which lane, which of theta and height, tilt or speed,
-radius or diameter: decided here, once, as the records' structure.
+API's keywords).  Which lane, which of theta and height, which of the
+tilt, the two speeds and the lap time, radius or diameter: decided here,
+once, as the records' structure.
 
 ``read(key, raw)`` reads one value the way its caller's values come: one
 number with a unit for a plan (:func:`.values.table_reader`), an array for
@@ -19,13 +20,16 @@ from deathsphere.params import choice, shown_number
 from deathsphere.physics.ground import Sphere
 from deathsphere.records.paper_bodies import PAPER_BODIES, Ball, PaperBodyKind, Wheel
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import (Height, Horizontal, Rate, RiderRequest, Run, Speed, Spin, Theta, Tilt,
-                                          Vertical)
+from deathsphere.requests.records import (ComSpeed, ContactSpeed, Height, Horizontal, Period, Rate, RiderRequest,
+                                          Run, SameLap, Speed, Spin, Theta, Tilt, Vertical)
 
 #: The ways a lane may be held, by kind.
 LANES = ("horizontal", "vertical")
+#: How a rider's horizontal lane is held (ride, a show's plan): each key as typed and its record (one of them).
+LANE_HOLDS = {"alpha": Tilt, "speed": ContactSpeed, "com_speed": ComSpeed, "period": Period,
+              "same_lap_as": SameLap}
 #: The keys that belong to one kind of lane only.
-LANE_KEYS = {"horizontal": ("theta", "height", "alpha", "speed", "direction"), "vertical": ("v_top", "azimuth")}
+LANE_KEYS = {"horizontal": ("theta", "height", *LANE_HOLDS, "direction"), "vertical": ("v_top", "azimuth")}
 
 
 def _one_of(given: Mapping, keys: Keys, first: str, second: str, what: str):
@@ -34,6 +38,16 @@ def _one_of(given: Mapping, keys: Keys, first: str, second: str, what: str):
     has = [k for k in (first, second) if given.get(k) is not None]
     if len(has) != 1:
         keys.fail(second if has else first, f"give exactly one of {first} and {second}{what}", missing=not has)
+    return has[0], given[has[0]]
+
+
+def _exactly_one(given: Mapping, keys: Keys, names, what: str):
+    """The one of ``names`` given, as (key, raw); refused when several
+    (named by the second given, as typed) or none are."""
+    has = [k for k in names if given.get(k) is not None]
+    if len(has) != 1:
+        listed = ", ".join(names[:-1]) + f" and {names[-1]}"
+        keys.fail(has[1] if has else names[0], f"give exactly one of {listed}{what}", missing=not has)
     return has[0], given[has[0]]
 
 
@@ -71,11 +85,15 @@ def _within(height, ground: Sphere, keys: Keys, key: str):
     return height
 
 
-def decode_lane(given: Mapping, keys: Keys, read, ground: Sphere, cone: bool = False) -> Horizontal | Vertical:
+def decode_lane(given: Mapping, keys: Keys, read, ground: Sphere, cone: bool = False,
+                plan: bool = False) -> Horizontal | Vertical:
     """The lane a rider's keys describe: ``lane`` (``"horizontal"``, the
     default, or ``"vertical"``) and the keys of that kind only; ``cone``: a
     vertical lane takes ``theta``, its cone angle (``ride --vertical``; a
-    show's loopers ride great circles)."""
+    show's loopers ride great circles).  A horizontal lane is held by
+    exactly one of :data:`LANE_HOLDS`; ``plan``: a show's plan, whose riders ride
+    a speed or a lap (no tilt) and may take another rider's lap
+    (``same_lap_as``)."""
     kind = given.get("lane", "horizontal")
     if kind not in LANES:
         keys.fail("lane", f"must be horizontal or vertical (got {kind!r})")
@@ -92,22 +110,30 @@ def decode_lane(given: Mapping, keys: Keys, read, ground: Sphere, cone: bool = F
         return Vertical(v_top=read("v_top", given["v_top"]), **extra)
     key, raw = _one_of(given, keys, "theta", "height", " (the contact's height above the floor)")
     at = Theta(read(key, raw)) if key == "theta" else Height(_within(read(key, raw), ground, keys, key))
-    key, raw = _one_of(given, keys, "alpha", "speed", " (of the centre of mass)")
-    return Horizontal(at=at, by=Tilt(read(key, raw)) if key == "alpha" else Speed(read(key, raw)))
+    holds = tuple(k for k in LANE_HOLDS if k != ("alpha" if plan else "same_lap_as"))
+    key, raw = _exactly_one(given, keys, holds, " (speed: the contact's along the ground; com_speed: the centre "
+                                                "of mass's; period: the lap time)")
+    if key == "same_lap_as":
+        if not isinstance(raw, str) or not raw:
+            keys.fail(key, f"must be the name of another rider of the plan (got {raw!r})")
+        return Horizontal(at=at, by=SameLap(raw))
+    return Horizontal(at=at, by=LANE_HOLDS[key](read(key, raw)))
 
 
 #: A rider's direction, as typed, seen from above.
 DIRECTIONS = {"ccw": 1, "cw": -1}
 
 
-def decode_rider(given: Mapping, keys: Keys, read, body, ground: Sphere, cone: bool = False) -> RiderRequest:
+def decode_rider(given: Mapping, keys: Keys, read, body, ground: Sphere, cone: bool = False,
+                 plan: bool = False) -> RiderRequest:
     """One rider on ``ground``: its body (a machine record), its lane, its
-    direction (``ccw`` or ``cw``), phase and name."""
+    direction (``ccw`` or ``cw``), phase and name (``plan``: as
+    :func:`decode_lane`)."""
     direction = given.get("direction", "ccw")
     if direction not in DIRECTIONS:
         keys.fail("direction", f"must be ccw or cw, seen from above (got {direction!r})")
     phase = given.get("phase")
-    return RiderRequest(body=body, lane=decode_lane(given, keys, read, ground, cone),
+    return RiderRequest(body=body, lane=decode_lane(given, keys, read, ground, cone, plan),
                         direction=DIRECTIONS[direction],
                         phase=0.0 if phase is None else read("phase", phase), name=str(given.get("name") or ""))
 

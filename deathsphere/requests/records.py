@@ -38,14 +38,49 @@ class Tilt:
 
 
 @dataclass(frozen=True)
-class Speed:
-    """How a horizontal lane is held: the centre of mass's speed [m/s]
-    (every tilt giving it)."""
+class ContactSpeed:
+    """How a horizontal lane is held: the contact's speed along the ground
+    [m/s] (what a speedometer reads; registry ``speed``).  On a steady
+    orbit the contact runs round its parallel, so it fixes the rate
+    Omega = v / (r sin(theta)) (every tilt giving that rate)."""
 
     speed: object
     #: which of the tilts giving it a run starts on (0: the first in
     #: increasing alpha); ride lists them all
     branch: int = 0
+
+
+@dataclass(frozen=True)
+class ComSpeed:
+    """How a horizontal lane is held: the centre of mass's speed [m/s]
+    (registry ``com_speed``; every tilt giving it)."""
+
+    speed: object
+    #: which of the tilts giving it a run starts on (0: the first in
+    #: increasing alpha); ride lists them all
+    branch: int = 0
+
+
+#: The centre speed under the name the paper's bodies' requests use (orbit,
+#: sweep and simulate's ``speed`` is still the wheel's centre speed).
+Speed = ComSpeed
+
+
+@dataclass(frozen=True)
+class Period:
+    """How a horizontal lane is held: its lap time T [s] (registry
+    ``period``), the rate Omega = 2 pi / T (every tilt giving it)."""
+
+    period: object
+    branch: int = 0
+
+
+@dataclass(frozen=True)
+class SameLap:
+    """How a show's horizontal lane is held: the lap time of the rider
+    ``name`` of the same plan (resolved when that rider's lane is built)."""
+
+    name: str
 
 
 @dataclass(frozen=True)
@@ -82,10 +117,11 @@ class PaperBody:
 @dataclass(frozen=True)
 class Horizontal:
     """A steady horizontal orbit: where (by theta or height) and how (by
-    tilt or speed)."""
+    tilt, the contact's or the centre of mass's speed, the lap time, the
+    lap of another rider, the rate or the spin)."""
 
     at: Theta | Height
-    by: Tilt | Speed | Rate | Spin
+    by: Tilt | ContactSpeed | ComSpeed | Period | SameLap | Rate | Spin
 
     kind = "horizontal"
 

@@ -14,7 +14,7 @@ def test_ride_with_units_and_a_preset(run):
     res = run("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format", "csv")
     assert res.exit_code == 0
     (row,) = _rows(res.stdout)
-    assert row["status"] == "ok" and float(row["v_cm_km_h"]) == pytest.approx(40.0)
+    assert row["status"] == "ok" and float(row["v_contact_m_s"]) * 3.6 == pytest.approx(40.0)
     assert float(row["r_m"]) == pytest.approx(2.4384) and row["machine"] == "stunt125"
 
 
@@ -26,7 +26,8 @@ def test_the_riders_question_one_row_per_height(run):
     assert [round(float(r["height_m"]), 6) for r in rows] == [round(0.2 * i, 6) for i in range(13)]
     assert all(r["speeds_tried"] == "9" for r in rows)          # a count
     equator = rows[-1]
-    assert float(equator["speeds_ok"]) >= 1 and 30 <= float(equator["v_min_km_h"]) <= float(equator["v_max_km_h"])
+    assert float(equator["speeds_ok"]) >= 1
+    assert 30 / 3.6 <= float(equator["v_contact_min_m_s"]) <= float(equator["v_contact_max_m_s"]) <= 70 / 3.6
 
 
 def test_overrides_and_machine_file(run, tmp_path):
@@ -77,9 +78,11 @@ def test_vertical_loops(run):
 def test_ride_rows_echo_their_inputs_and_never_hold_inf(run):
     """As every table: a speed typed in km/h reads back as typed, theta and
     alpha as given, and "no limit" is an empty cell, not inf."""
-    text = run("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format", "csv").stdout
+    text = run("ride", "--theta", "90", "--com-speed", "40km/h", "--diameter", "16ft", "--format", "csv").stdout
     rows = _rows(text)
     assert rows and all(r["v_cm_km_h"] == "40.0" and r["theta_deg"] == "90.0" for r in rows)
+    contact = _rows(run("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format", "csv").stdout)
+    assert contact and all(r["v_contact_m_s"] == repr(40 / 3.6) for r in contact)
     assert all(r["mu_available"] == "" and r["max_g"] == "" for r in rows) and "inf" not in text
     tilted = _rows(run("ride", "--theta", "60.1", "--alpha", "10.3", "--format", "csv").stdout)
     assert (tilted[0]["theta_deg"], tilted[0]["alpha_deg"]) == ("60.1", "10.3")
@@ -108,9 +111,9 @@ def test_the_riders_table_groups_by_the_contact_point_asked_for(run):
 
 
 def test_the_riders_table_counts_why_speeds_fail(run):
-    rows = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed", "10:35:5km/h",
-                     "--mu", "1", "--max-g", "5", "--summary", "--format", "csv").stdout)
-    detail = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed",
+    rows = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--com-speed",
+                     "10:35:5km/h", "--mu", "1", "--max-g", "5", "--summary", "--format", "csv").stdout)
+    detail = _rows(run("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--com-speed",
                        "10:35:5km/h", "--mu", "1", "--max-g", "5", "--no-stability", "--format", "csv").stdout)
     for row, height in zip(rows, ("0.4", "2.4")):
         mine = [d for d in detail if d["height_m"] == height]
@@ -146,3 +149,27 @@ def test_mu_takes_a_range_like_the_other_axes(run):
     loops = _rows(run("ride", "--vertical", "--theta", "60", "--v-top", "30km/h", "--mu", "0.5", "--mu", "0.7",
                       "--machine", "benchmark-bicycle", "--format", "csv").stdout)
     assert [(r["mu_available"], r["status"]) for r in loops] == [("0.5", "slips"), ("0.7", "ok")]
+
+
+def test_the_speed_options_one_at_a_time_naming_the_one_typed(run):
+    res = run("ride", "--theta", "90", "--speed", "40km/h", "--com-speed", "30km/h", "--diameter", "16ft")
+    assert res.exit_code == 2 and "--com-speed" in res.output and "Traceback" not in res.output
+    res = run("ride", "--theta", "90", "--period", "3m", "--diameter", "16ft")
+    assert res.exit_code == 2 and "--period" in res.output and "a time in s or min" in res.output
+    (row,) = _rows(run("ride", "--height", "5ft", "--period", "1.3s", "--diameter", "16ft", "--format", "csv").stdout)
+    assert row["period_s"] == "1.3" and row["status"] == "ok"
+
+
+def test_the_centre_speed_keeps_its_meaning_in_orbit_and_simulate_under_either_name(run):
+    """orbit's and simulate's --speed is the centre's (ride's is the contact's):
+    --com-speed is the same there, and both at once is refused naming it."""
+    speed = run("orbit", "--theta", "60", "--speed", "7", "--format", "csv")
+    com = run("orbit", "--theta", "60", "--com-speed", "7", "--format", "csv")
+    assert speed.exit_code == com.exit_code == 0 and speed.stdout == com.stdout
+    assert _rows(speed.stdout)[0]["v_cm_m_s"] == "7.0"
+    both = run("sweep", "--theta", "60", "--speed", "7", "--com-speed", "7")
+    assert both.exit_code == 2 and "--com-speed" in both.output and "Traceback" not in both.output
+    for args in (("--speed", "25km/h"), ("--com-speed", "25km/h")):
+        res = run("simulate", "--machine", "stunt125", "--diameter", "16ft", "--theta", "100", *args, "--periods",
+                  "0.05", "--format", "csv", "--summary-only")
+        assert res.exit_code == 0 and float(_rows(res.stdout)[0]["speed_m_s"]) == pytest.approx(25 / 3.6)

@@ -14,7 +14,7 @@ def _rows(text):
 
 def test_a_lap_on_the_drum_with_its_arena_columns(run):
     res = run("ride", "--machine", "stunt125", "--surface", "cylinder", "--diameter", "32ft", "--wall-height",
-              "12ft", "--height", "5ft", "--speed", "40km/h", "--format", "csv")
+              "12ft", "--height", "5ft", "--com-speed", "40km/h", "--format", "csv")
     assert res.exit_code == 0
     (row,) = _rows(res.stdout)
     assert row["status"] == "ok" and row["surface"] == "cylinder" and row["theta_deg"] == ""

@@ -10,10 +10,10 @@ from rich.cells import cell_len
 
 from deathsphere.api.rides import RIDE_COLUMNS
 
-SUMMARY = ("ride", "--diameter", "16ft", "--height", "0:2.4:0.4m", "--speed", "10:35:5km/h", "--mu", "1",
+SUMMARY = ("ride", "--diameter", "16ft", "--height", "0:2.4:0.4m", "--com-speed", "10:35:5km/h", "--mu", "1",
            "--max-g", "5", "--summary")
 ONE = ("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft")
-MANY = ("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--speed", "10:35:5km/h", "--mu", "1",
+MANY = ("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--com-speed", "10:35:5km/h", "--mu", "1",
         "--max-g", "5")
 LOOP = ("ride", "--vertical", "--theta", "90", "--v-top", "30km/h", "--mu", "0.1", "--max-g", "2")
 LOOPS = ("ride", "--vertical", "--theta", "60", "--theta", "90", "--v-top", "20:40:10mph", "--machine",
@@ -37,12 +37,14 @@ def test_no_line_is_wider_than_the_terminal(run, args, width):
 def test_one_orbit_is_a_quantity_value_unit_table_with_whole_names(run):
     text = _screen(run, ONE, 80)
     assert "quantity" in text and "value" in text and "unit" in text and "source" in text
-    for words in ("speed of the centre of mass", "lean from the vertical", "μ required", "head clearance"):
+    for words in ("speed of the contact (speedometer)", "speed of the centre of mass", "lean from the vertical",
+                  "μ required", "head clearance"):
         assert words in text
     # never a column name cut to ten characters (mu_availab, head_clear)
     assert not any(name[:10] in text.split() for name in RIDE_COLUMNS if len(name) > 10)
-    line = next(ln for ln in text.splitlines() if "speed of the centre of mass" in ln)
-    assert " 40 " in line and "km/h" in line
+    # the speed typed (the contact's) comes back as typed, first
+    line = next(ln for ln in text.splitlines() if "speed of the" in ln)
+    assert "speed of the contact" in line and " 40 " in line and "km/h" in line
 
 
 def test_several_orbits_show_the_safety_columns_first_at_80(run):

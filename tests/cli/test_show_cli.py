@@ -335,7 +335,7 @@ def test_no_line_is_wider_than_the_terminal(run, plan_file, width, extra):
 
 def test_speeds_in_km_h_beside_m_s(run, plan_file):
     text = ANSI.sub("", _screen(run, ("show", plan_file, "--table", "riders"), 100))
-    # Ana rides at 32 km/h of her centre of mass: 8.89 m/s beside it
+    # Ana's speedometer reads 32 km/h (her contact's speed, as planned): 8.89 m/s beside it
     line = next(line for line in text.splitlines() if line.strip().startswith("Ana"))
     assert "32.0 (8.89)" in line
 
@@ -379,7 +379,7 @@ duration = 60
 name = "Ana"
 lane = "horizontal"
 height = "16ft"
-speed = "1m/s"
+com_speed = "1m/s"
 
 [[rider]]
 name = "Ben"
@@ -412,3 +412,11 @@ def test_a_fall_closer_than_the_plans_rule_is_a_conflict_not_clear(run, tmp_path
     screen = ANSI.sub("", _screen(run, ("show", str(plan), "--fail", "Ana@0.5443:0", "--table", "falls"), 100))
     (line,) = [ln for ln in screen.splitlines() if " Eve " in ln]
     assert "conflict" in line and "clear " not in line.replace("least clear", "")
+
+
+def test_a_contact_speed_where_the_contact_does_not_move_is_a_one_line_refusal(run, tmp_path):
+    plan = tmp_path / "top.toml"
+    plan.write_text(AT_THE_TOP.replace('com_speed = "1m/s"', 'speed = "1m/s"'), encoding="utf-8")
+    res = run("show", str(plan), "--format", "csv")
+    assert res.exit_code == 2 and "Traceback" not in res.output
+    assert "rider 'Ana': speed:" in res.stderr and "vertical axis" in res.stderr

@@ -66,7 +66,7 @@ def test_ride_heights_and_globe_in_ft_speeds_in_km_h(columns):
 @pytest.mark.parametrize("columns", WIDTHS)
 def test_one_ride_orbit_in_the_units_typed(columns):
     text = screen(("ride", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft"), columns)
-    assert_rows(text, r"speed of the centre of mass\s+40\s+km/h", r"the same in m/s\s+11\.111\s+m/s",
+    assert_rows(text, r"speed of the contact \(speedometer\)\s+40\s+km/h", r"the same in m/s\s+11\.111\s+m/s",
                 r"contact height above the floor\s+2\.4384\s+m", r"the same in ft\s+8\s+ft")
 
 

@@ -53,7 +53,7 @@ def test_the_head_of_eq_m2_is_rides_head_clearance():
 def test_the_lane_is_the_tilt_rides_table_would_choose(height, kmh):
     """Of ride's rows for the height and speed: the tilt closest to upright
     on the wall among the ok rows, else among those with an orbit."""
-    rows = list(deathsphere.ride(height=height, speed=kmh / 3.6, machine="stunt125", r=GLOBE.radius, mu=0.9,
+    rows = list(deathsphere.ride(height=height, com_speed=kmh / 3.6, machine="stunt125", r=GLOBE.radius, mu=0.9,
                                  max_g=8, stability=False))
     theta = GLOBE.theta(height)
     lane = horizontal_lanes([theta], [kmh / 3.6], GLOBE, G, machine_arrays(stunt125()), 0.9, 8.0)

@@ -16,8 +16,8 @@ def _act(*riders, **kw):
     return deathsphere.show({"globe": {"radius": R, "mu": 0.9, "max_g": 8}, "rider": list(riders)}, **kw)
 
 
-ANA = {"name": "Ana", "lane": "horizontal", "height": "3.2m", "speed": "30km/h", "phase": 20}
-CAL = {"name": "Cal", "lane": "horizontal", "height": "1.4m", "speed": "26km/h", "phase": 200}
+ANA = {"name": "Ana", "lane": "horizontal", "height": "3.2m", "com_speed": "30km/h", "phase": 20}
+CAL = {"name": "Cal", "lane": "horizontal", "height": "1.4m", "com_speed": "26km/h", "phase": 200}
 
 
 def test_a_stall_above_the_equator_falls_straight_down():

@@ -14,7 +14,7 @@ from deathsphere.act.plan import read_plan
 
 R = 16 * 0.3048 / 2
 PLAN = {"globe": {"radius": R, "mu": 0.9, "max_g": 8},
-        "rider": [{"name": "Ana", "lane": "horizontal", "height": "2m", "speed": "30km/h", "phase": 30,
+        "rider": [{"name": "Ana", "lane": "horizontal", "height": "2m", "com_speed": "30km/h", "phase": 30,
                    "direction": "cw"},
                   {"name": "Ben", "lane": "vertical", "azimuth": 60, "v_top": "6.5m/s", "phase": 100}]}
 
@@ -42,7 +42,7 @@ def test_the_loop_follows_the_energy_equation():
 
 def test_the_horizontal_lane_is_rides_orbit():
     ana, _ = build_lanes(read_plan(PLAN))
-    rows = deathsphere.ride(height=2.0, speed=30 / 3.6, machine="stunt125", r=R, mu=0.9, max_g=8, stability=False)
+    rows = deathsphere.ride(height=2.0, com_speed=30 / 3.6, machine="stunt125", r=R, mu=0.9, max_g=8, stability=False)
     mine = [r for r in rows if r["alpha_deg"] == pytest.approx(math.degrees(ana.alpha), abs=1e-12)]
     assert len(mine) == 1 and mine[0]["status"] == "ok"
     upright = math.degrees(ana.theta) - 90
@@ -60,14 +60,14 @@ def test_the_horizontal_lane_is_rides_orbit():
 
 def test_lanes_hold_no_globe_and_no_gravity_and_take_every_machine_at_once():
     plan = read_plan({"globe": {"radius": R, "mu": 0.9, "max_g": 8}, "rider": [
-        {"name": "A", "lane": "horizontal", "height": "2.0m", "speed": "30km/h", "machine": "stunt125"},
-        {"name": "B", "lane": "horizontal", "height": "1.2m", "speed": "20km/h", "machine": "benchmark-bicycle"},
+        {"name": "A", "lane": "horizontal", "height": "2.0m", "com_speed": "30km/h", "machine": "stunt125"},
+        {"name": "B", "lane": "horizontal", "height": "1.2m", "com_speed": "20km/h", "machine": "benchmark-bicycle"},
         {"name": "C", "lane": "vertical", "v_top": "6.5m/s", "machine": "stunt125"}]})
     lanes = build_lanes(plan)
     for lane in lanes:
         assert not hasattr(lane, "r") and not hasattr(lane, "g")
     # each horizontal lane is the one ride gives that machine
     for lane, height, kmh in zip(lanes[:2], (2.0, 1.2), (30, 20)):
-        rows = deathsphere.ride(height=height, speed=kmh / 3.6, machine=lane.machine, r=R, mu=0.9, max_g=8,
+        rows = deathsphere.ride(height=height, com_speed=kmh / 3.6, machine=lane.machine, r=R, mu=0.9, max_g=8,
                                 stability=False)
         assert any(r["alpha_deg"] == lane.orbit["alpha_deg"] and r["period_s"] == lane.period_s for r in rows)

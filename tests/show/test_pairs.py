@@ -18,14 +18,14 @@ def _plan(*riders, **globe):
 
 
 def _horizontal(name, phase, height="2m", speed="30km/h", direction="ccw"):
-    return {"name": name, "lane": "horizontal", "height": height, "speed": speed, "phase": phase,
+    return {"name": name, "lane": "horizontal", "height": height, "com_speed": speed, "phase": phase,
             "direction": direction}
 
 
 @pytest.mark.parametrize("delta", [25.0, 60.0, 180.0])
 def test_two_riders_one_lane_phases_apart_closed_form(delta):
     act = deathsphere.show(_plan(_horizontal("A", 10.0), _horizontal("B", 10.0 + delta)))
-    row = deathsphere.ride(height=2.0, speed=30 / 3.6, machine="stunt125", r=R, mu=0.9, max_g=8,
+    row = deathsphere.ride(height=2.0, com_speed=30 / 3.6, machine="stunt125", r=R, mu=0.9, max_g=8,
                            stability=False)
     lane = act.lanes[0]
     alpha = lane.alpha

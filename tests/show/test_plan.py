@@ -9,7 +9,7 @@ import deathsphere
 from deathsphere.act.plan import EXAMPLE_PLAN, read_plan
 
 BASE = {"globe": {"diameter": "16ft", "mu": 0.9, "max_g": 8, "min_clearance": "15cm"},
-        "rider": [{"name": "Ana", "machine": "stunt125", "lane": "horizontal", "height": "2.0m", "speed": "32km/h",
+        "rider": [{"name": "Ana", "machine": "stunt125", "lane": "horizontal", "height": "2.0m", "com_speed": "32km/h",
                    "direction": "ccw", "phase": 0},
                   {"name": "Ben", "machine": "stunt125", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s",
                    "phase": 180}]}
@@ -26,7 +26,7 @@ def test_units_are_read_as_on_the_command_line():
     assert plan.globe.r == pytest.approx(16 * 0.3048 / 2)
     assert plan.globe.min_clearance == pytest.approx(0.15)
     ana, ben = plan.riders
-    assert ana.speed == pytest.approx(32 / 3.6)
+    assert ana.com_speed == pytest.approx(32 / 3.6) and math.isnan(ana.speed)
     # height 2.0 m of the contact above the floor: cos(theta) = h / r - 1
     assert ana.theta_deg == pytest.approx(math.degrees(math.acos(2.0 / (16 * 0.3048 / 2) - 1)), rel=1e-12)
     assert ben.v_top == 6.5 and ben.azimuth_deg == 90 and ben.phase_deg == 180
@@ -76,10 +76,10 @@ def test_a_machine_without_width_is_refused(tmp_path):
 
 
 def test_the_act_duration_and_the_results_arguments_are_checked_in_one_line():
-    incommensurate = _with(lambda p: p["rider"][0].update(speed="31km/h"))
+    incommensurate = _with(lambda p: p["rider"][0].update(com_speed="31km/h"))
     with pytest.raises(deathsphere.ParameterError, match="duration"):
         deathsphere.show(incommensurate)
-    act = deathsphere.show(_with(lambda p: (p["rider"][0].update(speed="31km/h"), p["globe"].update(duration=4))))
+    act = deathsphere.show(_with(lambda p: (p["rider"][0].update(com_speed="31km/h"), p["globe"].update(duration=4))))
     assert act.duration_s == 4 and not act.commensurate
     assert deathsphere.show(incommensurate, duration=2.5).duration_s == 2.5
     for call, name in ((lambda: act.fall("Zed", 0.1), "rider"), (lambda: act.fall("Ana", -1.0), "t"),
