@@ -31,7 +31,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from deathsphere.act.envelope import segment_distance
+from deathsphere.act.envelope import overlap_clearance
 from deathsphere.act.lipschitz import refine_intervals
 from deathsphere.act.pairs import SAME_RATE_RTOL, TOLERANCE_M, is_geometric
 
@@ -70,8 +70,8 @@ def phase_clearances(lane, others, duration: float, steps: int = PHASE_STEPS):
         for start in range(0, times.size, SLICE):
             j = np.arange(start, min(start + SLICE, times.size))
             idx = (j[None, :] + k[:, None]) % steps                 # (steps, slice): the loop shifted by k
-            d, _, _ = segment_distance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j])
-            least = np.minimum(least, d.min(axis=1) - radii)
+            c = overlap_clearance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j], radii)
+            least = np.minimum(least, c.min(axis=1))
     return phases, least
 
 
@@ -165,7 +165,7 @@ def drift_time(a, b, min_clearance: float, error: float = DRIFT_ERROR) -> float:
     soonest = math.inf
     for clock in (1.0 + error, 1.0 - error):
         def gap(t, clock=clock):
-            return segment_distance(*a.ends(t, clock), *b.ends(t))[0] - radii
+            return overlap_clearance(*a.ends(t, clock), *b.ends(t), radii)
         lipschitz = clock * a.speed_bound() + b.speed_bound()
         soonest = min(soonest, first_below(gap, 0.0, min(horizon, soonest), lipschitz, min_clearance))
     return soonest
