@@ -115,6 +115,15 @@ def _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, ou
         raise click.UsageError(f"--output {output} draws the act; --table chooses a table to write, not both")
     if ext in VIEWS and monte_carlo is not None:
         raise click.UsageError(f"--output {output} draws the act (with --fail, the fall); not with --monte-carlo")
+    if ext in VIEWS:
+        # a rider's track draws one fall: two of one rider are refused, not one of them dropped
+        first = {}
+        for name, _, _, typed in fails:
+            if name in first:
+                raise click.UsageError(f"--output {output} draws one fall per rider: --fail {first[name]} and "
+                                       f"--fail {typed} are both {name}'s (draw them one at a time, or write "
+                                       "the falls table)")
+            first[name] = typed
 
 
 def _view(name: str, **kwargs):
@@ -176,8 +185,8 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
 @single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
         help="Draw the act in 3-D: .html (interactive, self-contained), .gif or .mp4 (plot extra; .mp4 "
              "ffmpeg), every rider's envelope moving with the clock, the least-clearance pair marked, with "
-             "--fail the fall's path.  Or write the table to .csv/.json/.ndjson/.parquet.  Nothing is "
-             "printed on stdout then.")
+             "--fail each fall's path (one fall per rider).  Or write the table to "
+             ".csv/.json/.ndjson/.parquet.  Nothing is printed on stdout then.")
 @output_options(FORMATS)
 @units_option()
 def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed, scheduler, output, fmt, units):
