@@ -19,7 +19,8 @@ __all__ = ["show", "ShowResult", "EXAMPLE_PLAN", "RIDER_COLUMNS", "PAIR_COLUMNS"
            "FALLS_SUMMARY_COLUMNS"]
 
 #: The columns of ``riders``, in order.  ``theta_deg`` and ``phi0_deg``
-#: are the contact's at t = 0 (a horizontal lane's theta throughout); a
+#: are the contact's at t = 0 (a horizontal lane's theta throughout; a
+#: vertical lane's from its phase and azimuth as typed); a
 #: vertical lane has no alpha, leans 0 (upright in its loop's plane), its
 #: v_cm the centre of mass's speed at the top and its load_g the bottom's,
 #: and fills ``v_top_m_s`` .. ``load_bottom_g``; the speed band is of the
@@ -280,13 +281,41 @@ def _summary_table(result: ShowResult, res: dict, rider) -> Table:
                               np.int64 if c in ("falls", "hits") else float) for c in FALLS_SUMMARY_COLUMNS})
 
 
+def _decimal(x: float):
+    """x as the decimal its shortest text reads (282.3, not 282.29999...)."""
+    from decimal import Decimal
+
+    return Decimal(repr(float(x)))
+
+
+def loop_start_angles(phase_deg: float, azimuth_deg: float) -> tuple[float, float]:
+    """(theta, phi) [deg] of a vertical lane's contact at t = 0, from its
+    phase psi (from the top) and its plane's azimuth, in decimal arithmetic
+    on the values as typed, so that they echo them: psi 178 is theta 178
+    (not 177.99999999999986 through the contact's coordinates), 282.3 is
+    theta 77.7 on the far side (phi = azimuth + 180).  At the top or the
+    bottom, where phi is not defined, phi is the loop's azimuth."""
+    psi = _decimal(phase_deg) % 360              # a Decimal's remainder keeps the dividend's sign
+    psi = psi + 360 if psi < 0 else psi
+    azimuth = _decimal(azimuth_deg)
+    if psi <= 180:
+        theta, phi = psi, azimuth
+    else:
+        theta, phi = 360 - psi, azimuth + 180
+    phi = phi % 360
+    return float(theta), float(phi + 360 if phi < 0 else phi)
+
+
 def _rider_row(lane: Lane, rider, band, ground) -> dict:
     """The riders table's row of one lane (its orbit as ``ride`` reports it,
     the speed band)."""
     from deathsphere.act.pairs import contact_angles
 
     orbit, nan = lane.orbit, math.nan
-    theta0, phi0 = contact_angles(lane, 0.0, ground)
+    if lane.kind == "vertical":
+        theta0, phi0 = loop_start_angles(rider.phase_deg, rider.azimuth_deg)
+    else:
+        theta0, phi0 = contact_angles(lane, 0.0, ground)
     out = {"name": lane.name, "lane": lane.kind, "theta_deg": theta0, "phi0_deg": phi0, "machine": lane.machine.name,
            "width_m": lane.width_m, "status": lane.status, "reason": lane.reason,
            "mu_required": orbit["mu_required"], "head_clearance_m": orbit["head_clearance"], "period_s": lane.period_s}

@@ -89,3 +89,17 @@ def test_phase_auto_is_at_least_as_good_as_every_phase_tried():
     chosen = auto.plan.riders[1].phase_deg
     assert any(a <= chosen <= b if a <= b else (chosen >= a or chosen <= b) for a, b in auto.phase_windows["V"])
     assert best >= 0.15
+
+
+@pytest.mark.parametrize("phase, azimuth, theta, phi", [(178, 90, 178.0, 90.0), (282, 0, 78.0, 180.0),
+                                                        (282.3, 30, 77.7, 210.0), (0, 45, 0.0, 45.0),
+                                                        (180, 300.5, 180.0, 300.5), (-90, 200, 90.0, 20.0)])
+def test_a_vertical_riders_theta_and_phi_echo_his_phase_as_typed(phase, azimuth, theta, phi):
+    # the contact at t = 0 is r (sin psi e + cos psi z): theta = psi on the near side of the loop
+    # (phi its azimuth), 360 - psi on the far side (phi + 180); the text typed, not its float's residue
+    act = deathsphere.show({"globe": {"diameter": "16ft", "mu": 0.9, "max_g": 8}, "rider": [
+        {"name": "V", "lane": "vertical", "azimuth": azimuth, "v_top": "6.5m/s", "phase": phase}]})
+    row = act.riders[0]
+    assert (row["theta_deg"], row["phi0_deg"]) == (theta, phi)
+    contact = act.positions([0.0])["V"]["contact"][:, 0]
+    assert np.degrees(np.arccos(contact[2] / np.linalg.norm(contact))) == pytest.approx(theta, abs=1e-9)
