@@ -56,22 +56,29 @@ def phase_clearances(lane, others, duration: float, steps: int = PHASE_STEPS):
     """(phases [deg] (steps,), least sampled clearance [m] (steps,)) of the
     vertical ``lane`` against ``others`` over [0, duration] for each phase
     of the lap's time grid (module docstring)."""
+    phases, each = phase_clearances_each(lane, others, duration, steps)
+    return phases, each.min(axis=0)
+
+
+def phase_clearances_each(lane, others, duration: float, steps: int = PHASE_STEPS):
+    """(phases [deg] (steps,), least sampled clearance [m] (len(others),
+    steps)): :func:`phase_clearances` against each of ``others`` apart."""
     period = lane.period_s
     dt = period / steps
     free = replace(lane, phase=0.0)
     k = np.arange(steps)
     p0, p1 = _segments(free, k * dt)
     phases = np.degrees(free.kinematics(k * dt)["psi"]) % 360.0
-    least = np.full(steps, np.inf)
+    least = np.full((len(others), steps), np.inf)
     times = np.arange(int(math.ceil(duration / dt)) + 1) * dt
-    for other in others:
+    for o, other in enumerate(others):
         q0, q1 = _segments(other, times)
         radii = 0.5 * (lane.width_m + other.width_m)
         for start in range(0, times.size, SLICE):
             j = np.arange(start, min(start + SLICE, times.size))
             idx = (j[None, :] + k[:, None]) % steps                 # (steps, slice): the loop shifted by k
             c = overlap_clearance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j], radii)
-            least = np.minimum(least, c.min(axis=1))
+            least[o] = np.minimum(least[o], c.min(axis=1))
     return phases, least
 
 
@@ -97,25 +104,32 @@ def _windows(phases, safe) -> list[tuple[float, float]]:
 
 
 def auto_phases(lanes, duration: float, min_clearance: float):
-    """({name: phase [deg]}, {name: windows}) for every vertical lane, in
-    plan order, each against the horizontal lanes and the vertical lanes
-    timed before it (module docstring)."""
+    """({name: phase [deg]}, {name: windows}, {name: riders in the way})
+    for every vertical lane, in plan order, each against the horizontal
+    lanes and the vertical lanes timed before it (module docstring).  The
+    riders in the way of a lane with no safe phase are those still closer
+    than min_clearance at the phase taken (the best there is), in plan
+    order; none when it has a window."""
     lanes = list(lanes)
-    phases, windows = {}, {}
+    phases, windows, in_the_way = {}, {}, {}
     for i, lane in enumerate(lanes):
         if lane.kind != "vertical":
             continue
         others = [o for j, o in enumerate(lanes) if j != i and (o.kind == "horizontal" or j < i)]
+        in_the_way[lane.name] = []
         if not others:
             windows[lane.name] = [(0.0, 360.0)]
             phases[lane.name] = math.degrees(lane.phase) % 360.0
             continue
-        cand, least = phase_clearances(lane, others, duration)
+        cand, each = phase_clearances_each(lane, others, duration)
+        least = each.min(axis=0)
         best = int(np.argmax(least))
         phases[lane.name] = float(cand[best])
         windows[lane.name] = _windows(cand, least >= min_clearance)
+        if not windows[lane.name]:
+            in_the_way[lane.name] = [o.name for o, c in zip(others, each[:, best]) if c < min_clearance]
         lanes[i] = replace(lane, phase=math.radians(cand[best]))
-    return phases, windows
+    return phases, windows, in_the_way
 
 
 def first_below(f, lo: float, hi: float, lipschitz: float, level: float, tol: float = TOLERANCE_M,

@@ -29,7 +29,16 @@ __all__ = ["show", "ShowResult", "EXAMPLE_PLAN", "RIDER_COLUMNS", "PAIR_COLUMNS"
 RIDER_COLUMNS = ("name", "lane", "theta_deg", "phi0_deg", "alpha_deg", "lean_deg", "v_cm_m_s", "v_cm_km_h",
                  "v_contact_m_s", "period_s", "load_g", "mu_required", "head_clearance_m", "status", "reason",
                  "speed_low_m_s", "speed_high_m_s", "margin_low_pct", "margin_high_pct", "v_top_m_s",
-                 "v_top_min_m_s", "v_bottom_m_s", "load_bottom_g", "machine", "width_m")
+                 "v_top_min_m_s", "v_bottom_m_s", "load_bottom_g", "machine", "width_m", "phase_deg", "phase_from",
+                 "window_lo_deg", "window_hi_deg", "safe_phases_deg", "in_the_way")
+#: What the appended columns of ``riders`` say of a rider's phase:
+#: ``phase_deg`` the phase ridden [deg] (a horizontal lane's azimuth at t =
+#: 0, a vertical lane's psi from the top), ``phase_from`` 'plan' or 'auto'
+#: (chosen by phase='auto'); for a phase chosen, ``window_lo_deg`` ..
+#: ``window_hi_deg`` the run of safe phases holding it (lo > hi: across
+#: 360), ``safe_phases_deg`` every run as text ('170-186 290-300'; 'none'),
+#: and ``in_the_way`` when there is none the riders still closer than
+#: min_clearance at the phase taken, ';' between names.
 #: The columns of ``pairs``, in order; ``basis`` says how the least
 #: clearance was found ('act': over the act's times; 'geometric': two
 #: horizontal lanes of different rates sweep every relative phase, so both
@@ -53,7 +62,8 @@ class ShowResult:
     """An act planned: ``riders`` and ``pairs`` tables, the act's
     ``duration_s``, whether the riders' periods are ``commensurate``, each
     vertical rider's ``phase_windows`` (name -> list of (from, to) [deg] of
-    safe phases; filled with phase='auto'), the checked ``plan`` and the
+    safe phases; filled with phase='auto') and, for one with none, the
+    riders ``in_the_way`` (name -> [names]), the checked ``plan`` and the
     ``lanes``."""
 
     plan: Plan
@@ -63,6 +73,7 @@ class ShowResult:
     duration_s: float
     commensurate: bool
     phase_windows: dict = field(default_factory=dict)
+    in_the_way: dict = field(default_factory=dict)
 
     @property
     def infeasible(self) -> dict:
@@ -210,7 +221,7 @@ def _crosses(victim: Lane, swing_height: float) -> bool:
 
 
 _TEXT = {"name", "lane", "status", "reason", "machine", "rider_a", "rider_b", "verdict", "basis", "rider", "outcome",
-         "victim"}
+         "victim", "phase_from", "safe_phases_deg", "in_the_way"}
 
 
 def _rows_table(rows: list[dict], columns) -> Table:
@@ -338,14 +349,39 @@ def _rider_row(lane: Lane, rider, band, ground) -> dict:
     return out
 
 
-def riders_table(plan: Plan, lanes: list[Lane]) -> Table:
-    """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per rider in the plan's order."""
+def _window_holding(phase: float, windows) -> tuple[float, float]:
+    """The run of safe phases (lo, hi) [deg] holding ``phase`` (lo > hi:
+    across 360), NaN when none does."""
+    for lo, hi in windows:
+        if (lo <= phase <= hi) if lo <= hi else (phase >= lo or phase <= hi):
+            return float(lo), float(hi)
+    return math.nan, math.nan
+
+
+def _phase_columns(rider, windows: dict, in_the_way: dict) -> dict:
+    """The riders table's phase columns of one rider (:data:`RIDER_COLUMNS`)."""
+    name, phase = rider.name, rider.phase_deg
+    if name not in windows:
+        return {"phase_deg": phase, "phase_from": "plan", "window_lo_deg": math.nan, "window_hi_deg": math.nan,
+                "safe_phases_deg": "", "in_the_way": ""}
+    runs = windows[name]
+    lo, hi = _window_holding(phase, runs)
+    return {"phase_deg": phase, "phase_from": "auto", "window_lo_deg": lo, "window_hi_deg": hi,
+            "safe_phases_deg": " ".join(f"{a:.6g}-{b:.6g}" for a, b in runs) or "none",
+            "in_the_way": ";".join(in_the_way.get(name, []))}
+
+
+def riders_table(plan: Plan, lanes: list[Lane], windows: dict | None = None, in_the_way: dict | None = None) -> Table:
+    """The ``riders`` table (columns :data:`RIDER_COLUMNS`), one row per
+    rider in the plan's order; ``windows`` and ``in_the_way`` those of
+    phase='auto' (by name) for the riders whose phase it chose."""
     from deathsphere.act.margins import speed_bands
 
     planned = [r.speed if r.lane == "horizontal" else r.v_top for r in plan.riders]
     bands = speed_bands(lanes, plan.globe, planned)
     ground = plan.globe.ground
-    rows = [_rider_row(lane, rider, band, ground) for lane, rider, band in zip(lanes, plan.riders, bands)]
+    rows = [{**_rider_row(lane, rider, band, ground), **_phase_columns(rider, windows or {}, in_the_way or {})}
+            for lane, rider, band in zip(lanes, plan.riders, bands)]
     return _rows_table(rows, RIDER_COLUMNS)
 
 
@@ -403,12 +439,12 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
     except ValueError as exc:
         raise ParameterError(str(exc), "duration") from None
-    windows = {}
+    windows, in_the_way = {}, {}
     if phase == "auto":
-        phases, windows = auto_phases(lanes, span, plan.globe.min_clearance)
+        phases, windows, in_the_way = auto_phases(lanes, span, plan.globe.min_clearance)
         plan = plan.with_phases(phases)
         lanes = build_lanes(plan)
-    riders = riders_table(plan, lanes)
+    riders = riders_table(plan, lanes, windows, in_the_way)
     pairs = pairs_table(lanes, span, plan.globe.min_clearance, ground=plan.globe.ground)
     return ShowResult(plan=plan, lanes=lanes, riders=riders, pairs=pairs, duration_s=span,
-                      commensurate=commensurate, phase_windows=windows)
+                      commensurate=commensurate, phase_windows=windows, in_the_way=in_the_way)

@@ -103,3 +103,42 @@ def test_a_vertical_riders_theta_and_phi_echo_his_phase_as_typed(phase, azimuth,
     assert (row["theta_deg"], row["phi0_deg"]) == (theta, phi)
     contact = act.positions([0.0])["V"]["contact"][:, 0]
     assert np.degrees(np.arccos(contact[2] / np.linalg.norm(contact))) == pytest.approx(theta, abs=1e-9)
+
+
+def test_phase_auto_writes_its_phase_and_window_in_the_riders_table():
+    looper = {"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s", "phase": 0}
+    rider = _h("A", 0, height="2.0m", speed="28.86km/h")
+    auto = _act(rider, looper, phase="auto")
+    a, v = auto.riders[0], auto.riders[1]
+    # a row reads an empty text and an undefined number as None
+    assert (a["phase_from"], a["phase_deg"], a["safe_phases_deg"], a["window_lo_deg"]) == ("plan", 0.0, None, None)
+    assert v["phase_from"] == "auto"
+    assert v["phase_deg"] == auto.plan.riders[1].phase_deg
+    # the phase ridden is the lane's: the looper's contact at t = 0 is psi = phase from the top
+    contact = auto.positions([0.0])["V"]["contact"][:, 0]
+    assert math.degrees(math.acos(contact[2] / np.linalg.norm(contact))) == pytest.approx(
+        min(v["phase_deg"], 360 - v["phase_deg"]), abs=1e-6)
+    lo, hi = v["window_lo_deg"], v["window_hi_deg"]
+    assert (lo, hi) in auto.phase_windows["V"]
+    assert (lo <= v["phase_deg"] <= hi) if lo <= hi else (v["phase_deg"] >= lo or v["phase_deg"] <= hi)
+    assert f"{lo:.6g}-{hi:.6g}" in v["safe_phases_deg"].split()
+    assert v["in_the_way"] is None
+    plain = _act(rider, looper)
+    assert plain.riders[1]["phase_from"] == "plan" and plain.riders[1]["phase_deg"] == 0.0
+
+
+def test_an_empty_window_names_the_riders_in_the_way(tmp_path):
+    from deathsphere.api.shows import EXAMPLE_PLAN
+
+    path = tmp_path / "act.toml"
+    path.write_text(EXAMPLE_PLAN, encoding="utf-8")
+    auto = deathsphere.show(str(path), phase="auto")
+    rule = auto.plan.globe.min_clearance
+    rows = {r["name"]: r for r in (auto.riders[i] for i in range(len(auto.riders)))}
+    pairs = {(p["rider_a"], p["rider_b"]): p["min_clearance_m"] for p in (auto.pairs[i] for i in range(len(auto.pairs)))}
+    for looper, earlier in (("Ben", ["Ana", "Cal", "Dee"]), ("Eve", ["Ana", "Cal", "Dee", "Ben"])):
+        row = rows[looper]
+        assert row["safe_phases_deg"] == "none" and row["window_lo_deg"] is None
+        # the pairs, found to 1 mm at the phase taken, say who is closer than the rule
+        closer = [o for o in earlier if pairs.get((o, looper), pairs.get((looper, o))) < rule]
+        assert closer and row["in_the_way"] == ";".join(closer)
