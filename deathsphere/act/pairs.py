@@ -231,6 +231,22 @@ def contact_angles(lane, t: float, ground) -> tuple[float, float]:
     return theta, math.degrees(math.atan2(p[1], p[0])) % 360.0
 
 
+def where_closest(a, b, t: float, ground) -> dict:
+    """Where the pair (a, b) is at time t on the globe ``ground``: the
+    heights [m] above the floor of both contacts ('height_a', 'height_b')
+    and of the point of closest approach, midway between the closest points
+    of the two envelopes' axes ('height', with its azimuth 'phi' [deg],
+    0..360)."""
+    from deathsphere.act.envelope import segment_distance
+
+    (p0, p1), (q0, q1) = a.ends(np.array([t])), b.ends(np.array([t]))
+    _, s, u = segment_distance(p0, p1, q0, q1)
+    mid = 0.5 * (p0 + s * (p1 - p0) + q0 + u * (q1 - q0))[:, 0]
+    r = float(ground.radius)
+    return {"height_a": float(p0[2, 0]) + r, "height_b": float(q0[2, 0]) + r, "height": float(mid[2]) + r,
+            "phi": math.degrees(math.atan2(mid[1], mid[0])) % 360.0}
+
+
 def verdict(c: float, min_clearance: float) -> str:
     """'collision' below zero, 'conflict' below the crew's least clearance, else 'clear'."""
     return "collision" if c < 0 else "conflict" if c < min_clearance else "clear"

@@ -44,14 +44,23 @@ RIDER_COLUMNS = ("name", "lane", "theta_deg", "phi0_deg", "alpha_deg", "lean_deg
 #: horizontal lanes of different rates sweep every relative phase, so both
 #: riders in one meridian plane).
 PAIR_COLUMNS = ("rider_a", "rider_b", "min_clearance_m", "t_s", "theta_a_deg", "phi_a_deg", "theta_b_deg",
-                "phi_b_deg", "verdict", "drift_time_s", "basis")
+                "phi_b_deg", "verdict", "drift_time_s", "basis", "height_a_m", "height_b_m", "closest_height_m",
+                "closest_phi_deg")
+#: ``height_a_m`` and ``height_b_m`` are the contacts' heights above the
+#: floor at t_s, ``closest_height_m`` and ``closest_phi_deg`` those of the
+#: point of closest approach (midway between the closest points of the two
+#: envelopes' axes).
 #: The columns of ``fall``, in order: a looper who swings reaches
 #: ``swing_height_m`` (his contact's height above the floor at the swing's
 #: highest point) and ``crosses_lane`` says whether the victim's lane meets
 #: the arc he swings on (a horizontal lane no higher, every loop).
 FALL_COLUMNS = ("rider", "t_fail_s", "speed_fraction", "outcome", "t_contact_lost_s", "theta_lost_deg",
                 "phi_lost_deg", "t_land_s", "theta_land_deg", "phi_land_deg", "fall_time_s", "impact_speed_m_s",
-                "victim", "min_clearance_m", "t_min_s", "hit", "swing_height_m", "crosses_lane")
+                "victim", "min_clearance_m", "t_min_s", "hit", "swing_height_m", "crosses_lane", "height_lost_m",
+                "height_land_m")
+#: ``height_lost_m`` and ``height_land_m``: the heights above the floor of
+#: the contact where it is lost and of the landing point (empty where he
+#: does not fall).
 #: The columns of the summary of ``falls``.
 FALLS_SUMMARY_COLUMNS = ("rider", "victim", "falls", "hits", "hit_fraction", "impact_speed_max_m_s")
 PHASES = ("plan", "auto")
@@ -113,7 +122,8 @@ class ShowResult:
         t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
         k = names.index(rider)
-        res = simulate_falls(self.lanes, self.plan.globe, [k], [t], [speed_fraction])
+        res = _typed_heights(simulate_falls(self.lanes, self.plan.globe, [k], [t], [speed_fraction]),
+                             self.plan, np.array([k]))
         base = _fall_base(res, 0, self.lanes[k].name, t, speed_fraction)
         rows = []
         for j, victim in enumerate(self.lanes):
@@ -163,12 +173,22 @@ class ShowResult:
         # (n,) and (3, n) arrays join along the falls, (n, riders) ones along their rows
         res = {key: np.concatenate([p[key] for p in parts], axis=0 if key in ("clearance", "t_min") else -1)
                for key in parts[0]}
+        res = _typed_heights(res, self.plan, rider)
         return _outcomes_table(self, res, rider, t, fraction), _summary_table(self, res, rider)
 
 
 #: The most falls one Monte Carlo draws, and how many are evaluated at once.
 MAX_FALLS = 10_000_000
 FALLS_CHUNK = 4096
+
+
+def _typed_heights(res: dict, plan: Plan, rider) -> dict:
+    """The falls' ``height_lost`` of riders on horizontal lanes as their
+    heights were typed (contact is lost on the lane)."""
+    typed = np.array(lane_heights(plan))[np.asarray(rider)]
+    lost = np.isfinite(res["height_lost"]) & np.isfinite(typed)
+    res["height_lost"] = np.where(lost, typed, res["height_lost"])
+    return res
 
 
 def _duration(value) -> float:
@@ -205,7 +225,8 @@ def _fall_base(res: dict, i: int, name: str, t: float, fraction: float) -> dict:
                 ("t_contact_lost_s", "t_lost"), ("theta_lost_deg", "theta_lost"), ("phi_lost_deg", "phi_lost"),
                 ("t_land_s", "t_land"), ("theta_land_deg", "theta_land"), ("phi_land_deg", "phi_land"),
                 ("fall_time_s", "fall_time"), ("impact_speed_m_s", "impact_speed"),
-                ("swing_height_m", "swing_height"))}}
+                ("swing_height_m", "swing_height"), ("height_lost_m", "height_lost"),
+                ("height_land_m", "height_land"))}}
 
 
 def _crosses(victim: Lane, swing_height: float) -> bool:
@@ -246,7 +267,8 @@ def _outcomes_table(result: ShowResult, res: dict, rider, t, fraction) -> Table:
             "fall_time_s": res["fall_time"], "impact_speed_m_s": res["impact_speed"],
             "victim": np.where(flying, names[closest], ""), "min_clearance_m": least,
             "t_min_s": np.where(flying, res["t_min"][rows, closest], np.nan), "hit": flying & (least < 0),
-            "swing_height_m": res["swing_height"],
+            "swing_height_m": res["swing_height"], "height_lost_m": res["height_lost"],
+            "height_land_m": res["height_land"],
             "crosses_lane": _crosses_any(result.lanes, rider, res["swing_height"])}
     return Table({c: np.asarray(cols[c], dtype=object if c in _TEXT else None) for c in FALL_COLUMNS})
 
@@ -385,13 +407,32 @@ def riders_table(plan: Plan, lanes: list[Lane], windows: dict | None = None, in_
     return _rows_table(rows, RIDER_COLUMNS)
 
 
+def lane_heights(plan: Plan) -> list[float]:
+    """Each rider's contact height above the floor [m] on a horizontal lane,
+    as typed when the plan gives it (else from his theta); NaN on a
+    vertical lane (his height changes)."""
+    from deathsphere import requests
+
+    out = []
+    for rider in plan.riders:
+        at = getattr(rider.request.lane, "at", None)
+        if rider.lane != "horizontal":
+            out.append(math.nan)
+        elif isinstance(at, requests.Height):
+            out.append(float(at.height))
+        else:
+            out.append(float(plan.globe.ground.height(math.radians(rider.theta_deg))))
+    return out
+
+
 def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift: bool = True, *,
-                ground) -> Table:
+                ground, heights=None) -> Table:
     """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
     b in the plan), its least clearance over the act, when and where, the
-    verdict and the drift time (NaN: never); ``ground`` the globe (its
-    contact angles)."""
-    from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict
+    verdict and the drift time (NaN: never), the heights where it happens;
+    ``ground`` the globe (its contact angles), ``heights`` the horizontal
+    lanes' heights as typed (:func:`lane_heights`; NaN: from the contact)."""
+    from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict, where_closest
     from deathsphere.act.timing import drift_time
 
     over_time = act_pairs(lanes)
@@ -404,9 +445,15 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
             (ta, pa), (tb, pb) = contact_angles(a, t, ground), contact_angles(b, t, ground)
             v = verdict(c, min_clearance)
             dt = drift_time(a, b, min_clearance) if drift and v == "clear" else math.nan
+            where = where_closest(a, b, t, ground)
+            for key, k in (("height_a", i), ("height_b", j)):
+                if heights is not None and math.isfinite(heights[k]):
+                    where[key] = heights[k]           # a horizontal lane's contact stays at its height, as typed
             rows.append({"rider_a": a.name, "rider_b": b.name, "min_clearance_m": c, "t_s": t, "theta_a_deg": ta,
                          "phi_a_deg": pa, "theta_b_deg": tb, "phi_b_deg": pb, "verdict": v,
-                         "drift_time_s": dt if math.isfinite(dt) else math.nan, "basis": basis})
+                         "drift_time_s": dt if math.isfinite(dt) else math.nan, "basis": basis,
+                         "height_a_m": where["height_a"], "height_b_m": where["height_b"],
+                         "closest_height_m": where["height"], "closest_phi_deg": where["phi"]})
     return _rows_table(rows, PAIR_COLUMNS)
 
 
@@ -445,6 +492,6 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         plan = plan.with_phases(phases)
         lanes = build_lanes(plan)
     riders = riders_table(plan, lanes, windows, in_the_way)
-    pairs = pairs_table(lanes, span, plan.globe.min_clearance, ground=plan.globe.ground)
+    pairs = pairs_table(lanes, span, plan.globe.min_clearance, ground=plan.globe.ground, heights=lane_heights(plan))
     return ShowResult(plan=plan, lanes=lanes, riders=riders, pairs=pairs, duration_s=span,
                       commensurate=commensurate, phase_windows=windows, in_the_way=in_the_way)

@@ -14,7 +14,7 @@ R = 16 * 0.3048 / 2
 WIDTH = 0.6
 
 
-def _brute_clearance(p0, p1, q0, q1, radii, n=2001):
+def _brute_clearance(p0, p1, q0, q1, radii, n=1201):
     """The clearance the long way, for one configuration: both axes as n
     points, their least distance d over all point pairs, and the overlap
     across (radii less each point's distance to the other axis's points)

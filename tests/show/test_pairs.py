@@ -126,3 +126,33 @@ def test_the_common_period_and_its_tolerance():
     assert common_period([1.0, math.sqrt(2)]) is None
     with pytest.raises(deathsphere.ParameterError, match="duration"):
         deathsphere.show(_plan(_horizontal("A", 0.0), {"name": "V", "lane": "vertical", "v_top": "6.1m/s"}))
+
+
+def test_the_pairs_say_how_high_they_are_and_where_they_come_closest():
+    from deathsphere.api.shows import EXAMPLE_PLAN
+
+    act = deathsphere.show(read_plan_text(EXAMPLE_PLAN))
+    s = (np.arange(1201) + 0.5) / 1201
+    for i in range(len(act.pairs)):
+        row = act.pairs[i]
+        at = act.positions([row["t_s"]])
+        a, b = at[row["rider_a"]], at[row["rider_b"]]
+        # the contacts' heights above the floor (a horizontal lane's as planned)
+        assert row["height_a_m"] == pytest.approx(a["contact"][2, 0] + R, abs=1e-9)
+        assert row["height_b_m"] == pytest.approx(b["contact"][2, 0] + R, abs=1e-9)
+        # the closest approach the long way: both axes as points, the closest two, midway
+        pa = a["contact"] + (a["head"] - a["contact"]) * s
+        pb = b["contact"] + (b["head"] - b["contact"]) * s
+        dist = np.linalg.norm(pa[:, :, None] - pb[:, None, :], axis=0)
+        j, k = np.unravel_index(int(np.argmin(dist)), dist.shape)
+        mid = 0.5 * (pa[:, j] + pb[:, k])
+        assert row["closest_height_m"] == pytest.approx(mid[2] + R, abs=2e-3)
+        assert row["closest_phi_deg"] == pytest.approx(math.degrees(math.atan2(mid[1], mid[0])) % 360, abs=0.2)
+    heights = {act.pairs[i]["rider_a"]: act.pairs[i]["height_a_m"] for i in range(len(act.pairs))}
+    assert (heights["Ana"], heights["Cal"]) == (1.4, 2.0)
+
+
+def read_plan_text(text):
+    import tomllib
+
+    return tomllib.loads(text)
