@@ -40,7 +40,8 @@ def test_the_riders_table_is_rides_rows():
 def test_the_speed_band_edges_are_where_ride_changes_its_verdict(rider):
     act = _act(_h("A", 0), {"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s"}, duration=2)
     row = act.riders[rider]
-    for edge, inside in (("speed_low_m_s", 1.001), ("speed_high_m_s", 0.999)):
+    # found to 1e-10 of the planned speed: ride's verdict changes within 2e-10 of each edge
+    for edge, inside in (("speed_low_m_s", 1 + 2e-10), ("speed_high_m_s", 1 - 2e-10)):
         v = row[edge]
         if rider == 0:
             def ok(speed):
@@ -54,6 +55,23 @@ def test_the_speed_band_edges_are_where_ride_changes_its_verdict(rider):
         assert ok(v * inside) and not ok(v * (2 - inside))
     planned = 29 / 3.6 if rider == 0 else 6.5
     assert row["margin_low_pct"] == pytest.approx(100 * (planned - row["speed_low_m_s"]) / planned)
+
+
+def test_a_loopers_speed_band_is_where_his_friction_and_load_reach_the_limits():
+    from scipy.optimize import brentq
+
+    act = _act({"name": "V", "lane": "vertical", "azimuth": 90, "v_top": "6.5m/s"})
+    row = act.riders[0]
+
+    def loop(v_top, key):
+        return deathsphere.ride(90, vertical=True, v_top=v_top, machine="stunt125", r=R, mu=0.9, max_g=8)[0][key]
+
+    # the continuous quantities ride reports, each root bracketed and found to the last bits: slow, the
+    # friction needed reaches mu = 0.9; fast, the bottom's load reaches max_g = 8
+    low = brentq(lambda v: loop(v, "mu_required") - 0.9, 1.0001 * row["v_top_min_m_s"], 6.5, xtol=1e-14, rtol=1e-15)
+    high = brentq(lambda v: loop(v, "load_bottom_g") - 8, 6.5, 12.0, xtol=1e-14, rtol=1e-15)
+    assert row["speed_low_m_s"] == pytest.approx(low, rel=1e-10)
+    assert row["speed_high_m_s"] == pytest.approx(high, rel=1e-10)
 
 
 def test_drift_of_two_riders_in_one_lane_closed_form():
