@@ -21,7 +21,6 @@ Every other pair is searched over the act's times: ``basis`` 'act'."""
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 
 import numpy as np
 
@@ -269,8 +268,9 @@ def act_duration(lanes, duration: float | None) -> tuple[float, bool]:
     if common is not None:
         return common, True
     if duration is None:
-        shown = ", ".join(f"{lanes[k].name} {Fraction(lanes[k].period_s).limit_denominator(1000)!s:.8}"
-                          for k in involved[:4])
-        raise ValueError(f"the riders' periods are not commensurate to {COMMENSURATE_RTOL:g} within {MAX_LAPS} "
-                         f"laps ({shown} s ...): give the act's duration")
+        more = ", ..." if len(involved) > 4 else ""
+        shown = ", ".join(f"{lanes[k].name} {lanes[k].period_s:.4g} s" for k in involved[:4])
+        raise ValueError(f"the riders' laps are not commensurate to {COMMENSURATE_RTOL:g} within {MAX_LAPS} laps "
+                         f"({shown}{more}): give the act's length in seconds, e.g. duration = 60 in the plan's "
+                         "[globe]")
     return float(duration), False

@@ -465,7 +465,8 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
     'plan' (the plan's phases) or 'auto' (each vertical rider's phase, in
     plan order, maximising his least clearance; ``phase_windows`` then holds
     the safe phases).  A bad plan raises ParameterError, one line naming the
-    rider and the key, before any work.
+    rider and the key (its ``param`` None: a plan's key is not an argument
+    here), before any work.
 
     >>> import deathsphere
     >>> act = deathsphere.show({"globe": {"diameter": "16ft", "mu": 0.9}, "rider": [
@@ -478,10 +479,14 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
 
     if phase not in PHASES:
         raise ParameterError(f"phase must be plan or auto (got {phase!r})", "phase")
-    plan = read_plan(plan)
     if duration is not None:
         duration = _duration(duration)
-    lanes = build_lanes(plan)
+    try:
+        plan = read_plan(plan)
+        lanes = build_lanes(plan)
+    except ParameterError as exc:
+        # a plan's key (its message names it: "rider 'Ben': phase: ..."), not this function's argument of one name
+        raise ParameterError(str(exc), None) from None
     try:
         span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
     except ValueError as exc:

@@ -228,7 +228,13 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
     from deathsphere.api.shows import show
 
     options = {k: v for k, v in (("duration", duration), ("phase", phase and phase.lower())) if v is not None}
-    result = show(plan, **options)
+    try:
+        result = show(plan, **options)
+    except ParameterError as exc:
+        if exc.param in options:        # an option typed: named as click names its own refusals
+            raise click.BadParameter(str(exc), param_hint=f"'--{exc.param}'") from None
+        # the plan's (its message names the key): never an option that was not typed
+        raise click.UsageError(str(exc)) from None
     falls, summary = (None, None)
     if fails or monte_carlo is not None:
         falls, summary = _falls(result, fails, monte_carlo, seed, scheduler)
