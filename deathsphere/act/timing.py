@@ -103,13 +103,14 @@ def _windows(phases, safe) -> list[tuple[float, float]]:
     return [(float(phases[a]), float(phases[b])) for a, b in runs]
 
 
-def auto_phases(lanes, duration: float, min_clearance: float):
+def auto_phases(lanes, duration: float, min_clearance: float, timed=None):
     """({name: phase [deg]}, {name: windows}, {name: riders in the way})
     for every vertical lane, in plan order, each against the horizontal
     lanes and the vertical lanes timed before it (module docstring).  The
     riders in the way of a lane with no safe phase are those still closer
     than min_clearance at the phase taken (the best there is), in plan
-    order; none when it has a window."""
+    order; none when it has a window.  ``timed()``, if given, is called
+    after each vertical lane is timed (a progress bar's step)."""
     lanes = list(lanes)
     phases, windows, in_the_way = {}, {}, {}
     for i, lane in enumerate(lanes):
@@ -120,6 +121,8 @@ def auto_phases(lanes, duration: float, min_clearance: float):
         if not others:
             windows[lane.name] = [(0.0, 360.0)]
             phases[lane.name] = math.degrees(lane.phase) % 360.0
+            if timed is not None:
+                timed()
             continue
         cand, each = phase_clearances_each(lane, others, duration)
         least = each.min(axis=0)
@@ -129,6 +132,8 @@ def auto_phases(lanes, duration: float, min_clearance: float):
         if not windows[lane.name]:
             in_the_way[lane.name] = [o.name for o, c in zip(others, each[:, best]) if c < min_clearance]
         lanes[i] = replace(lane, phase=math.radians(cand[best]))
+        if timed is not None:
+            timed()
     return phases, windows, in_the_way
 
 

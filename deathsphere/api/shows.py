@@ -140,7 +140,7 @@ class ShowResult:
                          "crosses_lane": False})
         return _rows_table(rows, FALL_COLUMNS)
 
-    def falls(self, n: int, seed: int = 0, scheduler=None) -> tuple[Table, Table]:
+    def falls(self, n: int, seed: int = 0, scheduler=None, progress=None) -> tuple[Table, Table]:
         """Monte Carlo of ``n`` falls: a random rider, a random time in the
         act, a random speed fraction in [0, 1), drawn from ``seed``;
         evaluated vectorised, in chunks, on a dask.distributed cluster with
@@ -150,7 +150,8 @@ class ShowResult:
         closest to (sampled at FLIGHT_SAMPLES instants of the flight);
         summary :data:`FALLS_SUMMARY_COLUMNS`: per falling rider and victim
         (an empty victim: any), how many falls, how many hit, the fraction,
-        and the worst landing speed; the last row (both empty) all falls."""
+        and the worst landing speed; the last row (both empty) all falls.
+        ``progress(done, n)``, if given, is told the falls done, chunk by chunk."""
         from deathsphere.parallel import ordered_map
         from deathsphere.act.falls import fall_chunk
 
@@ -169,7 +170,11 @@ class ShowResult:
             client, own = connect(scheduler)
         items = ((self.lanes, self.plan.globe, rider[s:s + FALLS_CHUNK], t[s:s + FALLS_CHUNK],
                   fraction[s:s + FALLS_CHUNK]) for s in range(0, int(n), FALLS_CHUNK))
-        parts = list(ordered_map(fall_chunk, items, jobs=1, client=client, close=own))
+        parts = []
+        for part in ordered_map(fall_chunk, items, jobs=1, client=client, close=own):
+            parts.append(part)
+            if progress is not None:
+                progress(min(int(n), FALLS_CHUNK * len(parts)), int(n))
         # (n,) and (3, n) arrays join along the falls, (n, riders) ones along their rows
         res = {key: np.concatenate([p[key] for p in parts], axis=0 if key in ("clearance", "t_min") else -1)
                for key in parts[0]}
@@ -426,17 +431,20 @@ def lane_heights(plan: Plan) -> list[float]:
 
 
 def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift: bool = True, *,
-                ground, heights=None) -> Table:
+                ground, heights=None, done=None) -> Table:
     """The ``pairs`` table (columns :data:`PAIR_COLUMNS`): every pair (a before
     b in the plan), its least clearance over the act, when and where, the
     verdict and the drift time (NaN: never), the heights where it happens;
     ``ground`` the globe (its contact angles), ``heights`` the horizontal
-    lanes' heights as typed (:func:`lane_heights`; NaN: from the contact)."""
+    lanes' heights as typed (:func:`lane_heights`; NaN: from the contact);
+    ``done(n)``, if given, is told of n more pairs found (a progress bar)."""
+    done = done or (lambda n: None)
     from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict, where_closest
     from deathsphere.act.timing import drift_time
 
     over_time = act_pairs(lanes)
     found = dict(zip(over_time, ((c, t, "act") for c, t in least_clearances(lanes, over_time, duration))))
+    done(len(over_time))
     rows = []
     for i, a in enumerate(lanes):
         for j in range(i + 1, len(lanes)):
@@ -454,10 +462,12 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
                          "drift_time_s": dt if math.isfinite(dt) else math.nan, "basis": basis,
                          "height_a_m": where["height_a"], "height_b_m": where["height_b"],
                          "closest_height_m": where["height"], "closest_phi_deg": where["phi"]})
+            if (i, j) not in found:
+                done(1)
     return _rows_table(rows, PAIR_COLUMNS)
 
 
-def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
+def show(plan, *, duration=None, phase: str = "plan", progress=None) -> ShowResult:
     """Plan an act (docs/show.md): ``plan`` a path to a TOML file or a dict
     ({"globe": {...}, "rider": [...]}); ``duration`` [s] the act's length
     when the riders' periods are not commensurate (over the plan's
@@ -466,7 +476,8 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
     plan order, maximising his least clearance; ``phase_windows`` then holds
     the safe phases).  A bad plan raises ParameterError, one line naming the
     rider and the key (its ``param`` None: a plan's key is not an argument
-    here), before any work.
+    here), before any work.  ``progress(done, total)``, if given, is told
+    the steps done (the riders, each vertical rider timed, each pair).
 
     >>> import deathsphere
     >>> act = deathsphere.show({"globe": {"diameter": "16ft", "mu": 0.9}, "rider": [
@@ -491,12 +502,22 @@ def show(plan, *, duration=None, phase: str = "plan") -> ShowResult:
         span, commensurate = act_duration(lanes, plan.globe.duration if duration is None else duration)
     except ValueError as exc:
         raise ParameterError(str(exc), "duration") from None
+    n = len(lanes)
+    steps = [0, 1 + n * (n - 1) // 2 + (sum(lane.kind == "vertical" for lane in lanes) if phase == "auto" else 0)]
+
+    def step(k: int = 1) -> None:
+        steps[0] += k
+        if progress is not None:
+            progress(steps[0], steps[1])
+
     windows, in_the_way = {}, {}
     if phase == "auto":
-        phases, windows, in_the_way = auto_phases(lanes, span, plan.globe.min_clearance)
+        phases, windows, in_the_way = auto_phases(lanes, span, plan.globe.min_clearance, timed=step)
         plan = plan.with_phases(phases)
         lanes = build_lanes(plan)
     riders = riders_table(plan, lanes, windows, in_the_way)
-    pairs = pairs_table(lanes, span, plan.globe.min_clearance, ground=plan.globe.ground, heights=lane_heights(plan))
+    step()
+    pairs = pairs_table(lanes, span, plan.globe.min_clearance, ground=plan.globe.ground, heights=lane_heights(plan),
+                        done=step)
     return ShowResult(plan=plan, lanes=lanes, riders=riders, pairs=pairs, duration_s=span,
                       commensurate=commensurate, phase_windows=windows, in_the_way=in_the_way)

@@ -20,6 +20,7 @@ from deathsphere.cli.base import (
     emit,
     fail,
     one_line,
+    progress,
     stderr_console,
     stdout_console,
 )
@@ -143,8 +144,9 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
     from deathsphere.table import Table
 
     if monte_carlo is not None:
-        return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
-                            **({"scheduler": scheduler} if scheduler is not None else {}))
+        with progress("falls", monte_carlo) as bar:
+            return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
+                                **({"scheduler": scheduler} if scheduler is not None else {}), progress=bar.update)
     tables = []
     for name, t, f, typed in fails:
         try:
@@ -229,7 +231,9 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
 
     options = {k: v for k, v in (("duration", duration), ("phase", phase and phase.lower())) if v is not None}
     try:
-        result = show(plan, **options)
+        # the pairs (and --phase auto) can take seconds: a bar on a terminal
+        with progress("act", None) as bar:
+            result = show(plan, **options, progress=bar.update)
     except ParameterError as exc:
         if exc.param in options:        # an option typed: named as click names its own refusals
             raise click.BadParameter(str(exc), param_hint=f"'--{exc.param}'") from None
@@ -242,7 +246,8 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
         from deathsphere.viewer import write_scene
         from deathsphere.viewer.show_scene import act_scene
 
-        size = write_scene(output, act_scene(result, falls if fails else None))
+        with progress("frames", None) as bar:
+            size = write_scene(output, act_scene(result, falls if fails else None), progress=bar.update)
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         return
     tables = {"riders": result.riders, "pairs": result.pairs, "falls": falls, "summary": summary}
