@@ -69,14 +69,15 @@ def point_segment_distance(x, q0, q1):
 AXIS_POINTS = 65
 
 
-def overlap_along(p0, p1, q0, q1, radii):
+def overlap_along(p0, p1, q0, q1, radii, points: int = AXIS_POINTS):
     """The overlap of two capsules integrated along their axes, per unit of
     the radii [m]: A / radii with A the mean over the two axes of the
     integral along each of max(0, radii - its distance to the other axis)
     (arrays (3, m) for m configurations, ``radii`` (m,)).  R for two axes
     crossing at right angles in their middles, the axes' length for two
-    riders in one place, R/2 for a tip on the other's axis."""
-    s = np.linspace(0.0, 1.0, AXIS_POINTS)
+    riders in one place, R/2 for a tip on the other's axis; ``points``
+    along each axis."""
+    s = np.linspace(0.0, 1.0, points)
     total = 0.0
     for (a0, a1), (b0, b1) in (((p0, p1), (q0, q1)), ((q0, q1), (p0, p1))):
         points = a0[:, :, None] + (a1 - a0)[:, :, None] * s
@@ -86,14 +87,15 @@ def overlap_along(p0, p1, q0, q1, radii):
     return 0.5 * total / radii
 
 
-def overlap_clearance(p0, p1, q0, q1, radii):
+def overlap_clearance(p0, p1, q0, q1, radii, points: int = AXIS_POINTS):
     """Clearance [m] of two capsules of axes p0-p1 and q0-q1 (arrays (3,
     ...), broadcast) whose radii sum to ``radii`` (broadcast on the rest):
     the axes' distance d less the radii; where they overlap (d < radii),
     minus the overlap's depth: the depth across, radii - d, and the overlap
     integrated along the bodies, :func:`overlap_along` (docs/show.md, "The
     depth of an overlap").  Continuous: 0 at a touch, a graze a little
-    below, two riders in one place -(radii + their length)."""
+    below, two riders in one place -(radii + their length).  ``points``:
+    the integral's points along each axis."""
     p0, p1, q0, q1 = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (p0, p1, q0, q1)))
     d, _, _ = segment_distance(p0, p1, q0, q1)
     radii = np.broadcast_to(np.asarray(radii, dtype=float), d.shape)
@@ -101,7 +103,8 @@ def overlap_clearance(p0, p1, q0, q1, radii):
     inside = c < 0
     if inside.any():
         c = np.array(c)
-        c[inside] -= overlap_along(p0[:, inside], p1[:, inside], q0[:, inside], q1[:, inside], radii[inside])
+        c[inside] -= overlap_along(p0[:, inside], p1[:, inside], q0[:, inside], q1[:, inside], radii[inside],
+                                   points)
     return c
 
 

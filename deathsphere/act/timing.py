@@ -45,6 +45,10 @@ DRIFT_ERROR = 0.01
 DRIFT_FIRST_STEP_M = 0.25
 #: Act samples per slice of the phase search (memory stays bounded).
 SLICE = 2048
+#: Points along each axis of the overlap's integral in the phase search:
+#: it ranks phases sampled a step apart, so a coarser integral (a few mm)
+#: than the pairs' will do, at a quarter of the cost.
+PHASE_AXIS_POINTS = 17
 
 
 def _segments(lane, t):
@@ -77,7 +81,7 @@ def phase_clearances_each(lane, others, duration: float, steps: int = PHASE_STEP
         for start in range(0, times.size, SLICE):
             j = np.arange(start, min(start + SLICE, times.size))
             idx = (j[None, :] + k[:, None]) % steps                 # (steps, slice): the loop shifted by k
-            c = overlap_clearance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j], radii)
+            c = overlap_clearance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j], radii, PHASE_AXIS_POINTS)
             least[o] = np.minimum(least[o], c.min(axis=1))
     return phases, least
 
