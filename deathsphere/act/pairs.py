@@ -193,19 +193,20 @@ def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[flo
 
 
 #: Samples per round of the search for an overlap's depth, and its rounds.
-DEPTH_SAMPLES = 257
-DEPTH_ROUNDS = 6
+DEPTH_SAMPLES = 65
+DEPTH_ROUNDS = 5
 
 
 def deepest(f, c: float, x: float, lo: float, hi: float, lipschitz: float, radii: float) -> tuple[float, float]:
     """(c, x) of an overlap's deepest point: the least clearance c at x
-    (found to 1 mm by :func:`refine` on the bound of the axes' distance),
+    (found by :func:`refine`, whose bound holds for the axes' distance),
     searched again, when below zero, for the depth along the bodies, whose
-    rate of change has no such bound (:func:`overlap_clearance`): the
-    overlap about x, as far as the axes' distance can stay below the radii
-    (radii / lipschitz either side), sampled and narrowed round by round
-    about the least sample.  Returns the deeper of the two; a clearance
-    that is not an overlap is returned as it is."""
+    rate of change has no such bound (:func:`overlap_clearance`).  The
+    window is 2 radii / lipschitz either side of x (twice the least time
+    the axes' distance needs to climb from zero to the radii), sampled and
+    narrowed round by round about the least sample; not certified as the
+    clearance is.  Returns the deeper of the two; a clearance that is not
+    an overlap is returned as it is."""
     if not c < 0 or lipschitz <= 0:
         return c, x
     half = 2.0 * radii / lipschitz
