@@ -90,7 +90,9 @@ def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPL
     ``outcome`` (int8 codes of OUTCOMES), ``t_lost``, ``theta_lost``,
     ``phi_lost``, ``t_land``, ``theta_land``, ``phi_land``, ``fall_time``,
     ``impact_speed``, ``swing_height`` (contact's height at a swing's
-    highest point [m]), (3, n) ``x0``, ``v0`` (start of the flight), and
+    highest point [m]), ``height_lost`` and ``height_land`` (above the
+    floor [m]: where contact is lost, the landing point), (3, n) ``x0``,
+    ``v0`` (start of the flight), and
     (n, riders) ``clearance`` [m], ``t_min`` [s] (NaN for the rider himself
     and where he does not fly).  One pass per rider, vectorised over his falls."""
     rider, t, fraction = (np.asarray(x).reshape(-1) for x in (rider, t, fraction))
@@ -113,6 +115,9 @@ def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPL
     res["t_land"] = res["t_lost"] + flight
     res["theta_land"], res["phi_land"] = _angles(np.where(flying, land["x_land"], np.nan), globe.r)
     res["impact_speed"] = np.where(flying, land["impact_speed"], np.nan)
+    # heights above the floor (the globe is centred at the origin, z up)
+    res["height_lost"] = res["contact_lost"][2] + globe.r
+    res["height_land"] = np.where(flying, land["x_land"][2], np.nan) + globe.r
     res["clearance"], res["t_min"] = _victims(lanes, globe.g, rider, res, flight, samples)
     return res
 

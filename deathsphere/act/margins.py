@@ -9,7 +9,9 @@ Vertical lane: a top speed is feasible when its loop is ok (M22-M24,
 :func:`deathsphere.physics.machine.vertical_loop`).  The speeds of a
 geometric grid about the planned speed (1/16 to 16 times it) are tried at
 once; the run of feasible speeds holding the planned one is bracketed there
-and its two edges found by bisection, every rider's edges of one kind of
+and its two edges found by bisection on the bracket (a status is not a
+continuous function: a bracketed bisection is the root finder that fits),
+to :data:`RTOL` of the edge, every rider's edges of one kind of
 lane in one physics call per step (their machines as arrays over riders)."""
 
 from __future__ import annotations
@@ -23,8 +25,11 @@ from deathsphere.physics.status import Status
 
 #: The speeds tried, as multiples of the planned one.
 GRID = np.geomspace(1 / 16, 16, 145)
-#: Bisection steps on each edge: the edge to GRID's ratio (about 1.04) / 2**STEPS.
-STEPS = 14
+#: Each edge is found to this, relative to itself: the bracket (GRID's
+#: ratio, about 1.04) halved until it is half this narrow (about 30 steps).
+RTOL = 1e-10
+#: The most bisection steps (a bracket of the whole GRID halved to below RTOL).
+MAX_STEPS = 64
 
 
 def feasible(lanes, globe, speeds) -> np.ndarray:
@@ -62,11 +67,14 @@ def _bands(lanes, globe, planned) -> np.ndarray:
             j = above[0]
             inside[i, 1], outside[i, 1] = (grid[i, j - 1] if j - 1 >= k else planned[i]), grid[i, j]
     found = np.isfinite(inside)
-    if found.any():
-        for _ in range(STEPS):
-            mid = np.where(found, 0.5 * (inside + outside), planned[:, None])
-            good = feasible(lanes, globe, mid)
-            inside, outside = np.where(good, mid, inside), np.where(good, outside, mid)
+    for _ in range(MAX_STEPS):
+        # half the tolerance of the edge itself: the edge lies between inside and outside
+        open_ = found & (np.abs(outside - inside) > 0.5 * RTOL * np.abs(inside))
+        if not open_.any():
+            break
+        mid = np.where(open_, 0.5 * (inside + outside), planned[:, None])
+        good = feasible(lanes, globe, mid)
+        inside, outside = np.where(open_ & good, mid, inside), np.where(open_ & ~good, mid, outside)
     return np.where(found, inside, np.nan)
 
 

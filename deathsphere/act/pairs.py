@@ -21,11 +21,10 @@ Every other pair is searched over the act's times: ``basis`` 'act'."""
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 
 import numpy as np
 
-from deathsphere.act.envelope import clearance, segment_distance
+from deathsphere.act.envelope import clearance, overlap_clearance
 from deathsphere.act.lipschitz import refine_intervals
 
 #: Every least clearance is found to this [m].
@@ -107,7 +106,7 @@ def _clearance_at(a, b, clock_a=1.0):
     radii = 0.5 * (a.width_m + b.width_m)
 
     def f(t):
-        return segment_distance(*a.ends(t, clock_a), *b.ends(t))[0] - radii
+        return overlap_clearance(*a.ends(t, clock_a), *b.ends(t), radii)
     return f
 
 
@@ -160,8 +159,10 @@ def _chunk_clearances(lanes, pairs, x, bound) -> list[tuple[float, float]]:
         first, second = np.array([i for i, _ in batch]), np.array([j for _, j in batch])
         stack = [np.stack([ends[k][e] for k in idx], axis=1) for idx in (first, second) for e in (0, 1)]
         radii = np.array([0.5 * (lanes[i].width_m + lanes[j].width_m) for i, j in batch])
-        c = segment_distance(*stack)[0] - radii[:, None]
-        out += [refine(_clearance_at(lanes[i], lanes[j]), x, c[p], bound[i] + bound[j])
+        c = overlap_clearance(*stack, radii[:, None])
+        out += [deepest(_clearance_at(lanes[i], lanes[j]), *refine(_clearance_at(lanes[i], lanes[j]), x, c[p],
+                                                                   bound[i] + bound[j]),
+                        float(x[0]), float(x[-1]), bound[i] + bound[j], radii[p])
                 for p, (i, j) in enumerate(batch)]
     return out
 
@@ -179,13 +180,47 @@ def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[flo
             return clearance(a.at_angle(delta), meridian_b, a.width_m, b.width_m)
 
         # phi_a - phi_b = delta0 + (Omega_a - Omega_b) t; a point moves its reach per radian at most
-        c, delta = minimise(apart, 0.0, 2 * math.pi, a.reach)
+        c, delta = deepest(apart, *minimise(apart, 0.0, 2 * math.pi, a.reach), 0.0, 2 * math.pi, a.reach,
+                           0.5 * (a.width_m + b.width_m))
         rel = a.rate - b.rate
         t = ((delta - (a.phase - b.phase)) / rel) % (2 * math.pi / abs(rel))
         return c, t, "geometric"
     lipschitz = clock_a * a.speed_bound() + b.speed_bound()
-    c, t = minimise(_clearance_at(a, b, clock_a), 0.0, float(duration), lipschitz)
+    f = _clearance_at(a, b, clock_a)
+    c, t = deepest(f, *minimise(f, 0.0, float(duration), lipschitz), 0.0, float(duration), lipschitz,
+                   0.5 * (a.width_m + b.width_m))
     return c, t, "act"
+
+
+#: Samples per round of the search for an overlap's depth, and its rounds.
+DEPTH_SAMPLES = 65
+DEPTH_ROUNDS = 5
+
+
+def deepest(f, c: float, x: float, lo: float, hi: float, lipschitz: float, radii: float) -> tuple[float, float]:
+    """(c, x) of an overlap's deepest point: the least clearance c at x
+    (found by :func:`refine`, whose bound holds for the axes' distance),
+    searched again, when below zero, for the depth along the bodies, whose
+    rate of change has no such bound (:func:`overlap_clearance`).  The
+    window is 2 radii / lipschitz either side of x (twice the least time
+    the axes' distance needs to climb from zero to the radii), sampled and
+    narrowed round by round about the least sample; not certified as the
+    clearance is.  Returns the deeper of the two; a clearance that is not
+    an overlap is returned as it is."""
+    if not c < 0 or lipschitz <= 0:
+        return c, x
+    half = 2.0 * radii / lipschitz
+    a, b = max(lo, x - half), min(hi, x + half)
+    best_c, best_x = c, x
+    for _ in range(DEPTH_ROUNDS):
+        grid = np.linspace(a, b, DEPTH_SAMPLES)
+        values = f(grid)
+        k = int(np.argmin(values))
+        if values[k] < best_c - TIE_M:
+            best_c, best_x = float(values[k]), float(grid[k])
+        step = (b - a) / (DEPTH_SAMPLES - 1)
+        a, b = max(lo, best_x - 2 * step), min(hi, best_x + 2 * step)
+    return best_c, best_x
 
 
 def contact_angles(lane, t: float, ground) -> tuple[float, float]:
@@ -194,6 +229,22 @@ def contact_angles(lane, t: float, ground) -> tuple[float, float]:
     p = lane.kinematics(np.array([t]))["contact"][:, 0]
     theta = math.degrees(math.acos(max(-1.0, min(1.0, p[2] / ground.radius))))
     return theta, math.degrees(math.atan2(p[1], p[0])) % 360.0
+
+
+def where_closest(a, b, t: float, ground) -> dict:
+    """Where the pair (a, b) is at time t on the globe ``ground``: the
+    heights [m] above the floor of both contacts ('height_a', 'height_b')
+    and of the point of closest approach, midway between the closest points
+    of the two envelopes' axes ('height', with its azimuth 'phi' [deg],
+    0..360)."""
+    from deathsphere.act.envelope import segment_distance
+
+    (p0, p1), (q0, q1) = a.ends(np.array([t])), b.ends(np.array([t]))
+    _, s, u = segment_distance(p0, p1, q0, q1)
+    mid = 0.5 * (p0 + s * (p1 - p0) + q0 + u * (q1 - q0))[:, 0]
+    r = float(ground.radius)
+    return {"height_a": float(p0[2, 0]) + r, "height_b": float(q0[2, 0]) + r, "height": float(mid[2]) + r,
+            "phi": math.degrees(math.atan2(mid[1], mid[0])) % 360.0}
 
 
 def verdict(c: float, min_clearance: float) -> str:
@@ -218,8 +269,9 @@ def act_duration(lanes, duration: float | None) -> tuple[float, bool]:
     if common is not None:
         return common, True
     if duration is None:
-        shown = ", ".join(f"{lanes[k].name} {Fraction(lanes[k].period_s).limit_denominator(1000)!s:.8}"
-                          for k in involved[:4])
-        raise ValueError(f"the riders' periods are not commensurate to {COMMENSURATE_RTOL:g} within {MAX_LAPS} "
-                         f"laps ({shown} s ...): give the act's duration")
+        more = ", ..." if len(involved) > 4 else ""
+        shown = ", ".join(f"{lanes[k].name} {lanes[k].period_s:.4g} s" for k in involved[:4])
+        raise ValueError(f"the riders' laps are not commensurate to {COMMENSURATE_RTOL:g} within {MAX_LAPS} laps "
+                         f"({shown}{more}): give the act's length in seconds, e.g. duration = 60 in the plan's "
+                         "[globe]")
     return float(duration), False

@@ -20,6 +20,7 @@ from deathsphere.cli.base import (
     emit,
     fail,
     one_line,
+    progress,
     stderr_console,
     stdout_console,
 )
@@ -115,6 +116,15 @@ def _check_choices(plan, example, table, fails, monte_carlo, seed, scheduler, ou
         raise click.UsageError(f"--output {output} draws the act; --table chooses a table to write, not both")
     if ext in VIEWS and monte_carlo is not None:
         raise click.UsageError(f"--output {output} draws the act (with --fail, the fall); not with --monte-carlo")
+    if ext in VIEWS:
+        # a rider's track draws one fall: two of one rider are refused, not one of them dropped
+        first = {}
+        for name, _, _, typed in fails:
+            if name in first:
+                raise click.UsageError(f"--output {output} draws one fall per rider: --fail {first[name]} and "
+                                       f"--fail {typed} are both {name}'s (draw them one at a time, or write "
+                                       "the falls table)")
+            first[name] = typed
 
 
 def _view(name: str, **kwargs):
@@ -134,8 +144,9 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
     from deathsphere.table import Table
 
     if monte_carlo is not None:
-        return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
-                            **({"scheduler": scheduler} if scheduler is not None else {}))
+        with progress("falls", monte_carlo) as bar:
+            return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
+                                **({"scheduler": scheduler} if scheduler is not None else {}), progress=bar.update)
     tables = []
     for name, t, f, typed in fails:
         try:
@@ -176,8 +187,8 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
 @single("--output", type=OutputPath(OUTPUTS), default=None, metavar="FILE",
         help="Draw the act in 3-D: .html (interactive, self-contained), .gif or .mp4 (plot extra; .mp4 "
              "ffmpeg), every rider's envelope moving with the clock, the least-clearance pair marked, with "
-             "--fail the fall's path.  Or write the table to .csv/.json/.ndjson/.parquet.  Nothing is "
-             "printed on stdout then.")
+             "--fail each fall's path (one fall per rider).  Or write the table to "
+             ".csv/.json/.ndjson/.parquet.  Nothing is printed on stdout then.")
 @output_options(FORMATS)
 @units_option()
 def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed, scheduler, output, fmt, units):
@@ -219,7 +230,15 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
     from deathsphere.api.shows import show
 
     options = {k: v for k, v in (("duration", duration), ("phase", phase and phase.lower())) if v is not None}
-    result = show(plan, **options)
+    try:
+        # the pairs (and --phase auto) can take seconds: a bar on a terminal
+        with progress("act", None) as bar:
+            result = show(plan, **options, progress=bar.update)
+    except ParameterError as exc:
+        if exc.param in options:        # an option typed: named as click names its own refusals
+            raise click.BadParameter(str(exc), param_hint=f"'--{exc.param}'") from None
+        # the plan's (its message names the key): never an option that was not typed
+        raise click.UsageError(str(exc)) from None
     falls, summary = (None, None)
     if fails or monte_carlo is not None:
         falls, summary = _falls(result, fails, monte_carlo, seed, scheduler)
@@ -227,7 +246,8 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
         from deathsphere.viewer import write_scene
         from deathsphere.viewer.show_scene import act_scene
 
-        size = write_scene(output, act_scene(result, falls if fails else None))
+        with progress("frames", None) as bar:
+            size = write_scene(output, act_scene(result, falls if fails else None), progress=bar.update)
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         return
     tables = {"riders": result.riders, "pairs": result.pairs, "falls": falls, "summary": summary}

@@ -225,7 +225,7 @@ def pairs_view(table: Table, total_rows: int | None = None, result=None,
     each rider's contact was, the verdict (conflict and collision in red)
     and the drift time."""
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    notes = [f"[dim]{_rule(result)}least clear: the envelopes' distance (negative: they overlap); drift time: "
+    notes = [f"[dim]{_rule(result)}least clear: the envelopes' distance (negative: minus the overlap's depth); drift time: "
              "how long the pair stays clear with one rider 1 % fast or slow (the worse)[/dim]"]
     notes += _pair_notes(head, result)
     return build_table(table, PAIRS_VIEW, units=units, title=_title("Pairs", result), total_rows=total_rows,
@@ -259,8 +259,11 @@ def _pair_notes(head: Table, result) -> list[str]:
         notes.append(f"[bold red]{escape(', '.join(marked))}: a lane that is not feasible "
                      f"({escape(', '.join(bad))}); its clearances are of the lane as planned[/bold red]")
     windows = getattr(result, "phase_windows", None) or {}
+    in_the_way = getattr(result, "in_the_way", None) or {}
     for name, window in dict(windows).items():
-        notes.append(f"[dim]{escape(str(name))}: safe phases {escape(_window_text(window))}[/dim]")
+        blocking = in_the_way.get(name) or []
+        way = f" (in the way at the best phase: {', '.join(map(str, blocking))})" if not window and blocking else ""
+        notes.append(f"[dim]{escape(str(name))}: safe phases {escape(_window_text(window) + way)}[/dim]")
     return notes
 
 

@@ -1,7 +1,7 @@
 """The act's 3-D view (``deathsphere show --output act.html|.gif|.mp4``;
 docs/show.md, section 8): every rider's envelope moving in the globe with
 the clock, the pair of least clearance marked at its closest moment, and
-with ``--fail`` the fall's path and landing point.
+with ``--fail`` each fall's path and landing point (one fall per rider).
 
 Nothing here is physics: the riders' points are the show's own
 (:meth:`ShowResult.positions`), the pair and the fall are the rows of its
@@ -93,36 +93,58 @@ def _unit_point(r, theta_deg, phi_deg):
     return r * np.array([math.sin(th) * math.cos(ph), math.sin(th) * math.sin(ph), math.cos(th)])
 
 
-def _fall(result, falls: Table, r: float, g: float) -> dict | None:
-    """The first fall of the table, drawn: its rider, times, the path of
-    his centre of mass from contact lost to landing, the landing point and
-    whom he hits."""
-    if falls is None or len(falls) == 0:
-        return None
-    rider, t_fail = str(falls["rider"][0]), float(falls["t_fail_s"][0])
-    rows = [i for i in range(len(falls)) if str(falls["rider"][i]) == rider and float(falls["t_fail_s"][i]) == t_fail]
+def fall_groups(falls: Table | None) -> list[list[int]]:
+    """The rows of each fall of a falls table (one fall: a rider, a time
+    and a fraction; a row per other rider), in the table's order."""
+    if falls is None:
+        return []
+    groups: dict = {}
+    for i in range(len(falls)):
+        key = (str(falls["rider"][i]), float(falls["t_fail_s"][i]), float(falls["speed_fraction"][i]))
+        groups.setdefault(key, []).append(i)
+    return list(groups.values())
+
+
+def one_fall_each(falls: Table | None) -> None:
+    """ValueError naming the rider when two falls of the table are one
+    rider's: a rider's track draws one fall (he cannot fall twice in one act)."""
+    seen: dict = {}
+    for rows in fall_groups(falls):
+        rider = str(falls["rider"][rows[0]])
+        if rider in seen:
+            raise ValueError(f"the view draws one fall per rider: {rider} falls at t = {seen[rider]:g} s and at "
+                             f"t = {float(falls['t_fail_s'][rows[0]]):g} s (draw them one at a time; the tables hold both)")
+        seen[rider] = float(falls["t_fail_s"][rows[0]])
+
+
+def _fall(result, falls: Table, rows: list[int], r: float, g: float) -> dict:
+    """One fall of the table (its ``rows``), drawn: its rider, times, the
+    path of his centre of mass from contact lost to landing, the landing
+    point and whom he hits."""
+    first = rows[0]
+    rider, t_fail = str(falls["rider"][first]), float(falls["t_fail_s"][first])
     hits = [str(falls["victim"][i]) for i in rows if bool(falls["hit"][i]) and str(falls["victim"][i])]
-    outcome = str(falls["outcome"][0])
+    outcome = str(falls["outcome"][first])
     out = {"rider": rider, "t_fail": t_fail, "outcome": outcome, "hits": hits,
-           "fraction": float(falls["speed_fraction"][0])}
+           "fraction": float(falls["speed_fraction"][first])}
     if outcome != "falls":
         return out
-    t_lost, t_land, T = (float(falls[k][0]) for k in ("t_contact_lost_s", "t_land_s", "fall_time_s"))
+    t_lost, t_land, T = (float(falls[k][first]) for k in ("t_contact_lost_s", "t_land_s", "fall_time_s"))
     at_fail = result.positions(np.array([t_fail]))[rider]
     lane = _lane_of(result, rider)
     if lane == "vertical":
         # upright in the loop's plane: the centre of mass is on the contact's radius
         r_g = float(np.linalg.norm(at_fail["com"][:, 0]))
-        x0 = _unit_point(r_g, float(falls["theta_lost_deg"][0]), float(falls["phi_lost_deg"][0]))
+        x0 = _unit_point(r_g, float(falls["theta_lost_deg"][first]), float(falls["phi_lost_deg"][first]))
     else:
         x0 = at_fail["com"][:, 0]
-    x1 = _unit_point(r, float(falls["theta_land_deg"][0]), float(falls["phi_land_deg"][0]))
+    x1 = _unit_point(r, float(falls["theta_land_deg"][first]), float(falls["phi_land_deg"][first]))
     z = np.array([0.0, 0.0, 1.0])
     v0 = (x1 - x0) / T + 0.5 * g * T * z
     s = np.linspace(0.0, T, PATH_POINTS)
     path = x0[:, None] + v0[:, None] * s[None, :] - 0.5 * g * (s ** 2)[None, :] * z[:, None]
     out.update({"t_lost": t_lost, "t_land": t_land, "path_t": t_lost + s, "path": path, "land": x1,
-                "impact": float(falls["impact_speed_m_s"][0])})
+                "impact": float(falls["impact_speed_m_s"][first])})
     return out
 
 
@@ -135,18 +157,22 @@ def _lane_of(result, name: str) -> str:
 def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAMES) -> Scene:
     """The act's scene: one track per rider, his points over the act at a
     step that keeps every point within :data:`MAX_MOVE_R` r of the last (at
-    most ``max_frames``), the pair of least clearance and the first fall of
-    ``falls`` (the table of :meth:`ShowResult.fall`) on its rider's track."""
+    most ``max_frames``), the pair of least clearance and every fall of
+    ``falls`` (the table of :meth:`ShowResult.fall`, or several joined) on
+    its rider's track; ValueError when two falls are one rider's
+    (:func:`one_fall_each`)."""
+    one_fall_each(falls)
     duration = float(result.duration_s)
     probe_t = np.linspace(0.0, duration, 2001)
     probe = result.positions(probe_t)
     r = _globe_radius(probe)
     g = _plan_number(result, "plan", "globe", "g", default=G0)
     step = frame_step(probe, probe_t, r)
-    fall = _fall(result, falls, r, g) if falls is not None else None
-    if fall is not None and "t_land" in fall:
-        # a fall may land after the act's end: the clock runs on to the landing
-        duration = max(duration, fall["t_land"] + FALL_AFTER_S)
+    drawn = [_fall(result, falls, rows, r, g) for rows in fall_groups(falls)]
+    for fall in drawn:
+        if "t_land" in fall:
+            # a fall may land after the act's end: the clock runs on to the landing
+            duration = max(duration, fall["t_land"] + FALL_AFTER_S)
     n = int(min(max_frames, max(2, math.ceil(duration / step) + 1)))
     t = np.linspace(0.0, duration, n)
     pair = _least_pair(result.pairs)
@@ -169,8 +195,9 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
                                               for key in ("contact", "head", "com")},
                       meta={"lane": lanes[k], "radius": 0.5 * widths[k], "colour": colour})
         track.draw = _rider_draw(track, in_pair, pair, near)
-        if fall is not None and fall["rider"] == name:
-            _add_fall(track, fall)
+        for fall in drawn:
+            if fall["rider"] == name:
+                _add_fall(track, fall)
         tracks.append(track)
     scene = Scene(ground=sphere_ground(r), tracks=tracks, playback=PLAYBACK, loop_playback=LOOP_PLAYBACK,
                   camera={"el": CAMERA[0], "az": CAMERA[1], "target": [0.0, 0.0, 0.0], "extent": 1.05 * r},
@@ -182,13 +209,17 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
         scene.notes.append({"text": f"Least clearance: {pair['a']} \u2013 {pair['b']} {pair['clearance']:.3f} m at "
                                     f"t = {pair['t']:.3f} s ({pair['verdict']}), drawn in red."})
         scene.moments.append({"label": "Closest moment", "t": pair["t"]})
-    if fall is not None:
-        scene.fall = {"track": names.index(fall["rider"]), **{k: v for k, v in fall.items()
-                                                               if k not in ("path", "path_t", "land")}}
+    for fall in drawn:
         scene.notes.append({"text": _fall_words(fall), "colour": "#ff9b8f"})
         if "path" in fall:
-            scene.moments.append({"label": "The fall", "t": fall["t_fail"]})
-        scene.focus = fall["t_fail"]
+            scene.moments.append({"label": "The fall" if len(drawn) == 1 else f"{fall['rider']}'s fall",
+                                  "t": fall["t_fail"]})
+    if drawn:
+        # the page's one fall marker and the loop's focus: the first; every fall is its rider's event
+        first = drawn[0]
+        scene.fall = {"track": names.index(first["rider"]), **{k: v for k, v in first.items()
+                                                                if k not in ("path", "path_t", "land")}}
+        scene.focus = first["t_fail"]
     elif pair is not None:
         scene.focus = pair["t"]
     return scene

@@ -34,6 +34,14 @@ def test_a_stall_above_the_equator_falls_straight_down():
     assert row["theta_land_deg"] == pytest.approx(math.degrees(math.acos(z_land / R)), abs=1e-9)
     assert row["impact_speed_m_s"] == pytest.approx(math.sqrt(2 * G * (com[2] - z_land)), rel=1e-9)
     assert row["t_land_s"] == pytest.approx(t + row["fall_time_s"])
+    # where: he leaves the wall at his lane's height as planned, lands where the vertical meets the floor's side
+    assert row["height_lost_m"] == 3.2
+    assert row["height_land_m"] == pytest.approx(R + z_land, abs=1e-9)
+    outcomes, _ = act.falls(40, seed=3)
+    fell = [outcomes[i] for i in range(len(outcomes)) if outcomes["outcome"][i] == "falls"]
+    assert fell and all(r["height_lost_m"] == {"Ana": 3.2, "Cal": 1.4}[r["rider"]] for r in fell)
+    assert all(r["height_land_m"] == pytest.approx(R * (1 + math.cos(math.radians(r["theta_land_deg"]))))
+               for r in fell)
 
 
 def test_a_small_drop_rides_on_and_the_alone_rider_has_one_row():
