@@ -64,7 +64,7 @@ def _preflight_output(output) -> bool:
 @cli.command("simulate")
 @param_option("theta", help="Polar angle of the contact point (a vertical orbit: the cone angle, "
               "90 = great circle).")
-@param_option("height", help="A two-wheeler: the rear contact's height above the globe's floor instead of --theta.")
+@param_option("height")
 @params_options("alpha", "speed", "omega", "omega3")
 @single("--branch", type=click.IntRange(0, None), default=0,
         help="Which orbit when several give the request: a sphere with --omega3, the root of eq. 55 (0 slow, "
