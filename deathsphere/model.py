@@ -46,11 +46,15 @@ COLUMNS = (
     "load_g", "max_g",
     # what a disturbance does on an analysed orbit: neutral (the paper's stable), damped or growing
     "stability_kind",
+    # the arena (docs/surfaces.md): which surface, the lane's height, the contact's distance from the axis
+    # and the wall's angle from the horizontal there (on the sphere 180 - theta)
+    "surface", "height_m", "rho_contact_m", "wall_angle_deg",
 )
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
 #: float64 (input_row is int).
-TEXT_COLUMNS = frozenset({"body", "side", "status", "reason", "stability", "stability_method", "stability_kind"})
+TEXT_COLUMNS = frozenset({"body", "side", "status", "reason", "stability", "stability_method", "stability_kind",
+                          "surface"})
 
 #: Physics output key -> contract column.
 _PHYSICS_COLUMNS = {
@@ -76,7 +80,7 @@ REQUEST_FIELDS = {
     "body": (WHEEL.word, "", " | ".join(BODIES)),
     "side": ("inside", "", "inside | outside"),
     **{name: (params.PARAMS[name].default, params.PARAMS[name].unit, params.PARAMS[name].what)
-       for name in ("theta", "alpha", "a", "r", "k", "g", "mu", "max_g", "omega3", "omega", "speed")},
+       for name in ("theta", "alpha", "a", "r", "k", "g", "mu", "max_g", "omega3", "omega", "speed", "height")},
 }
 
 
@@ -193,8 +197,11 @@ def make_requests(n: int, invalid: np.ndarray | None = None, input_row=None, typ
     ``invalid`` is an object array of reasons ('' for rows parsed fine);
     ``typed``: field -> the name an input file's header gave its column
     (a row's refusal names it as typed).
+    ``ground`` (not a column: one for the batch) is the arena when it is not
+    the globe of radius ``r`` (docs/surfaces.md): a lane is then its
+    ``height``.
     """
-    req = {}
+    req = {"ground": fields.get("ground")}
     for name, (default, _, _) in REQUEST_FIELDS.items():
         value = fields.get(name, default)
         if isinstance(value, PaperBodyKind):
@@ -234,11 +241,14 @@ def validate_requests(req: dict) -> np.ndarray:
     reason = req["invalid"].copy()
     pending = reason == ""
     typed = req.get("typed", {})
+    ground = req.get("ground")
+    height = req["height"] if "height" in req else np.full(body.size, np.nan)
     checks = [
         (body_code < 0, lambda i: f"body must be one of {' | '.join(BODIES)} (got {echo(body[i])})"),
         (side_code < 0, lambda i: f"side must be one of {' | '.join(SIDES)} (got {echo(side[i])})"),
-        (np.isnan(req["theta"]), lambda i: "theta is missing (give --theta or a theta column)"),
-    ]
+    ] + (_globe_lane_checks(req, height) if ground is None else _ground_lane_checks(req, height, ground))
+    if ground is None:
+        _theta_from_height(req, height)
 
     def domain(name, given=None):
         # only the values given are checked (an optional input left empty is
@@ -254,11 +264,17 @@ def validate_requests(req: dict) -> np.ndarray:
                 bad &= given
         checks.append((bad, lambda i: as_typed(name, params.problems(name, values[i:i + 1])[0], typed)))
 
-    for name in ("theta", "a", "r", "k", "g", "mu", "max_g"):
+    for name in ("theta", "a", "r", "k", "g", "mu", "max_g") if ground is None else ("a", "k", "g", "mu", "max_g"):
         domain(name)
-    with np.errstate(invalid="ignore"):
-        checks.append((too_big_inside(req["a"], req["r"], side_code != SIDES.index("inside")),
-                       lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
+    domain("height", ~np.isnan(height))
+    if ground is None:
+        with np.errstate(invalid="ignore"):
+            checks.append((too_big_inside(req["a"], req["r"], side_code != SIDES.index("inside")),
+                           lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
+    else:
+        checks.append(((body_code == WHEEL.code) & np.isnan(req["alpha"]),
+                       lambda i: f"on the {ground.name} a wheel needs its tilt alpha (its speed or rate is "
+                                 "solved on the sphere only)"))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
     is_wheel, is_sphere = body_code == WHEEL.code, body_code == BALL.code
     targets = sum((~np.isnan(req[key])).astype(int) for key in WHEEL.held_by)
@@ -275,7 +291,7 @@ def validate_requests(req: dict) -> np.ndarray:
     checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
     # a result CSV fed back carries a sphere's fixed bank angle as alpha_deg: that one is accepted
     tilted_sphere = is_sphere & ~np.isnan(alpha)
-    if tilted_sphere.any():
+    if tilted_sphere.any() and ground is None:
         with np.errstate(invalid="ignore"):
             tilted_sphere &= np.abs(params.reduce_angle(alpha - fixed_bank_angle(req["theta"], outside))) >= 1e-9
     checks.append((tilted_sphere,
@@ -288,6 +304,48 @@ def validate_requests(req: dict) -> np.ndarray:
             reason[i] = words(i)
         pending &= ~hit
     return reason
+
+
+def _lane_word(ground) -> str:
+    # on flat ground a lane is the turn's radius (the plane has no wall to climb)
+    return "height" if hasattr(ground, "highest_lane") else "turn_radius"
+
+
+def _globe_lane_checks(req, height):
+    """The globe's lane: theta, or its height above the floor (not both)."""
+    theta = req["theta"]
+    return [
+        (np.isnan(theta) & np.isnan(height), lambda i: "theta is missing (give --theta or a theta column)"),
+        # both agree in a result CSV fed back: theta is kept
+        (~np.isnan(theta) & ~np.isnan(height)
+         & ~(np.abs(height - req["r"] * (1 + np.cos(np.radians(theta)))) <= 1e-9 * req["r"]),
+         lambda i: "give the lane's theta or its height, not both"),
+        (np.isnan(theta) & (height > 2 * req["r"]),
+         lambda i: f"height must be 0..{params.shown_number(2 * float(req['r'][i]))} m on the sphere "
+                   f"(its diameter; got {params.shown_number(float(height[i]))})"),
+    ]
+
+
+def _ground_lane_checks(req, height, ground):
+    """A lane on another surface: its height (on flat ground its turn radius), never theta."""
+    word = _lane_word(ground)
+    return [
+        (~np.isnan(req["theta"]), lambda i: f"theta is the sphere's polar angle: on the {ground.name} give the "
+                                            f"lane's {word}"),
+        (np.isnan(height), lambda i: f"{word} is missing: on the {ground.name} a lane is its {word}"),
+    ]
+
+
+def _theta_from_height(req, height):
+    """A globe's lane given by its height: theta = arccos(height / r - 1)
+    (the Sphere's own conversion), where it is on the globe."""
+    from deathsphere.physics.ground import Sphere
+
+    with np.errstate(invalid="ignore"):
+        rows = np.isnan(req["theta"]) & (height >= 0) & (height <= 2 * req["r"])
+    if rows.any():
+        req["theta"] = req["theta"].copy()
+        req["theta"][rows] = np.degrees(Sphere(1.0).theta(height[rows] / req["r"][rows]))
 
 
 def _wheel(req, rows):
@@ -374,6 +432,50 @@ SOLVERS = {Wheel: _wheel, Ball: _sphere, Particle: _particle}
 _DEFAULT_K = np.array([body.default_k for body in PAPER_BODIES] + [np.nan])
 
 
+def _ground_wheel(req, rows):
+    from deathsphere.physics import revolution
+
+    res = revolution.wheel_orbit(req["ground"], *(req[key][rows] for key in ("height", "alpha_rad", "a", "k", "g")),
+                                 outside=req["outside"][rows], mu=req["mu"][rows])
+    return [(rows, np.full(rows.size, -1), res)]
+
+
+def _ground_ball(req, rows):
+    """A ball on another surface (docs/surfaces.md S6): as on the sphere,
+    both roots of a spin, one row of a rate."""
+    from deathsphere.physics import revolution
+
+    sel = {key: req[key][rows] for key in ("height", "a", "k", "g", "mu", "omega3", "omega")}
+    outside = req["outside"][rows]
+    spun = ~np.isnan(sel["omega3"])
+    parts = []
+    for m, solve in ((spun, revolution.ball_orbit), (~spun, revolution.ball_orbit_from_rate)):
+        if not m.any():
+            continue
+        second = sel["omega3"][m] if solve is revolution.ball_orbit else sel["omega"][m]
+        res = solve(req["ground"], sel["height"][m], second, sel["a"][m], sel["k"][m], sel["g"][m],
+                    outside=outside[m], mu=sel["mu"][m])
+        res = {key: np.asarray(v).reshape(-1) for key, v in res.items()}
+        res["alpha_deg"] = np.degrees(res.pop("alpha"))       # the ball's bank, 90 - beta inside
+        source = np.repeat(rows[m], 2) if solve is revolution.ball_orbit else rows[m]
+        parts.append((source, res["branch"].astype(int), res))
+    return parts
+
+
+def _ground_particle(req, rows):
+    from deathsphere.physics import revolution
+
+    res = revolution.particle_orbit(req["ground"], req["height"][rows], req["g"][rows], outside=req["outside"][rows],
+                                    mu=req["mu"][rows])
+    return [(rows, np.full(rows.size, -1), res)]
+
+
+#: The solvers on a surface other than the globe (docs/surfaces.md).
+GROUND_SOLVERS = {Wheel: _ground_wheel, Ball: _ground_ball, Particle: _ground_particle}
+#: ``stability_method`` of an orbit on another surface: the exact linearisation is the sphere's.
+NOT_ON_SURFACE = "not computed on this surface (the exact linearisation is the sphere's; docs/surfaces.md)"
+
+
 def evaluate(req: dict, stability: bool = True) -> Table:
     """Evaluate a request batch, in input order.
 
@@ -396,10 +498,12 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     body, body_code = req["body"], req["body_code"]
     bad = np.flatnonzero(~ok)
     parts = [(bad, np.full(bad.size, -1), None)]
+    ground = req.get("ground")
+    solvers = SOLVERS if ground is None else GROUND_SOLVERS
     for one in PAPER_BODIES:
         rows = np.flatnonzero(ok & (body_code == one.code))
         if rows.size:
-            parts.extend(SOLVERS[type(one)](req, rows))
+            parts.extend(solvers[type(one)](req, rows))
 
     source = np.concatenate([p[0] for p in parts]).astype(np.int64)
     branch = np.concatenate([p[1] for p in parts]).astype(np.int64)
@@ -409,6 +513,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     reason = np.empty(m, dtype=object)
     alpha = req["alpha"][source].copy()
     alpha_rad = req["alpha_rad"][source].copy()
+    lane = {"rho_contact_m": np.full(m, np.nan), "wall_angle_deg": np.full(m, np.nan), "z": np.full(m, np.nan)}
     start = 0
     for rows, _, res in parts:
         span = slice(start, start + rows.size)
@@ -421,6 +526,10 @@ def evaluate(req: dict, stability: bool = True) -> Table:
                 out[column][span] = res[key]
         status[span] = res["status"]
         reason[span] = REASON_TEXT[res["reason"]]
+        if "rho_contact" in res:  # a lane on another surface
+            lane["rho_contact_m"][span] = res["rho_contact"]
+            lane["wall_angle_deg"][span] = np.degrees(res["wall_angle"])
+            lane["z"][span] = res["z_contact"]
         if "alpha_deg" in res:  # a wheel's tilt solved from its speed or rate
             alpha[span] = res["alpha_deg"]
             # the orbit analysed is the orbit printed: the tilt as its degrees read back
@@ -431,7 +540,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     # text compared once per request, not per row and column (an object
     # comparison costs a Python call per element)
     is_sphere, is_particle = body_code == BALL.code, body_code == PARTICLE.code
-    if is_sphere.any():
+    if is_sphere.any() and ground is None:
         sphere_alpha = fixed_bank_angle(req["theta"], req["outside"])
         alpha = np.where(is_sphere[source], sphere_alpha[source], alpha)
     particle = is_particle[pick]
@@ -442,7 +551,7 @@ def evaluate(req: dict, stability: bool = True) -> Table:
         "theta_deg": req["theta"][pick],
         "alpha_deg": np.where(particle, np.nan, alpha[order]),
         "a_m": np.where(particle, np.nan, req["a"][pick]),
-        "r_m": req["r"][pick],
+        "r_m": req["r"][pick] if ground is None else np.full(pick.size, float(getattr(ground, "radius", np.nan))),
         "k": req["k"][pick],
         "g_m_s2": req["g"][pick],
         "status": STATUS_LABELS[status[order]],
@@ -470,11 +579,42 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     demoted = finite_or_blank(columns)
     if demoted is not None:
         codes[demoted] = Status.INVALID
-    columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order], codes,
-                                 body_code[pick], req["outside"][pick]) if stability
-                   else _no_stability(len(pick)))
+    if ground is not None:
+        columns.update(_no_stability(len(pick)))
+        if stability:
+            columns["stability_method"][np.isin(codes, LIVE_CODES)] = NOT_ON_SURFACE
+    else:
+        columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order], codes,
+                                     body_code[pick], req["outside"][pick]) if stability
+                       else _no_stability(len(pick)))
+    columns.update(_lane_columns(req, ground, pick, {key: value[order] for key, value in lane.items()},
+                                 codes != Status.INVALID))
     echo_given(columns, {column: req[name][pick] for name, column in ECHOED.items()}, codes != Status.INVALID)
     return Table({name: columns[name] for name in COLUMNS})
+
+
+def _lane_columns(req, ground, pick, lane, valid):
+    """The arena's columns (docs/contract.md): the surface, the lane's height
+    above its lowest point, the contact's distance from the axis and the
+    wall angle there; on the globe from theta (height r (1 + cos theta),
+    rho r sin theta, wall angle 180 - theta)."""
+    n = pick.size
+    if ground is None:
+        theta, r = req["theta"][pick], req["r"][pick]
+        rad = np.radians(theta)
+        given = req["height"][pick] if "height" in req else np.full(n, np.nan)
+        height = np.where(valid, np.where(np.isnan(given), r * (1 + np.cos(rad)), given), np.nan)
+        rho = np.where(valid, r * np.sin(rad), np.nan)
+        wall = np.where(valid, 180.0 - theta, np.nan)
+        return {"surface": np.full(n, "sphere", dtype=object), "height_m": height, "rho_contact_m": rho,
+                "wall_angle_deg": wall}
+    given = req["height"][pick]
+    # the lane's height as the ground places it (on flat ground 0: its lane is a turn radius)
+    placed = lane["z"] - ground.lowest
+    flat = not hasattr(ground, "highest_lane")
+    height = np.where(valid, placed if flat else given, np.nan)
+    return {"surface": np.full(n, ground.name, dtype=object), "height_m": height,
+            "rho_contact_m": lane["rho_contact_m"], "wall_angle_deg": lane["wall_angle_deg"]}
 
 
 #: Statuses of a steady orbit that exists with contact (it may need more

@@ -163,7 +163,17 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     _length("r", "sphere radius", "r", default=TABLE1_SPHERE_RADIUS, flags=("-r", "--sphere-radius"),
             column="r_m", help="Radius of the fixed sphere (the globe); or give --diameter."),
     _length("diameter", "sphere diameter", "2r",
-            help="Diameter of the fixed sphere instead of -r (a globe is sold by its diameter: 16ft)."),
+            help="Diameter of the fixed sphere instead of -r (a globe is sold by its diameter: 16ft); with "
+                 "--surface cylinder or cone the drum's, the cone's at the floor."),
+    # the arena of orbit and sweep (docs/surfaces.md): a surface of revolution by its shape
+    Param("wall_angle", "deg", "wall angle", 0.0, 180.0, lo_open=True, hi_open=True, symbol="β", kind="angle",
+          metavar="DEG",
+          column="wall_angle_deg",
+          help="With --surface cone: the wall's angle from the horizontal, strictly between 0 and 180 (90 = a "
+               "drum; about 80 a well of death, 45..60 a board track; over 90 it leans in)."),
+    _length("wall_height", "wall height", "H", allow_inf=True,
+            help="With --surface cylinder or cone: the wall's height above the floor; no lane above it "
+                 "(default: no top)."),
     Param("k", "", "inertia factor", 0.0, 1e3, symbol="k", metavar="K", flags=("-k", "--inertia"), column="k",
           default_text="0.5 wheel, 0.4 sphere",
           help="Inertia factor: I11 = 2 k m a^2 for a wheel (eq. 1), I = k m a^2 for a sphere."),
@@ -252,19 +262,14 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
             help="Show: the machine's width, handlebar or rider's shoulders, whichever is wider: the diameter "
                  "of the rider's envelope (docs/show.md)."),
     _length("height", "contact height", "z", lo=0.0,
-            help="Ride: height of the contact point above the globe's floor instead of --theta (0 .. the "
-                 "diameter)."),
-    # the arena a machine rides in (docs/machine.md, "On any surface of revolution")
-    Param("surface", "", "arena", 0.0, 0.0, choices=("sphere", "cylinder", "cone"), metavar="SURFACE",
-          default_text="sphere",
-          help="Ride: the arena, the globe (sphere), the wall of death's drum (cylinder) or the well of death "
-               "(cone, with --wall-angle); -r or --diameter its size at the floor."),
-    Param("wall_angle", "deg", "wall angle", 0.0, 180.0, lo_open=True, hi_open=True, symbol="β", kind="angle",
-          metavar="DEG", column="wall_angle_deg",
-          help="Ride, a cone: the wall's angle from the horizontal (90 a drum's wall, under 90 leaning out)."),
-    _length("wall_height", "wall height", "H", allow_inf=False, default=math.inf, default_text="no top",
-            help="Ride, a drum or a cone: the height of the wall's top above the floor; a lane above it is "
-                 "refused."),
+            help="Height of the contact point above the surface's lowest point (the globe's floor: 0 .. the "
+                 "diameter) instead of --theta; on a drum, a cone or a profile (--surface) the lane."),
+    # the arena every command rides in (docs/surfaces.md; docs/machine.md, "On any surface of revolution")
+    Param("surface", "", "arena", 0.0, 0.0, choices=("sphere", "cylinder", "cone", "plane", "profile"),
+          metavar="SURFACE", default_text="sphere",
+          help="The arena: the globe (sphere), the wall of death's drum (cylinder), a well of death or a banked "
+               "track (cone, with --wall-angle), flat ground (plane) or any surface of revolution from its "
+               "meridian (profile, with --profile); --diameter its size at the floor."),
     # the two-wheeler of `deathsphere ride --flat/--steer` (docs/two-wheeler.md)
     Param("rear_speed", "m/s", "rear contact speed", 0.0, HUGE, symbol="v_rear", kind="speed", metavar="M_S"),
     Param("steer_torque", "N m", "steer torque", -HUGE, HUGE, symbol="T_δ", metavar="N_M",
@@ -272,7 +277,8 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
                "steady turn held with it at each --theta/--height, one row each (instead of --speed)."),
     _length("turn_radius", "turn radius", "R_turn",
             help="Simulate, a two-wheeler on flat ground (--flat): start from the steady turn whose rear contact "
-                 "runs on a circle of this radius, turning right (without it: upright straight running)."),
+                 "runs on a circle of this radius, turning right (without it: upright straight running); orbit, "
+                 "sweep with --surface plane: the contact's distance from the turn's centre."),
     Param("duration", "s", "run length in seconds", 0.0, 1e6, lo_open=True, metavar="S",
           help="Simulate, a two-wheeler: how long in seconds instead of --periods (straight running on flat "
                "ground has no period: 5 s unless given), > 0."),

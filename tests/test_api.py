@@ -359,7 +359,9 @@ def test_to_csv_writes_the_command_lines_bytes(table, tmp_path):
 
 def test_repr_shows_the_columns_and_the_first_rows(table):
     text = repr(table)
-    assert text.startswith("Table: 4 rows x 35 columns, shape (2, 2)")
+    from deathsphere.model import COLUMNS
+
+    assert text.startswith(f"Table: 4 rows x {len(COLUMNS)} columns, shape (2, 2)")
     assert "v_cm_m_s" in text and "reason" in text and f"{table['v_cm_m_s'][0]:.6g}" in text
     narrow = Table({"x": np.arange(8.0), "s": np.array(list("abcdefgh"), dtype=object)})
     lines = repr(narrow).splitlines()

@@ -52,6 +52,7 @@ from deathsphere.model import (
 from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import Ball, Wheel
 from deathsphere.requests.decode import decode_paper_body
+from deathsphere.requests.arena import SURFACES  # noqa: F401  (the arenas orbit and sweep take, by name)
 from deathsphere.table import Table
 
 #: Peak memory one call of :func:`orbit` or :func:`~deathsphere.api.vertical`
@@ -91,9 +92,10 @@ def refuse_oversized(arrays: dict, row_bytes: int, call: str, instead: str, per_
             f"in flat memory")
 
 
-def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
+def orbit(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
           mu=INF, omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None,
-          stability: bool = True) -> Table:
+          stability: bool = True, surface="sphere", height=None, wall_angle=None, wall_height=None,
+          profile=None, turn_radius=None) -> Table:
     """Steady horizontal orbits: ``deathsphere orbit``.
 
     McDonald (1993): the fit, eq. (0) (outside: eq. 81); r', eq. (8b); the
@@ -133,6 +135,28 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
         Wheel: centre speed v_cm [m/s]; every tilt alpha giving it, one row each.
     stability : bool
         Fill the stability columns (exact linearisation); False is faster.
+        On surfaces other than the sphere they stay empty (docs/surfaces.md).
+    surface : {"sphere", "cylinder", "cone", "plane", "profile"} or a ground record
+        The arena (docs/surfaces.md): the globe (default; ``r`` or
+        ``diameter``), the wall of death's drum (``diameter``, optional
+        ``wall_height``), the well of death's cone or a banked track
+        (``diameter`` at the floor, ``wall_angle``, optional
+        ``wall_height``), flat ground, or a meridian's samples
+        (``profile``: a CSV file or a Profile); or a record, e.g.
+        ``Cylinder(4.8768, 6.0)``.
+    height : float or array_like, optional
+        The lane's height above the surface's lowest point [m]: on the
+        sphere instead of ``theta``; on a drum, a cone or a profile the lane.
+    wall_angle : float
+        The cone's wall angle from the horizontal [deg], strictly between 0
+        and 180 (90: a drum).
+    wall_height : float
+        The drum's or the cone's wall height [m]: no lane above it.
+    profile : str, path or Profile
+        The meridian's samples (a CSV file with columns rho_m,z_m).
+    turn_radius : float or array_like, optional
+        On flat ground (``surface="plane"``): the contact's distance from
+        the turn's centre [m], the lane.
 
     Returns
     -------
@@ -185,14 +209,17 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     """
     body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    ground, r, diameter, height = _arena_of(surface, r, diameter, wall_angle, wall_height, profile, height,
+                                            turn_radius, theta)
     r = sphere_radius(r, diameter)
     given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "max_g": max_g,
-             "omega3": omega3, "omega": omega, "speed": speed}
+             "omega3": omega3, "omega": omega, "speed": speed, "height": height}
     checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
     refuse_oversized(checked, ORBIT_ROW_BYTES, "deathsphere.orbit()", "deathsphere.sweep()")
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
-    table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, **flat), stability=stability))
+    table = raise_if_all_invalid(evaluate(make_requests(n, body=body, side=side, ground=ground, **flat),
+                                          stability=stability))
     # a wheel solved for its tilt, a ball given its spin: a row per root
     several = (isinstance(body, Wheel) and alpha is None) or (isinstance(body, Ball) and omega3 is not None)
     if keep is not None:
@@ -200,9 +227,50 @@ def orbit(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, 
     return table if several else Table(table.columns, shape=shape)
 
 
+def _arena_of(surface, r, diameter, wall_angle, wall_height, profile, height, turn_radius, theta, axis=False):
+    """The arena of orbit, sweep and orbit --input (docs/surfaces.md):
+    ``(ground, r, diameter, lane height)``, the ground None for the globe
+    (whose radius or diameter, possibly an axis, goes on as before).  On
+    flat ground the lane is ``turn_radius``; elsewhere ``height`` (``axis``:
+    sweep's axis text, checked as an axis by the caller)."""
+    from deathsphere.requests.arena import arena, is_globe, lane_key
+
+    if is_globe(surface):
+        if turn_radius is not None:
+            raise ParameterError("turn_radius is the lane on flat ground (surface plane); on the sphere give theta "
+                                 "or height", "turn_radius")
+        if wall_angle is not None or wall_height is not None or profile is not None:
+            name = "wall_angle" if wall_angle is not None else "wall_height" if wall_height is not None else "profile"
+            raise ParameterError(f"{name} is not a shape of the sphere (it takes r, diameter); choose the surface "
+                                 "(cylinder, cone, profile)", name)
+        if surface is not None and not isinstance(surface, str):
+            if (r is not R and r is not None) or diameter is not None:
+                raise ParameterError("the Sphere record given has its radius; give it or r, not both", "r")
+            r = surface.radius
+        return None, r, diameter, height
+    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
+    if turn_radius is not None and lane_key(ground) != "turn_radius":
+        raise ParameterError(f"turn_radius is the lane on flat ground (surface plane); on the {ground.name} give "
+                             "height", "turn_radius")
+    if is_given(theta):
+        raise ParameterError(f"theta is the sphere's polar angle: on the {ground.name} give the lane's "
+                             f"{lane_key(ground)}", "theta")
+    if lane_key(ground) == "turn_radius":
+        if height is not None:
+            raise ParameterError("on flat ground the lane is its turn_radius, not a height", "height")
+        if turn_radius is None:
+            raise ParameterError("on flat ground give the lane's turn_radius", "turn_radius", missing=True)
+        height = turn_radius if axis else checked_array("turn_radius", turn_radius)
+    elif not is_given(height):
+        raise ParameterError(f"on the {ground.name} give the lane's height (its height above the lowest point)",
+                             "height", missing=True)
+    return ground, R, None, height
+
+
 def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side: str = "inside", g=G, mu=INF,
           omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None, chunk_size: int = CHUNK,
-          stability: bool = True, jobs: int = 1, scheduler=None) -> Chunks:
+          stability: bool = True, jobs: int = 1, scheduler=None, surface="sphere", height=None, wall_angle=None,
+          wall_height=None, profile=None, turn_radius=None) -> Chunks:
     """Every combination of the axes, chunk by chunk: ``deathsphere sweep``
     (and ``deathsphere orbit`` given several values).
 
@@ -220,6 +288,8 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
         option, in order).  Grid order is a, r, k, theta, then speed,
         alpha, omega3 or omega fastest.
     body, side, g, mu : as for :func:`orbit` (one value each).
+    surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit` (one value each).
+    height, turn_radius : the lane on the arena, an axis like theta (after theta in grid order).
     only : str or list of str, optional
         Keep only rows with these statuses (``"ok"``, ``"no_fit"``, ...).
     chunk_size : int
@@ -268,18 +338,21 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     chunk_size, jobs = int(checked_scalar("chunk_size", chunk_size)), int(checked_scalar("jobs", jobs))
     chunk_size = min(chunk_size, MAX_CHUNK_ROWS)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
+    ground, r, diameter, height = _arena_of(surface, r, diameter, wall_angle, wall_height, profile, height,
+                                            turn_radius, theta, axis=True)
     refuse_radius_with_diameter(r, diameter)
     if diameter is not None:
         r = None
-    if not is_given(theta):
+    if not is_given(theta) and ground is None and not is_given(height):
         raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
                              missing=True)
     r_axis = checked_axis("r", r, R) if diameter is None else radii_of(checked_axis("diameter", diameter))
+    lane = "turn_radius" if ground is not None and not hasattr(ground, "highest_lane") else "height"
     axes = {"a": checked_axis("a", a, A), "r": r_axis, "k": checked_axis("k", k), "theta": checked_axis("theta", theta),
-            "speed": checked_axis("speed", speed), "alpha": checked_axis("alpha", alpha), "omega3": checked_axis("omega3", omega3),
+            "height": checked_axis(lane, height), "speed": checked_axis("speed", speed), "alpha": checked_axis("alpha", alpha), "omega3": checked_axis("omega3", omega3),
             "omega": checked_axis("omega", omega)}
     total = checked_grid_size(axes)
-    if len(axes["a"]) == 1 and len(axes["r"]) == 1:
+    if len(axes["a"]) == 1 and len(axes["r"]) == 1 and ground is None:
         # one body in one sphere: a combination that cannot be is bad input,
         # not a grid of invalid rows
         one = np.zeros(1, dtype=np.int64)
@@ -288,11 +361,14 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     # model's validator about the first one (with a and r that always fit,
     # so that only a per-point combination such as r <= a gives invalid rows)
     first = {name: axes[name].take(np.zeros(1, dtype=np.int64))
-             for name in ("theta", "alpha", "k", "omega3", "omega", "speed")}
-    reason = validate_requests(make_requests(1, body=body, side=side, a=1.0, r=2.0, g=g, mu=mu, **first))[0]
+             for name in ("theta", "alpha", "k", "omega3", "omega", "speed", "height")}
+    if ground is None:  # a lane by its height is checked per point against each globe's diameter
+        first["height"] = np.where(np.isnan(first["height"]), np.nan, 0.0)
+    reason = validate_requests(make_requests(1, body=body, side=side, a=1.0, r=2.0, g=g, mu=mu, ground=ground,
+                                             **first))[0]
     if reason:
         raise ParameterError(reason)
-    fixed = dict(body=body, side=side, g=g, mu=mu, max_g=max_g)
+    fixed = dict(body=body, side=side, g=g, mu=mu, max_g=max_g, ground=ground)
     work = partial(evaluate_filtered, stability=stability, keep=keep)
     cluster = cluster_of(scheduler, jobs)
     return Chunks(evaluated(grid_requests(axes, chunk_size, make_requests, fixed), work, jobs, cluster), total)
@@ -300,7 +376,9 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
 
 def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, body=None, side=None,
                 a=None, r=None, diameter=None, k=None, g=None, mu=None, max_g=None, only=None,
-                stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1, scheduler=None) -> Chunks:
+                stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1, scheduler=None,
+                surface="sphere", height=None, wall_angle=None, wall_height=None, profile=None,
+                turn_radius=None) -> Chunks:
     """Horizontal orbits of the requests in a CSV file: ``deathsphere orbit --input FILE``.
 
     The physics of :func:`orbit`, one request per line, streamed: a file of
@@ -319,6 +397,9 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
         it has one (a result CSV fed back with a new ``mu``), else as the
         column.  Not given (None): the file's value, or the parameter's
         default where the file has no column or a cell is empty.
+    surface, wall_angle, wall_height, profile : the arena of every row, as for
+        :func:`orbit`; a row's lane is then its ``height`` (a ``height`` or
+        ``height_m`` column, or ``height``/``turn_radius`` here).
     only, stability, chunk_size, jobs, scheduler : as for :func:`sweep`.
 
     Returns
@@ -352,17 +433,31 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
         overrides["body"] = decode_paper_body(body).word
     if side is not None:
         overrides["side"] = checked_choice("side", side, SIDES)
+    from deathsphere.requests.arena import is_globe
+
+    lane = None if turn_radius is None else one_default("turn_radius", turn_radius)
+    if is_globe(surface):
+        ground = _arena_of(surface, R if r is None else r, diameter, wall_angle, wall_height, profile, None,
+                           turn_radius, None)[0]
+    else:
+        # the file's rows hold the lanes: the arena is checked here with a stand-in lane
+        ground = _arena_of(surface, R if r is None else r, diameter, wall_angle, wall_height, profile, 0.0,
+                           None, None)[0]
+        r = diameter = None
+    height = lane if lane is not None else height
     r = sphere_radius(r, diameter)
     for name, value in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega),
-                        ("speed", speed), ("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu), ("max_g", max_g)):
+                        ("speed", speed), ("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu), ("max_g", max_g),
+                        ("height", height)):
         value = one_default(name, value)
         if value is not None:
             overrides[name] = value
     from deathsphere.inputs import ALIASES
 
-    reader = request_reader(source, REQUEST_FIELDS, overrides, ALIASES, COLUMNS)
+    # a result CSV fed back carries its lanes' heights (on the globe they agree with theta)
+    reader = request_reader(source, REQUEST_FIELDS, overrides, {**ALIASES, "height_m": "height"}, COLUMNS)
     work = partial(evaluate_filtered, stability=stability, keep=keep)
     cluster = cluster_of(scheduler, jobs)
     # a row's refusal names its column as the file's header typed it
-    make = partial(make_requests, typed=reader.typed)
+    make = partial(make_requests, typed=reader.typed, ground=ground)
     return Chunks(evaluated(input_requests(reader, chunk_size, make), work, jobs, cluster))

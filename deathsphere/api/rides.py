@@ -338,11 +338,16 @@ class RideOptions:
 def _arena(surface, r, diameter, wall_angle, wall_height):
     """The drum or cone the keywords name (requests.arena), or None for the
     globe, surface "sphere", which rides as it always has (a wall's keyword
-    on it is refused there)."""
-    from deathsphere.physics.ground import Sphere
+    on it is refused there).  The machine rides the globe, the drum and the
+    cone (docs/machine.md, "On any surface of revolution"); flat ground and
+    a profile are the paper's bodies' so far (docs/surfaces.md)."""
+    from deathsphere.physics.ground import Cone, Cylinder, Sphere
     from deathsphere.requests.arena import arena
 
-    ground = arena(surface, None if (r is R and diameter is not None) else r, diameter, wall_angle, wall_height)
+    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height)
+    if not isinstance(ground, (Sphere, Cylinder, Cone)):
+        raise ParameterError(f"the machine rides the sphere, a cylinder or a cone, not a {ground.name} (the "
+                             "paper's bodies take it: deathsphere orbit --surface)", "surface")
     return None if isinstance(ground, Sphere) else ground
 
 

@@ -109,6 +109,31 @@ def setup_options(*, multiple=(), gravity: bool = True, friction: bool = True):
     return decorator
 
 
+def surface_options():
+    """The arena of orbit and sweep (docs/surfaces.md): --surface and its
+    shape; the lane on it is --height (or --turn-radius on flat ground)."""
+    from deathsphere.api.orbits import SURFACES
+
+    def decorator(f):
+        for option in reversed([
+            single("--surface", type=click.Choice(SURFACES, case_sensitive=False), default=None,
+                   help="The surface rolled on: sphere (the globe, -r or --diameter), cylinder (the wall of "
+                        "death: --diameter, --wall-height), cone (the well of death, a board track: --diameter "
+                        "at the floor, --wall-angle, --wall-height), plane (flat ground: --turn-radius) or "
+                        "profile (--profile FILE) [default: sphere]."),
+            param_option("wall_angle"),
+            param_option("wall_height"),
+            single("--profile", "profile", default=None, metavar="FILE",
+                   help="With --surface profile: a CSV of the meridian's points from the lowest up, header "
+                        "rho_m,z_m (or rho_ft,z_ft ...; docs/surfaces.md)."),
+            param_option("height", multiple=True),
+            param_option("turn_radius", multiple=True),
+        ]):
+            f = option(f)
+        return f
+    return decorator
+
+
 def output_options(formats=FORMATS):
     return single("--format", "fmt", type=click.Choice(formats, case_sensitive=False), default=None,
                   help="Output format [default: table on a terminal, csv when piped].")

@@ -20,6 +20,7 @@ from deathsphere.cli.options import (
     scheduler_option,
     setup_options,
     single,
+    surface_options,
     stability_option,
     units_option,
 )
@@ -33,7 +34,7 @@ ORBIT_TITLES = {
 #: The inputs of a horizontal orbit: grid axes on the command line.
 AXES = ("theta", "alpha", "omega3", "omega", "speed")
 #: The columns an --input file may name.
-INPUT_FIELDS = "theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu, max_g"
+INPUT_FIELDS = "theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu, max_g, height"
 
 
 def centre_speed(speed, com_speed):
@@ -54,6 +55,7 @@ def orbit_options(f):
         input_option(INPUT_FIELDS),
         body_option(),
         setup_options(multiple=("a", "r", "diameter", "k")),
+        surface_options(),
         param_option("max_g"),
         only_option(api.STATUSES),
         stability_option(),
@@ -65,7 +67,7 @@ def orbit_options(f):
 def orbit_chunks(input, stability, only, options, **more):
     """The API call behind orbit and sweep: a file of requests or a grid."""
     if input is not None:
-        for name in ("a", "r", "diameter", "k"):  # one value each with a file
+        for name in ("a", "r", "diameter", "k", "height", "turn_radius"):  # one value each with a file
             if name in options:
                 options[name] = options[name] if len(options[name]) != 1 else options[name][0]
         return api.orbit_input(input, stability=stability, only=only or None, **options, **more)
@@ -76,8 +78,8 @@ def orbit_chunks(input, stability, only, options, **more):
 @orbit_options
 @output_options()
 @units_option()
-def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
-                  stability, fmt, units):
+def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, side, a, r, diameter, k, g, mu,
+                  surface, wall_angle, wall_height, profile, height, turn_radius, max_g, only, stability, fmt, units):
     """Steady horizontal orbit(s): rate (eq. 29), speed, spin, forces, friction, load.
 
     All combinations of the --theta and --alpha values are evaluated.  Each
@@ -92,17 +94,26 @@ def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, si
     --side outside puts the body on the outside of the sphere (sec. 3, 5).
 
     \b
+    Surfaces (docs/surfaces.md): the globe (default), --surface cylinder
+    (the wall of death), cone (the well of death, a board track), plane or
+    profile; a lane there is its --height above the lowest point (on flat
+    ground its --turn-radius), and the stability columns stay empty.
+
+    \b
     Examples:
       deathsphere orbit --theta 60 --alpha 10
       deathsphere orbit --theta 60 --alpha 5:40:5 --mu 1 --format csv
       deathsphere orbit --theta 90 --speed 40km/h --diameter 16ft
       deathsphere orbit --body sphere --theta 60 --omega3 80
       deathsphere orbit --body particle --theta 120:170:10
+      deathsphere orbit --surface cylinder --diameter 32ft --height 2 --alpha 10
       printf 'theta,alpha\\n60,10\\n90,25\\n' | deathsphere orbit --input -
     """
     speed = centre_speed(speed, com_speed)
     options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
-                    a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
+                    a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g, surface=surface,
+                    wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
+                    turn_radius=turn_radius)
     chunks = orbit_chunks(input, stability, only, options)
     title = "Horizontal orbits" if input is not None else ORBIT_TITLES[(body or "wheel").lower()]
     finish(stream(chunks, choose_format(fmt), label="orbits", title=title,
@@ -139,8 +150,9 @@ def sweep_format(fmt: str | None, output: str | None) -> str:
         help="Write to FILE (.csv, .ndjson, .json or .parquet; the format follows the extension) instead "
              "of stdout.  Parquet needs the fast extra.")
 @output_options(tuple(SWEEP_FORMATS))
-def sweep_command(theta, alpha, omega3, omega, speed, com_speed, input, body, side, a, r, diameter, k, g, mu, max_g, only,
-                  stability, chunk_size, jobs, scheduler, output, fmt):
+def sweep_command(theta, alpha, omega3, omega, speed, com_speed, input, body, side, a, r, diameter, k, g, mu,
+                  surface, wall_angle, wall_height, profile, height, turn_radius, max_g, only, stability, chunk_size,
+                  jobs, scheduler, output, fmt):
     """Stream a grid of orbits (all combinations) as CSV, NDJSON, JSON or Parquet.
 
     The options of orbit; -a, -r, --diameter and -k may be grid axes too.
@@ -155,13 +167,16 @@ def sweep_command(theta, alpha, omega3, omega, speed, com_speed, input, body, si
       deathsphere sweep --theta 5:175:1 --alpha 1:89:1 --only ok | head
       deathsphere sweep --theta 60 --alpha 1:50:1 -a 0.1 -a 0.3 --format ndjson
       deathsphere sweep --body sphere --theta 30:150:10 --omega3 60:120:20
+      deathsphere sweep --surface plane --turn-radius 5:50:5 --alpha 45:85:5
       deathsphere sweep --theta 0:180:0.25 --alpha 0:90:0.25 --output grid.parquet
       deathsphere sweep --theta 0:180:0.1 --alpha 0:90:1 --scheduler tcp://h:8786
     """
     fmt = sweep_format(fmt, output)
     speed = centre_speed(speed, com_speed)
     options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
-                    a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
+                    a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g, surface=surface,
+                    wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
+                    turn_radius=turn_radius)
     chunks = orbit_chunks(input, stability, only, options, **given(chunk_size=chunk_size, jobs=jobs,
                                                                         scheduler=scheduler))
     tally = stream(chunks, fmt, label="sweep", output=output)

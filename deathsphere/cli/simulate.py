@@ -64,7 +64,7 @@ def _preflight_output(output) -> bool:
 @cli.command("simulate")
 @param_option("theta", help="Polar angle of the contact point (a vertical orbit: the cone angle, "
               "90 = great circle).")
-@param_option("height", help="A two-wheeler: the rear contact's height above the globe's floor instead of --theta.")
+@param_option("height")
 @param_option("alpha")
 @param_option("speed")
 @param_option("com_speed")

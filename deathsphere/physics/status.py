@@ -84,6 +84,16 @@ class Reason(IntEnum):
     HEAD_HITS_WALL = 51
     MACHINE_HITS_FLOOR = 52
     CONTACT_ON_AXIS = 53
+    LANE_OFF_WALL = 54
+    SURFACE_NO_FIT = 55
+    SURFACE_NO_CONTACT = 56
+    BELOW_FLOOR = 57
+    BALL_FLAT_GROUND = 58
+    BALL_NO_FIT_MERIDIAN = 59
+    PARTICLE_STEEP_WALL = 60
+    PARTICLE_FLAT_GROUND = 61
+    SURFACE_NO_CONTACT_OUTSIDE = 62
+    SURFACE_NO_FIT_OUTSIDE = 63
 
 
 REASONS = {
@@ -145,6 +155,26 @@ REASONS = {
     Reason.MACHINE_HITS_FLOOR: "the tyre or the rider's head reaches the floor at this tilt (machine.md eq. MS7)",
     Reason.CONTACT_ON_AXIS: "the contact is on the vertical axis (theta 0 or 180 deg): it does not move on any "
                             "orbit so no contact speed holds one (give com_speed or alpha)",
+    # any surface of revolution (docs/surfaces.md)
+    Reason.LANE_OFF_WALL: "the lane's height is outside the wall: below the floor (height < 0) or above the "
+                          "wall's top (height > its highest lane)",
+    Reason.SURFACE_NO_FIT: "the wheel's rim does not bend more than the wall along the lane at this tilt "
+                           "(surfaces.md eq. S4 needs a kappa_parallel < sin(alpha + beta))",
+    Reason.SURFACE_NO_CONTACT: "contact force pulls away from the wall (surfaces.md eq. S3 needs "
+                               "r' Omega^2 sin(beta) + g cos(beta) > 0)",
+    Reason.BELOW_FLOOR: "the body reaches below the floor at this lane and tilt (surfaces.md eq. S5)",
+    Reason.BALL_FLAT_GROUND: "a rolling ball has no steady turn on flat ground (surfaces.md eq. S6 at beta = 0 "
+                             "needs Omega^2 r_C = 0)",
+    Reason.BALL_NO_FIT_MERIDIAN: "the ball does not fit the wall's bend: needs a < 1/kappa for both principal "
+                                 "curvatures (surfaces.md eq. S7)",
+    Reason.PARTICLE_STEEP_WALL: "a frictionless particle needs a wall angle under 90 deg (surfaces.md eq. S8: "
+                                "Omega^2 = g tan(beta) / rho)",
+    Reason.PARTICLE_FLAT_GROUND: "on flat ground a frictionless particle cannot turn (surfaces.md eq. S8 gives "
+                                 "Omega = 0)",
+    Reason.SURFACE_NO_CONTACT_OUTSIDE: "contact force pulls into the wall (surfaces.md eq. S3 outside needs "
+                                       "r' Omega^2 sin(beta) + g cos(beta) < 0)",
+    Reason.SURFACE_NO_FIT_OUTSIDE: "would cut into the wall at this tilt (surfaces.md eq. S4 outside needs "
+                                   "sin(alpha + beta) < 0)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

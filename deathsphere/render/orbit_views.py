@@ -102,9 +102,33 @@ BODY_LABELS = {
 }
 
 
+def _on_another_surface(get: dict) -> bool:
+    """A row on a surface other than the globe (docs/surfaces.md)."""
+    return get.get("surface") not in (None, "", "sphere")
+
+
+def _arena_text(get: dict, units: DisplayUnits = AS_TYPED) -> str:
+    """The arena of a row: the globe's radius, or the surface by name."""
+    if not _on_another_surface(get):
+        return globe_text(get, units)
+    if is_undefined(get.get("r_m")):
+        return str(get["surface"])
+    return f"{get['surface']} of radius {quantity_text(get['r_m'], 'm', units.unit('length', ('diameter',)))}"
+
+
+def _lane_text(get: dict, units: DisplayUnits = AS_TYPED) -> str:
+    """Where the row's lane is: θ on the globe; elsewhere the contact's
+    height, distance from the axis and the wall's angle."""
+    if not _on_another_surface(get):
+        return f"θ = {format_number(get['theta_deg'])}°"
+    height = quantity_text(get["height_m"], "m", units.unit("length", ("height",)))
+    return (f"h = {height}, ρ = {format_number(get['rho_contact_m'])} m, "
+            f"β = {format_number(get['wall_angle_deg'])}°")
+
+
 def _setup_line(get: dict, units: DisplayUnits = AS_TYPED) -> str:
     a = quantity_text(get["a_m"], "m", units.unit("length", ("a",)))
-    return (f"a = {a}, {globe_text(get, units)}, "
+    return (f"a = {a}, {_arena_text(get, units)}, "
             f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
 
 
@@ -151,7 +175,7 @@ def spin_too_low(get: dict) -> bool:
 def one_orbit_table(table: Table, row: int = 0, units: DisplayUnits = AS_TYPED) -> FitTable:
     """A two-column view of every quantity of one orbit (undefined ones as —)."""
     get = row_record(table, row)
-    angles = f"θ = {format_number(get['theta_deg'])}°"
+    angles = _lane_text(get, units)
     if not is_undefined(get["alpha_deg"]):
         angles += f", α = {format_number(get['alpha_deg'])}°"
     specs = []
@@ -177,6 +201,7 @@ def _styled(styles: dict):
 SUMMARY_SPECS = {spec.key: spec for spec in (
     ColumnSpec("input_row", "#"),
     ColumnSpec("theta_deg", "θ", "°", kind="angle", params=("theta",)),
+    ColumnSpec("height_m", "h", "m", kind="length", params=("height",)),
     ColumnSpec("alpha_deg", "α", "°", kind="angle", params=("alpha",)),
     ColumnSpec("branch", "br"),
     ColumnSpec("omega3_rad_s", "ω₃", "rad/s", kind="rate", params=("omega3",)),
@@ -264,8 +289,13 @@ def many_orbits_table(table: Table, title: str | None = None, total_rows: int | 
     head = first_rows(table, MAX_TERMINAL_ROWS)
     bodies = set(head.columns["body"].tolist())
     kind = bodies.pop() if len(bodies) == 1 else "mixed"
+    specs = summary_specs(kind)
+    if "surface" in head and any(s not in ("", "sphere") for s in head.columns["surface"].tolist()):
+        # off the globe a lane is its height (theta is the sphere's)
+        specs = [replace(SUMMARY_SPECS["height_m"], drop=spec.drop) if spec.key == "theta_deg" else spec
+                 for spec in specs]
     # the number format looked up here, at the call: the view's own
-    return build_table(table, summary_specs(kind), units=units, title=title, total_rows=total_rows,
+    return build_table(table, specs, units=units, title=title, total_rows=total_rows,
                        notes=[*status_legend(head), *_spin_lines(head)], number=format_number)
 
 

@@ -1,77 +1,147 @@
-"""The arena a rider rides in, from the keywords a user types: the globe, the
-wall of death's drum or the well of death's cone (beyond the paper; docs/
-machine.md, "On any surface of revolution").  The one place a surface's
-name becomes a ground of the ground protocol."""
+"""The arena a run rides in: one ground record from the keywords (and so the
+command line's options) that name a surface and its shape
+(docs/surfaces.md): the globe, the wall of death's drum, the well of
+death's cone, flat ground or a profile read from its file.  Every command
+builds its ground here, so that a refusal names what was typed the same
+way everywhere."""
 
 from __future__ import annotations
 
 import math
 
+from deathsphere import params
 from deathsphere.errors import ParameterError
-from deathsphere.params import PARAMS, choice, problems
-from deathsphere.physics.ground import Cone, Cylinder, Sphere
-from deathsphere.units import parse_value
+from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Profile, Sphere
 
-__all__ = ["SURFACES", "arena", "names_a_wall"]
+__all__ = ["SURFACES", "SHAPE_KEYS", "arena", "is_globe", "lane_key", "names_a_wall"]
 
-#: The surfaces a machine rides on, by the name typed (``--surface``).
-SURFACES = PARAMS["surface"].choices
+#: The surfaces by name (``--surface``); the sphere is the paper's globe.
+SURFACES = ("sphere", "cylinder", "cone", "plane", "profile")
+#: The keywords that give a surface its shape, and the surfaces taking each.
+SHAPE_KEYS = {
+    "r": ("sphere", "cylinder", "cone"),
+    "diameter": ("sphere", "cylinder", "cone"),
+    "wall_angle": ("cone",),
+    "wall_height": ("cylinder", "cone"),
+    "profile": ("profile",),
+}
+#: What each surface must be given (besides the sphere's default radius).
+_REQUIRED = {"cone": ("wall_angle",), "profile": ("profile",)}
 
 
-def _one(name: str, raw, kind: str) -> float:
-    """One value of the registry's ``name``, a number or text with a unit;
-    refused in one line naming the keyword."""
-    if isinstance(raw, bool):
-        raise ParameterError(f"{name} takes one number (got {raw!r})", name)
-    if isinstance(raw, (list, tuple)) and len(raw) == 1:
-        raw = raw[0]
+def _one(name: str, value) -> float:
+    """One allowed value of a shape keyword (a number or its text with a unit)."""
+    from deathsphere import units
+
+    kind = params.PARAMS[name].kind
+    if isinstance(value, (list, tuple)):
+        if len(value) != 1:
+            raise ParameterError(f"{name} takes one value: one arena a run (got {len(value)})", name)
+        value = value[0]
+    if isinstance(value, str):
+        value = units.parse_value(value, kind, name)
     try:
-        value = parse_value(raw, kind, name) if isinstance(raw, str) else float(raw)
-    except ParameterError:
-        raise
+        number = float(value)
     except (TypeError, ValueError):
-        raise ParameterError(f"{name} takes one number (got {raw!r})", name) from None
-    reason = problems(name, [value])[0]
+        raise ParameterError(f"{name} takes one number (got {value!r})", name) from None
+    reason = params.first_problem(name, [number])
     if reason:
         raise ParameterError(reason, name)
-    return value
+    return number
 
 
-def arena(surface="sphere", r=None, diameter=None, wall_angle=None, wall_height=None):
-    """The ground named ``surface`` (``sphere``, ``cylinder``, ``cone``) of
-    radius ``r`` [m] or ``diameter`` (one of them; for the drum and the
-    cone, the radius where the wall meets the floor), its wall at
-    ``wall_angle`` [deg] from the horizontal (the cone's; the drum's is 90)
-    up to ``wall_height`` [m] (None: no top).  Values may be text with a
-    unit (``"32ft"``).  A keyword the surface does not take is refused in
-    one line naming it."""
-    name = choice("surface", surface if surface is not None else "sphere", SURFACES)
-    if r is not None and diameter is not None:
-        raise ParameterError("give the radius r or the diameter, not both", "diameter")
-    if r is None and diameter is None:
-        raise ParameterError(f"a {name} needs its size: give r or diameter", "diameter", missing=True)
-    radius = _one("r", r, "length") if diameter is None else _one("diameter", diameter, "length") / 2.0
+def is_globe(surface) -> bool:
+    """True for the default arena: the sphere by name (or not given) or a
+    Sphere record."""
+    return surface is None or isinstance(surface, Sphere) or (isinstance(surface, str)
+                                                             and surface.strip().lower() == "sphere")
+
+
+def arena(surface="sphere", r=None, diameter=None, wall_angle=None, wall_height=None, profile=None) -> Ground:
+    """The ground record of ``surface`` and its shape.
+
+    Parameters
+    ----------
+    surface : str or a ground record
+        ``"sphere"`` (radius ``r`` or ``diameter``), ``"cylinder"`` (the
+        drum: ``diameter``, optional ``wall_height``), ``"cone"``
+        (``diameter`` at the floor, ``wall_angle`` [deg] strictly between
+        0 and 180, optional ``wall_height``), ``"plane"`` (no shape) or
+        ``"profile"`` (``profile``: a CSV file's path or a Profile); or a
+        ground record (Sphere, Cylinder, Cone, Plane, Profile), returned as
+        it is (no shape keywords with it).
+    r, diameter, wall_height : float or text with a length unit ([m])
+    wall_angle : float or text with an angle unit ([deg])
+
+    Raises
+    ------
+    ParameterError
+        One line naming the keyword: an unknown surface, a shape keyword
+        the surface does not take, a missing one, a value out of bounds, a
+        profile file that cannot be read.
+    """
+    given = {name: value for name, value in (("r", r), ("diameter", diameter), ("wall_angle", wall_angle),
+                                             ("wall_height", wall_height), ("profile", profile))
+             if value is not None}
+    if isinstance(surface, Ground) and not isinstance(surface, (str, type)):
+        if given:
+            name = next(iter(given))
+            raise ParameterError(f"{name}: the surface record given has its shape already; give the record or "
+                                 "the shape keywords, not both", name)
+        return surface
+    if surface is None:
+        surface = "sphere"
+    if not isinstance(surface, str):
+        raise ParameterError(f"surface must be one of {' | '.join(SURFACES)} or a ground record (got {surface!r})",
+                             "surface")
+    name = surface.strip().lower()
+    if name not in SURFACES:
+        raise ParameterError(f"surface must be one of {' | '.join(SURFACES)} (got {surface!r})", "surface")
+    for key in given:
+        if name not in SHAPE_KEYS[key]:
+            takes = ", ".join(k for k, on in SHAPE_KEYS.items() if name in on) or "no shape keywords"
+            raise ParameterError(f"{key} is not a shape of the {name} (it takes {takes})", key)
+    for key in _REQUIRED.get(name, ()):
+        if key not in given:
+            raise ParameterError(f"a {name} needs its {key.replace('_', ' ')} ({key})", key, missing=True)
+    if "r" in given and "diameter" in given:
+        raise ParameterError(f"give the {name}'s radius r or its diameter, not both", "diameter")
+    if name in ("cylinder", "cone") and "r" not in given and "diameter" not in given:
+        raise ParameterError(f"a {name} needs its size: its diameter (or radius r) at the floor", "diameter",
+                             missing=True)
     if name == "sphere":
-        for key, value in (("wall_angle", wall_angle), ("wall_height", wall_height)):
-            if value is not None:
-                raise ParameterError(f"{key} is a drum's or a cone's (surface cylinder or cone), not the "
-                                     "sphere's", key)
+        radius = _one("r", given["r"]) if "r" in given else (
+            _one("diameter", given["diameter"]) / 2.0 if "diameter" in given else params.PARAMS["r"].default)
         return Sphere(radius)
-    top = math.inf if wall_height is None else _one("wall_height", wall_height, "length")
+    if name == "plane":
+        return Plane()
+    if name == "profile":
+        if isinstance(given["profile"], Profile):
+            return given["profile"]
+        from deathsphere.records.profile_files import profile_file
+
+        return profile_file(given["profile"])
+    radius = _one("r", given["r"]) if "r" in given else _one("diameter", given["diameter"]) / 2.0
+    top = _one("wall_height", given["wall_height"]) if "wall_height" in given else math.inf
     if name == "cylinder":
-        if wall_angle is not None and _one("wall_angle", wall_angle, "angle") != 90.0:
-            raise ParameterError("a cylinder's wall is vertical (wall_angle 90): give surface cone for another "
-                                 "angle", "wall_angle")
         return Cylinder(radius, top)
-    if wall_angle is None:
-        raise ParameterError("a cone needs its wall_angle (degrees from the horizontal, > 0 and < 180)",
-                             "wall_angle", missing=True)
-    return Cone(radius, math.radians(_one("wall_angle", wall_angle, "angle")), top)
+    return Cone(radius, math.radians(_one("wall_angle", given["wall_angle"])), top)
 
 
-def names_a_wall(surface=None, wall_angle=None, wall_height=None) -> bool:
-    """True when the keywords ask for a drum or a cone (a surface other than
-    the globe, or a wall's option), False for the globe; an unknown surface
-    is refused in one line."""
-    name = choice("surface", surface if surface is not None else "sphere", SURFACES)
-    return wall_angle is not None or wall_height is not None or name != "sphere"
+def lane_key(ground) -> str:
+    """The keyword that names a lane on ``ground``: ``height`` (up a wall),
+    or ``turn_radius`` on flat ground, which has no wall to climb (no
+    highest lane)."""
+    return "height" if hasattr(ground, "highest_lane") else "turn_radius"
+
+
+def names_a_wall(surface=None, wall_angle=None, wall_height=None, profile=None) -> bool:
+    """True when the keywords ask for an arena other than the globe (a
+    surface other than the sphere, or a wall's or a profile's keyword);
+    an unknown surface is refused in one line."""
+    if surface is not None and not isinstance(surface, str):
+        return not isinstance(surface, Sphere)
+    name = (surface if surface is not None else "sphere").strip().lower()
+    if name not in SURFACES:
+        raise ParameterError(f"surface must be one of {' | '.join(SURFACES)} (got {surface!r})", "surface")
+    return name != "sphere" or any(v is not None for v in (wall_angle, wall_height, profile))

@@ -1,0 +1,233 @@
+"""Any surface of revolution, from samples of its meridian (beyond the paper;
+docs/surfaces.md, "Profiles").
+
+The meridian is interpolated as a parametric cubic spline, rho(s) and z(s)
+over the cumulative chord length s between the samples (scipy's
+``CubicSpline``, not-a-knot ends): its slope and curvature are continuous,
+and, unlike a spline of rho(z), it stays well conditioned where the wall
+is nearly flat (the bottom of a bowl, whose meridian leaves the axis
+horizontally).  A lane is given by its height, so z must rise along the
+meridian: strictly from sample to sample, and the interpolated z(s) too
+(checked on a fine table, so that a lane's height names one parallel).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["Profile", "ProfileError", "KINK_DEG", "MIN_POINTS"]
+
+#: The largest turn of the tangent [deg] between neighbouring chords: a
+#: sharper corner is a kink, whose curvature the spline would smear into a
+#: spike (a lane there would see a wall that is not the one sampled).
+KINK_DEG = 30.0
+#: The fewest samples of a meridian (a cubic needs four).
+MIN_POINTS = 4
+#: Samples of the fine table per interval between two rows (the inverse of
+#: z(s) and the nearest point of the meridian start from it; Newton's
+#: method then converges in a few steps).
+_FINE = 32
+_NEWTON = 4
+
+
+class ProfileError(ValueError):
+    """Samples that are not a meridian a lane can be found on; the message
+    is one line naming the row (the physics raises no API error: the
+    readers and :func:`deathsphere.requests.arena.arena` turn it into the
+    ParameterError of the option or file that gave the samples)."""
+
+
+def _refuse(message: str):
+    raise ProfileError(f"profile: {message}")
+
+
+class Profile:
+    """A surface of revolution about the z-axis whose meridian passes
+    through the samples ``(rho[i], z[i])`` [m] (rho >= 0 from the axis, z
+    up, from the lowest point upwards); the inside is the side the
+    meridian's normal (-sin beta, cos beta) points to (a bowl's or a
+    drum's interior).  A lane's height is z - z[0], from 0 to
+    ``highest_lane`` = z[-1] - z[0].  Refuses, naming the row (1 = the
+    first sample): fewer than :data:`MIN_POINTS` samples, a value that is
+    not finite, a negative rho, z not rising strictly, a kink (the
+    tangent turning by more than :data:`KINK_DEG` between neighbouring
+    chords), or an interpolated meridian that turns down between rows."""
+
+    name = "profile"
+
+    def __init__(self, rho, z):
+        from scipy.interpolate import CubicSpline
+
+        rho, z = np.asarray(rho, dtype=float).reshape(-1), np.asarray(z, dtype=float).reshape(-1)
+        if rho.size != z.size:
+            _refuse(f"rho and z must have the same number of values (got {rho.size} and {z.size})")
+        if rho.size < MIN_POINTS:
+            _refuse(f"a meridian needs at least {MIN_POINTS} points (got {rho.size})")
+        bad = ~(np.isfinite(rho) & np.isfinite(z))
+        if bad.any():
+            _refuse(f"row {np.flatnonzero(bad)[0] + 1}: rho and z must be finite numbers")
+        if (rho < 0).any():
+            i = np.flatnonzero(rho < 0)[0]
+            _refuse(f"row {i + 1}: rho is the distance from the axis, >= 0 (got {rho[i]:g})")
+        dz = np.diff(z)
+        if (dz <= 0).any():
+            i = np.flatnonzero(dz <= 0)[0] + 1
+            _refuse(f"row {i + 1}: z must rise strictly from row to row, a lane being its height "
+                    f"(got {z[i]:g} after {z[i - 1]:g})")
+        chord = np.hypot(np.diff(rho), dz)
+        heading = np.arctan2(dz, np.diff(rho))
+        turn = np.degrees(np.abs(np.diff(heading)))
+        if (turn > KINK_DEG).any():
+            i = np.flatnonzero(turn > KINK_DEG)[0] + 1
+            _refuse(f"row {i + 1}: the meridian turns by {turn[i - 1]:.3g} deg there, a kink (at most "
+                    f"{KINK_DEG:g} deg between neighbouring segments; sample the bend more finely)")
+        s = np.concatenate(([0.0], np.cumsum(chord)))
+        self.rho_samples, self.z_samples = rho, z
+        self._spline = CubicSpline(s, np.column_stack((rho, z)))
+        self._d1, self._d2 = self._spline.derivative(1), self._spline.derivative(2)
+        self._s_end = float(s[-1])
+        fine = np.concatenate([np.linspace(s[i], s[i + 1], _FINE, endpoint=False) for i in range(s.size - 1)]
+                              + [s[-1:]])
+        points = self._spline(fine)
+        # the bottom of a bowl leaves the axis flat: z may rise from it only
+        # to second order, and rho may dip below 0 by round-off
+        rising = np.diff(points[:, 1]) > 0
+        crossing = points[1:, 0] < -1e-9 * self._s_end
+        if not rising.all() or crossing.any():
+            j = int(np.searchsorted(s, fine[np.flatnonzero(~rising | crossing)[0]], side="right"))
+            _refuse(f"between rows {j} and {j + 1} the interpolated meridian turns down or crosses the axis "
+                    "(sample it more finely there)")
+        self._fine_s, self._fine_rho, self._fine_z = fine, points[:, 0], points[:, 1]
+        from scipy.spatial import cKDTree
+
+        self._tree = cKDTree(points)
+
+    #: z of the lowest point [m].
+    @property
+    def lowest(self) -> float:
+        return float(self.z_samples[0])
+
+    @property
+    def highest_lane(self) -> float:
+        """The greatest height a lane can have [m] (the last sample's)."""
+        return float(self.z_samples[-1] - self.z_samples[0])
+
+    def __repr__(self) -> str:
+        return f"Profile({self.rho_samples.size} points, rho {self.rho_samples.min():g}..{self.rho_samples.max():g} m, " \
+               f"height {self.highest_lane:g} m)"
+
+    # --- the meridian by its parameter -------------------------------------
+
+    def _s_of_height(self, height):
+        """The spline's parameter s at each height (z = lowest + height):
+        a guess from the fine table, then Newton's method on z(s); clipped
+        to the meridian."""
+        target = self.lowest + np.asarray(height, dtype=float)
+        s = np.interp(target, self._fine_z, self._fine_s)
+        for _ in range(_NEWTON):
+            z, dz = self._spline(s)[..., 1], self._d1(s)[..., 1]
+            ok = dz > 0
+            s = np.clip(s - np.where(ok, (z - target) / np.where(ok, dz, 1.0), 0.0), 0.0, self._s_end)
+        return s
+
+    def _frame(self, s):
+        d1 = self._d1(s)
+        speed = np.hypot(d1[..., 0], d1[..., 1])
+        return d1[..., 0] / speed, d1[..., 1] / speed          # cos beta, sin beta
+
+    def contact(self, height):
+        p = self._spline(self._s_of_height(height))
+        return np.maximum(p[..., 0], 0.0), p[..., 1]
+
+    def wall_angle(self, height):
+        d1 = self._d1(self._s_of_height(height))
+        return np.arctan2(d1[..., 1], d1[..., 0])
+
+    def normal(self, height):
+        cos_b, sin_b = self._frame(self._s_of_height(height))
+        return -sin_b, cos_b
+
+    def curvatures(self, height):
+        s = self._s_of_height(height)
+        d1, d2 = self._d1(s), self._d2(s)
+        speed = np.hypot(d1[..., 0], d1[..., 1])
+        # d(beta)/ds: positive where the meridian bends towards the inside normal
+        k_mer = (d1[..., 0] * d2[..., 1] - d1[..., 1] * d2[..., 0]) / speed ** 3
+        rho = self._spline(s)[..., 0]
+        on_axis = rho <= 1e-12 * max(self._s_end, 1.0)
+        # Meusnier: sin(beta) / rho; on the axis the surface is umbilic
+        k_par = np.where(on_axis, k_mer, d1[..., 1] / speed / np.where(on_axis, 1.0, rho))
+        return k_mer, k_par
+
+    # --- points off the surface ---------------------------------------------
+
+    def _nearest(self, rho, z):
+        """The parameter of the meridian's point nearest to each (rho, z):
+        the fine table's nearest sample, then Newton's method on
+        (P(s) - q) . P'(s) = 0."""
+        rho, z = np.broadcast_arrays(np.asarray(rho, dtype=float), np.asarray(z, dtype=float))
+        q = np.stack((rho, z), axis=-1)
+        _, index = self._tree.query(q.reshape(-1, 2))
+        s = self._fine_s[index].reshape(rho.shape)
+        for _ in range(_NEWTON):
+            p, d1, d2 = self._spline(s), self._d1(s), self._d2(s)
+            diff = p - q
+            f = np.sum(diff * d1, axis=-1)
+            df = np.sum(d1 * d1, axis=-1) + np.sum(diff * d2, axis=-1)
+            step = np.where(df > 0, f / np.where(df > 0, df, 1.0), 0.0)
+            s = np.clip(s - step, 0.0, self._s_end)
+        return s, q
+
+    def clearance(self, rho, z):
+        """A point's distance [m] from the interpolated meridian, positive
+        on the inside: (q - P) . n at the nearest point P (past an end, the
+        distance from the end's tangent line)."""
+        s, q = self._nearest(rho, z)
+        cos_b, sin_b = self._frame(s)
+        diff = q - self._spline(s)
+        return diff[..., 0] * -sin_b + diff[..., 1] * cos_b
+
+    def implicit(self, x, y, z):
+        """F = -clearance: the signed distance from the surface (F < 0 inside)."""
+        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float),
+                                      np.asarray(z, dtype=float))
+        return -self.clearance(np.hypot(x, y), z)
+
+    def _radial(self, x, y):
+        rho = np.hypot(x, y)
+        on_axis = rho == 0
+        # on the axis the values are the limit along +x (as the cone's)
+        return np.where(on_axis, 1.0, x / np.where(on_axis, 1.0, rho)), np.where(on_axis, 0.0, y / np.where(
+            on_axis, 1.0, rho)), rho
+
+    def gradient(self, x, y, z):
+        """grad F = -n at the nearest point, lifted off the meridian plane:
+        (sin beta rho-hat, -cos beta)."""
+        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float),
+                                      np.asarray(z, dtype=float))
+        ux, uy, rho = self._radial(x, y)
+        s, _ = self._nearest(rho, z)
+        cos_b, sin_b = self._frame(s)
+        return np.stack((sin_b * ux, sin_b * uy, -cos_b))
+
+    def hessian(self, x, y, z):
+        """The signed distance's second derivatives: kappa_m / (1 - c kappa_m)
+        along the meridian's tangent (c the clearance, kappa_m the nearest
+        point's meridian curvature), F_rho / rho = sin(beta) / rho along the
+        parallel, 0 along the normal (docs/surfaces.md, "Profiles")."""
+        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float),
+                                      np.asarray(z, dtype=float))
+        ux, uy, rho = self._radial(x, y)
+        s, q = self._nearest(rho, z)
+        d1, d2 = self._d1(s), self._d2(s)
+        speed = np.hypot(d1[..., 0], d1[..., 1])
+        cos_b, sin_b = d1[..., 0] / speed, d1[..., 1] / speed
+        k_mer = (d1[..., 0] * d2[..., 1] - d1[..., 1] * d2[..., 0]) / speed ** 3
+        diff = q - self._spline(s)
+        c = diff[..., 0] * -sin_b + diff[..., 1] * cos_b
+        along = k_mer / (1.0 - c * k_mer)
+        around = np.where(rho > 0, sin_b / np.where(rho > 0, rho, 1.0), along)
+        t = np.stack((cos_b * ux, cos_b * uy, sin_b))
+        phi = np.stack((-uy, ux, np.zeros_like(ux)))
+        return along * t[:, None] * t[None, :] + around * phi[:, None] * phi[None, :]
+

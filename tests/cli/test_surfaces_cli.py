@@ -1,0 +1,123 @@
+"""orbit and sweep on the other surfaces (docs/surfaces.md): the arena's
+options, its columns, and every bad input refused in one line (exit 2), or
+in a batch as the row's status and reason."""
+
+import csv
+import io
+
+import numpy as np
+import pytest
+
+import deathsphere
+from deathsphere.physics import revolution
+from deathsphere.physics.ground import Cone, Cylinder
+
+
+def rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_the_wall_of_death_through_the_command_line(run):
+    res = run("orbit", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "6", "--height", "2",
+              "--alpha", "10", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    (row,) = rows(res.stdout)
+    assert row["surface"] == "cylinder" and row["theta_deg"] == "" and row["status"] == "ok"
+    assert float(row["r_m"]) == pytest.approx(4.8768) and float(row["height_m"]) == 2.0
+    assert float(row["wall_angle_deg"]) == 90.0 and float(row["rho_contact_m"]) == pytest.approx(4.8768)
+    want = revolution.wheel_orbit(Cylinder(4.8768, 6.0), 2.0, np.radians(10.0), 0.3, 0.5, 9.80665)
+    assert float(row["mu_required"]) == pytest.approx(float(want["mu_required"]), rel=1e-15)
+    # the wall of death's rule, independent of the code: mu = g r' / v^2
+    rp, v = float(row["r_prime_m"]), float(row["v_cm_m_s"])
+    assert float(row["mu_required"]) == pytest.approx(9.80665 * rp / v ** 2, rel=1e-12)
+    assert row["stability"] == "" and "not computed on this surface" in row["stability_method"]
+
+
+def test_a_cone_sweep_and_the_api_agree(run):
+    res = run("sweep", "--surface", "cone", "--diameter", "6", "--wall-angle", "80", "--height", "0:4:2",
+              "--alpha", "5", "--alpha", "10", "--no-stability")
+    assert res.exit_code == 0, res.stderr
+    got = rows(res.stdout)
+    table = deathsphere.orbit(surface="cone", diameter=6, wall_angle=80, height=[[0], [2], [4]], alpha=[5, 10],
+                              stability=False)
+    assert [float(r["v_cm_m_s"]) for r in got] == table["v_cm_m_s"].tolist()
+    assert {r["surface"] for r in got} == {"cone"}
+    record = deathsphere.orbit(surface=Cone(3.0, np.radians(80.0)), height=2, alpha=10, stability=False)
+    assert float(record["v_cm_m_s"]) == float(table.grid("v_cm_m_s")[1, 1])
+
+
+def test_the_globe_by_height_is_the_globe_by_theta(run):
+    by_theta = rows(run("orbit", "--theta", "60", "--alpha", "10", "--format", "csv").stdout)[0]
+    by_height = rows(run("orbit", "--height", "4.5", "--alpha", "10", "--format", "csv").stdout)[0]
+    assert float(by_height["theta_deg"]) == pytest.approx(60.0, abs=1e-12)
+    assert float(by_height["v_cm_m_s"]) == pytest.approx(float(by_theta["v_cm_m_s"]), rel=1e-12)
+    assert by_theta["surface"] == "sphere" and float(by_theta["wall_angle_deg"]) == 120.0
+
+
+def test_flat_ground_and_a_profile(run, tmp_path):
+    res = run("orbit", "--surface", "plane", "--turn-radius", "10", "--alpha", "70", "--format", "csv")
+    (row,) = rows(res.stdout)
+    assert row["surface"] == "plane" and float(row["rho_contact_m"]) == 10.0 and float(row["height_m"]) == 0.0
+    path = tmp_path / "drum.csv"
+    path.write_text("rho_ft,z_ft\n16,0\n16,5\n16,10\n16,20\n")
+    res = run("orbit", "--surface", "profile", "--profile", str(path), "--height", "2", "--alpha", "10",
+              "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    drum = rows(run("orbit", "--surface", "cylinder", "--diameter", "32ft", "--height", "2", "--alpha", "10",
+                    "--format", "csv").stdout)[0]
+    (row,) = rows(res.stdout)
+    assert row["surface"] == "profile" and row["r_m"] == ""
+    assert float(row["mu_required"]) == pytest.approx(float(drum["mu_required"]), rel=1e-10)
+
+
+def test_an_input_batch_on_a_drum_gives_a_row_per_line(run, tmp_path):
+    path = tmp_path / "lanes.csv"
+    path.write_text("height,alpha\n1,10\n9,10\noops,5\n-1,5\n")
+    res = run("orbit", "--input", str(path), "--surface", "cylinder", "--diameter", "9", "--wall-height", "6",
+              "--format", "csv")
+    got = rows(res.stdout)
+    assert [r["status"] for r in got] == ["ok", "no_fit", "invalid", "invalid"]
+    assert "outside the wall" in got[1]["reason"] and "not a number" in got[2]["reason"]
+    assert "height" in got[3]["reason"]
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--surface", "drum", "--height", "1", "--alpha", "10"], "--surface"),
+    (["--surface", "cone", "--diameter", "6", "--height", "1", "--alpha", "10"], "--wall-angle"),
+    (["--surface", "cone", "--diameter", "6", "--wall-angle", "0", "--height", "1", "--alpha", "10"],
+     "must be > 0 and < 180"),
+    (["--surface", "cone", "--diameter", "6", "--wall-angle", "180", "--height", "1", "--alpha", "10"],
+     "must be > 0 and < 180"),
+    (["--surface", "cylinder", "--height", "1", "--alpha", "10"], "diameter"),
+    (["--surface", "cylinder", "--diameter", "9", "--theta", "60", "--alpha", "10"], "theta is the sphere's"),
+    (["--surface", "cylinder", "--diameter", "9", "--alpha", "10"], "height"),
+    (["--surface", "cylinder", "--diameter", "9", "--wall-angle", "80", "--height", "1", "--alpha", "10"],
+     "not a shape of the cylinder"),
+    (["--surface", "plane", "--height", "1", "--alpha", "10"], "turn_radius"),
+    (["--theta", "60", "--alpha", "10", "--wall-height", "3"], "not a shape of the sphere"),
+    (["--surface", "cylinder", "--diameter", "9", "--height", "1", "--speed", "10"], "needs its tilt alpha"),
+])
+def test_bad_arena_options_are_one_line_and_exit_2(run, args, words):
+    res = run("orbit", *args, "--format", "csv")
+    assert res.exit_code == 2, (res.exit_code, res.stdout)
+    assert res.stderr.count("\n") == 1 and words in res.stderr and "Traceback" not in res.stderr
+
+
+def test_a_lane_off_the_wall_is_a_status(run):
+    res = run("orbit", "--surface", "cylinder", "--diameter", "9", "--wall-height", "3", "--height", "2",
+              "--height", "4", "--alpha", "10", "--format", "csv")
+    got = rows(res.stdout)
+    assert [r["status"] for r in got] == ["ok", "no_fit"] and "above the wall's top" in got[1]["reason"]
+
+
+@pytest.mark.parametrize("text, words", [
+    (b"", "empty"),
+    (b"rho_m,z_m\n\x00\x01\n", "not a text file"),
+    (b"rho_m,z_m\n1,0\n1,2\n1,1\n1,3\n", "row 3: z must rise strictly"),
+    (b"rho_m,z_m\n1,0\n1,1\n2,2\n3,2.2\n4,2.4\n", "turns by 45"),
+])
+def test_bad_profile_files_are_one_line_and_exit_2(run, tmp_path, text, words):
+    path = tmp_path / "p.csv"
+    path.write_bytes(text)
+    res = run("orbit", "--surface", "profile", "--profile", str(path), "--height", "1", "--alpha", "10")
+    assert res.exit_code == 2 and res.stderr.count("\n") == 1 and words in res.stderr
