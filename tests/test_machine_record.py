@@ -50,6 +50,6 @@ def test_the_api_names_are_the_records():
     assert api_machines.PRESETS is machine_presets.PRESETS
     assert api_machines.machine_file is decode.decode_machine_file
     for name in ("stunt125", "DEFAULT_MACHINE", "echoable_text", "machine_file_data", "machine_file_text",
-                 "UNECHOABLE", "FILE_KEYS", "as_machine", "paper_wheel", "benchmark_bicycle"):
+                 "UNECHOABLE", "FILE_KEYS", "as_machine", "paper_wheel", "benchmark_bicycle_rigid"):
         assert hasattr(api_machines, name), name
     assert len(deathsphere.api.machines_table()) >= len(machine_presets.PRESETS)

@@ -121,9 +121,15 @@ def test_bad_combinations_are_refused_in_one_line(kwargs, words):
     assert words in str(err.value) and "\n" not in str(err.value)
 
 
-def test_without_flat_or_steer_the_preset_is_still_the_single_contact_machine():
-    t = deathsphere.ride(90, speed="30km/h", machine="benchmark-bicycle", diameter="16ft")
-    assert "alpha_deg" in t and "steer_deg" not in t
+def test_one_name_one_machine():
+    """benchmark-bicycle is the benchmark's two-wheeler whether or not a
+    steer is asked for; its single-contact model has a name of its own."""
+    rigid = deathsphere.ride(90, speed="30km/h", machine="benchmark-bicycle-rigid", diameter="16ft")
+    assert "alpha_deg" in rigid and "steer_deg" not in rigid
+    steered = deathsphere.ride(90, speed="30km/h", machine="benchmark-bicycle", diameter="16ft")
+    assert "steer_deg" in steered and set(steered["machine"]) == {"benchmark-bicycle"}
+    names = list(deathsphere.api.two_wheelers.machines_table()["name"])
+    assert len(names) == len(set(names))
 
 
 def test_hands_free_turns_one_row_each_are_held_without_torque_at_their_speed():

@@ -27,14 +27,14 @@ from deathsphere.records.machine_presets import (
     DEFAULT_MACHINE,
     PRESETS,
     as_machine,
-    benchmark_bicycle,
+    benchmark_bicycle_rigid,
     benchmark_totals,
     paper_wheel,
     stunt125,
 )
 from deathsphere.requests.decode import decode_machine_file as machine_file
 
-__all__ = ["Machine", "PRESETS", "DEFAULT_MACHINE", "as_machine", "paper_wheel", "benchmark_bicycle", "stunt125",
+__all__ = ["Machine", "PRESETS", "DEFAULT_MACHINE", "as_machine", "paper_wheel", "benchmark_bicycle_rigid", "stunt125",
            "benchmark_totals", "BENCHMARK_BODIES", "BENCHMARK_WHEELS", "BENCHMARK_HEAD_ESTIMATE",
            "BENCHMARK_WIDTH_ESTIMATE", "machine_file", "machine_file_data", "machine_file_text", "FILE_KEYS",
            "echoable_text", "UNECHOABLE", "FIELD_PARAMS", "INERTIA_PARAMS", "INERTIA_RTOL", "ALIASES"]

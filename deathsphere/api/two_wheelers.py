@@ -27,7 +27,7 @@ from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_two_wheeler
 # the records' presets and files, as the command line and a notebook reach them
 from deathsphere.records.two_wheeler_files import is_two_wheeler_file, two_wheeler_file, two_wheeler_text
-from deathsphere.records.two_wheeler_presets import PRESETS as MOTORCYCLES
+from deathsphere.records.two_wheeler_presets import NAMES as TWO_WHEELER_NAMES
 from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
 from deathsphere.requests.decode import read_machine_file
 from deathsphere.table import Table
@@ -54,13 +54,22 @@ MAX_STRAIGHT_SPEEDS = 500_000
 STRAIGHT_CHUNK = 1 << 14
 
 
+#: What each kind of machine answers (the ``machines`` listing's last column).
+SINGLE_CONTACT_ANSWERS = ("ride: lanes on the globe a drum or a cone and vertical loops; show; simulate (one rigid "
+                          "frame and one contact; steer locked)")
+TWO_WHEELER_ANSWERS = ("ride: steady turns in the globe with the steer free locked or held (stability; hands-free) "
+                       "and straight running on flat ground (--flat); simulate with its steer")
+
+
 def machines_table():
     """``deathsphere machines``: the presets, one row each: the
     single-contact machines, then the two-wheelers (kind ``two-wheeler``,
-    their geometry in the appended columns; docs/two-wheeler.md sec. 10)."""
-    two = [t.row() for t in TWO_WHEELERS.values()]
-    blank = {k: np.nan for k in list(two[0])[list(two[0]).index("kind") + 1:]}
-    rows = [m.row() | {"kind": "single-contact"} | blank for m in PRESETS.values()] + two
+    their geometry in the appended columns; docs/two-wheeler.md sec. 10),
+    each name one machine; ``answers`` the questions each kind answers."""
+    two = [t.row() | {"answers": TWO_WHEELER_ANSWERS} for t in TWO_WHEELERS.values()]
+    blank = {k: np.nan for k in list(two[0])[list(two[0]).index("kind") + 1:-1]}
+    rows = [m.row() | {"kind": "single-contact"} | blank | {"answers": SINGLE_CONTACT_ANSWERS}
+            for m in PRESETS.values()] + two
     cols = {}
     for key in rows[0]:
         vals = [r[key] for r in rows]

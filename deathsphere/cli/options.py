@@ -197,9 +197,9 @@ def machine_options(*, without=(), machine_help: str = "A preset machine (see 'd
     :data:`MACHINE_OPTIONS` not in ``without``: a command whose setup
     already takes ``-a/--wheel-radius`` leaves ``a`` out)."""
     from deathsphere.api.machines import PRESETS
-    from deathsphere.api.two_wheelers import MOTORCYCLES
+    from deathsphere.api.two_wheelers import TWO_WHEELER_NAMES
 
-    names = tuple(PRESETS) + tuple(MOTORCYCLES)
+    names = tuple(PRESETS) + tuple(TWO_WHEELER_NAMES)
 
     def decorator(f):
         for name, flag in reversed(list(MACHINE_OPTIONS.items())):

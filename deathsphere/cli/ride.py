@@ -164,12 +164,12 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
     fmt = sweep_format(fmt, output) if output is not None or fmt == "parquet" else choose_format(fmt)
     shown = display_units(units, click.get_current_context().params)
     from deathsphere.api.two_wheelers import is_two_wheeler_file
-    from deathsphere.api.two_wheelers import MOTORCYCLES
+    from deathsphere.api.two_wheelers import TWO_WHEELER_NAMES
 
     from deathsphere.api.ride_surfaces import names_a_wall
 
     on_wall = names_a_wall(surface, wall_angle, wall_height)
-    if flat or steer is not None or steer_torque or (machine or "").lower() in MOTORCYCLES or (
+    if flat or steer is not None or steer_torque or (machine or "").lower() in TWO_WHEELER_NAMES or (
             machine_file is not None and is_two_wheeler_file(machine_file)):
         if on_wall:
             raise click.UsageError("a two-wheeler rides the globe only: --surface, --wall-angle and --wall-height "

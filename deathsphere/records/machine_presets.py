@@ -55,8 +55,10 @@ def benchmark_totals():
     return float(mt), float(xt), float(-zt), (float(ixx), float(iyy), float(izz), float(ixz))
 
 
-def benchmark_bicycle() -> Machine:
-    """The benchmark bicycle with rider as one contact (docs/machine.md sec. 7):
+def benchmark_bicycle_rigid() -> Machine:
+    """The benchmark bicycle with rider as one rigid frame on one contact, its
+    steer locked (docs/machine.md sec. 7; ``benchmark-bicycle`` names the
+    benchmark's own model, the Whipple two-wheeler that steers):
     mass and centre of mass from its Table 1; the locked inertia's diagonal
     in its axes (its product Ixz neglected); one wheel of the mean radius
     a = (rR + rF)/2 with the spin inertia J = a (IRyy/rR + IFyy/rF), which
@@ -66,7 +68,7 @@ def benchmark_bicycle() -> Machine:
     a = 0.5 * (r_r + r_f)
     return Machine(mass=mt, com_height=h, wheel_radius=a, tyre_radius=0.0, inertia=(ixx, iyy, izz),
                    spin_inertia=a * (i_r / r_r + i_f / r_f), head_height=BENCHMARK_HEAD_ESTIMATE,
-                   width=BENCHMARK_WIDTH_ESTIMATE, name="benchmark-bicycle",
+                   width=BENCHMARK_WIDTH_ESTIMATE, name="benchmark-bicycle-rigid",
                    source="Meijaard Papadopoulos Ruina Schwab (2007) Table 1; head height and width estimates")
 
 
@@ -80,7 +82,7 @@ def stunt125() -> Machine:
 
 
 #: The presets of ``--machine``, by name.
-PRESETS = {m.name: m for m in (paper_wheel(), benchmark_bicycle(), stunt125())}
+PRESETS = {m.name: m for m in (paper_wheel(), benchmark_bicycle_rigid(), stunt125())}
 DEFAULT_MACHINE = "stunt125"
 
 

@@ -174,6 +174,9 @@ def stunt125_steer() -> dict:
 #: The presets' names and builders, in the order ``deathsphere machines``
 #: lists them (the names known without building them: ``--machine``'s choices).
 PRESETS = {"sport-tourer": sport_tourer, "stunt125-steer": stunt125_steer}
+#: Every two-wheeler preset's name, known without building one: the
+#: benchmark bicycle's (its single-contact model is ``benchmark-bicycle-rigid``), then the motorcycles'.
+NAMES = ("benchmark-bicycle", *PRESETS)
 
 
 #: The two-wheeler presets, by name (``--machine`` with ``--flat`` or

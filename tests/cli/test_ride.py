@@ -56,7 +56,7 @@ def test_machines_lists_the_presets(run):
     res = run("machines", "--format", "csv")
     rows = _rows(res.stdout)
     assert [(r["name"], r["kind"]) for r in rows] == [
-        ("paper-wheel", "single-contact"), ("benchmark-bicycle", "single-contact"), ("stunt125", "single-contact"),
+        ("paper-wheel", "single-contact"), ("benchmark-bicycle-rigid", "single-contact"), ("stunt125", "single-contact"),
         ("benchmark-bicycle", "two-wheeler"), ("sport-tourer", "two-wheeler"), ("stunt125-steer", "two-wheeler")]
     # the two-wheelers' columns are appended: the single-contact machine's come first, as before
     assert list(rows[0])[:13] == ["name", "mass_kg", "com_height_m", "wheel_radius_m", "tyre_radius_m",
@@ -147,7 +147,7 @@ def test_mu_takes_a_range_like_the_other_axes(run):
     assert [r["mu_available"] for r in table] == ["0.6", "0.8", "1.0"]
     assert [int(r["speeds_ok"]) for r in table] == sorted(int(r["speeds_ok"]) for r in table)
     loops = _rows(run("ride", "--vertical", "--theta", "60", "--v-top", "30km/h", "--mu", "0.5", "--mu", "0.7",
-                      "--machine", "benchmark-bicycle", "--format", "csv").stdout)
+                      "--machine", "benchmark-bicycle-rigid", "--format", "csv").stdout)
     assert [(r["mu_available"], r["status"]) for r in loops] == [("0.5", "slips"), ("0.7", "ok")]
 
 

@@ -17,7 +17,7 @@ MANY = ("ride", "--diameter", "16ft", "--height", "0.4", "--height", "2.4", "--c
         "--max-g", "5")
 LOOP = ("ride", "--vertical", "--theta", "90", "--v-top", "30km/h", "--mu", "0.1", "--max-g", "2")
 LOOPS = ("ride", "--vertical", "--theta", "60", "--theta", "90", "--v-top", "20:40:10mph", "--machine",
-         "benchmark-bicycle")
+         "benchmark-bicycle-rigid")
 
 
 def _screen(run, args, width):

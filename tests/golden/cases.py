@@ -38,7 +38,7 @@ CASES = {
                      "--max-g", "5", "--summary"],
     "ride_vertical": ["ride", "--vertical", "--theta", "90", "--v-top", "30km/h", "--diameter", "16ft", "--mu", "1",
                       "--max-g", "5"],
-    "ride_bicycle_single_contact": ["ride", "--machine", "benchmark-bicycle", "--theta", "90", "--speed", "20km/h",
+    "ride_bicycle_single_contact": ["ride", "--machine", "benchmark-bicycle-rigid", "--theta", "90", "--speed", "20km/h",
                                     "--diameter", "16ft"],
     "ride_paper_wheel": ["ride", "--machine", "paper-wheel", "--theta", "60", "--speed", "7"],
     "ride_flat": ["ride", "--machine", "benchmark-bicycle", "--flat", "--speed", "0:10:0.5"],

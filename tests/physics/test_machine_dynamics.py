@@ -89,7 +89,7 @@ def test_an_unsteered_motorcycle_is_unstable_on_most_orbits():
     assert np.mean(st["verdict"][known] == Verdict.UNSTABLE) > 0.9
 
 
-@pytest.mark.parametrize("machine", ["stunt125", "benchmark-bicycle"])
+@pytest.mark.parametrize("machine", ["stunt125", "benchmark-bicycle-rigid"])
 def test_the_reduced_jacobian_is_reversible(machine):
     """The stability takes the eigenvalues from two invariants of K, which
     holds only if the odd coefficients of its characteristic polynomial

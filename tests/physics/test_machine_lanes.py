@@ -13,7 +13,7 @@ from deathsphere.physics.machine import meridian_points, ride_orbit
 from deathsphere.physics.machine_arrays import FIELDS, MachineArrays, machine_arrays
 from deathsphere.physics.machine_lanes import horizontal_lanes, speed_is_feasible
 from deathsphere.physics.status import Reason, Status
-from deathsphere.records.machine_presets import benchmark_bicycle, stunt125
+from deathsphere.records.machine_presets import benchmark_bicycle_rigid, stunt125
 
 G = 9.80665
 GLOBE = Sphere(2.4384)
@@ -23,17 +23,17 @@ def test_records_become_arrays_in_one_place():
     one = machine_arrays(stunt125())
     assert isinstance(one, MachineArrays) and all(np.ndim(x) == 0 for x in one)
     assert one.com_height == 0.80 and one.pitch_inertia == 40.0 and one.head_height == 1.65
-    two = machine_arrays([stunt125(), benchmark_bicycle()])
+    two = machine_arrays([stunt125(), benchmark_bicycle_rigid()])
     assert all(np.shape(x) == (2,) and np.asarray(x).dtype == np.float64 for x in two)
     assert machine_arrays(two) is two
-    assert two.take(1) == machine_arrays(benchmark_bicycle())
+    assert two.take(1) == machine_arrays(benchmark_bicycle_rigid())
     assert FIELDS == MachineArrays._fields
 
 
 def test_one_call_over_two_machines_is_each_machine_alone():
     theta, alpha = np.radians([100.0, 110.0]), np.radians([20.0, 15.0])
-    both = ride_orbit(theta, alpha, GLOBE, G, machine_arrays([stunt125(), benchmark_bicycle()]), mu=0.9)
-    for i, m in enumerate((stunt125(), benchmark_bicycle())):
+    both = ride_orbit(theta, alpha, GLOBE, G, machine_arrays([stunt125(), benchmark_bicycle_rigid()]), mu=0.9)
+    for i, m in enumerate((stunt125(), benchmark_bicycle_rigid())):
         alone = ride_orbit(theta[i], alpha[i], GLOBE, G, machine_arrays(m), mu=0.9)
         for key, val in alone.items():
             np.testing.assert_array_equal(both[key][i], val, err_msg=key)

@@ -63,7 +63,7 @@ def test_on_the_sphere_every_output_is_the_spheres_machine(name, r):
     np.testing.assert_allclose(ghi, hi, atol=1e-12)
 
 
-@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle"])
+@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle-rigid"])
 def test_on_the_sphere_the_tilts_for_a_speed_are_the_spheres(name):
     m = machine_arrays(PRESETS[name])
     r = 8 * FT
@@ -124,7 +124,7 @@ GROUNDS = [Cylinder(16 * FT, 12 * FT), Cylinder(10 * FT, 12 * FT), Cone(4.0, mat
 
 
 @pytest.mark.parametrize("ground", GROUNDS, ids=lambda g: f"{g.name}-{g.radius:.2f}")
-@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle", "paper-wheel"])
+@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle-rigid", "paper-wheel"])
 def test_newton_euler_from_vectors_vanishes_at_the_returned_rate(ground, name):
     m = machine_arrays(PRESETS[name])
     heights = np.linspace(0.3, 0.9 * ground.highest_lane, 7)
@@ -152,7 +152,7 @@ def test_the_residual_does_detect_a_wrong_rate():
 # ---------------------------------------------------------------------------
 # the wall of death's rule
 
-@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle"])
+@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle-rigid"])
 def test_on_the_drum_friction_carries_the_weight_and_the_wall_the_centripetal_force(name):
     m, radius = machine_arrays(PRESETS[name]), 16 * FT
     ground = Cylinder(radius, 12 * FT)

@@ -61,7 +61,7 @@ def test_the_horizontal_lane_is_rides_orbit():
 def test_lanes_hold_no_globe_and_no_gravity_and_take_every_machine_at_once():
     plan = read_plan({"globe": {"radius": R, "mu": 0.9, "max_g": 8}, "rider": [
         {"name": "A", "lane": "horizontal", "height": "2.0m", "com_speed": "30km/h", "machine": "stunt125"},
-        {"name": "B", "lane": "horizontal", "height": "1.2m", "com_speed": "20km/h", "machine": "benchmark-bicycle"},
+        {"name": "B", "lane": "horizontal", "height": "1.2m", "com_speed": "20km/h", "machine": "benchmark-bicycle-rigid"},
         {"name": "C", "lane": "vertical", "v_top": "6.5m/s", "machine": "stunt125"}]})
     lanes = build_lanes(plan)
     for lane in lanes:
