@@ -294,7 +294,7 @@ def rhs_on(state, p: GroundBody, frame_rate=0.0):
 
 
 def jvp_on(state, directions, p: GroundBody, frame_rate=0.0):
-    """J(state) @ directions of :func:`rhs_on` by forward-mode derivatives
+    """J(state) @ directions of :func:`rhs_on` (beyond the paper; docs/dynamics.md sec. 7) by forward-mode derivatives
     (``dynamics._Dual``), state (9, ..., n), directions (9, m, ..., n);
     the contact's derivative by the implicit-function theorem (one Newton
     step in duals from the converged contact), the hessian's along a
@@ -309,7 +309,7 @@ def jvp_on(state, directions, p: GroundBody, frame_rate=0.0):
 
 
 def ode_on(p: GroundBody, frame_rate=0.0):
-    """``fun(t, y)`` for the integrator, y the flattened (9, n) state."""
+    """``fun(t, y)`` for the integrator, y the flattened (9, n) state (beyond the paper; docs/dynamics.md sec. 7)."""
     n = int(np.prod(np.broadcast_shapes(np.shape(p.a), np.shape(frame_rate)))) or 1
     pf = GroundBody(p.ground, *(np.broadcast_to(x, (n,)) for x in p[1:]))
     fr = np.broadcast_to(np.asarray(frame_rate, dtype=float), (n,))
@@ -330,7 +330,7 @@ def _motion(state, p):
 
 
 def contact_on(state, p: GroundBody):
-    """(e3, contact point p = c + a e3) on the ground, (3, ...) each."""
+    """(e3, contact point p = c + a e3) on the ground, (3, ...) each (docs/dynamics.md eqs. G1, G4)."""
     state = np.asarray(state, dtype=float)
     c = tuple(state[0:3])
     x = tuple(state[3:6])
@@ -340,7 +340,7 @@ def contact_on(state, p: GroundBody):
 
 
 def energy_on(state, p: GroundBody):
-    """Energy per unit mass [J/kg], as :func:`dynamics.energy` with the
+    """Energy per unit mass [J/kg] (beyond the paper), as :func:`dynamics.energy` with the
     ground's e3: |v|^2/2 + (k a^2/2)(|w|^2 + w1^2 [wheel]) + g c_z."""
     state = np.asarray(state, dtype=float)
     e3, _ = contact_on(state, p)
@@ -353,7 +353,7 @@ def energy_on(state, p: GroundBody):
 
 
 def gap_on(state, p: GroundBody):
-    """The contact point's signed distance from the surface [m], to first
+    """Beyond the paper (docs/dynamics.md sec. 7): the contact point's signed distance from the surface [m], to first
     order F/|grad F| (negative inside): the holonomic constraint's residual."""
     _, pt = contact_on(state, p)
     G = p.ground.gradient(*pt)

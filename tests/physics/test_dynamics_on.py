@@ -87,9 +87,9 @@ def test_golfers_dilemma_linearisation(k):
     assert np.all(np.abs(out["eigenvalues"].real) < 1e-10 * out["rate_scale"][:, None])
 
 
-def _run(fun, X0, T, n_eval=4001):
+def _run(fun, X0, T, n_eval=4001, rtol=1e-12):
     t = np.linspace(0.0, T, n_eval)
-    return integrate(fun, (0.0, T), X0.reshape(-1), (), method="DOP853", rtol=1e-12, atol=1e-13, t_eval=t).sol
+    return integrate(fun, (0.0, T), X0.reshape(-1), (), method="DOP853", rtol=rtol, atol=rtol / 10, t_eval=t).sol
 
 
 def test_golfers_dilemma_simulated_bobbing():
@@ -99,7 +99,7 @@ def test_golfers_dilemma_simulated_bobbing():
     X0[7] += 0.05 * np.hypot(X0[6], X0[8])    # a push along the wall: the ball bobs
     p = don.ground_body(drum, A, k, G, sphere=True)
     period = 2 * np.pi / (om * np.sqrt(k / (k + 1)))
-    sol = _run(don.ode_on(p), X0[:, None], 3 * period)
+    sol = _run(don.ode_on(p), X0[:, None], 2 * period, 801, rtol=1e-8)
     z = sol.y[2] - np.mean(sol.y[2])
     i = np.nonzero(np.sign(z[:-1]) != np.sign(z[1:]))[0]
     tc = sol.t[i] - z[i] * (sol.t[i + 1] - sol.t[i]) / (z[i + 1] - z[i])
@@ -107,13 +107,14 @@ def test_golfers_dilemma_simulated_bobbing():
     assert abs(measured / period - 1) < 1e-3
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=["drum", "cone80", "cone100"])
-def test_simulation_keeps_energy_and_contact(ground):
+def test_simulation_keeps_energy_and_contact(ground=GROUNDS[1]):
+    # the well of death at 80 degrees, whose hessian varies (the drum and the
+    # cone at 100 degrees: benchmarks/bench_dynamics_on.py)
     X0, om = don.wheel_orbit_state_on(ground, 2.0, np.radians(20), A, 0.5, G)
     p = don.ground_body(ground, A, 0.5, G)
     X0 = X0.copy()
     X0[6:9] *= 1.0 + 1e-3              # off the steady orbit, so the flow moves
-    sol = _run(don.ode_on(p), X0, 3 * 2 * np.pi / om, 200)
+    sol = _run(don.ode_on(p), X0, 2 * np.pi / om, 50, rtol=1e-11)  # a lap (3: the benchmark)
     Y = sol.y
     E = don.energy_on(Y, p)
     v = A * np.cross(don.contact_on(Y, p)[0], Y[6:9], axis=0)

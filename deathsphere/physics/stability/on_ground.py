@@ -41,7 +41,7 @@ def _reduced(X0, A, D, p, Om):
 
 
 def wheel_stability_on(ground, height, alpha, a, k, g):
-    """Exact linear stability of a wheel's steady orbits at lane ``height``
+    """Beyond the paper (docs/stability.md): exact linear stability of a wheel's steady orbits at lane ``height``
     [m] and tilt ``alpha`` [rad] on any ground: the dict of
     :func:`~deathsphere.physics.stability.horizontal.wheel_stability`
     (4 nutation eigenvalues in the turning frame, growth rate, verdict)."""
