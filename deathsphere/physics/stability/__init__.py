@@ -11,6 +11,8 @@ module             concept
 ``frequencies``    nutation frequencies from a polynomial quadratic in w^2
 ``horizontal``     exact linear stability of horizontal orbits of a wheel and
                    of a sphere (beyond the paper)
+``on_ground``      exact linear stability of a wheel's and a ball's steady
+                   orbits on any ground (beyond the paper)
 ``margin``         a signed stability margin over (theta, alpha) and the
                    stability boundary (beyond the paper; ``map --stability``)
 ``floquet``        exact stability of vertical orbits by Floquet analysis
@@ -47,6 +49,8 @@ _HOME = {
     "sphere_stability": "horizontal",
     "wheel_reduced_jacobian": "horizontal",
     "wheel_stability": "horizontal",
+    "ball_stability_on": "on_ground",
+    "wheel_stability_on": "on_ground",
     "STABILITY_ALPHA_STEP_DEG": "margin",
     "stability_boundary_alphas": "margin",
     "stability_margin": "margin",
@@ -65,7 +69,7 @@ _HOME = {
 }
 
 #: The submodules, reachable as attributes as if they had been imported here.
-_MODULES = ("verdict", "reduction", "frequencies", "horizontal", "margin", "floquet", "rk8", "paper",
+_MODULES = ("verdict", "reduction", "frequencies", "horizontal", "on_ground", "margin", "floquet", "rk8", "paper",
             "closed_forms", "comparison")
 
 __all__ = list(_HOME)

@@ -1,0 +1,123 @@
+"""The equations of motion on any ground (physics/dynamics_on.py) and their
+exact linear stability (physics/stability/on_ground.py): the sphere's closed
+forms reproduced by the general path, steady orbits as fixed points on the
+drum and the cones, energy and contact held along the integrator, and the
+golfer's dilemma (a ball in a vertical drum bobs at Omega sqrt(k/(k+1)),
+derived in docs/dynamics.md eq. G9 independently of the code)."""
+
+import numpy as np
+import pytest
+
+from deathsphere.physics import dynamics as dyn
+from deathsphere.physics import dynamics_on as don
+from deathsphere.physics.ground import Cone, Cylinder, Sphere
+from deathsphere.physics.stability import sphere_stability, wheel_stability
+from deathsphere.physics.stability.on_ground import ball_stability_on, wheel_stability_on
+from deathsphere.simulation.integrator import integrate
+
+R, A, G = 3.0, 0.3, 9.81
+GROUNDS = [Cylinder(5.0), Cone(5.0, np.radians(80)), Cone(5.0, np.radians(100))]
+
+
+def _random_states(ball, n=60, seed=1):
+    rng = np.random.default_rng(seed)
+    k = rng.uniform(0.3, 1.0, n)
+    X, _ = dyn.wheel_orbit_state(rng.uniform(0.5, 2.6, n), rng.uniform(0.2, 1.3, n), A, R, k, G)
+    return X + rng.normal(0.0, 0.05, X.shape), k, rng
+
+
+@pytest.mark.parametrize("ball", [False, True])
+def test_general_path_on_the_sphere_is_the_closed_form(ball):
+    X, k, rng = _random_states(ball)
+    closed = dyn.body_params(A, R, k, G, sphere=ball)
+    general = don.ground_body(Sphere(R), A, k, G, sphere=ball)
+    f0 = dyn.rhs(X, closed, 0.7)
+    assert np.max(np.abs(don.rhs_on(X, general, 0.7) - f0)) <= 1e-12 * np.max(np.abs(f0))
+    V = rng.normal(size=(9, 4, X.shape[1]))
+    j0 = dyn.jvp(X, V, closed, 0.7)
+    assert np.max(np.abs(don.jvp_on(X, V, general, 0.7) - j0)) <= 1e-12 * np.max(np.abs(j0))
+    e0 = dyn.energy(X, closed)
+    assert np.max(np.abs(don.energy_on(X, general) - e0)) <= 1e-12 * np.max(np.abs(e0))
+    F0, F1 = dyn.contact_force(X, closed), don.contact_force_on(X, general)
+    scale = np.max(np.abs(F0["force"]))
+    assert np.max(np.abs(F1["force"] - F0["force"])) <= 1e-12 * scale
+    assert np.max(np.abs(F1["normal"] - F0["normal"])) <= 1e-12 * scale
+
+
+@pytest.mark.parametrize("ground", GROUNDS, ids=["drum", "cone80", "cone100"])
+def test_steady_orbits_are_fixed_points_on_any_ground(ground):
+    X, om = don.wheel_orbit_state_on(ground, 2.0, np.radians(20), A, 0.5, G)
+    p = don.ground_body(ground, A, 0.5, G)
+    scale = np.max(np.abs(X[6:9])) * om
+    assert np.max(np.abs(don.rhs_on(X, p, om))) < 1e-13 * scale
+    # the same state with Omega off by 1e-6 is not one (eq. 29 is tested)
+    X2, _ = don.wheel_state_at(*ground.contact(2.0), np.radians(20), A, 0.5, G)
+    assert np.max(np.abs(don.rhs_on(X2, p, om * (1 + 1e-6)))) > 1e-8 * scale
+    assert abs(don.gap_on(X, p)) < 1e-12
+    Xb, _ = don.ball_orbit_state_on(ground, 2.0, 4.0, A, 0.4, G)
+    pb = don.ground_body(ground, A, 0.4, G, sphere=True)
+    rates = don.rhs_on(Xb, pb, 4.0)
+    # the ball's marker rows turn with the ball; centre and spin stand still
+    assert np.max(np.abs(rates[[0, 1, 2, 6, 7, 8]])) < 1e-13 * np.max(np.abs(Xb[6:9])) * 4.0
+    assert abs(don.gap_on(Xb, pb)) < 1e-12
+
+
+def test_stability_on_the_sphere_is_todays():
+    S = Sphere(5.0)
+    th, al = np.array([1.2, 1.6, 2.0, 1.0]), np.array([0.6, 0.9, 1.2, 0.4])
+    k = np.array([0.5, 1.0, 0.5, 0.3])
+    ref = wheel_stability(th, al, A, 5.0, k, G)
+    got = wheel_stability_on(S, S.height(th), al, A, k, G)
+    diff = np.sort_complex(got["eigenvalues"]) - np.sort_complex(ref["eigenvalues"])
+    assert np.max(np.abs(diff)) < 1e-10 * np.max(ref["rate_scale"])
+    assert np.array_equal(got["verdict"], ref["verdict"])
+    om = np.array([3.0, 4.0, 5.0, 6.0])
+    ref = sphere_stability(th, om, A, 5.0, k, G)
+    got = ball_stability_on(S, S.height(th), om, A, k, G)
+    diff = np.sort_complex(got["eigenvalues"]) - np.sort_complex(ref["eigenvalues"])
+    assert np.max(np.abs(diff)) < 1e-10 * np.max(ref["rate_scale"])
+
+
+@pytest.mark.parametrize("k", [0.4, 2.0 / 3.0])
+def test_golfers_dilemma_linearisation(k):
+    om = np.array([3.0, 6.0, 11.0])
+    out = ball_stability_on(Cylinder(5.0), 2.0, om, A, k, G)
+    # eq. G9: the bobbing frequency Omega sqrt(k/(k+1)), independent of a and the drum
+    assert np.allclose(out["freq_fast"], om * np.sqrt(k / (k + 1)), rtol=1e-10, atol=0)
+    assert np.all(np.abs(out["eigenvalues"].real) < 1e-10 * out["rate_scale"][:, None])
+
+
+def _run(fun, X0, T, n_eval=4001, rtol=1e-12):
+    t = np.linspace(0.0, T, n_eval)
+    return integrate(fun, (0.0, T), X0.reshape(-1), (), method="DOP853", rtol=rtol, atol=rtol / 10, t_eval=t).sol
+
+
+def test_golfers_dilemma_simulated_bobbing():
+    k, om, drum = 0.4, 6.0, Cylinder(5.0)
+    X0, _ = don.ball_orbit_state_on(drum, 2.0, om, A, k, G)
+    X0 = X0.copy()
+    X0[7] += 0.05 * np.hypot(X0[6], X0[8])    # a push along the wall: the ball bobs
+    p = don.ground_body(drum, A, k, G, sphere=True)
+    period = 2 * np.pi / (om * np.sqrt(k / (k + 1)))
+    sol = _run(don.ode_on(p), X0[:, None], 2 * period, 801, rtol=1e-8)
+    z = sol.y[2] - np.mean(sol.y[2])
+    i = np.nonzero(np.sign(z[:-1]) != np.sign(z[1:]))[0]
+    tc = sol.t[i] - z[i] * (sol.t[i + 1] - sol.t[i]) / (z[i + 1] - z[i])
+    measured = 2 * (tc[-1] - tc[0]) / (len(tc) - 1)
+    assert abs(measured / period - 1) < 1e-3
+
+
+def test_simulation_keeps_energy_and_contact(ground=GROUNDS[1]):
+    # the well of death at 80 degrees, whose hessian varies (the drum and the
+    # cone at 100 degrees: benchmarks/bench_dynamics_on.py)
+    X0, om = don.wheel_orbit_state_on(ground, 2.0, np.radians(20), A, 0.5, G)
+    p = don.ground_body(ground, A, 0.5, G)
+    X0 = X0.copy()
+    X0[6:9] *= 1.0 + 1e-3              # off the steady orbit, so the flow moves
+    sol = _run(don.ode_on(p), X0, 2 * np.pi / om, 50, rtol=1e-11)  # a lap (3: the benchmark)
+    Y = sol.y
+    E = don.energy_on(Y, p)
+    v = A * np.cross(don.contact_on(Y, p)[0], Y[6:9], axis=0)
+    kinetic = 0.5 * np.sum(v * v, axis=0) + 0.5 * 0.5 * A ** 2 * np.sum(Y[6:9] ** 2, axis=0)
+    assert np.max(np.abs(E - E[0])) < 1e-9 * np.min(kinetic)
+    assert np.max(np.abs(don.gap_on(Y, p))) < 1e-12
