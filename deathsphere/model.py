@@ -472,8 +472,9 @@ def _ground_particle(req, rows):
 
 #: The solvers on a surface other than the globe (docs/surfaces.md).
 GROUND_SOLVERS = {Wheel: _ground_wheel, Ball: _ground_ball, Particle: _ground_particle}
-#: ``stability_method`` of an orbit on another surface: the exact linearisation is the sphere's.
-NOT_ON_SURFACE = "not computed on this surface (the exact linearisation is the sphere's; docs/surfaces.md)"
+#: ``stability_method`` of an orbit on the outside of another surface: the
+#: equations of motion on any ground are written for the inside (docs/dynamics.md sec. 7).
+NOT_ON_SURFACE = "not computed on the outside of this surface (docs/dynamics.md sec. 7 is the inside's)"
 
 
 def evaluate(req: dict, stability: bool = True) -> Table:
@@ -580,9 +581,9 @@ def evaluate(req: dict, stability: bool = True) -> Table:
     if demoted is not None:
         codes[demoted] = Status.INVALID
     if ground is not None:
-        columns.update(_no_stability(len(pick)))
-        if stability:
-            columns["stability_method"][np.isin(codes, LIVE_CODES)] = NOT_ON_SURFACE
+        columns.update(add_stability_on(columns, ground, req["height"][pick], alpha_rad[order], codes,
+                                        body_code[pick], req["outside"][pick]) if stability
+                       else _no_stability(len(pick)))
     else:
         columns.update(add_stability(columns, req["theta_rad"][pick], alpha_rad[order], codes,
                                      body_code[pick], req["outside"][pick]) if stability
@@ -674,6 +675,47 @@ def _no_stability(n: int) -> dict:
 #: ``stability_method`` values.
 EXACT_METHOD = "exact-linearisation"
 NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
+
+
+def add_stability_on(columns: dict, ground, height: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,
+                     body_code: np.ndarray, outside: np.ndarray) -> dict:
+    """The stability columns of orbits on a ground other than the globe:
+    the exact linearisation of the equations of motion on any ground
+    (docs/dynamics.md sec. 7; physics.stability.wheel_stability_on and
+    ball_stability_on), as :func:`add_stability` on the sphere.  The
+    bodies inside only; a sliding particle is not analysed."""
+    from deathsphere.physics import stability as exact
+    from deathsphere.physics.stability.verdict import stability_kind
+
+    n = len(columns["status"])
+    out = _no_stability(n)
+    live = np.isin(status, LIVE_CODES)
+    par = {key: columns[col] for key, col in (("a", "a_m"), ("k", "k"), ("g", "g_m_s2"))}
+    particle = body_code == PARTICLE.code
+    singular = live & (columns["k"] == 0) & ~particle
+    out["stability"][singular] = "unknown"
+    out["stability_method"][singular] = NOT_ANALYSED_K0
+    live &= ~singular
+    rows = np.flatnonzero(live & outside & ~particle)
+    out["stability"][rows] = "unknown"
+    out["stability_method"][rows] = NOT_ON_SURFACE
+    live &= ~outside
+    analysed = {WHEEL: (exact.wheel_stability_on, alpha_rad), BALL: (exact.ball_stability_on, columns["omega_rad_s"])}
+    for one, (solver, seconds) in analysed.items():
+        rows = np.flatnonzero(live & (body_code == one.code))
+        if not rows.size:
+            continue
+        res = solver(ground, height[rows], seconds[rows], *(par[key][rows] for key in ("a", "k", "g")))
+        out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]
+        out["stability_method"][rows] = EXACT_METHOD
+        out["growth_rate_1_s"][rows] = res["growth_rate"]
+        out["freq_slow_rad_s"][rows] = res["freq_slow"]
+        out["freq_fast_rad_s"][rows] = res["freq_fast"]
+        out["stability_kind"][rows] = stability_kind(res["growth_rate"], res["rate_scale"])
+    rows = np.flatnonzero(live & particle)
+    out["stability"][rows] = "unknown"
+    out["stability_method"][rows] = "not analysed (sliding particle)"
+    return out
 
 
 def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,

@@ -30,7 +30,32 @@ def test_the_wall_of_death_through_the_command_line(run):
     # the wall of death's rule, independent of the code: mu = g r' / v^2
     rp, v = float(row["r_prime_m"]), float(row["v_cm_m_s"])
     assert float(row["mu_required"]) == pytest.approx(9.80665 * rp / v ** 2, rel=1e-12)
-    assert row["stability"] == "" and "not computed on this surface" in row["stability_method"]
+    assert row["stability"] == "stable" and row["stability_method"] == "exact-linearisation"
+
+
+def test_the_golfers_dilemma_in_the_orbit_table(run):
+    """A ball in the drum bobs at omega_bob = Omega sqrt(k / (k + 1))
+    (Gualtieri et al., Am. J. Phys. 74, 497 (2006); docs/dynamics.md eq. G9):
+    the closed form against the table's numerical linearisation."""
+    res = run("orbit", "--body", "sphere", "--surface", "cylinder", "--diameter", "32ft", "--height", "2",
+              "--omega", "3", "--omega", "6", "--omega", "11", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    got = rows(res.stdout)
+    assert [r["stability"] for r in got] == ["stable"] * 3
+    for r in got:
+        omega, k = float(r["omega_rad_s"]), float(r["k"])
+        assert float(r["freq_fast_rad_s"]) == pytest.approx(omega * np.sqrt(k / (k + 1)), rel=1e-9)
+
+
+def test_outside_another_surface_the_stability_is_said_not_computed(run):
+    # on top of a cone leaning in at 150 degrees (a roof): steady orbits exist outside
+    res = run("orbit", "--surface", "cone", "--diameter", "6", "--wall-angle", "150", "--height", "0.5",
+              "--alpha", "50", "--alpha", "70", "--side", "outside", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    got = rows(res.stdout)
+    assert [r["status"] for r in got] == ["ok", "ok"]
+    for r in got:
+        assert r["stability"] == "unknown" and "outside" in r["stability_method"] and r["growth_rate_1_s"] == ""
 
 
 def test_a_cone_sweep_and_the_api_agree(run):
