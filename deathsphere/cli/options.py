@@ -210,8 +210,9 @@ def machine_options(*, without=(), machine_help: str = "A preset machine (see 'd
                         "roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, name, source; "
                         "missing keys from --machine), or a two-wheeler's: the benchmark's 26 names as keys, or a "
                         "BicycleParameters <Name>Benchmark.txt (docs/two-wheeler.md sec. 1.4).")(f)
-        return single("--machine", "machine", type=click.Choice(names, case_sensitive=False),
-                      default=None, help=machine_help)(f)
+        # the names in the help, not the metavar: six of them do not fit a line of 80 columns
+        return single("--machine", "machine", type=click.Choice(names, case_sensitive=False), metavar="NAME",
+                      default=None, help=f"{machine_help} One of {', '.join(names)}.")(f)
     return decorator
 
 

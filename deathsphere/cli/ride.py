@@ -135,7 +135,8 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
       deathsphere ride --theta 90 --speed 40km/h --diameter 16ft
       deathsphere ride --height 5ft --period 1.3s --diameter 16ft
       deathsphere ride --height 5ft --com-speed 30km/h --diameter 16ft
-      deathsphere ride --height 1.2m --alpha 10:30:5 --machine benchmark-bicycle
+      deathsphere ride --height 1.2m --alpha 10:30:5 \\
+          --machine benchmark-bicycle-rigid
       deathsphere ride --diameter 16ft --height 0:2.4:0.2m --speed 5:35:5km/h \\
           --mu 1 --max-g 5 --summary
       deathsphere ride --machine-file my-bike.toml --theta 90 --speed 35km/h
