@@ -22,6 +22,16 @@ def definitions(root: Path) -> dict[str, list[str]]:
     return found
 
 
+#: Names a crew or a caller reads that must name one thing in the whole
+#: package, the physics included (a shared name read two ways is a wrong table).
+ONE_THING = ("feasible", "verdict", "simulate", "benchmark_bicycle")
+
+
+def test_the_names_read_two_ways_once_name_one_thing():
+    found = definitions(PACKAGE)
+    assert {name: found[name] for name in ONE_THING if len(found.get(name, [])) > 1} == {}
+
+
 def test_each_public_name_is_defined_once_outside_the_per_body_physics():
     twice = {name: where for name, where in definitions(PACKAGE).items()
              if len([w for w in where if not (PACKAGE.parent / w).is_relative_to(PER_BODY)]) > 1}

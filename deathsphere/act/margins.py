@@ -32,7 +32,7 @@ RTOL = 1e-10
 MAX_STEPS = 64
 
 
-def feasible(lanes, globe, speeds) -> np.ndarray:
+def speeds_hold(lanes, globe, speeds) -> np.ndarray:
     """bool (n, k): lane i stays feasible at speeds[i, j] [m/s] (module
     docstring); the lanes share one kind: one physics call."""
     speeds = np.asarray(speeds, dtype=float)
@@ -52,7 +52,7 @@ def _bands(lanes, globe, planned) -> np.ndarray:
     """(n, 2) [m/s] low and high edges for lanes of one kind."""
     planned = np.asarray(planned, dtype=float)
     grid = planned[:, None] * GRID
-    ok = feasible(lanes, globe, np.concatenate((planned[:, None], grid), axis=1))
+    ok = speeds_hold(lanes, globe, np.concatenate((planned[:, None], grid), axis=1))
     here, ok = ok[:, 0], ok[:, 1:]
     k = np.searchsorted(GRID, 1.0)                      # grid[:, k] is the first at or above the planned speed
     inside = np.full((planned.size, 2), np.nan)
@@ -73,7 +73,7 @@ def _bands(lanes, globe, planned) -> np.ndarray:
         if not open_.any():
             break
         mid = np.where(open_, 0.5 * (inside + outside), planned[:, None])
-        good = feasible(lanes, globe, mid)
+        good = speeds_hold(lanes, globe, mid)
         inside, outside = np.where(open_ & good, mid, inside), np.where(open_ & ~good, mid, outside)
     return np.where(found, inside, np.nan)
 

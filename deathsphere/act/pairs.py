@@ -247,7 +247,7 @@ def where_closest(a, b, t: float, ground) -> dict:
             "phi": math.degrees(math.atan2(mid[1], mid[0])) % 360.0}
 
 
-def verdict(c: float, min_clearance: float) -> str:
+def clearance_verdict(c: float, min_clearance: float) -> str:
     """'collision' below zero, 'conflict' below the crew's least clearance, else 'clear'."""
     return "collision" if c < 0 else "conflict" if c < min_clearance else "clear"
 

@@ -444,7 +444,7 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
     lanes' heights as typed (:func:`lane_heights`; NaN: from the contact);
     ``done(n)``, if given, is told of n more pairs found (a progress bar)."""
     done = done or (lambda n: None)
-    from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, verdict, where_closest
+    from deathsphere.act.pairs import act_pairs, contact_angles, least_clearance, least_clearances, clearance_verdict, where_closest
     from deathsphere.act.timing import drift_time
 
     over_time = act_pairs(lanes)
@@ -456,7 +456,7 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
             b = lanes[j]
             c, t, basis = found[(i, j)] if (i, j) in found else least_clearance(a, b, duration)
             (ta, pa), (tb, pb) = contact_angles(a, t, ground), contact_angles(b, t, ground)
-            v = verdict(c, min_clearance)
+            v = clearance_verdict(c, min_clearance)
             dt = drift_time(a, b, min_clearance) if drift and v == "clear" else math.nan
             where = where_closest(a, b, t, ground)
             for key, k in (("height_a", i), ("height_b", j)):
