@@ -677,35 +677,30 @@ EXACT_METHOD = "exact-linearisation"
 NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
 
 
-def add_stability_on(columns: dict, ground, height: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,
-                     body_code: np.ndarray, outside: np.ndarray) -> dict:
-    """The stability columns of orbits on a ground other than the globe:
-    the exact linearisation of the equations of motion on any ground
-    (docs/dynamics.md sec. 7; physics.stability.wheel_stability_on and
-    ball_stability_on), as :func:`add_stability` on the sphere.  The
-    bodies inside only; a sliding particle is not analysed."""
+def _stability_columns(columns: dict, status: np.ndarray, body_code: np.ndarray, solve, not_analysed=None) -> dict:
+    """The stability columns from ``solve(body, rows)`` (the exact
+    linearisation's dict for those rows of that body, a wheel's or a
+    ball's) where the steady orbit exists with contact; a sliding particle,
+    k = 0 and the rows of ``not_analysed`` (mask, method) are ``unknown``
+    with the reason as the method."""
     from deathsphere.physics import stability as exact
     from deathsphere.physics.stability.verdict import stability_kind
 
-    n = len(columns["status"])
-    out = _no_stability(n)
+    out = _no_stability(len(columns["status"]))
     live = np.isin(status, LIVE_CODES)
-    par = {key: columns[col] for key, col in (("a", "a_m"), ("k", "k"), ("g", "g_m_s2"))}
     particle = body_code == PARTICLE.code
-    singular = live & (columns["k"] == 0) & ~particle
-    out["stability"][singular] = "unknown"
-    out["stability_method"][singular] = NOT_ANALYSED_K0
-    live &= ~singular
-    rows = np.flatnonzero(live & outside & ~particle)
-    out["stability"][rows] = "unknown"
-    out["stability_method"][rows] = NOT_ON_SURFACE
-    live &= ~outside
-    analysed = {WHEEL: (exact.wheel_stability_on, alpha_rad), BALL: (exact.ball_stability_on, columns["omega_rad_s"])}
-    for one, (solver, seconds) in analysed.items():
+    skipped = [(live & (columns["k"] == 0) & ~particle, NOT_ANALYSED_K0)]
+    if not_analysed is not None:
+        skipped.append((live & not_analysed[0] & ~particle, not_analysed[1]))
+    for mask, method in skipped:
+        out["stability"][mask] = "unknown"
+        out["stability_method"][mask] = method
+        live &= ~mask
+    for one in (WHEEL, BALL):
         rows = np.flatnonzero(live & (body_code == one.code))
         if not rows.size:
             continue
-        res = solver(ground, height[rows], seconds[rows], *(par[key][rows] for key in ("a", "k", "g")))
+        res = solve(one, rows)
         out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]
         out["stability_method"][rows] = EXACT_METHOD
         out["growth_rate_1_s"][rows] = res["growth_rate"]
@@ -716,6 +711,25 @@ def add_stability_on(columns: dict, ground, height: np.ndarray, alpha_rad: np.nd
     out["stability"][rows] = "unknown"
     out["stability_method"][rows] = "not analysed (sliding particle)"
     return out
+
+
+def add_stability_on(columns: dict, ground, height: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,
+                     body_code: np.ndarray, outside: np.ndarray) -> dict:
+    """The stability columns of orbits on a ground other than the globe:
+    the exact linearisation of the equations of motion on any ground
+    (docs/dynamics.md sec. 7; physics.stability.wheel_stability_on and
+    ball_stability_on), as :func:`add_stability` on the sphere.  The
+    bodies inside only; a sliding particle is not analysed."""
+    from deathsphere.physics import stability as exact
+
+    par = {key: columns[col] for key, col in (("a", "a_m"), ("k", "k"), ("g", "g_m_s2"))}
+    solvers = {WHEEL: (exact.wheel_stability_on, alpha_rad), BALL: (exact.ball_stability_on, columns["omega_rad_s"])}
+
+    def solve(one, rows):
+        solver, second = solvers[one]
+        return solver(ground, height[rows], second[rows], *(par[key][rows] for key in ("a", "k", "g")))
+
+    return _stability_columns(columns, status, body_code, solve, (np.asarray(outside, dtype=bool), NOT_ON_SURFACE))
 
 
 def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,
@@ -733,33 +747,14 @@ def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, s
     (:func:`deathsphere.requests.decode.paper_body_codes`) and ``outside`` are each row's too.
     """
     from deathsphere.physics import stability as exact
-    from deathsphere.physics.stability.verdict import stability_kind
 
-    n = len(columns["status"])
-    out = _no_stability(n)
-    live = np.isin(status, LIVE_CODES)
-    theta = theta_rad
     par = {key: columns[col] for key, col in (("a", "a_m"), ("r", "r_m"), ("k", "k"), ("g", "g_m_s2"))}
-    particle = body_code == PARTICLE.code
-    singular = live & (columns["k"] == 0) & ~particle
-    out["stability"][singular] = "unknown"
-    out["stability_method"][singular] = NOT_ANALYSED_K0
-    live &= ~singular
     # a wheel's orbit is fixed by its tilt, a ball's by its orbital rate (eqs. 29, 55)
-    analysed = {WHEEL: (exact.wheel_stability, alpha_rad), BALL: (exact.sphere_stability, columns["omega_rad_s"])}
-    for one, (solver, seconds) in analysed.items():
-        rows = np.flatnonzero(live & (body_code == one.code))
-        if not rows.size:
-            continue
-        second = seconds[rows]
-        res = solver(theta[rows], second, *(par[key][rows] for key in ("a", "r", "k", "g")), outside=outside[rows])
-        out["stability"][rows] = exact.VERDICT_LABELS[res["verdict"]]
-        out["stability_method"][rows] = EXACT_METHOD
-        out["growth_rate_1_s"][rows] = res["growth_rate"]
-        out["freq_slow_rad_s"][rows] = res["freq_slow"]
-        out["freq_fast_rad_s"][rows] = res["freq_fast"]
-        out["stability_kind"][rows] = stability_kind(res["growth_rate"], res["rate_scale"])
-    rows = np.flatnonzero(live & particle)
-    out["stability"][rows] = "unknown"
-    out["stability_method"][rows] = "not analysed (sliding particle)"
-    return out
+    solvers = {WHEEL: (exact.wheel_stability, alpha_rad), BALL: (exact.sphere_stability, columns["omega_rad_s"])}
+
+    def solve(one, rows):
+        solver, second = solvers[one]
+        return solver(theta_rad[rows], second[rows], *(par[key][rows] for key in ("a", "r", "k", "g")),
+                      outside=outside[rows])
+
+    return _stability_columns(columns, status, body_code, solve)
