@@ -107,3 +107,20 @@ def test_a_gentle_bend_is_not_a_kink():
     steps = np.stack((np.cos(angles), np.sin(angles)))
     pts = np.concatenate((np.array([[2.0], [0.0]]), np.array([[2.0], [0.0]]) + np.cumsum(steps, axis=1)), axis=1)
     Profile(pts[0], pts[1])
+
+
+def test_the_lanes_kept_are_never_stale():
+    """The profile keeps its last lanes' spline values (an orbit asks each
+    answer of the same heights in turn): a height array changed in place,
+    or another one, is answered afresh, as a new profile answers it."""
+    from deathsphere.physics.ground import Cylinder, Profile
+
+    drum = Cylinder(3.0)
+    rho, z = np.full(9, 3.0), np.linspace(0.0, 8.0, 9)
+    prof = Profile(rho, z)
+    h = np.array([1.0, 2.0, 3.0])
+    first = prof.contact(h)[1].copy()
+    h += 0.5                                   # the same array, new values
+    np.testing.assert_allclose(prof.contact(h)[1], h, rtol=0, atol=1e-12)
+    assert not np.allclose(first, prof.contact(h)[1])
+    np.testing.assert_allclose(prof.normal(np.array([4.0]))[0], drum.normal(np.array([4.0]))[0], atol=1e-12)

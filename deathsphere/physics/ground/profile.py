@@ -85,6 +85,9 @@ class Profile:
         self.rho_samples, self.z_samples = rho, z
         self._spline = CubicSpline(s, np.column_stack((rho, z)))
         self._d1, self._d2 = self._spline.derivative(1), self._spline.derivative(2)
+        # z(s) alone for the inverse (the spline's second column, at half the cost of both)
+        self._z_of_s = CubicSpline(s, z)
+        self._dz_of_s = self._z_of_s.derivative(1)
         self._s_end = float(s[-1])
         fine = np.concatenate([np.linspace(s[i], s[i + 1], _FINE, endpoint=False) for i in range(s.size - 1)]
                               + [s[-1:]])
@@ -101,6 +104,9 @@ class Profile:
         from scipy.spatial import cKDTree
 
         self._tree = cKDTree(points)
+        # the last lanes asked for and their spline values: a body's orbit asks
+        # contact, normal, wall_angle and curvatures of the same heights in turn
+        self._last = None
 
     #: z of the lowest point [m].
     @property
@@ -120,15 +126,32 @@ class Profile:
 
     def _s_of_height(self, height):
         """The spline's parameter s at each height (z = lowest + height):
-        a guess from the fine table, then Newton's method on z(s); clipped
-        to the meridian."""
-        target = self.lowest + np.asarray(height, dtype=float)
+        a guess from the fine table, then Newton's method on z(s) (stopping
+        once no step moves s by more than round-off); clipped to the
+        meridian."""
+        return self._lane(height)[0]
+
+    def _lane(self, height):
+        """(s, the point (rho, z), its first and second derivatives in s) at
+        each height; the last heights' are kept (the same lanes are asked
+        of every answer of an orbit in turn)."""
+        height = np.asarray(height, dtype=float)
+        last = self._last
+        if last is not None and last[0].shape == height.shape and np.array_equal(last[0], height):
+            return last[1]
+        target = self.lowest + height
         s = np.interp(target, self._fine_z, self._fine_s)
+        tol = 4 * np.finfo(float).eps * max(self._s_end, 1.0)
         for _ in range(_NEWTON):
-            z, dz = self._spline(s)[..., 1], self._d1(s)[..., 1]
+            z, dz = self._z_of_s(s), self._dz_of_s(s)
             ok = dz > 0
-            s = np.clip(s - np.where(ok, (z - target) / np.where(ok, dz, 1.0), 0.0), 0.0, self._s_end)
-        return s
+            step = np.where(ok, (z - target) / np.where(ok, dz, 1.0), 0.0)
+            s = np.clip(s - step, 0.0, self._s_end)
+            if not np.any(np.abs(step) > tol):
+                break
+        lane = (s, self._spline(s), self._d1(s), self._d2(s))
+        self._last = (height.copy(), lane)
+        return lane
 
     def _frame(self, s):
         d1 = self._d1(s)
@@ -136,24 +159,24 @@ class Profile:
         return d1[..., 0] / speed, d1[..., 1] / speed          # cos beta, sin beta
 
     def contact(self, height):
-        p = self._spline(self._s_of_height(height))
+        p = self._lane(height)[1]
         return np.maximum(p[..., 0], 0.0), p[..., 1]
 
     def wall_angle(self, height):
-        d1 = self._d1(self._s_of_height(height))
+        d1 = self._lane(height)[2]
         return np.arctan2(d1[..., 1], d1[..., 0])
 
     def normal(self, height):
-        cos_b, sin_b = self._frame(self._s_of_height(height))
-        return -sin_b, cos_b
+        d1 = self._lane(height)[2]
+        speed = np.hypot(d1[..., 0], d1[..., 1])
+        return -d1[..., 1] / speed, d1[..., 0] / speed
 
     def curvatures(self, height):
-        s = self._s_of_height(height)
-        d1, d2 = self._d1(s), self._d2(s)
+        _, p, d1, d2 = self._lane(height)
         speed = np.hypot(d1[..., 0], d1[..., 1])
         # d(beta)/ds: positive where the meridian bends towards the inside normal
         k_mer = (d1[..., 0] * d2[..., 1] - d1[..., 1] * d2[..., 0]) / speed ** 3
-        rho = self._spline(s)[..., 0]
+        rho = p[..., 0]
         on_axis = rho <= 1e-12 * max(self._s_end, 1.0)
         # Meusnier: sin(beta) / rho; on the axis the surface is umbilic
         k_par = np.where(on_axis, k_mer, d1[..., 1] / speed / np.where(on_axis, 1.0, rho))
