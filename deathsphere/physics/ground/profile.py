@@ -85,9 +85,17 @@ class Profile:
         self.rho_samples, self.z_samples = rho, z
         self._spline = CubicSpline(s, np.column_stack((rho, z)))
         self._d1, self._d2 = self._spline.derivative(1), self._spline.derivative(2)
-        # z(s) alone for the inverse (the spline's second column, at half the cost of both)
-        self._z_of_s = CubicSpline(s, z)
-        self._dz_of_s = self._z_of_s.derivative(1)
+        # the spline with its derivatives as one piecewise cubic of six columns
+        # (rho, z, rho', z', rho'', z''), and z with z' as one of two: each
+        # evaluated in one pass over the lanes (the interval found once)
+        from scipy.interpolate import PPoly
+
+        c = self._spline.c                                   # (4, m, 2): t^3, t^2, t, 1
+        zero = np.zeros_like(c[0])
+        slope = np.stack((zero, 3 * c[0], 2 * c[1], c[2]))
+        bend = np.stack((zero, zero, 6 * c[0], 2 * c[1]))
+        self._all = PPoly(np.concatenate((c, slope, bend), axis=2), s)
+        self._z_dz = PPoly(np.stack((c[..., 1], slope[..., 1]), axis=2), s)
         self._s_end = float(s[-1])
         fine = np.concatenate([np.linspace(s[i], s[i + 1], _FINE, endpoint=False) for i in range(s.size - 1)]
                               + [s[-1:]])
@@ -101,6 +109,10 @@ class Profile:
             _refuse(f"between rows {j} and {j + 1} the interpolated meridian turns down or crosses the axis "
                     "(sample it more finely there)")
         self._fine_s, self._fine_rho, self._fine_z = fine, points[:, 0], points[:, 1]
+        # max |z''| / min z' over the samples' fine table, for the stopping rule of Newton's method (_lane)
+        dz_fine = np.abs(self._d1(fine)[:, 1])
+        self._newton_scale = float(np.max(np.abs(self._d2(fine)[:, 1])) / max(np.min(dz_fine[dz_fine > 0]), 1e-300)
+                                   if (dz_fine > 0).any() else np.inf)
         from scipy.spatial import cKDTree
 
         self._tree = cKDTree(points)
@@ -143,13 +155,17 @@ class Profile:
         s = np.interp(target, self._fine_z, self._fine_s)
         tol = 4 * np.finfo(float).eps * max(self._s_end, 1.0)
         for _ in range(_NEWTON):
-            z, dz = self._z_of_s(s), self._dz_of_s(s)
+            z_dz = self._z_dz(s)
+            z, dz = z_dz[..., 0], z_dz[..., 1]
             ok = dz > 0
             step = np.where(ok, (z - target) / np.where(ok, dz, 1.0), 0.0)
             s = np.clip(s - step, 0.0, self._s_end)
-            if not np.any(np.abs(step) > tol):
+            # Newton's error squares with each step: the next step would be
+            # about (z'' / 2 z') step^2, below round-off once that is
+            if not np.any(np.abs(step) * np.abs(step) * self._newton_scale > tol):
                 break
-        lane = (s, self._spline(s), self._d1(s), self._d2(s))
+        every = self._all(s)
+        lane = (s, every[..., 0:2], every[..., 2:4], every[..., 4:6])
         self._last = (height.copy(), lane)
         return lane
 
