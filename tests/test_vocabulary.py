@@ -85,7 +85,7 @@ def test_unit_suffixes_are_the_same_numbers_as_si(run):
     spin = rows(run("orbit", "--body", "sphere", "--theta", "60", "--omega3", "600rpm", "--format", "csv").stdout)
     assert float(spin[0]["omega3_rad_s"]) == pytest.approx(20 * math.pi, 1e-15)
     ranged = rows(run("orbit", "--theta", "90", "--speed", "30:50:10km/h", "--format", "csv").stdout)
-    assert sorted({float(r["v_cm_m_s"]) for r in ranged}) == pytest.approx([30 / 3.6, 40 / 3.6, 50 / 3.6])
+    assert sorted({float(r["v_contact_m_s"]) for r in ranged}) == pytest.approx([30 / 3.6, 40 / 3.6, 50 / 3.6])
 
 
 @pytest.mark.parametrize("args, words", [
