@@ -98,3 +98,20 @@ def test_a_result_csv_fed_back_reads_as_before(tmp_path):
     (tmp_path / "v.csv").write_text("theta_deg,v_cm_m_s\n60,7\n")
     again = deathsphere.orbit_input(tmp_path / "v.csv", stability=False).table()
     np.testing.assert_allclose(sorted(again["alpha_deg"]), sorted(out["alpha_deg"]))
+
+
+def test_simulate_a_wheel_by_its_contact_speed_or_its_centre_speed():
+    _, contact = deathsphere.simulate(60, speed=7, periods=0.1, points_per_period=10)
+    omega = float(contact["omega_rad_s"][0])
+    assert omega * R * math.sin(math.radians(60)) == pytest.approx(7.0, rel=1e-9)
+    assert eq29_residual(60.0, float(contact["alpha_deg"][0]), omega) == pytest.approx(0.0, abs=1e-9)
+    _, centre = deathsphere.simulate(60, com_speed=7, periods=0.1, points_per_period=10)
+    assert float(centre["speed_m_s"][0]) == 7.0
+    assert float(centre["alpha_deg"][0]) != pytest.approx(float(contact["alpha_deg"][0]), abs=1e-3)
+    with pytest.raises(deathsphere.ParameterError, match="vertical axis"):
+        deathsphere.simulate(0, speed=7, periods=0.1)
+
+
+def test_simulate_refuses_a_second_hold(run):
+    res = run("simulate", "--theta", "60", "--speed", "7", "--com-speed", "7")
+    assert res.exit_code == 2 and res.stderr.count("\n") == 1 and "error: --com-speed: give one of" in res.stderr
