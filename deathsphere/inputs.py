@@ -53,7 +53,7 @@ from deathsphere.table.reasons import echo
 
 ALIASES = {
     "theta_deg": "theta", "alpha_deg": "alpha", "a_m": "a", "r_m": "r", "g_m_s2": "g",
-    "mu_available": "mu",
+    "mu_available": "mu", "v_cm_m_s": "com_speed",
 }
 TEXT_FIELDS = ("body", "side")
 #: Fields whose cells may be +-inf (every other number must be finite).

@@ -49,6 +49,8 @@ COLUMNS = (
     # the arena (docs/surfaces.md): which surface, the lane's height, the contact's distance from the axis
     # and the wall's angle from the horizontal there (on the sphere 180 - theta)
     "surface", "height_m", "rho_contact_m", "wall_angle_deg",
+    # the contact's speed along the ground, Omega rho_contact (a speedometer's reading; what speed gives)
+    "v_contact_m_s",
 )
 
 #: Columns holding text; ``branch`` holds ints or None; every other column is
@@ -80,7 +82,8 @@ REQUEST_FIELDS = {
     "body": (WHEEL.word, "", " | ".join(BODIES)),
     "side": ("inside", "", "inside | outside"),
     **{name: (params.PARAMS[name].default, params.PARAMS[name].unit, params.PARAMS[name].what)
-       for name in ("theta", "alpha", "a", "r", "k", "g", "mu", "max_g", "omega3", "omega", "speed", "height")},
+       for name in ("theta", "alpha", "a", "r", "k", "g", "mu", "max_g", "omega3", "omega", "speed", "com_speed",
+                     "height")},
 }
 
 
@@ -122,7 +125,7 @@ class Setup:
         for name in ("a", "r", "k", "g", "mu"):
             object.__setattr__(self, name, float(getattr(self, name)))
 
-    def orbit(self, theta_deg, alpha_deg=None, *, omega3=None, omega=None, speed=None,
+    def orbit(self, theta_deg, alpha_deg=None, *, omega3=None, omega=None, speed=None, com_speed=None,
               stability: bool = True) -> Table:
         """Steady horizontal orbits of this body and sphere, broadcast.
 
@@ -143,7 +146,7 @@ class Setup:
         """
         given = {name: np.asarray(v, dtype=float) for name, v in
                  (("theta", theta_deg), ("alpha", alpha_deg), ("omega3", omega3), ("omega", omega),
-                  ("speed", speed)) if v is not None}
+                  ("speed", speed), ("com_speed", com_speed)) if v is not None}
         try:
             shape = np.broadcast_shapes(*(v.shape for v in given.values()))
         except ValueError:
@@ -279,13 +282,17 @@ def validate_requests(req: dict) -> np.ndarray:
     is_wheel, is_sphere = body_code == WHEEL.code, body_code == BALL.code
     targets = sum((~np.isnan(req[key])).astype(int) for key in WHEEL.held_by)
     checks.append((is_wheel & (targets != 1),
-                   lambda i: "a wheel needs exactly one of alpha | speed (m/s) | omega (rad/s)"))
-    for name, v in (("alpha", alpha), ("speed", speed), ("omega", omega), ("omega3", omega3)):
+                   lambda i: "a wheel needs exactly one of alpha | speed (m/s: the contact's) | com_speed (m/s: "
+                             "the centre's) | omega (rad/s)"))
+    com_speed = req["com_speed"]
+    for name, v in (("alpha", alpha), ("speed", speed), ("com_speed", com_speed), ("omega", omega),
+                    ("omega3", omega3)):
         domain(name, ~np.isnan(v))
     with np.errstate(invalid="ignore"):
         checks.append((is_wheel & (omega < 0),
                        lambda i: f"a wheel's omega is its rate about the vertical: > 0 (got {params.shown_number(float(omega[i]))})"))
     checks.append((~is_wheel & ~np.isnan(speed), lambda i: "speed is an input for a wheel only"))
+    checks.append((~is_wheel & ~np.isnan(com_speed), lambda i: "com_speed is an input for a wheel only"))
     checks.append((is_sphere & (sum((~np.isnan(req[key])).astype(int) for key in BALL.held_by) != 1),
                    lambda i: "a sphere needs exactly one of omega3 (spin) and omega (orbital rate)"))
     checks.append((~is_sphere & ~np.isnan(omega3), lambda i: "omega3 is an input for a sphere only"))
@@ -366,19 +373,41 @@ def _wheel(req, rows):
 def _wheel_solved(req, rows):
     """Speed or rate given: every alpha of eq. (29), one row per root (branch
     = root index, in increasing alpha); a request with no root gives one
-    no_orbit row.  One vectorised call per distinct setup and target kind."""
+    no_orbit row.  A contact speed v (``speed``, along the ground) fixes
+    the rate Omega = v / rho_P, rho_P = r sin(theta) the parallel the
+    contact runs round, and is solved as that rate; with the contact on
+    the axis no rate gives it (no_orbit, contact_on_axis).  A centre speed
+    (``com_speed``) is solved as v_cm = |r'| Omega.  One vectorised call per
+    distinct setup and target kind."""
     from deathsphere.physics import region
+    from deathsphere.physics.ground import Sphere
+    from deathsphere.physics.machine_lanes import contact_rate
 
     outside = req["outside"][rows].astype(float)
-    by_speed = (~np.isnan(req["speed"][rows])).astype(float)
-    setups = np.column_stack([req[key][rows] for key in ("a", "r", "k", "g", "mu")] + [outside, by_speed])
+    # 0: rate, 1: centre speed, 2: contact speed
+    kind = np.where(~np.isnan(req["com_speed"][rows]), 1.0, np.where(~np.isnan(req["speed"][rows]), 2.0, 0.0))
+    setups = np.column_stack([req[key][rows] for key in ("a", "r", "k", "g", "mu")] + [outside, kind])
     unique, inverse = np.unique(setups, axis=0, return_inverse=True)
     parts = []
-    for u, (a, r, k, g, mu, out, speed_given) in enumerate(unique):
+    for u, (a, r, k, g, mu, out, how) in enumerate(unique):
         sub = rows[inverse.reshape(-1) == u]
-        target = "speed" if speed_given else "omega"
-        res = region.solve_alpha(req["theta_rad"][sub], a, r, k, g, outside=bool(out), mu=mu,
-                                 **{target: req[target][sub]})
+        if how == 1:
+            target = {"speed": req["com_speed"][sub]}
+        elif how == 2:
+            rate = contact_rate(req["theta_rad"][sub], req["speed"][sub], Sphere(float(r)))
+            on_axis = np.isnan(rate)
+            if on_axis.any():
+                axis = sub[on_axis]
+                parts.append((axis, np.full(axis.size, -1), {
+                    "status": np.full(axis.size, Status.NO_ORBIT, dtype=np.int8),
+                    "reason": np.full(axis.size, Reason.CONTACT_ON_AXIS, dtype=np.int8)}))
+                sub, rate = sub[~on_axis], rate[~on_axis]
+                if not sub.size:
+                    continue
+            target = {"omega": rate}
+        else:
+            target = {"omega": req["omega"][sub]}
+        res = region.solve_alpha(req["theta_rad"][sub], a, r, k, g, outside=bool(out), mu=mu, **target)
         count = np.asarray(res["count"]).reshape(-1)
         roots = res["alpha"].reshape(sub.size, -1)
         row_i, root_j = np.nonzero(np.arange(roots.shape[1])[None, :] < count[:, None])
@@ -590,6 +619,8 @@ def evaluate(req: dict, stability: bool = True) -> Table:
                        else _no_stability(len(pick)))
     columns.update(_lane_columns(req, ground, pick, {key: value[order] for key, value in lane.items()},
                                  codes != Status.INVALID))
+    # the contact runs round the parallel of radius rho_contact at the rate Omega (any body, any ground)
+    columns["v_contact_m_s"] = np.abs(columns["omega_rad_s"]) * columns["rho_contact_m"]
     echo_given(columns, {column: req[name][pick] for name, column in ECHOED.items()}, codes != Status.INVALID)
     return Table({name: columns[name] for name in COLUMNS})
 
@@ -624,7 +655,7 @@ LIVE_CODES = (Status.OK, Status.SLIPS, Status.OVER_G)
 LIVE_STATUSES = tuple(code.label for code in LIVE_CODES)
 #: Request fields a row prints as given, and their columns (docs/contract.md,
 #: "Inputs are echoed as given").
-ECHOED = {"speed": "v_cm_m_s", "omega": "omega_rad_s", "omega3": "omega3_rad_s"}
+ECHOED = {"speed": "v_contact_m_s", "com_speed": "v_cm_m_s", "omega": "omega_rad_s", "omega3": "omega3_rad_s"}
 
 
 def echo_given(columns: dict, given: dict, valid: np.ndarray | None = None) -> None:

@@ -194,18 +194,17 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
           metavar="RAD_S",
           help="Orbital rate Omega. Wheel (> 0): every tilt alpha giving it (eq. 29 solved, one row each). "
                "Sphere: signed about the upward vertical; omega3 follows (eq. 55)."),
-    # one word, one point per command: ride and a show's plan take the contact's speed (a speedometer's
-    # reading); orbit, sweep and simulate still take the wheel's (or machine's) centre speed (docs/contract.md)
-    Param("speed", "m/s", "contact or centre speed", TINY, HUGE, symbol="v", kind="speed", metavar="M_S",
-          help="The speed, by command: ride and a show's plan, the contact's along the ground (a "
-               "speedometer's; a two-wheeler's rear contact's), the lap rate Omega = speed / (r sin theta); "
-               "orbit, sweep, stability and simulate, the centre's (the wheel's v_cm, a machine's centre of "
-               "mass). Every tilt alpha giving it, one row each (branch = root number in increasing alpha)."),
+    # one word, one point in every command: --speed is the contact's speed along the ground (a speedometer's
+    # reading), --com-speed the centre of mass's (docs/contract.md)
+    Param("speed", "m/s", "contact speed", TINY, HUGE, symbol="v", kind="speed", metavar="M_S",
+          help="The contact's speed along the ground (a speedometer's); a two-wheeler's, its rear contact's. The "
+               "contact runs round the parallel of radius r sin theta, so the lap rate is Omega = speed / "
+               "(r sin theta); every tilt alpha giving it, one row each (branch = root number in increasing "
+               "alpha). With the contact on the axis (theta 0 or 180) no orbit."),
     Param("com_speed", "m/s", "centre-of-mass speed", TINY, HUGE, symbol="v_cm", kind="speed", metavar="M_S",
           column="v_cm_m_s",
-          help="The centre of mass's speed (a wheel's centre speed v_cm): ride and a show's plan, instead of "
-               "--speed (the contact's there); orbit, sweep and simulate, the same as --speed. Every tilt "
-               "giving it, one row each (docs/machine.md eq. M12)."),
+          help="The centre of mass's speed (a wheel's centre speed v_cm) instead of --speed (the contact's). "
+               "Every tilt giving it, one row each (docs/machine.md eq. M12)."),
     Param("period", "s", "lap time", TINY, HUGE, symbol="T", kind="time", metavar="S", column="period_s",
           help="Ride and a show's plan: the lap time instead of --speed, Omega = 2 pi / T; every tilt giving "
                "it, one row each (docs/machine.md eq. M12r)."),

@@ -477,8 +477,10 @@ def test_the_chunk_size_does_not_change_a_byte():
 
 def test_inputs_are_echoed_as_given():
     # a quantity the request fixes is printed as typed, not as recomputed
-    solved = deathsphere.orbit(60, speed=7, stability=False)
+    solved = deathsphere.orbit(60, com_speed=7, stability=False)
     assert len(solved) >= 1 and set(solved["v_cm_m_s"].tolist()) == {7.0}
+    solved = deathsphere.orbit(60, speed=7, stability=False)
+    assert len(solved) >= 1 and set(solved["v_contact_m_s"].tolist()) == {7.0}
     assert set(deathsphere.orbit(60, omega=4, stability=False)["omega_rad_s"].tolist()) == {4.0}
     assert float(deathsphere.vertical(90, 6, stability=False)["v_cm_m_s"]) == 6.0
     _, summary = deathsphere.simulate(60, 10, perturb=0.5, periods=0.05, points_per_period=10)

@@ -139,9 +139,13 @@ def test_fixed_reasons_that_had_commas(args, words):
 
 
 def test_requested_speed_is_echoed_in_a_no_orbit_row():
-    _, rows = run("orbit", "--theta", "0", "--speed", "1e6", "--speed", "7", "--format", "csv")
+    _, rows = run("orbit", "--theta", "0", "--com-speed", "1e6", "--com-speed", "7", "--format", "csv")
     assert [r["v_cm_m_s"] for r in rows] == ["1000000.0", "7.0"]
     assert [r["status"] for r in rows] == ["no_orbit", "no_orbit"]
+    # the contact's speed, on the axis: no rate gives it, and it is echoed where the contact's speed is
+    _, rows = run("orbit", "--theta", "0", "--speed", "1e6", "--speed", "7", "--format", "csv")
+    assert [r["v_contact_m_s"] for r in rows] == ["1000000.0", "7.0"]
+    assert [(r["status"], r["reason"]) for r in rows] == [("no_orbit", REASON_TEXT[Reason.CONTACT_ON_AXIS])] * 2
 
 
 def test_every_echoed_request_appears_whatever_the_status():
@@ -170,7 +174,7 @@ def test_the_top_speed_is_echoed_in_the_points_output():
 
 @pytest.mark.parametrize("theta", ["0", "180"])
 def test_a_singular_point_is_not_a_tilt(theta):
-    _, rows = run("orbit", "--theta", theta, "--speed", "7", "--format", "csv")
+    _, rows = run("orbit", "--theta", theta, "--com-speed", "7", "--format", "csv")
     assert len(rows) == 1
     row = rows[0]
     assert (row["status"], row["alpha_deg"], row["r_prime_m"]) == ("no_orbit", "", "")

@@ -55,11 +55,11 @@ def test_a_machine_in_inches_keeps_its_inches():
 
 
 @pytest.mark.parametrize("request_, column, value", [
-    ({"speed": 7}, "speed_m_s", 7.0),
-    ({"speed": "30km/h"}, "speed_m_s", float(Fraction(30000, 3600))),
+    ({"com_speed": 7}, "speed_m_s", 7.0),
+    ({"com_speed": "30km/h"}, "speed_m_s", float(Fraction(30000, 3600))),
     ({"omega": "30rpm"}, "omega_rad_s", math.pi),
     ({"omega": 2.1}, "omega_rad_s", 2.1),
-    ({"machine": "stunt125", "speed": 8}, "speed_m_s", 8.0),
+    ({"machine": "stunt125", "com_speed": 8}, "speed_m_s", 8.0),
 ])
 def test_simulate_echoes_the_requested_speed_and_rate(request_, column, value):
     _, summary = deathsphere.simulate(90, periods=0.05, points_per_period=4, **request_)

@@ -3,6 +3,7 @@ docs/simulation.md "Bodies"): the paper's wheel as a machine runs the
 wheel's simulation, and ``stunt125``'s orbits behave as ``ride``'s
 stability says."""
 
+import math
 import numpy as np
 import pytest
 
@@ -93,18 +94,30 @@ def test_a_stable_stunt125_orbit_stays_bounded():
     assert abs(float(summary["min_head_clearance_m"][0]) - float(ride["head_clearance_m"])) < lever * dev.max()
 
 
-def test_a_machine_given_its_speed_rides_that_speed():
-    """simulate's speed is the centre of mass's (ride's com_speed): the tilt
-    is ride's for it (eq. M12), and the simulated v_cm holds it on the
+def test_a_machine_given_its_centre_speed_rides_that_speed():
+    """simulate's com_speed is the centre of mass's (ride's com_speed): the
+    tilt is ride's for it (eq. M12), and the simulated v_cm holds it on the
     steady orbit."""
     v = 30 / 3.6
     ride = deathsphere.ride(60, com_speed=v, machine="stunt125", diameter="16ft", stability=False)
-    series, summary = deathsphere.simulate(60, machine="stunt125", speed=v, diameter="16ft", periods=0.5,
+    series, summary = deathsphere.simulate(60, machine="stunt125", com_speed=v, diameter="16ft", periods=0.5,
                                            points_per_period=10)
     assert float(summary["alpha_deg"][0]) == pytest.approx(float(np.min(ride["alpha_deg"])), abs=1e-12)
     np.testing.assert_allclose(series["v_cm_m_s"], v, rtol=1e-9)
     np.testing.assert_allclose(series["head_clearance_m"], float(ride["head_clearance_m"][0]), rtol=1e-9)
     assert float(summary["speed_m_s"][0]) == pytest.approx(v, rel=1e-12)
+
+
+def test_a_machine_given_its_contact_speed_rides_that_speed():
+    """simulate's speed is the contact's along the ground, as ride's: the
+    tilt is ride's for it, and the contact, on the parallel of radius
+    r sin(theta), runs at it: Omega r sin(theta) = v."""
+    v, r = 30 / 3.6, 16 * 0.3048 / 2
+    ride = deathsphere.ride(60, speed=v, machine="stunt125", diameter="16ft", stability=False)
+    series, summary = deathsphere.simulate(60, machine="stunt125", speed=v, diameter="16ft", periods=0.5,
+                                           points_per_period=10)
+    assert float(summary["alpha_deg"][0]) == pytest.approx(float(np.min(ride["alpha_deg"])), abs=1e-12)
+    assert float(summary["omega_rad_s"][0]) * r * math.sin(math.radians(60)) == pytest.approx(v, rel=1e-9)
 
 
 @pytest.mark.parametrize("extra, words", [

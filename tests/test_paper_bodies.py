@@ -36,8 +36,10 @@ def test_the_records_default_inertia_is_the_papers():
     assert (WHEEL.default_k, BALL.default_k, PARTICLE.default_k) == (0.5, 0.4, 0.0)
     assert Setup(body="sphere").k == 0.4 and isinstance(Setup(body="sphere").body, Ball)
     assert (WHEEL.rolls, BALL.rolls, PARTICLE.rolls) == (True, True, False)
-    # eq. 29 fixes a wheel's orbit at theta by one of its tilt, speed, rate; eq. 55 a ball's by its spin or rate
-    assert (WHEEL.held_by, BALL.held_by, PARTICLE.held_by) == (("alpha", "speed", "omega"), ("omega3", "omega"), ())
+    # eq. 29 fixes a wheel's orbit at theta by one of its tilt, contact speed, centre speed, rate; eq. 55 a
+    # ball's by its spin or rate
+    assert (WHEEL.held_by, BALL.held_by, PARTICLE.held_by) == (("alpha", "speed", "com_speed", "omega"),
+                                                               ("omega3", "omega"), ())
 
 
 def test_a_setup_refuses_a_word_naming_no_body():
@@ -50,10 +52,11 @@ def _lane(body, **given):
 
 
 def test_which_key_holds_a_lane_is_the_bodys():
-    from deathsphere.requests.records import Horizontal, Rate, Speed, Spin, Theta, Tilt, Vertical
+    from deathsphere.requests.records import ComSpeed, ContactSpeed, Horizontal, Rate, Spin, Theta, Tilt, Vertical
 
     assert _lane(WHEEL, alpha=10) == Horizontal(at=Theta(60.0), by=Tilt(10.0))
-    assert _lane(WHEEL, speed=7, branch=3) == Horizontal(at=Theta(60.0), by=Speed(7.0, 3))   # checked once solved
+    assert _lane(WHEEL, speed=7, branch=3) == Horizontal(at=Theta(60.0), by=ContactSpeed(7.0, 3))  # checked once solved
+    assert _lane(WHEEL, com_speed=7, branch=3) == Horizontal(at=Theta(60.0), by=ComSpeed(7.0, 3))
     assert _lane(BALL, omega3=40, branch=1) == Horizontal(at=Theta(60.0), by=Spin(40.0, 1))
     assert _lane(BALL, omega=-2) == Horizontal(at=Theta(60.0), by=Rate(-2.0, 0))
     assert _lane(WHEEL, vertical=True, v_top=6) == Vertical(v_top=6.0, theta=60.0)

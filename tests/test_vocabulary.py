@@ -79,13 +79,13 @@ def test_unit_suffixes_are_the_same_numbers_as_si(run):
                   "--format", "csv").stdout)
     rider = rows(run("orbit", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--format", "csv").stdout)
     assert [r["alpha_deg"] for r in si] == [r["alpha_deg"] for r in rider] and len(rider) >= 1
-    assert {r["r_m"] for r in rider} == {"2.4384"} and float(rider[0]["v_cm_m_s"]) == pytest.approx(40 / 3.6, 1e-15)
+    assert {r["r_m"] for r in rider} == {"2.4384"} and float(rider[0]["v_contact_m_s"]) == pytest.approx(40 / 3.6, 1e-15)
     rad = rows(run("orbit", "--theta", "60", "--alpha", f"{math.radians(10)!r}rad", "--format", "csv").stdout)
     assert float(rad[0]["alpha_deg"]) == pytest.approx(10.0, abs=1e-12)
     spin = rows(run("orbit", "--body", "sphere", "--theta", "60", "--omega3", "600rpm", "--format", "csv").stdout)
     assert float(spin[0]["omega3_rad_s"]) == pytest.approx(20 * math.pi, 1e-15)
     ranged = rows(run("orbit", "--theta", "90", "--speed", "30:50:10km/h", "--format", "csv").stdout)
-    assert sorted({float(r["v_cm_m_s"]) for r in ranged}) == pytest.approx([30 / 3.6, 40 / 3.6, 50 / 3.6])
+    assert sorted({float(r["v_contact_m_s"]) for r in ranged}) == pytest.approx([30 / 3.6, 40 / 3.6, 50 / 3.6])
 
 
 @pytest.mark.parametrize("args, words", [

@@ -15,7 +15,7 @@ def _report(table: Table) -> Table:
 
 
 def stability(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
-              omega3=None, omega=None, speed=None, diameter=None) -> Table:
+              omega3=None, omega=None, speed=None, diameter=None, com_speed=None) -> Table:
     """Orbits' exact stability beside the paper's results: ``deathsphere stability``.
 
     The exact verdict, growth rate and nutation frequencies (the equations of
@@ -24,12 +24,13 @@ def stability(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a
     and as corrected: the equator, eqs. (133)-(138); small wheels, eqs.
     (202)-(207); near the poles, eq. (208).  The orbits are those of
     :func:`deathsphere.orbit` with the same arguments (McDonald 1993 eqs.
-    (29)-(36), (55)-(59)): they broadcast, and a wheel given ``speed`` or
-    ``omega`` has one orbit per tilt that gives it.
+    (29)-(36), (55)-(59)): they broadcast, and a wheel given ``speed`` (the
+    contact's), ``com_speed`` (the centre's) or ``omega`` has one orbit per
+    tilt that gives it.
 
     Parameters
     ----------
-    theta, alpha, body, side, a, r, k, g, mu, omega3, omega, speed, diameter
+    theta, alpha, body, side, a, r, k, g, mu, omega3, omega, speed, com_speed, diameter
         As for :func:`deathsphere.orbit`.
 
     Returns
@@ -59,7 +60,7 @@ def stability(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a
     ['stable', 'unstable']
     """
     orbits = orbit(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3, omega=omega,
-                   speed=speed, diameter=diameter, stability=True)
+                   speed=speed, com_speed=com_speed, diameter=diameter, stability=True)
     return _report(Table(orbits.columns))
 
 

@@ -93,7 +93,7 @@ def refuse_oversized(arrays: dict, row_bytes: int, call: str, instead: str, per_
 
 
 def orbit(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G,
-          mu=INF, omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None,
+          mu=INF, omega3=None, omega=None, speed=None, com_speed=None, max_g=INF, diameter=None, only=None,
           stability: bool = True, surface="sphere", height=None, wall_angle=None, wall_height=None,
           profile=None, turn_radius=None) -> Table:
     """Steady horizontal orbits: ``deathsphere orbit``.
@@ -111,7 +111,8 @@ def orbit(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", 
     alpha : float or array_like, optional
         Wheel: tilt of the wheel below the orbit plane [deg], any angle
         (reduced to (-180, 180]; 205 = -155).  A wheel needs exactly one of
-        ``alpha``, ``speed`` and ``omega``; a sphere and a particle take none.
+        ``alpha``, ``speed``, ``com_speed`` and ``omega``; a sphere and a
+        particle take none.
     body : {"wheel", "sphere", "particle"}
     side : {"inside", "outside"}
     a, r : float or array_like
@@ -132,7 +133,15 @@ def orbit(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", 
         vertical (omega3 follows from eq. 55).  Wheel: > 0; eq. (29) is
         solved for every tilt alpha giving it, one row each.
     speed : float or array_like, optional
-        Wheel: centre speed v_cm [m/s]; every tilt alpha giving it, one row each.
+        Wheel: the contact's speed along the ground (a speedometer's) [m/s].
+        The contact runs round the parallel of radius rho_P = r sin(theta),
+        so it fixes the rate Omega = speed / rho_P; every tilt alpha giving
+        that rate, one row each (as ``omega``).  With the contact on the
+        axis (theta 0 or 180) no rate gives it: status ``no_orbit``, reason
+        contact_on_axis.  Echoed in ``v_contact_m_s``.
+    com_speed : float or array_like, optional
+        Wheel: the centre's speed v_cm [m/s]; every tilt alpha giving it, one
+        row each.  Echoed in ``v_cm_m_s``.
     stability : bool
         Fill the stability columns (exact linearisation); False is faster.
         On surfaces other than the sphere they stay empty (docs/surfaces.md).
@@ -166,7 +175,7 @@ def orbit(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", 
         ``table.shape`` the broadcast shape (``table.grid("v_cm_m_s")``
         gives a column in that shape).  Where one request can have several
         answers -- a sphere given ``omega3`` (two roots of eq. 55) or a
-        wheel given ``speed`` or ``omega`` (one row per tilt) -- the rows
+        wheel given ``speed``, ``com_speed`` or ``omega`` (one row per tilt) -- the rows
         cannot keep a rectangular shape: the table is flat (``shape ==
         (len(table),)``) and ``input_row`` is 1 + the request's flat index
         in the broadcast, shared by its rows.
@@ -213,7 +222,7 @@ def orbit(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", 
                                             turn_radius, theta)
     r = sphere_radius(r, diameter)
     given = {"theta": theta, "alpha": alpha, "a": a, "r": r, "k": k, "g": g, "mu": mu, "max_g": max_g,
-             "omega3": omega3, "omega": omega, "speed": speed, "height": height}
+             "omega3": omega3, "omega": omega, "speed": speed, "com_speed": com_speed, "height": height}
     checked = {name: checked_array(name, v) for name, v in given.items() if v is not None}
     refuse_oversized(checked, ORBIT_ROW_BYTES, "deathsphere.orbit()", "deathsphere.sweep()")
     shape, flat = broadcast_flat(checked)
@@ -268,7 +277,8 @@ def _arena_of(surface, r, diameter, wall_angle, wall_height, profile, height, tu
 
 
 def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side: str = "inside", g=G, mu=INF,
-          omega3=None, omega=None, speed=None, max_g=INF, diameter=None, only=None, chunk_size: int = CHUNK,
+          omega3=None, omega=None, speed=None, com_speed=None, max_g=INF, diameter=None, only=None,
+          chunk_size: int = CHUNK,
           stability: bool = True, jobs: int = 1, scheduler=None, surface="sphere", height=None, wall_angle=None,
           wall_height=None, profile=None, turn_radius=None) -> Chunks:
     """Every combination of the axes, chunk by chunk: ``deathsphere sweep``
@@ -280,13 +290,14 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
 
     Parameters
     ----------
-    theta, alpha, a, r, k, omega3, omega, speed : float, array_like or str
+    theta, alpha, a, r, k, omega3, omega, speed, com_speed : float, array_like or str
         The axes (units as in :func:`orbit`): a value, a list or array of
         values, or the command line's text, one value or a range
         ``"start:stop:step"`` (stop included when on the grid, e.g.
         ``"5:175:1"``), or a list mixing both (the values of a repeated
         option, in order).  Grid order is a, r, k, theta, then speed,
-        alpha, omega3 or omega fastest.
+        com_speed, alpha, omega3 or omega fastest.  ``speed`` is the
+        contact's, ``com_speed`` the centre's, as for :func:`orbit`.
     body, side, g, mu : as for :func:`orbit` (one value each).
     surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit` (one value each).
     height, turn_radius : the lane on the arena, an axis like theta (after theta in grid order).
@@ -349,7 +360,8 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     r_axis = checked_axis("r", r, R) if diameter is None else radii_of(checked_axis("diameter", diameter))
     lane = "turn_radius" if ground is not None and not hasattr(ground, "highest_lane") else "height"
     axes = {"a": checked_axis("a", a, A), "r": r_axis, "k": checked_axis("k", k), "theta": checked_axis("theta", theta),
-            "height": checked_axis(lane, height), "speed": checked_axis("speed", speed), "alpha": checked_axis("alpha", alpha), "omega3": checked_axis("omega3", omega3),
+            "height": checked_axis(lane, height), "speed": checked_axis("speed", speed),
+            "com_speed": checked_axis("com_speed", com_speed), "alpha": checked_axis("alpha", alpha), "omega3": checked_axis("omega3", omega3),
             "omega": checked_axis("omega", omega)}
     total = checked_grid_size(axes)
     if len(axes["a"]) == 1 and len(axes["r"]) == 1 and ground is None:
@@ -361,7 +373,7 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     # model's validator about the first one (with a and r that always fit,
     # so that only a per-point combination such as r <= a gives invalid rows)
     first = {name: axes[name].take(np.zeros(1, dtype=np.int64))
-             for name in ("theta", "alpha", "k", "omega3", "omega", "speed", "height")}
+             for name in ("theta", "alpha", "k", "omega3", "omega", "speed", "com_speed", "height")}
     if ground is None:  # a lane by its height is checked per point against each globe's diameter
         first["height"] = np.where(np.isnan(first["height"]), np.nan, 0.0)
     reason = validate_requests(make_requests(1, body=body, side=side, a=1.0, r=2.0, g=g, mu=mu, ground=ground,
@@ -374,7 +386,8 @@ def sweep(theta=None, alpha=None, *, a=A, r=R, k=None, body: str = "wheel", side
     return Chunks(evaluated(grid_requests(axes, chunk_size, make_requests, fixed), work, jobs, cluster), total)
 
 
-def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, body=None, side=None,
+def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, speed=None, com_speed=None, body=None,
+                side=None,
                 a=None, r=None, diameter=None, k=None, g=None, mu=None, max_g=None, only=None,
                 stability: bool = True, chunk_size: int = CHUNK, jobs: int = 1, scheduler=None,
                 surface="sphere", height=None, wall_angle=None, wall_height=None, profile=None,
@@ -388,11 +401,11 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     ----------
     source : str or path
         The CSV file, or ``"-"`` for standard input.  Its header names the
-        inputs (``theta``, ``alpha``, ``omega3``, ``omega``, ``speed``,
-        ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``); an output
+        inputs (``theta``, ``alpha``, ``omega3``, ``omega``, ``speed`` (the
+        contact's), ``com_speed`` (the centre's), ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``); an output
         CSV of ``orbit`` is read too (``theta_deg``, ``alpha_deg``, ...
         echo their inputs; its other columns are ignored).
-    theta, alpha, omega3, omega, speed, body, side, a, r, diameter, k, g, mu, max_g
+    theta, alpha, omega3, omega, speed, com_speed, body, side, a, r, diameter, k, g, mu, max_g
         One value each, applied to every row: over the file's column where
         it has one (a result CSV fed back with a new ``mu``), else as the
         column.  Not given (None): the file's value, or the parameter's
@@ -447,15 +460,18 @@ def orbit_input(source, *, theta=None, alpha=None, omega3=None, omega=None, spee
     height = lane if lane is not None else height
     r = sphere_radius(r, diameter)
     for name, value in (("theta", theta), ("alpha", alpha), ("omega3", omega3), ("omega", omega),
-                        ("speed", speed), ("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu), ("max_g", max_g),
+                        ("speed", speed), ("com_speed", com_speed), ("a", a), ("r", r), ("k", k), ("g", g), ("mu", mu), ("max_g", max_g),
                         ("height", height)):
         value = one_default(name, value)
         if value is not None:
             overrides[name] = value
     from deathsphere.inputs import ALIASES
 
-    # a result CSV fed back carries its lanes' heights (on the globe they agree with theta)
-    reader = request_reader(source, REQUEST_FIELDS, overrides, {**ALIASES, "height_m": "height"}, COLUMNS)
+    # a result CSV fed back carries its lanes' heights (on the globe they agree with theta), and its tilt
+    # alpha_deg holds each row: its v_cm_m_s (a centre speed, com_speed in a file without alpha_deg) is read
+    # and ignored
+    reader = request_reader(source, REQUEST_FIELDS, overrides, {**ALIASES, "height_m": "height"}, COLUMNS,
+                            ignore_when={"v_cm_m_s": "alpha_deg"})
     work = partial(evaluate_filtered, stability=stability, keep=keep)
     cluster = cluster_of(scheduler, jobs)
     # a row's refusal names its column as the file's header typed it

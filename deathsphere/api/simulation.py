@@ -27,8 +27,8 @@ from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
 from deathsphere.requests.decode import decode_lane, decode_paper_lane, decode_run
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import (ContactSpeed, Horizontal, PaperBody, Rate, RiderRequest, Run, Solver,
-                                          Speed, Spin, Theta, Tilt, Vertical)
+from deathsphere.requests.records import (ComSpeed, ContactSpeed, Horizontal, PaperBody, Rate, RiderRequest, Run,
+                                          Solver, Spin, Theta, Tilt, Vertical)
 from deathsphere.table import Table
 
 #: solve_ivp's methods and the frames :func:`simulate` integrates in
@@ -47,7 +47,7 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
              mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
              periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
              atol: float | None = None, frame: str = "turning", max_steps=1_000_000, speed=None,
-             diameter=None, machine=None) -> tuple[Table, Table]:
+             diameter=None, machine=None, com_speed=None) -> tuple[Table, Table]:
     """Integrate the exact equations of motion from a steady orbit: ``deathsphere simulate``.
 
     Beyond the paper (docs/simulation.md): the Newton-Euler equations of a
@@ -61,10 +61,12 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
         Polar angle of the contact point [deg] (vertical: the cone angle).
     alpha : float, optional
         Wheel: tilt of the steady orbit [deg].
-    speed, omega : float, optional
-        Wheel: instead of ``alpha``, the centre speed [m/s] or the orbital
-        rate [rad/s] of the steady orbit; its tilt is the root ``branch``
-        (0 first, in increasing alpha) of eq. (29) solved for it.
+    speed, com_speed, omega : float, optional
+        Wheel: instead of ``alpha``, the contact's speed along the ground (a
+        speedometer's; it fixes the rate speed / (r sin theta)) [m/s], the
+        centre's speed v_cm [m/s] or the orbital rate [rad/s] of the steady
+        orbit; its tilt is the root ``branch`` (0 first, in increasing
+        alpha) of eq. (29) solved for it.
     diameter : float, optional
         The sphere's diameter instead of ``r``.
     body : {"wheel", "sphere"}, default wheel
@@ -74,8 +76,9 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
         Simulate a machine (motorcycle and rider, :class:`deathsphere.Machine`
         or a preset's name) instead of the paper's body: its exact equations
         of motion, docs/machine.md eqs. M16-M19, from its steady orbit (eq.
-        M8) at theta and ``alpha`` (the up-axis's tilt) or ``speed`` (the
-        centre of mass's, the tilt ``branch`` in increasing alpha, eq. M12);
+        M8) at theta and ``alpha`` (the up-axis's tilt), ``speed`` (the
+        contact's, as ``ride``'s, eq. M12r) or ``com_speed`` (the centre of
+        mass's, eq. M12), the tilt ``branch`` in increasing alpha;
         ``perturb`` tilts it about its direction of travel.  Not with
         ``body``, ``a``, ``k``, ``side="outside"``, ``omega``, ``omega3``
         or ``vertical``.  The series gains ``v_cm_m_s`` and
@@ -125,7 +128,7 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
              "omega3": omega3, "omega": omega, "branch": branch, "vertical": vertical, "v_top": v_top,
              "perturb": perturb, "periods": periods, "points_per_period": points_per_period, "method": method,
              "rtol": rtol, "atol": atol, "frame": frame, "max_steps": max_steps, "speed": speed,
-             "diameter": diameter, "machine": machine}
+             "com_speed": com_speed, "diameter": diameter, "machine": machine}
     return prepare_simulation(*simulation_request(typed)).run()
 
 
@@ -226,13 +229,13 @@ def _refuse_for_machine(given: Mapping) -> None:
     refused += ["side='outside'"] if given["side"] != "inside" else []
     if refused:
         raise ParameterError(f"with machine= the body is the machine (its wheel radius is its own): "
-                             f"{', '.join(refused)} not allowed; give theta and alpha or speed (and branch), "
+                             f"{', '.join(refused)} not allowed; give theta and alpha, speed or com_speed (and branch), "
                              "r or diameter, g, mu, perturb and the run's options", "machine")
 
 
 def _machine_rider(given: Mapping, run: Run) -> RiderRequest:
     """A machine (beyond the paper; docs/machine.md) on a horizontal lane
-    at theta, by its tilt or by its centre of mass's speed."""
+    at theta, by its tilt, its contact's speed or its centre of mass's speed."""
     from deathsphere.physics.machine_arrays import machine_arrays
     from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, yaw_is_determined
     from deathsphere.records.machine_presets import as_machine
@@ -245,12 +248,12 @@ def _machine_rider(given: Mapping, run: Run) -> RiderRequest:
         raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a sphere of radius {run.r:g} m "
                              "(needs r > a)",
                              "r")
-    # at theta, by its tilt or its centre of mass's speed: decided by the decoder
-    lane = decode_lane({key: given[key] for key in ("theta", "alpha", "speed")}, Keys(), _read, run.ground)
+    # at theta, by its tilt, its contact's speed or its centre of mass's speed: decided by the decoder (as ride's)
+    lane = decode_lane({key: given[key] for key in ("theta", "alpha", "speed", "com_speed")}, Keys(), _read,
+                       run.ground)
     branch = given["branch"]
-    # simulate's speed is still the centre of mass's (ride's and a plan's is the contact's)
-    if isinstance(lane.by, (Speed, ContactSpeed)):
-        lane = dataclasses.replace(lane, by=Speed(lane.by.speed, branch))
+    if isinstance(lane.by, (ComSpeed, ContactSpeed)):
+        lane = dataclasses.replace(lane, by=type(lane.by)(lane.by.speed, branch))
     elif isinstance(branch, bool) or branch != 0:
         raise ParameterError(f"branch picks one of the tilts that give a speed: it needs speed (got {branch!r})",
                              "branch")
@@ -293,12 +296,13 @@ def _paper_starts(rider: RiderRequest, run: Run):
         starts_of = partial(simulation.vertical_starts, setup, lane.theta, lane.v_top, perturb_deg=kick)
         return _started(starts_of, None)
     theta, by = lane.at.theta, lane.by
-    speed = by.speed if isinstance(by, Speed) else None
+    speed = by.speed if isinstance(by, ComSpeed) else None
+    contact = by.speed if isinstance(by, ContactSpeed) else None
     omega = by.omega if isinstance(by, Rate) else None
     omega3 = by.omega3 if isinstance(by, Spin) else None
     requested = {"speed": speed, "rate": omega, "omega3": omega3}
     if isinstance(body.kind, Wheel):
-        alpha = by.alpha if isinstance(by, Tilt) else _tilt_for(setup, theta, speed, omega, by.branch)
+        alpha = by.alpha if isinstance(by, Tilt) else _tilt_for(setup, theta, speed, omega, by.branch, contact)
         starts_of = partial(simulation.horizontal_starts, setup, theta, params.reduce_angle(alpha),
                             perturb_deg=kick)
         return _echo_requested(_started(starts_of, alpha), **requested)
@@ -337,40 +341,54 @@ def _machine_starts(rider: RiderRequest, run: Run):
 
     m, theta, by = rider.body, rider.lane.at.theta, rider.lane.by
     kick = 0.0 if rider.kick is None else rider.kick
-    speed = by.speed if isinstance(by, Speed) else None
-    alpha = by.alpha if speed is None else _machine_tilt_for(m, theta, speed, by.branch, run.r, run.g)
+    speed = by.speed if isinstance(by, ComSpeed) else None
+    contact = by.speed if isinstance(by, ContactSpeed) else None
+    alpha = (by.alpha if isinstance(by, Tilt)
+             else _machine_tilt_for(m, theta, speed, by.branch, run.r, run.g, contact=contact))
     bodies = machine_run(m, Sphere(run.r), run.g)
     starts_of = partial(machine_starts, bodies, theta, params.reduce_angle(alpha), perturb_deg=kick, mu=run.mu)
     return _echo_requested(_started(starts_of, alpha), speed=speed)
 
 
-def _machine_tilt_for(m, theta: float, speed: float, branch, r: float, g: float) -> float:
+def _machine_tilt_for(m, theta: float, speed, branch, r: float, g: float, contact=None) -> float:
     """The tilt [deg] of a machine's orbit at ``theta`` whose centre of mass
-    runs at ``speed``: the tilt number ``branch`` in increasing alpha of
-    those eq. M12 gives (as ``ride`` lists them)."""
+    runs at ``speed`` (or whose contact runs along the ground at
+    ``contact``): the tilt number ``branch`` in increasing alpha of those
+    eq. M12 (M12r) gives (as ``ride`` lists them)."""
     from deathsphere.api.rides import ride
 
-    rows = ride(theta, com_speed=speed, machine=m, r=r, g=g, stability=False)
+    by = {"com_speed": speed} if contact is None else {"speed": contact}
+    rows = ride(theta, machine=m, r=r, g=g, stability=False, **by)
     tilts = np.sort(np.asarray(rows["alpha_deg"], dtype=float))
     tilts = tilts[np.isfinite(tilts)]
     if not tilts.size:
-        raise ParameterError(f"no tilt alpha gives the centre of mass this speed at theta = {theta:g} deg "
-                             "(eq. M12 has no root)", "speed")
+        whose = "the centre of mass this speed" if contact is None else "the contact this speed"
+        raise ParameterError(f"no tilt alpha gives {whose} at theta = {theta:g} deg "
+                             f"({_no_tilt_why(rows, 'eq. M12 has no root')})", next(iter(by)))
     if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < tilts.size:
         raise ParameterError(f"branch must be one of the {tilts.size} tilts that give this speed "
                              f"(0..{tilts.size - 1}; got {branch!r})", "branch")
     return float(tilts[int(branch)])
 
 
-def _tilt_for(setup, theta: float, speed, omega, branch) -> float:
-    """The tilt [deg] of a wheel's orbit at ``theta`` with this speed or rate:
-    root number ``branch`` of eq. (29) (as ``orbit`` numbers them)."""
-    rows = setup.orbit(theta, speed=speed, omega=omega, stability=False)
+def _no_tilt_why(rows, otherwise: str) -> str:
+    """Why no tilt answers a request: the contact on the axis says so, else ``otherwise``."""
+    reasons = [str(r) for r in np.asarray(rows["reason"], dtype=object).reshape(-1) if r]
+    on_axis = [r for r in reasons if "on the vertical axis" in r]
+    return "the contact is on the vertical axis: it does not move" if on_axis else otherwise
+
+
+def _tilt_for(setup, theta: float, speed, omega, branch, contact=None) -> float:
+    """The tilt [deg] of a wheel's orbit at ``theta`` with this centre
+    speed, contact speed or rate: root number ``branch`` of eq. (29) (as
+    ``orbit`` numbers them)."""
+    rows = setup.orbit(theta, com_speed=speed, speed=contact, omega=omega, stability=False)
     found = [row for row in rows if row["branch"] is not None]
-    what = "speed" if speed is not None else "rate"
+    what = "rate" if omega is not None else "speed"
     if not found:
-        raise ParameterError(f"no tilt alpha gives this {what} at theta = {theta:g} deg (eq. 29 has no root)",
-                             "speed" if speed is not None else "omega")
+        key = "com_speed" if speed is not None else "speed" if contact is not None else "omega"
+        raise ParameterError(f"no tilt alpha gives this {what} at theta = {theta:g} deg "
+                             f"({_no_tilt_why(rows, 'eq. 29 has no root')})", key)
     if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < len(found):
         raise ParameterError(f"branch must be one of the {len(found)} tilts that give this {what} "
                              f"(0..{len(found) - 1}; got {branch!r})", "branch")

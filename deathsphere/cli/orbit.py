@@ -32,18 +32,20 @@ ORBIT_TITLES = {
 }
 
 #: The inputs of a horizontal orbit: grid axes on the command line.
-AXES = ("theta", "alpha", "omega3", "omega", "speed")
+AXES = ("theta", "alpha", "omega3", "omega", "speed", "com_speed")
 #: The columns an --input file may name.
-INPUT_FIELDS = "theta, alpha, omega3, omega, speed, body, side, a, r, k, g, mu, max_g, height"
+INPUT_FIELDS = "theta, alpha, omega3, omega, speed, com_speed, body, side, a, r, k, g, mu, max_g, height"
 
 
-def centre_speed(speed, com_speed):
-    """--speed or --com-speed, both the centre's speed in orbit, sweep and
-    simulate (a usage error when both are given)."""
-    if speed and com_speed:
-        raise click.UsageError("--com-speed: give --speed or --com-speed, not both (here both are the wheel's "
-                               "centre speed)")
-    return speed or com_speed
+def one_hold(alpha, speed, com_speed, omega):
+    """A wheel's orbit held one way: at most one of --alpha, --speed (the
+    contact's), --com-speed (the centre's) and --omega, the refusal naming
+    the second given."""
+    holds = [name for name, values in (("alpha", alpha), ("speed", speed), ("com_speed", com_speed),
+                                       ("omega", omega)) if values]
+    if len(holds) > 1:
+        raise click.UsageError(f"--{holds[1].replace('_', '-')}: give one of --alpha, --speed (the contact's), "
+                               "--com-speed (the centre's) and --omega (the rate)")
 
 
 def orbit_options(f):
@@ -88,9 +90,10 @@ def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, si
     --max-g) or invalid (bad input row); the reason column says why.
 
     \b
-    Bodies: a wheel (default; needs --alpha, --speed or --omega), a rolling
-    sphere (--body sphere; needs --omega3 or --omega; sec. 4-5) and a
-    frictionless sliding particle (--body particle; needs only --theta).
+    Bodies: a wheel (default; needs one of --alpha, --speed, --com-speed and
+    --omega), a rolling sphere (--body sphere; needs --omega3 or --omega;
+    sec. 4-5) and a frictionless sliding particle (--body particle; needs
+    only --theta).
     --side outside puts the body on the outside of the sphere (sec. 3, 5).
 
     \b
@@ -104,14 +107,15 @@ def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, si
       deathsphere orbit --theta 60 --alpha 10
       deathsphere orbit --theta 60 --alpha 5:40:5 --mu 1 --format csv
       deathsphere orbit --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere orbit --theta 90 --com-speed 40km/h --diameter 16ft
       deathsphere orbit --body sphere --theta 60 --omega3 80
       deathsphere orbit --body particle --theta 120:170:10
       deathsphere orbit --surface cylinder --diameter 32ft --height 2 --alpha 10
       printf 'theta,alpha\\n60,10\\n90,25\\n' | deathsphere orbit --input -
     """
-    speed = centre_speed(speed, com_speed)
-    options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
-                    a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g, surface=surface,
+    one_hold(alpha, speed, com_speed, omega)
+    options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, com_speed=com_speed,
+                    body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g, surface=surface,
                     wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
                     turn_radius=turn_radius)
     chunks = orbit_chunks(input, stability, only, options)
@@ -172,9 +176,9 @@ def sweep_command(theta, alpha, omega3, omega, speed, com_speed, input, body, si
       deathsphere sweep --theta 0:180:0.1 --alpha 0:90:1 --scheduler tcp://h:8786
     """
     fmt = sweep_format(fmt, output)
-    speed = centre_speed(speed, com_speed)
-    options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, body=body, side=side,
-                    a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g, surface=surface,
+    one_hold(alpha, speed, com_speed, omega)
+    options = given(theta=theta, alpha=alpha, omega3=omega3, omega=omega, speed=speed, com_speed=com_speed,
+                    body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g, surface=surface,
                     wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
                     turn_radius=turn_radius)
     chunks = orbit_chunks(input, stability, only, options, **given(chunk_size=chunk_size, jobs=jobs,

@@ -90,7 +90,8 @@ def _preflight_output(output) -> bool:
 @body_option(("wheel", "sphere"))
 @machine_options(without=("a",), machine_help="Simulate a machine (motorcycle and rider) instead: a preset (see "
                  "'deathsphere machines'), its wheel radius -a, changed by the machine options "
-                 "(docs/machine.md sec. 5).  Horizontal orbits: --alpha or --speed (its centre of mass's).")
+                 "(docs/machine.md sec. 5).  Horizontal orbits: --alpha, --speed (its contact's, as ride's) or "
+                 "--com-speed (its centre of mass's).")
 @single("--steer", type=click.Choice(("free", "locked"), case_sensitive=False), default=None,
         help="A two-wheeler (--machine benchmark-bicycle) from its steady turn at --theta/--height and --speed "
              "(the rear contact's): free, the steer held by a torque (the turn's steady torque unless "
@@ -148,6 +149,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
       deathsphere simulate --vertical --theta 90 --v-top 5.2
       deathsphere simulate --body sphere --theta 60 --omega3 80 --branch 1
       deathsphere simulate --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere simulate --theta 90 --com-speed 40km/h --diameter 16ft
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
       deathsphere simulate --machine stunt125 --theta 60 --speed 30km/h -r 8ft
       deathsphere simulate --machine stunt125 --theta 90 --alpha 15 --output v.gif
@@ -208,10 +210,11 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         return
     if height is not None:
         raise click.UsageError("--height is a two-wheeler's lane (with --steer); give --theta")
-    if speed is not None and com_speed is not None:
-        raise click.UsageError("--com-speed: give --speed or --com-speed, not both (here both are the centre's "
-                               "speed)")
-    speed = com_speed if speed is None else speed
+    holds = [name for name, value in (("--alpha", alpha), ("--speed", speed), ("--com-speed", com_speed),
+                                      ("--omega", omega), ("--omega3", omega3)) if value is not None]
+    if len(holds) > 1:
+        raise click.UsageError(f"{holds[1]}: give one of --alpha, --speed (the contact's), --com-speed (the "
+                               "centre's), --omega and --omega3")
 
     overrides = {"mass": mass, "com_height": com_height, "tyre_radius": tyre_radius, "roll_inertia": roll_inertia,
                  "pitch_inertia": pitch_inertia, "yaw_inertia": yaw_inertia, "spin_inertia": spin_inertia,
@@ -229,7 +232,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     rider, run, options = api.simulation_request({
         "theta": theta, "branch": branch, "vertical": vertical, "method": method, "frame": frame,
         "record_states": view,
-        **given(alpha=alpha, speed=speed, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
+        **given(alpha=alpha, speed=speed, com_speed=com_speed, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
                 omega3=omega3, omega=omega,
                 v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
                 atol=atol, max_steps=max_steps, machine=chosen)})

@@ -6,6 +6,7 @@ from __future__ import annotations
 import click
 
 from deathsphere import api
+from deathsphere.cli.orbit import one_hold
 from deathsphere.cli.base import (
     choose_format,
     cli,
@@ -27,12 +28,14 @@ from deathsphere.cli.options import (
 
 @cli.command("stability")
 @param_option("theta", multiple=True)
-@params_options("alpha", "speed", "omega", "omega3", multiple=("alpha", "speed", "omega", "omega3"))
+@params_options("alpha", "speed", "com_speed", "omega", "omega3",
+                multiple=("alpha", "speed", "com_speed", "omega", "omega3"))
 @body_option()
 @setup_options()
-@input_option("theta, alpha, speed, omega, omega3, body, side, a, r, k, g, mu")
+@input_option("theta, alpha, speed, com_speed, omega, omega3, body, side, a, r, k, g, mu")
 @output_options()
-def stability_command(theta, alpha, speed, omega, omega3, body, side, a, r, diameter, k, g, mu, input, fmt):
+def stability_command(theta, alpha, speed, com_speed, omega, omega3, body, side, a, r, diameter, k, g, mu, input,
+                      fmt):
     """Exact stability of horizontal orbits, and the paper's results beside it.
 
     The orbits are those orbit gives for the same options.  For each: the
@@ -49,10 +52,12 @@ def stability_command(theta, alpha, speed, omega, omega3, body, side, a, r, diam
       deathsphere stability --theta 90 --alpha 80    (unstable, unlike the paper)
       deathsphere stability --theta 60 --alpha 10 -a 0.03 --format csv
       deathsphere stability --theta 90 --speed 40km/h --diameter 16ft
+      deathsphere stability --theta 90 --com-speed 40km/h --diameter 16ft
       deathsphere stability --body sphere --theta 60 --omega3 80
     """
     options = given(body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
-    orbit = given(theta=theta, alpha=alpha, speed=speed, omega=omega, omega3=omega3)
+    one_hold(alpha, speed, com_speed, omega)
+    orbit = given(theta=theta, alpha=alpha, speed=speed, com_speed=com_speed, omega=omega, omega3=omega3)
     fmt = choose_format(fmt)
     if input is None and not theta:
         raise click.UsageError("Missing option '--theta' (or give --input FILE)")

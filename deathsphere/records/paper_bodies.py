@@ -50,8 +50,8 @@ class Wheel(PaperBodyKind):
     word: ClassVar[str] = "wheel"
     default_k: ClassVar[float] = DEFAULT_INERTIA[word]
     rolls: ClassVar[bool] = True
-    # its tilt, or its speed or rate, eq. 29 solved for the tilt
-    held_by: ClassVar[tuple[str, ...]] = ("alpha", "speed", "omega")
+    # its tilt, or its contact's speed, its centre's speed or its rate, eq. 29 solved for the tilt
+    held_by: ClassVar[tuple[str, ...]] = ("alpha", "speed", "com_speed", "omega")
 
 
 @dataclass(frozen=True)

@@ -36,6 +36,7 @@ ORBIT_FIELDS = (
     ("omega_rad_s", "Ω orbital rate", "rad/s", "eq. 29"),
     ("period_s", "period 2π/Ω", "s", ""),
     ("v_cm_m_s", "v_cm = |r'|Ω centre speed", "m/s", ""),
+    ("v_contact_m_s", "v_contact = |Ω|ρ contact speed", "m/s", ""),
     ("spin_rad_s", "ω₁ = r'Ω/a wheel spin", "rad/s", "eq. 13"),
     ("omega3_rad_s", "ω₃ = -Ω sin α", "rad/s", "eq. 13"),
     ("branch", "branch of eq. 55 (0 slow, 1 fast)", "", "eq. 55"),
@@ -63,7 +64,8 @@ OK_REASON = "fits, Ω² > 0, keeps contact, enough friction"
 FIELD_UNITS = {
     "r_prime_m": ("length", (), None),
     "omega_rad_s": ("rate", ("omega",), None),
-    "v_cm_m_s": ("speed", ("speed",), KM_H),
+    "v_cm_m_s": ("speed", ("com_speed",), KM_H),
+    "v_contact_m_s": ("speed", ("speed",), None),
     "spin_rad_s": ("rate", (), RPM),
     "omega3_rad_s": ("rate", ("omega3",), None),
 }
@@ -207,7 +209,8 @@ SUMMARY_SPECS = {spec.key: spec for spec in (
     ColumnSpec("omega3_rad_s", "ω₃", "rad/s", kind="rate", params=("omega3",)),
     ColumnSpec("status", "status", format=status_text, justify="left"),
     ColumnSpec("omega_rad_s", "Ω", "rad/s", kind="rate", params=("omega",)),
-    ColumnSpec("v_cm_m_s", "v_cm", "m/s", kind="speed", params=("speed",)),
+    ColumnSpec("v_cm_m_s", "v_cm", "m/s", kind="speed", params=("com_speed",)),
+    ColumnSpec("v_contact_m_s", "v_contact", "m/s", kind="speed", params=("speed",)),
     ColumnSpec("spin_rad_s", "ω₁", "rad/s", kind="rate"),
     ColumnSpec("accel_g", "accel", "g"),
     ColumnSpec("load_g", "load", "g"),
@@ -222,7 +225,7 @@ SUMMARY_HEADERS = {key: spec.heading() for key, spec in SUMMARY_SPECS.items()}
 #: in SUMMARY_DROP_ORDER identify the row (#, θ, α or branch, status) and are
 #: always shown.
 SUMMARY_COLUMNS = {
-    "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s",
+    "wheel": ("input_row", "theta_deg", "alpha_deg", "status", "omega_rad_s", "v_cm_m_s", "v_contact_m_s",
               "load_g", "mu_required", "stability"),
     "sphere": ("input_row", "theta_deg", "branch", "omega3_rad_s", "status", "omega_rad_s", "v_cm_m_s",
                "omega3_min_real_rad_s", "omega3_min_contact_rad_s", "mu_required", "stability"),
@@ -237,7 +240,7 @@ SUMMARY_COLUMNS = {
 #: contact) a line under the table gives them anyway; its own ω₃ is an
 #: input and goes last.
 SUMMARY_DROP_ORDER = {
-    "wheel": ("stability", "mu_required", "load_g", "v_cm_m_s", "omega_rad_s"),
+    "wheel": ("stability", "mu_required", "load_g", "v_contact_m_s", "v_cm_m_s", "omega_rad_s"),
     "sphere": ("omega3_min_contact_rad_s", "omega3_min_real_rad_s", "stability", "mu_required", "v_cm_m_s",
                "omega_rad_s", "omega3_rad_s"),
     "particle": ("load_g", "v_cm_m_s", "omega_rad_s"),

@@ -21,7 +21,7 @@ from deathsphere.physics.ground import Sphere
 from deathsphere.records.paper_bodies import PAPER_BODIES, Ball, PaperBodyKind, Wheel
 from deathsphere.requests.keys import Keys
 from deathsphere.requests.records import (ComSpeed, ContactSpeed, Height, Horizontal, Period, Rate, RiderRequest,
-                                          Run, SameLap, Speed, Spin, Theta, Tilt, Vertical)
+                                          Run, SameLap, Spin, Theta, Tilt, Vertical)
 
 #: The ways a lane may be held, by kind.
 LANES = ("horizontal", "vertical")
@@ -253,11 +253,12 @@ def read_machine_file(path, base=None):
 #: The rule that one of a paper body's keys holds its steady horizontal
 #: orbit (the record's ``held_by``), in words.
 HELD_BY = {
-    Wheel: "a wheel's steady orbit needs alpha (deg), or its speed or rate: one of them alone (no omega3)",
-    Ball: "a sphere's steady orbit needs exactly one of omega3 and omega (no alpha or speed)",
+    Wheel: "a wheel's steady orbit needs alpha (deg), or its speed (the contact's), com_speed (the centre's) or "
+           "rate: one of them alone (no omega3)",
+    Ball: "a sphere's steady orbit needs exactly one of omega3 and omega (no alpha, speed or com_speed)",
 }
 #: How a horizontal lane is held, by the key that holds it.
-HOLDS = {"alpha": Tilt, "speed": Speed, "omega": Rate, "omega3": Spin}
+HOLDS = {"alpha": Tilt, "speed": ContactSpeed, "com_speed": ComSpeed, "omega": Rate, "omega3": Spin}
 #: The keys of a lane of ``simulate``'s: a horizontal lane's holders and a loop's top speed.
 RUN_LANE_KEYS = (*HOLDS, "v_top")
 
@@ -274,7 +275,8 @@ def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Ke
     branch = given.get("branch", 0)
     if given.get("vertical"):
         if not isinstance(body, Wheel) or set(typed) != {"v_top"}:
-            keys.fail(None, "vertical=True simulates a wheel: give theta and v_top (no alpha, speed, omega or omega3)")
+            keys.fail(None, "vertical=True simulates a wheel: give theta and v_top (no alpha, speed, com_speed, "
+                            "omega or omega3)")
         _paper_branch(branch, keys)
         return Vertical(v_top=typed["v_top"], theta=theta)
     if "v_top" in typed:
@@ -287,7 +289,7 @@ def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Ke
         return Horizontal(at=Theta(theta), by=Tilt(value))
     if isinstance(body, Ball):
         _paper_branch(branch, keys)
-    # a wheel's speed or rate: its tilt, the root ``branch``, is found when the run is prepared
+    # a wheel's contact speed, centre speed or rate: its tilt, the root ``branch``, is found when the run is prepared
     return Horizontal(at=Theta(theta), by=HOLDS[key](value, branch))
 
 

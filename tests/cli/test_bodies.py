@@ -85,7 +85,7 @@ def test_body_usage_errors(run, args, words):
 
 
 def test_wheel_speed_is_solved_for_every_alpha(run):
-    out = rows(run("orbit", "--theta", "100", "--speed", "4", "--speed", "6", "--format", "csv").stdout)
+    out = rows(run("orbit", "--theta", "100", "--com-speed", "4", "--com-speed", "6", "--format", "csv").stdout)
     assert out and {r["input_row"] for r in out} == {"1", "2"}
     for r in out:
         assert float(r["v_cm_m_s"]) == pytest.approx(4.0 if r["input_row"] == "1" else 6.0, rel=1e-9)

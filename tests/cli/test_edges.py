@@ -55,7 +55,7 @@ def test_a_row_of_commas_is_kept_and_numbering_never_shifts(run):
 @pytest.mark.parametrize("args, words", [
     (["--body", "sphere", "--theta", "120", "--omega", "1e308"], "omega (orbital rate) must be"),
     (["--theta", "60", "--alpha", "10", "-a", "1e-320"], "a (body radius) must be 1e-09"),
-    (["--theta", "60", "--speed", "0"], "speed (contact or centre speed) must be"),
+    (["--theta", "60", "--speed", "0"], "speed (contact speed) must be"),
     (["--theta", "60", "--omega", "-1"], "rate about the vertical: > 0"),
     (["--theta", "0:1e308:1e-300", "--alpha", "1"], "too many values"),
 ])

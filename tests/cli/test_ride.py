@@ -160,16 +160,21 @@ def test_the_speed_options_one_at_a_time_naming_the_one_typed(run):
     assert row["period_s"] == "1.3" and row["status"] == "ok"
 
 
-def test_the_centre_speed_keeps_its_meaning_in_orbit_and_simulate_under_either_name(run):
-    """orbit's and simulate's --speed is the centre's (ride's is the contact's):
-    --com-speed is the same there, and both at once is refused naming it."""
+def test_speed_means_the_contacts_in_orbit_and_simulate_as_in_ride(run):
+    """orbit's and simulate's --speed is the contact's, as ride's; --com-speed
+    the centre's; both at once is refused naming the second."""
     speed = run("orbit", "--theta", "60", "--speed", "7", "--format", "csv")
     com = run("orbit", "--theta", "60", "--com-speed", "7", "--format", "csv")
-    assert speed.exit_code == com.exit_code == 0 and speed.stdout == com.stdout
-    assert _rows(speed.stdout)[0]["v_cm_m_s"] == "7.0"
+    assert speed.exit_code == com.exit_code == 0 and speed.stdout != com.stdout
+    assert _rows(speed.stdout)[0]["v_contact_m_s"] == "7.0" and _rows(com.stdout)[0]["v_cm_m_s"] == "7.0"
     both = run("sweep", "--theta", "60", "--speed", "7", "--com-speed", "7")
     assert both.exit_code == 2 and "--com-speed" in both.output and "Traceback" not in both.output
-    for args in (("--speed", "25km/h"), ("--com-speed", "25km/h")):
-        res = run("simulate", "--machine", "stunt125", "--diameter", "16ft", "--theta", "100", *args, "--periods",
-                  "0.05", "--format", "csv", "--summary-only")
-        assert res.exit_code == 0 and float(_rows(res.stdout)[0]["speed_m_s"]) == pytest.approx(25 / 3.6)
+    res = run("simulate", "--machine", "stunt125", "--diameter", "16ft", "--theta", "100", "--com-speed", "25km/h",
+              "--periods", "0.05", "--format", "csv", "--summary-only")
+    assert res.exit_code == 0 and float(_rows(res.stdout)[0]["speed_m_s"]) == pytest.approx(25 / 3.6)
+    ride = run("ride", "--machine", "stunt125", "--diameter", "16ft", "--theta", "100", "--speed", "25km/h",
+               "--format", "csv")
+    res = run("simulate", "--machine", "stunt125", "--diameter", "16ft", "--theta", "100", "--speed", "25km/h",
+              "--periods", "0.05", "--format", "csv", "--summary-only")
+    assert res.exit_code == 0 and float(_rows(res.stdout)[0]["alpha_deg"]) == pytest.approx(
+        min(float(r["alpha_deg"]) for r in _rows(ride.stdout) if r["alpha_deg"]), abs=1e-9)

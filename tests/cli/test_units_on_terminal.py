@@ -91,10 +91,10 @@ def test_two_wheeler_turns_in_the_units_typed(columns):
 
 @pytest.mark.parametrize("columns", WIDTHS)
 def test_orbit_in_the_units_typed(columns):
-    one = screen(("orbit", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft"), columns)
+    one = screen(("orbit", "--theta", "90", "--com-speed", "40km/h", "--diameter", "16ft"), columns)
     assert_rows(one, r"v_cm = \|r'\|Ω centre speed\s+11\.111\s+m/s", r"the same in km/h\s+40\s+km/h",
                 r"r = 2\.438 m \(diameter 16 ft\)")
-    many = screen(("orbit", "--theta", "60", "--speed", "5:35:10km/h"), columns)
+    many = screen(("orbit", "--theta", "60", "--com-speed", "5:35:10km/h"), columns)
     assert cell_pairs(many, "m/s", "km/h")
     assert [line.split()[6] for line in many.splitlines() if re.match(r"\s+[1-4]\s", line)] == ["5", "15", "25", "35"]
 
@@ -107,7 +107,7 @@ def test_vertical_in_the_units_typed(columns):
 
 @pytest.mark.parametrize("columns", WIDTHS)
 def test_simulate_summary_in_the_units_typed(columns):
-    text = screen(("simulate", "--theta", "90", "--speed", "40km/h", "--diameter", "16ft", "--periods", "1"),
+    text = screen(("simulate", "--theta", "90", "--com-speed", "40km/h", "--diameter", "16ft", "--periods", "1"),
                   columns)
     flat = " ".join(text.split())
     assert "v_cm = 11.11 m/s (40 km/h)" in flat and "r = 2.438 m (diameter 16 ft)" in flat
@@ -130,7 +130,7 @@ def test_units_imperial_shows_ft_and_mph(columns):
     assert cell_pairs(text, "m", "ft") and "mph" in header(text) and "km/h" not in text
     heights = [line.split()[1:3] for line in text.splitlines() if re.match(r"\s+[12]\s", line)]
     assert heights == [["0.6096", "2"], ["2.438", "8"]]
-    one = screen(("orbit", "--theta", "90", "--speed", "40km/h", "--units", "imperial"), columns)
+    one = screen(("orbit", "--theta", "90", "--com-speed", "40km/h", "--units", "imperial"), columns)
     assert re.search(r"the same in mph\s+24\.855\s+mph", one) and "km/h" not in one
 
 
