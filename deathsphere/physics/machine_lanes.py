@@ -266,7 +266,8 @@ def horizontal_lanes_at_rate_on(height, omega, ground, g, machine: MachineArrays
 
 def rate_is_feasible_on(height, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
     """:func:`rate_is_feasible` on any ground: some tilt at ``height`` turns
-    at ``omega`` (n,) with status ok."""
+    at ``omega`` (n,) with status ok (beyond the paper: docs/machine.md eqs.
+    MS1-MS7 and M12r; docs/show.md, "Speed margin")."""
     tilts, orbit = orbits_for_rate_on(height, omega, ground, g, machine, mu, max_g)
     return (np.isfinite(tilts) & (orbit["status"] == Status.OK)).any(axis=1)
 
