@@ -484,7 +484,8 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
 
 def show(plan, *, duration=None, phase: str = "plan", progress=None) -> ShowResult:
     """Plan an act (docs/show.md): ``plan`` a path to a TOML file or a dict
-    ({"globe": {...}, "rider": [...]}); ``duration`` [s] the act's length
+    ({"globe": {...}, "rider": [...]}; {"arena": {...}, ...} on a drum or a
+    cone, sec. 11); ``duration`` [s] the act's length
     when the riders' periods are not commensurate (over the plan's
     ``duration``; the common period is used whenever they are); ``phase``
     'plan' (the plan's phases) or 'auto' (each vertical rider's phase, in

@@ -72,18 +72,23 @@ def test_a_cone_rides_its_own_wall():
     assert act.riders["status"][0] == "ok"
 
 
-def _brute_least(a, b, t):
-    """The least clearance of two lanes over the times t, from their contact
-    and tilt alone: each envelope's axis rebuilt on the drum (P on the wall,
-    Q = P - t rho-hat, H = Q + (head - t)(-cos alpha rho-hat + sin alpha z-hat)),
-    sampled at 401 points along a's axis, each point's distance to b's axis
-    by projection."""
+def _brute_least(a, b, t, wall_angle=90.0):
+    """The least clearance of two lanes over the times t, from their height
+    and tilt alone: each envelope's axis rebuilt on the wall leaning out at
+    ``wall_angle`` [deg] from the horizontal (90: the drum) with the
+    floor's radius R (P = (R + height cot beta) rho-hat + height z-hat, the
+    inward normal n = -sin beta rho-hat + cos beta z-hat, Q = P + t n, H =
+    Q + (head - t)(-cos alpha rho-hat + sin alpha z-hat)), sampled at 401
+    points along a's axis, each point's distance to b's axis by projection."""
+    beta = math.radians(wall_angle)
+    z_hat = np.array([0, 0, 1.0])[:, None]
+
     def axis(lane, t):
         m, phi = lane.machine, lane.phase + lane.rate * t
         rho_hat = np.stack((np.cos(phi), np.sin(phi), 0 * phi))
-        p = R * rho_hat + np.array([0, 0, lane.height])[:, None]
-        q = p - m.tyre_radius * rho_hat
-        u = -math.cos(lane.alpha) * rho_hat + math.sin(lane.alpha) * np.array([0, 0, 1.0])[:, None]
+        p = (R + lane.height * math.cos(beta) / math.sin(beta)) * rho_hat + lane.height * z_hat
+        q = p + m.tyre_radius * (-math.sin(beta) * rho_hat + math.cos(beta) * z_hat)
+        u = -math.cos(lane.alpha) * rho_hat + math.sin(lane.alpha) * z_hat
         return p, q + (m.head_height - m.tyre_radius) * u
 
     best = math.inf
@@ -112,6 +117,23 @@ def test_two_riders_on_a_32ft_drum_against_a_brute_force_over_sampled_times():
     # and at the time it reports the two are that close
     assert _brute_least(a, b, np.array([row["t_s"]])) == pytest.approx(row["min_clearance_m"], abs=2e-3)
     assert row["height_a_m"] == pytest.approx(6 * FT) and row["height_b_m"] == pytest.approx(9 * FT)
+
+
+def test_two_riders_in_a_well_of_death_against_a_brute_force():
+    act = deathsphere.show(_plan(_rider("Ben", "6ft", speed="35mph", phase=60),
+                                 _rider("Cal", "9ft", speed="60km/h", phase=180), surface="cone", wall_angle=80))
+    a, b = act.lanes
+    rel = 2 * math.pi / abs(a.rate - b.rate)
+    brute = _brute_least(a, b, np.linspace(0.0, rel, 40001), wall_angle=80.0)
+    assert act.pairs["basis"][0] == "geometric"
+    assert act.pairs["min_clearance_m"][0] == pytest.approx(brute, abs=2e-3)
+    # the drum's points would put them elsewhere: the cone's lean is in the answer
+    assert abs(_brute_least(a, b, np.linspace(0.0, rel, 4001)) - brute) > 0.01
+
+
+def test_a_rider_too_wide_for_the_drum_is_refused():
+    line = _refusal(_plan({**_rider("Ana", "5ft", speed="35mph"), "width": "7.5m"}))
+    assert line.startswith("rider 'Ana': width: 7.5 m does not fit on this cylinder")
 
 
 def test_a_pair_sharing_a_lap_keeps_its_clearance():
@@ -178,11 +200,30 @@ def test_falls_are_the_globes(run, tmp_path):
         assert option[0] in line and "a fall is the globe's" in line
 
 
-def test_the_scene_draws_the_drum():
+def test_the_scene_draws_the_drum_and_the_cone():
     from deathsphere.viewer.show_scene import act_scene
 
-    act = deathsphere.show(_plan(_rider("Ana", "5ft", speed="35mph"), _rider("Ben", "8ft", speed="35mph")))
-    scene = act_scene(act)
+    riders = (_rider("Ana", "5ft", speed="35mph"), _rider("Ben", "8ft", speed="35mph"))
+    scene = act_scene(deathsphere.show(_plan(*riders)))
     assert scene.ground["kind"] == "revolution"
     assert max(scene.ground["rho"]) == pytest.approx(R) and max(scene.ground["z"]) == pytest.approx(12 * FT)
     assert "cylinder" in scene.title
+    cone = act_scene(deathsphere.show(_plan(*riders, surface="cone", wall_angle=80)))
+    # the well's rim: 12 ft up, 12 ft cot(80 deg) further out than the floor's edge
+    assert max(cone.ground["rho"]) == pytest.approx(R + 12 * FT / math.tan(math.radians(80)))
+
+
+def test_the_speed_bound_holds_every_point_of_the_envelope_on_a_cone():
+    """The pairs' certificate rests on each lane's speed bound: no point of
+    the segment from contact to head moves faster (finite differences of the
+    lane's own points over a lap, 11 points along the segment)."""
+    act = deathsphere.show(_plan(_rider("Ana", "2ft", speed="30mph"), _rider("Cal", "10ft", speed="60km/h"),
+                                 surface="cone", wall_angle=70))
+    for lane in act.lanes:
+        t = np.linspace(0.0, lane.period_s, 20001)
+        contact, head = lane.ends(t)
+        s = np.linspace(0.0, 1.0, 11)[:, None, None]
+        x = contact + s * (head - contact)                            # (11, 3, n)
+        speed = np.sqrt(np.sum(np.diff(x, axis=2) ** 2, axis=1)) / np.diff(t)
+        assert speed.max() <= lane.speed_bound() * (1 + 1e-9)
+        assert speed.max() >= 0.99 * lane.speed_bound()             # and it is not loose
