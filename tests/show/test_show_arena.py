@@ -227,3 +227,17 @@ def test_the_speed_bound_holds_every_point_of_the_envelope_on_a_cone():
         speed = np.sqrt(np.sum(np.diff(x, axis=2) ** 2, axis=1)) / np.diff(t)
         assert speed.max() <= lane.speed_bound() * (1 + 1e-9)
         assert speed.max() >= 0.99 * lane.speed_bound()             # and it is not loose
+
+
+@pytest.mark.parametrize("shape", [{}, {"surface": "cone", "wall_angle": 80}])
+def test_a_riders_lane_is_rides_on_that_ground(shape):
+    """The show's rider and ``ride --surface`` at the same height and speed
+    on the same ground: one orbit, the same numbers."""
+    act = deathsphere.show(_plan(_rider("Ana", "3ft", speed="30mph"), **shape))
+    ride = deathsphere.ride(machine="stunt125", surface=shape.get("surface", "cylinder"), diameter="32ft",
+                            wall_height="12ft", height="3ft", speed="30mph", stability=False, mu=0.8, max_g=6,
+                            **({"wall_angle": 80} if shape else {}))
+    ok = np.flatnonzero(ride["status"] == "ok")
+    k = ok[np.argmin(np.abs(ride["alpha_deg"][ok] - (90.0 - ride["wall_angle_deg"][ok])))]
+    for col in ("alpha_deg", "v_cm_m_s", "period_s", "load_g", "mu_required", "head_clearance_m"):
+        assert act.riders[col][0] == pytest.approx(ride[col][k], rel=1e-12), col
