@@ -35,7 +35,11 @@ from deathsphere.act.plan import Plan, Rider
 from deathsphere.errors import ParameterError
 from deathsphere.physics.machine import meridian_points, vertical_loop
 from deathsphere.physics.machine_arrays import machine_arrays
-from deathsphere.physics.machine_lanes import contact_rate, horizontal_lanes, horizontal_lanes_at_rate
+from deathsphere.physics.machine_lanes import (contact_rate, contact_rate_on, horizontal_lanes,
+                                               horizontal_lanes_at_rate, horizontal_lanes_at_rate_on,
+                                               horizontal_lanes_on)
+from deathsphere.physics.machine_surface import meridian_points_on
+from deathsphere.requests.arena import is_globe
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.machine import Machine
 
@@ -69,7 +73,8 @@ class Lane:
     orbit: dict = field(repr=False)
     points: dict = field(repr=False)
     reach: float
-    theta: float = math.nan           # horizontal: contact's polar angle [rad]
+    theta: float = math.nan           # horizontal: contact's polar angle [rad] (the globe's; NaN on a wall)
+    height: float = math.nan          # horizontal on a drum or a cone: the contact's height above the floor [m]
     alpha: float = math.nan           # horizontal: tilt [rad]
     rate: float = math.nan            # horizontal: signed Omega; vertical: psidot at the top [rad/s]
     rate_bottom: float = math.nan     # vertical: psidot at the bottom [rad/s]
@@ -165,16 +170,26 @@ def _scalars(arrays: dict, i: int) -> dict:
     return {k: np.asarray(v)[i].item() for k, v in arrays.items() if np.ndim(v) == 1}
 
 
-def _found_lanes(riders: list[Rider], theta, ground, globe, machines, laps: dict) -> dict:
+#: The physics of a horizontal lane on the globe (by theta) and on any other
+#: ground (by height): the contact's rate, the lanes by the centre of mass's
+#: speed and at a rate.
+ON_THE_GLOBE = (contact_rate, horizontal_lanes, horizontal_lanes_at_rate)
+ON_A_WALL = (contact_rate_on, horizontal_lanes_on, horizontal_lanes_at_rate_on)
+
+
+def _found_lanes(riders: list[Rider], theta, ground, globe, machines, laps: dict, physics=ON_THE_GLOBE) -> dict:
     """The physics' lanes of ``riders`` (one call for those held by the
     centre of mass's speed, one for those held at a rate: a contact speed,
     a lap time, or the lap in ``laps`` [s] of the rider named by
-    same_lap_as), as (n,) arrays in the riders' order."""
+    same_lap_as), as (n,) arrays in the riders' order; ``theta`` their
+    lanes' theta [rad] on the globe, or heights [m] with ``physics``
+    :data:`ON_A_WALL`."""
+    rate_of, horizontal_lanes, horizontal_lanes_at_rate = physics
     by_com = np.array([math.isfinite(r.com_speed) for r in riders])
     omega = np.empty(len(riders))
     for i, rider in enumerate(riders):
         if math.isfinite(rider.speed):
-            omega[i] = contact_rate(theta[i], rider.speed, ground)
+            omega[i] = rate_of(theta[i], rider.speed, ground)
         elif math.isfinite(rider.period):
             omega[i] = 2.0 * math.pi / rider.period
         elif rider.same_lap_as is not None:
@@ -205,6 +220,8 @@ def horizontal_lanes_of(riders: list[Rider], ground, globe, laps: dict | None = 
     ParameterError (not raised) in his place."""
     if not riders:
         return []
+    if not is_globe(ground):
+        return _wall_lanes_of(riders, ground, globe, laps)
     machines = machine_arrays([r.machine for r in riders])
     theta = np.radians([r.theta_deg for r in riders])
     found = _found_lanes(riders, theta, ground, globe, machines, laps or {})
@@ -226,6 +243,35 @@ def horizontal_lanes_of(riders: list[Rider], ground, globe, laps: dict | None = 
                         points={k: (float(rho[i]), float(z[i])) for k, (rho, z) in points.items()},
                         reach=_reach(float(ground.radius), rider.machine), theta=math.radians(rider.theta_deg),
                         alpha=math.radians(orbit["alpha_deg"]), rate=rider.direction * float(orbit["omega"])))
+    return out
+
+
+def _wall_lanes_of(riders: list[Rider], ground, globe, laps: dict | None) -> list:
+    """:func:`horizontal_lanes_of` on a drum or a cone: the machine's physics
+    on that ground (docs/machine.md, "On any surface of revolution") at the
+    lanes' heights, the points of eq. MS1 in the contact's meridian plane."""
+    machines = machine_arrays([r.machine for r in riders])
+    height = np.array([r.height for r in riders])
+    found = _found_lanes(riders, height, ground, globe, machines, laps or {}, ON_A_WALL)
+    alpha_deg = np.degrees(found["alpha"])
+    points = meridian_points_on(height, np.radians(alpha_deg), ground, machines)
+    out = []
+    for i, rider in enumerate(riders):
+        orbit = _scalars(found, i)
+        if not found["chosen"][i]:
+            key = _hold_key(rider)
+            out.append(ParameterError(f"rider {rider.name!r}: {key}: no steady orbit at this height and "
+                                      f"{'lap' if key in ('period', 'same_lap_as') else 'speed'} "
+                                      f"({REASON_TEXT[orbit['reason']]})", key))
+            continue
+        orbit["alpha_deg"] = float(alpha_deg[i])
+        pts = {k: (float(rho[i]), float(z[i])) for k, (rho, z) in points.items()}
+        # every point of the segment turns about the axis: it moves at its distance from it times the rate
+        reach = max(abs(rho) for rho, _ in pts.values())
+        out.append(Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
+                        period_s=float(orbit["period"]), phase=math.radians(rider.phase_deg), orbit=orbit,
+                        points=pts, reach=reach, height=float(height[i]), alpha=math.radians(orbit["alpha_deg"]),
+                        rate=rider.direction * float(orbit["omega"])))
     return out
 
 
@@ -301,8 +347,22 @@ def build_lanes(plan: Plan) -> list[Lane]:
         if isinstance(built[rider.name], ParameterError):
             raise built[rider.name]
     for lane in lanes:
-        _check_width(lane, float(ground.radius))
+        if is_globe(ground):
+            _check_width(lane, float(ground.radius))
+        else:
+            _check_width_on(lane, ground)
     return lanes
+
+
+def _check_width_on(lane: Lane, ground) -> None:
+    """:func:`_check_width` on a drum or a cone: the ends of the width
+    across the lane at the head, a horizontal half-width either side of it,
+    are inside the wall (the ground's clearance of that point)."""
+    rho, z = lane.points["head"]
+    out = -float(ground.clearance(math.hypot(rho, 0.5 * lane.width_m), z))
+    if out >= 0:
+        raise ParameterError(f"rider {lane.name!r}: width: {lane.width_m:g} m does not fit on this {ground.name} (at "
+                             f"his head its ends would be {out:.3g} m outside the wall)", "width")
 
 
 def _check_width(lane: Lane, r: float) -> None:

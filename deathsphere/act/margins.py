@@ -20,7 +20,8 @@ import numpy as np
 
 from deathsphere.physics.machine import vertical_loop
 from deathsphere.physics.machine_arrays import machine_arrays
-from deathsphere.physics.machine_lanes import contact_rate, rate_is_feasible
+from deathsphere.physics.machine_lanes import contact_rate, contact_rate_on, rate_is_feasible, rate_is_feasible_on
+from deathsphere.requests.arena import is_globe
 from deathsphere.physics.status import Status
 
 #: The speeds tried, as multiples of the planned one.
@@ -41,8 +42,12 @@ def speeds_hold(lanes, globe, speeds) -> np.ndarray:
     if lanes[0].kind == "vertical":
         loops = vertical_loop(np.radians(90.0), speeds, ground, globe.g, machines, globe.mu, globe.max_g)
         return loops["status"] == Status.OK
-    theta = np.broadcast_to(np.array([lane.theta for lane in lanes])[:, None], speeds.shape)
     flat = machines.map(lambda x: np.broadcast_to(x, speeds.shape).reshape(-1))
+    if not is_globe(ground):            # a drum or a cone: the lane by its height, the machine's physics on it
+        height = np.broadcast_to(np.array([lane.height for lane in lanes])[:, None], speeds.shape).reshape(-1)
+        omega = contact_rate_on(height, speeds.reshape(-1), ground)
+        return rate_is_feasible_on(height, omega, ground, globe.g, flat, globe.mu, globe.max_g).reshape(speeds.shape)
+    theta = np.broadcast_to(np.array([lane.theta for lane in lanes])[:, None], speeds.shape)
     omega = contact_rate(theta.reshape(-1), speeds.reshape(-1), ground)
     ok = rate_is_feasible(theta.reshape(-1), omega, ground, globe.g, flat, globe.mu, globe.max_g)
     return ok.reshape(speeds.shape)

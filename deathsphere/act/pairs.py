@@ -225,14 +225,17 @@ def deepest(f, c: float, x: float, lo: float, hi: float, lipschitz: float, radii
 
 def contact_angles(lane, t: float, ground) -> tuple[float, float]:
     """theta and phi [deg] of the lane's contact at time t on the globe
-    ``ground`` (phi 0..360)."""
+    ``ground`` (phi 0..360); on a drum or a cone theta is NaN (it is the
+    globe's: a lane there is its height)."""
     p = lane.kinematics(np.array([t]))["contact"][:, 0]
+    if not hasattr(ground, "theta"):
+        return math.nan, math.degrees(math.atan2(p[1], p[0])) % 360.0
     theta = math.degrees(math.acos(max(-1.0, min(1.0, p[2] / ground.radius))))
     return theta, math.degrees(math.atan2(p[1], p[0])) % 360.0
 
 
 def where_closest(a, b, t: float, ground) -> dict:
-    """Where the pair (a, b) is at time t on the globe ``ground``: the
+    """Where the pair (a, b) is at time t on ``ground``: the
     heights [m] above the floor of both contacts ('height_a', 'height_b')
     and of the point of closest approach, midway between the closest points
     of the two envelopes' axes ('height', with its azimuth 'phi' [deg],
@@ -242,8 +245,8 @@ def where_closest(a, b, t: float, ground) -> dict:
     (p0, p1), (q0, q1) = a.ends(np.array([t])), b.ends(np.array([t]))
     _, s, u = segment_distance(p0, p1, q0, q1)
     mid = 0.5 * (p0 + s * (p1 - p0) + q0 + u * (q1 - q0))[:, 0]
-    r = float(ground.radius)
-    return {"height_a": float(p0[2, 0]) + r, "height_b": float(q0[2, 0]) + r, "height": float(mid[2]) + r,
+    low = float(ground.lowest)               # the floor's z: -r on the globe, 0 on a drum or a cone
+    return {"height_a": float(p0[2, 0]) - low, "height_b": float(q0[2, 0]) - low, "height": float(mid[2]) - low,
             "phi": math.degrees(math.atan2(mid[1], mid[0])) % 360.0}
 
 

@@ -1,5 +1,6 @@
-"""The plan of a show (docs/show.md): a globe and its riders, read from a
-TOML file or a dict and checked once, before any work.  Every fault is one
+"""The plan of a show (docs/show.md): a globe (or an ``[arena]``: the wall
+of death's drum, the well of death's cone, sec. 11) and its riders, read
+from a TOML file or a dict and checked once, before any work.  Every fault is one
 line naming the rider (or the globe) and the key; every dimensional value
 takes the command line's unit suffixes ("16ft", "32km/h")."""
 
@@ -14,17 +15,24 @@ import numpy as np
 from deathsphere import requests
 from deathsphere.constants import STANDARD_GRAVITY as G
 from deathsphere.errors import ParameterError
-from deathsphere.physics.ground import Sphere
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_files import FILE_KEYS
 from deathsphere.records.machine_presets import PRESETS, as_machine
 from deathsphere.requests import decode
+from deathsphere.requests.arena import arena, is_globe
 from deathsphere.requests.keys import Keys
 from deathsphere.requests.records import Run
 from deathsphere.requests.values import typed_value, table_reader
 
 #: The keys of the ``[globe]`` table.
 GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "duration")
+#: The keys of the ``[arena]`` table: the wall of death's drum or the well
+#: of death's cone (requests/arena.py builds the ground), and the run's keys
+#: as in ``[globe]``.
+ARENA_KEYS = ("surface", "diameter", "radius", "wall_angle", "wall_height", "mu", "max_g", "min_clearance", "g",
+              "duration")
+#: The surfaces a show's ``[arena]`` takes (flat ground has no wall to ride).
+ARENA_SURFACES = ("sphere", "cylinder", "cone")
 #: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
 RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "com_speed", "period", "same_lap_as",
               "direction", "phase", "azimuth", "v_top", "width")
@@ -51,9 +59,15 @@ class Globe:
     min_clearance: float = DEFAULT_MIN_CLEARANCE
 
     @property
-    def ground(self) -> Sphere:
-        """The globe as the ground the riders roll on."""
+    def ground(self):
+        """The ground the riders roll on: the globe (a Sphere), or an
+        ``[arena]``'s drum or cone."""
         return self.run.ground
+
+    @property
+    def is_globe(self) -> bool:
+        """True on the globe (the sphere): vertical loops and falls are its physics only."""
+        return is_globe(self.run.ground)
 
     r = property(lambda self: self.run.r, doc="The globe's radius [m].")
     g = property(lambda self: self.run.g, doc="Gravity [m/s^2].")
@@ -75,7 +89,7 @@ class Rider:
     angle psi from the top at t = 0)."""
 
     request: requests.RiderRequest
-    ground: Sphere
+    ground: object
 
     name = property(lambda self: self.request.name)
     machine = property(lambda self: self.request.body)
@@ -91,8 +105,16 @@ class Rider:
     def theta_deg(self) -> float:
         at = getattr(self.request.lane, "at", None)
         if isinstance(at, requests.Height):
+            if not is_globe(self.ground):          # theta is the globe's: a wall's lane is its height
+                return math.nan
             return math.degrees(float(self.ground.theta(at.height)))
         return at.theta if at is not None else math.nan
+
+    @property
+    def height(self) -> float:
+        """The contact's height above the floor [m] as planned (NaN: given by theta, or a vertical lane)."""
+        at = getattr(self.request.lane, "at", None)
+        return float(at.height) if isinstance(at, requests.Height) else math.nan
 
     @property
     def speed(self) -> float:
@@ -166,6 +188,50 @@ def _globe(raw) -> Globe:
     return Globe(run=run, min_clearance=clear)
 
 
+def _arena(raw) -> Globe:
+    """An ``[arena]`` table: the ground from its ``surface`` and shape
+    through :func:`deathsphere.requests.arena.arena` (a refusal names the
+    plan's key: ``arena: wall_angle: ...``), the run's keys as ``[globe]``'s."""
+    keys = Keys("arena")
+    if not isinstance(raw, dict):
+        keys.fail(None, "must be a table (surface, diameter, wall_height; a cone's wall_angle)")
+    _unknown(keys.where, raw, ARENA_KEYS)
+    surface = raw.get("surface")
+    if surface is None:
+        keys.fail("surface", f"the arena needs its surface ({' | '.join(ARENA_SURFACES)})")
+    if not isinstance(surface, str) or surface.strip().lower() not in ARENA_SURFACES:
+        keys.fail("surface", f"must be one of {' | '.join(ARENA_SURFACES)} (got {surface!r}): a show's riders "
+                             "ride up a wall")
+    typed = {"radius": "r"}
+    shape = {typed.get(k, k): raw[k] for k in ("diameter", "radius", "wall_angle", "wall_height") if k in raw}
+    try:
+        ground = arena(surface, **shape)
+    except ParameterError as exc:
+        key = {"r": "radius"}.get(exc.param, exc.param)
+        keys.fail(key if key in raw or key in ARENA_KEYS else None, str(exc))
+    read = table_reader(keys)
+
+    def value(key):
+        return read(key, GLOBE_DEFAULTS[key] if raw.get(key) is None else raw[key])
+
+    run = Run(ground=ground, g=value("g"), mu=value("mu"), max_g=value("max_g"))
+    clear = typed_value(keys, "min_clearance", raw.get("min_clearance", DEFAULT_MIN_CLEARANCE), "length", lo=0.0)
+    if "duration" in raw:
+        run = replace(run, duration=typed_value(keys, "duration", raw["duration"], "none", lo=0.0, lo_open=True))
+    return Globe(run=run, min_clearance=clear)
+
+
+def _on_a_wall(keys: Keys, raw: dict, ground) -> None:
+    """A rider on a drum or a cone: a horizontal lane by its height (theta
+    and a vertical loop are the globe's), no higher than the wall's top."""
+    if raw.get("lane") == "vertical":
+        keys.fail("lane", f"a vertical loop is the globe's: not on a {ground.name} (a loop over the top needs a "
+                          "roof; ride horizontal lanes by their height)")
+    if "theta" in raw:
+        keys.fail("theta", f"a lane on a {ground.name} is given by its height above the floor (theta is the "
+                           "globe's polar angle)")
+
+
 def _machine(where: str, raw, base_dir: pathlib.Path | None) -> Machine:
     """A preset's name, a machine file (TOML or CSV, relative to the plan)
     or the machine's parameters inline (the keys of a machine file)."""
@@ -215,6 +281,8 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
         keys.fail("speed", "a horizontal lane needs speed (the contact's along the ground, what a speedometer "
                            "reads), com_speed (the centre of mass's), period (the lap time) or same_lap_as (a "
                            "rider's name)")
+    if not globe.is_globe:
+        _on_a_wall(keys, raw, globe.ground)
     rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground, plan=True)
     return Rider(request=rider, ground=globe.ground)
 
@@ -234,7 +302,8 @@ def _plain(raw):
 def read_plan(plan) -> Plan:
     """A checked :class:`Plan` from a path to a TOML file (str or
     pathlib.Path) or a dict of the same tables ({"globe": {...}, "rider":
-    [{...}, ...]}).  Raises ParameterError, one line naming the rider (or
+    [{...}, ...]}, or {"arena": {...}, ...}: a drum or a cone, whose riders
+    ride horizontal lanes by their height).  Raises ParameterError, one line naming the rider (or
     the globe) and the key: an unknown key, an unknown machine, a rider
     outside the globe, duplicate names, no riders, a value outside its
     range or of the wrong unit.  (A vertical lane that is not feasible at
@@ -257,8 +326,10 @@ def read_plan(plan) -> Plan:
     plan = _plain(plan)
     if not isinstance(plan, dict):
         raise ParameterError(f"plan must be a path to a TOML file or a dict (got {type(plan).__name__})", "plan")
-    _unknown("plan", plan, ("globe", "rider"))
-    globe = _globe(plan.get("globe"))
+    _unknown("plan", plan, ("globe", "arena", "rider"))
+    if "globe" in plan and "arena" in plan:
+        _fail("plan", "arena", "give [globe] (the globe of death) or [arena] (a drum or a cone), not both")
+    globe = _arena(plan["arena"]) if "arena" in plan else _globe(plan.get("globe"))
     raw = plan.get("rider", [])
     if isinstance(raw, dict):
         raw = [raw]

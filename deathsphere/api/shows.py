@@ -105,6 +105,14 @@ class ShowResult:
         return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
                 for lane in self.lanes}
 
+    def _on_the_globe(self, name: str) -> None:
+        """ParameterError naming ``name`` on a drum or a cone: a fall's
+        physics (where contact is lost, the flight, the landing on the
+        ground) is the globe's (docs/show.md, "On the wall of death")."""
+        if not self.plan.globe.is_globe:
+            raise ParameterError(f"a fall is the globe's: not on a {self.plan.globe.ground.name} (where a rider "
+                                 "leaves a wall and lands on its floor is not modelled)", name)
+
     def fall(self, rider: str, t: float, speed_fraction: float = 0.5) -> Table:
         """At time t [s] the rider's speed drops to ``speed_fraction`` (0 = a
         dead stop .. 1) of his speed at that instant, along his direction of
@@ -116,6 +124,7 @@ class ShowResult:
         victim when he is alone)."""
         from deathsphere.act.falls import refine_victim, simulate_falls
 
+        self._on_the_globe("rider")
         names = [lane.name for lane in self.lanes]
         if rider not in names:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
@@ -156,6 +165,7 @@ class ShowResult:
         from deathsphere.parallel import ordered_map
         from deathsphere.act.falls import fall_chunk
 
+        self._on_the_globe("n")
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= MAX_FALLS:
             raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
@@ -474,7 +484,8 @@ def pairs_table(lanes: list[Lane], duration: float, min_clearance: float, drift:
 
 def show(plan, *, duration=None, phase: str = "plan", progress=None) -> ShowResult:
     """Plan an act (docs/show.md): ``plan`` a path to a TOML file or a dict
-    ({"globe": {...}, "rider": [...]}); ``duration`` [s] the act's length
+    ({"globe": {...}, "rider": [...]}; {"arena": {...}, ...} on a drum or a
+    cone, sec. 11); ``duration`` [s] the act's length
     when the riders' periods are not commensurate (over the plan's
     ``duration``; the common period is used whenever they are); ``phase``
     'plan' (the plan's phases) or 'auto' (each vertical rider's phase, in

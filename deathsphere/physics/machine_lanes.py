@@ -24,7 +24,8 @@ from deathsphere.physics.status import Reason, Status
 
 __all__ = ["orbits_for_speed", "orbits_for_rate", "contact_rate", "closest_tilt", "horizontal_lanes",
            "horizontal_lanes_at_rate", "speed_is_feasible", "rate_is_feasible", "orbits_for_speed_on",
-           "orbits_for_rate_on", "contact_rate_on"]
+           "orbits_for_rate_on", "contact_rate_on", "horizontal_lanes_on", "horizontal_lanes_at_rate_on",
+           "rate_is_feasible_on"]
 
 
 def _flat(theta, speed, ground, g, machine: MachineArrays, *more):
@@ -135,22 +136,28 @@ def horizontal_lanes_at_rate(theta, omega, ground, g, machine: MachineArrays, mu
 def _rider_choice(theta, tilts, orbit, ground) -> dict:
     """The tilt a rider takes of ``tilts`` (n, k) with ``orbit`` at each
     (:func:`horizontal_lanes`' rule) and the orbit there."""
+    out = _choose(tilts, orbit, np.degrees(theta) - 90.0, theta.size)
+    out["height"] = np.broadcast_to(ground.height(theta), theta.shape)
+    return out
+
+
+def _choose(tilts, orbit, upright, n: int) -> dict:
+    """The tilt closest to ``upright`` [deg] (n,) of ``tilts`` (n, k), among
+    those ok, else among those with an orbit, and ``orbit`` there."""
     if tilts.shape[1] == 0:                      # no lanes: one (empty) column of tilts
-        tilts = np.full((theta.size, 1), np.nan)
-        orbit = {key: np.zeros((theta.size, 1), dtype=np.asarray(val).dtype) for key, val in orbit.items()}
+        tilts = np.full((n, 1), np.nan)
+        orbit = {key: np.zeros((n, 1), dtype=np.asarray(val).dtype) for key, val in orbit.items()}
     found = np.isfinite(tilts)
-    upright = np.degrees(theta) - 90.0
     # the choice is made in degrees, as the rider's table reads the tilts
     degrees = np.degrees(np.where(found, tilts, 0.0))
     pick_ok, any_ok = closest_tilt(degrees, found & (orbit["status"] == Status.OK), upright)
     pick_orbit, any_orbit = closest_tilt(degrees, found & np.isfinite(orbit["omega"]), upright)
     chosen = any_ok | any_orbit
-    rows, col = np.arange(theta.size), np.where(any_ok, pick_ok, np.where(any_orbit, pick_orbit, 0))
+    rows, col = np.arange(n), np.where(any_ok, pick_ok, np.where(any_orbit, pick_orbit, 0))
     out = {key: np.where(chosen, np.asarray(val)[rows, col], np.nan) for key, val in orbit.items()}
     none = ~found[:, 0]
     out["status"] = np.where(none, Status.NO_ORBIT, orbit["status"][rows, col]).astype(np.int8)
     out["reason"] = np.where(none, orbit["reason"][rows, 0], orbit["reason"][rows, col]).astype(np.int8)
-    out["height"] = np.broadcast_to(ground.height(theta), theta.shape)
     out["alpha"] = np.where(chosen, tilts[rows, col], np.nan)
     out["chosen"] = chosen
     out["tilts"] = tilts
@@ -224,6 +231,45 @@ def _at_tilts_on(height, tilts, ground, g, m: MachineArrays, mu, max_g) -> dict:
         orbit[key] = np.full(tilts.shape, empty.get(key, np.nan), dtype=val.dtype)
         orbit[key][rows, cols] = val
     return orbit
+
+
+def _upright_on(height, ground):
+    """The tilt [deg] of a rider upright on the wall at ``height``: the
+    up-axis (-cos alpha, sin alpha) along the inward normal (-sin beta, cos
+    beta), alpha = 90 deg - beta (on the globe theta - 90 deg)."""
+    return 90.0 - np.degrees(np.asarray(ground.wall_angle(height), dtype=float))
+
+
+def horizontal_lanes_on(height, speed, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf) -> dict:
+    """:func:`horizontal_lanes` on any ground (docs/machine.md, "On any
+    surface of revolution"): the lanes at ``height`` [m] (n,) held by the
+    centre of mass's ``speed`` [m/s], each ridden at the tilt closest to
+    upright on the wall among those ok (else among those with an orbit),
+    :func:`~deathsphere.physics.machine_surface.ride_orbit_on`'s keys there."""
+    height = np.asarray(height, dtype=float).reshape(-1)
+    tilts, orbit = orbits_for_speed_on(height, speed, ground, g, machine, mu, max_g)
+    out = _choose(tilts, orbit, _upright_on(height, ground), height.size)
+    out["height"] = height
+    return out
+
+
+def horizontal_lanes_at_rate_on(height, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf) -> dict:
+    """:func:`horizontal_lanes_on` for lanes held at an orbital rate
+    ``omega`` [rad/s] (n,) (eq. M12r: a contact speed, :func:`contact_rate_on`,
+    or a lap time)."""
+    height = np.asarray(height, dtype=float).reshape(-1)
+    tilts, orbit = orbits_for_rate_on(height, omega, ground, g, machine, mu, max_g)
+    out = _choose(tilts, orbit, _upright_on(height, ground), height.size)
+    out["height"] = height
+    return out
+
+
+def rate_is_feasible_on(height, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):
+    """:func:`rate_is_feasible` on any ground: some tilt at ``height`` turns
+    at ``omega`` (n,) with status ok (beyond the paper: docs/machine.md eqs.
+    MS1-MS7 and M12r; docs/show.md, "Speed margin")."""
+    tilts, orbit = orbits_for_rate_on(height, omega, ground, g, machine, mu, max_g)
+    return (np.isfinite(tilts) & (orbit["status"] == Status.OK)).any(axis=1)
 
 
 def rate_is_feasible(theta, omega, ground, g, machine: MachineArrays, mu=np.inf, max_g=np.inf):

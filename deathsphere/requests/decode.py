@@ -71,7 +71,14 @@ def decode_run(given: Mapping, keys: Keys, read, defaults: Mapping) -> Run:
 
 
 def _within(height, ground: Sphere, keys: Keys, key: str):
-    """A height inside the globe, else refused (naming the lowest offender)."""
+    """A height inside the globe (on a drum or a cone: no higher than its
+    wall's top), else refused (naming the lowest offender)."""
+    if not isinstance(ground, Sphere):
+        h, top = np.asarray(height, dtype=float), float(ground.highest_lane)
+        if np.any(h > top):
+            keys.fail(key, f"height (contact height) is above the wall's top: it must be at most the "
+                           f"{ground.name}'s wall height {top:g} m (got {shown_number(float(np.max(h)))})")
+        return height
     h, top = np.asarray(height, dtype=float), 2.0 * np.asarray(ground.radius, dtype=float)
     try:
         out = h > top

@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.viewer.scene import Scene, Track, sphere_ground
+from deathsphere.viewer.scene import Scene, Track, revolution_ground, sphere_ground
 
 __all__ = ["act_scene", "frame_step", "MAX_FRAMES", "MAX_MOVE_R", "CAMERA", "PLAYBACK", "LOOP_PLAYBACK"]
 
@@ -165,7 +165,8 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
     duration = float(result.duration_s)
     probe_t = np.linspace(0.0, duration, 2001)
     probe = result.positions(probe_t)
-    r = _globe_radius(probe)
+    wall = _wall(result, probe)
+    r = _globe_radius(probe) if wall is None else wall["r"]
     g = _plan_number(result, "plan", "globe", "g", default=G0)
     step = frame_step(probe, probe_t, r)
     drawn = [_fall(result, falls, rows, r, g) for rows in fall_groups(falls)]
@@ -199,10 +200,12 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
             if fall["rider"] == name:
                 _add_fall(track, fall)
         tracks.append(track)
-    scene = Scene(ground=sphere_ground(r), tracks=tracks, playback=PLAYBACK, loop_playback=LOOP_PLAYBACK,
-                  camera={"el": CAMERA[0], "az": CAMERA[1], "target": [0.0, 0.0, 0.0], "extent": 1.05 * r},
+    ground, target, extent = ((sphere_ground(r), [0.0, 0.0, 0.0], 1.05 * r) if wall is None else
+                              (wall["ground"], wall["target"], wall["extent"]))
+    scene = Scene(ground=ground, tracks=tracks, playback=PLAYBACK, loop_playback=LOOP_PLAYBACK,
+                  camera={"el": CAMERA[0], "az": CAMERA[1], "target": target, "extent": extent},
                   legend=[{"colour": tr.meta["colour"], "text": f"{tr.name} ({tr.meta['lane']})"} for tr in tracks])
-    scene.title = _title(len(names), r, float(t[-1]), pair)
+    scene.title = _title(len(names), r, float(t[-1]), pair, None if wall is None else wall["what"])
     if pair is not None:
         scene.pair = {"tracks": [names.index(pair["a"]), names.index(pair["b"])], "t": pair["t"], "near": near,
                       **pair}
@@ -277,8 +280,33 @@ def _widths(result, names) -> list:
     return [float(lanes[name].width_m) for name in names]
 
 
-def _title(n: int, r: float, t_end: float, pair: dict | None) -> str:
-    words = f"{n} riders in a globe of {2 * r:.2f} m, an act of {t_end:.2f} s"
+#: Points of a drum's or a cone's drawn meridian up its wall.
+WALL_POINTS = 25
+
+
+def _wall(result, probe: dict) -> dict | None:
+    """The drum or the cone of an ``[arena]`` plan as the scene draws it
+    (None on the globe): its meridian from the floor's centre out along the
+    floor and up the wall to its top (without a top, a little above the
+    highest head), the radius ``r`` the frames' step is measured in (the
+    widest of the meridian), the camera's target and extent, and the words
+    of the title."""
+    ground = result.plan.globe.ground
+    if result.plan.globe.is_globe:
+        return None
+    top = float(ground.highest_lane)
+    if not math.isfinite(top):
+        top = max(float(np.max(p["head"][2])) for p in probe.values()) + 0.5
+    rho, z = ground.contact(np.linspace(0.0, top, WALL_POINTS))
+    rho, z = np.concatenate(([0.0], rho)), np.concatenate(([float(ground.lowest)], z))
+    r = float(np.max(rho))
+    return {"ground": revolution_ground(rho, z), "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
+            "extent": 1.05 * max(r, 0.5 * float(z[-1] - z[0])),
+            "what": f"on a {ground.name} of {2 * float(rho[1]):.2f} m"}
+
+
+def _title(n: int, r: float, t_end: float, pair: dict | None, where: str | None = None) -> str:
+    words = f"{n} riders {where or f'in a globe of {2 * r:.2f} m'}, an act of {t_end:.2f} s"
     if pair is not None:
         words += (f"; least clearance {pair['a']} \u2013 {pair['b']} {pair['clearance']:.3f} m "
                   f"at t = {pair['t']:.3f} s ({pair['verdict']})")
