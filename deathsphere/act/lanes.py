@@ -228,22 +228,9 @@ def horizontal_lanes_of(riders: list[Rider], ground, globe, laps: dict | None = 
     # the lane's tilt as the riders' table reads it, in degrees, so that both agree to the bit
     alpha_deg = np.degrees(found["alpha"])
     points = meridian_points(theta, np.radians(alpha_deg), ground, machines)
-    out = []
-    for i, rider in enumerate(riders):
-        orbit = _scalars(found, i)
-        if not found["chosen"][i]:
-            key = _hold_key(rider)
-            out.append(ParameterError(f"rider {rider.name!r}: {key}: no steady orbit at this height and "
-                                      f"{'lap' if key in ('period', 'same_lap_as') else 'speed'} "
-                                      f"({REASON_TEXT[orbit['reason']]})", key))
-            continue
-        orbit["alpha_deg"] = float(alpha_deg[i])
-        out.append(Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
-                        period_s=float(orbit["period"]), phase=math.radians(rider.phase_deg), orbit=orbit,
-                        points={k: (float(rho[i]), float(z[i])) for k, (rho, z) in points.items()},
-                        reach=_reach(float(ground.radius), rider.machine), theta=math.radians(rider.theta_deg),
-                        alpha=math.radians(orbit["alpha_deg"]), rate=rider.direction * float(orbit["omega"])))
-    return out
+    return _lanes(riders, found, alpha_deg, points,
+                  lambda i, rider, pts: {"reach": _reach(float(ground.radius), rider.machine),
+                                         "theta": math.radians(rider.theta_deg)})
 
 
 def _wall_lanes_of(riders: list[Rider], ground, globe, laps: dict | None) -> list:
@@ -255,6 +242,16 @@ def _wall_lanes_of(riders: list[Rider], ground, globe, laps: dict | None) -> lis
     found = _found_lanes(riders, height, ground, globe, machines, laps or {}, ON_A_WALL)
     alpha_deg = np.degrees(found["alpha"])
     points = meridian_points_on(height, np.radians(alpha_deg), ground, machines)
+    # every point of the segment turns about the axis: it moves at its distance from it times the rate
+    return _lanes(riders, found, alpha_deg, points,
+                  lambda i, rider, pts: {"reach": max(abs(rho) for rho, _ in pts.values()), "height": float(height[i])})
+
+
+def _lanes(riders: list[Rider], found: dict, alpha_deg, points: dict, where) -> list:
+    """Each rider's :class:`Lane` from the lanes found (or the refusal of a
+    lane with no steady orbit, naming the key that holds it), with the
+    ground's own fields from ``where(i, rider, points)``: the reach that
+    bounds the clearance's rate and where on the ground the lane is."""
     out = []
     for i, rider in enumerate(riders):
         orbit = _scalars(found, i)
@@ -266,12 +263,10 @@ def _wall_lanes_of(riders: list[Rider], ground, globe, laps: dict | None) -> lis
             continue
         orbit["alpha_deg"] = float(alpha_deg[i])
         pts = {k: (float(rho[i]), float(z[i])) for k, (rho, z) in points.items()}
-        # every point of the segment turns about the axis: it moves at its distance from it times the rate
-        reach = max(abs(rho) for rho, _ in pts.values())
         out.append(Lane(name=rider.name, kind="horizontal", machine=rider.machine, width_m=rider.width,
                         period_s=float(orbit["period"]), phase=math.radians(rider.phase_deg), orbit=orbit,
-                        points=pts, reach=reach, height=float(height[i]), alpha=math.radians(orbit["alpha_deg"]),
-                        rate=rider.direction * float(orbit["omega"])))
+                        points=pts, alpha=math.radians(orbit["alpha_deg"]),
+                        rate=rider.direction * float(orbit["omega"]), **where(i, rider, pts)))
     return out
 
 
