@@ -23,3 +23,10 @@ def run():
         return runner.invoke(cli, list(args), input=input, env=env, catch_exceptions=False)
 
     return invoke
+
+
+def pytest_collection_modifyitems(config, items):
+    """The longest tests first (marked ``longest``): worksteal hands tests
+    out in collection order, and a run that met the sphere's tens of seconds
+    of sympy at its end would wait on one core for it."""
+    items.sort(key=lambda item: item.get_closest_marker("longest") is None)
