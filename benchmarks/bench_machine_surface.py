@@ -8,7 +8,6 @@ of their times (docs/machine.md, "On any surface of revolution").
 """
 
 import argparse
-import time
 
 import numpy as np
 
@@ -17,17 +16,10 @@ from deathsphere.physics.machine import ride_orbit
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_surface import ride_orbit_on
 from deathsphere.records.machine_presets import PRESETS
+from timing import best_of
 
 CHUNK = 1 << 14       # as api.rides evaluates them
 
-
-def best_of(fn, repeat):
-    best = np.inf
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def main():

@@ -8,24 +8,14 @@ time's ratio to the cone's (docs/surfaces.md, "Performance").
 """
 
 import argparse
-import time
 
 import numpy as np
 
 from deathsphere.physics.ground import Cone, Cylinder, Profile
 from deathsphere.physics.revolution import wheel_orbit
 from deathsphere.physics.wheel import horizontal_orbit
+from timing import best_of
 
-
-def best_of(fn, repeat, before=None):
-    best = np.inf
-    for _ in range(repeat):
-        if before is not None:
-            before()
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def main():
