@@ -170,7 +170,8 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
 
 
 def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF, max_g=INF,
-           diameter=None) -> Table:
+           diameter=None, surface=None, height=None, turn_radius=None, wall_angle=None, wall_height=None,
+           profile=None) -> Table:
     """The feasible tilts at theta, or the highest orbit: ``deathsphere limits``.
 
     Beyond the paper (method: docs/limits.md), from its conditions eqs. (0),
@@ -186,6 +187,13 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     body : {"wheel"}
         Only a wheel has a tilt to choose; another body is refused.
     side, a, r, k, g, mu, diameter : as for :func:`orbit`.
+    surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit`
+        (docs/surfaces.md); off the globe the lane is ``height`` (on flat
+        ground ``turn_radius``) in place of theta, and without one the
+        answer is the lowest and the highest lane
+        (:func:`deathsphere.api.lane_limits.limits_on`, docs/limits.md sec. 8).
+    height, turn_radius : float, array_like or str, optional
+        The lanes off the globe [m] (values or ``start:stop:step`` text).
     max_g : float or array_like
         Largest centre acceleration the rider takes [g] (``inf``: no limit).
         The numeric arguments broadcast against each other (a text range of
@@ -213,8 +221,16 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     ([1, 2, 3, 4], [1.2, 1.2, 2.0, 2.0])
     """
     from deathsphere.model import make_requests
+    from deathsphere.requests.arena import names_a_wall
     from deathsphere.results.limits import limits_rows
 
+    if names_a_wall(surface, wall_angle, wall_height, profile):
+        from deathsphere.api.lane_limits import limits_on
+
+        return limits_on(surface=surface, height=height, turn_radius=turn_radius, theta=theta, wall_angle=wall_angle,
+                         wall_height=wall_height, profile=profile, body=body, side=side, a=a, r=r,
+                         diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
+    _globe_lane(height, turn_radius)
     body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     if not isinstance(body, Wheel):
         from deathsphere.results.limits import NOT_A_WHEEL
@@ -237,6 +253,15 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     return raise_if_all_invalid(table)
 
 
+def _globe_lane(height, turn_radius):
+    """On the globe ``limits`` names a lane by theta: a height or a turn
+    radius is refused, naming it."""
+    for name, value in (("height", height), ("turn_radius", turn_radius)):
+        if is_given(value):
+            raise ParameterError(f"{name}: on the sphere limits takes the lane's theta (the height or turn radius "
+                                 "is a lane on another surface: choose it with surface)", name)
+
+
 def _too_many(counts):
     """Refuse, from the counts alone, more thetas than one call searches."""
     return refuse_large_grid(counts, command="limits", limit=MAX_LIMIT_THETAS, param="theta",
@@ -244,17 +269,29 @@ def _too_many(counts):
 
 
 def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=None, g=None, mu=None, max_g=None,
-                 diameter=None, chunk_size: int = CHUNK) -> Chunks:
+                 diameter=None, chunk_size: int = CHUNK, surface=None, height=None, turn_radius=None,
+                 wall_angle=None, wall_height=None, profile=None) -> Chunks:
     """The limits of the requests in a CSV file: ``deathsphere limits --input
     FILE``.  Its header names ``theta`` (required in every row) and
     optionally ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``,
     ``max_g``; an option given applies to every row (as for
     :func:`deathsphere.orbit_input`).  Each request gives its intervals,
     numbered by ``input_row``; a bad line, or a body other than a wheel, is
-    one ``invalid`` row with the reason."""
+    one ``invalid`` row with the reason.  Off the globe (``surface`` ...)
+    the rows' lanes are ``height``: :func:`deathsphere.api.lane_limits.limits_on_input`."""
     from deathsphere.inputs import ALIASES
     from deathsphere.model import REQUEST_FIELDS, make_requests
+    from deathsphere.requests.arena import names_a_wall
     from deathsphere.results.limits import LIMITS_FIELDS, limits_rows
+
+    if names_a_wall(surface, wall_angle, wall_height, profile):
+        from deathsphere.api.lane_limits import limits_on_input
+
+        return limits_on_input(source, surface=surface, wall_angle=wall_angle, wall_height=wall_height,
+                               profile=profile, height=height, turn_radius=turn_radius, theta=theta, body=body,
+                               side=side, a=a, r=R if r is None else r, diameter=diameter, k=k, g=g, mu=mu,
+                               max_g=max_g, chunk_size=chunk_size)
+    _globe_lane(height, turn_radius)
 
     overrides = {}
     if body is not None:

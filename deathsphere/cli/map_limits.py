@@ -32,6 +32,7 @@ from deathsphere.cli.options import (
     setup_options,
     single,
     stability_option,
+    surface_options,
     units_option,
 )
 
@@ -107,10 +108,12 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
 @param_option("max_g")
 @body_option()
 @setup_options()
-@input_option("theta, body, side, a, r, k, g, mu, max_g")
+@surface_options()
+@input_option("theta, body, side, a, r, k, g, mu, max_g; off the globe height in place of theta")
 @output_options()
 @units_option()
-def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fmt, units):
+def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height, profile,
+                   height, turn_radius, input, fmt, units):
     """Which tilts alpha give a feasible orbit at theta, and at what speeds (beyond the paper).
 
     With --theta: the interval(s) of alpha where the wheel fits, Omega^2 > 0
@@ -120,20 +123,31 @@ def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fm
     refused (in an --input file, its row is invalid with the reason).
     Method: docs/limits.md.
 
+    On a drum, a cone, flat ground or a profile (--surface, docs/surfaces.md)
+    the lane is --height (on flat ground --turn-radius) in place of
+    --theta; without one: the lowest and the highest lane the friction and
+    the load allow (on an upright wall friction and load set no highest
+    lane: only the wall's top does).  Method: docs/limits.md sec. 8.
+
     \b
     Examples:
       deathsphere limits --theta 60 --mu 1.2
       deathsphere limits --mu 1 --max-g 5
       deathsphere limits --theta 30:90:10 --diameter 16ft --mu 1 --max-g 4
+      deathsphere limits --surface cylinder --diameter 32ft --height 2m --mu 1 --max-g 4
+      deathsphere limits --surface cone --diameter 6 --wall-angle 80 --wall-height 8 --mu 1 --max-g 4
     """
-    options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
+    options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
+                    surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile)
+    lanes = given(height=height, turn_radius=turn_radius)
     fmt = choose_format(fmt)
     shown = display_units(units, click.get_current_context().params)
     if input is not None:
-        finish(stream(api.limits_input(input, **given(theta=theta), **options), fmt, label="limits",
+        finish(stream(api.limits_input(input, **given(theta=theta), **lanes, **options), fmt, label="limits",
                       title="Feasible tilts (fit, Omega^2 > 0, contact, mu, load)", units=shown))
         return
-    table = api.limits(**given(theta=theta), **options)
-    title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, load)" if theta else
+    table = api.limits(**given(theta=theta), **lanes, **options)
+    title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, load)" if theta or lanes else
+             "The lowest and the highest lane possible" if "lane" in table.names else
              "The highest orbit possible (smallest theta with a feasible tilt)")
     emit([table], fmt, title=title, units=shown)
