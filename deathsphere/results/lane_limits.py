@@ -23,9 +23,11 @@ BOUND_NOTES = {
     "floor": "the floor: the lowest lane of the ground",
     "top": "the ground's highest lane (the wall's top or a cone's apex or a profile's last sample)",
     "limits": "where the last feasible tilt closes (fit or floor or contact or friction or load)",
-    "none": "no highest lane within mu and max_g: every lane scanned is feasible and the wall has no top "
-            "(give wall_height)",
+    "none": "no highest lane within mu and max_g: every lane scanned is feasible and the ground has no "
+            "highest lane (a drum's or a cone's: give wall_height)",
 }
+#: Added where the range reaches the floor but no tilt is feasible on it.
+APPROACHED_NOTE = " (approached: feasible on every lane just above it but not on it)"
 #: Added where the wall is upright at both ends of the range.
 UPRIGHT_NOTE = ("; on an upright wall mu_required = g r'/v^2 and the load do not depend on the lane's height: "
                 "friction and load set no highest lane and only the wall's top does")
@@ -89,7 +91,9 @@ def lanes_on(ground, a, k, g, outside, mu, max_g) -> Table:
         if not found.found:
             notes.append("no feasible tilt on any lane within mu and max_g")
         else:
-            notes.append(BOUND_NOTES[bound] + (UPRIGHT_NOTE if upright and bound in ("top", "none") else ""))
+            approached = bound == "floor" and not iv.count[bounds.index(bound)]
+            notes.append(BOUND_NOTES[bound] + (APPROACHED_NOTE if approached else "")
+                         + (UPRIGHT_NOTE if upright and bound in ("top", "none") else ""))
     keep = finite & found.found
     return Table({
         "lane": np.array(["lowest", "highest"], dtype=object),
