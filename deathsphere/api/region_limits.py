@@ -48,9 +48,9 @@ def _ratio(a, r, side, g=G, diameter=None) -> tuple[float, float]:
     return float(f"{setup.a / setup.r:.15g}"), side
 
 
-def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None, step=0.5,
+def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None, step=None,
            stability: bool = False,
-           jobs: int = 1, progress=None, scheduler=None) -> Table:
+           jobs: int = 1, progress=None, scheduler=None, **arena) -> Table:
     """The allowed (theta, alpha) region of a wheel as data: ``deathsphere map --format csv``.
 
     Its boundaries are the paper's: eq. (0) (the wheel fits; outside eq. 81),
@@ -73,7 +73,12 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     max_g : float
         Also the load limit load_g = max_g [g] (``inf``: none; docs/limits.md).
     step : float
-        theta step of the data [deg], 0.001..10.
+        theta step of the data [deg], 0.001..10 (default 0.5).
+    **arena : surface, wall_angle, wall_height, profile, height, turn_radius
+        Off the globe (docs/limits.md sec. 8): the region in (lane, alpha)
+        on that arena, :func:`deathsphere.api.lane_map.region_on` (the
+        lanes ``height``, or ``turn_radius`` on flat ground, in place of
+        theta; no stability).
     stability : bool
         Also the curve ``stability`` (slow: exact linearisation).
     jobs : int
@@ -101,6 +106,12 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     """
     from deathsphere.results.limits import boundary_table, theta_grid
 
+    if _off_globe(arena):
+        from deathsphere.api.lane_map import region_on
+
+        return region_on(a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g, stability=stability,
+                         step=step, **arena)
+    step = 0.5 if step is None else step
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
                                                       ("jobs", jobs))}
@@ -150,7 +161,7 @@ def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=
 
 
 def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None,
-                  stability: bool = False):
+                  stability: bool = False, **arena):
     """The allowed region as curves: what ``deathsphere map --output FILE``
     draws (:mod:`deathsphere.render.map_figure`; the paper's figure).
 
@@ -160,9 +171,16 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
         The allowed alpha intervals, the boundary polylines and, with
         ``stability``, the stability margin on a 0.25 deg grid and its
         zero contour (beyond the paper).  Needs contourpy (the plot extra).
+        Off the globe (``surface`` ... in ``arena``, as for :func:`region`):
+        a :class:`deathsphere.results.lane_map.LaneCurves`.
     """
     from deathsphere.results.region_map import curve_map
 
+    if _off_globe(arena):
+        from deathsphere.api.lane_map import region_curves_on
+
+        return region_curves_on(a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
+                                stability=stability, **arena)
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g))}
     return curve_map(a_over_r, 1.0, values["k"], outside=side == "outside", mu=values["mu"],
@@ -253,13 +271,32 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     return raise_if_all_invalid(table)
 
 
+#: The keywords of an arena other than the globe (``region``, ``region_curves``).
+ARENA_KEYS = ("surface", "wall_angle", "wall_height", "profile", "height", "turn_radius")
+
+
+def _off_globe(arena: dict) -> bool:
+    """True when ``arena`` (keywords of :data:`ARENA_KEYS`) names a surface
+    other than the globe; an unknown keyword is refused naming it, a lane
+    on the globe too (the globe's map runs over theta)."""
+    from deathsphere.requests.arena import names_a_wall
+
+    for key in arena:
+        if key not in ARENA_KEYS:
+            raise TypeError(f"unexpected keyword argument {key!r}")
+    if names_a_wall(arena.get("surface"), arena.get("wall_angle"), arena.get("wall_height"), arena.get("profile")):
+        return True
+    _globe_lane(arena.get("height"), arena.get("turn_radius"))
+    return False
+
+
 def _globe_lane(height, turn_radius):
-    """On the globe ``limits`` names a lane by theta: a height or a turn
+    """On the globe ``limits`` and ``map`` name a lane by theta: a height or a turn
     radius is refused, naming it."""
     for name, value in (("height", height), ("turn_radius", turn_radius)):
         if is_given(value):
-            raise ParameterError(f"{name}: on the sphere limits takes the lane's theta (the height or turn radius "
-                                 "is a lane on another surface: choose it with surface)", name)
+            raise ParameterError(f"{name}: on the sphere the lane is theta (a height or a turn radius is a lane "
+                                 "on another surface: choose it with surface)", name)
 
 
 def _too_many(counts):

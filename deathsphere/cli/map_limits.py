@@ -42,6 +42,7 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 
 @cli.command("map")
 @setup_options()
+@surface_options()
 @param_option("max_g")
 @single("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
         help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
@@ -53,7 +54,8 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 @jobs_option()
 @scheduler_option()
 @output_options()
-def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, jobs, scheduler, fmt):
+def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height, profile, height, turn_radius,
+                max_g, output, step, stability, jobs, scheduler, fmt):
     """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.
 
     Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
@@ -73,8 +75,26 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
       deathsphere map --format csv --step 1 | head
       deathsphere map --output map.png
       deathsphere map -a 0.9 -r 3 --stability --output map.png
+      deathsphere map --surface cone --diameter 6 --wall-angle 80 --wall-height 8 --mu 1 --output cone.png
+
+    On a drum, a cone, flat ground or a profile (--surface) the map is the
+    allowed (height, alpha) region (on flat ground (turn radius, alpha)):
+    --height start:stop:step gives the lanes [default: 361 from the floor to
+    the wall's top]; --format csv/json the boundary points with whether the
+    orbit is feasible just below and above each; on a terminal the allowed
+    intervals of a few lanes.  No --stability or --step there (docs/limits.md
+    sec. 8).
     """
     options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
+    arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
+                  turn_radius=turn_radius)
+    from deathsphere.api.ride_surfaces import names_a_wall
+
+    if names_a_wall(surface, wall_angle, wall_height, profile):
+        _map_on(arena, options, output, fmt, given(step=step), stability)
+        return
+    if height or turn_radius:
+        api.region(**given(height=height, turn_radius=turn_radius))   # refused: the globe's lane is theta
     if output is not None:
         from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
         from deathsphere.render.map_figure import plot_map
@@ -101,6 +121,30 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
         table = api.region(stability=stability, progress=bar.update,
                            **given(step=step, jobs=jobs, scheduler=scheduler), **options)
     emit([table], fmt)
+
+
+def _map_on(arena, options, output, fmt, step, stability):
+    """``map`` off the globe: the figure, the data, or on a terminal the
+    allowed intervals of a few lanes."""
+    if output is not None:
+        from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
+        from deathsphere.render.lane_map_figure import plot_lane_map
+
+        try:
+            import_matplotlib()
+            plot_lane_map(api.region_curves(stability=stability, **step, **arena, **options), output=output)
+        except PlotExtraMissing as exc:
+            fail(one_line(str(exc)))
+        say_written(output)
+        return
+    fmt = choose_format(fmt)
+    if fmt == "table":
+        from deathsphere.render.lane_map_text import lane_map_text
+
+        curves = api.region_curves(stability=stability, **step, **arena, **options)
+        stdout_console().print(lane_map_text(curves))
+        return
+    emit([api.region(stability=stability, **step, **arena, **options)], fmt)
 
 
 @cli.command("limits")

@@ -49,7 +49,7 @@ from deathsphere.physics.status import Status
 from deathsphere.physics.trig_roots import MERGE_TOL, roots_in, sorted_union
 
 __all__ = ["LaneIntervals", "LaneRange", "allowed_alpha_on", "lane_range", "lane_boundaries",
-           "LANE_SCAN", "LANE_XTOL"]
+           "LANE_SCAN", "LANE_XTOL", "feasible_on", "fit_window"]
 
 
 class _RowPoly:
@@ -190,7 +190,7 @@ class LaneIntervals:
                  float(self.speed_max[index][j])) for j in range(int(self.count[index]))]
 
 
-def _feasible(ground, height, alpha, a, k, g, outside, mu, max_g):
+def feasible_on(ground, height, alpha, a, k, g, outside, mu, max_g):
     """Status ``ok`` of the wheel on the ground (S1-S5, the predicate of
     ``orbit --surface``) and its load within max_g."""
     orb = wheel_orbit(ground, height, alpha, a, k, g, outside, mu)
@@ -238,7 +238,7 @@ def allowed_alpha_on(ground, height, a, k, g, outside=False, mu=np.inf, max_g=np
     valid = np.isfinite(cell_lo) & np.isfinite(cell_hi) & usable[:, None]
     mid = np.where(valid, 0.5 * (cell_lo + cell_hi), 0.0)
     lane_h = np.where(usable, ln.height, 0.0)
-    feas = valid & _feasible(ground, lane_h[:, None], mid, a, k, g, outside, mu, max_g)
+    feas = valid & feasible_on(ground, lane_h[:, None], mid, a, k, g, outside, mu, max_g)
     prev = np.zeros_like(feas)
     prev[:, 1:] = feas[:, :-1]
     nxt = np.zeros_like(feas)
