@@ -49,6 +49,13 @@ def ground_of(surface, r, diameter, wall_angle, wall_height, profile, theta=None
     return ground, word
 
 
+def _arena(typed: dict):
+    """``ground_of`` from the keywords as given."""
+    return ground_of(typed.get("surface"), typed.get("r", R), typed.get("diameter"), typed.get("wall_angle"),
+                     typed.get("wall_height"), typed.get("profile"), typed.get("theta"), typed.get("height"),
+                     typed.get("turn_radius"))
+
+
 def _lanes(word, value):
     """The lanes as values: numbers, or ``start:stop:step`` text as an axis."""
     if isinstance(value, str) or (isinstance(value, (list, tuple)) and any(isinstance(v, str) for v in value)):
@@ -63,11 +70,12 @@ def _too_many(word, counts):
                              instead="each is a root search; split the range of lanes into several runs")
 
 
-def limits_on(*, surface, height=None, turn_radius=None, theta=None, wall_angle=None, wall_height=None,
-              profile=None, body="wheel", side="inside", a=None, r=R, diameter=None, k=None, g=None, mu=None,
-              max_g=None):
+def limits_on(typed: dict):
     """:func:`deathsphere.limits` on a drum, a cone, flat ground or a
-    profile (docs/limits.md sec. 8, docs/surfaces.md S1-S5).
+    profile (docs/limits.md sec. 8, docs/surfaces.md S1-S5); ``typed``: the
+    keywords of :func:`deathsphere.limits` as given (``surface`` and its
+    shape, ``height`` or ``turn_radius``, ``theta``, ``body``, ``side``,
+    ``a``, ``r``, ``diameter``, ``k``, ``g``, ``mu``, ``max_g``).
 
     With a lane (``height``; on flat ground ``turn_radius``): one row per
     interval of alpha with a feasible orbit on it (the fit S4, the floor
@@ -82,12 +90,13 @@ def limits_on(*, surface, height=None, turn_radius=None, theta=None, wall_angle=
     from deathsphere.model import make_requests
     from deathsphere.results.lane_limits import NOT_A_WHEEL, lane_limits_rows
 
-    body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
+    body = decode_paper_body(typed.get("body", "wheel"))
+    side = checked_choice("side", typed.get("side", "inside"), SIDES)
     if not isinstance(body, Wheel):
         raise ParameterError(NOT_A_WHEEL, "body")
-    ground, word = ground_of(surface, r, diameter, wall_angle, wall_height, profile, theta, height, turn_radius)
-    lane = turn_radius if word == "turn_radius" else height
-    given = {"a": a, "k": k, "g": g, "mu": mu, "max_g": max_g}
+    ground, word = _arena(typed)
+    lane = typed.get(word)
+    given = {name: typed.get(name) for name in ("a", "k", "g", "mu", "max_g")}
     if is_given(lane):
         given["height"] = _lanes(word, lane)
     checked = {name: checked_array(word if name == "height" else name, v) for name, v in given.items()
@@ -98,27 +107,27 @@ def limits_on(*, surface, height=None, turn_radius=None, theta=None, wall_angle=
     return raise_if_all_invalid(lane_limits_rows(req, ground, lanes=not is_given(lane)))
 
 
-def limits_on_input(source, *, surface, wall_angle=None, wall_height=None, profile=None, height=None,
-                    turn_radius=None, theta=None, body=None, side=None, a=None, r=R, diameter=None, k=None, g=None,
-                    mu=None, max_g=None, chunk_size: int = CHUNK) -> Chunks:
+def limits_on_input(source, typed: dict, chunk_size: int = CHUNK) -> Chunks:
     """The limits on a lane of each request in a CSV file, on one arena:
-    ``deathsphere limits --surface ... --input FILE``.  Its header names
-    ``height`` (the lane; on flat ground the turn radius; ``height_m`` read
-    too) and optionally ``body``, ``side``, ``a``, ``k``, ``g``, ``mu``,
-    ``max_g``; an option given applies to every row.  A bad line, or a
-    body other than a wheel, is one ``invalid`` row with the reason."""
+    ``deathsphere limits --surface ... --input FILE``; ``typed`` the
+    keywords of :func:`deathsphere.limits_input` as given.  The file's
+    header names ``height`` (the lane; on flat ground the turn radius;
+    ``height_m`` read too) and optionally ``body``, ``side``, ``a``, ``k``,
+    ``g``, ``mu``, ``max_g``; an option given applies to every row.  A bad
+    line, or a body other than a wheel, is one ``invalid`` row with the
+    reason."""
     from deathsphere.inputs import ALIASES
     from deathsphere.model import REQUEST_FIELDS, make_requests
     from deathsphere.results.lane_limits import LANE_LIMITS_FIELDS, lane_limits_rows
 
-    ground, word = ground_of(surface, r, diameter, wall_angle, wall_height, profile, theta, height, turn_radius)
+    ground, word = _arena(typed)
     overrides = {}
-    if body is not None:
-        overrides["body"] = decode_paper_body(body).word
-    if side is not None:
-        overrides["side"] = checked_choice("side", side, SIDES)
-    lane = turn_radius if word == "turn_radius" else height
-    for name, value in (("height", lane), ("a", a), ("k", k), ("g", g), ("mu", mu), ("max_g", max_g)):
+    if typed.get("body") is not None:
+        overrides["body"] = decode_paper_body(typed["body"]).word
+    if typed.get("side") is not None:
+        overrides["side"] = checked_choice("side", typed["side"], SIDES)
+    for name, value in (("height", typed.get(word)),) + tuple((key, typed.get(key)) for key in
+                                                              ("a", "k", "g", "mu", "max_g")):
         value = one_default(word if name == "height" else name, value)
         if value is not None:
             overrides[name] = value

@@ -6,32 +6,35 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.api.arguments import INF, A, G, R, checked_axis, checked_choice, checked_scalar, is_given
-from deathsphere.api.lane_limits import MAX_LANES, _too_many, ground_of
+from deathsphere.api.arguments import INF, A, G, checked_axis, checked_choice, checked_scalar, is_given
+from deathsphere.api.lane_limits import MAX_LANES, _arena, _too_many
 from deathsphere.constants import SIDES
 from deathsphere.params import ParameterError
 
 
-def _setup(surface, r, diameter, wall_angle, wall_height, profile, height, turn_radius, a, k, g, side, mu, max_g,
-           stability, step):
+def _setup(typed: dict):
+    """The ground, the lanes [m], the setup's scalars and the side from the
+    keywords of :func:`deathsphere.region` as given (``typed``)."""
     from deathsphere.params import first_problem
     from deathsphere.results.lane_map import default_lanes
 
-    if stability:
+    if typed.get("stability"):
         raise ParameterError("the stability map is the globe's: off the globe map draws the allowed region "
                              "only (orbit --surface gives each orbit's stability)", "stability")
-    if step is not None:
+    if typed.get("step") is not None:
         raise ParameterError("step is the globe's theta step: on another surface give the lanes as "
                              "height start:stop:step (turn_radius on flat ground)", "step")
-    ground, word = ground_of(surface, r, diameter, wall_angle, wall_height, profile, None, height, turn_radius)
-    side = checked_choice("side", side, SIDES)
-    values = {name: checked_scalar(name, v) for name, v in (("a", a), ("k", 0.5 if k is None else k), ("g", g),
-                                                          ("mu", mu), ("max_g", max_g))}
-    for name, value in values.items():
-        problem = first_problem(name, [value])
+    ground, word = _arena(dict(typed, theta=None))
+    side = checked_choice("side", typed.get("side", "inside"), SIDES)
+    defaults = {"a": A, "k": 0.5, "g": G, "mu": INF, "max_g": INF}
+    values = {}
+    for name, default in defaults.items():
+        value = typed.get(name)
+        values[name] = checked_scalar(name, default if value is None else value)
+        problem = first_problem(name, [values[name]])
         if problem:
             raise ParameterError(problem, name)
-    lane = turn_radius if word == "turn_radius" else height
+    lane = typed.get(word)
     if is_given(lane):
         axis = checked_axis(word, list(lane) if isinstance(lane, (list, tuple)) else lane)
         _too_many(word, [len(axis)])
@@ -44,33 +47,29 @@ def _setup(surface, r, diameter, wall_angle, wall_height, profile, height, turn_
     return ground, heights, values, side == "outside"
 
 
-def region_on(*, surface, height=None, turn_radius=None, wall_angle=None, wall_height=None, profile=None, a=A,
-              r=R, diameter=None, k=None, g=G, side="inside", mu=INF, max_g=INF, stability=False, step=None):
+def region_on(typed: dict):
     """The allowed (lane, alpha) region of a wheel off the globe as data:
-    ``deathsphere map --surface ... --format csv``.  One row per boundary
-    point on each lane (``height`` [m] values or ``start:stop:step`` text,
-    on flat ground ``turn_radius``; default: 361 lanes from the floor to the
-    top): ``curve`` (S4 fit, S5 floor, S2 Omega^2 = 0 or pole, S3 contact,
-    mu, max_g), ``equation``, ``height_m``, ``alpha_deg`` and whether the
-    orbit just below and just above it in alpha is feasible
-    (``feasible_below``, ``feasible_above``), then the setup and the lane."""
+    ``deathsphere map --surface ... --format csv``; ``typed`` the keywords
+    of :func:`deathsphere.region` as given.  One row per boundary point on
+    each lane (``height`` [m] values or ``start:stop:step`` text, on flat
+    ground ``turn_radius``; default: 361 lanes from the floor to the top):
+    ``curve`` (S4 fit, S5 floor, S2 Omega^2 = 0 or pole, S3 contact, mu,
+    max_g), ``equation``, ``height_m``, ``alpha_deg`` and whether the orbit
+    just below and just above it in alpha is feasible (``feasible_below``,
+    ``feasible_above``), then the setup and the lane."""
     from deathsphere.results.lane_map import lane_boundary_table
 
-    ground, heights, v, outside = _setup(surface, r, diameter, wall_angle, wall_height, profile, height,
-                                         turn_radius, a, k, g, side, mu, max_g, stability, step)
+    ground, heights, v, outside = _setup(typed)
     return lane_boundary_table(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"])
 
 
-def region_curves_on(*, surface, height=None, turn_radius=None, wall_angle=None, wall_height=None, profile=None,
-                     a=A, r=R, diameter=None, k=None, g=G, side="inside", mu=INF, max_g=INF, stability=False,
-                     step=None):
+def region_curves_on(typed: dict):
     """The allowed region off the globe as a figure's curves
     (:class:`deathsphere.results.lane_map.LaneCurves`): what ``deathsphere
-    map --surface ... --output FILE`` draws."""
+    map --surface ... --output FILE`` draws; ``typed`` as for :func:`region_on`."""
     from deathsphere.results.lane_map import lane_curves
 
-    ground, heights, v, outside = _setup(surface, r, diameter, wall_angle, wall_height, profile, height,
-                                         turn_radius, a, k, g, side, mu, max_g, stability, step)
+    ground, heights, v, outside = _setup(typed)
     return lane_curves(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"])
 
 

@@ -109,8 +109,8 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     if _off_globe(arena):
         from deathsphere.api.lane_map import region_on
 
-        return region_on(a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g, stability=stability,
-                         step=step, **arena)
+        return region_on(dict(arena, a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
+                              stability=stability, step=step))
     step = 0.5 if step is None else step
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
@@ -179,8 +179,8 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
     if _off_globe(arena):
         from deathsphere.api.lane_map import region_curves_on
 
-        return region_curves_on(a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
-                                stability=stability, **arena)
+        return region_curves_on(dict(arena, a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
+                                     stability=stability))
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g))}
     return curve_map(a_over_r, 1.0, values["k"], outside=side == "outside", mu=values["mu"],
@@ -245,9 +245,9 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     if names_a_wall(surface, wall_angle, wall_height, profile):
         from deathsphere.api.lane_limits import limits_on
 
-        return limits_on(surface=surface, height=height, turn_radius=turn_radius, theta=theta, wall_angle=wall_angle,
-                         wall_height=wall_height, profile=profile, body=body, side=side, a=a, r=r,
-                         diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
+        return limits_on(dict(surface=surface, height=height, turn_radius=turn_radius, theta=theta,
+                              wall_angle=wall_angle, wall_height=wall_height, profile=profile, body=body, side=side,
+                              a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g))
     _globe_lane(height, turn_radius)
     body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     if not isinstance(body, Wheel):
@@ -324,10 +324,10 @@ def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=
     if names_a_wall(surface, wall_angle, wall_height, profile):
         from deathsphere.api.lane_limits import limits_on_input
 
-        return limits_on_input(source, surface=surface, wall_angle=wall_angle, wall_height=wall_height,
-                               profile=profile, height=height, turn_radius=turn_radius, theta=theta, body=body,
-                               side=side, a=a, r=R if r is None else r, diameter=diameter, k=k, g=g, mu=mu,
-                               max_g=max_g, chunk_size=chunk_size)
+        return limits_on_input(source, dict(surface=surface, wall_angle=wall_angle, wall_height=wall_height,
+                                            profile=profile, height=height, turn_radius=turn_radius, theta=theta,
+                                            body=body, side=side, a=a, r=R if r is None else r, diameter=diameter,
+                                            k=k, g=g, mu=mu, max_g=max_g), chunk_size=chunk_size)
     _globe_lane(height, turn_radius)
 
     overrides = {}
