@@ -75,7 +75,8 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
       deathsphere map --format csv --step 1 | head
       deathsphere map --output map.png
       deathsphere map -a 0.9 -r 3 --stability --output map.png
-      deathsphere map --surface cone --diameter 6 --wall-angle 80 --wall-height 8 --mu 1 --output cone.png
+      deathsphere map --surface cone --diameter 6 --wall-angle 80 \\
+          --wall-height 8 --mu 1 --output cone.png
 
     On a drum, a cone, flat ground or a profile (--surface) the map is the
     allowed (height, alpha) region (on flat ground (turn radius, alpha)):
@@ -178,8 +179,10 @@ def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, surface, 
       deathsphere limits --theta 60 --mu 1.2
       deathsphere limits --mu 1 --max-g 5
       deathsphere limits --theta 30:90:10 --diameter 16ft --mu 1 --max-g 4
-      deathsphere limits --surface cylinder --diameter 32ft --height 2m --mu 1 --max-g 4
-      deathsphere limits --surface cone --diameter 6 --wall-angle 80 --wall-height 8 --mu 1 --max-g 4
+      deathsphere limits --surface cylinder --diameter 32ft --height 2m \\
+          --mu 1 --max-g 4
+      deathsphere limits --surface cone --diameter 6 --wall-angle 80 \\
+          --wall-height 8 --mu 1 --max-g 4
     """
     options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
                     surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile)

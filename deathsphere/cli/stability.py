@@ -56,7 +56,8 @@ def stability_command(theta, alpha, speed, com_speed, omega, omega3, body, side,
       deathsphere stability --theta 90 --speed 40km/h --diameter 16ft
       deathsphere stability --theta 90 --com-speed 40km/h --diameter 16ft
       deathsphere stability --body sphere --theta 60 --omega3 80
-      deathsphere stability --surface cylinder --diameter 32ft --height 2 --alpha 10
+      deathsphere stability --surface cylinder --diameter 32ft --height 2 \\
+          --alpha 10
 
     On a drum, a cone, flat ground or a profile (--surface, the lane
     --height or --turn-radius) only the exact rows apply: the paper's

@@ -191,8 +191,10 @@ class LaneIntervals:
 
 
 def feasible_on(ground, height, alpha, a, k, g, outside, mu, max_g):
-    """Status ``ok`` of the wheel on the ground (S1-S5, the predicate of
-    ``orbit --surface``) and its load within max_g."""
+    """True where (height, alpha) is a feasible orbit: status ``ok`` of the
+    wheel on the ground (docs/surfaces.md S1-S5; eqs. (29), (33), (35) with
+    the surface's split of the force), the predicate of ``orbit --surface``,
+    and its load within max_g (eqs. 32, 36).  Beyond the paper."""
     orb = wheel_orbit(ground, height, alpha, a, k, g, outside, mu)
     ok = orb["status"] == Status.OK
     if math.isfinite(max_g):
@@ -280,8 +282,9 @@ def _speed_range(ln, ilo, ihi, lo, hi, a, k, g):
 
 
 def lane_boundaries(ground, height, a, k, outside=False, mu=np.inf, max_g=np.inf):
-    """Every alpha on each boundary of the allowed region at each lane, for
-    the map (the globe's :func:`deathsphere.physics.region.boundary_alphas`
+    """Every alpha on each boundary of the allowed region at each lane
+    (beyond the paper: eqs. (0), (29), (33), (35) on any ground, docs/limits.md
+    sec. 8), for the map (the globe's :func:`deathsphere.physics.region.boundary_alphas`
     with lanes in place of theta): dict name (``S4`` fit, ``S5`` floor,
     ``S2`` Omega^2 = 0 or pole, ``S3`` contact, ``mu``, ``max_g``) -> array
     height.shape + (m,) [rad], sorted, NaN-padded; searched over the full
