@@ -318,8 +318,8 @@ def lane_boundaries(ground, height, a, k, outside=False, mu=np.inf, max_g=np.inf
 # the lowest and the highest lane
 # ---------------------------------------------------------------------------
 
-#: Lanes of the first scan of :func:`lane_range`.
-LANE_SCAN = 1024
+#: Lanes of the grid of :func:`lane_range` (every 8th scanned first).
+LANE_SCAN = 2048
 #: :func:`lane_range` bisects a change of feasibility to this fraction of
 #: the ground's length scale.
 LANE_XTOL = 1e-10
@@ -350,11 +350,16 @@ class LaneRange:
 
 
 def _length(ground, a):
-    """The ground's length scale [m]: its radius, else the wheel's."""
+    """The ground's length scale [m]: its radius, else its widest lane's
+    distance from the axis (a profile), else the wheel's radius."""
     for name in ("radius", "r"):
         value = getattr(ground, name, None)
         if isinstance(value, (int, float)) and math.isfinite(value) and value > 0:
             return float(value)
+    top = float(getattr(ground, "highest_lane", math.inf))
+    if math.isfinite(top):
+        rho, _ = ground.contact(np.linspace(0.0, top, 33))
+        return max(float(np.max(rho)), float(a))
     return float(a)
 
 
@@ -391,20 +396,42 @@ def _points(x, y, levels):
     return _points(x, mid, levels - 1) + [mid] + _points(mid, y, levels - 1)
 
 
+def _feasible_lanes(heights, feasible_at):
+    """Indices of the grid's feasible lanes that decide its ends: every
+    _STRIDE-th lane is scanned, then the lanes between the first feasible
+    one found and the scanned lane before it, and between the last and the
+    scanned lane after it (the globe's scan, sec. 4, at both ends)."""
+    n = heights.size
+    coarse = np.unique(np.arange(_STRIDE - 1, n + _STRIDE - 1, _STRIDE).clip(max=n - 1))
+    found = coarse[feasible_at(heights[coarse])]
+    if found.size == 0:
+        return found
+    first, last = int(found[0]), int(found[-1])
+    below = np.arange(max(first - _STRIDE + 1, 0), first)
+    above = np.arange(last + 1, min(last + _STRIDE, n))
+    fine = np.concatenate([below, above])
+    fine_ok = fine[feasible_at(heights[fine])] if fine.size else fine
+    return np.union1d(found, fine_ok).astype(int)
+
+
+#: lane_range scans every _STRIDE-th lane of its grid first.
+_STRIDE = 8
+
+
 def lane_range(ground, a, k, g, outside=False, mu=np.inf, max_g=np.inf) -> LaneRange:
     """The lowest and the highest lane on ``ground`` with a feasible tilt
     within ``mu`` and ``max_g`` (beyond the paper; docs/limits.md sec. 8).
 
     Feasibility of a lane is decided exactly by :func:`allowed_alpha_on`.
     Its ends are checked first (the floor, height 0, and the top, the
-    ground's highest lane); between them :data:`LANE_SCAN` lanes are
-    scanned and each change from infeasible to feasible next to the first
-    and the last feasible lane is bisected to :data:`LANE_XTOL` times the
-    ground's length scale.  With no top (a drum or a cone given no wall
+    ground's highest lane); between them every 8th lane of a grid of
+    :data:`LANE_SCAN` is scanned, then the lanes next to the first and the
+    last feasible one found, and each change from infeasible to feasible
+    there is bisected to :data:`LANE_XTOL` times the ground's length scale.  With no top (a drum or a cone given no wall
     height, flat ground) the scan reaches ~2000 radii and a feasible last
     lane means no highest lane.  An island of feasible lanes narrower than
     the scan's spacing below the first (or above the last) feasible lane
-    scanned could be missed."""
+    scanned (8 grid spacings) could be missed."""
     top = float(getattr(ground, "highest_lane", math.inf))
     scale = _length(ground, a)
 
@@ -413,8 +440,8 @@ def lane_range(ground, a, k, g, outside=False, mu=np.inf, max_g=np.inf) -> LaneR
 
     heights = _scan_heights(top, scale)
     ends = np.array([0.0] + ([top] if math.isfinite(top) else []))
-    ok_scan, ok_ends = feasible_at(heights), feasible_at(ends)
-    hit = np.flatnonzero(ok_scan)
+    ok_ends = feasible_at(ends)
+    hit = _feasible_lanes(heights, feasible_at)
     nan = math.nan
     if hit.size == 0 and not ok_ends.any():
         return LaneRange(False, nan, nan, "", "", float(heights[-1]))
