@@ -274,10 +274,6 @@ def validate_requests(req: dict) -> np.ndarray:
         with np.errstate(invalid="ignore"):
             checks.append((too_big_inside(req["a"], req["r"], side_code != SIDES.index("inside")),
                            lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
-    else:
-        checks.append(((body_code == WHEEL.code) & np.isnan(req["alpha"]),
-                       lambda i: f"on the {ground.name} a wheel needs its tilt alpha (its speed or rate is "
-                                 "solved on the sphere only)"))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
     is_wheel, is_sphere = body_code == WHEEL.code, body_code == BALL.code
     targets = sum((~np.isnan(req[key])).astype(int) for key in WHEEL.held_by)
@@ -462,11 +458,52 @@ _DEFAULT_K = np.array([body.default_k for body in PAPER_BODIES] + [np.nan])
 
 
 def _ground_wheel(req, rows):
+    """A wheel on another surface: its tilt given, one row; its speed or rate
+    given, every tilt of S2 (docs/surfaces.md), one row per root as on the
+    globe (:func:`_ground_wheel_solved`)."""
     from deathsphere.physics import revolution
 
-    res = revolution.wheel_orbit(req["ground"], *(req[key][rows] for key in ("height", "alpha_rad", "a", "k", "g")),
-                                 outside=req["outside"][rows], mu=req["mu"][rows])
-    return [(rows, np.full(rows.size, -1), res)]
+    tilted = rows[~np.isnan(req["alpha"][rows])]
+    parts = []
+    if tilted.size:
+        res = revolution.wheel_orbit(req["ground"], *(req[key][tilted] for key in ("height", "alpha_rad", "a", "k",
+                                                                                    "g")),
+                                     outside=req["outside"][tilted], mu=req["mu"][tilted])
+        parts.append((tilted, np.full(tilted.size, -1), res))
+    solve = rows[np.isnan(req["alpha"][rows])]
+    if solve.size:
+        parts.extend(_ground_wheel_solved(req, solve))
+    return parts
+
+
+def _ground_wheel_solved(req, rows):
+    """Speed or rate given on another surface: every alpha of S2, one row per
+    root (branch = root index, in increasing alpha); a request with no root
+    gives one row with the reason (no root, off the wall, no tilt fits, a
+    contact speed on the axis).  One vectorised call per kind of target."""
+    from deathsphere.physics.revolution_tilt import wheel_tilts
+
+    parts = []
+    for name in ("com_speed", "speed", "omega"):
+        sub = rows[~np.isnan(req[name][rows])]
+        if name != "omega":
+            rows = rows[np.isnan(req[name][rows])]      # a row's target is the first of its kind found
+        if not sub.size:
+            continue
+        res = wheel_tilts(req["ground"], req["height"][sub], req["a"][sub], req["k"][sub], req["g"][sub],
+                          outside=req["outside"][sub], mu=req["mu"][sub], **{name: req[name][sub]})
+        count = res["count"]
+        roots = res["alpha"]
+        row_i, root_j = np.nonzero(np.arange(roots.shape[1])[None, :] < count[:, None])
+        flat = {key: value[row_i, root_j] for key, value in res.items() if np.shape(value) == roots.shape}
+        flat["alpha_deg"] = np.rad2deg(flat.pop("alpha"))
+        parts.append((sub[row_i], root_j, flat))
+        none = count == 0
+        if none.any():
+            parts.append((sub[none], np.full(int(none.sum()), -1), {
+                "status": res["unsolved_status"][none], "reason": res["unsolved_reason"][none],
+                **{key: value[none] for key, value in res["lane"].items()}}))
+    return parts
 
 
 def _ground_ball(req, rows):

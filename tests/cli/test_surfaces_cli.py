@@ -120,12 +120,28 @@ def test_an_input_batch_on_a_drum_gives_a_row_per_line(run, tmp_path):
      "not a shape of the cylinder"),
     (["--surface", "plane", "--height", "1", "--alpha", "10"], "turn_radius"),
     (["--theta", "60", "--alpha", "10", "--wall-height", "3"], "not a shape of the sphere"),
-    (["--surface", "cylinder", "--diameter", "9", "--height", "1", "--speed", "10"], "needs its tilt alpha"),
 ])
 def test_bad_arena_options_are_one_line_and_exit_2(run, args, words):
     res = run("orbit", *args, "--format", "csv")
     assert res.exit_code == 2, (res.exit_code, res.stdout)
     assert res.stderr.count("\n") == 1 and words in res.stderr and "Traceback" not in res.stderr
+
+
+def test_the_wall_of_death_given_its_speed(run):
+    """--speed on the drum: every tilt of eq. S2, one row each; the contact
+    runs round the drum's radius, so Omega = v / R, and eq. S2 written out
+    holds at the printed tilt; a speed no tilt gives is one no_orbit row."""
+    res = run("orbit", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "6", "--height", "2",
+              "--speed", "30mph", "--speed", "1", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    fast, slow = rows(res.stdout)
+    assert fast["status"] == "ok" and fast["branch"] == "0" and float(fast["v_contact_m_s"]) == 13.4112
+    omega, alpha = float(fast["omega_rad_s"]), np.radians(float(fast["alpha_deg"]))
+    assert omega == pytest.approx(13.4112 / 4.8768, rel=1e-12)
+    rp = 4.8768 - 0.3 * np.cos(alpha)
+    assert omega ** 2 == pytest.approx(9.80665 / np.tan(alpha) / (2 * rp + 0.5 * 0.3 * np.cos(alpha)), rel=1e-10)
+    assert slow["status"] == "no_orbit" and "S2 has no root" in slow["reason"] and slow["branch"] == ""
+    assert float(slow["rho_contact_m"]) == pytest.approx(4.8768)
 
 
 def test_a_lane_off_the_wall_is_a_status(run):
