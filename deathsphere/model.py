@@ -538,9 +538,6 @@ def _ground_particle(req, rows):
 
 #: The solvers on a surface other than the globe (docs/surfaces.md).
 GROUND_SOLVERS = {Wheel: _ground_wheel, Ball: _ground_ball, Particle: _ground_particle}
-#: ``stability_method`` of an orbit on the outside of another surface: the
-#: equations of motion on any ground are written for the inside (docs/dynamics.md sec. 7).
-NOT_ON_SURFACE = "not computed on the outside of this surface (docs/dynamics.md sec. 7 is the inside's)"
 
 
 def evaluate(req: dict, stability: bool = True) -> Table:
@@ -786,18 +783,21 @@ def add_stability_on(columns: dict, ground, height: np.ndarray, alpha_rad: np.nd
     """The stability columns of orbits on a ground other than the globe:
     the exact linearisation of the equations of motion on any ground
     (docs/dynamics.md sec. 7; physics.stability.wheel_stability_on and
-    ball_stability_on), as :func:`add_stability` on the sphere.  The
-    bodies inside only; a sliding particle is not analysed."""
+    ball_stability_on), as :func:`add_stability` on the sphere, inside
+    and outside; a sliding particle is not analysed."""
     from deathsphere.physics import stability as exact
 
     par = {key: columns[col] for key, col in (("a", "a_m"), ("k", "k"), ("g", "g_m_s2"))}
     solvers = {WHEEL: (exact.wheel_stability_on, alpha_rad), BALL: (exact.ball_stability_on, columns["omega_rad_s"])}
 
+    outside = np.asarray(outside, dtype=bool)
+
     def solve(one, rows):
         solver, second = solvers[one]
-        return solver(ground, height[rows], second[rows], *(par[key][rows] for key in ("a", "k", "g")))
+        return solver(ground, height[rows], second[rows], *(par[key][rows] for key in ("a", "k", "g")),
+                      outside=outside[rows])
 
-    return _stability_columns(columns, status, body_code, solve, (np.asarray(outside, dtype=bool), NOT_ON_SURFACE))
+    return _stability_columns(columns, status, body_code, solve)
 
 
 def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,

@@ -47,15 +47,20 @@ def test_the_golfers_dilemma_in_the_orbit_table(run):
         assert float(r["freq_fast_rad_s"]) == pytest.approx(omega * np.sqrt(k / (k + 1)), rel=1e-9)
 
 
-def test_outside_another_surface_the_stability_is_said_not_computed(run):
+def test_outside_another_surface_the_stability_is_the_exact_linearisations(run):
     # on top of a cone leaning in at 150 degrees (a roof): steady orbits exist outside
     res = run("orbit", "--surface", "cone", "--diameter", "6", "--wall-angle", "150", "--height", "0.5",
               "--alpha", "50", "--alpha", "70", "--side", "outside", "--format", "csv")
     assert res.exit_code == 0, res.stderr
     got = rows(res.stdout)
     assert [r["status"] for r in got] == ["ok", "ok"]
-    for r in got:
-        assert r["stability"] == "unknown" and "outside" in r["stability_method"] and r["growth_rate_1_s"] == ""
+    from deathsphere.physics.stability.on_ground import wheel_stability_on
+
+    roof = Cone(3.0, np.radians(150.0))
+    for r, alpha in zip(got, (50.0, 70.0)):
+        assert r["stability_method"] == "exact-linearisation" and r["stability"] in ("stable", "unstable")
+        want = wheel_stability_on(roof, 0.5, np.radians(alpha), 0.3, 0.5, 9.80665, outside=True)
+        assert float(r["growth_rate_1_s"]) == pytest.approx(float(want["growth_rate"]), rel=1e-12, abs=1e-12)
 
 
 def test_a_cone_sweep_and_the_api_agree(run):
