@@ -164,3 +164,13 @@ def test_ride_on_flat_ground_through_the_command_line(run):
     assert bad.exit_code == 2 and bad.stderr.count("\n") == 1 and "--height" in bad.stderr
     bad = run("ride", "--turn-radius", "3", "--speed", "8", "--format", "csv")
     assert bad.exit_code == 2 and bad.stderr.count("\n") == 1 and "--turn-radius" in bad.stderr
+
+
+def test_the_riders_table_on_flat_ground_names_each_lane_by_its_turn_radius():
+    table = deathsphere.ride(machine="stunt125", surface="plane", turn_radius=[[10.0], [30.0]], speed=[6.0, 12.0],
+                             summary=True)
+    assert list(table["rho_contact_m"]) == [10.0, 30.0] and list(table["height_m"]) == [0.0, 0.0]
+    assert list(table["speeds_ok"]) == [2, 2]
+    # on the globe the contact's distance from the axis, r sin(theta)
+    globe = deathsphere.ride(theta=[[60.0], [90.0]], speed=[8.0, 10.0], diameter="16ft", summary=True)
+    np.testing.assert_allclose(globe["rho_contact_m"], 8 * FT * np.sin(np.radians([60.0, 90.0])), rtol=1e-15)

@@ -551,7 +551,9 @@ def _by_speed(th, how: str, v, r, g, mu, max_g, m: Machine, stability: bool, the
 SUMMARY_COLUMNS = ("height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_min_km_h", "v_max_km_h",
                    "lean_min_deg", "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m",
                    "limits", "mu_available", "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit",
-                   "v_contact_min_m_s", "v_contact_max_m_s")
+                   "v_contact_min_m_s", "v_contact_max_m_s",
+                   # the contact point's distance from the axis: on flat ground the lane itself (its turn radius)
+                   "rho_contact_m")
 #: Why a speed fails, as counted in the rider's table: column -> (status,
 #: and the reason when one status has several causes).
 FAILURES = {"slips": ("slips", None), "over_g": ("over_g", None), "head_hits": ("no_fit", Reason.HEAD_HITS),
@@ -614,6 +616,7 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
             return float(fn(vals)) if vals.size else math.nan
 
         rows["height_m"].append(first("height_m"))
+        rows["rho_contact_m"].append(first("rho_contact_m"))
         rows["theta_deg"].append(first("theta_deg"))
         rows[tried].append(int(np.unique(rq).size))
         rows[ok_name].append(int(np.unique(rq[ok]).size))
