@@ -174,3 +174,11 @@ def test_the_riders_table_on_flat_ground_names_each_lane_by_its_turn_radius():
     # on the globe the contact's distance from the axis, r sin(theta)
     globe = deathsphere.ride(theta=[[60.0], [90.0]], speed=[8.0, 10.0], diameter="16ft", summary=True)
     np.testing.assert_allclose(globe["rho_contact_m"], 8 * FT * np.sin(np.radians([60.0, 90.0])), rtol=1e-15)
+
+
+def test_the_terminal_views_name_a_flat_lane_by_its_turn_radius(run):
+    many = run("ride", "--surface", "plane", "--turn-radius", "10:30:10", "--speed", "30km/h", "--format", "table")
+    assert many.exit_code == 0, many.stderr
+    assert "turn" in many.stdout and "radius" in many.stdout
+    globe = run("ride", "--diameter", "16ft", "--height", "0.8:2.4:0.8m", "--speed", "20km/h", "--format", "table")
+    assert globe.exit_code == 0 and "radius" not in globe.stdout
