@@ -5,6 +5,8 @@ of the cone's implicit function, the Monte Carlo against single falls, the
 command line and the 3-D view."""
 
 import math
+import tomllib
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,7 +16,14 @@ import deathsphere
 G = 9.80665
 FT, MPH = 0.3048, 0.44704
 R = 16 * FT            # a 32-foot drum
-WALL = "tests/golden/wall.toml"
+ROOT = Path(__file__).resolve().parents[2]
+#: the worked act (docs/show.md sec. 11), as shipped for users
+WALL = str(ROOT / "examples" / "wall_of_death.toml")
+
+
+def test_the_shipped_example_is_the_worked_act_the_goldens_pin():
+    shipped = tomllib.loads(Path(WALL).read_text(encoding="utf-8"))
+    assert shipped == tomllib.loads((ROOT / "tests" / "golden" / "wall.toml").read_text(encoding="utf-8"))
 
 
 def _rider(name, height, phase=0, **hold):
