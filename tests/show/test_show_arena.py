@@ -181,6 +181,7 @@ def test_theta_a_loop_and_both_tables_are_refused():
     loop = {"name": "Ben", "lane": "vertical", "azimuth": 0, "v_top": "6.5m/s", "width": "0.6m"}
     line = _refusal(_plan(_rider("Ana", "5ft", speed="35mph"), loop))
     assert line.startswith("rider 'Ben': lane: a vertical loop is the globe's: not on a cylinder")
+    assert "needs a roof" in line                       # why: a loop over the top rides on a surface above him
     both = {**_plan(_rider("Ana", "5ft", speed="35mph")), "globe": {"diameter": "16ft"}}
     assert _refusal(both).startswith("plan: arena: ")
 
