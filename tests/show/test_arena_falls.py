@@ -183,3 +183,17 @@ def test_the_command_line_follows_a_fall_on_the_drum_and_the_view_draws_it(run, 
     x0, v0 = _start(act, "Cal", 1.0, 0.5)
     assert path[:, 0] == pytest.approx(x0, abs=1e-12)
     assert path[:, -1] == pytest.approx(_drum_landing(x0, v0)[1], abs=1e-9)
+
+
+def test_a_fall_closer_than_the_plans_min_clearance_is_a_conflict_and_not_a_hit(run, tmp_path):
+    # Ben 90 deg ahead of Ana, nearly stopped: he drops past her with a few centimetres to spare
+    plan = Path(WALL).read_text(encoding="utf-8").replace("phase = 120", "phase = 90")
+    path = tmp_path / "close.toml"
+    path.write_text(plan, encoding="utf-8")
+    row = deathsphere.show(str(path)).fall("Ben", 0.5, 0.05)[0]
+    assert row["victim"] == "Ana" and 0 < row["min_clearance_m"] < 0.15 and row["hit"] is False
+    res = run("show", str(path), "--fail", "Ben@0.5:0.05", "--format", "table")
+    assert res.exit_code == 0, res.stderr
+    # the falls view's row: the falling rider, then the other (the pairs' rows name Ana first)
+    (line,) = [text for text in res.stdout.splitlines() if text.split()[:2] == ["Ben", "Ana"]]
+    assert "conflict" in line and "HIT" not in line
