@@ -197,3 +197,17 @@ def test_a_fall_closer_than_the_plans_min_clearance_is_a_conflict_and_not_a_hit(
     # the falls view's row: the falling rider, then the other (the pairs' rows name Ana first)
     (line,) = [text for text in res.stdout.splitlines() if text.split()[:2] == ["Ben", "Ana"]]
     assert "conflict" in line and "HIT" not in line
+
+
+def test_the_fall_path_ends_where_the_table_lands_and_is_none_without_a_flight():
+    act = deathsphere.show(WALL)
+    assert act.fall_path("Ana", 0.5, 1.0) is None                         # rides on
+    with pytest.raises(deathsphere.errors.ParameterError, match="rider must be one of Ana, Ben, Cal"):
+        act.fall_path("Dan", 0.5)
+    globe = deathsphere.show(str(ROOT / "tests" / "golden" / "act.toml"))
+    row = globe.fall("Ana", 0.4, 0.0)[0]
+    path = globe.fall_path("Ana", 0.4, 0.0)
+    th, ph = math.radians(row["theta_land_deg"]), math.radians(row["phi_land_deg"])
+    r = globe.plan.globe.r
+    land = r * np.array([math.sin(th) * math.cos(ph), math.sin(th) * math.sin(ph), math.cos(th)])
+    assert path["com"][:, -1] == pytest.approx(land, abs=1e-9) and path["t"][-1] == pytest.approx(row["t_land_s"])
