@@ -59,7 +59,8 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
                              "height above the floor)", "theta")
     for key in ("vertical", "v_top"):
         if typed.get(key):
-            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name}", key)
+            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name} (a loop over the top "
+                                 "needs a roof; give height for a horizontal lane)", key)
     if typed.get("height") is None:
         raise ParameterError(f"give height (the contact's height above the {ground.name}'s floor)", "height",
                              missing=True)
