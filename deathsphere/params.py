@@ -198,8 +198,8 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     # reading), --com-speed the centre of mass's (docs/contract.md)
     Param("speed", "m/s", "contact speed", TINY, HUGE, symbol="v", kind="speed", metavar="M_S",
           help="The contact's speed along the ground (a speedometer's); a two-wheeler's, its rear contact's. The "
-               "contact runs round the parallel of radius r sin theta, so the lap rate is Omega = speed / "
-               "(r sin theta); every tilt alpha giving it, one row each (branch = root number in increasing "
+               "contact runs round the parallel of radius r sin theta (rho_contact off the globe), so the lap rate "
+               "is Omega = speed / (r sin theta); every tilt alpha giving it, one row each (branch = root number in increasing "
                "alpha). With the contact on the axis (theta 0 or 180) no orbit."),
     Param("com_speed", "m/s", "centre-of-mass speed", TINY, HUGE, symbol="v_cm", kind="speed", metavar="M_S",
           column="v_cm_m_s",

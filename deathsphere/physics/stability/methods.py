@@ -11,7 +11,7 @@ analyse).  The kind of stability an analysed row has (``neutral``,
 from __future__ import annotations
 
 __all__ = [
-    "EXACT", "EXACT_STEER_LOCKED", "FLOQUET", "NOT_ANALYSED_K0", "NOT_ANALYSED_PARTICLE", "NOT_ANALYSED_OUTSIDE",
+    "EXACT", "EXACT_STEER_LOCKED", "FLOQUET", "NOT_ANALYSED_K0", "NOT_ANALYSED_PARTICLE",
     "NOT_ANALYSED_POINT_MASS", "NOT_ANALYSED_OFF_GLOBE", "METHOD_TEXT", "method_text",
 ]
 
@@ -25,8 +25,6 @@ FLOQUET = "floquet"
 NOT_ANALYSED_K0 = "not-analysed-k0"
 #: The frictionless particle slides: it has no rolling equations to linearise.
 NOT_ANALYSED_PARTICLE = "not-analysed-particle"
-#: The outside of a surface other than the globe.
-NOT_ANALYSED_OUTSIDE = "not-analysed-outside"
 #: A machine with no yaw inertia and no spinning wheels (the point-mass limit).
 NOT_ANALYSED_POINT_MASS = "not-analysed-point-mass"
 #: The single-contact machine on a surface other than the globe.
@@ -40,8 +38,6 @@ METHOD_TEXT = {
     FLOQUET: "Floquet multipliers of the vertical orbit over one period (docs/stability.md)",
     NOT_ANALYSED_K0: "not analysed (k = 0: the equations of motion are singular)",
     NOT_ANALYSED_PARTICLE: "not analysed (sliding particle)",
-    NOT_ANALYSED_OUTSIDE: ("not computed on the outside of this surface (the equations of motion on any ground, "
-                           "docs/dynamics.md sec. 7, are the inside's)"),
     NOT_ANALYSED_POINT_MASS: ("not analysed: no yaw inertia and no spinning wheels: a turn about the up-axis moves "
                               "no mass and the equations of motion leave the yaw undetermined (the point-mass limit; "
                               "docs/machine.md sec. 5)"),
@@ -51,5 +47,6 @@ METHOD_TEXT = {
 
 
 def method_text(label: str) -> str:
-    """The sentence a ``stability_method`` label stands for (the label itself if it has none)."""
+    """The sentence a ``stability_method`` label stands for (the label itself if it has none); beyond the
+    paper: the words of docs/contract.md, "Stability"."""
     return METHOD_TEXT.get(label, label)
