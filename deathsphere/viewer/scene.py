@@ -38,7 +38,7 @@ PLAYBACK_FACTORS = (10.0, 5.0, 2.0, 1.0) + tuple(
 #: statuses that end a run at an event of the simulation: the labels of
 #: deathsphere.simulation.status.ENDED_EARLY, written out because the viewer
 #: reads tables only (a test keeps the two equal)
-EVENT_STATUSES = ("contact_lost", "slips", "failed")
+EVENT_STATUSES = ("contact_lost", "slips", "failed", "hits_floor", "over_the_top")
 #: the drawing primitives a track's items name (their keys: docs/simulation.md, "3-D view")
 DRAW_KINDS = ("wheel", "ball", "chain", "ring", "dot", "path", "arrow", "capsule", "cross", "label")
 
