@@ -401,8 +401,8 @@ def _wall_starts(rider: RiderRequest, run: Run):
     kick = 0.0 if rider.kick is None else rider.kick
     held = ({"alpha_deg": params.reduce_angle(by.alpha)} if isinstance(by, Tilt)
             else {"omega": by.omega} if isinstance(by, Rate) else {"omega3": by.omega3, "branch": by.branch})
-    starts_of = partial(ground_starts, run.ground, body.kind, rider.lane.at.height, a=body.a, k=body.k, g=run.g,
-                        mu=run.mu, perturb_deg=kick, **held)
+    starts_of = partial(ground_starts, run.ground, body.kind, rider.lane.at.height, held, a=body.a, k=body.k, g=run.g,
+                        mu=run.mu, perturb_deg=kick)
     alpha = by.alpha if isinstance(by, Tilt) else None
     return _echo_requested(_started(starts_of, alpha), **{"rate": getattr(by, "omega", None),
                                                           "omega3": getattr(by, "omega3", None)})

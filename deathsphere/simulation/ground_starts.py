@@ -79,14 +79,15 @@ def _ball(ground, height, omega3, omega, branch, kick, a, k, g, phi):
     return orb, np.concatenate((steady[0:6], w)), spin
 
 
-def ground_starts(ground, body: PaperBodyKind, height, *, alpha_deg=None, omega3=None, omega=None, branch=0,
-                  a, k, g, mu=np.inf, perturb_deg=0.0, phi_deg=0.0, input_row=None) -> Starts:
+def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, mu=np.inf, perturb_deg=0.0,
+                  phi_deg=0.0, input_row=None) -> Starts:
     """Wheels or balls on steady horizontal orbits of ``ground`` at lane
     ``height`` [m] (on flat ground: the turn radius), arrays broadcast.
 
-    A wheel is given its tilt ``alpha_deg`` [deg]; a ball its spin
-    ``omega3`` (the root ``branch`` of docs/surfaces.md S6: 0 slow, 1 fast)
-    or its signed rate ``omega`` [rad/s].  ``perturb_deg`` [deg] kicks it
+    ``held`` says how the orbit is held: a wheel by its tilt,
+    ``{"alpha_deg": ...}`` [deg]; a ball by its spin, ``{"omega3": ...,
+    "branch": 0 | 1}`` (the root of docs/surfaces.md S6: 0 slow, 1 fast),
+    or its signed rate, ``{"omega": ...}`` [rad/s].  ``perturb_deg`` [deg] kicks it
     (module docstring).  Bodies with no steady orbit there get status
     no_fit / no_orbit and the orbit's reason, and are not integrated.
     Summary fields: theta NaN (no polar angle off the globe), alpha the
@@ -94,8 +95,8 @@ def ground_starts(ground, body: PaperBodyKind, height, *, alpha_deg=None, omega3
     paper: the ball's axis 3 along the normal, as ``orbit`` reports it).
     """
     ball = isinstance(body, Ball)
-    spin_given = omega if ball and omega is not None else omega3
-    held = alpha_deg if not ball else spin_given
+    omega, branch = held.get("omega"), held.get("branch", 0)
+    held = held["alpha_deg"] if not ball else (omega if omega is not None else held["omega3"])
     h, held, kick_deg, phi_deg = (np.array(x, dtype=float).reshape(-1)
                                   for x in np.broadcast_arrays(height, held, perturb_deg, phi_deg))
     n = h.size
