@@ -301,7 +301,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         from deathsphere.viewer import write_view
 
         with progress("frames", None) as bar:
-            size = write_view(output, Table.concat(series), summary, sim.view_frames(), progress=bar.update, **loop)
+            size = write_view(output, Table.concat(series), summary, sim.view_frames(), progress=bar.update,
+                              ground=sim.ground, **loop)
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
     elif output is not None:
         from deathsphere.render.figures import PlotExtraMissing

@@ -210,6 +210,12 @@ class Simulation:
         self._check_cost()
 
     @property
+    def ground(self):
+        """The ground record of a run off the globe (docs/simulation.md, "On
+        any ground"), None in the globe."""
+        return getattr(self.starts.params, "ground", None) if self.model.name == "on_ground" else None
+
+    @property
     def n_chunks(self) -> int:
         """Number of chunks :meth:`chunks` yields (one per period of the
         fastest body)."""
