@@ -158,3 +158,37 @@ def test_the_golfers_dilemma_bobbing_frequency():
     assert abs(measured / (omega * np.sqrt(k / (k + 1))) - 1) < 1e-4
     # two heights: the kick's amplitude v sin(1 deg) / omega_bob about the start
     assert 0.05 < 0.5 * np.ptp(z) < 0.5
+
+
+@pytest.mark.parametrize("start, kick, wall, status", [(2.0, 5.0, 2.5, "over_the_top"), (0.5, -5.0, None, "hits_floor")])
+def test_the_wall_ends_stop_a_bobbing_ball_when_its_bob_says(start, kick, wall, status):
+    """The golfer's dilemma on a drum, solved by hand (Newton-Euler for a
+    ball of I = k m a^2, its centre at rho = R - a, turning at the constant
+    rate Omega' = Omega cos(kick)): (k + 1) z" = -g - k a Omega' w_n and
+    d(w_n)/dt = Omega' z' / a, so z is harmonic at w = Omega' sqrt(k / (k + 1)):
+
+        z(t) = z0 + (v0 / w) sin(w t) + (z"0 / w^2) (1 - cos(w t)),
+
+    v0 = Omega rho sin(kick), z"0 = -g (1 - cos(kick)) / (k + 1) (the steady
+    orbit's spin w_n = -g / (k a Omega) now meets the slower Omega').  The
+    contact (on a drum at the centre's height) reaches the wall's top; the
+    ball's lowest point, a below its centre, the floor."""
+    from scipy.optimize import brentq
+
+    k, omega, a, rho = 0.4, 6.0, 0.3, 4.8768 - 0.3
+    shape = {} if wall is None else {"wall_height": wall}
+    series, summary, _, _ = _run(surface="cylinder", diameter="32ft", height=start, body="sphere", omega=omega,
+                                 perturb=kick, periods=3, points_per_period=20, **shape)
+    assert summary["status"][0] == status
+    d = np.radians(kick)
+    bob = omega * np.cos(d) * np.sqrt(k / (k + 1))
+    v0, acc0 = omega * rho * np.sin(d), -G * (1 - np.cos(d)) / (k + 1)
+    target = wall if wall is not None else a
+
+    def z(t):
+        return start + v0 / bob * np.sin(bob * t) + acc0 / bob ** 2 * (1 - np.cos(bob * t)) - target
+
+    expected = brentq(z, 0.0, 0.5 * np.pi / bob, xtol=1e-14)
+    assert abs(float(summary["event_time_s"][0]) / expected - 1) < 1e-7
+    # the event is the last row, at the wall's top or with the ball's lowest point on the floor
+    assert abs(float(series["height_m"][len(series) - 1]) - target) < 1e-9
