@@ -46,7 +46,7 @@ METHODS_LOWER = tuple(m.lower() for m in METHODS)
 FRAMES = ("turning", "lab")
 
 
-def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None, g=G,
+def simulate(theta=None, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None, g=G,
              mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
              periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
              atol: float | None = None, frame: str = "turning", max_steps=1_000_000, speed=None,
@@ -62,7 +62,8 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
     Parameters
     ----------
     theta : float
-        Polar angle of the contact point [deg] (vertical: the cone angle).
+        Polar angle of the contact point [deg] (vertical: the cone angle);
+        on the globe it must be given, off it not (the lane is ``height``).
     alpha : float, optional
         Wheel: tilt of the steady orbit [deg].
     speed, com_speed, omega : float, optional
@@ -147,6 +148,10 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
     >>> series, summary = deathsphere.simulate(60, 10, periods=0.1, points_per_period=20)
     >>> len(series), str(summary["status"][0])
     (3, 'completed')
+    >>> series, summary = deathsphere.simulate(alpha=10, surface="cylinder", diameter="32ft", height=2,
+    ...                                        periods=0.1, points_per_period=20)
+    >>> str(summary["surface"][0]), float(series["height_m"][-1]), str(summary["status"][0])
+    ('cylinder', 2.0, 'completed')
     """
     typed = {"theta": theta, "alpha": alpha, "body": body, "side": side, "a": a, "r": r, "k": k, "g": g, "mu": mu,
              "omega3": omega3, "omega": omega, "branch": branch, "vertical": vertical, "v_top": v_top,

@@ -31,7 +31,6 @@ from deathsphere.cli.options import (
     surface_options,
     units_option,
 )
-from deathsphere.api.simulation import names_a_wall
 from deathsphere.table import Table
 
 #: --output formats and the package each needs: still figures of the run,
@@ -194,6 +193,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     from deathsphere.api.two_wheelers import is_two_wheeler
 
     # a surface but the globe: the paper's bodies on it, their lane --height (flat ground: --turn-radius)
+    from deathsphere.api.simulation import names_a_wall
+
     arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile)
     on_arena = bool(arena) and names_a_wall(**arena)
     two_wheeler_only = given(flat=flat or None, turn_radius=None if on_arena else turn_radius, duration=duration,
