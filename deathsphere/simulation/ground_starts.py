@@ -44,39 +44,41 @@ def turned_about(v, axis, angle):
 
 def _on_wall(ground, height):
     """The heights clipped onto the wall (a lane off it has status no_fit and
-    is not integrated: its stand-in state only has to be finite)."""
+    is not integrated)."""
     return np.clip(height, 0.0, getattr(ground, "highest_lane", np.inf))
 
 
-def _wheel(ground, height, alpha, kick, a, k, g, phi):
-    """(orbit dict, state (9, n)) of wheels on their steady orbits at tilt
-    alpha [rad], tilted by ``kick`` [rad] about the direction of travel."""
-    orb = revolution.wheel_orbit(ground, height, alpha, a, k, g)
-    rho, z = ground.contact(_on_wall(ground, height))
+def _wheel_state(ground, height, alpha, kick, a, k, g, phi):
+    """States (9, n) of wheels on their steady orbits at tilt alpha [rad],
+    tilted by ``kick`` [rad] about the direction of travel."""
+    rho, z = ground.contact(height)
     steady, _ = don.wheel_state_at(rho, z, alpha, a, k, g, phi)
     # the kick moves c and e1 about the contact (they do not depend on Omega), w stays
     tilted, _ = don.wheel_state_at(rho, z, alpha + kick, a, k, g, phi)
-    return orb, np.concatenate((tilted[0:6], steady[6:9]))
+    return np.concatenate((tilted[0:6], steady[6:9]))
 
 
-def _ball(ground, height, omega3, omega, branch, kick, a, k, g, phi):
-    """(orbit dict, state (9, n), omega3) of balls on their steady orbits given
-    the spin (root ``branch``) or the rate, their velocity turned ``kick``
-    [rad] up the wall."""
-    if omega is None:
-        orb = revolution.ball_orbit(ground, height, omega3, a, k, g, branch=branch)
-    else:
-        orb = revolution.ball_orbit_from_rate(ground, height, omega, a, k, g)
-    # a stand-in rate where there is no orbit (those rows are not integrated)
-    rate = np.where(np.isfinite(orb["omega"]), orb["omega"], 1.0)
-    on_wall = _on_wall(ground, height)
-    steady, spin = don.ball_orbit_state_on(ground, on_wall, rate, a, k, g, phi)
+def _ball_state(ground, height, rate, kick, a, k, g, phi):
+    """(states (9, n), omega3) of balls on their steady orbits of rate
+    ``rate``, their velocity turned ``kick`` [rad] up the wall."""
+    steady, spin = don.ball_orbit_state_on(ground, height, rate, a, k, g, phi)
     # e3, from the centre to the contact: -n of the lane
-    n_rho, n_z = ground.normal(on_wall)
+    n_rho, n_z = ground.normal(height)
     rhat = np.stack((np.cos(phi), np.sin(phi), np.zeros_like(phi)))
     e3 = -(n_rho * rhat + n_z * np.array([0.0, 0.0, 1.0])[:, None])
     w = turned_about(steady[6:9], e3, np.sign(rate) * kick)
-    return orb, np.concatenate((steady[0:6], w)), spin
+    return np.concatenate((steady[0:6], w)), spin
+
+
+def _orbit(ground, height, ball, held, branch, a, k, g):
+    """The steady orbits on the lanes (docs/surfaces.md S1-S7): a wheel's
+    at tilt ``held`` [rad], a ball's at spin ``held`` (root ``branch``) or,
+    with branch None, at rate ``held``."""
+    if not ball:
+        return revolution.wheel_orbit(ground, height, held, a, k, g)
+    if branch is None:
+        return revolution.ball_orbit_from_rate(ground, height, held, a, k, g)
+    return revolution.ball_orbit(ground, height, held, a, k, g, branch=branch)
 
 
 def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, mu=np.inf, perturb_deg=0.0,
@@ -95,28 +97,29 @@ def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, m
     paper: the ball's axis 3 along the normal, as ``orbit`` reports it).
     """
     ball = isinstance(body, Ball)
-    omega, branch = held.get("omega"), held.get("branch", 0)
-    held = held["alpha_deg"] if not ball else (omega if omega is not None else held["omega3"])
-    h, held, kick_deg, phi_deg = (np.array(x, dtype=float).reshape(-1)
-                                  for x in np.broadcast_arrays(height, held, perturb_deg, phi_deg))
+    by_rate = ball and held.get("omega") is not None
+    branch = None if by_rate else held.get("branch", 0)
+    value = held["alpha_deg"] if not ball else held["omega" if by_rate else "omega3"]
+    h, value, kick_deg, phi_deg = (np.array(x, dtype=float).reshape(-1)
+                                   for x in np.broadcast_arrays(height, value, perturb_deg, phi_deg))
     n = h.size
     kick, phi = np.deg2rad(kick_deg), np.deg2rad(phi_deg)
-    omega3_out = np.full(n, np.nan)
-    if ball:
-        orb, state, spin = _ball(ground, h, None if omega is not None else held,
-                                 held if omega is not None else None, branch, kick, a, k, g, phi)
-        alpha = np.deg2rad(90.0) - np.asarray(orb["wall_angle"], dtype=float)
-        alpha_deg_out = np.rad2deg(alpha)
-        omega3_out = np.asarray(spin, dtype=float)
-    else:
-        alpha = np.deg2rad(held)
-        orb, state = _wheel(ground, h, alpha, kick, a, k, g, phi)
-        alpha_deg_out = held
+    orb = _orbit(ground, h, ball, value if ball else np.deg2rad(value), branch, a, k, g)
     status, reason = start_status(orb)
     ok = status == RunStatus.PENDING
-    state = np.where(ok[None, :], state, np.nan)
     rate = np.where(ok, orb["omega"], np.nan)
-    omega3_out = np.where(ok, omega3_out, np.nan)
+    state, omega3_out = np.full((9, n), np.nan), np.full(n, np.nan)
+    on_wall = _on_wall(ground, h)
+    if ball:
+        # a ball's equivalent tilt (axis 3 along the normal): 90 deg - beta, as orbit gives it
+        alpha = np.deg2rad(90.0) - np.asarray(ground.wall_angle(on_wall), dtype=float)
+        alpha_deg_out = np.rad2deg(alpha)
+        if ok.any():
+            state[:, ok], omega3_out[ok] = _ball_state(ground, on_wall[ok], rate[ok], kick[ok], a, k, g, phi[ok])
+    else:
+        alpha, alpha_deg_out = np.deg2rad(value), value
+        if ok.any():
+            state[:, ok] = _wheel_state(ground, on_wall[ok], alpha[ok], kick[ok], a, k, g, phi[ok])
     rho, z = ground.contact(_on_wall(ground, h))
     rho, z = np.broadcast_to(rho, (n,)).astype(float), np.broadcast_to(z, (n,)).astype(float)
     params = GroundRun(a=np.full(n, float(a)), k=np.full(n, float(k)), g=np.full(n, float(g)),
@@ -127,8 +130,9 @@ def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, m
         input_row=np.arange(1, n + 1, dtype=np.int64) if input_row is None
         else np.broadcast_to(np.asarray(input_row, dtype=np.int64), (n,)).copy(),
         body=np.full(n, body.word, dtype=object), side=np.full(n, "inside", dtype=object),
-        orbit=np.full(n, "horizontal", dtype=object), theta=np.full(n, np.nan), alpha=np.asarray(alpha, dtype=float)
-        * np.ones(n), theta_deg=np.full(n, np.nan), alpha_deg=np.asarray(alpha_deg_out, dtype=float) * np.ones(n),
+        orbit=np.full(n, "horizontal", dtype=object), theta=np.full(n, np.nan),
+        alpha=np.broadcast_to(alpha, (n,)).astype(float), theta_deg=np.full(n, np.nan),
+        alpha_deg=np.broadcast_to(alpha_deg_out, (n,)).astype(float),
         rate=rate, turning=np.where(ok, rate, 0.0), period=period, phi0=phi,
         speed=np.where(ok, orb["v_cm"], np.nan), omega3=omega3_out, perturb_deg=kick_deg,
         perturb_theta_deg=np.zeros(n), mu=np.full(n, float(mu)), status=status, reason=reason)
