@@ -192,3 +192,16 @@ def test_the_wall_ends_stop_a_bobbing_ball_when_its_bob_says(start, kick, wall, 
     assert abs(float(summary["event_time_s"][0]) / expected - 1) < 1e-7
     # the event is the last row, at the wall's top or with the ball's lowest point on the floor
     assert abs(float(series["height_m"][len(series) - 1]) - target) < 1e-9
+
+
+def test_the_figure_plots_the_height_off_the_globe():
+    pytest.importorskip("matplotlib")
+    from deathsphere.render.simulation_figure import plot_simulation
+
+    series, summary, _, _ = _run(surface="cylinder", diameter="32ft", height=2, alpha=10, perturb=2, periods=0.1,
+                                 points_per_period=40)
+    fig = plot_simulation(series, summary)
+    lane, track = fig.axes[0], fig.axes[3]
+    assert lane.get_ylabel() == "contact height [m]" == track.get_ylabel()
+    np.testing.assert_array_equal(lane.lines[0].get_ydata(), np.asarray(series["height_m"]))
+    assert "on the cylinder, height 2 m" in fig.get_suptitle()
