@@ -26,6 +26,7 @@ from deathsphere.constants import (
 # imported where used, so that a command loads only what it evaluates.
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import too_big_inside
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.records.paper_bodies import BALL, PAPER_BODIES, PARTICLE, WHEEL, Ball, PaperBodyKind, Particle, Wheel
 from deathsphere.requests.decode import as_typed, paper_body_codes, paper_body_named, text_codes
@@ -503,7 +504,7 @@ def _ground_particle(req, rows):
 GROUND_SOLVERS = {Wheel: _ground_wheel, Ball: _ground_ball, Particle: _ground_particle}
 #: ``stability_method`` of an orbit on the outside of another surface: the
 #: equations of motion on any ground are written for the inside (docs/dynamics.md sec. 7).
-NOT_ON_SURFACE = "not computed on the outside of this surface (docs/dynamics.md sec. 7 is the inside's)"
+NOT_ON_SURFACE = methods.NOT_ANALYSED_OUTSIDE
 
 
 def evaluate(req: dict, stability: bool = True) -> Table:
@@ -704,8 +705,8 @@ def _no_stability(n: int) -> dict:
 
 
 #: ``stability_method`` values.
-EXACT_METHOD = "exact-linearisation"
-NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
+EXACT_METHOD = methods.EXACT
+NOT_ANALYSED_K0 = methods.NOT_ANALYSED_K0
 
 
 def _stability_columns(columns: dict, status: np.ndarray, body_code: np.ndarray, solve, not_analysed=None) -> dict:
@@ -740,7 +741,7 @@ def _stability_columns(columns: dict, status: np.ndarray, body_code: np.ndarray,
         out["stability_kind"][rows] = stability_kind(res["growth_rate"], res["rate_scale"])
     rows = np.flatnonzero(live & particle)
     out["stability"][rows] = "unknown"
-    out["stability_method"][rows] = "not analysed (sliding particle)"
+    out["stability_method"][rows] = methods.NOT_ANALYSED_PARTICLE
     return out
 
 

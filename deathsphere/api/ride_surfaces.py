@@ -19,14 +19,14 @@ from deathsphere.params import ParameterError, reduce_angle, shown_number
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
 from deathsphere.physics.machine_surface import ride_orbit_on
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import Reason, Status
 from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks through the API)
 
 __all__ = ["ride_on_surface", "STABILITY_NOT_ON_SURFACE"]
 
 #: What the stability columns say on a drum or a cone.
-STABILITY_NOT_ON_SURFACE = ("not analysed: the machine's stability is derived on the globe only "
-                            "(docs/machine.md sec. 5)")
+STABILITY_NOT_ON_SURFACE = methods.NOT_ANALYSED_OFF_GLOBE
 
 
 def _lanes(ground, height) -> np.ndarray:
@@ -59,7 +59,8 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
                              "height above the floor)", "theta")
     for key in ("vertical", "v_top"):
         if typed.get(key):
-            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name}", key)
+            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name} (a loop over the top "
+                                 "needs a roof; give height for a horizontal lane)", key)
     if typed.get("height") is None:
         raise ParameterError(f"give height (the contact's height above the {ground.name}'s floor)", "height",
                              missing=True)

@@ -30,6 +30,7 @@ from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate, orbits_for_rate, orbits_for_speed
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.requests.decode import decode_rider, decode_run
 from deathsphere.requests.keys import Keys
@@ -51,12 +52,12 @@ RIDE_COLUMNS = (
     "max_g", "status", "reason", "omega_rad_s", "period_s", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s",
     "wheel_spin_rad_s", "com_orbit_radius_m", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
     "load_g", "head_clearance_m", "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s",
-    "freq_fast_rad_s", "surface", "rho_contact_m", "wall_angle_deg",
+    "freq_fast_rad_s", "surface", "rho_contact_m", "wall_angle_deg", "stability_kind",
 )
 
-#: What the stability columns say on every analysed row (docs/machine.md sec. 5).
-STABILITY_METHOD = ("exact linearisation of the machine with its steering locked (docs/machine.md sec. 5): "
-                    "an unsteered machine is unstable on most orbits; a rider steers")
+#: What ``stability_method`` says on every analysed row (docs/machine.md sec. 5; its sentence:
+#: :data:`deathsphere.physics.stability.methods.METHOD_TEXT`).
+STABILITY_METHOD = methods.EXACT_STEER_LOCKED
 
 _PHYS = {"omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s", "v_contact": "v_contact_m_s",
          "spin": "wheel_spin_rad_s", "r_g": "com_orbit_radius_m", "normal": "normal_per_mass_m_s2",
@@ -131,7 +132,7 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
             cols["v_cm_km_h"] = np.round(cols[col] * 3.6, 9)
     has_orbit = (status == Status.OK) | (status == Status.SLIPS) | (status == Status.OVER_G)
     blank = np.full(n, "", dtype=object)
-    cols["stability"], cols["stability_method"] = blank, blank.copy()
+    cols["stability"], cols["stability_method"], cols["stability_kind"] = blank, blank.copy(), blank.copy()
     for key in ("growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s"):
         cols[key] = np.full(n, np.nan)
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
@@ -139,13 +140,13 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
         cols["stability_method"][has_orbit] = stability_note
     _arena_columns(cols, res, surface, run.r, theta, n)
     if rows.size:
-        from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, machine_stability, yaw_is_determined
-        from deathsphere.physics.stability.verdict import VERDICT_LABELS
+        from deathsphere.physics.machine_dynamics import machine_stability, yaw_is_determined
+        from deathsphere.physics.stability.verdict import VERDICT_LABELS, stability_kind
 
         rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
         arrays = machine_arrays(m)
         if not yaw_is_determined(arrays):
-            cols["stability_method"][rows] = "not analysed: " + YAW_UNDETERMINED
+            cols["stability_method"][rows] = methods.NOT_ANALYSED_POINT_MASS
             rows = rows[:0]
         for start in range(0, rows.size, STABILITY_CHUNK):
             idx = rows[start:start + STABILITY_CHUNK]
@@ -155,6 +156,7 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
             cols["growth_rate_1_s"][idx] = st["growth_rate"]
             cols["freq_slow_rad_s"][idx] = st["freq_slow"]
             cols["freq_fast_rad_s"][idx] = st["freq_fast"]
+            cols["stability_kind"][idx] = stability_kind(st["growth_rate"], st["rate_scale"])
     return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape, axes=axes)
 
 

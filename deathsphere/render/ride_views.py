@@ -138,7 +138,7 @@ def _with_mu_column(after: str):
 def _stability_rows(get: dict) -> dict:
     # the long method text is the CSV's; on screen a pointer to it
     if get.get("stability"):
-        return {"stability": get["stability"], "stability_method": "sec. 5, no steering"}
+        return {"stability": get["stability"], "stability_method": "sec. 5, steer locked"}
     return {"stability": ""}
 
 

@@ -138,12 +138,20 @@ def _fall(result, falls: Table, rows: list[int], r: float, g: float) -> dict:
         x0 = _unit_point(r_g, float(falls["theta_lost_deg"][first]), float(falls["phi_lost_deg"][first]))
     else:
         x0 = at_fail["com"][:, 0]
-    x1 = _unit_point(r, float(falls["theta_land_deg"][first]), float(falls["phi_land_deg"][first]))
-    z = np.array([0.0, 0.0, 1.0])
-    v0 = (x1 - x0) / T + 0.5 * g * T * z
-    s = np.linspace(0.0, T, PATH_POINTS)
-    path = x0[:, None] + v0[:, None] * s[None, :] - 0.5 * g * (s ** 2)[None, :] * z[:, None]
-    out.update({"t_lost": t_lost, "t_land": t_land, "path_t": t_lost + s, "path": path, "land": x1,
+    if math.isfinite(float(falls["theta_land_deg"][first])):
+        x1 = _unit_point(r, float(falls["theta_land_deg"][first]), float(falls["phi_land_deg"][first]))
+        z = np.array([0.0, 0.0, 1.0])
+        v0 = (x1 - x0) / T + 0.5 * g * T * z
+        s = np.linspace(0.0, T, PATH_POINTS)
+        path_t = t_lost + s
+        path = x0[:, None] + v0[:, None] * s[None, :] - 0.5 * g * (s ** 2)[None, :] * z[:, None]
+    else:
+        # on a drum or a cone the landing's height and azimuth leave its distance from the axis free: the
+        # act's own flight
+        flight = result.fall_path(rider, t_fail, float(falls["speed_fraction"][first]), PATH_POINTS)
+        path_t, path = flight["t"], flight["com"]
+        x1 = path[:, -1]
+    out.update({"t_lost": t_lost, "t_land": t_land, "path_t": path_t, "path": path, "land": x1,
                 "impact": float(falls["impact_speed_m_s"][first])})
     return out
 
