@@ -66,8 +66,9 @@ def _wheel_contact(ground, c, e1, a):
 
 def _ball_contact(ground, c, a):
     gap = _clearance(ground, c) - a
-    # the nearest point of the wall: along the clearance's gradient, found by a difference
-    h = 1e-6
+    # the nearest point of the wall: along the clearance's gradient, by a central difference whose
+    # step balances its round-off (eps |clearance| / h) and its truncation (h^2 / 6 of the third derivative)
+    h = 1e-5
     grad = np.stack([(_clearance(ground, c + h * e[:, None]) - _clearance(ground, c - h * e[:, None])) / (2 * h)
                      for e in np.eye(3)])
     outward = -grad / np.linalg.norm(grad, axis=0)
