@@ -29,9 +29,11 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.dynamics import _Dual, _dual_sqrt
+from deathsphere.physics.status import mu_required
 
 __all__ = ["GroundBody", "ground_body", "rhs_on", "jvp_on", "ode_on", "energy_on", "contact_on",
-           "contact_force_on", "gap_on", "wheel_orbit_state_on", "ball_orbit_state_on"]
+           "contact_force_on", "gap_on", "project_on", "lowest_point_on", "spin_rate_on", "wheel_orbit_state_on",
+           "ball_orbit_state_on"]
 
 #: Newton steps at most for the contact (quadratic convergence: 3-5 suffice)
 NEWTON_STEPS = 12
@@ -378,13 +380,61 @@ def contact_force_on(state, p: GroundBody):
     """Contact force per unit mass F/m = d2c/dt2 + g z (eq. 2): dict with
     ``force`` (3, ...), ``normal`` (-F . n inside, +F . n outside, n the
     outward unit normal grad F/|grad F|; > 0 while contact holds),
-    ``friction`` (3, ...) and ``friction_magnitude``."""
+    ``friction`` (3, ...), ``friction_magnitude`` and ``mu_required``
+    (eq. 35: |friction| / normal, NaN where normal <= 0)."""
     _, _, _, cdd, e3, _, G = _motion(state, p)
     F = cdd + np.array([0.0, 0.0, 1.0]).reshape((3,) + (1,) * (cdd.ndim - 1)) * p.g
     n = G / np.sqrt(np.sum(G * G, axis=0))
     fn = np.sum(F * n, axis=0)
     fr = F - fn * n
-    return {"force": F, "normal": -_side(p) * fn, "friction": fr, "friction_magnitude": np.sqrt(np.sum(fr * fr, axis=0))}
+    fmag = np.sqrt(np.sum(fr * fr, axis=0))
+    normal = -_side(p) * fn
+    return {"force": F, "normal": normal, "friction": fr, "friction_magnitude": fmag,
+            "mu_required": mu_required(normal, fmag)}
+
+
+#: passes of :func:`project_on` (each moves the contact onto the surface to
+#: first order in the gap; the gap after two is round-off)
+PROJECT_PASSES = 2
+
+
+def project_on(state, p: GroundBody):
+    """The state moved back onto the constraints (beyond the paper;
+    docs/dynamics.md sec. 7, as :func:`dynamics.project` on the globe): e1
+    renormalised, then the centre moved along the surface's unit normal by
+    the gap F/|grad F| at the contact, twice (a translation along the normal
+    keeps e3 to first order: the second pass removes the rest)."""
+    state = np.array(state, dtype=float, copy=True)
+    state[3:6] = state[3:6] / np.sqrt(np.sum(state[3:6] ** 2, axis=0))
+    for _ in range(PROJECT_PASSES):
+        _, pt = contact_on(state, p)
+        G = p.ground.gradient(*pt)
+        gn = np.sqrt(np.sum(G * G, axis=0))
+        state[0:3] = state[0:3] - (p.ground.implicit(*pt) / gn) * (G / gn)
+    return state
+
+
+def lowest_point_on(state, p: GroundBody):
+    """z [m] of the body's lowest point (beyond the paper; the floor test of
+    docs/surfaces.md S5 along a run): a ball's c_z - a; a wheel's rim, the
+    circle of radius a about c normal to e1, c_z - a sqrt(1 - e1_z^2)."""
+    state = np.asarray(state, dtype=float)
+    e1z = state[5] / np.sqrt(np.sum(state[3:6] ** 2, axis=0))
+    reach = np.where(p.sphere, 1.0, np.sqrt(np.maximum(1.0 - e1z * e1z, 0.0)))
+    return state[2] - p.a * reach
+
+
+def spin_rate_on(state, p: GroundBody):
+    """A wheel's rate [rad/s] about its axle relative to the contact
+    direction, w . e1 - (de3/dt) . (e1 x e3) (beyond the paper; docs/simulation.md
+    "3-D view", as :func:`deathsphere.simulation.frames.spin_rate` on the
+    globe), de3/dt from the equations on the ground (G3); NaN for a ball."""
+    _, _, _, _, e3, de3, _ = _motion(state, p)
+    state = np.asarray(state, dtype=float)
+    e1 = state[3:6] / np.sqrt(np.sum(state[3:6] ** 2, axis=0))
+    u = np.cross(e1, e3, axis=0)
+    rate = np.sum(state[6:9] * e1, axis=0) - np.sum(de3 * u, axis=0)
+    return np.where(p.sphere, np.nan, rate)
 
 
 # ---------------------------------------------------------------- steady orbits on any ground

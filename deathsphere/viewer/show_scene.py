@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.viewer.scene import Scene, Track, revolution_ground, sphere_ground
+from deathsphere.viewer.scene import Scene, Track, sphere_ground, wall_ground
 
 __all__ = ["act_scene", "frame_step", "MAX_FRAMES", "MAX_MOVE_R", "CAMERA", "PLAYBACK", "LOOP_PLAYBACK"]
 
@@ -288,10 +288,6 @@ def _widths(result, names) -> list:
     return [float(lanes[name].width_m) for name in names]
 
 
-#: Points of a drum's or a cone's drawn meridian up its wall.
-WALL_POINTS = 25
-
-
 def _wall(result, probe: dict) -> dict | None:
     """The drum or the cone of an ``[arena]`` plan as the scene draws it
     (None on the globe): its meridian from the floor's centre out along the
@@ -302,13 +298,10 @@ def _wall(result, probe: dict) -> dict | None:
     ground = result.plan.globe.ground
     if result.plan.globe.is_globe:
         return None
-    top = float(ground.highest_lane)
-    if not math.isfinite(top):
-        top = max(float(np.max(p["head"][2])) for p in probe.values()) + 0.5
-    rho, z = ground.contact(np.linspace(0.0, top, WALL_POINTS))
-    rho, z = np.concatenate(([0.0], rho)), np.concatenate(([float(ground.lowest)], z))
+    drawn = wall_ground(ground, max(float(np.max(p["head"][2])) for p in probe.values()) + 0.5)
+    rho, z = np.asarray(drawn["rho"]), np.asarray(drawn["z"])
     r = float(np.max(rho))
-    return {"ground": revolution_ground(rho, z), "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
+    return {"ground": drawn, "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
             "extent": 1.05 * max(r, 0.5 * float(z[-1] - z[0])),
             "what": f"on a {ground.name} of {2 * float(rho[1]):.2f} m"}
 
