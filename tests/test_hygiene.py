@@ -136,7 +136,7 @@ MOST_PARAMETERS = 12
 KEYWORD_ADAPTERS = {
     "api/orbits.py": {"orbit", "sweep", "orbit_input"},
     "api/vertical_orbits.py": {"vertical", "vertical_sweep", "vertical_input"},
-    "api/region_limits.py": {"region"},
+    "api/region_limits.py": {"region", "limits", "limits_input"},
     "api/orbit_stability.py": {"stability"},
     "api/rides.py": {"ride"},
     "api/ride_streams.py": {"ride_sweep"},

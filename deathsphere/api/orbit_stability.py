@@ -14,8 +14,9 @@ def _report(table: Table) -> Table:
     return stability_report(table)
 
 
-def stability(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
-              omega3=None, omega=None, speed=None, diameter=None, com_speed=None) -> Table:
+def stability(theta=None, alpha=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF,
+              omega3=None, omega=None, speed=None, diameter=None, com_speed=None, surface="sphere", height=None,
+              wall_angle=None, wall_height=None, profile=None, turn_radius=None) -> Table:
     """Orbits' exact stability beside the paper's results: ``deathsphere stability``.
 
     The exact verdict, growth rate and nutation frequencies (the equations of
@@ -32,6 +33,10 @@ def stability(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a
     ----------
     theta, alpha, body, side, a, r, k, g, mu, omega3, omega, speed, com_speed, diameter
         As for :func:`deathsphere.orbit`.
+    surface, height, wall_angle, wall_height, profile, turn_radius
+        The arena and the lane, as for :func:`deathsphere.orbit`
+        (docs/surfaces.md).  The paper's results are the globe's: off it
+        each orbit has its exact rows only, and their note says so.
 
     Returns
     -------
@@ -60,7 +65,9 @@ def stability(theta, alpha=None, *, body: str = "wheel", side: str = "inside", a
     ['stable', 'unstable']
     """
     orbits = orbit(theta, alpha, body=body, side=side, a=a, r=r, k=k, g=g, mu=mu, omega3=omega3, omega=omega,
-                   speed=speed, com_speed=com_speed, diameter=diameter, stability=True)
+                   speed=speed, com_speed=com_speed, diameter=diameter, stability=True, surface=surface,
+                   height=height, wall_angle=wall_angle, wall_height=wall_height, profile=profile,
+                   turn_radius=turn_radius)
     return _report(Table(orbits.columns))
 
 

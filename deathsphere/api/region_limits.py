@@ -48,9 +48,9 @@ def _ratio(a, r, side, g=G, diameter=None) -> tuple[float, float]:
     return float(f"{setup.a / setup.r:.15g}"), side
 
 
-def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None, step=0.5,
+def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None, step=None,
            stability: bool = False,
-           jobs: int = 1, progress=None, scheduler=None) -> Table:
+           jobs: int = 1, progress=None, scheduler=None, **arena) -> Table:
     """The allowed (theta, alpha) region of a wheel as data: ``deathsphere map --format csv``.
 
     Its boundaries are the paper's: eq. (0) (the wheel fits; outside eq. 81),
@@ -73,7 +73,12 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     max_g : float
         Also the load limit load_g = max_g [g] (``inf``: none; docs/limits.md).
     step : float
-        theta step of the data [deg], 0.001..10.
+        theta step of the data [deg], 0.001..10 (default 0.5).
+    **arena : surface, wall_angle, wall_height, profile, height, turn_radius
+        Off the globe (docs/limits.md sec. 8): the region in (lane, alpha)
+        on that arena, :func:`deathsphere.api.lane_map.region_on` (the
+        lanes ``height``, or ``turn_radius`` on flat ground, in place of
+        theta; no stability).
     stability : bool
         Also the curve ``stability`` (slow: exact linearisation).
     jobs : int
@@ -101,6 +106,12 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
     """
     from deathsphere.results.limits import boundary_table, theta_grid
 
+    if _off_globe(arena):
+        from deathsphere.api.lane_map import region_on
+
+        return region_on(dict(arena, a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
+                              stability=stability, step=step))
+    step = 0.5 if step is None else step
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
                                                       ("jobs", jobs))}
@@ -150,7 +161,7 @@ def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=
 
 
 def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None,
-                  stability: bool = False):
+                  stability: bool = False, **arena):
     """The allowed region as curves: what ``deathsphere map --output FILE``
     draws (:mod:`deathsphere.render.map_figure`; the paper's figure).
 
@@ -160,9 +171,16 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
         The allowed alpha intervals, the boundary polylines and, with
         ``stability``, the stability margin on a 0.25 deg grid and its
         zero contour (beyond the paper).  Needs contourpy (the plot extra).
+        Off the globe (``surface`` ... in ``arena``, as for :func:`region`):
+        a :class:`deathsphere.results.lane_map.LaneCurves`.
     """
     from deathsphere.results.region_map import curve_map
 
+    if _off_globe(arena):
+        from deathsphere.api.lane_map import region_curves_on
+
+        return region_curves_on(dict(arena, a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
+                                     stability=stability))
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g))}
     return curve_map(a_over_r, 1.0, values["k"], outside=side == "outside", mu=values["mu"],
@@ -170,7 +188,8 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
 
 
 def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k=None, g=G, mu=INF, max_g=INF,
-           diameter=None) -> Table:
+           diameter=None, surface=None, height=None, turn_radius=None, wall_angle=None, wall_height=None,
+           profile=None) -> Table:
     """The feasible tilts at theta, or the highest orbit: ``deathsphere limits``.
 
     Beyond the paper (method: docs/limits.md), from its conditions eqs. (0),
@@ -186,6 +205,13 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     body : {"wheel"}
         Only a wheel has a tilt to choose; another body is refused.
     side, a, r, k, g, mu, diameter : as for :func:`orbit`.
+    surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit`
+        (docs/surfaces.md); off the globe the lane is ``height`` (on flat
+        ground ``turn_radius``) in place of theta, and without one the
+        answer is the lowest and the highest lane
+        (:func:`deathsphere.api.lane_limits.limits_on`, docs/limits.md sec. 8).
+    height, turn_radius : float, array_like or str, optional
+        The lanes off the globe [m] (values or ``start:stop:step`` text).
     max_g : float or array_like
         Largest centre acceleration the rider takes [g] (``inf``: no limit).
         The numeric arguments broadcast against each other (a text range of
@@ -213,8 +239,16 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     ([1, 2, 3, 4], [1.2, 1.2, 2.0, 2.0])
     """
     from deathsphere.model import make_requests
+    from deathsphere.requests.arena import names_a_wall
     from deathsphere.results.limits import limits_rows
 
+    if names_a_wall(surface, wall_angle, wall_height, profile):
+        from deathsphere.api.lane_limits import limits_on
+
+        return limits_on(dict(surface=surface, height=height, turn_radius=turn_radius, theta=theta,
+                              wall_angle=wall_angle, wall_height=wall_height, profile=profile, body=body, side=side,
+                              a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g))
+    _globe_lane(height, turn_radius)
     body, side = decode_paper_body(body), checked_choice("side", side, SIDES)
     if not isinstance(body, Wheel):
         from deathsphere.results.limits import NOT_A_WHEEL
@@ -237,6 +271,34 @@ def limits(theta=None, *, body: str = "wheel", side: str = "inside", a=A, r=R, k
     return raise_if_all_invalid(table)
 
 
+#: The keywords of an arena other than the globe (``region``, ``region_curves``).
+ARENA_KEYS = ("surface", "wall_angle", "wall_height", "profile", "height", "turn_radius")
+
+
+def _off_globe(arena: dict) -> bool:
+    """True when ``arena`` (keywords of :data:`ARENA_KEYS`) names a surface
+    other than the globe; an unknown keyword is refused naming it, a lane
+    on the globe too (the globe's map runs over theta)."""
+    from deathsphere.requests.arena import names_a_wall
+
+    for key in arena:
+        if key not in ARENA_KEYS:
+            raise TypeError(f"unexpected keyword argument {key!r}")
+    if names_a_wall(arena.get("surface"), arena.get("wall_angle"), arena.get("wall_height"), arena.get("profile")):
+        return True
+    _globe_lane(arena.get("height"), arena.get("turn_radius"))
+    return False
+
+
+def _globe_lane(height, turn_radius):
+    """On the globe ``limits`` and ``map`` name a lane by theta: a height or a turn
+    radius is refused, naming it."""
+    for name, value in (("height", height), ("turn_radius", turn_radius)):
+        if is_given(value):
+            raise ParameterError(f"{name}: on the sphere the lane is theta (a height or a turn radius is a lane "
+                                 "on another surface: choose it with surface)", name)
+
+
 def _too_many(counts):
     """Refuse, from the counts alone, more thetas than one call searches."""
     return refuse_large_grid(counts, command="limits", limit=MAX_LIMIT_THETAS, param="theta",
@@ -244,17 +306,29 @@ def _too_many(counts):
 
 
 def limits_input(source, *, theta=None, body=None, side=None, a=None, r=None, k=None, g=None, mu=None, max_g=None,
-                 diameter=None, chunk_size: int = CHUNK) -> Chunks:
+                 diameter=None, chunk_size: int = CHUNK, surface=None, height=None, turn_radius=None,
+                 wall_angle=None, wall_height=None, profile=None) -> Chunks:
     """The limits of the requests in a CSV file: ``deathsphere limits --input
     FILE``.  Its header names ``theta`` (required in every row) and
     optionally ``body``, ``side``, ``a``, ``r``, ``k``, ``g``, ``mu``,
     ``max_g``; an option given applies to every row (as for
     :func:`deathsphere.orbit_input`).  Each request gives its intervals,
     numbered by ``input_row``; a bad line, or a body other than a wheel, is
-    one ``invalid`` row with the reason."""
+    one ``invalid`` row with the reason.  Off the globe (``surface`` ...)
+    the rows' lanes are ``height``: :func:`deathsphere.api.lane_limits.limits_on_input`."""
     from deathsphere.inputs import ALIASES
     from deathsphere.model import REQUEST_FIELDS, make_requests
+    from deathsphere.requests.arena import names_a_wall
     from deathsphere.results.limits import LIMITS_FIELDS, limits_rows
+
+    if names_a_wall(surface, wall_angle, wall_height, profile):
+        from deathsphere.api.lane_limits import limits_on_input
+
+        return limits_on_input(source, dict(surface=surface, wall_angle=wall_angle, wall_height=wall_height,
+                                            profile=profile, height=height, turn_radius=turn_radius, theta=theta,
+                                            body=body, side=side, a=a, r=R if r is None else r, diameter=diameter,
+                                            k=k, g=g, mu=mu, max_g=max_g), chunk_size=chunk_size)
+    _globe_lane(height, turn_radius)
 
     overrides = {}
     if body is not None:

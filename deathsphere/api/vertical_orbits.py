@@ -217,7 +217,8 @@ def _vertical_chunk(points: int | None) -> int:
 
 
 def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "inside", a=A, r=R, k=0.5, g=G, mu=INF,
-                   diameter=None, points=None, only=None, stability: bool = True) -> Chunks:
+                   diameter=None, points=None, only=None, stability: bool = True, surface=None, wall_angle=None,
+                   wall_height=None, profile=None) -> Chunks:
     """Every combination of cone angles and top speeds, chunk by chunk:
     ``deathsphere vertical`` (the physics of :func:`vertical`).
 
@@ -228,6 +229,9 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
         arrays, ``"start:stop:step"`` text or a list mixing them.  Give
         exactly one of ``v_top`` [m/s] and ``phidot_top`` [rad/s].
     side, a, r, diameter, k, g, mu, points, only, stability : as for :func:`vertical` (one value each).
+    surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit`:
+        a vertical loop needs a surface that closes over the top; off the
+        globe it is refused, saying why (:mod:`deathsphere.api.vertical_arena`).
 
     Returns
     -------
@@ -242,8 +246,10 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
     >>> t["theta_deg"].tolist(), t["v_cm_m_s"].tolist()
     ([60.0, 60.0, 90.0, 90.0], [6.0, 7.0, 6.0, 7.0])
     """
+    from deathsphere.api.vertical_arena import refuse_off_globe
     from deathsphere.results.vertical import vertical_requests
 
+    refuse_off_globe(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
     fixed = _vertical_setup(side, a, sphere_radius(r, diameter), k, g, mu)
     points = None if points is None else int(checked_scalar("points", points))
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
@@ -261,7 +267,8 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
 
 
 def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None, a=None, r=None, k=None,
-                   g=None, mu=None, diameter=None, points=None, only=None, stability: bool = True) -> Chunks:
+                   g=None, mu=None, diameter=None, points=None, only=None, stability: bool = True, surface=None,
+                   wall_angle=None, wall_height=None, profile=None) -> Chunks:
     """Vertical orbits of the requests in a CSV file: ``deathsphere vertical --input FILE``.
 
     As :func:`orbit_input`, for :func:`vertical`: the header names
@@ -283,8 +290,11 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     >>> t["status"].tolist()
     ['ok', 'invalid']
     """
+    from deathsphere.api.vertical_arena import refuse_off_globe
     from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
     from deathsphere.results.vertical import POINT_COLUMNS, VERTICAL_FIELDS
+
+    refuse_off_globe(surface, r, diameter, wall_angle, wall_height, profile)   # off the globe: refused, saying why
 
     points = None if points is None else int(checked_scalar("points", points))
     stability, keep = checked_flag("stability", stability), checked_statuses(only)

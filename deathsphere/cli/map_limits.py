@@ -32,6 +32,7 @@ from deathsphere.cli.options import (
     setup_options,
     single,
     stability_option,
+    surface_options,
     units_option,
 )
 
@@ -41,6 +42,7 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 
 @cli.command("map")
 @setup_options()
+@surface_options()
 @param_option("max_g")
 @single("--output", type=OutputPath(FIGURES), default=None, metavar="FILE",
         help="Write the figure to FILE (.png, .svg or .pdf); needs pip install 'deathsphere[plot]'.")
@@ -52,7 +54,8 @@ FIGURES = {"png": "matplotlib", "svg": "matplotlib", "pdf": "matplotlib"}
 @jobs_option()
 @scheduler_option()
 @output_options()
-def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, jobs, scheduler, fmt):
+def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height, profile, height, turn_radius,
+                max_g, output, step, stability, jobs, scheduler, fmt):
     """The allowed (theta, alpha) region of horizontal wheel orbits: the paper's figure.
 
     Bounded by eq. (0) (the wheel fits), eq. (29) (Omega^2 > 0) and eq. (33)
@@ -72,8 +75,27 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
       deathsphere map --format csv --step 1 | head
       deathsphere map --output map.png
       deathsphere map -a 0.9 -r 3 --stability --output map.png
+      deathsphere map --surface cone --diameter 6 --wall-angle 80 \\
+          --wall-height 8 --mu 1 --output cone.png
+
+    On a drum, a cone, flat ground or a profile (--surface) the map is the
+    allowed (height, alpha) region (on flat ground (turn radius, alpha)):
+    --height start:stop:step gives the lanes [default: 361 from the floor to
+    the wall's top]; --format csv/json the boundary points with whether the
+    orbit is feasible just below and above each; on a terminal the allowed
+    intervals of a few lanes.  No --stability or --step there (docs/limits.md
+    sec. 8).
     """
     options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
+    arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
+                  turn_radius=turn_radius)
+    from deathsphere.api.ride_surfaces import names_a_wall
+
+    if names_a_wall(surface, wall_angle, wall_height, profile):
+        _map_on(arena, options, output, fmt, given(step=step), stability)
+        return
+    if height or turn_radius:
+        api.region(**given(height=height, turn_radius=turn_radius))   # refused: the globe's lane is theta
     if output is not None:
         from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
         from deathsphere.render.map_figure import plot_map
@@ -102,15 +124,41 @@ def map_command(side, a, r, diameter, k, g, mu, max_g, output, step, stability, 
     emit([table], fmt)
 
 
+def _map_on(arena, options, output, fmt, step, stability):
+    """``map`` off the globe: the figure, the data, or on a terminal the
+    allowed intervals of a few lanes."""
+    if output is not None:
+        from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
+        from deathsphere.render.lane_map_figure import plot_lane_map
+
+        try:
+            import_matplotlib()
+            plot_lane_map(api.region_curves(stability=stability, **step, **arena, **options), output=output)
+        except PlotExtraMissing as exc:
+            fail(one_line(str(exc)))
+        say_written(output)
+        return
+    fmt = choose_format(fmt)
+    if fmt == "table":
+        from deathsphere.render.lane_map_text import lane_map_text
+
+        curves = api.region_curves(stability=stability, **step, **arena, **options)
+        stdout_console().print(lane_map_text(curves))
+        return
+    emit([api.region(stability=stability, **step, **arena, **options)], fmt)
+
+
 @cli.command("limits")
 @param_option("theta", multiple=True, help="Polar angle(s) of the orbit; without it: the highest orbit possible.")
 @param_option("max_g")
 @body_option()
 @setup_options()
-@input_option("theta, body, side, a, r, k, g, mu, max_g")
+@surface_options()
+@input_option("theta, body, side, a, r, k, g, mu, max_g; off the globe height in place of theta")
 @output_options()
 @units_option()
-def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fmt, units):
+def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height, profile,
+                   height, turn_radius, input, fmt, units):
     """Which tilts alpha give a feasible orbit at theta, and at what speeds (beyond the paper).
 
     With --theta: the interval(s) of alpha where the wheel fits, Omega^2 > 0
@@ -120,20 +168,33 @@ def limits_command(theta, max_g, body, side, a, r, diameter, k, g, mu, input, fm
     refused (in an --input file, its row is invalid with the reason).
     Method: docs/limits.md.
 
+    On a drum, a cone, flat ground or a profile (--surface, docs/surfaces.md)
+    the lane is --height (on flat ground --turn-radius) in place of
+    --theta; without one: the lowest and the highest lane the friction and
+    the load allow (on an upright wall friction and load set no highest
+    lane: only the wall's top does).  Method: docs/limits.md sec. 8.
+
     \b
     Examples:
       deathsphere limits --theta 60 --mu 1.2
       deathsphere limits --mu 1 --max-g 5
       deathsphere limits --theta 30:90:10 --diameter 16ft --mu 1 --max-g 4
+      deathsphere limits --surface cylinder --diameter 32ft --height 2m \\
+          --mu 1 --max-g 4
+      deathsphere limits --surface cone --diameter 6 --wall-angle 80 \\
+          --wall-height 8 --mu 1 --max-g 4
     """
-    options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
+    options = given(max_g=max_g, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
+                    surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile)
+    lanes = given(height=height, turn_radius=turn_radius)
     fmt = choose_format(fmt)
     shown = display_units(units, click.get_current_context().params)
     if input is not None:
-        finish(stream(api.limits_input(input, **given(theta=theta), **options), fmt, label="limits",
+        finish(stream(api.limits_input(input, **given(theta=theta), **lanes, **options), fmt, label="limits",
                       title="Feasible tilts (fit, Omega^2 > 0, contact, mu, load)", units=shown))
         return
-    table = api.limits(**given(theta=theta), **options)
-    title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, load)" if theta else
+    table = api.limits(**given(theta=theta), **lanes, **options)
+    title = ("Feasible tilts (fit, Omega^2 > 0, contact, mu, load)" if theta or lanes else
+             "The lowest and the highest lane possible" if "lane" in table.names else
              "The highest orbit possible (smallest theta with a feasible tilt)")
     emit([table], fmt, title=title, units=shown)

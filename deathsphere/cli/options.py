@@ -110,10 +110,11 @@ def setup_options(*, multiple=(), gravity: bool = True, friction: bool = True):
 
 
 def surface_options(lanes: bool = True):
-    """The arena of orbit, sweep and simulate (docs/surfaces.md): --surface
-    and its shape; the lane on it is --height (or --turn-radius on flat
-    ground), grid axes here (``lanes``; simulate, which has its own single
-    --height and --turn-radius, leaves them out)."""
+    """The arena of orbit, sweep, limits, map, stability, simulate and
+    vertical (docs/surfaces.md): --surface and its shape; the lane on it is
+    --height (or --turn-radius on flat ground), grid axes here (``lanes``;
+    simulate, which has its own single --height and --turn-radius, and
+    vertical, whose loop is not a parallel, leave them out)."""
     from deathsphere.api.orbits import SURFACES
 
     def decorator(f):

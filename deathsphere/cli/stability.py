@@ -23,6 +23,7 @@ from deathsphere.cli.options import (
     param_option,
     params_options,
     setup_options,
+    surface_options,
 )
 
 
@@ -32,10 +33,11 @@ from deathsphere.cli.options import (
                 multiple=("alpha", "speed", "com_speed", "omega", "omega3"))
 @body_option()
 @setup_options()
-@input_option("theta, alpha, speed, com_speed, omega, omega3, body, side, a, r, k, g, mu")
+@surface_options()
+@input_option("theta, alpha, speed, com_speed, omega, omega3, body, side, a, r, k, g, mu; off the globe height")
 @output_options()
-def stability_command(theta, alpha, speed, com_speed, omega, omega3, body, side, a, r, diameter, k, g, mu, input,
-                      fmt):
+def stability_command(theta, alpha, speed, com_speed, omega, omega3, body, side, a, r, diameter, k, g, mu, surface,
+                      wall_angle, wall_height, profile, height, turn_radius, input, fmt):
     """Exact stability of horizontal orbits, and the paper's results beside it.
 
     The orbits are those orbit gives for the same options.  For each: the
@@ -54,13 +56,22 @@ def stability_command(theta, alpha, speed, com_speed, omega, omega3, body, side,
       deathsphere stability --theta 90 --speed 40km/h --diameter 16ft
       deathsphere stability --theta 90 --com-speed 40km/h --diameter 16ft
       deathsphere stability --body sphere --theta 60 --omega3 80
+      deathsphere stability --surface cylinder --diameter 32ft --height 2 \\
+          --alpha 10
+
+    On a drum, a cone, flat ground or a profile (--surface, the lane
+    --height or --turn-radius) only the exact rows apply: the paper's
+    results are the globe's, and the exact rows' note says so.
     """
-    options = given(body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu)
+    options = given(body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, surface=surface,
+                    wall_angle=wall_angle, wall_height=wall_height, profile=profile)
     one_hold(alpha, speed, com_speed, omega)
-    orbit = given(theta=theta, alpha=alpha, speed=speed, com_speed=com_speed, omega=omega, omega3=omega3)
+    orbit = given(theta=theta, height=height, turn_radius=turn_radius, alpha=alpha, speed=speed,
+                  com_speed=com_speed, omega=omega, omega3=omega3)
     fmt = choose_format(fmt)
-    if input is None and not theta:
-        raise click.UsageError("Missing option '--theta' (or give --input FILE)")
+    if input is None and not (theta or height or turn_radius):
+        raise click.UsageError("Missing option '--theta' (off the globe '--height' or '--turn-radius'; or give "
+                               "--input FILE)")
     if input is not None:
         finish(stream(api.stability_input(input, **orbit, **options), fmt, label="stability",
                       title="Stability of each orbit", view=_views if fmt == "table" else None))
@@ -74,7 +85,7 @@ def stability_command(theta, alpha, speed, com_speed, omega, omega3, body, side,
 
 def _grid(orbit: dict) -> dict:
     """The command line's values (text, perhaps ranges or with units) as the
-    API's arrays: theta down, the orbit's other input across (every
+    API's arrays: the lane (theta; off the globe height or turn_radius) down, the orbit's other input across (every
     combination, as orbit evaluates them)."""
     from deathsphere.api.arguments import checked_axis, refuse_large_grid, value_counts
     from deathsphere.api.orbits import MAX_ORBIT_ROWS
@@ -83,7 +94,8 @@ def _grid(orbit: dict) -> dict:
                       instead="use 'deathsphere sweep' (it streams the orbits, stability columns included) or "
                               "split the ranges into several runs")
     grid = {name: checked_axis(name, list(values)).values() for name, values in orbit.items()}
-    return {name: (values[:, None] if name == "theta" else values[None, :]) for name, values in grid.items()}
+    lanes = ("theta", "height", "turn_radius")       # the lane down, as orbit evaluates them
+    return {name: (values[:, None] if name in lanes else values[None, :]) for name, values in grid.items()}
 
 
 def _views(table, total_rows=None):

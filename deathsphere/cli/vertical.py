@@ -16,6 +16,7 @@ from deathsphere.cli.options import (
     params_options,
     setup_options,
     stability_option,
+    surface_options,
     units_option,
 )
 
@@ -25,14 +26,15 @@ from deathsphere.cli.options import (
               "vertical great circle).")
 @params_options("v_top", "phidot_top", multiple=("v_top", "phidot_top"))
 @setup_options()
+@surface_options(lanes=False)
 @param_option("points")
 @input_option("theta, v_top or phidot_top, phi (where that speed is: deg from the top, 0), side, a, r, k, g, mu")
 @only_option(api.STATUSES)
 @stability_option(help="Exact stability by Floquet analysis over one lap (docs/stability.md).")
 @output_options()
 @units_option()
-def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, points, input, only, stability,
-                     fmt, units):
+def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height,
+                     profile, points, input, only, stability, fmt, units):
     """Vertical orbit of a wheel: contact all round (eq. 28a), forces and friction (eqs. 27-28b).
 
     Reports the least top speed for contact, the normal force and friction
@@ -47,9 +49,14 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, p
       deathsphere vertical --theta 60 --v-top 4:8:1 --mu 1.5
       deathsphere vertical --theta 90 --v-top 6 --points 13 --format csv
       deathsphere vertical --side outside --theta 90 --v-top 0
+
+    A vertical loop needs a surface that closes over the top: --surface
+    cylinder, cone or plane is refused (none closes over the rider), and so
+    is a profile that closes (the loop is solved on the sphere only).
     """
     options = given(theta=theta, v_top=v_top, phidot_top=phidot_top, side=side, a=a, r=r, diameter=diameter, k=k,
-                    g=g, mu=mu, points=points)
+                    g=g, mu=mu, points=points, surface=surface, wall_angle=wall_angle, wall_height=wall_height,
+                    profile=profile)
     if input is not None:
         chunks = api.vertical_input(input, stability=stability, only=only or None, **options)
     else:

@@ -99,7 +99,11 @@ def stability_view(table: Table) -> Group:
     applies here, and the notes.  Labels stay on one line; the conditions
     of the verdicts and the premises' parameters go to lines under it."""
     get = table.records()
-    head = (f"[italic]stability of a wheel {get[0]['side']}, θ = {format_number(get[0]['theta_deg'])}°, "
+    theta = get[0]["theta_deg"]
+    # off the globe an orbit has a lane's height, not a polar angle
+    where = (f"θ = {format_number(theta)}°" if theta is not None and theta == theta else
+             f"on the {get[0].get('surface')}, height {format_number(get[0].get('height_m'))} m")
+    head = (f"[italic]stability of a wheel {get[0]['side']}, {where}, "
             f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(get[0]['a_m'])} m, "
             f"r = {format_number(get[0]['r_m'])} m, k = {format_number(get[0]['k'])})[/italic]")
     exact_rows = [row for row in get if row["source"] == "exact"]
@@ -152,6 +156,10 @@ def stability_view(table: Table) -> Group:
         # nothing to linearise about: say why instead of an empty table
         why = exact_rows[-1]["note"]
         return Group(head, exact, f"[yellow]{escape(why)}[/yellow]")
+    if not any(row["source"] != "exact" for row in get) and "off the globe" in exact_rows[-1]["note"]:
+        # the paper's results are the globe's: off it the exact rows are the answer
+        return Group(head, exact, "[dim]off the globe only the exact rows apply (the paper's results are the "
+                                  "sphere's)[/dim]")
     paper = FitTable(columns, STABILITY_DROP_ORDER,
                      title="the paper's results (printed, corrected, exact; deviation = printed vs exact)",
                      notes=lines)

@@ -20,10 +20,13 @@ from deathsphere.requests.decode import paper_body_codes
 from deathsphere.table import Table
 
 #: The report's columns (appended to, never reordered: input_row, body and
-#: branch came when the report took several orbits at once).
+#: branch came when the report took several orbits at once, surface and
+#: height_m when it took orbits off the globe).
 COLUMNS = ("theta_deg", "alpha_deg", "source", "equation", "quantity", "units", "applies", "validity",
            "paper", "corrected", "exact", "deviation", "note", "side", "a_m", "r_m", "k", "g_m_s2",
-           "validity_limit", "input_row", "body", "branch")
+           "validity_limit", "input_row", "body", "branch",
+           # the arena and the lane (docs/surfaces.md): off the globe theta_deg is empty
+           "surface", "height_m")
 
 _VERDICT = exact_stability.VERDICT_LABELS
 
@@ -33,6 +36,9 @@ _EXACT = (("growth rate (max Re of the eigenvalues)", "growth_rate_1_s", "1/s"),
           ("fast nutation frequency", "freq_fast_rad_s", "rad/s"),
           ("verdict", "stability", ""))
 _EXACT_NOTE = "docs/stability.md sec. 1 (frequencies in the frame turning with the orbit)"
+#: Added to the exact rows of an orbit off the globe (no polar angle theta):
+#: the paper's stability results are stated on the sphere.
+_OFF_GLOBE_NOTE = "; off the globe only the exact rows apply (the paper's results are the sphere's)"
 
 
 def _cells(values, verdict: bool) -> np.ndarray:
@@ -58,7 +64,9 @@ def stability_report(orbits: Table) -> Table:
     (a/r' for small wheels, |r'|/a near the poles), ``validity_limit`` the
     value up to which it applies; ``deviation`` is (paper - exact)/exact, or
     1/0 for a verdict that differs/agrees.  A sphere's orbits have only the
-    exact rows (the paper's stability results are the wheel's).  Vectorised:
+    exact rows (the paper's stability results are the wheel's), and so
+    has an orbit off the globe (they are the sphere's; its exact rows'
+    note says so).  Vectorised:
     one call of :func:`deathsphere.physics.stability.compare_with_paper`
     for every wheel orbit.
     """
@@ -66,6 +74,8 @@ def stability_report(orbits: Table) -> Table:
     status, reason = orbits["status"].astype(object), orbits["reason"].astype(object)
     live = np.isin(status, LIVE_STATUSES)
     analysed = live & (orbits["stability_method"] == EXACT_METHOD)
+    # an orbit off the globe has a lane but no polar angle theta: the paper's results do not apply there
+    on_globe = np.isfinite(np.asarray(orbits["theta_deg"], dtype=float))
     why_not = np.where(live, [method_text(m) for m in orbits["stability_method"].tolist()],
                        [f"no steady orbit with contact here ({s}: {w})" for s, w in zip(status, reason)])
     blank = np.full(n, None, dtype=object)
@@ -78,9 +88,10 @@ def stability_report(orbits: Table) -> Table:
         kinds.append(dict(source="exact", equation="2-7b linearised", quantity=quantity, units=units,
                           applies=analysed, validity=blank, paper=blank, corrected=blank,
                           exact=np.where(analysed, cells, None), deviation=blank,
-                          note=np.where(analysed, _EXACT_NOTE, why_not), validity_limit=blank,
+                          note=np.where(analysed, np.where(on_globe, _EXACT_NOTE, _EXACT_NOTE + _OFF_GLOBE_NOTE),
+                                        why_not), validity_limit=blank,
                           present=np.ones(n, bool)))
-    wheels = np.flatnonzero(analysed & (paper_body_codes(orbits["body"]) == WHEEL.code))
+    wheels = np.flatnonzero(analysed & on_globe & (paper_body_codes(orbits["body"]) == WHEEL.code))
     if wheels.size:
         theta = np.deg2rad(orbits["theta_deg"][wheels])
         alpha = np.deg2rad(params.reduce_angle(orbits["alpha_deg"][wheels]))
@@ -126,4 +137,6 @@ def stability_report(orbits: Table) -> Table:
     table["body"] = orbits["body"].astype(object)[which]
     table["input_row"] = np.asarray(orbits["input_row"], dtype=np.int64)[which]
     table["branch"] = orbits["branch"].astype(object)[which]
+    table["surface"] = orbits["surface"].astype(object)[which]
+    table["height_m"] = np.asarray(orbits["height_m"], dtype=float)[which]
     return Table({name: table[name] for name in COLUMNS})

@@ -1,0 +1,32 @@
+"""The allowed (lane, alpha) region off the globe on a terminal: the
+allowed intervals of alpha on a few of the map's lanes, as a rich table
+(the figure is :mod:`deathsphere.render.lane_map_figure`; this module
+computes nothing)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+#: Lanes shown on a terminal, evenly picked from the map's.
+SHOWN_LANES = 13
+
+
+def lane_map_text(curves, lanes: int = SHOWN_LANES):
+    """A rich Table of ``curves`` (a LaneCurves): one row per picked lane,
+    its allowed alpha intervals [deg] ("none" where no tilt is feasible)."""
+    from rich.table import Table as RichTable
+
+    n = curves.x_m.size
+    pick = np.unique(np.round(np.linspace(0, n - 1, min(lanes, n))).astype(int))
+    limits = [f"mu = {curves.mu:g}" if np.isfinite(curves.mu) else "",
+              f"max {curves.max_g:g} g" if np.isfinite(curves.max_g) else ""]
+    limits = ", ".join(x for x in limits if x)
+    side = "outside" if curves.outside else "inside"
+    table = RichTable(title=f"Allowed tilts of a wheel {side} the {curves.ground_name}: a = {curves.a:g} m, "
+                            f"k = {curves.k:g}" + (f", {limits}" if limits else ""))
+    table.add_column(curves.x_label, justify="right")
+    table.add_column("allowed alpha [deg]")
+    for i in pick:
+        spans = [f"{curves.lo_deg[i, j]:.2f} .. {curves.hi_deg[i, j]:.2f}" for j in range(int(curves.count[i]))]
+        table.add_row(f"{curves.x_m[i]:.4g}", ",  ".join(spans) or "none")
+    return table

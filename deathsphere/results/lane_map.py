@@ -1,0 +1,130 @@
+"""The allowed (lane, alpha) region of a wheel on a surface other than the
+globe, for ``map --surface``: the boundaries as data and the region as a
+figure's curves (beyond the paper; docs/limits.md sec. 8; physics in
+:mod:`deathsphere.physics.lane_region`).  Plain data; the figure is drawn by
+:mod:`deathsphere.render.lane_map_figure`."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from deathsphere.physics import lane_region
+from deathsphere.physics.revolution import lane
+from deathsphere.results.limits import _degrees
+from deathsphere.table import Table
+
+#: Lanes of a map when none are given.
+DEFAULT_LANES = 361
+#: With no top, a map spans this many of the ground's length scale
+#: (its radius; on flat ground the wheel's radius).
+NO_TOP_SPAN = {True: 4.0, False: 20.0}
+
+#: Boundary name -> its equation, in words (docs/surfaces.md, the paper's on the globe).
+EQUATIONS = {
+    "S4": "fit (S4; eq. 0 on the globe)",
+    "S5": "floor (S5)",
+    "S2": "Omega^2 = 0 or pole (S2 = eq. 29)",
+    "S3": "contact (S3; eq. 33 on the globe)",
+    "mu": "friction limit mu_required = mu (S3 and eq. 35)",
+    "max_g": "load limit load_g = max_g (eqs. 32 and 36)",
+}
+#: How far either side of a boundary point its two sides are tested [rad].
+SIDE_STEP = 1e-7
+
+
+def default_lanes(ground, a) -> np.ndarray:
+    """The lanes [m] of a map when none are given: DEFAULT_LANES from the
+    floor to the ground's highest lane or, with no top, over NO_TOP_SPAN
+    of its length scale (first lane just off the floor, where a bowl's
+    bottom is the axis)."""
+    top = float(getattr(ground, "highest_lane", math.inf))
+    if not math.isfinite(top):
+        radius = getattr(ground, "radius", None)
+        scale = float(radius) if radius else float(a)
+        top = NO_TOP_SPAN[bool(radius)] * scale
+    return np.linspace(0.0, top, DEFAULT_LANES)
+
+
+def _x_of(ground, heights):
+    """The map's abscissa: the lane's height above the floor and the
+    contact's distance from the axis (flat ground's lane), the wall angle."""
+    where = lane(ground, heights)
+    return where["z"] - ground.lowest, where["rho"], np.rad2deg(where["wall_angle"])
+
+
+def lane_boundary_table(ground, heights, a, k, g, outside, mu, max_g) -> Table:
+    """Every boundary point of the allowed region at each lane, one row each:
+    ``curve`` (S4, S5, S2, S3, mu, max_g), ``equation``, ``height_m``,
+    ``alpha_deg``, and whether the orbit is feasible just below and just
+    above it in alpha (``feasible_below``, ``feasible_above``: status ok of
+    ``orbit --surface`` within mu, and the load within max_g, SIDE_STEP rad
+    away), then the setup and the lane's ``rho_contact_m``, ``wall_angle_deg``."""
+    heights = np.asarray(heights, dtype=float).reshape(-1)
+    curves = lane_region.lane_boundaries(ground, heights, a, k, outside, mu, max_g)
+    names, eqs, rows, alphas = [], [], [], []
+    for name, alpha in curves.items():
+        i, j = np.nonzero(np.isfinite(alpha))
+        names.append(np.full(i.size, name, dtype=object))
+        eqs.append(np.full(i.size, EQUATIONS[name], dtype=object))
+        rows.append(i)
+        alphas.append(alpha[i, j])
+    row, alpha = np.concatenate(rows), np.concatenate(alphas)
+    order = np.lexsort((alpha, row))              # lane by lane, alpha up
+    row, alpha = row[order], alpha[order]
+    lane_h = heights[row]
+    below = lane_region.feasible_on(ground, lane_h, alpha - SIDE_STEP, a, k, g, outside, mu, max_g)
+    above = lane_region.feasible_on(ground, lane_h, alpha + SIDE_STEP, a, k, g, outside, mu, max_g)
+    lift, rho, beta = _x_of(ground, lane_h)
+    n = row.size
+    return Table({
+        "curve": np.concatenate(names)[order], "equation": np.concatenate(eqs)[order],
+        "height_m": lift, "alpha_deg": np.rad2deg(alpha),
+        "feasible_below": below.astype(bool), "feasible_above": above.astype(bool),
+        "a_m": np.full(n, float(a)), "k": np.full(n, float(k)),
+        "mu_available": np.full(n, math.nan if math.isinf(mu) else float(mu)),
+        "max_g": np.full(n, math.nan if math.isinf(max_g) else float(max_g)),
+        "surface": np.full(n, ground.name, dtype=object), "rho_contact_m": rho, "wall_angle_deg": beta,
+    })
+
+
+@dataclass
+class LaneCurves:
+    """The allowed region for a figure: per lane ``x_m`` (the height above
+    the floor, or on flat ground the turn radius: ``x_label`` says which),
+    the allowed intervals ``lo_deg``, ``hi_deg`` (n, m) and ``count`` (n,);
+    ``points``: curve name -> (x_m, alpha_deg) of its boundary points;
+    the setup for the title."""
+
+    ground_name: str
+    x_label: str
+    x_m: np.ndarray
+    lo_deg: np.ndarray
+    hi_deg: np.ndarray
+    count: np.ndarray
+    points: dict
+    a: float
+    k: float
+    outside: bool
+    mu: float
+    max_g: float
+
+
+def lane_curves(ground, heights, a, k, g, outside, mu, max_g) -> LaneCurves:
+    """The allowed intervals and the boundary points at ``heights`` [m]."""
+    heights = np.asarray(heights, dtype=float).reshape(-1)
+    iv = lane_region.allowed_alpha_on(ground, heights, a, k, g, outside, mu, max_g)
+    lift, rho, _ = _x_of(ground, heights)
+    on_flat = not hasattr(ground, "highest_lane")
+    x = rho if on_flat else lift
+    curves = lane_region.lane_boundaries(ground, heights, a, k, outside, mu, max_g)
+    points = {}
+    for name, alpha in curves.items():
+        i, j = np.nonzero(np.isfinite(alpha))
+        points[name] = (x[i], np.rad2deg(alpha[i, j]))
+    return LaneCurves(ground_name=ground.name,
+                      x_label="turn radius of the contact [m]" if on_flat else "height of the lane [m]",
+                      x_m=x, lo_deg=_degrees(iv.lo), hi_deg=_degrees(iv.hi), count=iv.count, points=points,
+                      a=float(a), k=float(k), outside=bool(outside), mu=float(mu), max_g=float(max_g))
