@@ -98,3 +98,93 @@ def test_the_front_contact_is_on_the_surface_and_the_rim_tangent_there(ground):
     angle = np.linspace(0.0, 2 * np.pi, 721)[:, None]
     rim = centre[:, None] + b.rF * (np.sin(angle) * E[0][:, None] + np.cos(angle) * E[2][:, None])
     assert ground.clearance(np.hypot(rim[0], rim[1]), -rim[2]).min() > -1e-12
+
+
+def _point_wheelbase(w):
+    """The benchmark bicycle shrunk to one contact (wheel base w, no trail,
+    equal wheels, every mass centre on the line through the contacts, no
+    products of inertia) and ride's single-contact machine with its mass,
+    centre of mass and inertia (docs/machine.md sec. 1)."""
+    import dataclasses
+
+    from machine_calls import arrays
+
+    b0 = benchmark_bicycle()
+    b = dataclasses.replace(b0, w=w, c=0.0, rF=b0.rR, xB=0.0, xH=0.0, IBxz=0.0, IHxz=0.0)
+    bodies = [(b.mR, -b.rR, b.IRyy, b.IRxx), (b.mB, b.zB, b.IByy, b.IBzz),
+              (b.mH, b.zH, b.IHyy, b.IHzz), (b.mF, -b.rF, b.IFyy, b.IFxx)]
+    mass = sum(m for m, *_ in bodies)
+    z_cm = sum(m * z for m, z, *_ in bodies) / mass
+    machine = arrays(mass, -z_cm, b.rR, 0.0, sum(iy + m * (z - z_cm) ** 2 for m, z, iy, _ in bodies),
+                     sum(iz for *_, iz in bodies), b.IRyy + b.IFyy)
+    return b, machine
+
+
+@pytest.mark.parametrize("ground, tilt_deg", [(Cylinder(4.8768, 6.0), [15.0, 25.0, 35.0]),
+                                              (Cone(4.0, np.radians(80.0), 6.0), [10.0, 20.0, 30.0]),
+                                              (Cone(12.0, np.radians(45.0), 6.0), [30.0, 40.0, 50.0])],
+                         ids=["drum", "well", "track"])
+def test_as_the_wheel_base_vanishes_a_walls_turns_are_rides_single_contact_machine(ground, tilt_deg):
+    """An independent derivation: ride's single-contact machine on the same
+    wall (docs/machine.md eqs. MS1-MS7, the contact force from the mass
+    centre's circle) at tilt alpha gives the contact's speed; the shrunk
+    bicycle at that speed and height leans by 90 deg - beta - alpha from
+    the wall's normal, with the machine's normal force, mass centre's speed
+    and load, to the order of the wheel base."""
+    from deathsphere.physics.machine_surface import ride_orbit_on
+
+    w = 1e-3
+    b, machine = _point_wheelbase(w)
+    height, alpha = np.array([1.0, 2.0, 3.0]), np.radians(tilt_deg)
+    orbit = ride_orbit_on(height, alpha, ground, G, machine)
+    assert orbit["status"].tolist() == [0, 0, 0]
+    out = steady.turns_for_speed(height, orbit["v_contact"], b, ground, G)
+    lean = np.pi / 2 - ground.wall_angle(height) - alpha
+    # the turn nearest the machine's (a speed may have others, far from it)
+    pick = np.nanargmin(np.abs(out["lean"] - lean[:, None]), axis=1)
+
+    def at(key):
+        return out[key][np.arange(3), pick]
+
+    # observed 0.0007-0.0022 w: the lean converges linearly with the wheel base
+    assert np.abs(at("lean") - lean).max() < 0.005 * w
+    np.testing.assert_allclose(at("normal_rear") + at("normal_front"), orbit["normal"], rtol=1e-3 * w)
+    np.testing.assert_allclose(at("v_cm"), orbit["v_cm"], rtol=1e-3 * w)
+    np.testing.assert_allclose(at("load_g"), orbit["load_g"], rtol=1e-3 * w)
+
+
+def test_a_shallow_cone_far_out_is_flat_ground():
+    """A cone of wall angle 0.01 deg, the lane 20 m from its axis, against
+    flat ground's turn of radius 20 m (the separate flat-ground equations):
+    the floor there is banked by beta, so the lean from its normal plus
+    beta is flat ground's lean from the vertical; lean, steer and steer
+    torque agree to 1e-4, and the spectrum is flat ground's four
+    eigenvalues and the circle's drift +-i omega, now slightly damped."""
+    b = benchmark_bicycle()
+    radius, speed, beta = 20.0, 5.0, np.radians(0.01)
+    flat = stability.turns_with_stability(1 / radius, b, Plane(), G, speed=speed)
+    cone = Cone(10.0, beta)
+    height = (radius - 10.0) * np.tan(beta)
+    out = stability.turns_with_stability(height, b, cone, G, speed=speed)
+    assert out["count"].tolist() == flat["count"].tolist() == [1]
+    assert out["lean"][0, 0] + beta == pytest.approx(flat["lean"][0, 0], rel=1e-4)
+    for key in ("steer", "steer_torque", "normal_rear", "normal_front", "omega"):
+        assert out[key][0, 0] == pytest.approx(flat[key][0, 0], rel=1e-4), key
+    omega = flat["omega"][0, 0]
+    expected = np.concatenate([flat["eigenvalues_free"][0, 0], [1j * omega, -1j * omega]])
+    got = out["eigenvalues_free"][0, 0]
+    assert np.all(np.abs(expected[:, None] - got[None, :]).min(axis=1) < 1e-3 * np.abs(expected).max())
+    drift = got[np.argmin(np.abs(got - 1j * omega))]
+    assert -1e-2 * omega < drift.real < 0
+
+
+def test_lanes_off_the_wall_get_a_reason_and_no_row():
+    """Below the floor, above the wall's top, a non-finite height: no turn,
+    the lane's reason; the lane on the wall has its turns."""
+    from deathsphere.physics.status import Reason
+
+    b = TWO_WHEELERS["stunt125-steer"].parameters()
+    out = steady.turns_for_speed([-0.5, 6.5, np.nan, 2.0], 60 / 3.6, b, Cylinder(4.8768, 6.0), G)
+    assert out["count"][:3].tolist() == [0, 0, 0] and out["count"][3] >= 1
+    assert out["reason"].tolist() == [Reason.TURN_BAD_LANE] * 3 + [Reason.NONE]
+    assert np.isnan(out["lean"][:3]).all()
