@@ -210,7 +210,8 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         wall's top above the floor (a lane above it is refused).  On a drum
         or a cone the lane is given by ``height`` (theta is refused), one
         radius, no vertical loops and no stability analysis (the columns
-        say so).
+        say so).  A two-wheeler (``steer``, ``steer_torque``) rides them
+        too, with its stability (docs/two-wheeler.md sec. 12).
     g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
         (|contact force| / (m g), what the rider feels) allowed.
     speed : float or array_like
@@ -426,8 +427,7 @@ _HOW = {Tilt: lambda by: ("alpha", by.alpha), ContactSpeed: lambda by: ("speed",
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
 SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius",
-                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
-                       "surface", "wall_angle", "wall_height")
+                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
 
 
 def refuse_single_contact(given: dict) -> None:
@@ -446,7 +446,8 @@ def _two_wheeler(machine, given: dict) -> Table:
     refuse_single_contact(given)
     return two_wheeler_ride(machine, {k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
                                                               "steer", "r", "diameter", "g", "mu", "max_g",
-                                                              "summary", "stability", "only")})
+                                                              "summary", "stability", "only", "surface",
+                                                              "wall_angle", "wall_height")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).
