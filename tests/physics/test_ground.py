@@ -4,7 +4,7 @@ agree with each other and with an independent reading of its surface."""
 import numpy as np
 import pytest
 
-from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Sphere
+from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Profile, Sphere
 
 GROUNDS = [Sphere(2.4384), Plane(), Cylinder(4.8768, 3.6576), Cone(3.0, np.radians(80.0), 9.0),
            Cone(3.0, np.radians(100.0)), Cone(12.0, np.radians(45.0), 4.0)]
@@ -138,7 +138,17 @@ def test_a_cone_leaning_in_ends_at_its_apex():
     assert Cone(3.0, np.radians(60.0), 2.0).highest_lane == 2.0 and Cylinder(3.0).highest_lane == np.inf
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
+def _bowl():
+    """A profile: a bowl of radius 3 m sampled at 60 points, its lanes up to 4 m."""
+    theta = np.linspace(np.pi - 0.02, 0.6, 60)
+    return Profile(3.0 * np.sin(theta), 3.0 * np.cos(theta))
+
+
+MERIDIANS = GROUNDS + [_bowl()]
+LANES["profile"] = np.linspace(0.05, 4.0, 23)
+
+
+@pytest.mark.parametrize("ground", MERIDIANS, ids=_id)
 def test_the_meridian_by_arc_length_is_the_lanes(ground):
     """meridian(arc_length(lane)) gives the lane's contact, wall angle and
     meridian curvature (the two-wheeler's rear contact reads the ground by
@@ -156,7 +166,7 @@ def test_the_meridian_by_arc_length_is_the_lanes(ground):
     assert s[-1] - s[0] == pytest.approx(chord, rel=1e-8)
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
+@pytest.mark.parametrize("ground", MERIDIANS, ids=_id)
 def test_the_meridians_derivatives_by_a_complex_step(ground):
     """rho' = cos(beta), z' = sin(beta), beta' = kappa, kappa' = dkappa in
     the arc length, by a complex step through meridian(s): the chain rule
@@ -167,7 +177,7 @@ def test_the_meridians_derivatives_by_a_complex_step(ground):
         assert np.allclose(value.imag / 1e-30, slope, rtol=0, atol=1e-12)
 
 
-@pytest.mark.parametrize("ground", GROUNDS, ids=_id)
+@pytest.mark.parametrize("ground", MERIDIANS, ids=_id)
 def test_the_implicit_function_passes_a_complex_step(ground):
     """F and grad F at a complex point: their imaginary parts are the
     gradient's and the Hessian's along the step (the two-wheeler's front

@@ -7,7 +7,7 @@ function is where the rim touches it."""
 import numpy as np
 import pytest
 
-from deathsphere.physics.ground import Cone, Cylinder, Plane, Sphere
+from deathsphere.physics.ground import Cone, Cylinder, Plane, Profile, Sphere
 from deathsphere.physics.two_wheeler import geometry, grounds, rim_contact, stability, steady
 from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
 from deathsphere.records.two_wheeler_presets import TWO_WHEELERS
@@ -188,3 +188,27 @@ def test_lanes_off_the_wall_get_a_reason_and_no_row():
     assert out["count"][:3].tolist() == [0, 0, 0] and out["count"][3] >= 1
     assert out["reason"].tolist() == [Reason.TURN_BAD_LANE] * 3 + [Reason.NONE]
     assert np.isnan(out["lean"][:3]).all()
+
+
+def test_a_profile_rides_as_the_ground_it_was_sampled_from():
+    """Through the same code a profile (its spline by arc length, the front
+    contact from its signed distance): sampled from a drum (a straight
+    meridian, which the spline reproduces) its turn is the drum's to
+    1e-12; sampled from a sphere at 200 points, the globe's closed forms'
+    to 1e-7 (the spline's own error).  One lane each: a profile's signed
+    distance costs a nearest-point search per call, a second per lane."""
+    b = TWO_WHEELERS["stunt125-steer"].parameters()
+    drum = Cylinder(4.8768, 6.0)
+    z = np.linspace(0.0, 6.0, 7)
+    sampled = steady.turns_for_speed(1.0, 16.0, b, Profile(np.full(z.size, drum.radius), z), G)
+    exact = steady.turns_for_speed(1.0, 16.0, b, drum, G)
+    _agree(sampled, exact, ("lean", "steer", "pitch", "steer_torque", "normal_rear", "normal_front"))
+    sphere = Sphere(4.0)
+    theta = np.linspace(np.pi, 0.05, 200)
+    globe = Profile(sphere.radius * np.sin(theta), sphere.radius * np.cos(theta))
+    sampled = steady.turns_for_speed(2.5, 12.0, b, globe, G)
+    exact = steady.turns_for_speed(sphere.theta(2.5), 12.0, b, sphere, G)
+    assert sampled["count"].tolist() == exact["count"].tolist() == [1]
+    for key in ("lean", "steer", "steer_torque", "normal_rear", "normal_front"):
+        scale = max(1.0, float(np.abs(exact[key]).max()))
+        np.testing.assert_allclose(sampled[key], exact[key], rtol=0, atol=1e-7 * scale, err_msg=key)

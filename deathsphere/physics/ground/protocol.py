@@ -92,4 +92,5 @@ def as_array(x):
     """x as a float64 array, or complex128 where it is complex: a ground's
     answers pass a complex step through (the two-wheeler's derivatives are
     taken by one; beyond the paper, docs/two-wheeler.md sec. 12)."""
-    return np.asarray(x, dtype=np.result_type(x, float))
+    x = np.asarray(x)
+    return np.asarray(x, dtype=np.result_type(x.dtype, np.float64))

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.ground import Cone, Cylinder, Plane, Sphere
+from deathsphere.physics.ground import Cone, Cylinder, Plane, Profile, Sphere
 from deathsphere.physics.two_wheeler import _generated, rim_contact
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
 
@@ -338,7 +338,7 @@ class OnRevolution:
 
 
 #: The ground records the equations are generated for, and what each asks.
-_ON = {Plane: OnPlane, Sphere: OnSphere, Cylinder: OnRevolution, Cone: OnRevolution}
+_ON = {Plane: OnPlane, Sphere: OnSphere, Cylinder: OnRevolution, Cone: OnRevolution, Profile: OnRevolution}
 _KINDS = (OnPlane, OnSphere, OnRevolution)
 
 
@@ -348,12 +348,13 @@ def of(ground) -> OnPlane | OnSphere | OnRevolution:
     :class:`~deathsphere.physics.ground.Sphere`, a drum or a cone, or one
     of this module's classes given as the ground, e.g.
     ``OnRevolution(Sphere(r))`` for the general path on the globe; beyond
-    the paper, docs/two-wheeler.md sec. 3 and 12): its generated functions
-    and terms."""
+    the paper, docs/two-wheeler.md sec. 3 and 12; a profile too): its
+    generated functions and terms."""
     if isinstance(ground, _KINDS):
         return ground
     on = _ON.get(type(ground))
     if on is None:
         raise TypeError(f"the two-wheeler's equations are generated for flat ground (Plane), the inside of a "
-                        f"sphere (Sphere) and the inside of a drum (Cylinder) or a cone (Cone): not {ground!r}")
+                        f"sphere (Sphere) and the inside of a drum (Cylinder), a cone (Cone) or a profile (Profile): "
+                        f"not {ground!r}")
     return on(ground)
