@@ -417,7 +417,8 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         raise TypeError(f"turn_request() got an unexpected key {unknown[0]!r}")
     given = {**TURN_KEYS, **typed}
     theta, height, speed, steer_torque, steer, r, diameter, g, mu, max_g, summary, stability, only = (
-        given[key] for key in list(TURN_KEYS)[:13])
+        given[key] for key in ("theta", "height", "speed", "steer_torque", "steer", "r", "diameter", "g", "mu",
+                               "max_g", "summary", "stability", "only"))
     steer, steer_torque = steer_request(steer, steer_torque)
     t, steer, g = _machine(machine, steer, g)
     wall = _wall(given["surface"], r, diameter, given["wall_angle"], given["wall_height"])
@@ -427,10 +428,9 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
     if max(t.rR, t.rF) >= r:
         # no lane of this globe has room for the wheel: refused as a single-contact machine's wheel is
-        where = "a sphere" if wall is None else f"a {wall.name} of radius {r:g} m at its floor"
-        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in "
-                             f"{where}" + (f" of radius {r:g} m" if wall is None else "") + " (needs r > rR and r > rF)",
-                             "diameter" if diameter is not None else "r")
+        where = f"a sphere of radius {r:g} m" if wall is None else f"a {wall.name} of radius {r:g} m at its floor"
+        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in {where} "
+                             "(needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
     limit = MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS
     if wall is None:
         lane, lane_given, by_theta = _lanes(theta, height, r, limit, shaped=not streamed)
