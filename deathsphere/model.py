@@ -26,6 +26,7 @@ from deathsphere.constants import (
 # imported where used, so that a command loads only what it evaluates.
 from deathsphere.physics import wheel
 from deathsphere.physics.geometry import too_big_inside
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.records.paper_bodies import BALL, PAPER_BODIES, PARTICLE, WHEEL, Ball, PaperBodyKind, Particle, Wheel
 from deathsphere.requests.decode import as_typed, paper_body_codes, paper_body_named, text_codes
@@ -274,10 +275,6 @@ def validate_requests(req: dict) -> np.ndarray:
         with np.errstate(invalid="ignore"):
             checks.append((too_big_inside(req["a"], req["r"], side_code != SIDES.index("inside")),
                            lambda i: _combination_problem(side[i], req["a"][i], req["r"][i])))
-    else:
-        checks.append(((body_code == WHEEL.code) & np.isnan(req["alpha"]),
-                       lambda i: f"on the {ground.name} a wheel needs its tilt alpha (its speed or rate is "
-                                 "solved on the sphere only)"))
     alpha, omega3, omega, speed = req["alpha"], req["omega3"], req["omega"], req["speed"]
     is_wheel, is_sphere = body_code == WHEEL.code, body_code == BALL.code
     targets = sum((~np.isnan(req[key])).astype(int) for key in WHEEL.held_by)
@@ -462,11 +459,52 @@ _DEFAULT_K = np.array([body.default_k for body in PAPER_BODIES] + [np.nan])
 
 
 def _ground_wheel(req, rows):
+    """A wheel on another surface: its tilt given, one row; its speed or rate
+    given, every tilt of S2 (docs/surfaces.md), one row per root as on the
+    globe (:func:`_ground_wheel_solved`)."""
     from deathsphere.physics import revolution
 
-    res = revolution.wheel_orbit(req["ground"], *(req[key][rows] for key in ("height", "alpha_rad", "a", "k", "g")),
-                                 outside=req["outside"][rows], mu=req["mu"][rows])
-    return [(rows, np.full(rows.size, -1), res)]
+    tilted = rows[~np.isnan(req["alpha"][rows])]
+    parts = []
+    if tilted.size:
+        res = revolution.wheel_orbit(req["ground"], *(req[key][tilted] for key in ("height", "alpha_rad", "a", "k",
+                                                                                    "g")),
+                                     outside=req["outside"][tilted], mu=req["mu"][tilted])
+        parts.append((tilted, np.full(tilted.size, -1), res))
+    solve = rows[np.isnan(req["alpha"][rows])]
+    if solve.size:
+        parts.extend(_ground_wheel_solved(req, solve))
+    return parts
+
+
+def _ground_wheel_solved(req, rows):
+    """Speed or rate given on another surface: every alpha of S2, one row per
+    root (branch = root index, in increasing alpha); a request with no root
+    gives one row with the reason (no root, off the wall, no tilt fits, a
+    contact speed on the axis).  One vectorised call per kind of target."""
+    from deathsphere.physics.revolution_tilt import wheel_tilts
+
+    parts = []
+    for name in ("com_speed", "speed", "omega"):
+        sub = rows[~np.isnan(req[name][rows])]
+        if name != "omega":
+            rows = rows[np.isnan(req[name][rows])]      # a row's target is the first of its kind found
+        if not sub.size:
+            continue
+        res = wheel_tilts(req["ground"], req["height"][sub], req["a"][sub], req["k"][sub], req["g"][sub],
+                          outside=req["outside"][sub], mu=req["mu"][sub], **{name: req[name][sub]})
+        count = res["count"]
+        roots = res["alpha"]
+        row_i, root_j = np.nonzero(np.arange(roots.shape[1])[None, :] < count[:, None])
+        flat = {key: value[row_i, root_j] for key, value in res.items() if np.shape(value) == roots.shape}
+        flat["alpha_deg"] = np.rad2deg(flat.pop("alpha"))
+        parts.append((sub[row_i], root_j, flat))
+        none = count == 0
+        if none.any():
+            parts.append((sub[none], np.full(int(none.sum()), -1), {
+                "status": res["unsolved_status"][none], "reason": res["unsolved_reason"][none],
+                **{key: value[none] for key, value in res["lane"].items()}}))
+    return parts
 
 
 def _ground_ball(req, rows):
@@ -501,9 +539,6 @@ def _ground_particle(req, rows):
 
 #: The solvers on a surface other than the globe (docs/surfaces.md).
 GROUND_SOLVERS = {Wheel: _ground_wheel, Ball: _ground_ball, Particle: _ground_particle}
-#: ``stability_method`` of an orbit on the outside of another surface: the
-#: equations of motion on any ground are written for the inside (docs/dynamics.md sec. 7).
-NOT_ON_SURFACE = "not computed on the outside of this surface (docs/dynamics.md sec. 7 is the inside's)"
 
 
 def evaluate(req: dict, stability: bool = True) -> Table:
@@ -704,8 +739,8 @@ def _no_stability(n: int) -> dict:
 
 
 #: ``stability_method`` values.
-EXACT_METHOD = "exact-linearisation"
-NOT_ANALYSED_K0 = "not analysed (k = 0: the equations of motion are singular)"
+EXACT_METHOD = methods.EXACT
+NOT_ANALYSED_K0 = methods.NOT_ANALYSED_K0
 
 
 def _stability_columns(columns: dict, status: np.ndarray, body_code: np.ndarray, solve, not_analysed=None) -> dict:
@@ -740,7 +775,7 @@ def _stability_columns(columns: dict, status: np.ndarray, body_code: np.ndarray,
         out["stability_kind"][rows] = stability_kind(res["growth_rate"], res["rate_scale"])
     rows = np.flatnonzero(live & particle)
     out["stability"][rows] = "unknown"
-    out["stability_method"][rows] = "not analysed (sliding particle)"
+    out["stability_method"][rows] = methods.NOT_ANALYSED_PARTICLE
     return out
 
 
@@ -749,18 +784,21 @@ def add_stability_on(columns: dict, ground, height: np.ndarray, alpha_rad: np.nd
     """The stability columns of orbits on a ground other than the globe:
     the exact linearisation of the equations of motion on any ground
     (docs/dynamics.md sec. 7; physics.stability.wheel_stability_on and
-    ball_stability_on), as :func:`add_stability` on the sphere.  The
-    bodies inside only; a sliding particle is not analysed."""
+    ball_stability_on), as :func:`add_stability` on the sphere, inside
+    and outside; a sliding particle is not analysed."""
     from deathsphere.physics import stability as exact
 
     par = {key: columns[col] for key, col in (("a", "a_m"), ("k", "k"), ("g", "g_m_s2"))}
     solvers = {WHEEL: (exact.wheel_stability_on, alpha_rad), BALL: (exact.ball_stability_on, columns["omega_rad_s"])}
 
+    outside = np.asarray(outside, dtype=bool)
+
     def solve(one, rows):
         solver, second = solvers[one]
-        return solver(ground, height[rows], second[rows], *(par[key][rows] for key in ("a", "k", "g")))
+        return solver(ground, height[rows], second[rows], *(par[key][rows] for key in ("a", "k", "g")),
+                      outside=outside[rows])
 
-    return _stability_columns(columns, status, body_code, solve, (np.asarray(outside, dtype=bool), NOT_ON_SURFACE))
+    return _stability_columns(columns, status, body_code, solve)
 
 
 def add_stability(columns: dict, theta_rad: np.ndarray, alpha_rad: np.ndarray, status: np.ndarray,

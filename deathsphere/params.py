@@ -198,8 +198,8 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     # reading), --com-speed the centre of mass's (docs/contract.md)
     Param("speed", "m/s", "contact speed", TINY, HUGE, symbol="v", kind="speed", metavar="M_S",
           help="The contact's speed along the ground (a speedometer's); a two-wheeler's, its rear contact's. The "
-               "contact runs round the parallel of radius r sin theta, so the lap rate is Omega = speed / "
-               "(r sin theta); every tilt alpha giving it, one row each (branch = root number in increasing "
+               "contact runs round the parallel of radius r sin theta (rho_contact off the globe), so the lap rate "
+               "is Omega = speed / (r sin theta); every tilt alpha giving it, one row each (branch = root number in increasing "
                "alpha). With the contact on the axis (theta 0 or 180) no orbit."),
     Param("com_speed", "m/s", "centre-of-mass speed", TINY, HUGE, symbol="v_cm", kind="speed", metavar="M_S",
           column="v_cm_m_s",
@@ -277,7 +277,7 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     _length("turn_radius", "turn radius", "R_turn",
             help="Simulate, a two-wheeler on flat ground (--flat): start from the steady turn whose rear contact "
                  "runs on a circle of this radius, turning right (without it: upright straight running); orbit, "
-                 "sweep with --surface plane: the contact's distance from the turn's centre."),
+                 "sweep, simulate with --surface plane: the contact's distance from the turn's centre."),
     Param("duration", "s", "run length in seconds", 0.0, 1e6, lo_open=True, metavar="S",
           help="Simulate, a two-wheeler: how long in seconds instead of --periods (straight running on flat "
                "ground has no period: 5 s unless given), > 0."),

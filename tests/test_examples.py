@@ -29,3 +29,10 @@ def test_highest_orbit_example_matches_brute_force():
     # the load a rider feels: the centre's acceleration and gravity at right angles (eq. 32)
     feasible = (grid["status"] == "ok") & (np.hypot(1.0, grid["accel_g"]) <= 5)
     assert grid["theta_deg"][feasible].min() == theta
+
+
+def test_the_wall_of_death_example_plan_reads_and_every_lane_is_ok():
+    import deathsphere
+
+    act = deathsphere.show(str(EXAMPLES / "wall_of_death.toml"))
+    assert list(act.riders["status"]) == ["ok", "ok", "ok"]

@@ -33,12 +33,15 @@ def test_readme_has_commands():
 def test_readme_command_runs(run, line, stdin, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)     # a command with --output FILE writes it here
     args = shlex.split(line)[1:]
-    if args[0] == "show":  # the plan a crew writes: the one `show --example` prints
+    if args[0] == "show":  # a plan shipped in examples/, else the one `show --example` prints
         from deathsphere.api.shows import EXAMPLE_PLAN
 
         for arg in args[1:]:
             if arg.endswith(".toml"):
-                (tmp_path / arg).write_text(EXAMPLE_PLAN, encoding="utf-8")
+                shipped = README.parent / arg
+                (tmp_path / arg).parent.mkdir(parents=True, exist_ok=True)
+                (tmp_path / arg).write_text(shipped.read_text(encoding="utf-8") if shipped.is_file() else EXAMPLE_PLAN,
+                                            encoding="utf-8")
     if "sweep" in args:  # keep the suite fast: the same command on a coarser grid
         args = [re.sub(r"^(\d+):(\d+):1$", r"\1:\2:20", a) for a in args]
     res = run(*args, input=stdin)

@@ -11,7 +11,7 @@ import pytest
 import deathsphere
 from deathsphere.api.rides import RIDE_COLUMNS
 from deathsphere.errors import ParameterError
-from deathsphere.physics.ground import Cone, Cylinder
+from deathsphere.physics.ground import Cone, Cylinder, Plane, Profile
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_surface import ride_orbit_on
 from deathsphere.records.machine_presets import PRESETS
@@ -59,7 +59,7 @@ def test_a_lap_on_the_drum_is_the_physics_at_the_lane_asked_for(held):
     assert float(orb["v_contact"]) == pytest.approx(float(orb["omega"]) * 16 * FT, rel=1e-12)
     assert row["mu_required"] == pytest.approx(float(orb["mu_required"]), rel=1e-12)
     assert row["friction_per_mass_m_s2"] == pytest.approx(-G, rel=1e-12)
-    assert "not analysed" in row["stability_method"]
+    assert row["stability_method"] == "not-analysed-off-globe"
 
 
 def test_the_globes_rows_carry_their_contact_radius_and_wall_angle():
@@ -114,3 +114,78 @@ def test_the_riders_table_counts_a_head_reaching_a_wall_as_head_hits():
     assert hits > 0
     table = deathsphere.ride(**kw, summary=True)
     assert int(table["head_hits"][0]) == hits
+
+
+def test_a_lap_on_flat_ground_by_its_turn_radius():
+    """On flat ground the lane is the contact's distance from the turn's
+    centre: the contact's speed fixes Omega = v / R, the row is the physics
+    at that lane, and its height is 0 (the contact's, on the ground)."""
+    t = deathsphere.ride(machine="stunt125", surface="plane", turn_radius=[20.0, 50.0], speed="30km/h")
+    assert tuple(t.columns) == RIDE_COLUMNS and len(t) == 2
+    for row, turn in zip(t, (20.0, 50.0)):
+        assert row["status"] == "ok" and row["surface"] == "plane" and row["r_m"] is None
+        assert row["height_m"] == 0.0 and row["rho_contact_m"] == turn and row["wall_angle_deg"] == 0.0
+        assert row["omega_rad_s"] == pytest.approx(30 / 3.6 / turn, rel=1e-12)
+        orb = ride_orbit_on(turn, math.radians(row["alpha_deg"]), Plane(), G, machine_arrays(PRESETS["stunt125"]))
+        assert row["lean_deg"] == pytest.approx(90.0 - row["alpha_deg"])
+        assert row["mu_required"] == pytest.approx(float(orb["mu_required"]), rel=1e-12)
+    # the tighter turn leans further (the textbook's tan(phi) = v^2 / (g R), corrected)
+    assert t[0]["lean_deg"] > t[1]["lean_deg"] > math.degrees(math.atan((30 / 3.6) ** 2 / (G * 50.0)))
+
+
+def test_a_lap_on_a_profile_by_its_height(tmp_path):
+    rho = np.linspace(0.0, 12.0, 61)
+    path = tmp_path / "bowl.csv"
+    path.write_text("rho_m,z_m\n" + "".join(f"{float(a)!r},{float(0.08 * a * a)!r}\n" for a in rho))
+    t = deathsphere.ride(machine="stunt125", surface="profile", profile=str(path), height=[1.0, 4.0],
+                         com_speed=10.0)
+    assert [row["status"] for row in t] == ["ok", "ok"]
+    bowl = Profile(rho, 0.08 * rho ** 2)
+    for row, h in zip(t, (1.0, 4.0)):
+        assert row["height_m"] == h and row["rho_contact_m"] == pytest.approx(math.sqrt(h / 0.08), rel=1e-5)
+        # the wall angle of z = c rho^2: tan(beta) = 2 c rho
+        assert math.tan(math.radians(row["wall_angle_deg"])) == pytest.approx(2 * 0.08 * math.sqrt(h / 0.08),
+                                                                               rel=1e-4)
+        orb = ride_orbit_on(h, math.radians(row["alpha_deg"]), bowl, G, machine_arrays(PRESETS["stunt125"]))
+        assert float(orb["v_cm"]) == pytest.approx(10.0, rel=1e-9)
+
+
+@pytest.mark.parametrize("kw, param", [
+    (dict(surface="plane", height=3.0), "height"),
+    (dict(surface="plane"), "turn_radius"),
+    (dict(surface="plane", theta=60, turn_radius=3.0), "theta"),
+    (dict(surface="cylinder", r=5.0, turn_radius=3.0), "turn_radius"),
+    (dict(turn_radius=3.0), "turn_radius"),
+])
+def test_a_lane_its_ground_does_not_have_is_refused_naming_it(kw, param):
+    with pytest.raises(ParameterError) as err:
+        deathsphere.ride(machine="stunt125", speed=8.0, **kw)
+    assert err.value.param == param and "\n" not in str(err.value)
+
+
+def test_ride_on_flat_ground_through_the_command_line(run):
+    res = run("ride", "--surface", "plane", "--turn-radius", "20", "--speed", "30km/h", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    assert "plane" in res.stdout and ",20.0,0.0" in res.stdout
+    bad = run("ride", "--surface", "plane", "--height", "3", "--speed", "8", "--format", "csv")
+    assert bad.exit_code == 2 and bad.stderr.count("\n") == 1 and "--height" in bad.stderr
+    bad = run("ride", "--turn-radius", "3", "--speed", "8", "--format", "csv")
+    assert bad.exit_code == 2 and bad.stderr.count("\n") == 1 and "--turn-radius" in bad.stderr
+
+
+def test_the_riders_table_on_flat_ground_names_each_lane_by_its_turn_radius():
+    table = deathsphere.ride(machine="stunt125", surface="plane", turn_radius=[[10.0], [30.0]], speed=[6.0, 12.0],
+                             summary=True)
+    assert list(table["rho_contact_m"]) == [10.0, 30.0] and list(table["height_m"]) == [0.0, 0.0]
+    assert list(table["speeds_ok"]) == [2, 2]
+    # on the globe the contact's distance from the axis, r sin(theta)
+    globe = deathsphere.ride(theta=[[60.0], [90.0]], speed=[8.0, 10.0], diameter="16ft", summary=True)
+    np.testing.assert_allclose(globe["rho_contact_m"], 8 * FT * np.sin(np.radians([60.0, 90.0])), rtol=1e-15)
+
+
+def test_the_terminal_views_name_a_flat_lane_by_its_turn_radius(run):
+    many = run("ride", "--surface", "plane", "--turn-radius", "10:30:10", "--speed", "30km/h", "--format", "table")
+    assert many.exit_code == 0, many.stderr
+    assert "turn" in many.stdout and "radius" in many.stdout
+    globe = run("ride", "--diameter", "16ft", "--height", "0.8:2.4:0.8m", "--speed", "20km/h", "--format", "table")
+    assert globe.exit_code == 0 and "radius" not in globe.stdout

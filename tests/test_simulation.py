@@ -326,7 +326,8 @@ def test_orbits_that_do_not_exist_get_a_status_and_no_rows():
 def test_statuses_are_the_run_status_labels_with_their_reasons():
     """The summary's status texts are the RunStatus labels; every status a
     run can end in is one of STATUSES, with the status's own reason words."""
-    assert sim.STATUSES == ("completed", "contact_lost", "slips", "no_fit", "no_orbit", "failed")
+    assert sim.STATUSES == ("completed", "contact_lost", "slips", "no_fit", "no_orbit", "failed", "hits_floor",
+                            "over_the_top")
     assert [sim.RunStatus[name.upper()].label for name in sim.STATUSES] == list(sim.STATUSES)
     starts = sim.Starts.concat([
         sim.horizontal_starts(TABLE1, np.array([60.0, 30.0]), np.array([10.0, 60.0])),

@@ -10,7 +10,10 @@ import numpy as np
 import deathsphere
 from deathsphere.model import Setup
 from deathsphere.simulation import horizontal_starts
-from deathsphere.simulation.bodies import MACHINE, PAPER
+from deathsphere.physics.ground import Cylinder, Plane
+from deathsphere.records.paper_bodies import WHEEL
+from deathsphere.simulation.bodies import MACHINE, ON_GROUND, PAPER
+from deathsphere.simulation.ground_starts import ground_starts
 from deathsphere.simulation.body import Body
 from deathsphere.simulation.event import Event
 from deathsphere.simulation.status import RunStatus
@@ -18,7 +21,7 @@ from deathsphere.simulation.two_wheeler import TWO_WHEELER
 
 
 def test_every_model_keeps_the_protocol():
-    for model in (PAPER, MACHINE, TWO_WHEELER):
+    for model in (PAPER, MACHINE, ON_GROUND, TWO_WHEELER):
         assert isinstance(model, Body), model.name
         assert len(model.state_names) == len(model.state_units)
 
@@ -30,6 +33,21 @@ def test_the_events_are_event_records_with_run_statuses():
     for e in events:
         assert isinstance(e, Event) and e.terminal and e.direction == -1 and e.reason == e.status.reason
         assert e(0.0, starts.state.reshape(-1)) > 0
+
+
+def test_a_wall_adds_its_floor_and_top_and_flat_ground_neither():
+    on_drum = ground_starts(Cylinder(5.0, 3.0), WHEEL, 2.0, {"alpha_deg": 20.0}, a=0.3, k=0.5, g=9.81)
+    events = ON_GROUND.terminal_events(on_drum.params, np.array([10.0]))
+    assert [e.status for e in events] == [RunStatus.CONTACT_LOST, RunStatus.SLIPS, RunStatus.HITS_FLOOR,
+                                          RunStatus.OVER_THE_TOP]
+    y = on_drum.state.reshape(-1)
+    # on the steady orbit 2 m up a 3 m wall: the contact 1 m below the top; the centre a sin(alpha)
+    # above the contact (eq. 11: e3 = cos(alpha) r - sin(alpha) z) and the rim's lowest point
+    # a sqrt(1 - e1_z^2) = a sin(alpha) below the centre, so 2 m above the floor
+    assert abs(events[3](0.0, y) - 1.0) < 1e-12
+    assert abs(events[2](0.0, y) - 2.0) < 1e-12
+    flat = ground_starts(Plane(), WHEEL, 5.0, {"alpha_deg": 45.0}, a=0.3, k=0.5, g=9.81)
+    assert len(ON_GROUND.terminal_events(flat.params, np.array([10.0]))) == 2
 
 
 def test_one_solve_ivp_call_in_the_package():

@@ -4,11 +4,13 @@ physics (:mod:`deathsphere.physics.fall`), vectorised over falls.
 
 At time t the rider's speed drops to a fraction of his speed, along his
 direction of travel.  A horizontal rider rides on where some tilt at his
-height holds the new speed within mu (``horizontal_holds``), else he leaves
-the wall at once; a looper keeps his energy until the loop's normal force
+height holds the new speed within mu (``horizontal_holds``; on a drum or a
+cone ``horizontal_holds_on``, by the lane's height), else he leaves the
+wall at once; a looper keeps his energy until the loop's normal force
 vanishes (``loop_departure``: rides on over the top, swings below the
 equator, or falls where it vanishes).  From contact loss his centre of mass
-flies a parabola to the globe (``ballistic_landing``).  During the flight
+flies a parabola to the globe (``ballistic_landing``), or on a drum or a
+cone to its wall or its floor (``landing_on``, docs/show.md sec. 11).  During the flight
 he is a sphere of radius width/2 about his centre of mass, each other rider
 his envelope in his own lane (the others do not react); the least clearance
 is sampled at :data:`FLIGHT_SAMPLES` instants of the flight (``fall``
@@ -26,10 +28,12 @@ from deathsphere.physics.fall import (
     ballistic_landing,
     drop_velocity,
     horizontal_holds,
+    horizontal_holds_on,
     loop_departure,
     loop_state,
 )
 from deathsphere.act.envelope import point_segment_distance
+from deathsphere.physics.landing import landing_on
 from deathsphere.physics.machine_arrays import machine_arrays
 
 #: Instants of each flight at which the clearance to every other rider is sampled.
@@ -60,8 +64,9 @@ def _one_lane(lane, globe, t, fraction) -> dict:
            "swing_height": np.full(n, np.nan)}
     if lane.kind == "horizontal":
         speed = np.sqrt(np.sum(kin["v_com"] ** 2, axis=0))
-        held = horizontal_holds(lane.theta, fraction * speed, lane.alpha, globe.ground, globe.g, machine_arrays(m),
-                                globe.mu)["holds"]
+        # the globe's lane by its polar angle, a wall's by its height (lanes.py)
+        holds, where = (horizontal_holds, lane.theta) if globe.is_globe else (horizontal_holds_on, lane.height)
+        held = holds(where, fraction * speed, lane.alpha, globe.ground, globe.g, machine_arrays(m), globe.mu)["holds"]
         falls = ~held
         out["outcome"] = np.where(falls, FALLS, RIDES_ON).astype(np.int8)
         out["t_lost"] = np.where(falls, t, np.nan)
@@ -107,8 +112,18 @@ def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPL
             for key, val in part.items():
                 res[key][..., sel] = val
     flying = res["outcome"] == FALLS
+    (_land_on_the_globe if globe.is_globe else _land_on_a_wall)(res, globe, flying)
+    flight = res["fall_time"]
+    res["clearance"], res["t_min"] = _victims(lanes, globe.g, rider, res, flight, samples)
+    return res
+
+
+def _land_on_the_globe(res: dict, globe, flying) -> None:
+    """The flights of ``res`` in the globe (:func:`ballistic_landing`, the
+    sphere's quartic), into ``res``: theta and phi of the contact lost and
+    of the landing point, heights above the floor."""
     land = ballistic_landing(np.where(flying, res["x0"], 0.0), np.where(flying, res["v0"], 0.0), globe.ground,
-                              globe.g)
+                             globe.g)
     flight = np.where(flying, land["t_land"], np.nan)
     res["theta_lost"], res["phi_lost"] = _angles(res["contact_lost"], globe.r)
     res["fall_time"] = flight
@@ -118,8 +133,22 @@ def simulate_falls(lanes, globe, rider, t, fraction, samples: int = FLIGHT_SAMPL
     # heights above the floor (the globe is centred at the origin, z up)
     res["height_lost"] = res["contact_lost"][2] + globe.r
     res["height_land"] = np.where(flying, land["x_land"][2], np.nan) + globe.r
-    res["clearance"], res["t_min"] = _victims(lanes, globe.g, rider, res, flight, samples)
-    return res
+
+
+def _land_on_a_wall(res: dict, globe, flying) -> None:
+    """The flights of ``res`` on a drum or a cone (:func:`landing_on`: to
+    the wall or the floor), into ``res``: theta is the globe's (NaN here),
+    phi the azimuth about the axis, heights above the floor."""
+    land = landing_on(np.where(flying, res["x0"], 0.0), np.where(flying, res["v0"], 0.0), globe.ground, globe.g)
+    flight = np.where(flying, land["t_land"], np.nan)
+    x_land = np.where(flying, land["x_land"], np.nan)
+    res["fall_time"] = flight
+    res["t_land"] = res["t_lost"] + flight
+    res["impact_speed"] = np.where(flying, land["impact_speed"], np.nan)
+    for end, x in (("lost", res["contact_lost"]), ("land", x_land)):
+        res[f"theta_{end}"] = np.full(flight.shape, np.nan)
+        res[f"phi_{end}"] = np.degrees(np.arctan2(x[1], x[0])) % 360.0
+        res[f"height_{end}"] = x[2] - globe.ground.lowest
 
 
 def flight_point(x0, v0, s, g):

@@ -29,7 +29,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.special import ellipj, ellipk, ellipkinc
 
 from deathsphere.act.plan import Plan, Rider
 from deathsphere.errors import ParameterError
@@ -145,6 +144,8 @@ class Lane:
 
     def _u(self, t):
         """Jacobi's argument u at the times t (u = K at the top)."""
+        from scipy.special import ellipk, ellipkinc  # a loop's only: importing scipy.special costs ~0.15 s
+
         m = self._m()
         beta0 = 0.5 * (math.pi - self.phase)
         t0 = 2.0 / self.rate_bottom * (ellipk(m) - ellipkinc(beta0, m))   # time from the top to the phase
@@ -158,6 +159,8 @@ class Lane:
 
 def _loop_angle(u, rate_bottom, m):
     """psi and psidot of the loop at Jacobi's argument u (module docstring)."""
+    from scipy.special import ellipj
+
     _, _, dn, beta = ellipj(u, m)
     return math.pi - 2.0 * beta, rate_bottom * dn
 
@@ -296,6 +299,8 @@ def vertical_lanes_of(riders: list[Rider], ground, globe) -> list:
                 f"rider {rider.name!r}: v_top: this vertical lane is not feasible ({STATUS_LABELS[orbit['status']]}: "
                 f"{REASON_TEXT[orbit['reason']]}; least top speed {orbit['v_top_min']:.3g} m/s)", "v_top"))
             continue
+        from scipy.special import ellipk
+
         top, bottom = float(orbit["omega_top"]), float(orbit["omega_bottom"])
         m = 1.0 - (top / bottom) ** 2
         out.append(Lane(name=rider.name, kind="vertical", machine=rider.machine, width_m=rider.width,

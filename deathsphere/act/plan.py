@@ -66,7 +66,7 @@ class Globe:
 
     @property
     def is_globe(self) -> bool:
-        """True on the globe (the sphere): vertical loops and falls are its physics only."""
+        """True on the globe (the sphere): vertical loops are its physics only (a fall's flight lands on any arena)."""
         return is_globe(self.run.ground)
 
     r = property(lambda self: self.run.r, doc="The globe's radius [m].")

@@ -1,9 +1,10 @@
-"""``ride`` on the wall of death's drum and the well of death's cone: a
-machine's steady laps on any ground but the globe (beyond the paper;
+"""``ride`` on the wall of death's drum, the well of death's cone, flat
+ground and a profile: a machine's steady laps on any ground but the globe (beyond the paper;
 docs/machine.md, "On any surface of revolution" and "The wall of death").
 
 The globe stays on :mod:`deathsphere.api.rides` (its tables byte for
-byte); this module takes the lane by its height up the wall, the tilt,
+byte); this module takes the lane by its height up the wall (on flat
+ground its turn radius), the tilt,
 the contact's speed, the centre of mass's speed or the lap time, and gives the same columns, theta empty and the
 arena's in ``surface``, ``rho_contact_m``, ``wall_angle_deg``.
 """
@@ -19,20 +20,22 @@ from deathsphere.params import ParameterError, reduce_angle, shown_number
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
 from deathsphere.physics.machine_surface import ride_orbit_on
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import Reason, Status
+from deathsphere.requests.arena import lane_key
 from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks through the API)
 
 __all__ = ["ride_on_surface", "STABILITY_NOT_ON_SURFACE"]
 
 #: What the stability columns say on a drum or a cone.
-STABILITY_NOT_ON_SURFACE = ("not analysed: the machine's stability is derived on the globe only "
-                            "(docs/machine.md sec. 5)")
+STABILITY_NOT_ON_SURFACE = methods.NOT_ANALYSED_OFF_GLOBE
 
 
 def _lanes(ground, height) -> np.ndarray:
     """The heights, each on the wall: above the ground's highest lane (its
-    wall's top, a cone's apex) refused in one line."""
-    top = ground.highest_lane
+    wall's top, a cone's apex, a profile's last sample) refused in one line;
+    flat ground has no top (its lane is a turn radius)."""
+    top = getattr(ground, "highest_lane", math.inf)
     if np.any(height > top):
         raise ParameterError(f"height must be at most {shown_number(top)} m on this {ground.name}, its highest "
                              f"lane (the wall's top, or a cone's apex; got {shown_number(float(np.max(height)))} m)",
@@ -43,9 +46,29 @@ def _lanes(ground, height) -> np.ndarray:
 def floor_radius(ground) -> float:
     """The arena's radius at its floor [m]: the contact's distance from the
     axis on the lowest lane (the ground protocol's answer, whatever the
-    ground)."""
+    ground); NaN for a ground with no radius to name (flat ground, a
+    profile: the ``r_m`` column is empty there, as ``orbit``'s)."""
+    if not hasattr(ground, "radius"):
+        return math.nan
     rho, _ = ground.contact(np.zeros(1))
     return float(np.asarray(rho).reshape(-1)[0])
+
+
+def _lane_typed(ground, typed: dict):
+    """The lane's keyword on ``ground`` (``height`` up a wall, ``turn_radius``
+    on flat ground: requests.arena's ``lane_key``) and its values; the other
+    one typed is refused naming it."""
+    key = lane_key(ground)
+    other = "turn_radius" if key == "height" else "height"
+    if typed.get(other) is not None:
+        where = ("a lane is its turn_radius (the contact's distance from the turn's centre)" if key == "turn_radius"
+                 else "a lane is its height above the floor")
+        raise ParameterError(f"{other} is not a lane on the {ground.name}: {where}", other)
+    if typed.get(key) is None:
+        what = ("the contact's distance from the turn's centre" if key == "turn_radius"
+                else f"the contact's height above the {ground.name}'s floor")
+        raise ParameterError(f"give {key} ({what})", key, missing=True)
+    return key, typed[key]
 
 
 def ride_on_surface(ground, typed: dict, m, options, rides):
@@ -55,14 +78,14 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
     ``options`` the :class:`~deathsphere.api.rides.RideOptions`, ``rides``
     the module whose table builder and rider's table it shares."""
     if typed.get("theta") is not None:
-        raise ParameterError(f"theta is the globe's polar angle: on a {ground.name} give height (the contact's "
-                             "height above the floor)", "theta")
+        raise ParameterError(f"theta is the globe's polar angle: on a {ground.name} give {lane_key(ground)} (the "
+                             + ("contact's distance from the turn's centre)" if lane_key(ground) == "turn_radius"
+                                else "contact's height above the floor)"), "theta")
     for key in ("vertical", "v_top"):
         if typed.get(key):
-            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name}", key)
-    if typed.get("height") is None:
-        raise ParameterError(f"give height (the contact's height above the {ground.name}'s floor)", "height",
-                             missing=True)
+            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name} (a loop over the top "
+                                 f"needs a roof; give {lane_key(ground)} for a horizontal lane)", key)
+    at, where = _lane_typed(ground, typed)
     holds = [key for key in ("alpha", "speed", "com_speed", "period") if typed.get(key) is not None]
     if len(holds) != 1:
         raise ParameterError("give exactly one of alpha, speed (the contact's), com_speed (the centre of mass's) "
@@ -70,17 +93,17 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
                              holds[1] if len(holds) > 1 else "alpha", missing=not holds)
     how = holds[0]
     by_value = how != "alpha"
-    checked = {"height": checked_array("height", typed["height"]), how: checked_array(how, typed[how]),
+    checked = {at: checked_array(at, where), how: checked_array(how, typed[how]),
                **{k: checked_array(k, typed[k]) for k in ("g", "mu", "max_g")}}
     refuse_large_grid(grid_shape(checked), command="ride", limit=rides.MAX_RIDE_ROWS,
                       per_point=TILTS_PER_SPEED if by_value else 1)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     radius = floor_radius(ground)
-    if m.wheel_radius >= radius:
+    if m.wheel_radius >= radius:        # a drum or a cone; elsewhere each lane's fit is its status (MS6)
         raise ParameterError(f"the wheel (a = {m.wheel_radius:g} m) does not fit in a {ground.name} of radius "
                              f"{radius:g} m at its floor (needs r > a)", "r")
-    height, g, mu, max_g = _lanes(ground, flat["height"]), flat["g"], flat["mu"], flat["max_g"]
+    height, g, mu, max_g = _lanes(ground, flat[at]), flat["g"], flat["mu"], flat["max_g"]
     arrays = machine_arrays(m)
     if by_value:
         value = flat[how]
@@ -101,16 +124,19 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
             res["status"] = np.full(req.size, Status.NO_ORBIT, dtype=np.int8)
             res["reason"] = np.full(req.size, Reason.MACHINE_NO_ALPHA, dtype=np.int8)
         echo = {"speed": "v_contact_m_s", "com_speed": "v_cm_m_s", "period": "period_s"}[how]
-        given = {echo: value[req], "height_m": height[req]}
+        given = {echo: value[req]} if at != "height" else {echo: value[req], "height_m": height[req]}
     else:
         req = np.arange(n)
         alpha = np.radians(reduce_angle(flat["alpha"]))
         res = {k: np.asarray(v).reshape(-1) for k, v in
                ride_orbit_on(height, alpha, ground, g, arrays, mu, max_g).items()}
-        given = {"alpha_deg": flat["alpha"].astype(float), "height_m": height}
-    # every row's lane, with a tilt or not
-    rho, _ = ground.contact(height[req])
-    res["height"], res["rho_contact"] = height[req], np.asarray(rho, dtype=float)
+        given = {"alpha_deg": flat["alpha"].astype(float)}
+        if at == "height":
+            given["height_m"] = height
+    # every row's lane, with a tilt or not (on flat ground its height is 0, the lane its turn radius)
+    rho, z = ground.contact(height[req])
+    res["height"] = np.asarray(z, dtype=float) - ground.lowest
+    res["rho_contact"] = np.asarray(rho, dtype=float)
     res["wall_angle"] = np.asarray(ground.wall_angle(height[req]), dtype=float)
     run = rides.RowRun(np.full(req.size, radius), g[req], mu[req], max_g[req])
     table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=False, given=given,

@@ -30,6 +30,7 @@ from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate, orbits_for_rate, orbits_for_speed
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_presets import DEFAULT_MACHINE, as_machine
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.requests.decode import decode_rider, decode_run
 from deathsphere.requests.keys import Keys
@@ -51,12 +52,12 @@ RIDE_COLUMNS = (
     "max_g", "status", "reason", "omega_rad_s", "period_s", "v_cm_m_s", "v_cm_km_h", "v_contact_m_s",
     "wheel_spin_rad_s", "com_orbit_radius_m", "normal_per_mass_m_s2", "friction_per_mass_m_s2", "mu_required",
     "load_g", "head_clearance_m", "stability", "stability_method", "growth_rate_1_s", "freq_slow_rad_s",
-    "freq_fast_rad_s", "surface", "rho_contact_m", "wall_angle_deg",
+    "freq_fast_rad_s", "surface", "rho_contact_m", "wall_angle_deg", "stability_kind",
 )
 
-#: What the stability columns say on every analysed row (docs/machine.md sec. 5).
-STABILITY_METHOD = ("exact linearisation of the machine with its steering locked (docs/machine.md sec. 5): "
-                    "an unsteered machine is unstable on most orbits; a rider steers")
+#: What ``stability_method`` says on every analysed row (docs/machine.md sec. 5; its sentence:
+#: :data:`deathsphere.physics.stability.methods.METHOD_TEXT`).
+STABILITY_METHOD = methods.EXACT_STEER_LOCKED
 
 _PHYS = {"omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s", "v_contact": "v_contact_m_s",
          "spin": "wheel_spin_rad_s", "r_g": "com_orbit_radius_m", "normal": "normal_per_mass_m_s2",
@@ -131,7 +132,7 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
             cols["v_cm_km_h"] = np.round(cols[col] * 3.6, 9)
     has_orbit = (status == Status.OK) | (status == Status.SLIPS) | (status == Status.OVER_G)
     blank = np.full(n, "", dtype=object)
-    cols["stability"], cols["stability_method"] = blank, blank.copy()
+    cols["stability"], cols["stability_method"], cols["stability_kind"] = blank, blank.copy(), blank.copy()
     for key in ("growth_rate_1_s", "freq_slow_rad_s", "freq_fast_rad_s"):
         cols[key] = np.full(n, np.nan)
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
@@ -139,13 +140,13 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
         cols["stability_method"][has_orbit] = stability_note
     _arena_columns(cols, res, surface, run.r, theta, n)
     if rows.size:
-        from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, machine_stability, yaw_is_determined
-        from deathsphere.physics.stability.verdict import VERDICT_LABELS
+        from deathsphere.physics.machine_dynamics import machine_stability, yaw_is_determined
+        from deathsphere.physics.stability.verdict import VERDICT_LABELS, stability_kind
 
         rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
         arrays = machine_arrays(m)
         if not yaw_is_determined(arrays):
-            cols["stability_method"][rows] = "not analysed: " + YAW_UNDETERMINED
+            cols["stability_method"][rows] = methods.NOT_ANALYSED_POINT_MASS
             rows = rows[:0]
         for start in range(0, rows.size, STABILITY_CHUNK):
             idx = rows[start:start + STABILITY_CHUNK]
@@ -155,6 +156,7 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
             cols["growth_rate_1_s"][idx] = st["growth_rate"]
             cols["freq_slow_rad_s"][idx] = st["freq_slow"]
             cols["freq_fast_rad_s"][idx] = st["freq_fast"]
+            cols["stability_kind"][idx] = stability_kind(st["growth_rate"], st["rate_scale"])
     return Table({name: cols[name] for name in RIDE_COLUMNS}, shape=shape, axes=axes)
 
 
@@ -175,7 +177,8 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
          height=None, com_speed=None, period=None, only=None, stability: bool = True, vertical: bool = False, v_top=None, summary: bool = False,
          mass=None, com_height=None, wheel_radius=None, tyre_radius=None, roll_inertia=None, pitch_inertia=None,
          yaw_inertia=None, spin_inertia=None, head_height=None, flat: bool = False, steer=None,
-         steer_torque=None, surface=None, wall_angle=None, wall_height=None) -> Table:
+         steer_torque=None, surface=None, wall_angle=None, wall_height=None, profile=None,
+         turn_radius=None) -> Table:
     """Steady horizontal orbits of a machine inside the globe: ``deathsphere ride``.
 
     Beyond the paper (docs/machine.md eqs. M1-M12): a single-contact
@@ -210,8 +213,14 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         wall's top above the floor (a lane above it is refused).  On a drum
         or a cone the lane is given by ``height`` (theta is refused), one
         radius, no vertical loops and no stability analysis (the columns
-        say so).  A two-wheeler (``steer``, ``steer_torque``) rides them
-        too, with its stability (docs/two-wheeler.md sec. 12).
+        say so).  ``"plane"``: flat ground, a lane by ``turn_radius``;
+        ``"profile"``: the meridian ``profile`` (a CSV file's path or a
+        :class:`~deathsphere.physics.ground.Profile`), a lane by ``height``.
+        A two-wheeler (``steer``, ``steer_torque``) rides the drum and the
+        cone too, with its stability (docs/two-wheeler.md sec. 12).
+    profile, turn_radius : str or Profile, float or array_like
+        The meridian of ``surface="profile"``; the contact's distance from
+        the turn's centre [m] on ``surface="plane"``.
     g, mu, max_g : gravity [m/s^2]; friction available; the largest load_g
         (|contact force| / (m g), what the rider feels) allowed.
     speed : float or array_like
@@ -295,14 +304,18 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         mass=mass, com_height=com_height, a=wheel_radius, tyre_radius=tyre_radius, roll_inertia=roll_inertia,
         pitch_inertia=pitch_inertia, yaw_inertia=yaw_inertia, spin_inertia=spin_inertia, head_height=head_height)
     options = RideOptions.checked(stability=stability, summary=summary, only=only)
-    if surface is not None or wall_angle is not None or wall_height is not None:
-        ground = _arena(surface, r, diameter, wall_angle, wall_height)
+    if surface is not None or wall_angle is not None or wall_height is not None or profile is not None:
+        ground = _arena(surface, r, diameter, wall_angle, wall_height, profile)
         if ground is not None:
             from deathsphere.api import ride_surfaces
 
             typed = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "com_speed": com_speed,
-                     "period": period, "vertical": vertical, "v_top": v_top, "g": g, "mu": mu, "max_g": max_g}
+                     "period": period, "vertical": vertical, "v_top": v_top, "g": g, "mu": mu, "max_g": max_g,
+                     "turn_radius": turn_radius}
             return ride_surfaces.ride_on_surface(ground, typed, body, options, sys.modules[__name__])
+    if turn_radius is not None:
+        raise ParameterError("turn_radius is the lane on flat ground (surface plane); on the sphere give theta or "
+                             "height", "turn_radius")
     vertical = checked_flag("vertical", vertical)
     if vertical and options.summary:
         raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop", "summary")
@@ -336,19 +349,16 @@ class RideOptions:
         return table if self.keep is None else table[np.isin(table["status"], self.keep)]
 
 
-def _arena(surface, r, diameter, wall_angle, wall_height):
-    """The drum or cone the keywords name (requests.arena), or None for the
-    globe, surface "sphere", which rides as it always has (a wall's keyword
-    on it is refused there).  The machine rides the globe, the drum and the
-    cone (docs/machine.md, "On any surface of revolution"); flat ground and
-    a profile are the paper's bodies' so far (docs/surfaces.md)."""
-    from deathsphere.physics.ground import Cone, Cylinder, Sphere
+def _arena(surface, r, diameter, wall_angle, wall_height, profile=None):
+    """The ground the keywords name (requests.arena: a drum, a cone, flat
+    ground, a profile), or None for the globe, surface "sphere", which rides
+    as it always has (a wall's keyword on it is refused there); the machine
+    takes every ground through its protocol (docs/machine.md, "On any
+    surface of revolution")."""
+    from deathsphere.physics.ground import Sphere
     from deathsphere.requests.arena import arena
 
-    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height)
-    if not isinstance(ground, (Sphere, Cylinder, Cone)):
-        raise ParameterError(f"the machine rides the sphere, a cylinder or a cone, not a {ground.name} (the "
-                             "paper's bodies take it: deathsphere orbit --surface)", "surface")
+    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
     return None if isinstance(ground, Sphere) else ground
 
 
@@ -427,7 +437,8 @@ _HOW = {Tilt: lambda by: ("alpha", by.alpha), ContactSpeed: lambda by: ("speed",
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
 SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius",
-                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
+                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
+                       "profile", "turn_radius")
 
 
 def refuse_single_contact(given: dict) -> None:
@@ -545,7 +556,9 @@ def _by_speed(th, how: str, v, r, g, mu, max_g, m: Machine, stability: bool, the
 SUMMARY_COLUMNS = ("height_m", "theta_deg", "speeds_tried", "speeds_ok", "v_min_km_h", "v_max_km_h",
                    "lean_min_deg", "lean_max_deg", "load_min_g", "load_max_g", "mu_max", "head_clearance_min_m",
                    "limits", "mu_available", "max_g", "slips", "over_g", "head_hits", "no_contact", "no_orbit",
-                   "v_contact_min_m_s", "v_contact_max_m_s")
+                   "v_contact_min_m_s", "v_contact_max_m_s",
+                   # the contact point's distance from the axis: on flat ground the lane itself (its turn radius)
+                   "rho_contact_m")
 #: Why a speed fails, as counted in the rider's table: column -> (status,
 #: and the reason when one status has several causes).
 FAILURES = {"slips": ("slips", None), "over_g": ("over_g", None), "head_hits": ("no_fit", Reason.HEAD_HITS),
@@ -608,6 +621,7 @@ def ride_summary(table: Table, groups=None, tried: str = "speeds") -> Table:
             return float(fn(vals)) if vals.size else math.nan
 
         rows["height_m"].append(first("height_m"))
+        rows["rho_contact_m"].append(first("rho_contact_m"))
         rows["theta_deg"].append(first("theta_deg"))
         rows[tried].append(int(np.unique(rq).size))
         rows[ok_name].append(int(np.unique(rq[ok]).size))

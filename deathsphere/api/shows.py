@@ -105,14 +105,6 @@ class ShowResult:
         return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
                 for lane in self.lanes}
 
-    def _on_the_globe(self, name: str) -> None:
-        """ParameterError naming ``name`` on a drum or a cone: a fall's
-        physics (where contact is lost, the flight, the landing on the
-        ground) is the globe's (docs/show.md, "On the wall of death")."""
-        if not self.plan.globe.is_globe:
-            raise ParameterError(f"a fall is the globe's: not on a {self.plan.globe.ground.name} (where a rider "
-                                 "leaves a wall and lands on its floor is not modelled)", name)
-
     def fall(self, rider: str, t: float, speed_fraction: float = 0.5) -> Table:
         """At time t [s] the rider's speed drops to ``speed_fraction`` (0 = a
         dead stop .. 1) of his speed at that instant, along his direction of
@@ -124,7 +116,6 @@ class ShowResult:
         victim when he is alone)."""
         from deathsphere.act.falls import refine_victim, simulate_falls
 
-        self._on_the_globe("rider")
         names = [lane.name for lane in self.lanes]
         if rider not in names:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
@@ -150,6 +141,28 @@ class ShowResult:
                          "crosses_lane": False})
         return _rows_table(rows, FALL_COLUMNS)
 
+    def fall_path(self, rider: str, t: float, speed_fraction: float = 0.5, points: int = 64) -> dict | None:
+        """The flight of the fall :meth:`fall` reports, as points: ``t``
+        (points,) [s] from contact lost to the landing and ``com`` (3,
+        points) [m] his centre of mass there (the parabola from where and
+        how he leaves the wall); None where he does not fly (he rides on or
+        swings).  What the 3-D view draws on a drum or a cone, where the
+        landing's height and azimuth do not fix the point (on the floor its
+        distance from the axis is free)."""
+        from deathsphere.act.falls import flight_point, simulate_falls
+
+        names = [lane.name for lane in self.lanes]
+        if rider not in names:
+            raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
+        t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
+        speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
+        res = simulate_falls(self.lanes, self.plan.globe, [names.index(rider)], [t], [speed_fraction])
+        flight = float(res["fall_time"][0])
+        if not math.isfinite(flight):
+            return None
+        s = np.linspace(0.0, flight, max(2, int(points)))
+        return {"t": float(res["t_lost"][0]) + s, "com": flight_point(res["x0"], res["v0"], s, self.plan.globe.g)}
+
     def falls(self, n: int, seed: int = 0, scheduler=None, progress=None) -> tuple[Table, Table]:
         """Monte Carlo of ``n`` falls: a random rider, a random time in the
         act, a random speed fraction in [0, 1), drawn from ``seed``;
@@ -165,7 +178,6 @@ class ShowResult:
         from deathsphere.parallel import ordered_map
         from deathsphere.act.falls import fall_chunk
 
-        self._on_the_globe("n")
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= MAX_FALLS:
             raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:

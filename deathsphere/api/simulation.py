@@ -22,13 +22,16 @@ from deathsphere.api.arguments import (
     checked_scalar,
     checked_setup,
 )
+from deathsphere.constants import SIDES
 from deathsphere.model import Setup
+from deathsphere.physics.ground import Sphere
 from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
-from deathsphere.requests.decode import decode_lane, decode_paper_lane, decode_run
+from deathsphere.requests.arena import names_a_wall
+from deathsphere.requests.decode import decode_lane, decode_paper_body, decode_paper_lane, decode_run
 from deathsphere.requests.keys import Keys
-from deathsphere.requests.records import (ComSpeed, ContactSpeed, Horizontal, PaperBody, Rate, RiderRequest, Run,
-                                          Solver, Spin, Theta, Tilt, Vertical)
+from deathsphere.requests.records import (ComSpeed, ContactSpeed, Height, Horizontal, PaperBody, Rate, RiderRequest,
+                                          Run, Solver, Spin, Theta, Tilt, Vertical)
 from deathsphere.table import Table
 
 #: solve_ivp's methods and the frames :func:`simulate` integrates in
@@ -43,11 +46,12 @@ METHODS_LOWER = tuple(m.lower() for m in METHODS)
 FRAMES = ("turning", "lab")
 
 
-def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None, g=G,
+def simulate(theta=None, alpha=None, *, body: str | None = None, side: str = "inside", a=None, r=R, k=None, g=G,
              mu=INF, omega3=None, omega=None, branch: int = 0, vertical: bool = False, v_top=None, perturb=0.0,
              periods=20.0, points_per_period=100, method: str = "DOP853", rtol: float = 1e-10,
              atol: float | None = None, frame: str = "turning", max_steps=1_000_000, speed=None,
-             diameter=None, machine=None, com_speed=None) -> tuple[Table, Table]:
+             diameter=None, machine=None, com_speed=None, surface="sphere", height=None, wall_angle=None,
+             wall_height=None, profile=None, turn_radius=None) -> tuple[Table, Table]:
     """Integrate the exact equations of motion from a steady orbit: ``deathsphere simulate``.
 
     Beyond the paper (docs/simulation.md): the Newton-Euler equations of a
@@ -58,7 +62,8 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
     Parameters
     ----------
     theta : float
-        Polar angle of the contact point [deg] (vertical: the cone angle).
+        Polar angle of the contact point [deg] (vertical: the cone angle);
+        on the globe it must be given, off it not (the lane is ``height``).
     alpha : float, optional
         Wheel: tilt of the steady orbit [deg].
     speed, com_speed, omega : float, optional
@@ -102,6 +107,26 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
     rtol, atol : float
         solve_ivp's tolerances (atol defaults to rtol, per scaled component).
     frame : {"turning", "lab"}
+    surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit`
+        (docs/surfaces.md): the globe (default), the wall of death's drum
+        (``"cylinder"``, ``diameter``, optional ``wall_height``), the well of
+        death's cone (``"cone"``, ``wall_angle``), flat ground (``"plane"``)
+        or a meridian's samples (``"profile"``); or a ground record.  Off
+        the globe the paper's wheel (given ``alpha``) or ball (``omega3``
+        and ``branch``, or ``omega``) rides inside, from the steady orbit
+        of ``orbit`` on the lane (docs/simulation.md, "On any ground"): its
+        equations of motion are docs/dynamics.md sec. 7; the run also
+        stops with ``hits_floor`` (the body's lowest point reaches the
+        floor at the wall's foot) and ``over_the_top`` (the contact passes
+        the wall's top); ``perturb`` tilts a wheel about its direction of
+        travel and turns a ball's velocity up the wall.  The series gains
+        ``height_m`` and ``rho_contact_m``, the summary ``surface``,
+        ``height_m``, ``max_height_drift_m`` and ``max_rho_drift_m``;
+        ``theta_deg`` is empty there.
+    height : float, optional
+        Off the globe: the lane's height above the surface's lowest point [m].
+    turn_radius : float, optional
+        On flat ground: the lane, the contact's distance from the turn's centre [m].
     max_steps : int
         The step budget: a run estimated to need more steps (a body that
         spins much faster than it orbits, i.e. a small a/r) is refused
@@ -123,12 +148,17 @@ def simulate(theta, alpha=None, *, body: str | None = None, side: str = "inside"
     >>> series, summary = deathsphere.simulate(60, 10, periods=0.1, points_per_period=20)
     >>> len(series), str(summary["status"][0])
     (3, 'completed')
+    >>> series, summary = deathsphere.simulate(alpha=10, surface="cylinder", diameter="32ft", height=2,
+    ...                                        periods=0.1, points_per_period=20)
+    >>> str(summary["surface"][0]), float(series["height_m"][-1]), str(summary["status"][0])
+    ('cylinder', 2.0, 'completed')
     """
     typed = {"theta": theta, "alpha": alpha, "body": body, "side": side, "a": a, "r": r, "k": k, "g": g, "mu": mu,
              "omega3": omega3, "omega": omega, "branch": branch, "vertical": vertical, "v_top": v_top,
              "perturb": perturb, "periods": periods, "points_per_period": points_per_period, "method": method,
              "rtol": rtol, "atol": atol, "frame": frame, "max_steps": max_steps, "speed": speed,
-             "com_speed": com_speed, "diameter": diameter, "machine": machine}
+             "com_speed": com_speed, "diameter": diameter, "machine": machine, "surface": surface, "height": height,
+             "wall_angle": wall_angle, "wall_height": wall_height, "profile": profile, "turn_radius": turn_radius}
     return prepare_simulation(*simulation_request(typed)).run()
 
 
@@ -171,6 +201,12 @@ def simulation_request(typed: Mapping) -> tuple[RiderRequest, Run, SimulationOpt
     if unknown:
         raise TypeError(f"simulation_request() got an unexpected key {unknown[0]!r}")
     given = {**keywords, "record_states": False, **typed}
+    if names_a_wall(given["surface"], given["wall_angle"], given["wall_height"], given["profile"]):
+        return _wall_request(given)
+    for key in ("height", "turn_radius"):
+        if given[key] is not None:
+            raise ParameterError(f"{key} is a lane off the globe (surface cylinder, cone, plane or profile); on the "
+                                 "sphere give theta", key)
     if given["theta"] is None:
         raise ParameterError("give theta (the steady orbit's polar angle, deg)", "theta", missing=True)
     if given["machine"] is not None:
@@ -184,6 +220,53 @@ def simulation_request(typed: Mapping) -> tuple[RiderRequest, Run, SimulationOpt
     run = dataclasses.replace(run, solver=solver, periods=periods)
     rider = _machine_rider(given, run) if given["machine"] is not None else _paper_rider(given, run)
     return dataclasses.replace(rider, kick=kick), run, options
+
+
+def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]:
+    """:func:`simulation_request` off the globe (docs/simulation.md, "On any
+    ground"): the arena from its keywords, the lane by its height (on flat
+    ground its turn radius), the paper's wheel by its tilt or ball by its
+    spin or rate, inside."""
+    from deathsphere.requests.arena import arena, lane_key
+
+    for key, why in (("machine", "a machine's run rides the globe"),
+                     ("theta", "theta is the sphere's polar angle"),
+                     ("v_top", "vertical loops are the globe's")):
+        if given[key] is not None:
+            raise ParameterError(f"{why}: on another surface simulate the paper's wheel or ball on a lane by its "
+                                 "height (on flat ground its turn_radius)", key)
+    if given["vertical"] is not False:
+        raise ParameterError("vertical loops are the globe's: on another surface the run starts on a horizontal "
+                             "lane", "vertical")
+    ground = arena(given["surface"], None if given["r"] is R else given["r"], given["diameter"], given["wall_angle"],
+                   given["wall_height"], given["profile"])
+    key = lane_key(ground)
+    other = "turn_radius" if key == "height" else "height"
+    if given[other] is not None:
+        raise ParameterError(f"{other} is not a lane of the {ground.name}: give its {key}", other)
+    if given[key] is None:
+        raise ParameterError(f"on the {ground.name} give the lane's {key}", key, missing=True)
+    run = Run(ground=ground, g=_read("g", given["g"]), mu=_read("mu", given["mu"]))
+    solver, periods, kick, options = _run_options(given)
+    run = dataclasses.replace(run, solver=solver, periods=periods)
+    kind = decode_paper_body(WHEEL if given["body"] is None else given["body"])
+    if not kind.rolls:
+        raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)", "body")
+    if checked_choice("side", given["side"], SIDES) != "inside":
+        raise ParameterError(f"on the {ground.name} the bodies ride inside (the equations of motion off the globe "
+                             "are written for the inside)", "side")
+    a = _read("a", A if given["a"] is None else given["a"])
+    k = kind.default_k if given["k"] is None else _read("k", given["k"])
+    if not k > 0:
+        raise ParameterError("simulate needs k > 0: at k = 0 the equations of motion are singular", "k")
+    lane = decode_paper_lane({**given, "vertical": False}, kind, _read,
+                             at=Height(_read(key, given[key])))
+    if isinstance(kind, Wheel) and not isinstance(lane.by, Tilt):
+        held = next(name for name in ("speed", "com_speed", "omega") if given[name] is not None)
+        raise ParameterError(f"on the {ground.name} a wheel's orbit is given by its tilt alpha (its speed or rate "
+                             "is not yet solved for a tilt off the globe: docs/surfaces.md)", held)
+    rider = RiderRequest(body=PaperBody(kind=kind, side="inside", a=a, k=k), lane=lane, kick=kick)
+    return rider, run, options
 
 
 def _read(key: str, raw) -> float:
@@ -276,7 +359,10 @@ def prepare_simulation(rider: RiderRequest, run: Run, options: SimulationOptions
     """
     from deathsphere import simulation
 
-    starts = _paper_starts(rider, run) if isinstance(rider.body, PaperBody) else _machine_starts(rider, run)
+    if not isinstance(rider.body, PaperBody):
+        starts = _machine_starts(rider, run)
+    else:
+        starts = _paper_starts(rider, run) if isinstance(run.ground, Sphere) else _wall_starts(rider, run)
     solver = run.solver or Solver()
     try:
         return simulation.Simulation(starts, periods=run.periods, points_per_period=options.points_per_period,
@@ -309,6 +395,22 @@ def _paper_starts(rider: RiderRequest, run: Run):
     starts_of = partial(simulation.horizontal_starts, setup, theta, omega3=omega3, omega=omega, branch=by.branch,
                         perturb_deg=kick)
     return _echo_requested(_started(starts_of, None), **requested)
+
+
+def _wall_starts(rider: RiderRequest, run: Run):
+    """The start of a wheel's or a ball's run off the globe: the lane's steady
+    orbit (docs/surfaces.md S1-S7) kicked by ``rider.kick`` [deg]."""
+    from deathsphere.simulation.ground_starts import ground_starts
+
+    body, by = rider.body, rider.lane.by
+    kick = 0.0 if rider.kick is None else rider.kick
+    held = ({"alpha_deg": params.reduce_angle(by.alpha)} if isinstance(by, Tilt)
+            else {"omega": by.omega} if isinstance(by, Rate) else {"omega3": by.omega3, "branch": by.branch})
+    starts_of = partial(ground_starts, run.ground, body.kind, rider.lane.at.height, held, a=body.a, k=body.k, g=run.g,
+                        mu=run.mu, perturb_deg=kick)
+    alpha = by.alpha if isinstance(by, Tilt) else None
+    return _echo_requested(_started(starts_of, alpha), **{"rate": getattr(by, "omega", None),
+                                                          "omega3": getattr(by, "omega3", None)})
 
 
 def _started(starts_of, alpha):

@@ -109,9 +109,11 @@ def setup_options(*, multiple=(), gravity: bool = True, friction: bool = True):
     return decorator
 
 
-def surface_options():
-    """The arena of orbit and sweep (docs/surfaces.md): --surface and its
-    shape; the lane on it is --height (or --turn-radius on flat ground)."""
+def surface_options(lanes: bool = True):
+    """The arena of orbit, sweep and simulate (docs/surfaces.md): --surface
+    and its shape; the lane on it is --height (or --turn-radius on flat
+    ground), grid axes here (``lanes``; simulate, which has its own single
+    --height and --turn-radius, leaves them out)."""
     from deathsphere.api.orbits import SURFACES
 
     def decorator(f):
@@ -126,9 +128,7 @@ def surface_options():
             single("--profile", "profile", default=None, metavar="FILE",
                    help="With --surface profile: a CSV of the meridian's points from the lowest up, header "
                         "rho_m,z_m (or rho_ft,z_ft ...; docs/surfaces.md)."),
-            param_option("height", multiple=True),
-            param_option("turn_radius", multiple=True),
-        ]):
+        ] + ([param_option("height", multiple=True), param_option("turn_radius", multiple=True)] if lanes else [])):
             f = option(f)
         return f
     return decorator

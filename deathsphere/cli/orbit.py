@@ -100,7 +100,8 @@ def orbit_command(theta, alpha, omega3, omega, speed, com_speed, input, body, si
     Surfaces (docs/surfaces.md): the globe (default), --surface cylinder
     (the wall of death), cone (the well of death, a board track), plane or
     profile; a lane there is its --height above the lowest point (on flat
-    ground its --turn-radius), and the stability columns stay empty.
+    ground its --turn-radius); a wheel's --speed, --com-speed or --omega
+    gives every tilt there too (docs/surfaces.md eq. S2).
 
     \b
     Examples:

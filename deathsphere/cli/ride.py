@@ -84,6 +84,11 @@ def _grid(where, how, mus):
 @param_option("surface")
 @param_option("wall_angle")
 @param_option("wall_height")
+@single("--profile", "profile", default=None, metavar="FILE",
+        help="With --surface profile: a CSV of the meridian's points from the lowest up, header rho_m,z_m (or "
+             "rho_ft,z_ft ...; docs/surfaces.md); a lane is its --height.")
+@param_option("turn_radius", multiple=True, help="With --surface plane (flat ground): the contact's distance "
+              "from the turn's centre, the lane instead of --height.")
 @param_option("g")
 @param_option("mu", multiple=True, help="Friction coefficient available; an orbit needing more has status "
               "slips (e.g. 0.8:1:0.1: each value a set of rows; the rider's table a row per height and value; a "
@@ -117,7 +122,7 @@ def _grid(where, how, mus):
 @units_option()
 def ride_command(theta, height, alpha, speed, com_speed, period, machine, machine_file, mass, com_height, a,
                  tyre_radius, roll_inertia, pitch_inertia, yaw_inertia, spin_inertia, head_height, r, diameter,
-                 surface, wall_angle, wall_height, g, mu, max_g, vertical, v_top, summary, only, stability, flat,
+                 surface, wall_angle, wall_height, profile, turn_radius, g, mu, max_g, vertical, v_top, summary, only, stability, flat,
                  steer, steer_torque, jobs, scheduler, output, fmt, units):
     """A machine (motorcycle and rider) on steady horizontal orbits inside the globe.
 
@@ -149,6 +154,7 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
           --wall-height 12ft --height 5ft --speed 40km/h
       deathsphere ride --surface cone --wall-angle 80 --diameter 32ft \\
           --height 5ft --speed 30:80:10km/h --mu 1 --summary
+      deathsphere ride --surface plane --turn-radius 10:50:10 --speed 30km/h
       deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1
       deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1 \\
           --summary
@@ -171,7 +177,10 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
 
     from deathsphere.api.ride_surfaces import names_a_wall
 
-    on_wall = names_a_wall(surface, wall_angle, wall_height)
+    on_wall = names_a_wall(surface, wall_angle, wall_height, profile)
+    if turn_radius and not on_wall:
+        raise click.BadParameter("the lane on flat ground (--surface plane); on the globe give --theta or --height",
+                                 param_hint="'--turn-radius'")
     if flat or steer is not None or steer_torque or (machine or "").lower() in TWO_WHEELER_NAMES or (
             machine_file is not None and is_two_wheeler_file(machine_file)):
         # a two-wheeler (docs/two-wheeler.md): the API refuses what it does not take
@@ -182,9 +191,10 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
                          spin_inertia=spin_inertia, head_height=head_height)
         lists = {k: list(v) for k, v in (("theta", theta), ("height", height), ("speed", speed),
                                          ("steer_torque", steer_torque), ("alpha", alpha), ("v_top", v_top),
-                                         ("com_speed", com_speed), ("period", period), ("mu", mu)) if v}
-        arena = {k: v for k, v in (("surface", surface), ("wall_angle", wall_angle), ("wall_height", wall_height))
-                 if v is not None}
+                                         ("com_speed", com_speed), ("period", period), ("mu", mu),
+                                         ("turn_radius", turn_radius)) if v}
+        arena = {k: v for k, v in (("surface", surface), ("wall_angle", wall_angle), ("wall_height", wall_height),
+                                   ("profile", profile)) if v is not None}
         given = dict(machine=which, steer=steer, summary=summary, stability=stability, only=only or None,
                      vertical=vertical, **lists, **setup_of(r, diameter, g, max_g), **arena,
                      **{k: v for k, v in overrides.items() if v is not None})
@@ -215,9 +225,9 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
         if (jobs is not None and str(jobs).strip() != "1") or scheduler is not None:
             raise click.UsageError("--jobs and --scheduler spread the globe's grids: a drum's or a cone's ride is "
                                    "computed in one process (at most 2e+06 rows)")
-        wall = {"surface": surface, "wall_angle": wall_angle, "wall_height": wall_height}
-        lane = {"theta": theta, "height": height, "alpha": alpha, "speed": speed, "com_speed": com_speed,
-                "period": period, "vertical": vertical, "v_top": v_top}
+        wall = {"surface": surface, "wall_angle": wall_angle, "wall_height": wall_height, "profile": profile}
+        lane = {"theta": theta, "height": height, "turn_radius": turn_radius, "alpha": alpha, "speed": speed,
+                "com_speed": com_speed, "period": period, "vertical": vertical, "v_top": v_top}
         return _ride_on_wall(chosen, wall, setup, mu, mus, lane,
                              {"summary": summary, "only": only, "stability": stability, "fmt": fmt,
                               "output": output, "shown": shown})
@@ -269,13 +279,15 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
 
 
 def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_shown: dict):
-    """``ride`` on a drum or a cone (docs/machine.md, "On any surface of
+    """``ride`` on a drum, a cone, flat ground or a profile (docs/machine.md, "On any surface of
     revolution"): the grid of heights, each --mu and the speeds or tilts,
     computed in one API call (a lane is refused there in one line: --theta,
     --vertical, a height above the wall) and rendered.  ``lane`` holds the
     lane's options as typed, ``how_shown`` what to compute and how to
     render (summary, only, stability, fmt, output, shown)."""
-    theta, height, vertical, v_top = (lane[k] for k in ("theta", "height", "vertical", "v_top"))
+    theta, vertical, v_top = (lane[k] for k in ("theta", "vertical", "v_top"))
+    # the lane is a height up the wall, or a turn radius on flat ground (the API refuses the one its ground lacks)
+    at = ("turn_radius", lane["turn_radius"]) if lane["turn_radius"] else ("height", lane["height"])
     holds = [k for k in ("alpha", "speed", "com_speed", "period") if lane[k]]
     summary, only, stability, fmt, output, shown = (how_shown[k] for k in ("summary", "only", "stability", "fmt",
                                                                            "output", "shown"))
@@ -285,19 +297,23 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_show
         raise click.UsageError("a vertical loop is the globe's: --vertical takes no --surface, --wall-angle or "
                                "--wall-height")
     if theta:
-        raise click.BadParameter("theta is the globe's polar angle: on a drum or a cone give --height (the "
-                                 "contact's height above the floor)", param_hint="'--theta'")
-    if not height:
-        raise click.UsageError("give --height (the contact's height above the floor)")
+        raise click.BadParameter("theta is the globe's polar angle: on a drum, a cone or a profile give --height "
+                                 "(the contact's height above the floor), on flat ground --turn-radius",
+                                 param_hint="'--theta'")
+    if lane["height"] and lane["turn_radius"]:
+        raise click.UsageError("give --height (up a wall) or --turn-radius (on flat ground), not both")
+    if not at[1]:
+        raise click.UsageError("give --height (the contact's height above the floor; on flat ground "
+                               "--turn-radius, the contact's distance from the turn's centre)")
     if len(holds) != 1:
         typed = " and ".join("--" + k.replace("_", "-") for k in holds)
         raise click.UsageError("give exactly one of --alpha, --speed, --com-speed and --period"
                                + (f", not {typed}" if holds else ""))
     by = (holds[0], lane[holds[0]])
-    refuse_large_grid(value_counts({"height": height, "mu": mu, by[0]: by[1]}), command="ride",
+    refuse_large_grid(value_counts({at[0]: at[1], "mu": mu, by[0]: by[1]}), command="ride",
                       limit=api.rides.MAX_RIDE_ROWS, per_point=TILTS_PER_SPEED if by[0] != "alpha" else 1)
-    where, how, friction = _grid(_axis("height", height), _axis(*by), mus)
-    table = api.ride(height=where, **{by[0]: how}, machine=chosen, stability=stability and not summary,
+    where, how, friction = _grid(_axis(*at), _axis(*by), mus)
+    table = api.ride(**{at[0]: where, by[0]: how}, machine=chosen, stability=stability and not summary,
                      only=only or None, summary=summary, **wall, **friction, **setup)
     kind = str(wall["surface"]).strip().lower()      # given: the API refuses a wall's option on the globe
     title = (f"Feasible speeds by height on the {kind}: {chosen.name} (docs/machine.md)" if summary

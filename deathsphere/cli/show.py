@@ -144,10 +144,6 @@ def _falls(result, fails, monte_carlo, seed, scheduler):
     from deathsphere.table import Table
 
     if monte_carlo is not None:
-        if not result.plan.globe.is_globe:
-            raise click.BadParameter(f"a fall is the globe's: not on a {result.plan.globe.ground.name} (where a "
-                                     "rider leaves a wall and lands on its floor is not modelled)",
-                                     param_hint="'--monte-carlo'")
         with progress("falls", monte_carlo) as bar:
             return result.falls(monte_carlo, **({"seed": seed} if seed is not None else {}),
                                 **({"scheduler": scheduler} if scheduler is not None else {}), progress=bar.update)

@@ -28,6 +28,7 @@ from deathsphere.cli.options import (
     params_options,
     setup_options,
     single,
+    surface_options,
     units_option,
 )
 from deathsphere.table import Table
@@ -105,6 +106,7 @@ def _preflight_output(output) -> bool:
              "lean rate [N m/rad, N m s/rad]; positive steers into the fall.")
 @click.option("--hands-free", is_flag=True, default=False, help="A two-wheeler with no steer torque at all.")
 @setup_options()
+@surface_options(lanes=False)
 @output_options()
 @units_option()
 def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate,
@@ -112,7 +114,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                      points_per_period, method, rtol, atol, max_steps, frame, summary_only, output, loop_seconds,
                      playback, body, machine,
                      machine_file, mass, com_height, tyre_radius, roll_inertia, pitch_inertia, yaw_inertia,
-                     spin_inertia, head_height, side, a, r, diameter, k, g, mu, fmt, units):
+                     spin_inertia, head_height, side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height,
+                     profile, fmt, units):
     """Integrate the exact equations of motion from a steady orbit (beyond the paper).
 
     The rigid-body equations of a wheel or sphere rolling without slipping
@@ -125,6 +128,15 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     summary on stderr.  With --output nothing goes to stdout: the file
     is the output, and stderr says where it went (and, on a terminal,
     shows the summary).
+
+    Off the globe (--surface cylinder, cone, plane or profile, docs/
+    surfaces.md): the paper's wheel (--alpha) or ball (--omega3 and
+    --branch, or --omega) inside, from the steady orbit on the lane
+    --height (flat ground: --turn-radius); the run also stops with
+    hits_floor (the body's lowest point reaches the floor at the wall's
+    foot) or over_the_top (the contact passes --wall-height), and --perturb
+    tilts a wheel about its direction of travel or turns a ball's velocity
+    up the wall (docs/simulation.md, "On any ground").
 
     A two-wheeler (--machine benchmark-bicycle with --steer free|locked,
     --steer-gains, --hands-free or --flat): the Whipple bicycle's nonlinear
@@ -153,6 +165,10 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
       deathsphere simulate --theta 90 --alpha 80 --perturb 0.06 --output o.html
       deathsphere simulate --machine stunt125 --theta 60 --speed 30km/h -r 8ft
       deathsphere simulate --machine stunt125 --theta 90 --alpha 15 --output v.gif
+      deathsphere simulate --surface cylinder --diameter 32ft --height 2 \\
+          --alpha 10 --perturb 2
+      deathsphere simulate --surface cylinder --diameter 32ft --height 2 \\
+          --body sphere --omega 6 --perturb 1 --output bob.html
       deathsphere simulate --theta 60 --alpha 10 --output run.mp4 \\
           --loop-seconds 4 --playback 0.5
       deathsphere simulate --machine benchmark-bicycle --steer free \\
@@ -176,7 +192,12 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     from deathsphere.api.two_wheelers import is_two_wheeler_file
     from deathsphere.api.two_wheelers import is_two_wheeler
 
-    two_wheeler_only = given(flat=flat or None, turn_radius=turn_radius, duration=duration,
+    # a surface but the globe: the paper's bodies on it, their lane --height (flat ground: --turn-radius)
+    from deathsphere.api.simulation import names_a_wall
+
+    arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile)
+    on_arena = bool(arena) and names_a_wall(**arena)
+    two_wheeler_only = given(flat=flat or None, turn_radius=None if on_arena else turn_radius, duration=duration,
                              perturb_lean_rate=perturb_lean_rate, perturb_steer_rate=perturb_steer_rate)
     two_wheeler_file = machine_file is not None and is_two_wheeler_file(machine_file)
     if (steer is not None or steer_gains is not None or hands_free or two_wheeler_only or is_two_wheeler(machine)
@@ -187,7 +208,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                                             ("--machine-file", None if two_wheeler_file else machine_file),
                                             ("-a", a), ("-k", k),
                                             ("--side", side), ("--loop-seconds", loop_seconds),
-                                            ("--playback", playback), ("--max-steps", max_steps))
+                                            ("--playback", playback), ("--max-steps", max_steps),
+                                            ("--surface", surface), ("--wall-angle", wall_angle),
+                                            ("--wall-height", wall_height), ("--profile", profile))
                    if value is not None]
         refused += [MACHINE_OPTIONS[name] for name in given(mass=mass, com_height=com_height,
                                                             tyre_radius=tyre_radius, roll_inertia=roll_inertia,
@@ -208,8 +231,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                              points_per_period=points_per_period, method=method, rtol=rtol, atol=atol),
                      **two_wheeler_only)
         return
-    if height is not None:
-        raise click.UsageError("--height is a two-wheeler's lane (with --steer); give --theta")
+    if height is not None and not on_arena:
+        raise click.UsageError("--height is a two-wheeler's lane (with --steer) or one off the globe (with "
+                               "--surface); on the sphere give --theta")
     holds = [name for name, value in (("--alpha", alpha), ("--speed", speed), ("--com-speed", com_speed),
                                       ("--omega", omega), ("--omega3", omega3)) if value is not None]
     if len(holds) > 1:
@@ -235,7 +259,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         **given(alpha=alpha, speed=speed, com_speed=com_speed, body=body, side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu,
                 omega3=omega3, omega=omega,
                 v_top=v_top, perturb=perturb, periods=periods, points_per_period=points_per_period, rtol=rtol,
-                atol=atol, max_steps=max_steps, machine=chosen)})
+                atol=atol, max_steps=max_steps, machine=chosen, height=height, turn_radius=turn_radius, **arena)})
     sim = api.prepare_simulation(rider, run, options)
     fmt = choose_format(fmt)
     table_file = view_format(output) if output is not None and view_format(output) in TABLE_OUTPUTS else None
@@ -278,7 +302,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         from deathsphere.viewer import write_view
 
         with progress("frames", None) as bar:
-            size = write_view(output, Table.concat(series), summary, sim.view_frames(), progress=bar.update, **loop)
+            size = write_view(output, Table.concat(series), summary, sim.view_frames(), progress=bar.update,
+                              ground=sim.ground, **loop)
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
     elif output is not None:
         from deathsphere.render.figures import PlotExtraMissing

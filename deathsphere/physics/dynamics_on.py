@@ -14,8 +14,11 @@ found from the ground's protocol alone (``implicit``, ``gradient``,
   centre, c + a e3 = p, e3 = grad F(p)/|grad F(p)| (eq. G4).
 
 The state is the (9, ...) array of :mod:`deathsphere.physics.dynamics`.
-The body is inside (on the side F < 0); the sphere's outside stays with the
-closed forms of :mod:`deathsphere.physics.dynamics`.
+The body is inside (on the side F < 0) or, with ``outside``, outside (F >
+0): there e3, from the centre to the contact, points against grad F, the
+wheel's contact is the rim's point of least F and the ball's e3 = -grad
+F/|grad F| (docs/dynamics.md sec. 7, "Outside"); nothing else in the
+equations knows the side, as on the sphere (eq. D5's s only sets e3).
 """
 
 from __future__ import annotations
@@ -26,9 +29,11 @@ import numpy as np
 
 from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.dynamics import _Dual, _dual_sqrt
+from deathsphere.physics.status import mu_required
 
 __all__ = ["GroundBody", "ground_body", "rhs_on", "jvp_on", "ode_on", "energy_on", "contact_on",
-           "contact_force_on", "gap_on", "wheel_orbit_state_on", "ball_orbit_state_on"]
+           "contact_force_on", "gap_on", "project_on", "lowest_point_on", "spin_rate_on", "wheel_orbit_state_on",
+           "ball_orbit_state_on"]
 
 #: Newton steps at most for the contact (quadratic convergence: 3-5 suffice)
 NEWTON_STEPS = 12
@@ -40,25 +45,31 @@ HESSIAN_STEP = 1e-5
 
 class GroundBody(NamedTuple):
     """A wheel or ball on a ground: ``ground`` (the protocol), arrays ``a``
-    [m], ``k`` [-], ``g`` [m/s^2] and ``sphere`` (bool, a ball) broadcast
-    against the bodies."""
+    [m], ``k`` [-], ``g`` [m/s^2], ``sphere`` (bool, a ball) and ``outside``
+    (bool, the body on the side F > 0) broadcast against the bodies."""
 
     ground: object
     a: np.ndarray
     k: np.ndarray
     g: np.ndarray
     sphere: np.ndarray
+    outside: np.ndarray = np.False_
 
 
-def ground_body(ground, a, k, g, sphere=False) -> GroundBody:
+def ground_body(ground, a, k, g, sphere=False, outside=False) -> GroundBody:
     """Validated :class:`GroundBody` (beyond the paper): a > 0, k > 0, g > 0 finite."""
     a, k, g = (np.asarray(x, dtype=float) for x in (a, k, g))
-    sphere = np.asarray(sphere, dtype=bool)
-    a, k, g, sphere = np.broadcast_arrays(a, k, g, sphere)
+    sphere, outside = np.asarray(sphere, dtype=bool), np.asarray(outside, dtype=bool)
+    a, k, g, sphere, outside = np.broadcast_arrays(a, k, g, sphere, outside)
     for name, x in (("a", a), ("k", k), ("g", g)):
         if not np.all(np.isfinite(x)) or np.any(x <= 0):
             raise ValueError(f"{name} must be finite and > 0")
-    return GroundBody(ground, a, k, g, sphere)
+    return GroundBody(ground, a, k, g, sphere, outside)
+
+
+def _side(p: GroundBody):
+    """+1 inside, -1 outside: the sign of e3 . grad F at the contact."""
+    return np.where(p.outside, -1.0, 1.0)
 
 
 def _coef(p: GroundBody):
@@ -145,18 +156,19 @@ def _wheel_newton(ground, c, h, u, a, sqrt):
     return e3, G, H
 
 
-def _ball_newton(ground, c, u, a, sqrt):
-    """One Newton step of G4, n(c + a e3) = e3: (1 - a P H / |grad F|) delta
-    = n - e3 solved by Cramer's rule, e3 <- (e3 + delta)/|e3 + delta|."""
+def _ball_newton(ground, c, u, a, sqrt, side=1.0):
+    """One Newton step of G4, side n(c + a e3) = e3 (side +1 inside, -1
+    outside): (1 - side a P H / |grad F|) delta = side n - e3 solved by
+    Cramer's rule, e3 <- (e3 + delta)/|e3 + delta|."""
     p = _lin((1.0, c), (a, u))
     G = _gradient(ground, p)
     H = _hessian(ground, p)
     gn = sqrt(_dot(G, G))
     n = (G[0] / gn, G[1] / gn, G[2] / gn)
-    r = _lin((1.0, n), (-1.0, u))
-    # A = 1 - (a/|G|) (1 - n n^T) H
+    r = _lin((side, n), (-1.0, u))
+    # A = 1 - side (a/|G|) (1 - n n^T) H
     Hn = [[H[i][j] - n[i] * _dot(n, (H[0][j], H[1][j], H[2][j])) for j in range(3)] for i in range(3)]
-    A = [[(1.0 if i == j else 0.0) - (a / gn) * Hn[i][j] for j in range(3)] for i in range(3)]
+    A = [[(1.0 if i == j else 0.0) - side * (a / gn) * Hn[i][j] for j in range(3)] for i in range(3)]
     delta = _solve3(A, r)
     v = _lin((1.0, u), (1.0, delta))
     vn = sqrt(_dot(v, v))
@@ -172,12 +184,13 @@ def _solve3(A, b):
     return (_dot(c0, b) / det, _dot(c1, b) / det, _dot(c2, b) / det)
 
 
-def _contact_values(ground, c, h, a, ball):
+def _contact_values(ground, c, h, a, ball, side=1.0):
     """e3 (values) on the ground by Newton steps, vectorised: wheel from the
-    projection of grad F(c) on the wheel plane (the sphere's closed form),
-    ball from the normal direction grad F(c)."""
+    projection of side grad F(c) on the wheel plane (the sphere's closed
+    form), ball from the normal direction side grad F(c) (side +1 inside,
+    -1 outside: e3 points from the centre to the surface)."""
     G0 = ground.gradient(*c)
-    G0 = (G0[0], G0[1], G0[2])
+    G0 = (side * G0[0], side * G0[1], side * G0[2])
     gh = _dot(G0, h)
     uw = _lin((1.0, G0), (-np.where(ball, 0.0, gh), h))
     un = np.sqrt(_dot(uw, uw))
@@ -185,7 +198,7 @@ def _contact_values(ground, c, h, a, ball):
     for _ in range(NEWTON_STEPS):
         # one kind of body per batch as a rule: step only the kind present
         ew = _wheel_newton(ground, c, h, u, a, np.sqrt)[0] if not np.all(ball) else u
-        eb = _ball_newton(ground, c, u, a, np.sqrt)[0] if np.any(ball) else u
+        eb = _ball_newton(ground, c, u, a, np.sqrt, side)[0] if np.any(ball) else u
         new = tuple(np.where(ball, eb[i], ew[i]) for i in range(3))
         change = np.max(np.abs(np.stack(np.broadcast_arrays(*(new[i] - u[i] for i in range(3))))))
         u = new
@@ -194,11 +207,11 @@ def _contact_values(ground, c, h, a, ball):
     return u
 
 
-def _contact(ground, c, h, a, ball, wheel_flag, sqrt):
+def _contact(ground, c, h, a, ball, wheel_flag, sqrt, side=1.0):
     """e3, grad F(p), hessian at p: the values converged, then one more
     Newton step in the input's own arithmetic (for duals the step carries
     the implicit-function derivative of e3 exactly)."""
-    e0 = _contact_values(ground, _value(c), _value(h), a, ball)
+    e0 = _contact_values(ground, _value(c), _value(h), a, ball, side)
     if _is_dual(h[0]):
         # back onto the perturbed wheel plane before the last step
         eh = _dot(e0, h) * wheel_flag
@@ -206,7 +219,7 @@ def _contact(ground, c, h, a, ball, wheel_flag, sqrt):
         en = sqrt(_dot(e0, e0))
         e0 = (e0[0] / en, e0[1] / en, e0[2] / en)
     ew = _wheel_newton(ground, c, h, e0, a, sqrt)[0] if not np.all(ball) else e0
-    eb = _ball_newton(ground, c, e0, a, sqrt)[0] if np.any(ball) else e0
+    eb = _ball_newton(ground, c, e0, a, sqrt, side)[0] if np.any(ball) else e0
     e3 = tuple(_pick(ball, eb[i], ew[i]) for i in range(3))
     # the surface's derivatives at the contact itself (for duals they move with e3)
     p = _lin((1.0, c), (a, e3))
@@ -230,10 +243,11 @@ def _equations(state, p: GroundBody, sqrt, accel=False):
     e3, de3/dt and grad F at the contact (3 each)."""
     a, ga, _s, wheel, kw, ik1, ik, d1 = _coef(p)
     ball = p.sphere
+    side = _side(p)
     c, x, w = tuple(state[0:3]), tuple(state[3:6]), tuple(state[6:9])
     ne = sqrt(_dot(x, x))
     h = (x[0] / ne, x[1] / ne, x[2] / ne)
-    e3, G, H = _contact(p.ground, c, h, a, ball, wheel, sqrt)
+    e3, G, H = _contact(p.ground, c, h, a, ball, wheel, sqrt, side)
     v = _lin((a, _cross(e3, w)))                              # eq. 6
     f = _cross(w, x)
     m = _cross(w, h)                                          # d(e1 unit)/dt
@@ -243,13 +257,14 @@ def _equations(state, p: GroundBody, sqrt, accel=False):
     Ht = _mat_vec(H, _lin((1.0, v), (a * mu, h)))
     lam = (_dot(_cross(m, e3), G) + _dot(t, Ht)) / (_dot(e3, G) - a * _dot(t, _mat_vec(H, t)))
     dw = _lin((lam, t), (mu, h))
-    # ball (G5): (1 - a S) de3/dt = S v, S = (1 - n n^T) H / |grad F|
+    # ball (G5): e3 = side n(c + a e3), so (1 - side a S) de3/dt = side S v,
+    # S = (1 - n n^T) H / |grad F| (side +1 inside, -1 outside)
     gn = sqrt(_dot(G, G))
     n = (G[0] / gn, G[1] / gn, G[2] / gn)
     Hv = _mat_vec(H, v)
-    rb = _lin((1.0 / gn, Hv), (-_dot(n, Hv) / gn, n))
+    rb = _lin((side / gn, Hv), (-side * _dot(n, Hv) / gn, n))
     Hn = [[H[i][j] - n[i] * _dot(n, (H[0][j], H[1][j], H[2][j])) for j in range(3)] for i in range(3)]
-    A = [[(1.0 if i == j else 0.0) - (a / gn) * Hn[i][j] for j in range(3)] for i in range(3)]
+    A = [[(1.0 if i == j else 0.0) - side * (a / gn) * Hn[i][j] for j in range(3)] for i in range(3)]
     db = _solve3(A, rb)
     d = tuple(_pick(ball, db[i], dw[i]) for i in range(3))
     # M dw/dt = e3 x (de3/dt x w) + (g/a) e3 x z - k w1 (w x e1)   (D4, D5)
@@ -335,7 +350,7 @@ def contact_on(state, p: GroundBody):
     c = tuple(state[0:3])
     x = tuple(state[3:6])
     ne = np.sqrt(_dot(x, x))
-    e3 = _stack(_contact_values(p.ground, c, tuple(xi / ne for xi in x), p.a, p.sphere))
+    e3 = _stack(_contact_values(p.ground, c, tuple(xi / ne for xi in x), p.a, p.sphere, _side(p)))
     return e3, state[0:3] + p.a * e3
 
 
@@ -354,7 +369,8 @@ def energy_on(state, p: GroundBody):
 
 def gap_on(state, p: GroundBody):
     """Beyond the paper (docs/dynamics.md sec. 7): the contact point's signed distance from the surface [m], to first
-    order F/|grad F| (negative inside): the holonomic constraint's residual."""
+    order F/|grad F| (negative on the inside's side, positive on the outside's): the holonomic constraint's
+    residual."""
     _, pt = contact_on(state, p)
     G = p.ground.gradient(*pt)
     return p.ground.implicit(*pt) / np.sqrt(np.sum(G * G, axis=0))
@@ -362,14 +378,63 @@ def gap_on(state, p: GroundBody):
 
 def contact_force_on(state, p: GroundBody):
     """Contact force per unit mass F/m = d2c/dt2 + g z (eq. 2): dict with
-    ``force`` (3, ...), ``normal`` (-F . n, n the outward unit normal; > 0
-    while contact holds), ``friction`` (3, ...) and ``friction_magnitude``."""
+    ``force`` (3, ...), ``normal`` (-F . n inside, +F . n outside, n the
+    outward unit normal grad F/|grad F|; > 0 while contact holds),
+    ``friction`` (3, ...), ``friction_magnitude`` and ``mu_required``
+    (eq. 35: |friction| / normal, NaN where normal <= 0)."""
     _, _, _, cdd, e3, _, G = _motion(state, p)
     F = cdd + np.array([0.0, 0.0, 1.0]).reshape((3,) + (1,) * (cdd.ndim - 1)) * p.g
     n = G / np.sqrt(np.sum(G * G, axis=0))
     fn = np.sum(F * n, axis=0)
     fr = F - fn * n
-    return {"force": F, "normal": -fn, "friction": fr, "friction_magnitude": np.sqrt(np.sum(fr * fr, axis=0))}
+    fmag = np.sqrt(np.sum(fr * fr, axis=0))
+    normal = -_side(p) * fn
+    return {"force": F, "normal": normal, "friction": fr, "friction_magnitude": fmag,
+            "mu_required": mu_required(normal, fmag)}
+
+
+#: passes of :func:`project_on` (each moves the contact onto the surface to
+#: first order in the gap; the gap after two is round-off)
+PROJECT_PASSES = 2
+
+
+def project_on(state, p: GroundBody):
+    """The state moved back onto the constraints (beyond the paper;
+    docs/dynamics.md sec. 7, as :func:`dynamics.project` on the globe): e1
+    renormalised, then the centre moved along the surface's unit normal by
+    the gap F/|grad F| at the contact, twice (a translation along the normal
+    keeps e3 to first order: the second pass removes the rest)."""
+    state = np.array(state, dtype=float, copy=True)
+    state[3:6] = state[3:6] / np.sqrt(np.sum(state[3:6] ** 2, axis=0))
+    for _ in range(PROJECT_PASSES):
+        _, pt = contact_on(state, p)
+        G = p.ground.gradient(*pt)
+        gn = np.sqrt(np.sum(G * G, axis=0))
+        state[0:3] = state[0:3] - (p.ground.implicit(*pt) / gn) * (G / gn)
+    return state
+
+
+def lowest_point_on(state, p: GroundBody):
+    """z [m] of the body's lowest point (beyond the paper; the floor test of
+    docs/surfaces.md S5 along a run): a ball's c_z - a; a wheel's rim, the
+    circle of radius a about c normal to e1, c_z - a sqrt(1 - e1_z^2)."""
+    state = np.asarray(state, dtype=float)
+    e1z = state[5] / np.sqrt(np.sum(state[3:6] ** 2, axis=0))
+    reach = np.where(p.sphere, 1.0, np.sqrt(np.maximum(1.0 - e1z * e1z, 0.0)))
+    return state[2] - p.a * reach
+
+
+def spin_rate_on(state, p: GroundBody):
+    """A wheel's rate [rad/s] about its axle relative to the contact
+    direction, w . e1 - (de3/dt) . (e1 x e3) (beyond the paper; docs/simulation.md
+    "3-D view", as :func:`deathsphere.simulation.frames.spin_rate` on the
+    globe), de3/dt from the equations on the ground (G3); NaN for a ball."""
+    _, _, _, _, e3, de3, _ = _motion(state, p)
+    state = np.asarray(state, dtype=float)
+    e1 = state[3:6] / np.sqrt(np.sum(state[3:6] ** 2, axis=0))
+    u = np.cross(e1, e3, axis=0)
+    rate = np.sum(state[6:9] * e1, axis=0) - np.sum(de3 * u, axis=0)
+    return np.where(p.sphere, np.nan, rate)
 
 
 # ---------------------------------------------------------------- steady orbits on any ground
@@ -411,21 +476,24 @@ def wheel_orbit_state_on(ground, height, alpha, a, k, g, phi=0.0):
     return wheel_state_at(rho, z, alpha, a, k, g, phi)
 
 
-def ball_state_at(rho, z, beta, omega, a, k, g, phi=0.0):
+def ball_state_at(rho, z, beta, omega, a, k, g, phi=0.0, outside=False):
     """(state, omega3) of a ball on the steady orbit of rate ``omega`` with
-    contact (rho, z) at wall angle beta: e3 = sin(beta) r-hat - cos(beta) z
-    (the outward normal), c = p - a e3, w = -e3 x v / a + omega3 e3 with
+    contact (rho, z) at wall angle beta: e3 = side (sin(beta) r-hat -
+    cos(beta) z) (the outward normal inside, side +1; the inward one
+    outside, side -1), c = p - a e3, w = -e3 x v / a + omega3 e3 with
     v = Omega z x c, and the ball's law
     k a omega3 Omega sin(beta) = (k+1) Omega^2 r_C cos(beta) - g sin(beta)
-    (McDonald 1993 eq. 55 with r_C the centre's distance from the axis;
-    docs/dynamics.md eq. G8).  Complex inputs pass."""
-    rho, z, beta, omega, a, k, g, phi = np.broadcast_arrays(
-        *(np.asarray(x) for x in (rho, z, beta, omega, a, k, g, phi)))
+    (McDonald 1993 eq. 55 with r_C = rho - side a sin(beta) the centre's
+    distance from the axis; docs/dynamics.md eq. G8, docs/surfaces.md S6:
+    the same law on both sides).  Complex inputs pass."""
+    rho, z, beta, omega, a, k, g, phi, outside = np.broadcast_arrays(
+        *(np.asarray(x) for x in (rho, z, beta, omega, a, k, g, phi, outside)))
+    side = np.where(outside, -1.0, 1.0)
     sb, cb = np.sin(beta), np.cos(beta)
     rhat, zhat = _frame(phi)
-    e3 = sb * rhat - cb * zhat
+    e3 = side * (sb * rhat - cb * zhat)
     c = rho * rhat + z * zhat - a * e3
-    rc = rho - a * sb
+    rc = rho - side * a * sb
     with np.errstate(divide="ignore", invalid="ignore"):
         omega3 = ((k + 1) * omega ** 2 * rc * cb - g * sb) / (k * a * omega * sb)
     v = omega * np.stack((-c[1], c[0], np.zeros_like(c[2])))
@@ -435,9 +503,9 @@ def ball_state_at(rho, z, beta, omega, a, k, g, phi=0.0):
     return np.concatenate((c, e1, w)), omega3
 
 
-def ball_orbit_state_on(ground, height, omega, a, k, g, phi=0.0):
+def ball_orbit_state_on(ground, height, omega, a, k, g, phi=0.0, outside=False):
     """(state, omega3) of a ball on the steady orbit of rate ``omega``
     [rad/s] at lane ``height`` [m] of any ground (beyond the paper;
-    docs/dynamics.md eq. G8)."""
+    docs/dynamics.md eq. G8), inside or ``outside``."""
     rho, z = ground.contact(height)
-    return ball_state_at(rho, z, ground.wall_angle(height), omega, a, k, g, phi)
+    return ball_state_at(rho, z, ground.wall_angle(height), omega, a, k, g, phi, outside)

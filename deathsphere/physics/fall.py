@@ -60,14 +60,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.machine_lanes import closest_tilt, orbits_for_speed
+from deathsphere.physics.machine_lanes import closest_tilt, orbits_for_speed, orbits_for_speed_on
 from deathsphere.physics.status import Status
 
 __all__ = [
     "RIDES_ON", "SWINGS", "FALLS", "NO_LOOP", "OUTCOMES",
     "LANDS", "STARTS_OUTSIDE", "NOT_FLOWN",
     "ballistic_landing", "loop_departure", "loop_time", "loop_state",
-    "loop_speed_profile", "drop_velocity", "horizontal_holds",
+    "loop_speed_profile", "drop_velocity", "horizontal_holds", "horizontal_holds_on",
 ]
 
 #: Outcome codes of :func:`loop_departure` (int8), and their names;
@@ -511,11 +511,30 @@ def horizontal_holds(theta, speed, alpha_before, ground, g, machine, mu):
     ``alpha_before`` (NaN where none does).  Where it does not hold the rider
     leaves the wall at once (stage 2 of the model above).
     """
-    theta, speed, alpha_before, mu = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float).reshape(-1) for x in (theta, speed, alpha_before, mu)))
+    return _holds(orbits_for_speed, theta, speed, alpha_before, ground, g, machine, mu)
+
+
+def horizontal_holds_on(height, speed, alpha_before, ground, g, machine, mu):
+    """:func:`horizontal_holds` on any ground (beyond the paper;
+    docs/show.md sec. 11, "A fall on a wall"): some tilt on the lane at
+    ``height`` [m] above the floor gives a steady orbit whose centre of
+    mass moves at ``speed`` [m/s] with the friction within ``mu`` (eqs.
+    MS1-MS7, :func:`deathsphere.physics.machine_lanes.orbits_for_speed_on`).
+    On the drum that is the wall of death's rule: the friction must carry
+    the weight, mu N >= m g, which fails below a least speed; there the
+    rider's wheels slide off the wall and he leaves it at once.  The same
+    dict as :func:`horizontal_holds`."""
+    return _holds(orbits_for_speed_on, height, speed, alpha_before, ground, g, machine, mu)
+
+
+def _holds(orbits, where, speed, alpha_before, ground, g, machine, mu):
+    """:func:`horizontal_holds` with the lanes' physics ``orbits`` (the
+    globe's by theta, any ground's by height)."""
+    where, speed, alpha_before, mu = np.broadcast_arrays(
+        *(np.asarray(x, dtype=float).reshape(-1) for x in (where, speed, alpha_before, mu)))
     moving = speed > 0
-    roots, orb = orbits_for_speed(theta, np.where(moving, speed, 1.0), ground, g, machine, mu)
+    roots, orb = orbits(where, np.where(moving, speed, 1.0), ground, g, machine, mu)
     ok = np.isfinite(roots) & moving[:, None] & (orb["status"] == Status.OK)
     best, holds = closest_tilt(roots, ok, alpha_before)
-    alpha = np.where(holds, roots[np.arange(theta.size), best] if roots.shape[1] else np.nan, np.nan)
+    alpha = np.where(holds, roots[np.arange(where.size), best] if roots.shape[1] else np.nan, np.nan)
     return {"holds": holds, "alpha": alpha}

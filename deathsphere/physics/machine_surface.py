@@ -1,6 +1,6 @@
 """Steady horizontal orbits of the single-contact machine on any surface of
-revolution: the wall of death's drum, the well of death's cone, the globe
-(beyond the paper; docs/machine.md, "On any surface of revolution", eqs.
+revolution: the wall of death's drum, the well of death's cone, flat ground,
+a profile, the globe (beyond the paper; docs/machine.md, "On any surface of revolution", eqs.
 MS1-MS7).
 
 The sphere's equations M1-M12 (:mod:`deathsphere.physics.machine`) written
@@ -22,7 +22,11 @@ kappa = sin(beta) / rho_P, all answered by the ground (its protocol,
 
 On the sphere (beta = pi - theta, kappa = 1/r) each is M1-M10 exactly.
 A lane is the contact's height above the ground's lowest point (the floor
-of the drum and the cone); every function is vectorised over heights and
+of the drum and the cone; on flat ground the contact's distance from the
+turn's centre, where MS2-MS4 with beta = 0 are the classic lean of a
+motorcycle, tan(phi_eff) = v_G^2 / (g r_G) for the line from the contact to
+the centre of mass, corrected for the tyre's width and the gyroscopic and
+inertial terms); every function is vectorised over heights and
 tilts and loops over no orbit.
 """
 
@@ -103,7 +107,8 @@ def _floor_clearance(c: Contact, sa, ca, head_z, ground, m: MachineArrays):
     the plane of u and the (horizontal) direction of travel, reaches down
     to C_z - (a - t) |sin(alpha)|, the tyre a further t.  Inside the globe
     it is never below its floor; on a drum or a cone it stops a lane
-    ridden too low."""
+    ridden too low; on flat ground (the floor the surface itself) the
+    tyre's lowest point is the contact, at 0."""
     a, t = m.wheel_radius, m.tyre_radius
     _, axle_z = _up(c, sa, ca, a, t)
     tyre_z = axle_z - (a - t) * np.abs(sa) - t
@@ -164,7 +169,9 @@ def ride_orbit_on(height, alpha, ground, g, machine: MachineArrays, mu=np.inf, m
     status, reason = first_failure([
         (~fit, Status.NO_FIT, Reason.MACHINE_NO_FIT_WALL),
         (~(clearance > 0), Status.NO_FIT, Reason.HEAD_HITS_WALL),
-        (~(floor > 0), Status.NO_FIT, Reason.MACHINE_HITS_FLOOR),
+        # a tyre standing on the floor touches it, it does not reach below it: on flat
+        # ground the floor is the surface ridden and the tyre's lowest point the contact
+        (~(floor > -SINGULAR * (h + a)), Status.NO_FIT, Reason.MACHINE_HITS_FLOOR),
         (singular, Status.NO_ORBIT, Reason.MACHINE_ZERO_DENOMINATOR),
         (om2_zero, Status.NO_ORBIT, Reason.MACHINE_OMEGA_ZERO),
         (~real, Status.NO_ORBIT, Reason.MACHINE_OMEGA_IMAGINARY),

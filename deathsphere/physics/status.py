@@ -94,6 +94,9 @@ class Reason(IntEnum):
     PARTICLE_FLAT_GROUND = 61
     SURFACE_NO_CONTACT_OUTSIDE = 62
     SURFACE_NO_FIT_OUTSIDE = 63
+    LANE_ON_AXIS = 64
+    NO_TILT_FITS_LANE = 65
+    SURFACE_NO_ALPHA = 66
 
 
 REASONS = {
@@ -175,6 +178,12 @@ REASONS = {
                                        "r' Omega^2 sin(beta) + g cos(beta) < 0)",
     Reason.SURFACE_NO_FIT_OUTSIDE: "would cut into the wall at this tilt (surfaces.md eq. S4 outside needs "
                                    "sin(alpha + beta) < 0)",
+    Reason.LANE_ON_AXIS: "the lane's contact is on the vertical axis (rho_contact = 0): it does not move on any "
+                         "orbit so no contact speed holds one (give com_speed or omega or alpha)",
+    Reason.NO_TILT_FITS_LANE: "the wheel fits along this lane at no tilt (surfaces.md eq. S4 needs "
+                              "a kappa_parallel < 1: the wall bends more than the rim)",
+    Reason.SURFACE_NO_ALPHA: "no tilt alpha at which the wheel fits the wall gives this speed or rate "
+                             "(surfaces.md eq. S2 has no root in the window of eq. S4)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -142,6 +142,9 @@ def quantity_table(title: str, get: dict, rows, ok_text: str, notes=()) -> FitTa
     if get.get("stability"):
         rows.append(("stability", STABILITY_STYLE.get(get["stability"], get["stability"]), "",
                      get["stability_method"]))
+        if get.get("stability_kind"):
+            # which kind of stable (or unstable): a disturbance that persists, dies or grows
+            rows.append(("  a disturbance is", get["stability_kind"], "", "stability_kind"))
     rows.append(("status", status_text(get["status"]), "", ""))
     labels, values, units, sources = (list(c) for c in zip(*rows))
     columns = [Column("quantity", "quantity", labels, "left"), Column("value", "value", values),

@@ -10,6 +10,8 @@ typed in another unit shows in it beside SI."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from rich.markup import escape
 
 from deathsphere.render.display_units import AS_TYPED, KM_H, DisplayUnits
@@ -60,6 +62,20 @@ SPEED = dict(kind="speed", params=("speed",), crew=KM_H)
 COM_SPEED = dict(kind="speed", params=("com_speed",), crew=KM_H)
 LENGTH = dict(kind="length")
 
+def _by_radius(heights, radii) -> bool:
+    """Lanes named by their distance from the axis, not their height: every
+    height 0 and the contact off the axis (flat ground's turn radius; a
+    floor's lane on a wall shows its radius too)."""
+    heights, radii = np.asarray(heights, dtype=float), np.asarray(radii, dtype=float)
+    return bool(heights.size) and bool(np.all(heights == 0) and np.all(radii > 1e-6))
+
+
+def _turn_radius_shown(head) -> bool:
+    if "rho_contact_m" not in head.columns:
+        return False
+    return _by_radius(head.columns["height_m"], head.columns["rho_contact_m"])
+
+
 #: The one-orbit view, the crew's first: (spec) per row, source in ``source``.
 ORBIT_FIELDS = (
     ColumnSpec("v_contact_m_s", "speed of the contact (speedometer)", "m/s", source="Ω r sin θ", show="display",
@@ -70,6 +86,8 @@ ORBIT_FIELDS = (
     ColumnSpec("mu_required", "μ required", source="eq. M9"),
     ColumnSpec("head_clearance_m", "head clearance", "m", source="eq. M2", **LENGTH),
     ColumnSpec("height_m", "contact height above the floor", "m", kind="length", params=("height",)),
+    ColumnSpec("rho_contact_m", "turn radius of the contact", "m", kind="length", params=("turn_radius",),
+               when=lambda get: _by_radius([get["height_m"]], [get["rho_contact_m"]])),
     ColumnSpec("com_orbit_radius_m", "radius of the CoM's lap", "m", source="eq. M3", **LENGTH),
     ColumnSpec("omega_rad_s", "Ω lap rate", "rad/s", source="eq. M8", kind="rate"),
     ColumnSpec("period_s", "lap time 2π/Ω", "s"),
@@ -90,6 +108,8 @@ OK_REASON = "fits, Ω² > 0, keeps contact, enough friction, load within the lim
 MANY_COLUMNS = (
     ColumnSpec("input_row", "#", format=str),
     ColumnSpec("height_m", "height", "m", kind="length", params=("height",)),
+    ColumnSpec("rho_contact_m", "turn\nradius", "m", kind="length", params=("turn_radius",),
+               when=_turn_radius_shown),
     ColumnSpec("theta_deg", "θ", "°", drop=6, kind="angle", params=("theta",)),
     ColumnSpec("status", "status", format=status_text, justify="left"),
     ColumnSpec("v_contact_km_h", "speed", "m/s", value=lambda get: get["v_contact_m_s"], show="display", **SPEED),
@@ -138,7 +158,7 @@ def _with_mu_column(after: str):
 def _stability_rows(get: dict) -> dict:
     # the long method text is the CSV's; on screen a pointer to it
     if get.get("stability"):
-        return {"stability": get["stability"], "stability_method": "sec. 5, no steering"}
+        return {"stability": get["stability"], "stability_method": "sec. 5, steer locked"}
     return {"stability": ""}
 
 
@@ -181,6 +201,8 @@ def _varies(column: str):
 #: The rider's table on screen; the rest of its numbers are the CSV's.
 SUMMARY_VIEW = (
     ColumnSpec("height_m", "height", "m", kind="length", params=("height",)),
+    ColumnSpec("rho_contact_m", "turn\nradius", "m", kind="length", params=("turn_radius",),
+               when=_turn_radius_shown),
     ColumnSpec("theta_deg", "θ", "°", drop=1, kind="angle", params=("theta",)),
     ColumnSpec("mu_available", "μ", format=_limit, when=_varies("mu_available")),
     ColumnSpec("max_g", "max", "g", format=_limit, when=_varies("max_g")),

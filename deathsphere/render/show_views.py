@@ -288,10 +288,18 @@ def _fall_line(get: dict, unit: DisplayUnit | None = KM_H) -> str:
     if get["outcome"] != "falls":
         return who
     return (f"{who}; leaves the wall at t = {format_number(get['t_contact_lost_s'], 4)} s "
-            f"(θ {_angle(get['theta_lost_deg'])}°, φ {_angle(get['phi_lost_deg'], wrap=True)}°), "
-            f"lands at t = {format_number(get['t_land_s'], 4)} s (θ {_angle(get['theta_land_deg'])}°, "
-            f"φ {_angle(get['phi_land_deg'], wrap=True)}°) after {format_number(get['fall_time_s'], 3)} s at "
-            f"{speed_cell(get['impact_speed_m_s'], unit)} {_speed_words(unit)}")
+            f"({_place(get, 'lost')}), lands at t = {format_number(get['t_land_s'], 4)} s ({_place(get, 'land')}) "
+            f"after {format_number(get['fall_time_s'], 3)} s at {speed_cell(get['impact_speed_m_s'], unit)} "
+            f"{_speed_words(unit)}")
+
+
+def _place(get: dict, end: str) -> str:
+    """Where a fall leaves the wall or lands: θ and φ in the globe; on a
+    drum or a cone, where θ is not defined, the height above the floor and φ."""
+    phi = f"φ {_angle(get[f'phi_{end}_deg'], wrap=True)}°"
+    if is_undefined(get[f"theta_{end}_deg"]) and not is_undefined(get.get(f"height_{end}_m")):
+        return f"{float(get[f'height_{end}_m']):.2f} m up, {phi}"
+    return f"θ {_angle(get[f'theta_{end}_deg'])}°, {phi}"
 
 
 def _hit_cell(value, clearance=None, crosses=None, rule: float = 0.0) -> str:

@@ -21,6 +21,9 @@ from deathsphere.render.figures import (
 )
 from deathsphere.table import Table
 
+#: the events off the globe, where the body still presses on the wall
+_WALL_ENDS = ("hits_floor", "over_the_top")
+
 __all__ = ["plot_simulation", "PlotExtraMissing", "FORMATS", "MAX_LEGEND"]
 
 #: at most this many bodies get a legend entry
@@ -28,13 +31,17 @@ MAX_LEGEND = 10
 
 _EVENT_STYLE = {"contact_lost": dict(marker="x", color="#c0392b"),
                 "slips": dict(marker="D", color="#d35400"),
-                "failed": dict(marker="s", color="black")}
+                "failed": dict(marker="s", color="black"),
+                "hits_floor": dict(marker="v", color="#8e44ad"),
+                "over_the_top": dict(marker="^", color="#8e44ad")}
 
 
 def plot_simulation(series: Table, summary: Table | None = None, *, output=None, title=None, dpi=150):
     """Figure of a simulated run: four panels sharing the bodies' colours.
 
     1. theta(t): polar angle of the contact point about the orbit axis [deg]
+       (off the globe, where the series has ``height_m``: the contact's
+       height above the ground's lowest point [m], here and in panel 4)
     2. alpha(t): tilt of axis 3 below the orbit plane, eq. (11) [deg]
     3. normal force per unit mass against t [m/s^2] (contact needs > 0)
     4. the contact point's track: theta against its azimuth phi [deg]
@@ -82,31 +89,37 @@ def plot_simulation(series: Table, summary: Table | None = None, *, output=None,
             st = str(summary["status"][i])
             if st in _EVENT_STYLE and np.isfinite(summary["event_time_s"][i]):
                 events[int(row)] = (st, i)
+    # off the globe the lane is the contact's height (no polar angle there)
+    lane, lane_label = (("height_m", "contact height [m]") if "height_m" in series
+                        else ("theta_deg", r"$\theta$ [deg]"))
     for body, colour in zip(bodies, colours):
         m = rows == body
         t = series["t_s"][m]
         label = f"body {int(body)}" if bodies.size <= MAX_LEGEND else None
         kw = dict(color=colour, lw=1.0)
-        ax_th.plot(t, series["theta_deg"][m], label=label, **kw)
+        ax_th.plot(t, series[lane][m], label=label, **kw)
         ax_al.plot(t, series["alpha_deg"][m], **kw)
         ax_n.plot(t, series["normal_per_mass_m_s2"][m], **kw)
-        ax_tr.plot(series["phi_deg"][m], series["theta_deg"][m], **kw)
+        ax_tr.plot(series["phi_deg"][m], series[lane][m], **kw)
         if int(body) in events:
             st, i = events[int(body)]
             style = dict(_EVENT_STYLE[st], ls="", ms=7, mew=1.5, zorder=5)
             te = summary["event_time_s"][i]
-            ax_th.plot([te], [summary["event_theta_deg"][i]], **style)
+            # the event is the body's last row
+            at = series[lane][m][-1] if lane == "height_m" else summary["event_theta_deg"][i]
+            ax_th.plot([te], [at], **style)
             ax_al.plot([te], [summary["event_alpha_deg"][i]], **style)
-            ax_n.plot([te], [0.0], **style)
-            ax_tr.plot([summary["event_phi_deg"][i]], [summary["event_theta_deg"][i]], **style)
+            # a wall's end comes with the body still pressing on the wall
+            ax_n.plot([te], [series["normal_per_mass_m_s2"][m][-1] if st in _WALL_ENDS else 0.0], **style)
+            ax_tr.plot([summary["event_phi_deg"][i]], [at], **style)
     ax_n.axhline(0.0, color="0.5", lw=0.8, ls="--")
-    ax_th.set_ylabel(r"polar angle of contact $\theta$ [deg]")
+    ax_th.set_ylabel(r"polar angle of contact $\theta$ [deg]" if lane == "theta_deg" else lane_label)
     ax_al.set_ylabel(r"tilt $\alpha$ [deg] (eq. 11)")
     ax_n.set_ylabel(r"normal force / mass [m/s$^2$]")
     for ax in (ax_th, ax_al, ax_n):
         ax.set_xlabel("t [s]")
     ax_tr.set_xlabel(r"azimuth of contact $\phi$ [deg]")
-    ax_tr.set_ylabel(r"$\theta$ [deg]")
+    ax_tr.set_ylabel(lane_label)
     ax_tr.set_title("track of the contact point", fontsize=10)
     for ax in (ax_th, ax_al, ax_n, ax_tr):
         ax.grid(True, color="0.88", lw=0.5)
@@ -128,7 +141,9 @@ def _default_title(summary, n_bodies):
         return f"Simulation of {n_bodies} bod{'y' if n_bodies == 1 else 'ies'}"
     if len(summary) == 1:
         s = {name: summary[name][0] for name in summary.names}
-        what = (f"{s['body']} {s['side']}, {s['orbit']} orbit, theta = {s['theta_deg']:g} deg"
+        lane = (f"on the {s['surface']}, height {s['height_m']:g} m" if "surface" in s
+                else f"theta = {s['theta_deg']:g} deg")
+        what = (f"{s['body']} {s['side']}, {s['orbit']} orbit, {lane}"
                 + (f", alpha = {s['alpha_deg']:g} deg" if s["body"] == "wheel" else ""))
         kick = s["perturb_deg"] + s["perturb_theta_deg"] if "perturb_deg" in summary else 0.0
         extra = f", kick {s['perturb_deg']:g} deg" if kick else ""

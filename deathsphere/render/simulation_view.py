@@ -22,6 +22,8 @@ SIMULATION_FIELDS = (
     ("max_abs_energy_drift", "max |energy drift| (relative)", ""),
     ("max_constraint_residual", "max constraint residual", ""),
     ("min_head_clearance_m", "least head clearance", "m"),
+    ("max_height_drift_m", "max drift of the height", "m"),
+    ("max_rho_drift_m", "max drift of rho", "m"),
     ("n_steps", "steps", ""),
     ("wall_time_s", "wall time", "s"),
 )
@@ -45,7 +47,11 @@ def simulation_view(summary: Table, units: DisplayUnits = AS_TYPED):
     head clearance, the orbit's speed and the globe also in the unit
     ``units`` gives."""
     get = row_record(summary)
-    what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, θ = {format_number(get['theta_deg'])}°"
+    # off the globe the lane is its height (flat ground: its turn radius, r_m)
+    lane = (f"θ = {format_number(get['theta_deg'])}°" if "surface" not in get
+            else f"on the {get['surface']}, turn radius {format_number(get['r_m'])} m" if get["surface"] == "plane"
+            else f"on the {get['surface']}, height {format_number(get['height_m'])} m")
+    what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, {lane}"
             + (f", α = {format_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
             + (f", kick {format_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
     typed = _typed_line(get, units)

@@ -270,14 +270,16 @@ HOLDS = {"alpha": Tilt, "speed": ContactSpeed, "com_speed": ComSpeed, "omega": R
 RUN_LANE_KEYS = (*HOLDS, "v_top")
 
 
-def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Keys()) -> Horizontal | Vertical:
+def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Keys(),
+                      at: Height | None = None) -> Horizontal | Vertical:
     """The lane a paper body's run starts on, from ``simulate``'s keys as
     typed: with ``vertical`` a wheel's loop at its top speed ``v_top`` and
-    cone angle ``theta``; else the horizontal orbit at ``theta`` held by
-    one of the body's keys alone (its record's ``held_by``), on the root
-    ``branch`` where several orbits share it (0 first; the tilt's in
-    increasing alpha, or eq. 55's slow and fast root)."""
-    theta = read("theta", given["theta"])
+    cone angle ``theta``; else the horizontal orbit at ``theta`` (or ``at``,
+    a lane by its height on another ground) held by one of the body's keys
+    alone (its record's ``held_by``), on the root ``branch`` where several
+    orbits share it (0 first; the tilt's in increasing alpha, or eq. 55's
+    slow and fast root)."""
+    theta = read("theta", given["theta"]) if at is None else None
     typed = {key: read(key, given[key]) for key in RUN_LANE_KEYS if given.get(key) is not None}
     branch = given.get("branch", 0)
     if given.get("vertical"):
@@ -291,13 +293,14 @@ def decode_paper_lane(given: Mapping, body: PaperBodyKind, read, keys: Keys = Ke
     if len(typed) != 1 or next(iter(typed)) not in body.held_by:
         keys.fail(None, HELD_BY[type(body)])
     (key, value), = typed.items()
+    where = Theta(theta) if at is None else at
     if key == "alpha":
         _paper_branch(branch, keys)
-        return Horizontal(at=Theta(theta), by=Tilt(value))
+        return Horizontal(at=where, by=Tilt(value))
     if isinstance(body, Ball):
         _paper_branch(branch, keys)
     # a wheel's contact speed, centre speed or rate: its tilt, the root ``branch``, is found when the run is prepared
-    return Horizontal(at=Theta(theta), by=HOLDS[key](value, branch))
+    return Horizontal(at=where, by=HOLDS[key](value, branch))
 
 
 def _paper_branch(branch, keys: Keys) -> None:

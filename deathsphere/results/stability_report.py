@@ -13,6 +13,7 @@ import numpy as np
 
 from deathsphere import params
 from deathsphere.model import EXACT_METHOD, LIVE_STATUSES
+from deathsphere.physics.stability.methods import method_text
 from deathsphere.physics import stability as exact_stability
 from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.requests.decode import paper_body_codes
@@ -65,7 +66,7 @@ def stability_report(orbits: Table) -> Table:
     status, reason = orbits["status"].astype(object), orbits["reason"].astype(object)
     live = np.isin(status, LIVE_STATUSES)
     analysed = live & (orbits["stability_method"] == EXACT_METHOD)
-    why_not = np.where(live, orbits["stability_method"].astype(object),
+    why_not = np.where(live, [method_text(m) for m in orbits["stability_method"].tolist()],
                        [f"no steady orbit with contact here ({s}: {w})" for s, w in zip(status, reason)])
     blank = np.full(n, None, dtype=object)
     kinds = [dict(source="exact", equation="0 29 33", quantity="orbit status", units="", applies=np.ones(n, bool),

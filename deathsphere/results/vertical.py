@@ -29,6 +29,7 @@ from deathsphere.model import (
     validate_requests,
 )
 from deathsphere.physics import vertical_orbit
+from deathsphere.physics.stability import methods
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.requests.decode import as_typed
@@ -56,7 +57,7 @@ COLUMNS = tuple("friction_magnitude_per_mass_m_s2" if c == "friction_per_mass_m_
     "stability", "stability_method", "growth_rate_1_s",
 )
 
-FLOQUET_METHOD = "floquet"
+FLOQUET_METHOD = methods.FLOQUET
 
 
 #: Point-by-point columns (``--points N``).

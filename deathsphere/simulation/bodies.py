@@ -10,9 +10,13 @@ the energy, the constraints.  Two models:
   (parameters :class:`~deathsphere.physics.dynamics.BodyParams`);
 * :data:`MACHINE` -- a machine (motorcycle and rider), the exact equations
   M16-M19 of :mod:`deathsphere.physics.machine_dynamics` (parameters
-  :class:`MachineRun`: the machines' arrays, the globe and gravity).
+  :class:`MachineRun`: the machines' arrays, the globe and gravity);
+* :data:`ON_GROUND` -- the paper's wheel and ball on any other ground (the
+  drum, the cone, flat ground, a profile): the same equations with the
+  ground's contact, :mod:`deathsphere.physics.dynamics_on` (parameters
+  :class:`GroundRun`), and two more events, the floor and the wall's top.
 
-Both states are (C, e1, w) in the same 9 rows, so the integrator's driver
+All states are (C, e1, w) in the same 9 rows, so the integrator's driver
 is the same.  :func:`model_of` picks the model from the parameters' type.
 """
 
@@ -23,14 +27,17 @@ from typing import NamedTuple
 import numpy as np
 
 from deathsphere.physics import dynamics as dyn
+from deathsphere.physics import dynamics_on as don
 from deathsphere.physics import machine_motion as mm
-from deathsphere.physics.ground import Sphere
+from deathsphere.physics.ground import Ground, Sphere
 from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.machine_dynamics import machine_rhs
 from deathsphere.physics.vectors import dot as _dot
 from deathsphere.simulation.events import ContactEvents
+from deathsphere.simulation.status import RunStatus
 
-__all__ = ["STATE_NAMES", "STATE_UNITS", "MachineRun", "PAPER", "MACHINE", "model_of", "take", "concat_params", "broadcast_params"]
+__all__ = ["STATE_NAMES", "STATE_UNITS", "MachineRun", "GroundRun", "PAPER", "MACHINE", "ON_GROUND", "model_of",
+           "take", "concat_params", "broadcast_params"]
 
 
 #: the state's 9 rows, the same for both models: the wheel's (or ball's)
@@ -67,7 +74,48 @@ class MachineRun(NamedTuple):
         return Sphere(self.r)
 
 
+class GroundRun(NamedTuple):
+    """Per-body parameters of the paper's wheels and balls on a ground other
+    than the globe (beyond the paper; docs/simulation.md, "Bodies"): radius
+    ``a`` [m], inertia factor ``k``, gravity ``g`` [m/s^2], ``sphere`` (a
+    ball), ``r`` the start lane's distance from the axis rho_P [m] (the
+    run's length: the centre's tolerance, the energy's scale, the
+    constraint's residual, as the globe's radius is there), ``height`` the
+    start contact's height above the ground's lowest point [m] (on flat
+    ground 0: its lane is the turn radius ``r``) (n,) each, and the
+    ``ground`` record, one for the whole run."""
+
+    a: np.ndarray
+    k: np.ndarray
+    g: np.ndarray
+    sphere: np.ndarray
+    r: np.ndarray
+    height: np.ndarray
+    ground: Ground
+
+    @property
+    def outside(self) -> np.ndarray:
+        """False: on a ground other than the globe the bodies ride inside."""
+        return np.zeros(np.shape(self.a), dtype=bool)
+
+    def body(self, shape=None) -> don.GroundBody:
+        """The bodies as :mod:`deathsphere.physics.dynamics_on` takes them
+        (their arrays broadcast to ``shape``, as a state's trailing axes)."""
+        arrays = (self.a, self.k, self.g, self.sphere)
+        if shape is not None:
+            arrays = tuple(np.broadcast_to(x, shape) for x in arrays)
+        return don.GroundBody(self.ground, *arrays)
+
+
+def _shared(x) -> bool:
+    """A field that is one record for every body (a run's ground), kept
+    whole when bodies are taken, broadcast or joined."""
+    return not isinstance(x, (np.ndarray, np.generic, int, float, bool, list)) and isinstance(x, Ground)
+
+
 def _broadcast(x, n: int):
+    if _shared(x):
+        return x
     if isinstance(x, tuple):
         return type(x)(*(_broadcast(y, n) for y in x))
     return np.broadcast_to(x, (n,))
@@ -79,12 +127,18 @@ def broadcast_params(params, n: int):
 
 
 def _take(x, index):
+    if _shared(x):
+        return x
     if isinstance(x, tuple):
         return type(x)(*(_take(y, index) for y in x))
     return np.asarray(x)[index]
 
 
 def _concat(xs):
+    if _shared(xs[0]):
+        if any(x != xs[0] for x in xs[1:]):
+            raise ValueError("one run rides one ground")
+        return xs[0]
     if isinstance(xs[0], tuple):
         return type(xs[0])(*(_concat(ys) for ys in zip(*xs)))
     return np.concatenate([np.asarray(x) for x in xs])
@@ -99,8 +153,14 @@ def concat_params(parts):
     """Per-body parameters of one kind, joined in order (beyond the paper)."""
     kinds = {type(p) for p in parts}
     if len(kinds) != 1:
-        raise ValueError("one run simulates one kind of body (wheels and spheres, or machines)")
+        raise ValueError("one run simulates one kind of body (wheels and spheres, on the globe or another "
+                         "ground, or machines)")
     return _concat(list(parts))
+
+
+def _polar_angle(pl):
+    """arctan2(|pl_xy|, pl_z): the angle from z' of a point pl (3, ...) [rad]."""
+    return np.arctan2(np.hypot(pl[0], pl[1]), pl[2])
 
 
 class _Paper:
@@ -117,6 +177,13 @@ class _Paper:
     def summary_echo(self, p) -> dict:
         return {}
 
+    def polar_angle(self, pl):
+        """The contact's polar angle theta [rad] from its orbit-frame components pl (3, ...)."""
+        return _polar_angle(pl)
+
+    def wall_conditions(self, p) -> tuple:
+        """No events beyond contact and slipping: the globe has no floor or top."""
+        return ()
 
     def fall_note(self, p, theta, alpha):
         """No words beyond the status's own for the paper's bodies (their
@@ -196,6 +263,14 @@ class _Machine:
 
     def summary_echo(self, p: MachineRun) -> dict:
         return {"machine": np.asarray(p.name, dtype=object)}
+
+    def polar_angle(self, pl):
+        """The contact's polar angle theta [rad] from its orbit-frame components pl (3, ...)."""
+        return _polar_angle(pl)
+
+    def wall_conditions(self, p) -> tuple:
+        """No events beyond contact and slipping in the globe."""
+        return ()
 
     def fall_note(self, p: MachineRun, theta, alpha):
         """Words appended to the reason of a body whose run ended in a fall
@@ -292,12 +367,114 @@ class _Machine:
         return {"v_cm_m_s": np.sqrt(_dot(vG, vG)), "head_clearance_m": p.r - np.sqrt(_dot(H, H))}
 
 
+def _per_sample(fn, y, p: GroundRun):
+    """fn(states, bodies) of :mod:`deathsphere.physics.dynamics_on` at states
+    y (9, ...) whose last axis is the bodies: the bodies' arrays broadcast
+    to the states' trailing shape."""
+    return fn(y, p.body(np.shape(y)[1:]))
+
+
+class _OnGround(_Paper):
+    """The paper's wheel and ball on any ground but the globe (beyond the
+    paper; docs/dynamics.md sec. 7): the equations of
+    :mod:`deathsphere.physics.dynamics_on`, the paper's tilt, speed and
+    energy scale as on the globe (inside: the side every other ground is
+    ridden on), and the wall's events: the floor and the top."""
+
+    name = "on_ground"
+    #: the contact's height above the ground's lowest point and its distance
+    #: from the axis (on flat ground the turn radius), as ``orbit`` names them
+    series_extras = ("height_m", "rho_contact_m")
+    summary_extras = ("surface", "height_m", "max_height_drift_m", "max_rho_drift_m")
+    extremes = (("max_height_drift_m", np.fmax, "height_drift_m"), ("max_rho_drift_m", np.fmax, "rho_drift_m"))
+
+    def summary_echo(self, p: GroundRun) -> dict:
+        n = int(np.size(p.a))
+        return {"surface": np.full(n, p.ground.name, dtype=object), "height_m": np.asarray(p.height, dtype=float)}
+
+    def polar_angle(self, pl):
+        """No polar angle off the globe (the lane is its height): NaN, as
+        ``orbit``'s theta_deg on these surfaces."""
+        return np.full(np.shape(pl)[1:], np.nan)
+
+    def wall_conditions(self, p: GroundRun) -> tuple:
+        """(status, condition [m]) of the wall's ends, each > 0 while the
+        body is on the wall: where the wall rises from a floor (its foot a
+        circle off the axis: the drum, the cone; a bowl meets the axis and
+        has none), the body's lowest point above it (docs/surfaces.md S5);
+        where the wall has a top, the contact below it.  Flat ground has
+        neither."""
+        ground, out = p.ground, []
+        top = float(getattr(ground, "highest_lane", np.inf))
+        if hasattr(ground, "highest_lane") and float(ground.contact(0.0)[0]) > 0:
+            out.append((RunStatus.HITS_FLOOR,
+                        lambda y: don.lowest_point_on(y, p.body()) - ground.lowest))
+        if np.isfinite(top):
+            out.append((RunStatus.OVER_THE_TOP,
+                        lambda y: top - (don.contact_on(y, p.body())[1][2] - ground.lowest)))
+        return tuple(out)
+
+    def ode(self, p: GroundRun, frame_rate):
+        n = int(np.size(p.a))
+        fr = np.broadcast_to(np.asarray(frame_rate, dtype=float), (n,))
+        flat, column = p.body((n,)), p.body((n, 1))
+
+        def fun(t, y):
+            y = np.asarray(y)
+            if y.ndim == 1:
+                return don.rhs_on(y.reshape(9, n), flat, fr).reshape(-1)
+            m = y.shape[1]
+            return don.rhs_on(y.reshape(9, n, m), column, fr[:, None]).reshape(9 * n, m)
+
+        return fun
+
+    def rhs(self, y, p: GroundRun):
+        return _per_sample(don.rhs_on, y, p)
+
+    def scalar_events(self, p):
+        return None
+
+    def contact_values(self, y, scalar):
+        """Not reached: with :meth:`scalar_events` None the events take the
+        vector path (:meth:`contact_force`)."""
+        raise TypeError("the events on a ground use its contact force, not the globe's scalar path")
+
+    def contact_force(self, y, p: GroundRun):
+        return _per_sample(don.contact_force_on, y, p)
+
+    def contact_point(self, y, p: GroundRun):
+        return _per_sample(don.contact_on, y, p)[1]
+
+    def project(self, y, p: GroundRun):
+        return _per_sample(don.project_on, y, p)
+
+    def energy(self, y, p: GroundRun):
+        return _per_sample(don.energy_on, y, p)
+
+    def residual(self, y, p: GroundRun):
+        """The larger of |e1| - 1 (a wheel's axis) and the contact's gap to
+        the surface in units of the lane's radius."""
+        axis = np.abs(np.sqrt(np.sum(y[3:6] ** 2, axis=0)) - 1.0)
+        gap = np.abs(_per_sample(don.gap_on, y, p)) / p.r
+        return np.maximum(np.where(p.sphere, 0.0, axis), gap)
+
+    def extras(self, y, p: GroundRun) -> dict:
+        pvec = self.contact_point(y, p)
+        height, rho = pvec[2] - p.ground.lowest, np.hypot(pvec[0], pvec[1])
+        return {"height_m": height, "rho_contact_m": rho, "height_drift_m": np.abs(height - p.height),
+                "rho_drift_m": np.abs(rho - p.r)}
+
+
 PAPER = _Paper()
 MACHINE = _Machine()
+ON_GROUND = _OnGround()
 
 
 def model_of(params):
     """The body model of per-body parameters (beyond the paper):
     :data:`MACHINE` for :class:`MachineRun` (docs/machine.md eqs.
-    M16-M19), else :data:`PAPER` (eqs. 2-7b in general form)."""
-    return MACHINE if isinstance(params, MachineRun) else PAPER
+    M16-M19), :data:`ON_GROUND` for :class:`GroundRun` (docs/dynamics.md
+    sec. 7), else :data:`PAPER` (eqs. 2-7b in general form)."""
+    if isinstance(params, MachineRun):
+        return MACHINE
+    return ON_GROUND if isinstance(params, GroundRun) else PAPER

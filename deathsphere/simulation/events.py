@@ -1,5 +1,5 @@
-"""The terminal events of a run: contact lost and slipping (beyond the paper;
-docs/simulation.md, "Events").
+"""The terminal events of a run: contact lost and slipping, and on a wall
+the floor and the wall's top (beyond the paper; docs/simulation.md, "Events").
 
 Both are functions of the state through the contact force of the body
 model (:mod:`deathsphere.simulation.bodies`: the paper's bodies'
@@ -8,6 +8,9 @@ model (:mod:`deathsphere.simulation.bodies`: the paper's bodies'
 (``slips`` where it does, only for a finite mu).  The bodies integrated
 together share one solve_ivp call, so each event is the least value over
 them; :data:`EVENT_TOL` decides which others reached zero at the same time.
+A body model on a wall adds its own conditions (``model.wall_conditions``:
+the body's lowest point above the floor, the contact below the wall's top,
+in metres), after these two.
 """
 
 from __future__ import annotations
@@ -46,10 +49,13 @@ class ContactEvents:
     _cache: tuple = field(default=(None, None, None))
     _scalar: tuple | None = None
     _events: list = field(default_factory=list)
+    #: the model's (status, condition(state) [m]) pairs beyond contact and slipping
+    _walls: tuple = ()
 
     def __post_init__(self):
         if self.mu.size == 1:      # the model's one-body float path, if it has one
             self._scalar = self.model.scalar_events(self.params)
+        self._walls = tuple(self.model.wall_conditions(self.params))
         self._events = self.events()
 
     def __len__(self):
@@ -64,7 +70,7 @@ class ContactEvents:
         last_t, last_y, vals = self._cache
         if last_y is not None and t == last_t and (y is last_y or np.array_equal(y, last_y)):
             return vals
-        if self._scalar is not None and y.ndim == 1:
+        if self._scalar is not None and y.ndim == 1 and not self._walls:
             try:          # one body: the same equations on Python floats
                 n, fmag = self.model.contact_values(y.tolist(), self._scalar)
                 mu = float(self.mu[0])
@@ -79,20 +85,18 @@ class ContactEvents:
         n = f["normal"]
         finite = np.isfinite(self.mu)
         slip = np.where(finite, np.where(finite, self.mu, 0.0) * n - f["friction_magnitude"], 1.0)
-        vals = (n / self.g, slip / self.g)
+        vals = (n / self.g, slip / self.g) + tuple(condition(state) for _, condition in self._walls)
         self._cache = (t, y, vals)
         return vals
 
     def events(self) -> list[Event]:
         """The terminal events (least value over the bodies), in the order
-        of :data:`EVENT_STATUSES`."""
-        def contact_lost(t, y):
-            return float(np.min(self.values(t, y)[0]))
+        of :data:`EVENT_STATUSES`, then the model's wall conditions."""
+        def least(k):
+            return lambda t, y: float(np.min(self.values(t, y)[k]))
 
-        def slips(t, y):
-            return float(np.min(self.values(t, y)[1]))
-
-        return [Event(contact_lost, EVENT_STATUSES[0]), Event(slips, EVENT_STATUSES[1])]
+        statuses = EVENT_STATUSES + tuple(status for status, _ in self._walls)
+        return [Event(least(k), status) for k, status in enumerate(statuses)]
 
 
 def stopped_at_start(normal, friction, mu):

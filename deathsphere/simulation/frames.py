@@ -19,9 +19,9 @@ from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import machine_motion as mm
 from deathsphere.records.paper_bodies import Ball
 from deathsphere.requests.decode import paper_body_named
-from deathsphere.simulation.bodies import MACHINE, PAPER, broadcast_params, model_of, take
+from deathsphere.simulation.bodies import MACHINE, ON_GROUND, PAPER, broadcast_params, model_of, take
 
-__all__ = ["frame_geometry", "machine_frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD",
+__all__ = ["frame_geometry", "machine_frame_geometry", "ground_frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD",
            "MAX_MOVE_R"]
 
 #: the most a body may turn between two frames of the view [rad]: a quarter
@@ -211,6 +211,40 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
     }
 
 
+def ground_frame_geometry(t, state, params, psi0=0.0):
+    """What the 3-D view draws of one wheel or ball on a ground other than
+    the globe (beyond the paper; docs/dynamics.md sec. 7, docs/simulation.md
+    "3-D view"): the keys of :func:`frame_geometry`, from the equations on
+    the ground (:mod:`deathsphere.physics.dynamics_on`: the contact, its
+    force, the wheel's spin rate relative to the contact direction).
+    ``params`` is one body's :class:`~deathsphere.simulation.bodies.GroundRun`."""
+    from deathsphere.physics import dynamics_on as don
+
+    t = np.asarray(t, dtype=np.float64)
+    state = np.asarray(state, dtype=np.float64)
+    body = params.body(np.shape(state)[1:])
+    c, e1 = state[dyn.C], _unit(state[dyn.E1])
+    e3, pvec = don.contact_on(state, body)
+    f = don.contact_force_on(state, body)
+    force, friction = f["force"], f["friction"]
+    rate = don.spin_rate_on(state, body)
+    steps = 0.5 * (rate[1:] + rate[:-1]) * np.diff(t)
+    spin = psi0 + np.concatenate((np.zeros(min(t.size, 1)), np.cumsum(steps)))
+    spoke = np.where(body.sphere, e1, np.cos(spin) * e3 + np.sin(spin) * np.cross(e1, e3, axis=0))
+    g = float(np.reshape(params.g, -1)[0])
+    accel = force - g * np.array([0.0, 0.0, 1.0])[:, None]
+    speed = _norm(np.cross(pvec - c, state[dyn.W], axis=0))
+    return {
+        "centre": c, "axis": e1, "e3": e3, "contact": pvec,
+        "spin": spin, "spoke": spoke,
+        "force": force, "normal_force": force - friction, "friction_force": friction,
+        "acceleration": accel, "accel_g": _norm(accel) / g, "load_g": _norm(force) / g,
+        "rate": _norm(state[dyn.W]), "speed": speed, "speed_km_h": speed * _KM_H_PER_M_S,
+        "normal": f["normal"], "friction_magnitude": f["friction_magnitude"], "mu_required": f["mu_required"],
+        "force_angle_deg": np.degrees(np.arctan2(f["friction_magnitude"], f["normal"])),
+    }
+
+
 def _speed(state, params, model):
     """The drawn body's centre speed: the paper's |a e3 x w|, a machine's |dC/dt|."""
     if model is PAPER:
@@ -336,9 +370,9 @@ def body_frames(summary, states: dict, *, refine: bool = True, params=None) -> d
         if not sel.size:
             continue
         t, y = t_all[sel], state[:, sel]
-        if params is not None and model_of(params) is MACHINE:
+        if params is not None and model_of(params) in (MACHINE, ON_GROUND):
             one = take(params, i)
-            geometry = machine_frame_geometry
+            geometry = machine_frame_geometry if model_of(params) is MACHINE else ground_frame_geometry
         else:
             one = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
                                  summary["side"][i] == "outside", isinstance(paper_body_named(summary["body"][i]), Ball))

@@ -21,7 +21,7 @@ import numpy as np
 
 from deathsphere.params import RTOL_MIN
 from deathsphere.physics import dynamics as dyn
-from deathsphere.simulation.bodies import model_of, take
+from deathsphere.simulation.bodies import ON_GROUND, model_of, take
 from deathsphere.simulation.events import EVENT_STATUSES, EVENT_TOL, stopped_at_start
 from deathsphere.simulation.integrator import integrate
 from deathsphere.simulation.series import (
@@ -208,6 +208,12 @@ class Simulation:
         chunk_steps = self.j_per_chunk * self.dt * s_max / _MAX_STEP_RATES
         self.pieces_per_chunk = max(1, int(math.ceil(chunk_steps / _STEPS_PER_CALL)))
         self._check_cost()
+
+    @property
+    def ground(self):
+        """The ground record of a run off the globe (docs/simulation.md, "On
+        any ground"), None in the globe."""
+        return self.starts.params.ground if self.model is ON_GROUND else None
 
     @property
     def n_chunks(self) -> int:

@@ -65,7 +65,7 @@ def sample_quantities(starts: Starts, idx, y, t, frame_rate, phi_carry, e0, e_sc
     pvec = model.contact_point(y, p)                            # (3, m, nb)
     pl = np.einsum("bji,jmb->imb", R, pvec)                    # orbit-frame components
     zp = np.moveaxis(R[:, :, 2], 0, 1)[:, None, :]             # z' (3, 1, nb)
-    theta = np.arctan2(np.hypot(pl[0], pl[1]), pl[2])
+    theta = model.polar_angle(pl)
     # azimuth about z': unwrapped sample by sample from the carry; in the
     # turning frame the frame's own rotation Omega t is added afterwards
     raw = np.arctan2(pl[1], pl[0])

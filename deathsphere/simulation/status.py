@@ -34,6 +34,11 @@ class RunStatus(IntEnum):
     NO_ORBIT = 5
     #: the integrator gave up
     FAILED = 6
+    #: the body's lowest point reached the floor at the wall's foot (a drum's
+    #: or a cone's; terminal event)
+    HITS_FLOOR = 7
+    #: the contact passed the wall's top edge (terminal event)
+    OVER_THE_TOP = 8
 
     @property
     def label(self) -> str:
@@ -52,6 +57,8 @@ _FIXED_REASONS = {
     RunStatus.COMPLETED: "ran the requested time",
     RunStatus.CONTACT_LOST: "the normal force fell to zero: the body leaves the surface",
     RunStatus.SLIPS: "the friction needed reached mu times the normal force: the body slips",
+    RunStatus.HITS_FLOOR: "the body's lowest point reached the floor at the foot of the wall",
+    RunStatus.OVER_THE_TOP: "the contact passed the wall's top edge: the body leaves the wall",
 }
 
 #: Reason of a wheel that does not fit on a vertical circle.
@@ -62,7 +69,8 @@ STATUSES = tuple(s.label for s in RunStatus if s is not RunStatus.PENDING)
 
 #: the statuses of a run that ended before its time, at an event time
 #: (the summary's event time; ``failed``: where the integrator gave up)
-ENDED_EARLY = (RunStatus.CONTACT_LOST, RunStatus.SLIPS, RunStatus.FAILED)
+ENDED_EARLY = (RunStatus.CONTACT_LOST, RunStatus.SLIPS, RunStatus.FAILED, RunStatus.HITS_FLOOR,
+               RunStatus.OVER_THE_TOP)
 ENDED_EARLY_LABELS = tuple(s.label for s in ENDED_EARLY)
 
 #: label of every code, indexable by an int8 code array

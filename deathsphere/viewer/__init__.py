@@ -104,7 +104,8 @@ def write_scene(output, scene, *, loop_seconds: float | None = None, playback: f
 
 
 def write_view(output, series: Table, summary: Table, frames: dict, *, title: str = "",
-               loop_seconds: float | None = None, playback: float | None = None, progress=None) -> int:
+               loop_seconds: float | None = None, playback: float | None = None, progress=None,
+               ground=None) -> int:
     """Write the 3-D view of a simulated orbit to ``output`` (.html, .gif or
     .mp4, by its extension); returns the file's size in bytes.
 
@@ -112,10 +113,12 @@ def write_view(output, series: Table, summary: Table, frames: dict, *, title: st
     summary and :meth:`deathsphere.simulation.Simulation.view_frames` (the
     geometry to draw, computed by the simulation: the viewer only draws);
     the other options are :func:`write_scene`'s, their checked values from
-    :func:`deathsphere.api.animation_options`.
+    :func:`deathsphere.api.animation_options`; ``ground`` the ground record
+    of a run off the globe (:attr:`deathsphere.simulation.Simulation.ground`).
     """
     from deathsphere.viewer.orbit_scene import build_scene
 
     check_view_output(output)
-    return write_scene(output, build_scene(series, summary, frames, title=title), loop_seconds=loop_seconds,
+    return write_scene(output, build_scene(series, summary, frames, title=title, ground=ground),
+                       loop_seconds=loop_seconds,
                        playback=playback, progress=progress)

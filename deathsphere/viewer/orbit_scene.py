@@ -16,7 +16,8 @@ import math
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.viewer.scene import EVENT_STATUSES, Readout, Scene, Track, frame_indices, sphere_ground
+from deathsphere.viewer.scene import (EVENT_STATUSES, Readout, Scene, Track, frame_indices, plane_ground, sphere_ground,
+                                      wall_ground)
 
 __all__ = ["build_scene", "MAX_FRAMES", "TRAIL_POINTS", "PANEL_COLUMNS", "CAMERA"]
 
@@ -43,9 +44,12 @@ def _float(x):
     return x if math.isfinite(x) else None
 
 
-def _panel(geo: dict, theta, alpha, mu_available) -> list:
+def _panel(geo: dict, theta, alpha, mu_available, height=None) -> list:
     """The readouts: the frames' own numbers, a machine's speed its centre
-    of mass's (ride's v_cm), theta and alpha from the time series."""
+    of mass's (ride's v_cm), theta (off the globe the contact's height)
+    and alpha from the time series."""
+    lane = (Readout("theta", "\u03b8 / \u03b1", "\u00b0", 2, theta, loop=False) if height is None
+            else Readout("height", "height / \u03b1", " m", 2, height, loop=False))
     speed = geo.get("rider_speed", geo["speed"])
     return [Readout("speed", "speed", " m/s", 2, speed),
             Readout("speed_km_h", "", " km/h", 1, 3.6 * speed if "rider_speed" in geo else geo["speed_km_h"],
@@ -55,7 +59,7 @@ def _panel(geo: dict, theta, alpha, mu_available) -> list:
             Readout("mu_available", "\u03bc available", "", 3, value=mu_available, none_text="no limit",
                     loop_join=", "),
             Readout("force_angle", "force \u2220 normal", "\u00b0", 1, geo["force_angle_deg"]),
-            Readout("theta", "\u03b8 / \u03b1", "\u00b0", 2, theta, loop=False),
+            lane,
             Readout("alpha", "\u03b1", "\u00b0", 2, alpha, join=" / ", loop=False),
             Readout("normal", "N", " m/s\u00b2", 2, geo["normal"], note=True, loop=False),
             Readout("friction", "F_f", " m/s\u00b2", 2, geo["friction_magnitude"], note=True, loop=False)]
@@ -116,8 +120,30 @@ def _title(meta: dict, title: str) -> str:
     return (f"{title}: " if title else "") + f"{what} ({start}, a = {meta['a']:g} m, r = {meta['r']:g} m)"
 
 
+def _wall_title(meta: dict, title: str, ground) -> str:
+    lane = "turn radius" if ground.name == "plane" else "height"
+    at = meta["rho0"] if ground.name == "plane" else meta["height0"]
+    return (f"{title}: " if title else "") + (
+        f"{_drawn(meta['body'])[2] or meta['body']} on the {ground.name}, horizontal orbit ({lane} {at:.2f} m, "
+        f"\u03b1\u2080 = {meta['alpha0_deg']:.1f}\u00b0, a = {meta['a']:g} m)")
+
+
+def _wall_view(ground, series: Table, a: float) -> tuple:
+    """(the ground as drawn, camera target, extent) of a run off the globe:
+    a wall up to its top (an open one: twice the highest contact's height,
+    and 4 a above it), flat ground the square the track covers."""
+    rho = np.asarray(series["rho_contact_m"], dtype=np.float64)
+    height = np.asarray(series["height_m"], dtype=np.float64)
+    if not hasattr(ground, "highest_lane"):
+        half = 1.2 * float(np.max(rho)) + 2 * a
+        return plane_ground((0.0, 0.0), half), [0.0, 0.0, a], half
+    drawn = wall_ground(ground, max(2.0 * float(np.max(height)), float(np.max(height)) + 4 * a))
+    r, z = float(np.max(drawn["rho"])), np.asarray(drawn["z"])
+    return drawn, [0.0, 0.0, 0.5 * float(z[-1] + z[0])], 1.05 * max(r, 0.5 * float(z[-1] - z[0]))
+
+
 def build_scene(series: Table, summary: Table, frames: dict, *, title: str = "",
-                max_frames: int = MAX_FRAMES) -> Scene:
+                max_frames: int = MAX_FRAMES, ground=None) -> Scene:
     """The scene of a run: one track per summary row (a body that could not
     start, status no_fit / no_orbit, has zero frames).
 
@@ -131,6 +157,9 @@ def build_scene(series: Table, summary: Table, frames: dict, *, title: str = "",
     title : put before the run's own words
     max_frames : frames kept per body, the last ones (the event is the
         last); the trail still goes back to t = 0
+    ground : the ground record of a run off the globe (None: the globe
+        of the summary's r): a wall drawn from its meridian, flat ground
+        as a square
     """
     rows = np.asarray(series["input_row"])
     tracks = []
@@ -152,6 +181,9 @@ def build_scene(series: Table, summary: Table, frames: dict, *, title: str = "",
                 "g": float(summary["g_m_s2"][i]), "theta0_deg": float(summary["theta_deg"][i]),
                 "alpha0_deg": float(summary["alpha_deg"][i]), "period": _float(summary["period_s"][i]),
                 "mu_available": _float(summary["mu_available"][i]) if "mu_available" in summary.names else None}
+        if ground is not None:
+            # no polar angle off the globe: the lane is its height
+            meta.update(theta0_deg=None, height0=float(summary["height_m"][i]), rho0=float(summary["r_m"][i]))
         track = Track(name=meta["body"], t=np.zeros(0), status=status, reason=str(summary["reason"][i]),
                       event_time=ev, event_point="contact", meta=meta)
         if sel.size:
@@ -163,7 +195,9 @@ def build_scene(series: Table, summary: Table, frames: dict, *, title: str = "",
             track.motion = {"rate": now["rate"], "speed": now["speed"], "bounds": tuple(geo["bounds"])}
             theta, alpha = (np.interp(track.t, t_rows, np.asarray(series[col], dtype=np.float64)[sel])
                             for col in PANEL_COLUMNS.values())
-            track.panel = _panel(now, theta, alpha, meta["mu_available"])
+            height = (None if ground is None else
+                      np.interp(track.t, t_rows, np.asarray(series["height_m"], dtype=np.float64)[sel]))
+            track.panel = _panel(now, theta, alpha, meta["mu_available"], height)
             track.note = "(per unit mass)"
             track.draw = _draw(meta["body"], "com" in now, meta["a"], meta["r"], meta["g"])
             on_row = np.isin(geo["t"], t_rows)
@@ -175,8 +209,12 @@ def build_scene(series: Table, summary: Table, frames: dict, *, title: str = "",
     r, a = first["r"], first["a"]
     extent = r + 2.2 * a if first["side"] == "outside" else 1.05 * r
     el, az = CAMERA.get(first["orbit"], CAMERA["horizontal"])
-    return Scene(ground=sphere_ground(r), tracks=tracks, title=_title(first, title),
-                 camera={"az": az, "el": el, "target": [0.0, 0.0, 0.0], "extent": extent},
+    if ground is None:
+        drawn, target, words = sphere_ground(r), [0.0, 0.0, 0.0], _title(first, title)
+    else:
+        (drawn, target, extent), words = _wall_view(ground, series, a), _wall_title(first, title, ground)
+    return Scene(ground=drawn, tracks=tracks, title=words,
+                 camera={"az": az, "el": el, "target": target, "extent": extent},
                  follow={"track": 0, "target": "centre", "heading": None,
                          "size": max(8 * a, 0.45 * 1.25 * extent)},
                  legend=_legend(first["body"], "com" in tracks[0].points))

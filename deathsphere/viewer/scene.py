@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Scene", "Track", "Readout", "sphere_ground", "plane_ground", "revolution_ground", "ground_extent",
+__all__ = ["Scene", "Track", "Readout", "sphere_ground", "plane_ground", "revolution_ground", "wall_ground", "WALL_POINTS", "ground_extent",
            "frame_indices", "playback_factor", "slow_motion_words", "PLAYBACK_FACTORS", "EVENT_STATUSES",
            "DRAW_KINDS"]
 
@@ -38,7 +38,7 @@ PLAYBACK_FACTORS = (10.0, 5.0, 2.0, 1.0) + tuple(
 #: statuses that end a run at an event of the simulation: the labels of
 #: deathsphere.simulation.status.ENDED_EARLY, written out because the viewer
 #: reads tables only (a test keeps the two equal)
-EVENT_STATUSES = ("contact_lost", "slips", "failed")
+EVENT_STATUSES = ("contact_lost", "slips", "failed", "hits_floor", "over_the_top")
 #: the drawing primitives a track's items name (their keys: docs/simulation.md, "3-D view")
 DRAW_KINDS = ("wheel", "ball", "chain", "ring", "dot", "path", "arrow", "capsule", "cross", "label")
 
@@ -58,6 +58,23 @@ def revolution_ground(rho, z) -> dict:
     """A surface of revolution about z, its meridian the table (rho, z) [m]
     from one end to the other (a drum: rho constant; a cone: rho linear in z)."""
     return {"kind": "revolution", "rho": [float(x) for x in rho], "z": [float(x) for x in z]}
+
+
+#: Points of a drum's, a cone's or a profile's drawn meridian up its wall.
+WALL_POINTS = 25
+
+
+def wall_ground(ground, open_top: float) -> dict:
+    """A wall's ground record (a drum, a cone, a profile) as the scene draws
+    it: its meridian from the floor's centre out along the floor and up the
+    wall to its top (a wall without a top: up to the height ``open_top``
+    [m] above its lowest point), :data:`WALL_POINTS` points up the wall."""
+    top = float(ground.highest_lane)
+    if not math.isfinite(top):
+        top = float(open_top)
+    rho, z = ground.contact(np.linspace(0.0, top, WALL_POINTS))
+    rho, z = np.concatenate(([0.0], rho)), np.concatenate(([float(ground.lowest)], z))
+    return revolution_ground(rho, z)
 
 
 def ground_extent(ground: dict) -> float:

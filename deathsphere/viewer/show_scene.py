@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from deathsphere.table import Table
-from deathsphere.viewer.scene import Scene, Track, revolution_ground, sphere_ground
+from deathsphere.viewer.scene import Scene, Track, sphere_ground, wall_ground
 
 __all__ = ["act_scene", "frame_step", "MAX_FRAMES", "MAX_MOVE_R", "CAMERA", "PLAYBACK", "LOOP_PLAYBACK"]
 
@@ -138,12 +138,20 @@ def _fall(result, falls: Table, rows: list[int], r: float, g: float) -> dict:
         x0 = _unit_point(r_g, float(falls["theta_lost_deg"][first]), float(falls["phi_lost_deg"][first]))
     else:
         x0 = at_fail["com"][:, 0]
-    x1 = _unit_point(r, float(falls["theta_land_deg"][first]), float(falls["phi_land_deg"][first]))
-    z = np.array([0.0, 0.0, 1.0])
-    v0 = (x1 - x0) / T + 0.5 * g * T * z
-    s = np.linspace(0.0, T, PATH_POINTS)
-    path = x0[:, None] + v0[:, None] * s[None, :] - 0.5 * g * (s ** 2)[None, :] * z[:, None]
-    out.update({"t_lost": t_lost, "t_land": t_land, "path_t": t_lost + s, "path": path, "land": x1,
+    if math.isfinite(float(falls["theta_land_deg"][first])):
+        x1 = _unit_point(r, float(falls["theta_land_deg"][first]), float(falls["phi_land_deg"][first]))
+        z = np.array([0.0, 0.0, 1.0])
+        v0 = (x1 - x0) / T + 0.5 * g * T * z
+        s = np.linspace(0.0, T, PATH_POINTS)
+        path_t = t_lost + s
+        path = x0[:, None] + v0[:, None] * s[None, :] - 0.5 * g * (s ** 2)[None, :] * z[:, None]
+    else:
+        # on a drum or a cone the landing's height and azimuth leave its distance from the axis free: the
+        # act's own flight
+        flight = result.fall_path(rider, t_fail, float(falls["speed_fraction"][first]), PATH_POINTS)
+        path_t, path = flight["t"], flight["com"]
+        x1 = path[:, -1]
+    out.update({"t_lost": t_lost, "t_land": t_land, "path_t": path_t, "path": path, "land": x1,
                 "impact": float(falls["impact_speed_m_s"][first])})
     return out
 
@@ -280,10 +288,6 @@ def _widths(result, names) -> list:
     return [float(lanes[name].width_m) for name in names]
 
 
-#: Points of a drum's or a cone's drawn meridian up its wall.
-WALL_POINTS = 25
-
-
 def _wall(result, probe: dict) -> dict | None:
     """The drum or the cone of an ``[arena]`` plan as the scene draws it
     (None on the globe): its meridian from the floor's centre out along the
@@ -294,13 +298,10 @@ def _wall(result, probe: dict) -> dict | None:
     ground = result.plan.globe.ground
     if result.plan.globe.is_globe:
         return None
-    top = float(ground.highest_lane)
-    if not math.isfinite(top):
-        top = max(float(np.max(p["head"][2])) for p in probe.values()) + 0.5
-    rho, z = ground.contact(np.linspace(0.0, top, WALL_POINTS))
-    rho, z = np.concatenate(([0.0], rho)), np.concatenate(([float(ground.lowest)], z))
+    drawn = wall_ground(ground, max(float(np.max(p["head"][2])) for p in probe.values()) + 0.5)
+    rho, z = np.asarray(drawn["rho"]), np.asarray(drawn["z"])
     r = float(np.max(rho))
-    return {"ground": revolution_ground(rho, z), "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
+    return {"ground": drawn, "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
             "extent": 1.05 * max(r, 0.5 * float(z[-1] - z[0])),
             "what": f"on a {ground.name} of {2 * float(rho[1]):.2f} m"}
 

@@ -47,15 +47,20 @@ def test_the_golfers_dilemma_in_the_orbit_table(run):
         assert float(r["freq_fast_rad_s"]) == pytest.approx(omega * np.sqrt(k / (k + 1)), rel=1e-9)
 
 
-def test_outside_another_surface_the_stability_is_said_not_computed(run):
+def test_outside_another_surface_the_stability_is_the_exact_linearisations(run):
     # on top of a cone leaning in at 150 degrees (a roof): steady orbits exist outside
     res = run("orbit", "--surface", "cone", "--diameter", "6", "--wall-angle", "150", "--height", "0.5",
               "--alpha", "50", "--alpha", "70", "--side", "outside", "--format", "csv")
     assert res.exit_code == 0, res.stderr
     got = rows(res.stdout)
     assert [r["status"] for r in got] == ["ok", "ok"]
-    for r in got:
-        assert r["stability"] == "unknown" and "outside" in r["stability_method"] and r["growth_rate_1_s"] == ""
+    from deathsphere.physics.stability.on_ground import wheel_stability_on
+
+    roof = Cone(3.0, np.radians(150.0))
+    for r, alpha in zip(got, (50.0, 70.0)):
+        assert r["stability_method"] == "exact-linearisation" and r["stability"] in ("stable", "unstable")
+        want = wheel_stability_on(roof, 0.5, np.radians(alpha), 0.3, 0.5, 9.80665, outside=True)
+        assert float(r["growth_rate_1_s"]) == pytest.approx(float(want["growth_rate"]), rel=1e-12, abs=1e-12)
 
 
 def test_a_cone_sweep_and_the_api_agree(run):
@@ -120,12 +125,28 @@ def test_an_input_batch_on_a_drum_gives_a_row_per_line(run, tmp_path):
      "not a shape of the cylinder"),
     (["--surface", "plane", "--height", "1", "--alpha", "10"], "turn_radius"),
     (["--theta", "60", "--alpha", "10", "--wall-height", "3"], "not a shape of the sphere"),
-    (["--surface", "cylinder", "--diameter", "9", "--height", "1", "--speed", "10"], "needs its tilt alpha"),
 ])
 def test_bad_arena_options_are_one_line_and_exit_2(run, args, words):
     res = run("orbit", *args, "--format", "csv")
     assert res.exit_code == 2, (res.exit_code, res.stdout)
     assert res.stderr.count("\n") == 1 and words in res.stderr and "Traceback" not in res.stderr
+
+
+def test_the_wall_of_death_given_its_speed(run):
+    """--speed on the drum: every tilt of eq. S2, one row each; the contact
+    runs round the drum's radius, so Omega = v / R, and eq. S2 written out
+    holds at the printed tilt; a speed no tilt gives is one no_orbit row."""
+    res = run("orbit", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "6", "--height", "2",
+              "--speed", "30mph", "--speed", "1", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    fast, slow = rows(res.stdout)
+    assert fast["status"] == "ok" and fast["branch"] == "0" and float(fast["v_contact_m_s"]) == 13.4112
+    omega, alpha = float(fast["omega_rad_s"]), np.radians(float(fast["alpha_deg"]))
+    assert omega == pytest.approx(13.4112 / 4.8768, rel=1e-12)
+    rp = 4.8768 - 0.3 * np.cos(alpha)
+    assert omega ** 2 == pytest.approx(9.80665 / np.tan(alpha) / (2 * rp + 0.5 * 0.3 * np.cos(alpha)), rel=1e-10)
+    assert slow["status"] == "no_orbit" and "S2 has no root" in slow["reason"] and slow["branch"] == ""
+    assert float(slow["rho_contact_m"]) == pytest.approx(4.8768)
 
 
 def test_a_lane_off_the_wall_is_a_status(run):

@@ -184,15 +184,18 @@ MACHINE_FILES = {".toml": 'name = "my bike"\nmass = 160\n', ".csv": "name,mass\n
 
 def provided(args: tuple, folder: Path) -> tuple:
     """What an example leaves to the person, provided: the machine file it
-    names is written in ``folder``, and a show's plan (the one ``show
-    --example`` prints); a dask scheduler's address is left out (the
-    output is that of a local run, docs/contract.md)."""
+    names is written in ``folder``, and a show's plan (one shipped in
+    examples/, else the one ``show --example`` prints); a dask scheduler's
+    address is left out (the output is that of a local run, docs/contract.md)."""
     if args and args[0] == "show":
         from deathsphere.api.shows import EXAMPLE_PLAN
 
         for arg in args[1:]:
             if arg.endswith(".toml") and not (folder / arg).exists():
-                (folder / arg).write_text(EXAMPLE_PLAN, encoding="utf-8")
+                shipped = README.parent / arg
+                (folder / arg).parent.mkdir(parents=True, exist_ok=True)
+                (folder / arg).write_text(shipped.read_text(encoding="utf-8") if shipped.is_file() else EXAMPLE_PLAN,
+                                          encoding="utf-8")
     out, skip = [], False
     for i, arg in enumerate(args):
         if skip:

@@ -74,6 +74,8 @@ def test_a_walls_hands_free_turns_and_rider_table(run):
     ((*DRUM, "--height", "4", "--speed", "60km/h"), "--height", "at most 3.6576 m on this cylinder"),
     ((*DRUM, "--theta", "90", "--speed", "60km/h"), "--theta", "on a cylinder give height"),
     ((*STUNT, "--surface", "plane", "--height", "1", "--speed", "5"), "--surface", "not a plane"),
+    ((*STUNT, "--surface", "profile", "--profile", "bowl.csv", "--height", "1", "--speed", "5"), "--profile",
+     "does not take profile"),
     ((*STUNT, "--surface", "cylinder", "--diameter", "0.5", "--height", "0.1", "--speed", "5"), "--diameter",
      "do not fit in a cylinder"),
     (("ride", "--machine", "benchmark-bicycle", "--flat", "--speed", "5", "--surface", "cylinder"), "--surface",

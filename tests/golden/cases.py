@@ -15,6 +15,8 @@ HERE = Path(__file__).parent
 PLAN = str(HERE / "act.toml")
 #: The wall of death's act of docs/show.md sec. 11 (a plan's [arena]).
 WALL = str(HERE / "wall.toml")
+#: The same act as shipped to users (examples/; a test holds it equal to WALL), one rider falling.
+WALL_EXAMPLE = str(HERE.parents[1] / "examples" / "wall_of_death.toml")
 
 CASES = {
     "orbit_wheel_grid": ["orbit", "--theta", "30:150:30", "--alpha", "5", "--alpha", "10", "--mu", "1", "--max-g", "5"],
@@ -61,6 +63,8 @@ CASES = {
     "show_monte_carlo_summary": ["show", PLAN, "--monte-carlo", "20", "--seed", "1", "--table", "summary"],
     "show_wall_riders": ["show", WALL, "--table", "riders"],
     "show_wall_pairs": ["show", WALL, "--table", "pairs"],
+    "show_wall_fall": ["show", WALL_EXAMPLE, "--fail", "Ben@1.2:0.5", "--table", "falls"],
+    "show_wall_monte_carlo_summary": ["show", WALL_EXAMPLE, "--monte-carlo", "20", "--seed", "1", "--table", "summary"],
     "simulate_wheel": ["simulate", "--theta", "60", "--alpha", "10", "--periods", "1", "--perturb", "1"],
     "simulate_sphere": ["simulate", "--body", "sphere", "--theta", "60", "--omega3", "80", "--periods", "1"],
     "simulate_vertical": ["simulate", "--vertical", "--theta", "90", "--v-top", "6", "--periods", "1"],

@@ -300,3 +300,35 @@ def test_a_horizontal_lane_holds_where_a_scan_of_every_tilt_finds_one():
     check = ride_orbit(th[held], out["alpha"][held], R, G, head=MACHINE["head"], mu=0.9,
                        **{k: x for k, x in MACHINE.items() if k != "head"})
     np.testing.assert_allclose(check["v_cm"], v[held], rtol=1e-6)
+
+
+def test_on_the_drum_a_lane_holds_only_where_friction_carries_the_weight():
+    """The wall of death's rule from the forces alone: the wall's push is
+    horizontal, so it turns the centre of mass on its circle, N = m v^2 / r_G,
+    and friction alone carries the weight, F = m g: the lane needs
+    mu >= g r_G / v^2 whatever the machine's inertia.  r_G is the centre of
+    mass's distance from the axis at the tilt (eq. MS1 with beta = 90 deg:
+    R - t - (h - t) cos(alpha)), never less than R - h; so below
+    v^2 = g (R - h) / mu no tilt holds, and every tilt that holds keeps
+    g r_G / v^2 <= mu."""
+    from deathsphere.physics.ground import Cylinder
+
+    radius, mu = 16 * 0.3048, 0.8
+    heights = np.array([0.5, 1.0, 2.0, 3.0])
+    speeds = np.linspace(0.0, 16.0, 33)
+    hh, v = (x.ravel() for x in np.meshgrid(heights, speeds, indexing="ij"))
+    m = MACHINE
+    out = fall.horizontal_holds_on(hh, v, 0.2, Cylinder(radius, 4.0), G,
+                                   arrays(m["mass"], m["h"], m["a"], m["t"], m["inertia_pitch"], m["inertia_yaw"],
+                                          m["spin_inertia"], m["head"]), mu=mu)
+    never = v ** 2 < G * (radius - m["h"]) / mu
+    assert not out["holds"][never].any()
+    held = out["holds"]
+    assert held.sum() > 40 and never.sum() > 8          # both sides of the rule are tried
+    r_g = radius - m["t"] - (m["h"] - m["t"]) * np.cos(out["alpha"][held])
+    assert np.all(G * r_g / v[held] ** 2 <= mu * (1 + 1e-9))
+    # one least speed a height: below it he leaves the wall, above it he rides on (no band above: max_g is not asked)
+    for k in range(heights.size):
+        row = held[k * speeds.size:(k + 1) * speeds.size]
+        first = int(np.argmax(row))
+        assert row[first:].all() and not row[:first].any()

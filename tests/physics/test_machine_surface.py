@@ -12,7 +12,7 @@ import warnings
 import numpy as np
 import pytest
 
-from deathsphere.physics.ground import Cone, Cylinder, Sphere
+from deathsphere.physics.ground import Cone, Cylinder, Plane, Profile, Sphere
 from deathsphere.physics.machine import fit_window, meridian_points, ride_orbit, solve_alpha_for_speed
 from deathsphere.physics.machine_arrays import MachineArrays, machine_arrays
 from deathsphere.physics.machine_surface import (
@@ -324,3 +324,104 @@ def test_the_machine_needs_of_a_ground_its_protocol_only():
         np.testing.assert_array_equal(got[key], ref[key], err_msg=key)
     np.testing.assert_array_equal(solve_alpha_for_speed_on(h[:, 0], np.full(9, 12.0), _ProtocolOnly(cone), G, m),
                                   solve_alpha_for_speed_on(h[:, 0], np.full(9, 12.0), cone, G, m))
+
+
+# ---------------------------------------------------------------------------
+# flat ground and a profile: the machine through the same protocol
+
+def test_a_point_mass_rider_on_flat_ground_leans_as_the_textbook_says():
+    """A point mass h above a knife edge on flat ground, the contact R from
+    the turn's centre: the body lies along the contact force, so its lean
+    phi from the vertical is tan(phi) = v_G^2 / (g r_G) with r_G = R - h
+    sin(phi) (the textbook's tan(phi) = v^2 / (g R) for the centre of mass's
+    own circle)."""
+    m = MachineArrays(*(np.asarray(x, dtype=float) for x in (100.0, 1.0, 0.3, 0.0, 0, 0, 0, 0, 1.2)))
+    turn = 20.0
+    alpha = np.radians(np.linspace(20, 85, 14))
+    orb = ride_orbit_on(turn, alpha, Plane(), G, m)
+    assert np.all(orb["status"] == Status.OK)
+    phi = np.pi / 2 - alpha
+    r_g = turn - 1.0 * np.sin(phi)
+    np.testing.assert_allclose(orb["r_g"], r_g, rtol=1e-14)
+    np.testing.assert_allclose(np.tan(phi), orb["v_cm"] ** 2 / (G * r_g), rtol=1e-12)
+    # flat ground carries the weight, friction the centripetal force
+    np.testing.assert_allclose(orb["normal"], G, rtol=1e-15)
+    np.testing.assert_allclose(orb["mu_required"], np.tan(phi), rtol=1e-12)
+
+
+def test_a_wide_tyre_leans_further_by_the_motorcycle_formula():
+    """A tyre of cross-section radius t: the contact force runs from the
+    contact to the centre of mass, at phi_eff from the vertical, tan(phi_eff)
+    = v_G^2 / (g r_G); the machine's own lean phi is larger, phi = phi_eff +
+    asin(t sin(phi_eff) / (h - t)) (the triangle contact - crown centre -
+    centre of mass: PQ = t upright, QG = h - t along the machine)."""
+    h, t, turn = 0.6, 0.09, 15.0
+    m = MachineArrays(*(np.asarray(x, dtype=float) for x in (200.0, h, 0.3, t, 0, 0, 0, 0, 1.4)))
+    alpha = np.radians(np.linspace(25, 85, 13))
+    orb = ride_orbit_on(turn, alpha, Plane(), G, m)
+    assert np.all(orb["status"] == Status.OK)
+    phi = np.pi / 2 - alpha
+    r_g = turn - (h - t) * np.sin(phi)                       # G above the crown's centre, t over the contact
+    phi_eff = np.arctan(orb["omega"] ** 2 * r_g / G)
+    np.testing.assert_allclose(phi, phi_eff + np.arcsin(t * np.sin(phi_eff) / (h - t)), rtol=1e-12)
+    # the point rider's lean would be phi_eff: the tyre adds lean
+    assert np.all(phi > phi_eff)
+
+
+FLAT_AND_PROFILES = [Plane(), Profile(np.linspace(0.0, 12.0, 61), 0.08 * np.linspace(0.0, 12.0, 61) ** 2),
+                     Profile(np.full(7, 16 * FT), np.linspace(0.0, 12 * FT, 7))]
+
+
+@pytest.mark.parametrize("ground", FLAT_AND_PROFILES, ids=["plane", "bowl", "drum-sampled"])
+@pytest.mark.parametrize("name", ["stunt125", "benchmark-bicycle-rigid"])
+def test_newton_euler_from_vectors_on_flat_ground_and_profiles(ground, name):
+    m = machine_arrays(PRESETS[name])
+    lanes = np.array([6.0, 15.0, 40.0]) if isinstance(ground, Plane) else np.linspace(0.6, 3.3, 4)
+    alphas = np.radians(np.linspace(-30, 85, 24))
+    orb = ride_orbit_on(lanes[:, None], alphas[None, :], ground, G, m)
+    ok = orb["status"] == Status.OK
+    assert ok.sum() > 10
+    for i, k in zip(*np.nonzero(np.isfinite(orb["omega"]))):
+        res, roll, f, n, s = _residual(ground, lanes[i], alphas[k], orb["omega"][i, k], m)
+        assert res < 1e-12 and roll < 1e-12 * orb["omega"][i, k] * 20.0
+        np.testing.assert_allclose(s, orb["spin"][i, k], rtol=1e-12)
+        assert abs(f @ n - orb["normal"][i, k]) < 1e-12 * G * orb["load_g"][i, k]
+
+
+def test_a_drum_sampled_as_a_profile_is_the_drum():
+    m = machine_arrays(PRESETS["stunt125"])
+    drum, sampled = Cylinder(16 * FT, 12 * FT), FLAT_AND_PROFILES[2]
+    h, alpha = np.linspace(0.2, 3.0, 8)[:, None], np.radians(np.linspace(-40, 85, 26))[None, :]
+    ref, got = ride_orbit_on(h, alpha, drum, G, m), ride_orbit_on(h, alpha, sampled, G, m)
+    np.testing.assert_array_equal(got["status"], ref["status"])
+    assert (ref["status"] == Status.OK).sum() > 50
+    for key in KEYS + ("floor_clearance",):
+        np.testing.assert_allclose(got[key], ref[key], rtol=1e-9, atol=1e-9, err_msg=key)
+
+
+def test_on_flat_ground_the_tyre_stands_on_the_floor_it_rides():
+    """The floor of MS7 is flat ground itself: the tyre's lowest point is the
+    contact (0 above it, to rounding), not a hit; a wheel tilted below the
+    ground does not fit."""
+    m = machine_arrays(PRESETS["stunt125"])
+    orb = ride_orbit_on(20.0, np.radians([-10.0, 10.0, 30.0, 60.0, 89.0]), Plane(), G, m)
+    assert orb["status"][0] == Status.NO_FIT and orb["reason"][0] == Reason.MACHINE_NO_FIT_WALL
+    assert np.all(orb["status"][1:] == Status.OK)
+    assert np.all(np.abs(orb["floor_clearance"][1:]) < 1e-12)
+
+
+@pytest.mark.parametrize("ground", FLAT_AND_PROFILES[:2], ids=["plane", "bowl"])
+def test_the_tilts_for_a_speed_and_a_rate_give_them_back_on_flat_ground_and_a_bowl(ground):
+    m = machine_arrays(PRESETS["stunt125"])
+    lanes = np.array([8.0, 30.0]) if isinstance(ground, Plane) else np.array([1.0, 4.0])
+    h, v = (x.ravel() for x in np.meshgrid(lanes, [6.0, 11.0, 16.0], indexing="ij"))
+    tilts = solve_alpha_for_speed_on(h, v, ground, G, m)
+    rows, cols = np.nonzero(np.isfinite(tilts))
+    assert np.unique(rows).size == h.size
+    np.testing.assert_allclose(ride_orbit_on(h[rows], tilts[rows, cols], ground, G, m)["v_cm"], v[rows], rtol=1e-9)
+    rate = v / (h if isinstance(ground, Plane) else np.asarray(ground.contact(h)[0]))
+    tilts = solve_alpha_for_rate_on(h, rate, ground, G, m)
+    rows, cols = np.nonzero(np.isfinite(tilts))
+    assert np.unique(rows).size == h.size
+    np.testing.assert_allclose(ride_orbit_on(h[rows], tilts[rows, cols], ground, G, m)["omega"], rate[rows],
+                               rtol=1e-9)

@@ -5,6 +5,7 @@ One module per question (docs/stability.md):
 =================  ==========================================================
 module             concept
 =================  ==========================================================
+``methods``        the labels of ``stability_method`` and their sentences
 ``verdict``        the verdict codes and the tolerances that decide them
 ``reduction``      exact Jacobians reduced to the complement of the neutral
                    directions; growth rate and frequencies from them
@@ -69,7 +70,7 @@ _HOME = {
 }
 
 #: The submodules, reachable as attributes as if they had been imported here.
-_MODULES = ("verdict", "reduction", "frequencies", "horizontal", "on_ground", "margin", "floquet", "rk8", "paper",
+_MODULES = ("methods", "verdict", "reduction", "frequencies", "horizontal", "on_ground", "margin", "floquet", "rk8", "paper",
             "closed_forms", "comparison")
 
 __all__ = list(_HOME)

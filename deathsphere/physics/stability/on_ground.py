@@ -8,6 +8,10 @@ the complement of the constraint normals, the rotation about the vertical
 and the steady family's directions; the family is moved along the meridian
 (d/ds = cos(beta) d/drho + sin(beta) d/dz, the ball's wall angle turning
 at d beta/ds = kappa_meridian) by complex steps of the closed-form states.
+On the outside the same reduction holds with the flow's contact taken on
+the other side (docs/dynamics.md sec. 7, "Outside"): the steady states,
+the constraint normals and the family are written with e3, whatever its
+side.
 """
 
 from __future__ import annotations
@@ -40,12 +44,17 @@ def _reduced(X0, A, D, p, Om):
     return np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
 
 
-def wheel_stability_on(ground, height, alpha, a, k, g):
+def wheel_stability_on(ground, height, alpha, a, k, g, outside=False):
     """Beyond the paper (docs/stability.md): exact linear stability of a wheel's steady orbits at lane ``height``
-    [m] and tilt ``alpha`` [rad] on any ground: the dict of
+    [m] and tilt ``alpha`` [rad] on any ground, inside or ``outside`` (bools,
+    broadcast): the dict of
     :func:`~deathsphere.physics.stability.horizontal.wheel_stability`
-    (4 nutation eigenvalues in the turning frame, growth rate, verdict)."""
-    shape, (h, al, a, k, g) = _flat(height, alpha, a, k, g)
+    (4 nutation eigenvalues in the turning frame, growth rate, verdict).
+    The steady state is the same on both sides (eqs. 11-13, 29: alpha fixes
+    e3, the centre a behind the contact); the side enters through the
+    contact's e3 against grad F (docs/dynamics.md sec. 7, "Outside")."""
+    shape, (h, al, a, k, g, out) = _flat(height, alpha, a, k, g, outside)
+    out = out != 0
     n = h.size
     rho, z = ground.contact(h)
     beta = ground.wall_angle(h)
@@ -55,7 +64,7 @@ def wheel_stability_on(ground, height, alpha, a, k, g):
     step = 1j * COMPLEX_STEP
     ds = np.imag(don.wheel_state_at(rho + step * np.cos(beta), z + step * np.sin(beta), al, a, k, g)[0]) / COMPLEX_STEP
     da = np.imag(don.wheel_state_at(rho, z, al + step, a, k, g)[0]) / COMPLEX_STEP
-    p = don.ground_body(ground, a, k, g)
+    p = don.ground_body(ground, a, k, g, outside=out)
     X0 = np.where(ok, X0, np.nan_to_num(X0))
     c, e1, w = X0[0:3], X0[3:6], X0[6:9]
     e3, pt = don.contact_on(X0, p)
@@ -78,25 +87,27 @@ def wheel_stability_on(ground, height, alpha, a, k, g):
     return stability_result(shape, ev, growth, slow, fast, verdict, scale, np.where(ok, Om, np.nan))
 
 
-def ball_stability_on(ground, height, omega, a, k, g):
+def ball_stability_on(ground, height, omega, a, k, g, outside=False):
     """Exact linear stability of a ball's steady orbits of rate ``omega``
-    [rad/s] at lane ``height`` [m] on any ground: the dict of
+    [rad/s] at lane ``height`` [m] on any ground, inside or ``outside`` (bools,
+    broadcast; beyond the paper, docs/stability.md): the dict of
     :func:`~deathsphere.physics.stability.horizontal.sphere_stability`
     (one nutation pair, in ``freq_fast``; for a ball in a vertical drum
     the bobbing of the golfer's dilemma, docs/dynamics.md eq. G9)."""
-    shape, (h, Om, a, k, g) = _flat(height, omega, a, k, g)
+    shape, (h, Om, a, k, g, out) = _flat(height, omega, a, k, g, outside)
+    out = out != 0
     n = h.size
     rho, z = ground.contact(h)
     beta = ground.wall_angle(h)
     kappa = ground.curvatures(h)[0]
     ok = np.isfinite(Om) & (Om != 0) & (np.abs(np.sin(beta)) > 1e-12)
     Om_s = np.where(ok, Om, 1.0)
-    X0, _ = don.ball_state_at(rho, z, beta, Om_s, a, k, g)
+    X0, _ = don.ball_state_at(rho, z, beta, Om_s, a, k, g, outside=out)
     step = 1j * COMPLEX_STEP
     ds = np.imag(don.ball_state_at(rho + step * np.cos(beta), z + step * np.sin(beta), beta + step * kappa,
-                                   Om_s, a, k, g)[0]) / COMPLEX_STEP
-    dom = np.imag(don.ball_state_at(rho, z, beta, Om_s + step, a, k, g)[0]) / COMPLEX_STEP
-    p = don.ground_body(ground, a, k, g, sphere=True)
+                                   Om_s, a, k, g, outside=out)[0]) / COMPLEX_STEP
+    dom = np.imag(don.ball_state_at(rho, z, beta, Om_s + step, a, k, g, outside=out)[0]) / COMPLEX_STEP
+    p = don.ground_body(ground, a, k, g, sphere=True, outside=out)
     e3, _ = don.contact_on(X0, p)
     w = X0[6:9]
     S = np.sqrt(dot(w, w) + Om_s ** 2 + g / a)

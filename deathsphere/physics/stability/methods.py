@@ -1,0 +1,52 @@
+"""The words of a table's ``stability_method`` column: one short label per
+way a row's stability was found (or why it was not), the same in every
+command, and the sentence each stands for (docs/contract.md, "Stability").
+
+A label is what a script compares; the sentence is what a person reads
+(``deathsphere stability`` prints it as the note of a row it could not
+analyse).  The kind of stability an analysed row has (``neutral``,
+``damped``, ``growing``) is ``stability_kind``'s, not the method's.
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "EXACT", "EXACT_STEER_LOCKED", "FLOQUET", "NOT_ANALYSED_K0", "NOT_ANALYSED_PARTICLE",
+    "NOT_ANALYSED_POINT_MASS", "NOT_ANALYSED_OFF_GLOBE", "METHOD_TEXT", "method_text",
+]
+
+#: The exact linearisation of the steady orbit (docs/stability.md).
+EXACT = "exact-linearisation"
+#: The single-contact machine's exact linearisation, its steering locked (docs/machine.md sec. 5).
+EXACT_STEER_LOCKED = "exact-linearisation-steer-locked"
+#: A vertical orbit's Floquet multipliers (docs/stability.md).
+FLOQUET = "floquet"
+#: k = 0 (all the mass at the contact): the equations of motion are singular.
+NOT_ANALYSED_K0 = "not-analysed-k0"
+#: The frictionless particle slides: it has no rolling equations to linearise.
+NOT_ANALYSED_PARTICLE = "not-analysed-particle"
+#: A machine with no yaw inertia and no spinning wheels (the point-mass limit).
+NOT_ANALYSED_POINT_MASS = "not-analysed-point-mass"
+#: The single-contact machine on a surface other than the globe.
+NOT_ANALYSED_OFF_GLOBE = "not-analysed-off-globe"
+
+#: What each label means, in a sentence.
+METHOD_TEXT = {
+    EXACT: "exact linearisation of the steady orbit (docs/stability.md)",
+    EXACT_STEER_LOCKED: ("exact linearisation of the machine with its steering locked (docs/machine.md sec. 5): "
+                         "an unsteered machine is unstable on most orbits; a rider steers"),
+    FLOQUET: "Floquet multipliers of the vertical orbit over one period (docs/stability.md)",
+    NOT_ANALYSED_K0: "not analysed (k = 0: the equations of motion are singular)",
+    NOT_ANALYSED_PARTICLE: "not analysed (sliding particle)",
+    NOT_ANALYSED_POINT_MASS: ("not analysed: no yaw inertia and no spinning wheels: a turn about the up-axis moves "
+                              "no mass and the equations of motion leave the yaw undetermined (the point-mass limit; "
+                              "docs/machine.md sec. 5)"),
+    NOT_ANALYSED_OFF_GLOBE: ("not analysed: the machine's stability is derived on the globe only "
+                             "(docs/machine.md sec. 5)"),
+}
+
+
+def method_text(label: str) -> str:
+    """The sentence a ``stability_method`` label stands for (the label itself if it has none); beyond the
+    paper: the words of docs/contract.md, "Stability"."""
+    return METHOD_TEXT.get(label, label)

@@ -1,0 +1,55 @@
+"""simulate off the globe on the command line (docs/simulation.md, "On any
+ground"): the arena's options shared with orbit, the columns appended, and
+every bad combination refused in one line naming the option (exit 2)."""
+
+import csv
+import io
+
+import pytest
+
+import deathsphere
+
+
+def rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+DRUM = ("--surface", "cylinder", "--diameter", "32ft", "--height", "2")
+
+
+def test_the_drum_run_starts_on_orbits_steady_orbit_and_appends_its_columns(run):
+    res = run("simulate", *DRUM, "--alpha", "10", "--periods", "0.05", "--points-per-period", "40", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    table = rows(res.stdout)
+    assert list(table[0])[-2:] == ["height_m", "rho_contact_m"]
+    assert list(table[0])[:11] == list(deathsphere.simulation.SERIES_COLUMNS)
+    assert all(row["theta_deg"] == "" for row in table)
+    assert float(table[0]["height_m"]) == 2.0 and float(table[0]["rho_contact_m"]) == pytest.approx(4.8768)
+    # the start is orbit's steady orbit on that lane: its speed and its push on the wall
+    steady = deathsphere.orbit(surface="cylinder", diameter="32ft", height=2, alpha=10, stability=False)
+    assert float(table[0]["speed_m_s"]) == pytest.approx(float(steady["v_cm_m_s"]), rel=1e-12)
+    assert float(table[0]["normal_per_mass_m_s2"]) == pytest.approx(float(steady["normal_per_mass_m_s2"]),
+                                                                     rel=1e-9)
+    res = run("simulate", *DRUM, "--alpha", "10", "--periods", "0.05", "--summary-only", "--format", "csv")
+    (summary,) = rows(res.stdout)
+    assert list(summary)[-4:] == ["surface", "height_m", "max_height_drift_m", "max_rho_drift_m"]
+    assert summary["surface"] == "cylinder" and summary["status"] == "completed"
+
+
+@pytest.mark.parametrize("args, option", [
+    (DRUM + ("--theta", "60", "--alpha", "10"), "--theta"),
+    (DRUM + ("--speed", "10"), "--speed"),
+    (DRUM + ("--alpha", "10", "--side", "outside"), "--side"),
+    (DRUM + ("--alpha", "10", "--vertical"), "--vertical"),
+    (DRUM + ("--alpha", "10", "--machine", "stunt125"), "--machine"),
+    (("--surface", "plane", "--height", "2", "--alpha", "10"), "--height"),
+    (("--surface", "plane", "--alpha", "10"), "--turn-radius"),
+    (("--surface", "cone", "--diameter", "6", "--height", "2", "--alpha", "10"), "--wall-angle"),
+    (("--surface", "cylinder", "--height", "2", "--alpha", "10"), "--diameter"),
+    (DRUM + ("--steer", "free", "--speed", "5", "--machine", "benchmark-bicycle"), "--surface"),
+])
+def test_bad_combinations_are_one_line_naming_the_option(run, args, option):
+    res = run("simulate", *args)
+    assert res.exit_code == 2
+    lines = res.stderr.strip().splitlines()
+    assert len(lines) == 1 and option in lines[0] and "Traceback" not in res.stderr
