@@ -397,9 +397,9 @@ class TurnBatch:
 #: ``ride --steer``'s keys and their defaults (a key not given: its default).
 TURN_KEYS = {"theta": None, "height": None, "speed": None, "steer_torque": None, "steer": None, "r": R,
              "diameter": None, "g": G, "mu": INF, "max_g": INF, "summary": False, "stability": True, "only": None,
-             "surface": None, "wall_angle": None, "wall_height": None}
+             "surface": None, "wall_angle": None, "wall_height": None, "profile": None}
 
-#: The columns a two-wheeler's table on a drum or a cone appends (the single-contact ride's there).
+#: The columns a two-wheeler's table on a drum, a cone or a profile appends (the single-contact ride's there).
 TURN_ARENA_COLUMNS = ("surface", "rho_contact_m", "wall_angle_deg")
 
 
@@ -421,11 +421,17 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
                                "max_g", "summary", "stability", "only"))
     steer, steer_torque = steer_request(steer, steer_torque)
     t, steer, g = _machine(machine, steer, g)
-    wall = _wall(given["surface"], r, diameter, given["wall_angle"], given["wall_height"])
-    r = sphere_radius(r, diameter) if wall is None else _floor_radius(wall)
-    r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
-    if r is None:
-        raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    wall = _wall(given["surface"], r, diameter, given["wall_angle"], given["wall_height"], given["profile"])
+    if wall is None:
+        r = sphere_radius(r, diameter)
+        r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
+        if r is None:
+            raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    else:
+        # the arena's radius at its floor (NaN on a profile: no radius to name, and each lane's own fit)
+        from deathsphere.api.ride_surfaces import floor_radius
+
+        r = floor_radius(wall)
     if max(t.rR, t.rF) >= r:
         # no lane of this globe has room for the wheel: refused as a single-contact machine's wheel is
         where = f"a sphere of radius {r:g} m" if wall is None else f"a {wall.name} of radius {r:g} m at its floor"
@@ -471,27 +477,22 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
                        only=None if keep is None else tuple(keep), wall=wall)
 
 
-def _wall(surface, r, diameter, wall_angle, wall_height):
-    """The drum or the cone the two-wheeler rides (None: the globe), from
-    the arena's keywords as typed; flat ground and a profile refused in one
-    line naming surface (docs/two-wheeler.md sec. 12)."""
-    from deathsphere.physics.ground import Cone, Cylinder
+def _wall(surface, r, diameter, wall_angle, wall_height, profile):
+    """The drum, the cone or the profile the two-wheeler rides (None: the
+    globe), from the arena's keywords as typed; flat ground refused in one
+    line naming surface (its question is flat's; docs/two-wheeler.md sec. 12)."""
+    from deathsphere.physics.ground import Cone, Cylinder, Profile
     from deathsphere.requests.arena import arena, names_a_wall
 
-    if not names_a_wall(surface, wall_angle, wall_height):
+    if not names_a_wall(surface, wall_angle, wall_height, profile):
         return None
-    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height)
+    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
     if isinstance(ground, Sphere):
         return None
-    if not isinstance(ground, (Cylinder, Cone)):
-        raise ParameterError(f"a two-wheeler rides the inside of the sphere, a cylinder or a cone, not a "
-                             f"{ground.name} (upright straight running on flat ground: flat)", "surface")
+    if not isinstance(ground, (Cylinder, Cone, Profile)):
+        raise ParameterError(f"a two-wheeler rides the inside of the sphere, a cylinder, a cone or a profile, not "
+                             f"a {ground.name} (upright straight running on flat ground: flat)", "surface")
     return ground
-
-
-def _floor_radius(wall) -> float:
-    """A drum's or a cone's radius at its floor [m] (the table's r_m, as a single-contact machine's there)."""
-    return float(np.asarray(wall.contact(np.zeros(1))[0]).reshape(-1)[0])
 
 
 def _wall_lanes(wall, theta, height, limit: int, shaped: bool):

@@ -70,12 +70,28 @@ def test_a_walls_hands_free_turns_and_rider_table(run):
     assert all(int(r["speeds_tried"]) == 2 for r in rows)
 
 
+def test_a_profile_from_a_file_rides_as_the_drum_it_samples(run, tmp_path):
+    """A meridian file of a 32-foot drum's wall: its turn is the drum's (the
+    spline reproduces the straight meridian), r_m empty as a profile's."""
+    path = tmp_path / "drum.csv"
+    path.write_text("rho_ft,z_ft\n16,0\n16,5\n16,10\n16,20\n")
+    tail = ("--height", "2", "--speed", "60km/h", "--no-stability", "--format", "csv")
+    res = run(*STUNT, "--surface", "profile", "--profile", str(path), *tail)
+    assert res.exit_code == 0, res.output
+    (row,) = _rows(res.stdout)
+    (drum,) = _rows(run(*STUNT, "--surface", "cylinder", "--diameter", "32ft", *tail).stdout)
+    assert row["surface"] == "profile" and row["r_m"] == "" and drum["r_m"] == "4.8768"
+    for col in ("lean_wall_deg", "steer_deg", "steer_torque_n_m", "normal_rear_per_mass_m_s2", "load_g",
+                "rho_contact_m", "wall_angle_deg"):
+        assert float(row[col]) == pytest.approx(float(drum[col]), rel=1e-12, abs=1e-12), col
+
+
 @pytest.mark.parametrize("args, option, words", [
     ((*DRUM, "--height", "4", "--speed", "60km/h"), "--height", "at most 3.6576 m on this cylinder"),
     ((*DRUM, "--theta", "90", "--speed", "60km/h"), "--theta", "on a cylinder give height"),
     ((*STUNT, "--surface", "plane", "--height", "1", "--speed", "5"), "--surface", "not a plane"),
-    ((*STUNT, "--surface", "profile", "--profile", "bowl.csv", "--height", "1", "--speed", "5"), "--profile",
-     "does not take profile"),
+    ((*STUNT, "--surface", "plane", "--turn-radius", "5", "--speed", "5"), "--turn-radius",
+     "does not take turn_radius"),
     ((*STUNT, "--surface", "cylinder", "--diameter", "0.5", "--height", "0.1", "--speed", "5"), "--diameter",
      "do not fit in a cylinder"),
     (("ride", "--machine", "benchmark-bicycle", "--flat", "--speed", "5", "--surface", "cylinder"), "--surface",
