@@ -306,30 +306,41 @@ def many_orbits_table(table: Table, title: str | None = None, total_rows: int | 
 
 
 #: Column-name endings that are units, longest first.
-UNIT_SUFFIXES = (("_m_s2", "m/s²"), ("_rad_s", "rad/s"), ("_m_s", "m/s"), ("_1_s", "1/s"), ("_deg", "deg"),
-                 ("_s", "s"), ("_m", "m"), ("_g", "g"))
+UNIT_SUFFIXES = (("_n_m_s_rad", "N·m·s/rad"), ("_n_m_rad", "N·m/rad"), ("_kg_m2", "kg·m²"), ("_n_m", "N·m"),
+                 ("_m_s2", "m/s²"), ("_rad_s", "rad/s"), ("_deg_s", "deg/s"), ("_km_h", "km/h"), ("_m_s", "m/s"),
+                 ("_1_s", "1/s"), ("_deg", "deg"), ("_pct", "%"), ("_kg", "kg"), ("_s", "s"), ("_m", "m"),
+                 ("_g", "g"))
 #: Columns of any table that say which row it is: never left out.
 GENERIC_KEYS = frozenset({"input_row", "curve", "theta_deg", "phi_deg", "interval", "status", "found"})
 
 
-#: Column-name endings of the kinds a view shows in another unit beside SI.
-SUFFIX_KINDS = (("_m_s2", None), ("_rad_s", "rate"), ("_m_s", "speed"), ("_deg", "angle"), ("_m", "length"),
-                ("_kg", "mass"))
 #: Columns that hold an option as typed (theta_deg holds --theta).
 TYPED_COLUMNS = {p.column: (name,) for name, p in PARAMS.items() if p.column}
 
 
+#: Columns whose name does not read as words once its unit is off: the
+#: words and the unit a view shows instead.
+NAMED_COLUMNS = {"max_g": ("max load", "g"), "steer": ("steer mode", ""), "k": ("inertia factor k", "")}
+
+
 def _split_name(name: str) -> tuple[str, str]:
     """``v_min_m_s`` -> (``v min``, ``m/s``): the words and the unit."""
+    if name in NAMED_COLUMNS:
+        return NAMED_COLUMNS[name]
     for suffix, unit in UNIT_SUFFIXES:
         if name.endswith(suffix) and len(name) > len(suffix):
             return _words(name[:-len(suffix)]), unit
     return _words(name), ""
 
 
+#: The kind of the quantities in each SI unit a view shows in another unit.
+UNIT_KINDS = {"m": "length", "m/s": "speed", "rad/s": "rate", "deg": "angle", "kg": "mass"}
+
+
 def quantity_kind(name: str) -> str | None:
-    """The kind of quantity a column holds, read off its name's unit."""
-    return next((kind for suffix, kind in SUFFIX_KINDS if name.endswith(suffix) and len(name) > len(suffix)), None)
+    """The kind of quantity a column holds, read off its name's unit (the
+    whole unit: ``steer_torque_n_m`` is in N·m, not a length)."""
+    return UNIT_KINDS.get(_split_name(name)[1])
 
 
 def _words(stem: str) -> str:
@@ -360,11 +371,12 @@ def generic_table(table: Table, title: str | None = None, total_rows: int | None
     first column and any of GENERIC_KEYS.  A length, speed, rate or angle
     shows again in the unit :class:`DisplayUnits` gives, beside SI."""
     if len(table) == 1 and not (total_rows or 0) > 1:
+        # one result: a quantity per line, its name in words and its unit apart (as one orbit's view)
         get = row_record(table)
-        specs = [replace(generic_spec(n), header=n) for n in table.names]
-        rows = quantity_rows(get, specs, units, number=_plain_cell, digits=6)
+        rows = quantity_rows(get, [generic_spec(n) for n in table.names], units, number=_plain_cell, digits=6)
         return FitTable([Column("quantity", "quantity", [r[0] for r in rows], "left"),
-                         Column("value", "value", [r[1] for r in rows])], title=title)
+                         Column("value", "value", [r[1] for r in rows]),
+                         Column("unit", "unit", [escape(r[2]) for r in rows], "left")], title=title)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     same = [n for n in table.names if _constant(table.columns[n])]
     legend = status_legend(head) if "status" in table and "reason" in table else []

@@ -1,0 +1,43 @@
+"""A terminal view labels its quantities in words with their units, never
+a CSV column's snake_case name (``alpha min ... deg``, not
+``alpha_min_deg``), and its titles wrap at the terminal's width; seen
+through a pseudo-terminal 80 and 100 columns wide (and 60 for the
+wrapping)."""
+
+import re
+
+import pytest
+from test_units_on_terminal import WIDTHS, assert_rows, screen
+
+#: A CSV column's name: words joined by underscores.
+SNAKE = re.compile(r"\b[a-z0-9]+_[a-z0-9_]+\b")
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_limits_one_result_in_words_with_units(columns):
+    text = screen(("limits", "--theta", "60", "--mu", "1"), columns)
+    assert not SNAKE.findall(text), SNAKE.findall(text)
+    assert_rows(text, r"theta\s+60\s+deg", r"alpha max\s+7\.\d+\s+deg", r"v min\s+\d+\.\d+\s+m/s",
+                r"mu available\s+1\s")
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_two_wheeler_summary_in_words_with_units(columns):
+    text = screen(("simulate", "--machine", "stunt125-steer", "--steer", "free", "--diameter", "16ft", "--height",
+                   "2", "--speed", "9", "--periods", "0.05"), columns)
+    assert not SNAKE.findall(text), SNAKE.findall(text)
+    assert_rows(text, r"v rear\s+9\s+m/s", r"k lean\s+0\s+N·m/rad", r"k rate\s+0\s+N·m·s/rad",
+                r"steer torque\s+[\d.]+\s+N·m *\n", r"steer mode\s+free")
+    # a torque is not a length: the globe typed in ft shows lengths in ft, not N·m
+    lines = text.splitlines()
+    torque = next(i for i, line in enumerate(lines) if "steer torque" in line)
+    assert "the same in" not in lines[torque + 1]
+
+
+def test_simulate_title_wraps_at_the_terminal_not_the_table():
+    text = screen(("simulate", "--theta", "60", "--alpha", "10", "--periods", "0.2"), 60)
+    rule = next(line for line in text.splitlines() if "━━━" in line)
+    first = text.splitlines()[0].rstrip()
+    # the table is narrower than the terminal: its title uses the terminal's width
+    assert len(rule.strip()) < 56 and len(first) > len(rule.strip()), text
+    assert "simulation: wheel inside, horizontal orbit, θ = 60°, α = 10°" in first
