@@ -387,10 +387,18 @@ def generic_table(table: Table, title: str | None = None, total_rows: int | None
     specs = [generic_spec(n, drops.index(n) if n in drops else None,
                           "left" if head.columns[n].dtype == object else "right") for n in names]
     first = row_record(head) if same else {}
-    constants = ", ".join(f"{n} = {_plain_cell(first[n])}" for n in same if first[n] != "")
+    constants = ", ".join(_constant_text(n, first[n]) for n in same if first[n] != "")
     notes = [f"[dim]{constants}[/dim]"] if constants else []
     return build_table(table, specs, units=units, title=title, total_rows=total_rows, notes=[*notes, *legend],
                        number=_plain_cell)
+
+
+def _constant_text(name: str, value) -> str:
+    """A column equal in every row, for the line under the table: its name
+    in words and its unit (``a = 0.3 m``, ``max load = 5 g``)."""
+    words, unit = _split_name(name)
+    text = _plain_cell(value)
+    return f"{words} = {text} {escape(unit)}" if unit and text not in ("—", "") else f"{words} = {text}"
 
 
 def _constant(values: np.ndarray) -> bool:

@@ -27,6 +27,8 @@ def format_number(value, digits: int = 4) -> str:
         return str(value)
     if isinstance(value, float) and math.isinf(value):
         return "∞" if value > 0 else "-∞"
+    if value == 0:      # a negative zero (a force's sign at rest) reads 0, not -0
+        return "0"
     return f"{value:.{digits}g}"
 
 

@@ -41,3 +41,19 @@ def test_simulate_title_wraps_at_the_terminal_not_the_table():
     # the table is narrower than the terminal: its title uses the terminal's width
     assert len(rule.strip()) < 56 and len(first) > len(rule.strip()), text
     assert "simulation: wheel inside, horizontal orbit, θ = 60°, α = 10°" in first
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_a_tables_common_values_in_words_with_units(columns):
+    text = screen(("limits", "--mu", "1", "--max-g", "5", "--theta", "30:150:30"), columns)
+    flat = " ".join(text.split())
+    assert "a = 0.3 m, r = 3 m, inertia factor k = 0.5, mu available = 1, max load = 5 g" in flat, text
+    assert not SNAKE.findall(text.split("━━━", 1)[1].split("left out", 1)[0]), text
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_a_negative_zero_reads_zero(columns):
+    # on a great circle the friction along the loop is -0.0 at the top: it reads 0
+    text = screen(("vertical", "--theta", "90", "--v-top", "6", "--points", "5"), columns)
+    assert not re.search(r"(?<![\w.])-0(?![\w.])", text), text
+    assert "friction meridional / m = 0 m/s²" in " ".join(text.split())
