@@ -20,6 +20,7 @@ from deathsphere.render.terminal_table import (
     STABILITY_STYLE,
     Column,
     FitTable,
+    echo_number,
     first_rows,
     format_number,
     is_undefined,
@@ -112,26 +113,27 @@ def _on_another_surface(get: dict) -> bool:
 def _arena_text(get: dict, units: DisplayUnits = AS_TYPED) -> str:
     """The arena of a row: the globe's radius, or the surface by name."""
     if not _on_another_surface(get):
-        return globe_text(get, units)
+        return globe_text(get, units, number=echo_number)
     if is_undefined(get.get("r_m")):
         return str(get["surface"])
-    return f"{get['surface']} of radius {quantity_text(get['r_m'], 'm', units.unit('length', ('diameter',)))}"
+    radius = quantity_text(get["r_m"], "m", units.unit("length", ("diameter",)), number=echo_number)
+    return f"{get['surface']} of radius {radius}"
 
 
 def _lane_text(get: dict, units: DisplayUnits = AS_TYPED) -> str:
     """Where the row's lane is: θ on the globe; elsewhere the contact's
     height, distance from the axis and the wall's angle."""
     if not _on_another_surface(get):
-        return f"θ = {format_number(get['theta_deg'])}°"
-    height = quantity_text(get["height_m"], "m", units.unit("length", ("height",)))
+        return f"θ = {echo_number(get['theta_deg'])}°"
+    height = quantity_text(get["height_m"], "m", units.unit("length", ("height",)), number=echo_number)
     return (f"h = {height}, ρ = {format_number(get['rho_contact_m'])} m, "
-            f"β = {format_number(get['wall_angle_deg'])}°")
+            f"β = {echo_number(get['wall_angle_deg'])}°")
 
 
 def _setup_line(get: dict, units: DisplayUnits = AS_TYPED) -> str:
-    a = quantity_text(get["a_m"], "m", units.unit("length", ("a",)))
+    a = quantity_text(get["a_m"], "m", units.unit("length", ("a",)), number=echo_number)
     return (f"a = {a}, {_arena_text(get, units)}, "
-            f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
+            f"k = {echo_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
 
 
 def quantity_table(title: str, get: dict, rows, ok_text: str, notes=()) -> FitTable:
@@ -156,7 +158,7 @@ def quantity_table(title: str, get: dict, rows, ok_text: str, notes=()) -> FitTa
 def spin_needed_line(get: dict) -> str:
     """Sphere: the least |ω₃| for an orbit and for contact, as a sentence."""
     real, contact = get["omega3_min_real_rad_s"], get["omega3_min_contact_rad_s"]
-    where = f"θ = {format_number(get['theta_deg'])}°"
+    where = f"θ = {echo_number(get['theta_deg'])}°"
     contact_text = ("no spin keeps contact" if is_undefined(contact)
                     else f"≥ {format_number(contact)} rad/s for contact (eqs. 58/59)")
     return f"needs |ω₃| ≥ {format_number(real)} rad/s for an orbit (eq. 56), {contact_text} at {where}"
@@ -182,7 +184,7 @@ def one_orbit_table(table: Table, row: int = 0, units: DisplayUnits = AS_TYPED) 
     get = row_record(table, row)
     angles = _lane_text(get, units)
     if not is_undefined(get["alpha_deg"]):
-        angles += f", α = {format_number(get['alpha_deg'])}°"
+        angles += f", α = {echo_number(get['alpha_deg'])}°"
     specs = []
     for col, label, unit, source in ORBIT_FIELDS:
         override = BODY_LABELS.get((get["body"], col), (label, source))
@@ -495,7 +497,7 @@ def vertical_view(table: Table, total_rows: int | None = None, units: DisplayUni
     if len(table) == 1 and not (total_rows or 0) > 1:
         get = row_record(table)
         rows = quantity_rows(get, VERTICAL_FIELDS, units)
-        title = (f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n"
+        title = (f"vertical orbit, wheel {get['side']}, θ = {echo_number(get['theta_deg'])}°\n"
                  f"{_setup_line(get, units)}")
         return quantity_table(title, get, rows, "keeps contact all round with enough friction")
     return build_table(table, VERTICAL_COLUMNS, units=units, title="Vertical orbits (eqs. 27-28b)",

@@ -12,6 +12,7 @@ from deathsphere.render.terminal_table import (
     STABILITY_STYLE,
     Column,
     FitTable,
+    echo_number,
     format_number,
 )
 from deathsphere.table import Table
@@ -99,9 +100,9 @@ def stability_view(table: Table) -> Group:
     applies here, and the notes.  Labels stay on one line; the conditions
     of the verdicts and the premises' parameters go to lines under it."""
     get = table.records()
-    head = (f"[italic]stability of a wheel {get[0]['side']}, θ = {format_number(get[0]['theta_deg'])}°, "
-            f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(get[0]['a_m'])} m, "
-            f"r = {format_number(get[0]['r_m'])} m, k = {format_number(get[0]['k'])})[/italic]")
+    head = (f"[italic]stability of a wheel {get[0]['side']}, θ = {echo_number(get[0]['theta_deg'])}°, "
+            f"α = {echo_number(get[0]['alpha_deg'])}° (a = {echo_number(get[0]['a_m'])} m, "
+            f"r = {echo_number(get[0]['r_m'])} m, k = {echo_number(get[0]['k'])})[/italic]")
     exact_rows = [row for row in get if row["source"] == "exact"]
     exact = FitTable([Column("quantity", "quantity", [escape(r["quantity"]) for r in exact_rows], "left"),
                       Column("value", "value", [_cell(r["exact"], 5) for r in exact_rows]),

@@ -5,7 +5,7 @@ from __future__ import annotations
 from rich.markup import escape
 
 from deathsphere.render.display_units import AS_TYPED, DisplayUnits
-from deathsphere.render.terminal_table import Column, FitTable, format_number, is_undefined, row_record
+from deathsphere.render.terminal_table import Column, FitTable, echo_number, format_number, is_undefined, row_record
 from deathsphere.render.view_builder import ColumnSpec, globe_text, quantity_rows, quantity_text
 from deathsphere.table import Table
 
@@ -37,7 +37,7 @@ def _typed_line(get: dict, units: DisplayUnits) -> str:
     if speed is not None and not is_undefined(get.get("speed_m_s")):
         parts.append(f"v_cm = {quantity_text(get['speed_m_s'], 'm/s', speed)}")
     if (units.unit("length", ("r", "diameter")) is not None) and not is_undefined(get.get("r_m")):
-        parts.append(globe_text(get, units))
+        parts.append(globe_text(get, units, number=echo_number))
     return ", ".join(parts)
 
 
@@ -47,13 +47,13 @@ def simulation_view(summary: Table, units: DisplayUnits = AS_TYPED) -> FitTable:
     ``units`` gives.  The title and the reason wrap at the console's
     width, not the table's."""
     get = row_record(summary)
-    # off the globe the lane is its height (flat ground: its turn radius, r_m)
-    lane = (f"θ = {format_number(get['theta_deg'])}°" if "surface" not in get
-            else f"on the {get['surface']}, turn radius {format_number(get['r_m'])} m" if get["surface"] == "plane"
-            else f"on the {get['surface']}, height {format_number(get['height_m'])} m")
+    # off the globe the lane is its height (flat ground: its turn radius, r_m); inputs echoed as typed
+    lane = (f"θ = {echo_number(get['theta_deg'])}°" if "surface" not in get
+            else f"on the {get['surface']}, turn radius {echo_number(get['r_m'])} m" if get["surface"] == "plane"
+            else f"on the {get['surface']}, height {echo_number(get['height_m'])} m")
     what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, {lane}"
-            + (f", α = {format_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
-            + (f", kick {format_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
+            + (f", α = {echo_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
+            + (f", kick {echo_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
     typed = _typed_line(get, units)
     title = (f"simulation: {what}\n{typed + chr(10) if typed else ''}solve_ivp {get['method']}, "
              f"rtol {get['rtol']:g}, atol {get['atol']:g}, {get['frame']} frame")

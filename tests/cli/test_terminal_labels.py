@@ -57,3 +57,19 @@ def test_a_negative_zero_reads_zero(columns):
     text = screen(("vertical", "--theta", "90", "--v-top", "6", "--points", "5"), columns)
     assert not re.search(r"(?<![\w.])-0(?![\w.])", text), text
     assert "friction meridional / m = 0 m/s²" in " ".join(text.split())
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+@pytest.mark.parametrize("args, title", [
+    (("orbit", "--theta", "123.456", "--alpha", "10.25", "-r", "2.4384"),
+     "wheel inside, θ = 123.456°, α = 10.25° a = 0.3 m, r = 2.4384 m, k = 0.5"),
+    (("simulate", "--theta", "123.456", "--alpha", "10.25", "--periods", "0.1"), "θ = 123.456°, α = 10.25°"),
+    (("stability", "--theta", "123.456", "--alpha", "10.25", "-r", "2.4384"),
+     "θ = 123.456°, α = 10.25° (a = 0.3 m, r = 2.4384 m, k = 0.5)"),
+    (("ride", "--theta", "123.456", "--speed", "8.125", "--diameter", "16ft"),
+     "stunt125, θ = 123.456°"),
+], ids=["orbit", "simulate", "stability", "ride"])
+def test_a_title_echoes_the_inputs_as_typed(columns, args, title):
+    # not 123.5 and 2.438: an input is shown to the digits it was typed with
+    flat = " ".join(screen(args, columns).split())
+    assert title in flat, flat

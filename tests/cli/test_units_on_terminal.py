@@ -60,7 +60,7 @@ def test_ride_heights_and_globe_in_ft_speeds_in_km_h(columns):
         row = next(line.split() for line in text.splitlines() if line.split()[:1] == [str(i)])
         assert row[2] == ft, row
     assert "km/h" in header(text) and all(" 40 " in line for line in rows_with(text, " ok "))
-    assert "r = 2.438 m (diameter 16 ft)" in " ".join(text.split())
+    assert "r = 2.4384 m (diameter 16 ft)" in " ".join(text.split())
 
 
 @pytest.mark.parametrize("columns", WIDTHS)
@@ -86,14 +86,14 @@ def test_two_wheeler_turns_in_the_units_typed(columns):
     row = next(line.split() for line in text.splitlines() if line.split()[:1] == ["1"])
     # #, height m, height ft, status, v rear m/s, v rear km/h
     assert row[1:3] == ["1.219", "4"] and row[4:6] == ["5", "18"], row
-    assert "r = 2.438 m (diameter 16 ft)" in " ".join(text.split())
+    assert "r = 2.4384 m (diameter 16 ft)" in " ".join(text.split())
 
 
 @pytest.mark.parametrize("columns", WIDTHS)
 def test_orbit_in_the_units_typed(columns):
     one = screen(("orbit", "--theta", "90", "--com-speed", "40km/h", "--diameter", "16ft"), columns)
     assert_rows(one, r"v_cm = \|r'\|Ω centre speed\s+11\.111\s+m/s", r"the same in km/h\s+40\s+km/h",
-                r"r = 2\.438 m \(diameter 16 ft\)")
+                r"r = 2\.4384 m \(diameter 16 ft\)")
     many = screen(("orbit", "--theta", "60", "--com-speed", "5:35:10km/h"), columns)
     assert cell_pairs(many, "m/s", "km/h")
     assert [line.split()[6] for line in many.splitlines() if re.match(r"\s+[1-4]\s", line)] == ["5", "15", "25", "35"]
@@ -110,7 +110,7 @@ def test_simulate_summary_in_the_units_typed(columns):
     text = screen(("simulate", "--theta", "90", "--com-speed", "40km/h", "--diameter", "16ft", "--periods", "1"),
                   columns)
     flat = " ".join(text.split())
-    assert "v_cm = 11.11 m/s (40 km/h)" in flat and "r = 2.438 m (diameter 16 ft)" in flat
+    assert "v_cm = 11.11 m/s (40 km/h)" in flat and "r = 2.4384 m (diameter 16 ft)" in flat
 
 
 @pytest.mark.parametrize("columns", WIDTHS)
@@ -118,7 +118,7 @@ def test_units_si_shows_si_alone(columns):
     text = screen(("ride", "--diameter", "16ft", "--height", "0:8:2ft", "--speed", "40km/h", "--units", "si"),
                   columns)
     assert not re.search(r"\bft\b", text) and "km/h" not in text and "speed" in header(text)
-    assert "r = 2.438 m," in " ".join(text.split())
+    assert "r = 2.4384 m," in " ".join(text.split())
     one = screen(("orbit", "--theta", "60", "--alpha", "10", "--units", "si"), columns)
     assert "the same in" not in one and "rpm" not in one
 
