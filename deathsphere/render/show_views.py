@@ -42,6 +42,13 @@ VERDICT_STYLE = {"clear": "green", "conflict": "red", "collision": "bold red"}
 OUTCOME_STYLE = {"rides_on": "green", "swings": "yellow", "falls": "red"}
 
 
+def _outcome(value) -> str:
+    """A fall's outcome in its colour, in words (``rides on``, the CSV's ``rides_on``)."""
+    text = str(value)
+    style = OUTCOME_STYLE.get(text, "magenta")
+    return f"[{style}]{escape(text.replace('_', ' '))}[/{style}]"
+
+
 def _styled(value: str, styles: dict) -> str:
     style = styles.get(value, "magenta")
     return f"[{style}]{escape(value)}[/{style}]"
@@ -420,12 +427,11 @@ def _falls_list(table: Table, total_rows, units: DisplayUnits, rule: float = 0.0
         _text("rider", "rider"),
         ColumnSpec("t_fail_s", "fails\nat t s", drop=2, value=lambda get: get.get("t_fail_s")),
         ColumnSpec("speed_fraction", "speed\nleft", digits=2, value=lambda get: get.get("speed_fraction")),
-        ColumnSpec("outcome", "outcome", justify="left", format=lambda v: _styled(str(v), OUTCOME_STYLE),
-                   value=lambda get: get.get("outcome")),
+        ColumnSpec("outcome", "outcome", justify="left", format=_outcome, value=lambda get: get.get("outcome")),
         _text("victim", "other"),
         ColumnSpec("hit", "", justify="left", format=str,
                    value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"), rule=rule)),
-        _clearance(3, "least\nclear m"),
+        _clearance(3, "least\nclear"),
         _speed_spec("impact_speed_m_s", "impact", units, value=lambda get: get.get("impact_speed_m_s")),
         ColumnSpec("fall_time_s", "fall", "s", digits=3, drop=1, value=lambda get: get.get("fall_time_s")),
     )

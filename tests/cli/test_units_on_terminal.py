@@ -235,3 +235,13 @@ def test_csv_is_the_same_whatever_units_says(run, args):
     assert plain.exit_code == 0, plain.output
     for system in ("as-typed", "si", "metric", "imperial"):
         assert run(*args, "--format", "csv", "--units", system).stdout_bytes == plain.stdout_bytes
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_show_monte_carlo_falls_headers_and_outcomes_in_words(columns, tmp_path):
+    plan = tmp_path / "act.toml"
+    plan.write_text(FEET_ACT, encoding="utf-8")
+    text = screen(("show", str(plan), "--monte-carlo", "8", "--seed", "1", "--table", "falls"), columns)
+    # the least clearance's unit once, under its words (m, and ft beside it: every length typed in ft)
+    assert "clear m" not in header(text) and cell_pairs(text, "m", "ft"), text
+    assert "rides_on" not in text and "rides on" in text
