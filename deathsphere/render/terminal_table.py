@@ -144,8 +144,10 @@ class FitTable:
 
 
 def left_out_line(keys, width: int) -> str:
-    """The line under a table naming the columns a narrow console left out."""
-    return (f"[dim]left out at {width} columns: {', '.join(keys)} "
+    """The line under a table naming the columns a narrow console left out
+    (a column's twin in another unit as ``height_m in ft``)."""
+    named = ", ".join(key.replace(":", " in ", 1) for key in keys)
+    return (f"[dim]left out at {width} columns: {named} "
             f"(--format csv or a wider terminal shows them)[/dim]")
 
 

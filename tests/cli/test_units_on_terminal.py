@@ -191,13 +191,13 @@ def test_show_plan_values_come_back_in_the_units_typed(columns, tmp_path):
                                                       if line.split()[:2] == ["Ana", "Ben"]), 3)):
         metres, feet = float(cells[at]), float(cells[at + 1])
         assert abs(feet - metres / 0.3048) < 0.0006 + 0.0005 / 0.3048, cells
-    # the heights as typed beside m where the console has room; at 80 columns both go, named
+    # the heights as typed beside m where the console has room; at 80 columns both go, named in words
     rows = {line.split()[0]: line.split() for line in riders.splitlines() if line.split()[:1] in (["Ana"], ["Ben"])}
     if columns >= 100:
         assert cell_pairs(riders, "height", "height") and rows["Ana"][3:5] == ["1.219", "4"]
         assert rows["Ben"][3:5] == ["1.829", "6"], rows
     else:
-        assert re.search(r"left out at 80 columns:[^(]*\bheight, height:ft\b", " ".join(riders.split()))
+        assert re.search(r"left out at 80 columns:[^(]*\bheight, height in ft\b", " ".join(riders.split()))
 
 
 @pytest.mark.parametrize("columns", WIDTHS)
