@@ -332,23 +332,29 @@ def _fall_line(get: dict, unit: DisplayUnit | None = KM_H, height: DisplayUnit |
     who = (f"{get['rider']} at t = {format_number(get['t_fail_s'], 4)} s drops to "
            f"{100 * float(get['speed_fraction']):.0f} % of the speed: {str(get['outcome']).replace('_', ' ')}")
     if get["outcome"] == "swings" and not is_undefined(get.get("swing_height_m")):
-        swing = float(get["swing_height_m"])
-        beside = "" if height is None or height.name == "m" else f" ({height.of(swing):.2f} {height.name})"
-        return f"{who} on the wall, up to {swing:.2f} m{beside} above the floor"
+        return f"{who} on the wall, up to {_height_text(float(get['swing_height_m']), height)} above the floor"
     if get["outcome"] != "falls":
         return who
     return (f"{who}; leaves the wall at t = {format_number(get['t_contact_lost_s'], 4)} s "
-            f"({_place(get, 'lost')}), lands at t = {format_number(get['t_land_s'], 4)} s ({_place(get, 'land')}) "
+            f"({_place(get, 'lost', height)}), lands at t = {format_number(get['t_land_s'], 4)} s "
+            f"({_place(get, 'land', height)}) "
             f"after {format_number(get['fall_time_s'], 3)} s at {speed_cell(get['impact_speed_m_s'], unit)} "
             f"{_speed_words(unit)}")
 
 
-def _place(get: dict, end: str) -> str:
+def _height_text(metres: float, unit: DisplayUnit | None) -> str:
+    """A height to the cm, in ``unit`` too where it is another: ``0.91 m (3.00 ft)``."""
+    beside = "" if unit is None or unit.name == "m" else f" ({unit.of(metres):.2f} {unit.name})"
+    return f"{metres:.2f} m{beside}"
+
+
+def _place(get: dict, end: str, height: DisplayUnit | None = None) -> str:
     """Where a fall leaves the wall or lands: θ and φ in the globe; on a
-    drum or a cone, where θ is not defined, the height above the floor and φ."""
+    drum or a cone, where θ is not defined, the height above the floor (in
+    the unit the plan typed the heights in beside m) and φ."""
     phi = f"φ {_angle(get[f'phi_{end}_deg'], wrap=True)}°"
     if is_undefined(get[f"theta_{end}_deg"]) and not is_undefined(get.get(f"height_{end}_m")):
-        return f"{float(get[f'height_{end}_m']):.2f} m up, {phi}"
+        return f"{_height_text(float(get[f'height_{end}_m']), height)} up, {phi}"
     return f"θ {_angle(get[f'theta_{end}_deg'])}°, {phi}"
 
 

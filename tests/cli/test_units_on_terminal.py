@@ -245,3 +245,13 @@ def test_show_monte_carlo_falls_headers_and_outcomes_in_words(columns, tmp_path)
     # the least clearance's unit once, under its words (m, and ft beside it: every length typed in ft)
     assert "clear m" not in header(text) and cell_pairs(text, "m", "ft"), text
     assert "rides_on" not in text and "rides on" in text
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_a_fall_on_the_wall_says_its_heights_in_the_plans_ft(columns):
+    from pathlib import Path
+
+    wall = Path(__file__).resolve().parents[2] / "examples" / "wall_of_death.toml"
+    text = screen(("show", str(wall), "--fail", "Ben@1.2:0.5", "--table", "falls"), columns)
+    # Ben rides 6 ft up the wall (1.8288 m), where he leaves it; the heights were typed in ft
+    assert "leaves the wall at t = 1.2 s (1.83 m (6.00 ft) up," in " ".join(text.split()), text
