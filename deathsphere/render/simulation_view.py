@@ -5,7 +5,7 @@ from __future__ import annotations
 from rich.markup import escape
 
 from deathsphere.render.display_units import AS_TYPED, DisplayUnits
-from deathsphere.render.terminal_table import Column, FitTable, echo_number, format_number, is_undefined, row_record
+from deathsphere.render.terminal_table import Column, FitTable, echo_number, is_undefined, row_record
 from deathsphere.render.view_builder import ColumnSpec, globe_text, quantity_rows, quantity_text
 from deathsphere.table import Table
 
@@ -50,7 +50,8 @@ def simulation_view(summary: Table, units: DisplayUnits = AS_TYPED) -> FitTable:
     # off the globe the lane is its height (flat ground: its turn radius, r_m); inputs echoed as typed
     lane = (f"θ = {echo_number(get['theta_deg'])}°" if "surface" not in get
             else f"on the {get['surface']}, turn radius {echo_number(get['r_m'])} m" if get["surface"] == "plane"
-            else f"on the {get['surface']}, height {echo_number(get['height_m'])} m")
+            else f"on the {get['surface']}, height "
+                 f"{quantity_text(get['height_m'], 'm', units.unit('length', ('height',)), number=echo_number)}")
     what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, {lane}"
             + (f", α = {echo_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
             + (f", kick {echo_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))

@@ -73,3 +73,12 @@ def test_a_title_echoes_the_inputs_as_typed(columns, args, title):
     # not 123.5 and 2.438: an input is shown to the digits it was typed with
     flat = " ".join(screen(args, columns).split())
     assert title in flat, flat
+
+
+@pytest.mark.parametrize("columns", WIDTHS)
+def test_simulate_on_the_drum_titles_its_height_as_typed(columns):
+    text = screen(("simulate", "--surface", "cylinder", "--diameter", "32ft", "--height", "3ft", "--alpha", "20",
+                   "--periods", "0.1"), columns)
+    # 3 ft is 0.9144 m exactly; the drum's 32 ft diameter is its 4.8768 m radius
+    flat = " ".join(text.split())
+    assert "on the cylinder, height 0.9144 m (3 ft), α = 20°" in flat and "r = 4.8768 m (diameter 32 ft)" in flat
