@@ -836,7 +836,7 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     """Integrate a two-wheeler's nonlinear equations on the globe, on flat
     ground or on a wall: ``deathsphere simulate --machine benchmark-bicycle
     --steer free``, ``--flat`` or ``--surface cylinder`` (beyond the paper;
-    docs/two-wheeler.md sec. 10.1 and 12.4).
+    docs/two-wheeler.md sec. 10.1 and 12.7).
 
     On the globe from the steady turn at the rear contact's ``theta``
     [deg] or ``height`` [m] and rear contact ``speed`` [m/s] (the turn

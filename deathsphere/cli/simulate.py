@@ -151,12 +151,14 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     profile; a two-wheeler's preset such as stunt125-steer): from the
     steady turn at --height up the wall, the run also stopping with
     hits_floor (a wheel reaches the floor) or over_the_top (the rear
-    contact passes --wall-height) (docs/two-wheeler.md sec. 12.4).  The benchmark's case (the first --flat example below): a
+    contact passes --wall-height) (docs/two-wheeler.md sec. 12.7).
+    The benchmark's case (the first --flat example below): a
     half-degree kick hands-free at 5 m/s, inside the self-stable window
     4.29-6.02 m/s, dies away at the rate of the largest eigenvalue that
     'deathsphere ride --machine benchmark-bicycle --flat --speed 5' gives
     (-0.32 1/s); at 3 m/s it grows.  On the globe --output run.html
-    shows its wheels, frames and rider in the globe.
+    shows its wheels, frames and rider in the globe (on a wall: in the
+    drum, the cone or the profile, drawn from its meridian).
 
     \b
     Examples:

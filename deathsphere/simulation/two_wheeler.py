@@ -61,7 +61,7 @@ class _TwoWheeler:
         where the wall rises from a floor off the axis, a wheel's lowest rim
         point reaching it (``hits_floor``); where the wall has a top, the
         rear contact passing it (``over_the_top``).  The globe and flat
-        ground have neither (docs/two-wheeler.md sec. 12.4)."""
+        ground have neither (docs/two-wheeler.md sec. 12.7)."""
         wall = grounds.of(p.ground).ground
         top = float(getattr(wall, "highest_lane", np.inf))
         out = []
@@ -118,7 +118,7 @@ def run_two_wheeler(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=
     exceeding ``mu`` times the normal at either wheel (``slips``), and on a
     drum, a cone or a profile a wheel reaching the floor (``hits_floor``)
     or the rear contact passing the wall's top (``over_the_top``) (beyond
-    the paper; docs/two-wheeler.md sec. 10.1 and 12.4).  ``progress``, if given, is
+    the paper; docs/two-wheeler.md sec. 10.1 and 12.7).  ``progress``, if given, is
     told (t, t_end) now and then as the integrator advances (a run of a few
     periods takes seconds).  Returns (series dict of (n,) arrays and the
     coordinates ``q`` (8, n), summary dict)."""

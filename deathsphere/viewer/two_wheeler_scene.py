@@ -1,6 +1,6 @@
 """The scene of a two-wheeler's run (``deathsphere simulate --machine
 benchmark-bicycle --steer free --output run.html|.gif|.mp4``;
-docs/two-wheeler.md sec. 10.1 and 12.4): the globe (on flat ground, the
+docs/two-wheeler.md sec. 10.1 and 12.7): the globe (on flat ground, the
 ground; on a drum, a cone or a profile, its wall drawn from its meridian,
 as the paper's bodies' and the show's views draw it), both wheels' rims,
 the rear and front frames, the rider's head and the contact points' paths.

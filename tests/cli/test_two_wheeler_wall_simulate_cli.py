@@ -1,5 +1,5 @@
 """``deathsphere simulate`` of a two-wheeler on the wall of death's drum and
-the well of death's cone (docs/two-wheeler.md sec. 12.4): it starts from
+the well of death's cone (docs/two-wheeler.md sec. 12.7): it starts from
 the turn ``ride`` finds at that height and speed, keeps the globe's columns
 with the arena's appended, and refuses in one line what it cannot ride."""
 

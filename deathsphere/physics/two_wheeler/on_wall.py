@@ -2,7 +2,7 @@
 height above the ground's lowest point and its distance from the axis) and
 the height of the wheels' lowest rim points above the floor, at the
 coordinates of a run on any surface of revolution (beyond the paper;
-docs/two-wheeler.md sec. 12.4).
+docs/two-wheeler.md sec. 12.7).
 
 These are what the run on a drum or a cone reports beside the globe's
 columns and what its wall events watch: the rear contact passing the
@@ -28,7 +28,7 @@ def rear_lane(q, ground):
     of a run on the surface of revolution ``ground``: q0 is the rear
     contact's arc length up the meridian, so (rho, z) = meridian(q0) and the
     height is z above the ground's lowest point [m] (beyond the paper;
-    docs/two-wheeler.md sec. 12.4)."""
+    docs/two-wheeler.md sec. 12.7)."""
     rho, z = ground.meridian(np.asarray(q)[0])[:2]
     return np.asarray(z, float) - float(ground.lowest), np.asarray(rho, float)
 
@@ -48,7 +48,7 @@ def lowest_rim_height(q, parameters: BicycleParameters, ground):
     or a cone), at the coordinates q (8, ...): the rear rim in the plane
     normal to the lean frame's L.y about the rear wheel's centre, the front
     rim normal to the front frame's E.y about the front wheel's centre
-    (beyond the paper; docs/two-wheeler.md sec. 12.4)."""
+    (beyond the paper; docs/two-wheeler.md sec. 12.7)."""
     p = parameters
     pts = geometry.points(q, p, ground)
     f = pts["frames"]
