@@ -239,7 +239,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                              branch=branch, perturb=perturb, periods=periods,
                              points_per_period=points_per_period, method=method, rtol=rtol, atol=atol, **arena),
                      # on an arena --turn-radius was not counted as a two-wheeler's: passed, for the API to refuse
-                     **two_wheeler_only, **given(turn_radius=turn_radius))
+                     **two_wheeler_only, **(given(turn_radius=turn_radius) if on_arena else {}))
         return
     if height is not None and not on_arena:
         raise click.UsageError("--height is a two-wheeler's lane (with --steer) or one off the globe (with "

@@ -91,3 +91,13 @@ def test_a_profile_sampling_the_drum_runs_as_the_drum(run, tmp_path):
     for col in ("lean_surface_deg", "steer_torque_n_m", "max_lean_deviation_deg", "final_lean_deviation_deg",
                 "max_height_drift_m", "rho_contact_m", "min_normal_front_per_mass_m_s2"):
         assert float(row[col]) == pytest.approx(float(drum[col]), rel=1e-9, abs=1e-12), col
+
+
+def test_flat_grounds_turn_radius_still_reaches_its_run(run):
+    """--turn-radius is flat ground's lane: without an arena it is passed once, as before walls were ridden."""
+    res = run("simulate", "--machine", "benchmark-bicycle", "--flat", "--speed", "5", "--turn-radius", "10",
+              "--steer", "locked", "--periods", "0.02", "--rtol", "1e-7", "--summary-only", "--format", "csv")
+    assert res.exit_code == 0, res.output
+    (row,) = _rows(res.stdout)
+    assert row["surface"] == "flat" and float(row["turn_radius_m"]) == 10.0 and list(row) == list(
+        SIMULATE_SUMMARY_COLUMNS)
