@@ -831,17 +831,24 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
                          branch=0, perturb=0.0, periods=None, points_per_period=100, steer_gains=None,
                          hands_free=False, steer="free", method="DOP853", rtol=1e-10,
                          atol=None, flat=False, turn_radius=None, duration=None, perturb_lean_rate=0.0,
-                         perturb_steer_rate=0.0, view=False, progress=None) -> tuple:
-    """Integrate a two-wheeler's nonlinear equations on the globe or on flat
-    ground: ``deathsphere simulate --machine benchmark-bicycle --steer free``
-    or ``--flat`` (beyond the paper; docs/two-wheeler.md sec. 10.1).
+                         perturb_steer_rate=0.0, surface=None, wall_angle=None, wall_height=None, profile=None,
+                         view=False, progress=None) -> tuple:
+    """Integrate a two-wheeler's nonlinear equations on the globe, on flat
+    ground or on a wall: ``deathsphere simulate --machine benchmark-bicycle
+    --steer free``, ``--flat`` or ``--surface cylinder`` (beyond the paper;
+    docs/two-wheeler.md sec. 10.1 and 12.7).
 
     On the globe from the steady turn at the rear contact's ``theta``
     [deg] or ``height`` [m] and rear contact ``speed`` [m/s] (the turn
     ``branch``, 0 first in increasing lean, as ``ride --steer`` lists
     them); ``flat``: from upright straight running at ``speed``, or with
     ``turn_radius`` [m] from the steady turn whose rear contact runs on that
-    circle (turning right; ``branch`` as on the globe).  The lean kicked by
+    circle (turning right; ``branch`` as on the globe).  On a drum, a cone
+    or a profile (``surface`` "cylinder", "cone" or "profile" with the
+    arena's ``diameter`` or ``r``, ``wall_angle``, ``wall_height``,
+    ``profile``, as :func:`deathsphere.ride` takes them): from the steady
+    turn at the rear contact's ``height`` [m] up the wall (the turn ``ride``
+    finds there).  The lean kicked by
     ``perturb`` [deg], the lean and steer rates by ``perturb_lean_rate``,
     ``perturb_steer_rate`` [deg/s], for ``periods`` periods of the turn
     (default 2) or ``duration`` [s] (straight running has no period: 5 s
@@ -853,7 +860,13 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
     the steer held at the turn's, its torque whatever the lock applies.
     The run stops with status ``contact_lost`` when a wheel's normal force
     reaches zero, ``slips`` when the friction needed exceeds ``mu`` at
-    either wheel.
+    either wheel; on a wall also ``hits_floor`` when a wheel's lowest rim
+    point reaches the floor at the wall's foot and ``over_the_top`` when the
+    rear contact passes the wall's top (``wall_height``).  Off the globe the
+    series gains ``height_m`` and ``rho_contact_m`` (the rear contact's), the
+    summary ``rho_contact_m``, ``wall_angle_deg``, ``max_height_drift_m``
+    and ``max_rho_drift_m`` (:data:`WALL_SERIES_COLUMNS`,
+    :data:`WALL_SUMMARY_COLUMNS`).
 
     A run is at most :data:`MAX_TRAVEL_M` of the rear wheel's travel;
     ``progress(done, total)``, if given, is told the per cent of the run's
@@ -877,7 +890,8 @@ def simulate_two_wheeler(machine, *, theta=None, height=None, speed=None, r=R, d
 RUN_KEYS = {"theta": None, "height": None, "speed": None, "r": R, "diameter": None, "g": G, "mu": INF, "branch": 0,
             "perturb": 0.0, "periods": None, "points_per_period": 100, "steer_gains": None, "hands_free": False,
             "steer": "free", "method": "DOP853", "rtol": 1e-10, "atol": None, "flat": False, "turn_radius": None,
-            "duration": None, "perturb_lean_rate": 0.0, "perturb_steer_rate": 0.0}
+            "duration": None, "perturb_lean_rate": 0.0, "perturb_steer_rate": 0.0, "surface": None,
+            "wall_angle": None, "wall_height": None, "profile": None}
 
 
 def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple:
@@ -895,7 +909,7 @@ def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple
         raise TypeError(f"two_wheeler_run() got an unexpected key {unknown[0]!r}")
     given = {**RUN_KEYS, **typed}
     (theta, height, speed, r, diameter, g, mu, branch, perturb, periods, points_per_period, steer_gains, hands_free,
-     steer, method, rtol, atol, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate) = (
+     steer, method, rtol, atol, flat, turn_radius, duration, perturb_lean_rate, perturb_steer_rate, *_) = (
         given[key] for key in RUN_KEYS)
     t = as_two_wheeler(machine)
     if not isinstance(steer, str) or steer.strip().lower() not in STEER_MODES:
@@ -915,12 +929,15 @@ def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple
     if locked and perturb_steer_rate != 0:
         raise ParameterError("a locked steer has no steer rate to kick: perturb_steer_rate is for steer free",
                              "perturb_steer_rate")
+    wall = _wall(given["surface"], r, diameter, given["wall_angle"], given["wall_height"], given["profile"])
+    if flat and wall is not None:
+        raise ParameterError(f"flat is flat ground: the {wall.name}'s arena keywords are not for it", "flat")
     if flat and (theta is not None or height is not None or diameter is not None or r is not R):
         raise ParameterError("flat ground has no lane on a sphere: give speed and, for a turn, turn_radius "
                              "(not theta, height, r or diameter)", "flat")
     if not flat and turn_radius is not None:
         raise ParameterError("turn_radius is a turn on flat ground: pass flat (on the globe the lane is theta or "
-                             "height)", "turn_radius")
+                             f"height{'' if wall is None else f', on the {wall.name} height'})", "turn_radius")
     if periods is not None and duration is not None:
         raise ParameterError("give periods or duration, not both", "duration")
     straight = flat and turn_radius is None
@@ -934,6 +951,9 @@ def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple
     if flat:
         theta_deg = h = r = math.nan
         radius = math.nan if straight else checked_scalar("turn_radius", turn_radius)
+    elif wall is not None:
+        theta_deg, radius = math.nan, math.nan
+        r, h = _wall_lane(t, wall, theta, height, diameter)
     else:
         r = checked_scalar("r", sphere_radius(r, diameter))
         theta_deg, h = _lane(theta, height, r)
@@ -955,8 +975,8 @@ def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple
         _rows(periods if periods is not None else duration, points_per_period, "seconds" if straight else "periods",
               "duration" if straight else "periods")
     p = t.parameters()
-    ground = Plane() if flat else Sphere(r)
-    q, u, torque0, period = _start(t, p, g, speed, branch, ground, theta_deg, radius)
+    ground = Plane() if flat else Sphere(r) if wall is None else wall
+    q, u, torque0, period = _start(t, p, g, speed, branch, ground, theta_deg, radius, h)
     if duration is None:
         duration = (2.0 if periods is None else periods) * period
     length = duration / (1.0 if straight else period)
@@ -998,20 +1018,82 @@ def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple
            "max_constraint_residual_m": summary["max_constraint_residual"],
            "min_normal_rear_per_mass_m_s2": summary["min_normal_rear"],
            "min_normal_front_per_mass_m_s2": summary["min_normal_front"], "method": method, "rtol": rtol,
-           "surface": grounds.of(ground).surface, "turn_radius_m": radius, "steer": "locked" if locked else "free",
+           "surface": grounds.of(ground).surface if wall is None else wall.name, "turn_radius_m": radius, "steer": "locked" if locked else "free",
            "perturb_lean_rate_deg_s": perturb_lean_rate, "perturb_steer_rate_deg_s": perturb_steer_rate,
            "lean_wall_deg": math.degrees(q[motion.LEAN]),
            # the start's lean from the vertical: its steady turn runs along the lane (alpha as ride's), and on flat
            # ground the surface's normal is the vertical
            "lean_vertical_deg": math.degrees(q[motion.LEAN]) + (0.0 if flat else 180.0 - theta_deg)}
+    series_columns, summary_columns = SIMULATE_COLUMNS, SIMULATE_SUMMARY_COLUMNS
+    if wall is not None:
+        # the arena's columns appended (docs/contract.md), as the paper's bodies' runs off the globe append them
+        series_columns, summary_columns = (series_columns + WALL_SERIES_COLUMNS,
+                                           summary_columns + WALL_SUMMARY_COLUMNS)
+        cols, row = cols | _wall_series(wall, series["q"]), row | _wall_summary(wall, series["q"], h)
+        # the start's lean from the vertical: the lean from the wall's normal plus the wall's angle (ride's)
+        row["lean_vertical_deg"] = math.degrees(q[motion.LEAN]) + row["wall_angle_deg"]
     summary_table = Table({k: np.array([row[k]], dtype=object if isinstance(row[k], str) else float)
-                           for k in SIMULATE_SUMMARY_COLUMNS})
-    tables = Table({k: np.asarray(cols[k], float) for k in SIMULATE_COLUMNS}), summary_table
+                           for k in summary_columns})
+    tables = Table({k: np.asarray(cols[k], float) for k in series_columns}), summary_table
     if not view:
         return tables
     from deathsphere.physics.two_wheeler.geometry import outline
 
-    return (*tables, {"t": series["t"], **outline(series["q"], p, ground, t.head)})
+    # the ground record beside the points: the view draws a wall from its meridian
+    return (*tables, {"t": series["t"], "ground": ground, **outline(series["q"], p, ground, t.head)})
+
+
+#: The columns a run off the globe appends to the series and to the summary
+#: (docs/contract.md): the rear contact's lane, as the paper's bodies' runs
+#: there and ``ride``'s two-wheeler turns there name them.
+WALL_SERIES_COLUMNS = ("height_m", "rho_contact_m")
+WALL_SUMMARY_COLUMNS = ("rho_contact_m", "wall_angle_deg", "max_height_drift_m", "max_rho_drift_m")
+
+
+def _wall_series(wall, q) -> dict:
+    """The rear contact's height above the floor and distance from the axis at every row [m]."""
+    from deathsphere.physics.two_wheeler import on_wall
+
+    height, rho = on_wall.rear_lane(q, wall)
+    return {"height_m": height, "rho_contact_m": rho}
+
+
+def _wall_summary(wall, q, h) -> dict:
+    """The lane's distance from the axis and wall angle [deg] at the start's height ``h``, and the most the
+    rear contact's height and distance drift from them over the run [m]."""
+    from deathsphere.physics.two_wheeler import on_wall
+
+    height, rho = on_wall.rear_lane(q, wall)
+    rho0 = float(np.asarray(wall.contact(h)[0], float))
+    return {"rho_contact_m": rho0, "wall_angle_deg": math.degrees(float(wall.wall_angle(h))),
+            "max_height_drift_m": float(np.max(np.abs(height - h))),
+            "max_rho_drift_m": float(np.max(np.abs(rho - rho0)))}
+
+
+def _wall_lane(t: TwoWheeler, wall, theta, height, diameter) -> tuple[float, float]:
+    """(r_m, height_m) of a run on a wall: the arena's radius at its floor (NaN on a profile, as ride's), the
+    rear contact's height up the wall, theta refused (the globe's), a height above the wall's top refused,
+    and the wheels that do not fit refused as ride refuses them."""
+    from deathsphere.api.ride_surfaces import floor_radius
+
+    r = floor_radius(wall)
+    if max(t.rR, t.rF) >= r:
+        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in a "
+                             f"{wall.name} of radius {r:g} m at its floor (needs r > rR and r > rF)",
+                             "diameter" if diameter is not None else "r")
+    from deathsphere.api.arguments import checked_scalar
+
+    if theta is not None:
+        raise ParameterError(f"theta is the globe's polar angle: on a {wall.name} give height (the rear contact's "
+                             "height above the floor)", "theta")
+    if height is None:
+        raise ParameterError(f"give height (the rear contact's height above the {wall.name}'s floor)", "height",
+                             missing=True)
+    h, top = checked_scalar("height", height), float(wall.highest_lane)
+    if h > top:
+        raise ParameterError(f"height must be at most {shown_number(top)} m on this {wall.name}, its highest lane "
+                             f"(the wall's top, or a cone's apex; got {shown_number(h)} m)", "height")
+    return r, h
 
 
 def _lane(theta, height, r) -> tuple[float, float]:
@@ -1040,10 +1122,11 @@ def _rows(length, points_per_period, per, name):
                              name)
 
 
-def _start(t: TwoWheeler, p, g, speed, branch, ground, theta_deg, radius):
+def _start(t: TwoWheeler, p, g, speed, branch, ground, theta_deg, radius, height):
     """(q, u, steady steer torque, period) the run starts from: the steady
-    turn at the lane (the globe's theta, flat ground's turn radius) and rear
-    speed, or upright straight running (flat, no radius; no period)."""
+    turn at the lane (the globe's theta, flat ground's turn radius, a
+    wall's height) and rear speed, or upright straight running (flat, no
+    radius; no period)."""
     from deathsphere.physics.two_wheeler import motion, steady
 
     bad_branch = isinstance(branch, bool) or not isinstance(branch, (int, np.integer))
@@ -1055,14 +1138,19 @@ def _start(t: TwoWheeler, p, g, speed, branch, ground, theta_deg, radius):
         u = motion.dependent_speeds(q, np.array([0.0, -speed / p.rR, 0.0]), motion.parameter_values(p, g, ground),
                                     ground)
         return q, u, 0.0, math.nan
-    lane = 1.0 / radius if flat else math.radians(theta_deg)
+    on_sphere = isinstance(ground, Sphere)
+    lane = 1.0 / radius if flat else math.radians(theta_deg) if on_sphere else height
     turn = steady.turns_for_speed(lane, speed, p, ground, g, t.head)
     count = int(turn["count"][0])
-    where = f"turn radius {radius:g} m" if flat else f"theta = {theta_deg:g} deg"
+    where = (f"turn radius {radius:g} m" if flat else f"theta = {theta_deg:g} deg" if on_sphere
+             else f"height {height:g} m on the {ground.name}")
     if count == 0:
         hint = "" if flat else "; 'deathsphere ride --steer free' lists them"
+        # the physics' reason is a code: its words, as ride's reason column gives them
+        why = turn["reason"][0]
+        why = REASON_TEXT[int(why)] if isinstance(why, (int, np.integer)) else why
         raise ParameterError(f"no steady turn at {where} and rear speed {speed:g} m/s "
-                             f"({turn['reason'][0] or 'none found'}){hint}", "speed")
+                             f"({why or 'none found'}){hint}", "speed")
     if bad_branch or not 0 <= branch < count:
         raise ParameterError(f"branch must be one of the {count} steady turns at this lane and speed "
                              f"(0..{count - 1}, in increasing lean; got {branch!r})", "branch")

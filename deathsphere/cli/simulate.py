@@ -147,12 +147,18 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     --perturb-lean-rate and --perturb-steer-rate deg/s, for --periods of
     the turn or --duration seconds (straight running: 5 s unless given;
     --points-per-period is then rows per second) (docs/two-wheeler.md
-    sec. 10.1).  The benchmark's case (the first --flat example below): a
+    sec. 10.1).  On a drum, a cone or a profile (--surface cylinder, cone,
+    profile; a two-wheeler's preset such as stunt125-steer): from the
+    steady turn at --height up the wall, the run also stopping with
+    hits_floor (a wheel reaches the floor) or over_the_top (the rear
+    contact passes --wall-height) (docs/two-wheeler.md sec. 12.7).
+    The benchmark's case (the first --flat example below): a
     half-degree kick hands-free at 5 m/s, inside the self-stable window
     4.29-6.02 m/s, dies away at the rate of the largest eigenvalue that
     'deathsphere ride --machine benchmark-bicycle --flat --speed 5' gives
     (-0.32 1/s); at 3 m/s it grows.  On the globe --output run.html
-    shows its wheels, frames and rider in the globe.
+    shows its wheels, frames and rider in the globe (on a wall: in the
+    drum, the cone or the profile, drawn from its meridian).
 
     \b
     Examples:
@@ -180,6 +186,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
           --steer-gains 10,10 --output run.html
       deathsphere simulate --machine benchmark-bicycle --flat --speed 5 \\
           --perturb 0.5
+      deathsphere simulate --machine stunt125-steer --steer free \\
+          --surface cylinder --diameter 32ft --height 2m --speed 60km/h \\
+          --perturb 1 --output wall.html
       deathsphere simulate --machine benchmark-bicycle --flat --speed 3 \\
           --perturb 0.5 --duration 10 --summary-only  (grows, falls)
       deathsphere simulate --machine benchmark-bicycle --flat --speed 5 \\
@@ -209,9 +218,7 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
                                             ("--machine-file", None if two_wheeler_file else machine_file),
                                             ("-a", a), ("-k", k),
                                             ("--side", side), ("--loop-seconds", loop_seconds),
-                                            ("--playback", playback), ("--max-steps", max_steps),
-                                            ("--surface", surface), ("--wall-angle", wall_angle),
-                                            ("--wall-height", wall_height), ("--profile", profile))
+                                            ("--playback", playback), ("--max-steps", max_steps))
                    if value is not None]
         refused += [MACHINE_OPTIONS[name] for name in given(mass=mass, com_height=com_height,
                                                             tyre_radius=tyre_radius, roll_inertia=roll_inertia,
@@ -221,7 +228,8 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
             refused.append("--frame")
         if refused:
             fail(f"{', '.join(refused)} not for a two-wheeler's run: give --machine, --steer free|locked, "
-                 "--theta or --height (or --flat and --turn-radius), --speed, -r/--diameter, -g, --mu, --branch, "
+                 "--theta or --height (or --flat and --turn-radius), --speed, -r/--diameter, --surface, "
+                 "--wall-angle, --wall-height, --profile, -g, --mu, --branch, "
                  "--perturb, --perturb-lean-rate, --perturb-steer-rate, --periods or --duration, "
                  "--points-per-period, --steer-gains or --hands-free, --method, --rtol, --atol")
         if two_wheeler_file:
@@ -229,8 +237,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
         _two_wheeler(machine, steer, steer_gains, hands_free, summary_only, output, fmt, shown,
                      **given(theta=theta, height=height, speed=speed, r=r, diameter=diameter, g=g, mu=mu,
                              branch=branch, perturb=perturb, periods=periods,
-                             points_per_period=points_per_period, method=method, rtol=rtol, atol=atol),
-                     **two_wheeler_only)
+                             points_per_period=points_per_period, method=method, rtol=rtol, atol=atol, **arena),
+                     # on an arena --turn-radius was not counted as a two-wheeler's: passed, for the API to refuse
+                     **two_wheeler_only, **(given(turn_radius=turn_radius) if on_arena else {}))
         return
     if height is not None and not on_arena:
         raise click.UsageError("--height is a two-wheeler's lane (with --steer) or one off the globe (with "

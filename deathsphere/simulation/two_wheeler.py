@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.constants import STANDARD_GRAVITY
-from deathsphere.physics.two_wheeler import motion
+from deathsphere.physics.two_wheeler import grounds, motion, on_wall
 from deathsphere.physics.two_wheeler import simulate as tw
 from deathsphere.physics.two_wheeler.parameters import BicycleParameters
 from deathsphere.simulation.event import Event
@@ -55,10 +55,27 @@ class _TwoWheeler:
         (the speeds satisfy the rolling constraints by construction)."""
         return np.concatenate([motion.pitch(np.array(y[:8], float), p.values, p.ground), y[8:]])
 
+    def wall_events(self, p: tw.Run) -> list[Event]:
+        """On a drum, a cone or a profile (a ground with lanes up to a
+        highest one), the wall's ends as the paper's bodies meet them there:
+        where the wall rises from a floor off the axis, a wheel's lowest rim
+        point reaching it (``hits_floor``); where the wall has a top, the
+        rear contact passing it (``over_the_top``).  The globe and flat
+        ground have neither (docs/two-wheeler.md sec. 12.7)."""
+        wall = grounds.of(p.ground).ground
+        top = float(getattr(wall, "highest_lane", np.inf))
+        out = []
+        if hasattr(wall, "highest_lane") and float(wall.contact(0.0)[0]) > 0:
+            out.append(Event(lambda t, y: float(on_wall.lowest_rim_height(y[:8], p.parameters, wall)),
+                             RunStatus.HITS_FLOOR))
+        if np.isfinite(top):
+            out.append(Event(lambda t, y: top - float(on_wall.rear_lane(y[:8], wall)[0]), RunStatus.OVER_THE_TOP))
+        return out
+
     def terminal_events(self, p: tw.Run, mu) -> list[Event]:
         """A normal force reaching zero at either wheel (``contact_lost``)
         and, for a finite ``mu``, the friction reaching mu times the normal
-        (``slips``)."""
+        (``slips``); on a wall its ends (:meth:`wall_events`)."""
         last = {}
 
         def forces(y):
@@ -77,7 +94,8 @@ class _TwoWheeler:
             n_rear, f_rear, n_front, f_front = forces(y)
             return min(mu * n_rear - f_rear, mu * n_front - f_front)
 
-        return [Event(lost, RunStatus.CONTACT_LOST)] + ([Event(slip, RunStatus.SLIPS)] if np.isfinite(mu) else [])
+        return ([Event(lost, RunStatus.CONTACT_LOST)] + ([Event(slip, RunStatus.SLIPS)] if np.isfinite(mu) else [])
+                + self.wall_events(p))
 
 
 TWO_WHEELER = _TwoWheeler()
@@ -97,8 +115,10 @@ def run_two_wheeler(parameters: BicycleParameters, q0, u_ind0, t_end, *, ground=
     for ``t_end`` s, integrated as ``solver`` says
     (:class:`~deathsphere.physics.two_wheeler.simulate.Solver`); events stop
     the run: a normal force reaching zero (``contact_lost``) or the friction
-    exceeding ``mu`` times the normal at either wheel (``slips``) (beyond
-    the paper; docs/two-wheeler.md sec. 10.1).  ``progress``, if given, is
+    exceeding ``mu`` times the normal at either wheel (``slips``), and on a
+    drum, a cone or a profile a wheel reaching the floor (``hits_floor``)
+    or the rear contact passing the wall's top (``over_the_top``) (beyond
+    the paper; docs/two-wheeler.md sec. 10.1 and 12.7).  ``progress``, if given, is
     told (t, t_end) now and then as the integrator advances (a run of a few
     periods takes seconds).  Returns (series dict of (n,) arrays and the
     coordinates ``q`` (8, n), summary dict)."""

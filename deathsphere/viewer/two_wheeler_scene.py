@@ -1,8 +1,9 @@
 """The scene of a two-wheeler's run (``deathsphere simulate --machine
 benchmark-bicycle --steer free --output run.html|.gif|.mp4``;
-docs/two-wheeler.md sec. 10.1): the globe (or, on flat ground, the
-ground), both wheels' rims, the rear and front frames, the rider's head and
-the contact points' paths.
+docs/two-wheeler.md sec. 10.1 and 12.7): the globe (on flat ground, the
+ground; on a drum, a cone or a profile, its wall drawn from its meridian,
+as the paper's bodies' and the show's views draw it), both wheels' rims,
+the rear and front frames, the rider's head and the contact points' paths.
 
 Nothing here is physics: every point is the simulation's
 (:func:`deathsphere.api.two_wheelers.simulate_two_wheeler` with ``view``:
@@ -20,7 +21,8 @@ import numpy as np
 
 from deathsphere.table import Table
 from deathsphere.viewer.html import decode_array
-from deathsphere.viewer.scene import EVENT_STATUSES, Readout, Scene, Track, frame_indices, plane_ground, sphere_ground
+from deathsphere.viewer.scene import (EVENT_STATUSES, Readout, Scene, Track, frame_indices, plane_ground, sphere_ground,
+                                      wall_ground)
 
 __all__ = ["two_wheeler_scene", "decode_rim", "POINT_KEYS", "RIM_KEYS", "PANEL_COLUMNS", "MAX_FRAMES", "PLAYBACK"]
 
@@ -101,9 +103,19 @@ def _flat(summary: Table) -> bool:
     return "surface" in summary.columns and str(summary["surface"][0]) == "flat"
 
 
-def _title(summary: Table, flat: bool) -> str:
+def _wall(frames: dict):
+    """The wall ridden (a ground record with lanes up to a highest one: a drum, a cone, a profile), or None on
+    the globe and flat ground."""
+    ground = frames.get("ground")
+    return ground if hasattr(ground, "highest_lane") else None
+
+
+def _title(summary: Table, flat: bool, wall=None) -> str:
     row = summary[0]
-    if not flat:
+    if wall is not None:
+        words = (f"{row['machine']}: simulated from its steady turn {row['height_m']:.3g} m up the {wall.name}, "
+                 f"{row['v_rear_m_s']:.3g} m/s")
+    elif not flat:
         words = (f"{row['machine']}: simulated from its steady turn at \u03b8 = {row['theta_deg']:.1f}\u00b0, "
                  f"{row['v_rear_m_s']:.3g} m/s, in a globe of {2 * row['r_m']:.3g} m")
     elif math.isfinite(float(summary["turn_radius_m"][0])):
@@ -121,7 +133,7 @@ def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames
     """The scene of a run: ``series`` and ``summary`` as
     :func:`~deathsphere.api.two_wheelers.simulate_two_wheeler` returns them,
     ``frames`` its third item (``view=True``): ``t`` and the points at the
-    series' rows."""
+    series' rows, and the ``ground`` record (a wall is drawn from it)."""
     t = np.asarray(frames["t"], dtype=np.float64)
     if t.size != len(series) or not np.array_equal(t, np.asarray(series["t_s"], dtype=np.float64)):
         raise ValueError("the frames are not at the series' rows")
@@ -130,24 +142,28 @@ def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames
     points.update({k: _UP[:, None, None] * np.asarray(frames[k])[..., keep] for k in RIM_KEYS})
     status = str(summary["status"][0])
     event = float(t[-1]) if status in EVENT_STATUSES and math.isfinite(float(summary["t_event_s"][0])) else None
-    flat = _flat(summary)
+    flat, wall = _flat(summary), _wall(frames)
     panel = [Readout(k, *_READOUTS[k], 2, np.asarray(series[c], dtype=np.float64)[keep],
                      loop=k in ("lean", "steer"))
-             for k, c in PANEL_COLUMNS.items() if not (flat and k == "theta")]
+             for k, c in PANEL_COLUMNS.items() if not ((flat or wall is not None) and k == "theta")]
     wheel = float(np.linalg.norm(points["P"][:, 0] - points["rear_wheel"][:, 0]))
     track = Track(name=str(summary["machine"][0]), t=t[keep], points=points, draw=list(DRAW) + _dots(wheel),
                   panel=panel, status=status, event_time=event, event_point="P",
                   note=("lean from the vertical" if flat else "lean from the wall's normal at the rear contact")
                   + "; normal forces per unit mass")
+    target_z = 0.0
     if flat:
         centre, half = _ground(points)
         ground = plane_ground(centre, half)
+    elif wall is not None:
+        ground, centre, half, target_z = _wall_view(wall, points)
     else:
         ground = sphere_ground(float(summary["r_m"][0]))
         centre, half = (0.0, 0.0), float(summary["r_m"][0])
     size = max(_apart(points, "head", "P"), _apart(points, "Q", "P"))
-    return Scene(ground=ground, tracks=[track], title=_title(summary, flat), playback=PLAYBACK, legend=list(LEGEND),
-                 camera={"el": CAMERA[0], "az": CAMERA[1], "target": [centre[0], centre[1], 0.0],
+    return Scene(ground=ground, tracks=[track], title=_title(summary, flat, wall), playback=PLAYBACK,
+                 legend=list(LEGEND),
+                 camera={"el": CAMERA[0], "az": CAMERA[1], "target": [centre[0], centre[1], target_z],
                          "extent": 0.96 * half},
                  follow={"track": 0, "target": "rear_frame", "heading": ["P", "Q"],
                          "size": _FOLLOW_SCALE * size, "el": FOLLOW[0], "az": FOLLOW[1]})
@@ -155,6 +171,17 @@ def two_wheeler_scene(series: Table, summary: Table, frames: dict, *, max_frames
 
 def _apart(points: dict, a: str, b: str) -> float:
     return float(np.linalg.norm(points[a][:, 0] - points[b][:, 0]))
+
+
+def _wall_view(wall, points: dict) -> tuple:
+    """(the wall as drawn, camera centre, half extent, camera height) of a run on a wall: up to its top (an
+    open one: twice the head's highest height, at least 1 m above it), framed as the paper's bodies' views
+    frame it."""
+    top = float(np.max(points["head"][2]))
+    drawn = wall_ground(wall, max(2.0 * top, top + 1.0))
+    rho, z = np.asarray(drawn["rho"]), np.asarray(drawn["z"])
+    return drawn, (0.0, 0.0), 1.05 * max(float(rho.max()), 0.5 * float(z[-1] - z[0])) / 0.96, 0.5 * float(
+        z[-1] + z[0])
 
 
 def _ground(points: dict) -> tuple:

@@ -120,3 +120,50 @@ def test_the_flat_page_draws_the_ground_and_the_bicycle_in_a_browser(browser, fl
     assert attrs["ready"] == "1" and attrs["errors"] == "0" and int(attrs["ink"]) > 500
     drawn = json.loads(attrs["drawn"].replace("&quot;", '"'))
     assert set(drawn) >= {"rear_rim", "front_rim", "head", "contacts"}
+
+
+#: the wall of death's drum, 32 ft across, its top 12 ft up; a twentieth of a lap from the turn 2 m up at 60 km/h
+DRUM_R, DRUM_TOP = 4.8768, 3.6576
+
+
+@pytest.fixture(scope="module")
+def wall_run():
+    return simulate_two_wheeler("stunt125-steer", view=True, surface="cylinder", diameter="32ft", wall_height="12ft",
+                                height=2.0, speed="60km/h", periods=0.05, points_per_period=200, rtol=1e-6,
+                                perturb=1.0)
+
+
+def test_a_run_on_the_drum_draws_the_drum_and_rides_its_wall(wall_run):
+    """On a drum the page draws the drum from its meridian (the floor, then
+    the wall at the drum's radius up to its top), not a globe: both
+    contacts on the wall (at the drum's radius from its axis) in every
+    frame, the rear one near its lane's height, the rims inside the wall
+    and above the floor."""
+    series, summary, frames = wall_run
+    data = page_data(render_html(two_wheeler_scene(series, summary, frames)))
+    ground, track = data["ground"], data["tracks"][0]
+    rho, z = np.array(ground["rho"]), np.array(ground["z"])
+    assert ground["kind"] == "revolution" and rho[0] == 0 and z[0] == 0
+    np.testing.assert_allclose(rho[1:], DRUM_R, atol=1e-12)
+    assert z[-1] == pytest.approx(DRUM_TOP, abs=1e-12)
+    for contact in ("P", "Q"):
+        xyz = decode_array(point_set(track, contact), 3)
+        np.testing.assert_allclose(np.hypot(xyz[0], xyz[1]), DRUM_R, atol=F32 * DRUM_R)
+    assert decode_array(point_set(track, "P"), 3)[2, 0] == pytest.approx(2.0, abs=F32 * DRUM_R)
+    for rim in RIM_KEYS:
+        pts = decode_rim(point_set(track, rim), track["points"][rim]["k"])
+        assert np.max(np.hypot(pts[0], pts[1])) < DRUM_R * (1 + F32) and np.min(pts[2]) > 0.5
+    assert "cylinder" in data["title"] and "\u03b8" not in "".join(r.get("label", "") for r in track["panel"])
+
+
+def test_the_drums_page_draws_the_wall_and_the_bicycle_in_a_browser(browser, wall_run, tmp_path):
+    out = tmp_path / "wall.html"
+    write_scene(out, two_wheeler_scene(*wall_run))
+    attrs = body_attributes(dump_dom(browser, out, budget_ms=1500))
+    assert attrs["ready"] == "1" and attrs["errors"] == "0" and int(attrs["ink"]) > 500
+    drawn = json.loads(attrs["drawn"].replace("&quot;", '"'))
+    width, height = (float(x) for x in attrs["canvas"].split(","))
+    for rim in RIM_KEYS:
+        x0, y0, x1, y1 = drawn[rim]
+        assert 0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height, rim
+        assert max(x1 - x0, y1 - y0) > 5, rim
