@@ -67,7 +67,7 @@ NEWTON_STEPS = 8
 def crown_quadric(ground, t):
     """The quadric (a_rho, a_z, b_z, c) of ``ground``'s parallel surface a
     distance ``t`` [m] inside (MG1), each broadcast against t; None where
-    the ground has none (a profile)."""
+    the ground has none (a profile).  Beyond the paper: docs/machine.md, "On any ground"."""
     parallel = ground.offset(t)
     if parallel is None:
         return None
@@ -263,13 +263,13 @@ class _Crown:
 def crown_geometry(quadric):
     """The crown point's geometry class for the parallel surface
     ``quadric`` (from :func:`crown_quadric`): the ``geometry`` argument of
-    :func:`~deathsphere.physics.machine_dynamics.rhs_of_geometry`."""
+    :func:`~deathsphere.physics.machine_dynamics.rhs_of_geometry` (beyond the paper; docs/machine.md, MG1-MG3)."""
     return type("Crown", (_Crown,), {"quadric": quadric})
 
 
 def machine_rhs_on(state, ground, g, machine: MachineArrays, frame_rate=0.0, forces=False):
-    """d(state)/dt of the machine's exact equations on ``ground`` (MG1-MG3
-    with eqs. M16-M19; the arguments and returns of
+    """d(state)/dt of the machine's exact equations on ``ground`` (beyond the
+    paper: docs/machine.md, MG1-MG3 with eqs. M16-M19; the arguments and returns of
     :func:`~deathsphere.physics.machine_dynamics.machine_rhs`).  Raises
     ValueError on a ground without a parallel quadric (:data:`NO_QUADRIC`)."""
     quadric = crown_quadric(ground, machine.tyre_radius)
@@ -306,7 +306,7 @@ def machine_orbit_state_on(height, alpha, ground, g, p: MachineArrays):
     flat ground the turn radius) and tilt ``alpha`` [rad] on ``ground``, at
     azimuth 0, and its rate Omega [rad/s] (MS1-MS4; NaN where none); on the
     globe :func:`~deathsphere.physics.machine_dynamics.machine_orbit_state`
-    at the lane's theta."""
+    at the lane's theta (beyond the paper; docs/machine.md, eqs. MS1-MS4)."""
     c = contact_on(height, ground)
     with np.errstate(invalid="ignore", divide="ignore"):
         return _orbit_state(c.rho, c.z, c.sin_beta, c.cos_beta, np.asarray(alpha, dtype=float), g, p)
@@ -331,7 +331,7 @@ def machine_jacobian_on(height, alpha, ground, g, p: MachineArrays):
     manifold |E| = 1, F(Q) = 0 less the phase and the family's two
     tangents, along the meridian's arc length (the contact moves along
     (cos beta, sin beta), the wall angle turns at the meridian's curvature)
-    and the tilt."""
+    and the tilt (beyond the paper; docs/machine.md, "On any ground")."""
     height = np.asarray(height, dtype=float).reshape(-1)
     alpha = np.asarray(alpha, dtype=float).reshape(-1)
     n = height.size
