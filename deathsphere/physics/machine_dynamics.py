@@ -164,6 +164,10 @@ class GeometryRates:
         """The pitch constraint's reaction per unit multiplier (eq. M18; :func:`_pitch_reaction`)."""
         return _pitch_reaction(self)
 
+    def outward(self):
+        """The ground's outward unit normal at the contact, P/|P| (3, ...)."""
+        return self.P / np.sqrt(_dot(self.P, self.P))
+
 
 def _residuals(state, g, p: MachineArrays, Wd, geometry=GeometryRates):
     """The Euler and axial-balance residuals (4, k, ...) of the machine at

@@ -50,17 +50,24 @@ from deathsphere.physics.stability.reduction import COMPLEX_STEP, spectrum_from_
 from deathsphere.physics.vectors import cross as _cross
 from deathsphere.physics.vectors import dot as _dot
 
-__all__ = ["crown_quadric", "crown_geometry", "machine_rhs_on", "machine_orbit_state_on", "machine_jacobian_on",
-           "machine_stability_on", "NO_QUADRIC", "NEWTON_STEPS"]
+__all__ = ["crown_quadric", "crown_geometry", "geometry_on", "machine_rhs_on", "machine_orbit_state_on",
+           "machine_start_on", "machine_project_on", "machine_jacobian_on", "machine_stability_on", "NO_QUADRIC",
+           "NEWTON_STEPS"]
 
 #: Why a ground is not analysed: its parallel surface is not a quadric of revolution.
 NO_QUADRIC = ("the machine's equations of motion move the tyre's crown point on the ground's parallel surface, "
               "derived for a quadric of revolution (the globe, a drum, a cone, flat ground): not for a profile")
 
-#: Newton steps for the crown point's angle phi (MG1).  The start (the
+#: A Newton step [rad] after which phi is at round-off: quadratic
+#: convergence leaves an error of about its square, and a complex step's
+#: imaginary part's error shrinks by the real error at each step.
+CONVERGED = 1e-10
+
+#: Newton steps at most for the crown point's angle phi (MG1).  The start (the
 #: projection of the normal at the wheel centre) is exact on the globe and
 #: flat ground and within (a - t) / rho of the answer on a drum or a cone,
-#: and the steps converge quadratically: 8 leave it at round-off.
+#: and the steps converge quadratically: 8 leave it at round-off (the loop
+#: stops after a step below :data:`CONVERGED`: 1-4 steps in practice).
 NEWTON_STEPS = 8
 
 
@@ -74,62 +81,90 @@ def crown_quadric(ground, t):
     return tuple(np.asarray(x, dtype=float) for x in parallel.quadric())
 
 
+def _sum(*terms):
+    """The sum of the terms that are not None (a zero coefficient is None: no work); None if all are."""
+    out = None
+    for x in terms:
+        if x is not None:
+            out = x if out is None else out + x
+    return out
+
+
+def _times(f, x, y):
+    """f(x, y) (a product), None where either factor is None (zero)."""
+    return None if x is None or y is None else f(x, y)
+
+
+def _mul(x, y):
+    return x * y
+
+
+def _neg(x):
+    return None if x is None else -x
+
+
 class _Taylor:
     """x(eps) = x0 + x1 eps + x2 eps^2 / 2, truncated: a value and its first
     and second time derivatives.  Vectors carry a leading axis of 3; x2 may
-    carry more trailing axes than x0 (the trial accelerations)."""
+    carry more trailing axes than x0 (the trial accelerations).  A zero
+    coefficient is None (the value alone, or value and rate, cost only
+    their own arithmetic)."""
 
     __slots__ = ("x0", "x1", "x2")
     __array_ufunc__ = None
 
-    def __init__(self, x0, x1, x2):
+    def __init__(self, x0, x1=None, x2=None):
         self.x0, self.x1, self.x2 = x0, x1, x2
 
     def __add__(self, o):
         if isinstance(o, _Taylor):
-            return _Taylor(self.x0 + o.x0, self.x1 + o.x1, self.x2 + o.x2)
+            return _Taylor(self.x0 + o.x0, _sum(self.x1, o.x1), _sum(self.x2, o.x2))
         return _Taylor(self.x0 + o, self.x1, self.x2)
 
     __radd__ = __add__
 
     def __neg__(self):
-        return _Taylor(-self.x0, -self.x1, -self.x2)
+        return _Taylor(-self.x0, _neg(self.x1), _neg(self.x2))
 
     def __sub__(self, o):
         return self + (-o)
 
     def __mul__(self, o):
         if isinstance(o, _Taylor):
-            return _Taylor(self.x0 * o.x0, self.x1 * o.x0 + self.x0 * o.x1,
-                           self.x2 * o.x0 + 2 * self.x1 * o.x1 + self.x0 * o.x2)
-        return _Taylor(self.x0 * o, self.x1 * o, self.x2 * o)
+            return _product(_mul, self, o)
+        return _Taylor(self.x0 * o, _times(_mul, self.x1, o), _times(_mul, self.x2, o))
 
     __rmul__ = __mul__
 
-    def __getitem__(self, i):
-        return _Taylor(self.x0[i], self.x1[i], self.x2[i])
+
+def _product(f, u: _Taylor, v: _Taylor) -> _Taylor:
+    """The jet of a bilinear product f (*, dot, cross): Leibniz's rule to second order."""
+    twice = _times(f, u.x1, v.x1)
+    return _Taylor(f(u.x0, v.x0), _sum(_times(f, u.x1, v.x0), _times(f, u.x0, v.x1)),
+                   _sum(_times(f, u.x2, v.x0), None if twice is None else 2 * twice, _times(f, u.x0, v.x2)))
 
 
 def _tdiv(x: _Taylor, y: _Taylor) -> _Taylor:
     z0 = x.x0 / y.x0
-    z1 = (x.x1 - z0 * y.x1) / y.x0
-    return _Taylor(z0, z1, (x.x2 - 2 * z1 * y.x1 - z0 * y.x2) / y.x0)
+    z1 = _times(_mul, _sum(x.x1, _neg(_times(_mul, z0, y.x1))), 1.0 / y.x0)
+    two = _times(_mul, z1, y.x1)
+    z2 = _sum(x.x2, None if two is None else -2 * two, _neg(_times(_mul, z0, y.x2)))
+    return _Taylor(z0, z1, _times(_mul, z2, 1.0 / y.x0))
 
 
 def _tsqrt(x: _Taylor) -> _Taylor:
     s0 = np.sqrt(x.x0)
-    s1 = x.x1 / (2 * s0)
-    return _Taylor(s0, s1, (x.x2 - 2 * s1 * s1) / (2 * s0))
+    s1 = _times(_mul, x.x1, 0.5 / s0)
+    sq = _times(_mul, s1, s1)
+    return _Taylor(s0, s1, _times(_mul, _sum(x.x2, None if sq is None else -2 * sq), 0.5 / s0))
 
 
 def _tdot(u: _Taylor, v: _Taylor) -> _Taylor:
-    return _Taylor(_dot(u.x0, v.x0), _dot(u.x1, v.x0) + _dot(u.x0, v.x1),
-                   _dot(u.x2, v.x0) + 2 * _dot(u.x1, v.x1) + _dot(u.x0, v.x2))
+    return _product(_dot, u, v)
 
 
 def _tcross(u: _Taylor, v: _Taylor) -> _Taylor:
-    return _Taylor(_cross(u.x0, v.x0), _cross(u.x1, v.x0) + _cross(u.x0, v.x1),
-                   _cross(u.x2, v.x0) + 2 * _cross(u.x1, v.x1) + _cross(u.x0, v.x2))
+    return _product(_cross, u, v)
 
 
 def _tunit(v: _Taylor) -> _Taylor:
@@ -139,14 +174,17 @@ def _tunit(v: _Taylor) -> _Taylor:
 def _tcos_sin(phi: _Taylor):
     c, s = np.cos(phi.x0), np.sin(phi.x0)
     p1, p2 = phi.x1, phi.x2
-    return (_Taylor(c, -s * p1, -s * p2 - c * p1 * p1), _Taylor(s, c * p1, c * p2 - s * p1 * p1))
+    sq = _times(_mul, p1, p1)
+    return (_Taylor(c, _times(_mul, -s, p1), _sum(_times(_mul, -s, p2), _times(_mul, -c, sq))),
+            _Taylor(s, _times(_mul, c, p1), _sum(_times(_mul, c, p2), _times(_mul, -s, sq))))
 
 
 def _grad(quadric, X):
     """N = grad F (3, ...) of the quadric at the point X (3, ...), array or jet."""
     a_rho, a_z, b_z, _ = quadric
     if isinstance(X, _Taylor):
-        return _Taylor(_grad(quadric, X.x0), _grad((a_rho, a_z, 0.0, 0.0), X.x1), _grad((a_rho, a_z, 0.0, 0.0), X.x2))
+        return _Taylor(_grad(quadric, X.x0), None if X.x1 is None else _hess_dot(quadric, X.x1),
+                       None if X.x2 is None else _hess_dot(quadric, X.x2))
     return np.stack((a_rho * X[0], a_rho * X[1], a_z * X[2] + b_z + 0 * X[2]))
 
 
@@ -154,11 +192,6 @@ def _hess_dot(quadric, v):
     """A v (3, ...) for the quadric's constant Hessian A = diag(a_rho, a_rho, a_z)."""
     a_rho, a_z = quadric[0], quadric[1]
     return np.stack((a_rho * v[0], a_rho * v[1], a_z * v[2]))
-
-
-def _taylor(x):
-    zero = 0 * x
-    return _Taylor(x, zero, zero)
 
 
 class _Crown:
@@ -172,7 +205,7 @@ class _Crown:
 
     def __init__(self, C, E, a, t):
         self.C, self.E, self.a_t, self.t = C, E, a - t, t
-        jet = self._jet(_taylor(C), _taylor(E), None)
+        jet = self._jet(_Taylor(C), _Taylor(E), None)
         self.h1, self.e3, self.Q, self.P = jet["e1"].x0, jet["e3"].x0, jet["Q"].x0, jet["P"].x0
         self.N, self.e2 = jet["N"].x0, jet["e2"].x0
 
@@ -202,14 +235,15 @@ class _Crown:
                 e2 = _cross(e3, e1.x0)
                 N = _grad(q, Cj.x0 + a_t * e3)
                 slope = a_t * _dot(e2, _hess_dot(q, e2)) - _dot(N, e3)
-                phi0 = phi0 - _dot(N, e2) / slope
-            phi = _taylor(phi0)
+                step = _dot(N, e2) / slope
+                phi0 = phi0 - step
+                # converged: the error left is about the step's square
+                if np.all(np.abs(step) < CONVERGED):
+                    break
+            phi = _Taylor(phi0)
         else:
             phi = self._phi
-            if order == 1:
-                phi = _Taylor(phi.x0, 0 * phi.x0, 0 * phi.x0)
-            else:
-                phi = _Taylor(phi.x0, phi.x1, 0 * phi.x0)
+            phi = _Taylor(phi.x0) if order == 1 else _Taylor(phi.x0, phi.x1)
         e3, e2 = self._at(phi, e1, u, w)
         Q = Cj + e3 * a_t
         N = _grad(q, Q)
@@ -218,7 +252,7 @@ class _Crown:
             g = _tdot(N, e2)
             slope = a_t * _dot(e2.x0, _hess_dot(q, e2.x0)) - _dot(N.x0, e3.x0)
             if order == 1:
-                self._phi = _Taylor(phi.x0, -g.x1 / slope, 0 * phi.x0)
+                self._phi = _Taylor(phi.x0, -g.x1 / slope)
             else:
                 self._phi = _Taylor(phi.x0, phi.x1, -g.x2 / slope)
             return self._jet_at(Cj, e1, u, w)
@@ -234,8 +268,7 @@ class _Crown:
     def rates(self, vC, Ed):
         """The first derivatives for dC/dt = vC, dE/dt = Ed (returns self)."""
         self.C1, self.E1 = vC, Ed
-        zero = 0 * vC
-        jet = self._jet(_Taylor(self.C, vC, zero), _Taylor(self.E, Ed, zero), 1)
+        jet = self._jet(_Taylor(self.C, vC), _Taylor(self.E, Ed), 1)
         self.h1_1, self.e3_1, self.P1 = jet["e1"].x1, jet["e3"].x1, jet["P"].x1
         return self
 
@@ -243,6 +276,19 @@ class _Crown:
         """d2e3/dt2 (3, k, ...) for second derivatives Cdd, Edd (3, k, ...)."""
         jet = self._jet(_Taylor(C, self.C1, Cdd), _Taylor(E, self.E1, Edd), 2)
         return jet["e3"].x2
+
+    def outward(self):
+        """The ground's outward unit normal at the contact (3, ...): the
+        parallel surface's at Q, N/|N| (MG2)."""
+        return self.N / np.sqrt(_dot(self.N, self.N))
+
+    def residual(self):
+        """F(Q)/|N(Q)| [m]: the crown point's distance outside its parallel
+        surface, to first order (0 on the constraint)."""
+        a_rho, a_z, b_z, c = self.quadric
+        Q = self.Q
+        F = 0.5 * a_rho * (Q[0] ** 2 + Q[1] ** 2) + 0.5 * a_z * Q[2] ** 2 + b_z * Q[2] + c
+        return F / np.sqrt(_dot(self.N, self.N))
 
     def pitch_reaction(self):
         """The pitch constraint's reaction per unit multiplier (MG3): (k, f),
@@ -265,6 +311,17 @@ def crown_geometry(quadric):
     ``quadric`` (from :func:`crown_quadric`): the ``geometry`` argument of
     :func:`~deathsphere.physics.machine_dynamics.rhs_of_geometry` (beyond the paper; docs/machine.md, MG1-MG3)."""
     return type("Crown", (_Crown,), {"quadric": quadric})
+
+
+def geometry_on(ground, machine: MachineArrays):
+    """The crown point's geometry class of ``machine`` on ``ground`` (MG1-MG3;
+    beyond the paper, docs/machine.md, "On any ground"): the ``geometry``
+    argument of :mod:`deathsphere.physics.machine_motion`'s functions.
+    Raises ValueError on a ground without a parallel quadric."""
+    quadric = crown_quadric(ground, machine.tyre_radius)
+    if quadric is None:
+        raise ValueError(NO_QUADRIC)
+    return crown_geometry(quadric)
 
 
 def machine_rhs_on(state, ground, g, machine: MachineArrays, frame_rate=0.0, forces=False):
@@ -310,6 +367,38 @@ def machine_orbit_state_on(height, alpha, ground, g, p: MachineArrays):
     c = contact_on(height, ground)
     with np.errstate(invalid="ignore", divide="ignore"):
         return _orbit_state(c.rho, c.z, c.sin_beta, c.cos_beta, np.asarray(alpha, dtype=float), g, p)
+
+
+def machine_start_on(height, alpha, d_alpha, ground, g, p: MachineArrays):
+    """(state (9, ...), Omega) of a machine on the steady lane (height,
+    alpha) kicked by a tilt d_alpha [rad] about its direction of travel
+    through the crown point Q (beyond the paper; docs/machine.md, "On any
+    ground"; as :func:`~deathsphere.physics.machine_motion.machine_start` on
+    the globe): Q = P + t n depends on the lane only, so Q, the contact and
+    w stay, the axle and the wheel centre take the tilt alpha + d_alpha."""
+    X0, om = machine_orbit_state_on(height, alpha, ground, g, p)
+    Xk, _ = machine_orbit_state_on(height, np.asarray(alpha) + d_alpha, ground, g, p)
+    return np.concatenate((Xk[0:6], X0[6:9])), om
+
+
+#: Newton steps of :func:`machine_project_on` (one is exact on the globe's
+#: and flat ground's quadrics; a drum's or a cone's e3 moves a little with C).
+PROJECT_STEPS = 3
+
+
+def machine_project_on(state, ground, p: MachineArrays):
+    """The state moved back onto its constraints (beyond the paper;
+    docs/machine.md, "On any ground"): E normalised, then C shifted along
+    the parallel surface's normal by -F(Q)/|N(Q)| (Newton's steps on
+    F(Q) = 0), as :func:`~deathsphere.physics.machine_motion.machine_project`
+    on the globe."""
+    state = np.array(state, dtype=np.result_type(state, float), copy=True)
+    state[3:6] = state[3:6] / np.sqrt(_dot(state[3:6], state[3:6]))
+    geometry = geometry_on(ground, p)
+    for _ in range(PROJECT_STEPS):
+        crown = geometry(state[0:3], state[3:6], p.wheel_radius, p.tyre_radius)
+        state[0:3] = state[0:3] - crown.residual() * crown.outward()
+    return state
 
 
 def machine_stability_on(height, alpha, ground, g, p: MachineArrays):
