@@ -78,6 +78,13 @@ class MachineRun(NamedTuple):
         """The globe the machines roll in."""
         return Sphere(self.r)
 
+    def geometry(self, shape=None):
+        """The crown point's geometry class in the globe (eq. M16), as
+        :meth:`MachineGroundRun.geometry` on any other ground."""
+        from deathsphere.physics.machine_dynamics import GeometryRates
+
+        return GeometryRates
+
 
 class GroundRun(NamedTuple):
     """Per-body parameters of the paper's wheels and balls on a ground other
