@@ -36,12 +36,23 @@ def test_the_drum_run_starts_on_orbits_steady_orbit_and_appends_its_columns(run)
     assert summary["surface"] == "cylinder" and summary["status"] == "completed"
 
 
+def test_a_machine_on_the_drum_appends_the_machines_columns_and_the_walls(run):
+    res = run("simulate", *DRUM, "--machine", "stunt125", "--alpha", "10", "--periods", "0.02",
+              "--summary-only", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    (summary,) = rows(res.stdout)
+    assert list(summary)[-6:] == ["machine", "min_head_clearance_m", "surface", "height_m", "max_height_drift_m",
+                                  "max_rho_drift_m"]
+    assert summary["surface"] == "cylinder" and summary["body"] == "machine" and summary["theta_deg"] == ""
+
+
 @pytest.mark.parametrize("args, option", [
     (DRUM + ("--theta", "60", "--alpha", "10"), "--theta"),
     (DRUM + ("--speed", "10"), "--speed"),
     (DRUM + ("--alpha", "10", "--side", "outside"), "--side"),
     (DRUM + ("--alpha", "10", "--vertical"), "--vertical"),
-    (DRUM + ("--alpha", "10", "--machine", "stunt125"), "--machine"),
+    (DRUM + ("--com-speed", "20", "--machine", "stunt125"), "--com-speed"),
+    (DRUM + ("--alpha", "10", "--machine", "stunt125", "--body", "sphere"), "--machine"),
     (("--surface", "plane", "--height", "2", "--alpha", "10"), "--height"),
     (("--surface", "plane", "--alpha", "10"), "--turn-radius"),
     (("--surface", "cone", "--diameter", "6", "--height", "2", "--alpha", "10"), "--wall-angle"),
