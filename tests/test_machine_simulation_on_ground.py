@@ -86,3 +86,17 @@ def test_what_a_machine_off_the_globe_does_not_take_is_refused_naming_it(extra, 
     with pytest.raises(ParameterError) as err:
         simulation_request({"machine": "stunt125", **extra})
     assert err.value.param == param and "\n" not in str(err.value)
+
+
+def test_the_3d_views_frames_put_the_tyre_on_the_wall():
+    from deathsphere.simulation.frames import body_frames
+
+    sim = prepare_simulation(*simulation_request({"record_states": True, "points_per_period": 8, "machine": "stunt125",
+                                                  "periods": 0.1, **{k: v for k, v in CASES["drum"].items()
+                                                                     if k != "periods"}}))
+    _, summary = sim.run()
+    (frames,) = body_frames(summary, sim.sample_states(), refine=False, params=sim.starts.params).values()
+    P, C = frames["contact"], frames["centre"]
+    radius = 16 * 0.3048
+    np.testing.assert_allclose(np.hypot(P[0], P[1]), radius, rtol=0, atol=1e-9)      # the contact on the drum
+    assert np.all(np.hypot(C[0], C[1]) < radius - 0.1)                                # the wheel centre inside

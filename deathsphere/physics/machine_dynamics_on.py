@@ -194,6 +194,13 @@ def _hess_dot(quadric, v):
     return np.stack((a_rho * v[0], a_rho * v[1], a_z * v[2]))
 
 
+def _with(jet: _Taylor, order: int, extra) -> _Taylor:
+    """``jet`` with ``extra`` added to its coefficient of ``order`` (1 or 2)."""
+    if order == 1:
+        return _Taylor(jet.x0, _sum(jet.x1, extra), jet.x2)
+    return _Taylor(jet.x0, jet.x1, _sum(jet.x2, extra))
+
+
 class _Crown:
     """The crown point's geometry on a quadric parallel surface (MG1-MG3),
     with the attributes and methods of
@@ -251,18 +258,16 @@ class _Crown:
             # MG1 differentiated: the residual's `order`-th coefficient is slope * phi_order + rest
             g = _tdot(N, e2)
             slope = a_t * _dot(e2.x0, _hess_dot(q, e2.x0)) - _dot(N.x0, e3.x0)
-            if order == 1:
-                self._phi = _Taylor(phi.x0, -g.x1 / slope)
-            else:
-                self._phi = _Taylor(phi.x0, phi.x1, -g.x2 / slope)
-            return self._jet_at(Cj, e1, u, w)
-        self._phi = phi
-        return {"e1": e1, "e3": e3, "e2": e2, "Q": Q, "N": N, "P": Q + _tunit(N) * self.t}
-
-    def _jet_at(self, Cj, e1, u, w):
-        e3, e2 = self._at(self._phi, e1, u, w)
-        Q = Cj + e3 * self.a_t
-        N = _grad(self.quadric, Q)
+            known = g.x1 if order == 1 else g.x2
+            phi_k = -known / slope
+            self._phi = _Taylor(phi.x0, phi_k) if order == 1 else _Taylor(phi.x0, phi.x1, phi_k)
+            # phi_k enters each jet's `order`-th coefficient linearly, along de3/dphi = e2 (and de2/dphi = -e3)
+            turn = e2.x0 * phi_k
+            e3, e2 = _with(e3, order, turn), _with(e2, order, -e3.x0 * phi_k)
+            Q = _with(Q, order, turn * a_t)
+            N = _with(N, order, _hess_dot(q, turn) * a_t)
+        else:
+            self._phi = phi
         return {"e1": e1, "e3": e3, "e2": e2, "Q": Q, "N": N, "P": Q + _tunit(N) * self.t}
 
     def rates(self, vC, Ed):
