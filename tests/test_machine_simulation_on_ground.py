@@ -78,7 +78,9 @@ def test_an_unkicked_stable_lane_is_held():
 @pytest.mark.parametrize(("extra", "param"), [
     (dict(surface="profile", profile=Profile([5.0, 5.0, 5.0, 5.0], [0.0, 1.0, 2.0, 3.0]), height=1.0, alpha=10),
      "machine"),
-    (dict(surface="cylinder", diameter="32ft", height=1.5, com_speed=20.0), "com_speed"),
+    (dict(surface="cylinder", diameter="32ft", height=1.5, alpha=10, com_speed=20.0), "com_speed"),
+    (dict(surface="cylinder", diameter="32ft", height=1.5, com_speed=1.0), "com_speed"),
+    (dict(surface="cylinder", diameter="32ft", height=1.5, com_speed=20.0, branch=5), "branch"),
     (dict(surface="cylinder", diameter="32ft", height=1.5), "alpha"),
     (dict(surface="cylinder", diameter="32ft", height=1.5, alpha=10, body="sphere"), "machine"),
 ])
@@ -100,3 +102,16 @@ def test_the_3d_views_frames_put_the_tyre_on_the_wall():
     radius = 16 * 0.3048
     np.testing.assert_allclose(np.hypot(P[0], P[1]), radius, rtol=0, atol=1e-9)      # the contact on the drum
     assert np.all(np.hypot(C[0], C[1]) < radius - 0.1)                                # the wheel centre inside
+
+
+@pytest.mark.parametrize("held", ["com_speed", "speed"])
+def test_a_speed_starts_on_the_tilt_ride_gives(held):
+    """By the centre of mass's speed or the contact's, as ride lists the tilts (branch 0: the least)."""
+    import deathsphere
+
+    lane = dict(surface="cylinder", diameter="32ft", height=1.5)
+    table = deathsphere.ride(machine="stunt125", **lane, **{held: "40km/h"}, stability=False)
+    series, summary, _, _ = _run(periods=0.02, **lane, **{held: "40km/h"})
+    assert summary["alpha_deg"][0] == pytest.approx(float(np.min(table["alpha_deg"])), rel=1e-12)
+    assert summary["speed_m_s"][0] == pytest.approx(float(table["v_cm_m_s"][np.argmin(table["alpha_deg"])]),
+                                                    rel=1e-9)

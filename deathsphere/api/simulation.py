@@ -287,13 +287,41 @@ def _machine_on_ground(given: Mapping, ground, key: str) -> RiderRequest:
     if not yaw_is_determined(machine_arrays(m)):
         raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
                              "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
-    for held in ("speed", "com_speed"):
-        if given[held] is not None:
-            raise ParameterError(f"on the {ground.name} a machine's run is given by its tilt alpha (ride gives "
-                                 "the tilts of a speed there)", held)
-    if given["alpha"] is None:
-        raise ParameterError(f"on the {ground.name} give the machine's tilt alpha", "alpha", missing=True)
-    return RiderRequest(body=m, lane=Horizontal(at=Height(_read(key, given[key])), by=Tilt(_read("alpha", given["alpha"]))))
+    held = [name for name in ("alpha", "speed", "com_speed") if given[name] is not None]
+    if len(held) != 1:
+        raise ParameterError(f"on the {ground.name} give one of the machine's tilt alpha, its contact's speed and "
+                             "its centre of mass's com_speed" + (f" (got {' and '.join(held)})" if held else ""),
+                             held[1] if len(held) > 1 else "alpha", missing=not held)
+    lane = _read(key, given[key])
+    if held[0] == "alpha":
+        alpha = _read("alpha", given["alpha"])
+    else:
+        alpha = _machine_tilt_on(m, ground, lane, held[0], _read(held[0], given[held[0]]), given["branch"],
+                                 _read("g", given["g"]))
+    return RiderRequest(body=m, lane=Horizontal(at=Height(lane), by=Tilt(alpha)))
+
+
+def _machine_tilt_on(m, ground, lane: float, held: str, speed: float, branch, g: float) -> float:
+    """The tilt [deg] of a machine's lane on ``ground`` whose contact (held
+    ``speed``) or centre of mass (``com_speed``) runs at ``speed``: the tilt
+    number ``branch`` in increasing alpha of those ``ride`` lists there
+    (docs/machine.md eqs. M12, M12r with MS2-MS4)."""
+    from deathsphere.physics.machine_arrays import machine_arrays
+    from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
+
+    at, value = np.array([lane]), np.array([speed])
+    if held == "com_speed":
+        tilts, _ = orbits_for_speed_on(at, value, ground, np.array([g]), machine_arrays(m))
+    else:
+        tilts, _ = orbits_for_rate_on(at, contact_rate_on(at, value, ground), ground, np.array([g]), machine_arrays(m))
+    tilts = np.sort(np.degrees(tilts[0][np.isfinite(tilts[0])]))
+    if not tilts.size:
+        raise ParameterError(f"no tilt alpha gives the {'centre of mass' if held == 'com_speed' else 'contact'} "
+                             f"this speed on this lane of the {ground.name}", held)
+    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < tilts.size:
+        raise ParameterError(f"branch must be one of the {tilts.size} tilts that give this speed "
+                             f"(0..{tilts.size - 1}; got {branch!r})", "branch")
+    return float(tilts[int(branch)])
 
 
 def _read(key: str, raw) -> float:

@@ -51,7 +51,7 @@ def test_a_machine_on_the_drum_appends_the_machines_columns_and_the_walls(run):
     (DRUM + ("--speed", "10"), "--speed"),
     (DRUM + ("--alpha", "10", "--side", "outside"), "--side"),
     (DRUM + ("--alpha", "10", "--vertical"), "--vertical"),
-    (DRUM + ("--com-speed", "20", "--machine", "stunt125"), "--com-speed"),
+    (DRUM + ("--alpha", "10", "--com-speed", "20", "--machine", "stunt125"), "--com-speed"),
     (DRUM + ("--alpha", "10", "--machine", "stunt125", "--body", "sphere"), "--machine"),
     (("--surface", "plane", "--height", "2", "--alpha", "10"), "--height"),
     (("--surface", "plane", "--alpha", "10"), "--turn-radius"),
