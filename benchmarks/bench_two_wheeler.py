@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from deathsphere.physics.ground import Sphere
-from deathsphere.physics.two_wheeler import _generated, linear, motion, stability, steady
+from deathsphere.physics.ground import Cylinder, Sphere
+from deathsphere.physics.two_wheeler import _generated, grounds, linear, motion, stability, steady
 from deathsphere.physics.two_wheeler.parameters import BENCHMARK_GRAVITY, benchmark_bicycle
 
 GLOBE = 2.4384      # 16 ft
@@ -218,8 +218,15 @@ def main():
     u = rng.uniform(-2.0, 2.0, (8, args.n))
     q_wall = q + np.array([np.pi / 2] + [0.0] * 7)[:, None]    # around the equator of a 3 m sphere
     p_wall = motion.parameter_values(bicycle, G, Sphere(3.0))
+    # the general path on the same sphere and on a 32-foot drum: the meridian read and the rim angle found per state
+    general = grounds.OnRevolution(Sphere(3.0))
+    q_general = q + np.array([3.0 * np.pi / 2] + [0.0] * 7)[:, None]
+    drum = grounds.of(Cylinder(4.8768))
+    q_drum = q + np.array([2.0] + [0.0] * 7)[:, None]
     for name, fn in (("flat_equations", lambda: _generated.flat_equations(q, u, p, 0.0)),
                      ("sphere_equations", lambda: _generated.sphere_equations(q_wall, u, p_wall, 0.0)),
+                     ("sphere, general", lambda: general.equations(q_general, u, p, 0.0)),
+                     ("drum equations", lambda: drum.equations(q_drum, u, p, 0.0)),
                      ("accelerations", lambda: motion.accelerations(q, u, p)),
                      ("pitch (Newton)", lambda: motion.pitch(q, p))):
         seconds = best_of(fn, args.repeat)

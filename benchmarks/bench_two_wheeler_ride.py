@@ -6,7 +6,7 @@ as a command (its start-up included), each the best of ``--repeat`` runs,
 in one run, and their ratio (the target: the command within 1.5x of the
 call).
 
-    PYTHONPATH=. python3 benchmarks/bench_two_wheeler_ride.py [--side 100] [--repeat 3] [--chunk N ...] [--before REV]
+    PYTHONPATH=. python3 benchmarks/bench_two_wheeler_ride.py [--side 100] [--repeat 3] [--chunk N ...] [--before REV] [--drum]
 
 ``--side 100`` is 10^4 turns requested: heights 0.2:3.962:0.038 m and
 speeds 5:19.85:0.15 m/s, 100 values each.  ``--chunk N ...`` times the
@@ -15,7 +15,10 @@ per chunk (in whole lanes: 100 is one lane, as the command streamed before),
 to show what the chunk size costs apart from the start-up and the writing.
 ``--before REV`` times the command of the package as it was at git
 revision REV too (extracted into a temporary directory), in the same run,
-and checks that both commands write the same bytes.
+and checks that both commands write the same bytes.  ``--drum`` times the
+same grid on a 16-foot drum (the wall of death's: the same diameter, the
+heights up its wall) too, the API and the command, against the globe's API
+(the target: the drum within 2x of the globe; docs/two-wheeler.md sec. 12.6).
 """
 
 import argparse
@@ -47,6 +50,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--chunk", type=int, nargs="*", default=[], help="also the streamed ride with these chunk sizes")
     ap.add_argument("--before", default=None, metavar="REV", help="also the command at git revision REV")
+    ap.add_argument("--drum", action="store_true", help="also the same grid on a 16-foot drum")
     args = ap.parse_args()
     height, speed = ranges(args.side)
     from deathsphere.grid import parse_values
@@ -92,6 +96,17 @@ def main():
                                                          chunk_size=size).table(), args.repeat)
         print(f"streamed, chunk {size:>6}:        {t_sweep:7.3f} s  ({t_sweep / t_api:.2f}x the API)")
     print(f"CLI / API: {t_cli / t_api:.2f}x  (target <= 1.5x)")
+    if args.drum:
+        drum = dict(ask, surface="cylinder")
+        drum_rows = len(deathsphere.ride(**drum, height=h[:, None], speed=v[None, :]))
+        t_drum = best_of(lambda: deathsphere.ride(**drum, height=h[:, None], speed=v[None, :]), args.repeat)
+        drum_command = command[:-2] + ["--surface", "cylinder", "--format", "csv"]
+        t_drum_cli = best_of(lambda: subprocess.run(drum_command, stdout=subprocess.DEVNULL, check=True, cwd=root,
+                                                    env={**os.environ, "PYTHONPATH": str(root)}), args.repeat)
+        print(f"drum API deathsphere.ride:     {t_drum:7.3f} s  ({drum_rows} rows)")
+        print(f"drum CLI ride --format csv:    {t_drum_cli:7.3f} s")
+        print(f"drum / globe (API): {t_drum / t_api:.2f}x  (target <= 2x)")
+        print(f"drum CLI / API: {t_drum_cli / t_drum:.2f}x  (target <= 1.5x)")
     print(f"load average: {os.getloadavg()[0]:.2f}")
 
 

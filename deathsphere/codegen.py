@@ -33,7 +33,8 @@ the constraints and every sign.
 
 Every function takes q (8, ...) and, where it needs them, u (8, ...) -- the
 generalised coordinates and speeds, a trailing batch axis broadcast -- the
-parameters p in PARAMETER_NAMES order (then the sphere's radius r), each a
+parameters p in PARAMETER_NAMES order (then the sphere's radius r, or a
+revolution's meridian at the rear contact and the front rim angle), each a
 float or an array broadcasting against the batch.  Only functions analytic in their
 arguments are used (sin, cos, sqrt, powers), so complex-step derivatives
 pass through.
@@ -113,21 +114,36 @@ def generated_functions(derivation: Derivation) -> str:
         return sm.Matrix(m).xreplace(plain)
 
     T = derivation.steer_torque
+    equations = [((8, 8), sub(derivation.mass_matrix), True), ((8,), sub(derivation.forcing), False),
+                 ((5, 8), sub(derivation.constraint_matrix), False), ((5,), sub(derivation.constraint_bias), False)]
+    if derivation.holonomic is None:
+        # a revolution's front contact: psi's part of the bias and what psi's rate is found from
+        equations += [((5,), sub(derivation.constraint_dpsi), False),
+                      ((3,), sub(derivation.front_point_velocity), False),
+                      ((3,), sub(derivation.front_frame_rate), False)]
+        doc = ("Kane's equations with all eight speeds free, M u' = f, and the rolling constraints B u = 0 at "
+               "the rim angle psi_F: returns M (8, 8), f (8), B (5, 8), B' u at constant psi_F (5), "
+               "d(B u)/d psi_F (5), the velocity of the front frame's point at the front contact (3) and the "
+               "front frame's angular velocity (3), in N.")
+        contact = _function(f"{s}_front_rim",
+                            "The front wheel's centre, its frame's E.x and E.z, then their pitch derivatives, "
+                            "in N: shape (18, ...).",
+                            ["q", "p"], unpack_q + unpack_p + ["shape, dtype = _batch(q, *p)"],
+                            [((18,), sub(derivation.front_rim), False)], printer)
+    else:
+        doc = ("Kane's equations with all eight speeds free, M u' = f, and the rolling "
+               "constraints B u = 0 with B' u: returns M (8, 8), f (8), B (5, 8), B' u (5).")
+        contact = _function(f"{s}_holonomic",
+                            "The front contact's holonomic constraint h(q) = 0 and dh/dpitch: returns "
+                            "(h, dh/dpitch), each of shape (1, ...).",
+                            ["q", "p"], unpack_q + unpack_p + ["shape, dtype = _batch(q, *p)"],
+                            [((1,), sub([derivation.holonomic]), False),
+                             ((1,), sub([derivation.holonomic_dpitch]), False)], printer)
     parts = [
-        _function(f"{s}_equations",
-                  "Kane's equations with all eight speeds free, M u' = f, and the rolling "
-                  "constraints B u = 0 with B' u: returns M (8, 8), f (8), B (5, 8), B' u (5).",
-                  ["q", "u", "p", str(T)],
+        _function(f"{s}_equations", doc, ["q", "u", "p", str(T)],
                   unpack_q + unpack_u + unpack_p + ["shape, dtype = _batch(q, u, " + str(T) + ", *p)"],
-                  [((8, 8), sub(derivation.mass_matrix), True), ((8,), sub(derivation.forcing), False),
-                   ((5, 8), sub(derivation.constraint_matrix), False),
-                   ((5,), sub(derivation.constraint_bias), False)], printer),
-        _function(f"{s}_holonomic",
-                  "The front contact's holonomic constraint h(q) = 0 and dh/dpitch: returns "
-                  "(h, dh/dpitch), each of shape (1, ...).",
-                  ["q", "p"], unpack_q + unpack_p + ["shape, dtype = _batch(q, *p)"],
-                  [((1,), sub([derivation.holonomic]), False),
-                   ((1,), sub([derivation.holonomic_dpitch]), False)], printer),
+                  equations, printer),
+        contact,
         _function(f"{s}_energy",
                   "Kinetic and potential energy: returns (T, V), each of shape (1, ...).",
                   ["q", "u", "p"], unpack_q + unpack_u + unpack_p + ["shape, dtype = _batch(q, u, *p)"],

@@ -296,8 +296,8 @@ def test_generic_table_keeps_keys_units_and_names_what_it_leaves_out(width):
         assert dropped == [] and "m/s²" in heads
     else:
         assert "mu_required" in dropped
-    # inputs equal in every row go to a line under the table (strings too)
-    assert "theta_deg = 60" in text and "status = ok" in text
+    # inputs equal in every row go to a line under the table (strings too), in words with their units
+    assert "theta = 60 deg" in text and "status = ok" in text and "theta_deg" not in text.split("left out")[0]
 
 
 @pytest.mark.parametrize("width", (60, 80))

@@ -98,11 +98,18 @@ def test_a_lane_a_wall_does_not_have_is_refused_in_one_line(kw, param):
     assert err.value.param == param and "\n" not in str(err.value)
 
 
-def test_a_two_wheeler_refuses_a_wall_rather_than_riding_the_globe():
+def test_a_two_wheeler_rides_the_wall_not_the_globe():
+    """Its turns are the drum's (docs/two-wheeler.md sec. 12), not a globe's
+    of that diameter; a surface it does not ride is refused naming surface."""
+    rows = deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="cylinder", diameter="32ft",
+                            height=1, speed=8)
+    globe = deathsphere.ride(machine="benchmark-bicycle", steer="free", diameter="32ft", height=1, speed=8)
+    assert set(rows["surface"]) == {"cylinder"} and np.all(rows["wall_angle_deg"] == 90.0)
+    assert np.isnan(rows["theta_deg"]).all() and not np.isnan(globe["theta_deg"]).any()
+    assert not np.allclose(rows["lean_wall_deg"][0], globe["lean_wall_deg"][0])
     with pytest.raises(ParameterError) as err:
-        deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="cylinder", diameter="32ft", height=1,
-                         speed=8)
-    assert err.value.param == "surface"
+        deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="plane", height=1, speed=8)
+    assert err.value.param == "surface" and "\n" not in str(err.value)
 
 
 def test_the_riders_table_counts_a_head_reaching_a_wall_as_head_hits():

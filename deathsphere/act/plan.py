@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import pathlib
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -117,6 +117,18 @@ class Rider:
         return float(at.height) if isinstance(at, requests.Height) else math.nan
 
     @property
+    def contact_height(self) -> float:
+        """The contact's height above the floor [m] on a horizontal lane: as
+        typed, else from theta on the globe (r (1 + cos theta)); NaN on a
+        vertical lane (his height changes round the loop)."""
+        if self.lane != "horizontal":
+            return math.nan
+        at = self.request.lane.at
+        if isinstance(at, requests.Height):
+            return float(at.height)
+        return float(self.ground.height(math.radians(at.theta)))
+
+    @property
     def speed(self) -> float:
         """The contact's speed along the ground [m/s] as planned (NaN: not given)."""
         by = getattr(self.request.lane, "by", None)
@@ -149,12 +161,40 @@ class Rider:
         return getattr(self.request.lane, "v_top", math.nan)
 
 
+#: The plan's dimensional keys whose values a terminal view shows back in
+#: the unit typed, by the registry's name (a plan's ``radius`` is ``r``),
+#: and their kind; the registry has no ``min_clearance``: a length.
+TYPED_KEYS = {"diameter": "length", "radius": "length", "wall_height": "length", "min_clearance": "length",
+              "height": "length", "width": "length", "speed": "speed", "com_speed": "speed", "v_top": "speed"}
+
+
+def typed_values(plan: dict) -> dict:
+    """``{name: (kind, values as typed)}`` of :data:`TYPED_KEYS` over the
+    plan's tables, in the plan's order (a number is in the API's unit, a
+    text carries its unit: ``"0.5ft"``); only the keys the plan gives."""
+    tables = [plan.get("globe"), plan.get("arena")]
+    riders = plan.get("rider", [])
+    tables += [riders] if isinstance(riders, dict) else list(riders) if isinstance(riders, list) else []
+    out: dict = {}
+    for table in tables:
+        if not isinstance(table, dict):
+            continue
+        for key, kind in TYPED_KEYS.items():
+            if table.get(key) is not None:
+                name = "r" if key == "radius" else key
+                out[name] = (kind, out.get(name, (kind, ()))[1] + (table[key],))
+    return out
+
+
 @dataclass(frozen=True)
 class Plan:
-    """A checked plan: the globe and its riders, in the plan's order."""
+    """A checked plan: the globe and its riders, in the plan's order;
+    ``typed``: its dimensional values as typed (:func:`typed_values`), so
+    that a terminal view shows them back in their units."""
 
     globe: Globe
     riders: tuple[Rider, ...]
+    typed: dict = field(default_factory=dict)
 
     def names(self) -> list[str]:
         return [r.name for r in self.riders]
@@ -342,7 +382,7 @@ def read_plan(plan) -> Plan:
             _fail(f"rider {rider.name!r}", "name", "is given twice (names must differ)")
         seen.add(rider.name)
     _check_laps(riders)
-    return Plan(globe=globe, riders=riders)
+    return Plan(globe=globe, riders=riders, typed=typed_values(plan))
 
 
 def _check_laps(riders) -> None:

@@ -224,6 +224,8 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         not analysed on a profile (the columns say so).  ``"plane"``: flat ground, a lane by ``turn_radius``;
         ``"profile"``: the meridian ``profile`` (a CSV file's path or a
         :class:`~deathsphere.physics.ground.Profile`), a lane by ``height``.
+        A two-wheeler (``steer``, ``steer_torque``) rides the drum, the
+        cone and a profile too, with its stability (docs/two-wheeler.md sec. 12).
     profile, turn_radius : str or Profile, float or array_like
         The meridian of ``surface="profile"``; the contact's distance from
         the turn's centre [m] on ``surface="plane"``.
@@ -444,7 +446,7 @@ _HOW = {Tilt: lambda by: ("alpha", by.alpha), ContactSpeed: lambda by: ("speed",
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
 SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius",
                        "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
-                       "surface", "wall_angle", "wall_height")
+                       "turn_radius")
 
 
 def refuse_single_contact(given: dict) -> None:
@@ -463,7 +465,8 @@ def _two_wheeler(machine, given: dict) -> Table:
     refuse_single_contact(given)
     return two_wheeler_ride(machine, {k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
                                                               "steer", "r", "diameter", "g", "mu", "max_g",
-                                                              "summary", "stability", "only")})
+                                                              "summary", "stability", "only", "surface",
+                                                              "wall_angle", "wall_height", "profile")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).

@@ -367,16 +367,30 @@ def loop_start_angles(phase_deg: float, azimuth_deg: float) -> tuple[float, floa
     return float(theta), float(phi + 360 if phi < 0 else phi)
 
 
+def horizontal_start_angles(rider, lane: Lane, ground) -> tuple[float, float]:
+    """(theta, phi) [deg] of a horizontal lane's contact at t = 0, echoing
+    the plan: theta as typed (a lane given by its height: from the
+    contact's coordinates; NaN on a drum or a cone), phi the phase as typed
+    in 0..360 in decimal arithmetic (phi = phase +- Omega t: 120 is 120,
+    not 119.99999999999999 through the contact's coordinates)."""
+    from deathsphere import requests
+    from deathsphere.act.pairs import contact_angles
+
+    theta, _ = contact_angles(lane, 0.0, ground)
+    if isinstance(getattr(rider.request.lane, "at", None), requests.Theta) and not math.isnan(theta):
+        theta = float(rider.theta_deg)
+    phi = _decimal(rider.phase_deg) % 360          # a Decimal's remainder keeps the dividend's sign
+    return theta, float(phi + 360 if phi < 0 else phi)
+
+
 def _rider_row(lane: Lane, rider, band, ground) -> dict:
     """The riders table's row of one lane (its orbit as ``ride`` reports it,
     the speed band)."""
-    from deathsphere.act.pairs import contact_angles
-
     orbit, nan = lane.orbit, math.nan
     if lane.kind == "vertical":
         theta0, phi0 = loop_start_angles(rider.phase_deg, rider.azimuth_deg)
     else:
-        theta0, phi0 = contact_angles(lane, 0.0, ground)
+        theta0, phi0 = horizontal_start_angles(rider, lane, ground)
     out = {"name": lane.name, "lane": lane.kind, "theta_deg": theta0, "phi0_deg": phi0, "machine": lane.machine.name,
            "width_m": lane.width_m, "status": lane.status, "reason": lane.reason,
            "mu_required": orbit["mu_required"], "head_clearance_m": orbit["head_clearance"],

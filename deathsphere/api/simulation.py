@@ -25,6 +25,7 @@ from deathsphere.api.arguments import (
 from deathsphere.constants import SIDES
 from deathsphere.model import Setup
 from deathsphere.physics.ground import Sphere
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS
 from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import WHEEL, Ball, Wheel
 from deathsphere.requests.arena import names_a_wall
@@ -263,9 +264,8 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     lane = decode_paper_lane({**given, "vertical": False}, kind, _read,
                              at=Height(_read(key, given[key])))
     if isinstance(kind, Wheel) and not isinstance(lane.by, Tilt):
-        held = next(name for name in ("speed", "com_speed", "omega") if given[name] is not None)
-        raise ParameterError(f"on the {ground.name} a wheel's orbit is given by its tilt alpha (its speed or rate "
-                             "is not yet solved for a tilt off the globe: docs/surfaces.md)", held)
+        alpha = _tilt_on(ground, lane.at.height, lane.by, a, k, run.g, run.mu)
+        lane = dataclasses.replace(lane, by=Tilt(alpha))
     rider = RiderRequest(body=PaperBody(kind=kind, side="inside", a=a, k=k), lane=lane, kick=kick)
     return rider, run, options
 
@@ -273,7 +273,7 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
 def _machine_on_ground(given: Mapping, ground, key: str) -> RiderRequest:
     """A machine on a lane of ``ground`` (not the globe; beyond the paper:
     docs/machine.md, "On any ground") at its height (on flat ground its
-    turn radius ``key``), by its tilt alpha."""
+    turn radius ``key``), by its tilt alpha, or its speed and branch (the tilt as ``ride`` lists them)."""
     from deathsphere.physics.machine_arrays import machine_arrays
     from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, yaw_is_determined
     from deathsphere.records.machine_presets import as_machine
@@ -322,6 +322,29 @@ def _machine_tilt_on(m, ground, lane: float, held: str, speed: float, branch, g:
         raise ParameterError(f"branch must be one of the {tilts.size} tilts that give this speed "
                              f"(0..{tilts.size - 1}; got {branch!r})", "branch")
     return float(tilts[int(branch)])
+
+
+def _tilt_on(ground, height: float, by, a: float, k: float, g: float, mu: float) -> float:
+    """The tilt [deg] of a wheel's orbit on a lane of ``ground`` with this
+    contact speed, centre speed or rate: root number ``branch`` of eq. S2
+    (docs/surfaces.md, "The wheel given its rate"; as ``orbit`` numbers them)."""
+    from deathsphere.physics.revolution_tilt import wheel_tilts
+
+    key = {ContactSpeed: "speed", ComSpeed: "com_speed", Rate: "omega"}[type(by)]
+    target = by.omega if isinstance(by, Rate) else by.speed
+    res = wheel_tilts(ground, height, a, k, g, mu=mu, **{key: target})
+    alphas = np.asarray(res["alpha"], dtype=float).reshape(-1)
+    found = alphas[np.isfinite(alphas)]
+    what = "rate" if key == "omega" else "speed"
+    if not found.size:
+        status, reason = (int(np.ravel(res[name])[0]) for name in ("unsolved_status", "unsolved_reason"))
+        raise ParameterError(f"no tilt alpha gives this {what} on this lane ({STATUS_LABELS[status]}: "
+                             f"{REASON_TEXT[reason]})", key)
+    branch = by.branch
+    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < found.size:
+        raise ParameterError(f"branch must be one of the {found.size} tilts that give this {what} "
+                             f"(0..{found.size - 1}; got {branch!r})", "branch")
+    return float(np.degrees(found[int(branch)]))
 
 
 def _read(key: str, raw) -> float:

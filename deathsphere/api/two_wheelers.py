@@ -237,7 +237,7 @@ MAX_STREAMED_LANES = 1_000_000
 #: fewer, one lane of 100 speeds per chunk, made the command 2.5-3.7 times
 #: slower than one API call (benchmarks/bench_two_wheeler_ride.py).
 TURN_CHUNK = 2048
-__all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
+__all__ += ["TURN_LIMIT_COLUMNS", "TURN_APPENDED", "TURN_ARENA_COLUMNS", "STRAIGHT_APPENDED", "TURN_SUMMARY_COLUMNS", "TurnRequest",
             "TurnBatch", "turn_request", "turn_rows"]
 
 
@@ -327,6 +327,13 @@ class TurnRequest:
     max_g: float
     summary: bool
     only: tuple | None = None
+    #: the drum or the cone ridden (None: the globe of radius r); a wall's lanes are heights
+    wall: object = None
+
+    @property
+    def ground(self):
+        """The ground record the turns are sought on: the wall, or the globe of radius r."""
+        return Sphere(self.r) if self.wall is None else self.wall
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -389,7 +396,11 @@ class TurnBatch:
 
 #: ``ride --steer``'s keys and their defaults (a key not given: its default).
 TURN_KEYS = {"theta": None, "height": None, "speed": None, "steer_torque": None, "steer": None, "r": R,
-             "diameter": None, "g": G, "mu": INF, "max_g": INF, "summary": False, "stability": True, "only": None}
+             "diameter": None, "g": G, "mu": INF, "max_g": INF, "summary": False, "stability": True, "only": None,
+             "surface": None, "wall_angle": None, "wall_height": None, "profile": None}
+
+#: The columns a two-wheeler's table on a drum, a cone or a profile appends (the single-contact ride's there).
+TURN_ARENA_COLUMNS = ("surface", "rho_contact_m", "wall_angle_deg")
 
 
 def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest:
@@ -406,19 +417,31 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         raise TypeError(f"turn_request() got an unexpected key {unknown[0]!r}")
     given = {**TURN_KEYS, **typed}
     theta, height, speed, steer_torque, steer, r, diameter, g, mu, max_g, summary, stability, only = (
-        given[key] for key in TURN_KEYS)
+        given[key] for key in ("theta", "height", "speed", "steer_torque", "steer", "r", "diameter", "g", "mu",
+                               "max_g", "summary", "stability", "only"))
     steer, steer_torque = steer_request(steer, steer_torque)
     t, steer, g = _machine(machine, steer, g)
-    r = sphere_radius(r, diameter)
-    r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
-    if r is None:
-        raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    wall = _wall(given["surface"], r, diameter, given["wall_angle"], given["wall_height"], given["profile"])
+    if wall is None:
+        r = sphere_radius(r, diameter)
+        r = float(checked_array("r", r)) if np.ndim(r) == 0 else None
+        if r is None:
+            raise ParameterError("a two-wheeler takes one sphere radius (or diameter) per call", "r")
+    else:
+        # the arena's radius at its floor (NaN on a profile: no radius to name, and each lane's own fit)
+        from deathsphere.api.ride_surfaces import floor_radius
+
+        r = floor_radius(wall)
     if max(t.rR, t.rF) >= r:
         # no lane of this globe has room for the wheel: refused as a single-contact machine's wheel is
-        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in a sphere of "
-                             f"radius {r:g} m (needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
-    lane, lane_given, by_theta = _lanes(theta, height, r, MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS,
-                                        shaped=not streamed)
+        where = f"a sphere of radius {r:g} m" if wall is None else f"a {wall.name} of radius {r:g} m at its floor"
+        raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in {where} "
+                             "(needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
+    limit = MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS
+    if wall is None:
+        lane, lane_given, by_theta = _lanes(theta, height, r, limit, shaped=not streamed)
+    else:
+        lane, lane_given, by_theta = _wall_lanes(wall, theta, height, limit, shaped=not streamed)
     if speed is not None and steer_torque is not None:
         raise ParameterError("give speed or steer_torque, not both (a torque picks the speeds)", "steer_torque")
     by_torque = steer_torque is not None
@@ -451,7 +474,44 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
     return TurnRequest(machine=t, g=g, lanes=lane, lanes_given=lane_given, by_theta=by_theta, values=value,
                        by_torque=by_torque, r=r, steer=steer, stability=stability, mu=_one_limit("mu", mu),
                        max_g=_one_limit("max_g", max_g), summary=summary,
-                       only=None if keep is None else tuple(keep))
+                       only=None if keep is None else tuple(keep), wall=wall)
+
+
+def _wall(surface, r, diameter, wall_angle, wall_height, profile):
+    """The drum, the cone or the profile the two-wheeler rides (None: the
+    globe), from the arena's keywords as typed; flat ground refused in one
+    line naming surface (its question is flat's; docs/two-wheeler.md sec. 12)."""
+    from deathsphere.physics.ground import Cone, Cylinder, Profile
+    from deathsphere.requests.arena import arena, names_a_wall
+
+    if not names_a_wall(surface, wall_angle, wall_height, profile):
+        return None
+    ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
+    if isinstance(ground, Sphere):
+        return None
+    if not isinstance(ground, (Cylinder, Cone, Profile)):
+        raise ParameterError(f"a two-wheeler rides the inside of the sphere, a cylinder, a cone or a profile, not "
+                             f"a {ground.name} (upright straight running on flat ground: flat)", "surface")
+    return ground
+
+
+def _wall_lanes(wall, theta, height, limit: int, shaped: bool):
+    """The rear contacts' heights on a drum or a cone (the lane, m) and as
+    given; theta refused (the globe's), a height above the wall's top (or a
+    cone's apex) refused in one line naming height."""
+    if theta is not None:
+        raise ParameterError(f"theta is the globe's polar angle: on a {wall.name} give height (the rear contact's "
+                             "height above the floor)", "theta")
+    if height is None:
+        raise ParameterError(f"give height (the rear contact's height above the {wall.name}'s floor)", "height",
+                             missing=True)
+    given = _values("height", height, limit, shaped=shaped)
+    top = wall.highest_lane
+    if np.any(given > top):
+        raise ParameterError(f"height must be at most {shown_number(top)} m on this {wall.name}, its highest lane "
+                             f"(the wall's top, or a cone's apex; got {shown_number(float(np.max(given)))} m)",
+                             "height")
+    return np.asarray(given, dtype=float), given, False
 
 
 def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
@@ -469,7 +529,7 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
     batch = request.batch() if whole else batch
     lanes, values, given = batch.lane, batch.value, batch.given
     by_theta, by_torque = request.by_theta, request.by_torque
-    p, globe = t.parameters(), Sphere(r)
+    p, globe = t.parameters(), request.ground
     kwargs = {"torque": values} if by_torque else {"speed": values}
     if request.stability:
         out = tw_stability.turns_with_stability(lanes, p, globe, request.g, head=t.head, **kwargs)
@@ -489,14 +549,19 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
 
     lean = pick("lean")
     th = lanes[req]
-    alpha = np.degrees(th) - 90.0 - np.degrees(lean)
+    on_wall = request.wall is not None
+    # the tilt from the inward horizontal, 90 deg - beta - the lean from the wall's normal (the globe's beta = 180 -
+    # theta): the machine's alpha
+    beta = np.degrees(request.wall.wall_angle(th)) if on_wall else 180.0 - np.degrees(th)
+    alpha = 90.0 - beta - np.degrees(lean)
     contact = pick("contact") == 1
     omega = pick("omega")
     with np.errstate(divide="ignore"):
         period = np.where(has, 2 * np.pi / np.abs(np.where(omega == 0, np.nan, omega)), np.nan)
     cols = {
         "input_row": req + 1 + batch.first, "machine": np.full(n, t.name, dtype=object),
-        "theta_deg": given[req] if by_theta else np.degrees(th), "alpha_deg": np.where(has, alpha, np.nan),
+        "theta_deg": given[req] if by_theta else np.full(n, np.nan) if on_wall else np.degrees(th),
+        "alpha_deg": np.where(has, alpha, np.nan),
         "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
         "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, request.g),
         "omega_rad_s": omega, "period_s": period,
@@ -510,7 +575,9 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
         "mu_required_front": np.where(np.isinf(pick("mu_required_front")), np.nan, pick("mu_required_front")),
         "friction_rear_per_mass_m_s2": pick("friction_rear"), "friction_front_per_mass_m_s2": pick("friction_front"),
         "lean_surface_deg": np.degrees(lean), "v_rear_m_s": pick("v_rear"), "v_front_m_s": pick("v_front"),
-        "theta_front_deg": np.degrees(pick("theta_front")), "steer": np.full(n, steer, dtype=object),
+        # the front contact's polar angle is the globe's (on a wall: empty)
+        "theta_front_deg": np.full(n, np.nan) if on_wall else np.degrees(pick("theta_front")),
+        "steer": np.full(n, steer, dtype=object),
     }
     # the physics' status stage, in ride's order (no_orbit, no_fit: the head, no_contact, slips, over_g)
     codes, why = steady.turn_status(has, cols["head_clearance_m"], contact, cols["mu_required_rear"],
@@ -538,6 +605,12 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
     # appended (docs/contract.md): what a disturbance does, and the lean by its two names, each saying from what
     appended = {"stability_kind": tw_stability.kind(ev), "lean_wall_deg": cols["lean_surface_deg"],
                 "lean_vertical_deg": cols["lean_deg"]}
+    if on_wall:
+        # the arena's, as a single-contact machine's table there appends them (docs/contract.md)
+        rho, _ = request.wall.contact(th)
+        appended |= {"surface": np.full(n, request.wall.name, dtype=object),
+                     "rho_contact_m": np.asarray(rho, dtype=float) + np.zeros(n),
+                     "wall_angle_deg": beta + np.zeros(n)}
     table = Table({c: cols[c] for c in TURN_COLUMNS} | _eig_cols(ev, k) | limits | appended)
     if whole and n == lanes.size and request.shape:   # one row per request: a grid keeps its shape
         table = Table(table.columns, shape=request.shape, axes=request.axes)
@@ -554,7 +627,7 @@ def _hands_free(request: TurnRequest, lanes) -> dict:
     from deathsphere.physics.two_wheeler import steady
 
     t = request.machine
-    out = tw_stability.turns_with_stability(lanes, t.parameters(), Sphere(request.r), request.g,
+    out = tw_stability.turns_with_stability(lanes, t.parameters(), request.ground, request.g,
                                             torque=np.zeros(lanes.size), head=t.head)
     codes, _ = steady.turn_status(np.isfinite(out["lean"]), out["head_clearance"], out["contact"] == 1,
                                   out["mu_required_rear"], out["mu_required_front"], out["load_g"], request.mu,
@@ -595,7 +668,8 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
             vals = (np.asarray(table[col], dtype=float) if values is None else values)[sel][mask]
             return float(fn(vals)) if vals.size else math.nan
 
-        theta = float(lanes_given[i]) if request.by_theta else math.degrees(lanes[i])
+        theta = (float(lanes_given[i]) if request.by_theta else math.nan if request.wall is not None
+                 else math.degrees(lanes[i]))
         rows["height_m"].append(request.r * (1 + math.cos(lanes[i])) if request.by_theta
                                 else float(lanes_given[i]))
         rows["theta_deg"].append(theta)
@@ -685,6 +759,9 @@ def two_wheeler_ride(machine, typed: Mapping) -> Table:
         if theta is not None or height is not None or diameter is not None or r is not R:
             raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
                                  "or diameter)", "flat")
+        for key in ("surface", "wall_angle", "wall_height"):
+            if given[key] is not None:
+                raise ParameterError(f"flat ground is the arena of flat: {key} is not for it", key)
         if steer_torque is not None:
             raise ParameterError("on flat ground upright straight running is hands-free at every speed: "
                                  "steer_torque is for the globe", "steer_torque")

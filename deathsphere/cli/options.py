@@ -301,6 +301,25 @@ def display_units(system: str | None, typed: dict):
     and a kind's quantities that were not typed (a head clearance) show in
     the one unit every value of that kind was typed in, if there is one.
     A unit that cannot be read is left to the API to refuse."""
+    given = []
+    for name, value in typed.items():
+        p = PARAMS.get(name)
+        if p is not None and value is not None and value != ():
+            given.append((name, p.kind, value if isinstance(value, tuple) else (value,)))
+    return _units_as_typed(system, given)
+
+
+def plan_display_units(system: str | None, typed: dict):
+    """The same for a show: ``typed`` the plan's dimensional values as
+    typed, ``{name: (kind, values)}`` (a number in the API's unit, a text
+    with its unit), a key typed by several riders being as an option typed
+    as a range: shown in its unit when every value was typed in the one
+    unit."""
+    return _units_as_typed(system, [(name, kind, tuple(values)) for name, (kind, values) in typed.items()])
+
+
+def _units_as_typed(system: str | None, given):
+    """``given``: (name, kind, texts) of each value typed."""
     from deathsphere.render.display_units import DisplayUnits
     from deathsphere.units import KINDS
 
@@ -311,15 +330,14 @@ def display_units(system: str | None, typed: dict):
         return DisplayUnits(kinds={kind: _display_unit(unit, kind) for kind, unit in SYSTEM_UNITS[system].items()},
                             crew=False)
     per_option, per_kind = {}, {}
-    for name, value in typed.items():
-        p = PARAMS.get(name)
-        if p is None or p.kind not in SHOWN_KINDS or value is None or value == ():
+    for name, kind, texts in given:
+        if kind not in SHOWN_KINDS:
             continue
-        found = {_typed_unit(text) for text in (value if isinstance(value, tuple) else (value,))}
-        found = {KINDS[p.kind] if u is None or u == KINDS[p.kind] else u.strip() for u in found}
-        per_kind.setdefault(p.kind, set()).update(found)
-        if len(found) == 1 and found != {KINDS[p.kind]}:
-            per_option[name] = (found.pop(), p.kind)
+        found = {_typed_unit(text) for text in texts}
+        found = {KINDS[kind] if u is None or u == KINDS[kind] else u.strip() for u in found}
+        per_kind.setdefault(kind, set()).update(found)
+        if len(found) == 1 and found != {KINDS[kind]}:
+            per_option[name] = (found.pop(), kind)
     try:
         return DisplayUnits(
             typed={name: _display_unit(unit, kind) for name, (unit, kind) in per_option.items()},

@@ -165,6 +165,8 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
       deathsphere ride --machine benchmark-bicycle --steer free \\
           --diameter 16ft --height 1 --speed 3:12:1 --mu 0.8 \\
           --max-g 3.5 --summary
+      deathsphere ride --machine stunt125-steer --surface cylinder \\
+          --diameter 32ft --height 2m --speed 60km/h
     """
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
@@ -181,9 +183,6 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
                                  param_hint="'--turn-radius'")
     if flat or steer is not None or steer_torque or (machine or "").lower() in TWO_WHEELER_NAMES or (
             machine_file is not None and is_two_wheeler_file(machine_file)):
-        if on_wall:
-            raise click.UsageError("a two-wheeler rides the globe only: --surface, --wall-angle and --wall-height "
-                                   "are the single-contact machine's")
         # a two-wheeler (docs/two-wheeler.md): the API refuses what it does not take
         which = machine if machine_file is None and machine is not None else machine_from_options(machine,
                                                                                                    machine_file)
@@ -192,9 +191,12 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
                          spin_inertia=spin_inertia, head_height=head_height)
         lists = {k: list(v) for k, v in (("theta", theta), ("height", height), ("speed", speed),
                                          ("steer_torque", steer_torque), ("alpha", alpha), ("v_top", v_top),
-                                         ("com_speed", com_speed), ("period", period), ("mu", mu)) if v}
+                                         ("com_speed", com_speed), ("period", period), ("mu", mu),
+                                         ("turn_radius", turn_radius)) if v}
+        arena = {k: v for k, v in (("surface", surface), ("wall_angle", wall_angle), ("wall_height", wall_height),
+                                   ("profile", profile)) if v is not None}
         given = dict(machine=which, steer=steer, summary=summary, stability=stability, only=only or None,
-                     vertical=vertical, **lists, **setup_of(r, diameter, g, max_g),
+                     vertical=vertical, **lists, **setup_of(r, diameter, g, max_g), **arena,
                      **{k: v for k, v in overrides.items() if v is not None})
         name = getattr(which, "name", which)
         if flat:
@@ -208,8 +210,9 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
         from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
 
         chunks = two_wheeler_ride_sweep(**given, jobs=jobs or 1, scheduler=scheduler)
-        title = (f"{name}: the rider's table on the globe, per lane (docs/two-wheeler.md sec. 10)" if summary
-                 else f"{name}: steady turns on the globe (docs/two-wheeler.md sec. 8)")
+        where = "the globe" if not on_wall else f"the {str(surface or 'sphere').strip().lower()}'s wall"
+        title = (f"{name}: the rider's table on {where}, per lane (docs/two-wheeler.md sec. 10)" if summary
+                 else f"{name}: steady turns on {where} (docs/two-wheeler.md sec. " + ("12)" if on_wall else "8)"))
         finish(_written(stream(chunks, fmt, label="ride", title=title,
                                view=_two_wheeler_view("turns_view", title, shown), output=output), output))
         return

@@ -24,7 +24,7 @@ from deathsphere.cli.base import (
     stderr_console,
     stdout_console,
 )
-from deathsphere.cli.options import display_units, output_options, single, units_option
+from deathsphere.cli.options import output_options, plan_display_units, single, units_option
 
 #: The tables the command writes (``--table``): the riders' lanes, every
 #: pair over the act, the falls (of --fail or --monte-carlo) and the
@@ -251,8 +251,8 @@ def show_command(plan, example, table, duration, phase, fails, monte_carlo, seed
         stderr_console().print(f"deathsphere: wrote {output} ({size / 1e6:.2f} MB)", soft_wrap=True)
         return
     tables = {"riders": result.riders, "pairs": result.pairs, "falls": falls, "summary": summary}
-    # the plan's own values are read as SI: only --units changes the view
-    shown_units = display_units(units, {})
+    # the plan's values as typed: a key typed with a unit comes back in it, as an option does
+    shown_units = plan_display_units(units, result.plan.typed)
     if fmt_out == "table" and table is None:
         console = stdout_console()
         shown = ["riders", "pairs"] + (["falls"] if fails else []) + (["summary"] if summary is not None else [])

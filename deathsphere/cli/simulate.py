@@ -130,8 +130,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     shows the summary).
 
     Off the globe (--surface cylinder, cone, plane or profile, docs/
-    surfaces.md): the paper's wheel (--alpha) or ball (--omega3 and
-    --branch, or --omega) inside, from the steady orbit on the lane
+    surfaces.md): the paper's wheel (--alpha, or --speed, --com-speed or
+    --omega with --branch) or ball (--omega3 and --branch, or --omega)
+    inside, from the steady orbit on the lane
     --height (flat ground: --turn-radius); the run also stops with
     hits_floor (the body's lowest point reaches the floor at the wall's
     foot) or over_the_top (the contact passes --wall-height), and --perturb

@@ -20,6 +20,7 @@ from deathsphere.render.terminal_table import (
     STABILITY_STYLE,
     Column,
     FitTable,
+    echo_number,
     first_rows,
     format_number,
     is_undefined,
@@ -112,26 +113,27 @@ def _on_another_surface(get: dict) -> bool:
 def _arena_text(get: dict, units: DisplayUnits = AS_TYPED) -> str:
     """The arena of a row: the globe's radius, or the surface by name."""
     if not _on_another_surface(get):
-        return globe_text(get, units)
+        return globe_text(get, units, number=echo_number)
     if is_undefined(get.get("r_m")):
         return str(get["surface"])
-    return f"{get['surface']} of radius {quantity_text(get['r_m'], 'm', units.unit('length', ('diameter',)))}"
+    radius = quantity_text(get["r_m"], "m", units.unit("length", ("diameter",)), number=echo_number)
+    return f"{get['surface']} of radius {radius}"
 
 
 def _lane_text(get: dict, units: DisplayUnits = AS_TYPED) -> str:
     """Where the row's lane is: θ on the globe; elsewhere the contact's
     height, distance from the axis and the wall's angle."""
     if not _on_another_surface(get):
-        return f"θ = {format_number(get['theta_deg'])}°"
-    height = quantity_text(get["height_m"], "m", units.unit("length", ("height",)))
+        return f"θ = {echo_number(get['theta_deg'])}°"
+    height = quantity_text(get["height_m"], "m", units.unit("length", ("height",)), number=echo_number)
     return (f"h = {height}, ρ = {format_number(get['rho_contact_m'])} m, "
-            f"β = {format_number(get['wall_angle_deg'])}°")
+            f"β = {echo_number(get['wall_angle_deg'])}°")
 
 
 def _setup_line(get: dict, units: DisplayUnits = AS_TYPED) -> str:
-    a = quantity_text(get["a_m"], "m", units.unit("length", ("a",)))
+    a = quantity_text(get["a_m"], "m", units.unit("length", ("a",)), number=echo_number)
     return (f"a = {a}, {_arena_text(get, units)}, "
-            f"k = {format_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
+            f"k = {echo_number(get['k'])}, g = {format_number(get['g_m_s2'], 6)} m/s²")
 
 
 def quantity_table(title: str, get: dict, rows, ok_text: str, notes=()) -> FitTable:
@@ -156,7 +158,7 @@ def quantity_table(title: str, get: dict, rows, ok_text: str, notes=()) -> FitTa
 def spin_needed_line(get: dict) -> str:
     """Sphere: the least |ω₃| for an orbit and for contact, as a sentence."""
     real, contact = get["omega3_min_real_rad_s"], get["omega3_min_contact_rad_s"]
-    where = f"θ = {format_number(get['theta_deg'])}°"
+    where = f"θ = {echo_number(get['theta_deg'])}°"
     contact_text = ("no spin keeps contact" if is_undefined(contact)
                     else f"≥ {format_number(contact)} rad/s for contact (eqs. 58/59)")
     return f"needs |ω₃| ≥ {format_number(real)} rad/s for an orbit (eq. 56), {contact_text} at {where}"
@@ -182,7 +184,7 @@ def one_orbit_table(table: Table, row: int = 0, units: DisplayUnits = AS_TYPED) 
     get = row_record(table, row)
     angles = _lane_text(get, units)
     if not is_undefined(get["alpha_deg"]):
-        angles += f", α = {format_number(get['alpha_deg'])}°"
+        angles += f", α = {echo_number(get['alpha_deg'])}°"
     specs = []
     for col, label, unit, source in ORBIT_FIELDS:
         override = BODY_LABELS.get((get["body"], col), (label, source))
@@ -306,30 +308,41 @@ def many_orbits_table(table: Table, title: str | None = None, total_rows: int | 
 
 
 #: Column-name endings that are units, longest first.
-UNIT_SUFFIXES = (("_m_s2", "m/s²"), ("_rad_s", "rad/s"), ("_m_s", "m/s"), ("_1_s", "1/s"), ("_deg", "deg"),
-                 ("_s", "s"), ("_m", "m"), ("_g", "g"))
+UNIT_SUFFIXES = (("_n_m_s_rad", "N·m·s/rad"), ("_n_m_rad", "N·m/rad"), ("_kg_m2", "kg·m²"), ("_n_m", "N·m"),
+                 ("_m_s2", "m/s²"), ("_rad_s", "rad/s"), ("_deg_s", "deg/s"), ("_km_h", "km/h"), ("_m_s", "m/s"),
+                 ("_1_s", "1/s"), ("_deg", "deg"), ("_pct", "%"), ("_kg", "kg"), ("_s", "s"), ("_m", "m"),
+                 ("_g", "g"))
 #: Columns of any table that say which row it is: never left out.
 GENERIC_KEYS = frozenset({"input_row", "curve", "theta_deg", "phi_deg", "interval", "status", "found"})
 
 
-#: Column-name endings of the kinds a view shows in another unit beside SI.
-SUFFIX_KINDS = (("_m_s2", None), ("_rad_s", "rate"), ("_m_s", "speed"), ("_deg", "angle"), ("_m", "length"),
-                ("_kg", "mass"))
 #: Columns that hold an option as typed (theta_deg holds --theta).
 TYPED_COLUMNS = {p.column: (name,) for name, p in PARAMS.items() if p.column}
 
 
+#: Columns whose name does not read as words once its unit is off: the
+#: words and the unit a view shows instead.
+NAMED_COLUMNS = {"max_g": ("max load", "g"), "steer": ("steer mode", ""), "k": ("inertia factor k", "")}
+
+
 def _split_name(name: str) -> tuple[str, str]:
     """``v_min_m_s`` -> (``v min``, ``m/s``): the words and the unit."""
+    if name in NAMED_COLUMNS:
+        return NAMED_COLUMNS[name]
     for suffix, unit in UNIT_SUFFIXES:
         if name.endswith(suffix) and len(name) > len(suffix):
             return _words(name[:-len(suffix)]), unit
     return _words(name), ""
 
 
+#: The kind of the quantities in each SI unit a view shows in another unit.
+UNIT_KINDS = {"m": "length", "m/s": "speed", "rad/s": "rate", "deg": "angle", "kg": "mass"}
+
+
 def quantity_kind(name: str) -> str | None:
-    """The kind of quantity a column holds, read off its name's unit."""
-    return next((kind for suffix, kind in SUFFIX_KINDS if name.endswith(suffix) and len(name) > len(suffix)), None)
+    """The kind of quantity a column holds, read off its name's unit (the
+    whole unit: ``steer_torque_n_m`` is in N·m, not a length)."""
+    return UNIT_KINDS.get(_split_name(name)[1])
 
 
 def _words(stem: str) -> str:
@@ -360,11 +373,12 @@ def generic_table(table: Table, title: str | None = None, total_rows: int | None
     first column and any of GENERIC_KEYS.  A length, speed, rate or angle
     shows again in the unit :class:`DisplayUnits` gives, beside SI."""
     if len(table) == 1 and not (total_rows or 0) > 1:
+        # one result: a quantity per line, its name in words and its unit apart (as one orbit's view)
         get = row_record(table)
-        specs = [replace(generic_spec(n), header=n) for n in table.names]
-        rows = quantity_rows(get, specs, units, number=_plain_cell, digits=6)
+        rows = quantity_rows(get, [generic_spec(n) for n in table.names], units, number=_plain_cell, digits=6)
         return FitTable([Column("quantity", "quantity", [r[0] for r in rows], "left"),
-                         Column("value", "value", [r[1] for r in rows])], title=title)
+                         Column("value", "value", [r[1] for r in rows]),
+                         Column("unit", "unit", [escape(r[2]) for r in rows], "left")], title=title)
     head = first_rows(table, MAX_TERMINAL_ROWS)
     same = [n for n in table.names if _constant(table.columns[n])]
     legend = status_legend(head) if "status" in table and "reason" in table else []
@@ -375,10 +389,18 @@ def generic_table(table: Table, title: str | None = None, total_rows: int | None
     specs = [generic_spec(n, drops.index(n) if n in drops else None,
                           "left" if head.columns[n].dtype == object else "right") for n in names]
     first = row_record(head) if same else {}
-    constants = ", ".join(f"{n} = {_plain_cell(first[n])}" for n in same if first[n] != "")
+    constants = ", ".join(_constant_text(n, first[n]) for n in same if first[n] != "")
     notes = [f"[dim]{constants}[/dim]"] if constants else []
     return build_table(table, specs, units=units, title=title, total_rows=total_rows, notes=[*notes, *legend],
                        number=_plain_cell)
+
+
+def _constant_text(name: str, value) -> str:
+    """A column equal in every row, for the line under the table: its name
+    in words and its unit (``a = 0.3 m``, ``max load = 5 g``)."""
+    words, unit = _split_name(name)
+    text = _plain_cell(value)
+    return f"{words} = {text} {escape(unit)}" if unit and text not in ("—", "") else f"{words} = {text}"
 
 
 def _constant(values: np.ndarray) -> bool:
@@ -475,7 +497,7 @@ def vertical_view(table: Table, total_rows: int | None = None, units: DisplayUni
     if len(table) == 1 and not (total_rows or 0) > 1:
         get = row_record(table)
         rows = quantity_rows(get, VERTICAL_FIELDS, units)
-        title = (f"vertical orbit, wheel {get['side']}, θ = {format_number(get['theta_deg'])}°\n"
+        title = (f"vertical orbit, wheel {get['side']}, θ = {echo_number(get['theta_deg'])}°\n"
                  f"{_setup_line(get, units)}")
         return quantity_table(title, get, rows, "keeps contact all round with enough friction")
     return build_table(table, VERTICAL_COLUMNS, units=units, title="Vertical orbits (eqs. 27-28b)",

@@ -12,6 +12,7 @@ from deathsphere.render.terminal_table import (
     STABILITY_STYLE,
     Column,
     FitTable,
+    echo_number,
     format_number,
 )
 from deathsphere.table import Table
@@ -101,11 +102,11 @@ def stability_view(table: Table) -> Group:
     get = table.records()
     theta = get[0]["theta_deg"]
     # off the globe an orbit has a lane's height, not a polar angle
-    where = (f"θ = {format_number(theta)}°" if theta is not None and theta == theta else
-             f"on the {get[0].get('surface')}, height {format_number(get[0].get('height_m'))} m")
+    where = (f"θ = {echo_number(theta)}°" if theta is not None and theta == theta else
+             f"on the {get[0].get('surface')}, height {echo_number(get[0].get('height_m'))} m")
     head = (f"[italic]stability of a wheel {get[0]['side']}, {where}, "
-            f"α = {format_number(get[0]['alpha_deg'])}° (a = {format_number(get[0]['a_m'])} m, "
-            f"r = {format_number(get[0]['r_m'])} m, k = {format_number(get[0]['k'])})[/italic]")
+            f"α = {echo_number(get[0]['alpha_deg'])}° (a = {echo_number(get[0]['a_m'])} m, "
+            f"r = {echo_number(get[0]['r_m'])} m, k = {echo_number(get[0]['k'])})[/italic]")
     exact_rows = [row for row in get if row["source"] == "exact"]
     exact = FitTable([Column("quantity", "quantity", [escape(r["quantity"]) for r in exact_rows], "left"),
                       Column("value", "value", [_cell(r["exact"], 5) for r in exact_rows]),

@@ -20,6 +20,7 @@ from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
     STABILITY_STYLE,
     FitTable,
+    echo_number,
     first_rows,
     format_number,
     is_undefined,
@@ -135,7 +136,7 @@ WHY = (("slips", "slips"), ("over_g", "over g"), ("head_hits", "head"), ("no_con
 
 def _setup_line(get: dict, mu: bool = True, units: DisplayUnits = AS_TYPED) -> str:
     friction = f"μ available {_limit(get['mu_available'])}, " if mu else ""
-    return (f"{globe_text(get, units)}, g = {format_number(get['g_m_s2'], 6)} m/s², "
+    return (f"{globe_text(get, units, number=echo_number)}, g = {format_number(get['g_m_s2'], 6)} m/s², "
             f"{friction}max load {_limit(get['max_g'])} g")
 
 
@@ -166,11 +167,11 @@ def one_orbit_view(table: Table, units: DisplayUnits = AS_TYPED) -> FitTable:
     """Every quantity of one orbit, one per line, with its unit and equation."""
     get = row_record(table)
     rows = quantity_rows(get, ORBIT_FIELDS, units)
-    where = f"θ = {format_number(get['theta_deg'])}°, α = {format_number(get['alpha_deg'])}°"
+    where = f"θ = {echo_number(get['theta_deg'])}°, α = {echo_number(get['alpha_deg'])}°"
     if get.get("surface") not in (None, "sphere"):
         # a drum's or a cone's lane has no theta: the wall's angle says where
-        where = (f"on the {get['surface']}, wall at {format_number(get['wall_angle_deg'])}°, "
-                 f"α = {format_number(get['alpha_deg'])}°")
+        where = (f"on the {get['surface']}, wall at {echo_number(get['wall_angle_deg'])}°, "
+                 f"α = {echo_number(get['alpha_deg'])}°")
     title = f"{get['machine']}, {where}\n{_setup_line(get, units=units)}"
     return quantity_table(title, {**get, **_stability_rows(get)}, rows, OK_REASON)
 
@@ -292,7 +293,7 @@ LOOP_COLUMNS = (
 
 
 def _loop_title(get: dict, units: DisplayUnits) -> str:
-    return (f"vertical loop of {get['machine']}, θ = {format_number(get['theta_deg'])}°\n"
+    return (f"vertical loop of {get['machine']}, θ = {echo_number(get['theta_deg'])}°\n"
             f"{_setup_line(get, units=units)}")
 
 

@@ -8,8 +8,11 @@ the drift time.  A fall: where the rider leaves the wall and lands, and
 whom he falls into (a hit in red).  Every view fits the console by
 leaving out whole columns, never by cutting a number (:class:`FitTable`),
 and is its column specs (:mod:`~deathsphere.render.view_builder`).  The
-speeds show in km/h beside m/s (or in the unit ``--units`` asks for);
-plan files' own units are read as SI here.
+speeds show in km/h beside m/s, and a quantity the plan typed in a unit
+of its own (``height = "6ft"``, ``min_clearance = "0.5ft"``, ``speed =
+"30mph"``) in that unit beside SI, as an option typed with a unit is in
+the other commands' views (or in the unit ``--units`` asks for; the
+record of them is the command line's, from the plan's values as typed).
 """
 
 from __future__ import annotations
@@ -37,6 +40,13 @@ from deathsphere.table import Table
 VERDICT_STYLE = {"clear": "green", "conflict": "red", "collision": "bold red"}
 #: A fall's outcome in its colour.
 OUTCOME_STYLE = {"rides_on": "green", "swings": "yellow", "falls": "red"}
+
+
+def _outcome(value) -> str:
+    """A fall's outcome in its colour, in words (``rides on``, the CSV's ``rides_on``)."""
+    text = str(value)
+    style = OUTCOME_STYLE.get(text, "magenta")
+    return f"[{style}]{escape(text.replace('_', ' '))}[/{style}]"
 
 
 def _styled(value: str, styles: dict) -> str:
@@ -67,8 +77,16 @@ def speed_cell(m_s, unit: DisplayUnit | None = KM_H) -> str:
     return f"{unit.of(m_s):.1f} ({float(m_s):.2f})"
 
 
+#: The plan's keys a rider's speed cell shows: a horizontal rider's
+#: contact (or centre of mass's) speed, a looper's speed at the top.
+SPEED_KEYS = ("speed", "com_speed", "v_top")
+#: The plan's key a clearance is checked against: a least clearance is
+#: shown in the unit the crew's rule was typed in.
+RULE_KEYS = ("min_clearance",)
+
+
 def _speed_unit(units: DisplayUnits) -> DisplayUnit | None:
-    unit = units.unit("speed", (), KM_H)
+    unit = units.unit("speed", SPEED_KEYS, KM_H)
     return None if unit is None or unit.name == "m/s" else unit
 
 
@@ -109,6 +127,24 @@ def _clearance_spec(key: str, header: str, decimals: int, **more) -> ColumnSpec:
     return ColumnSpec(key, header, "m", format=lambda v: _fixed(v, decimals), kind="length", **more)
 
 
+def _heights(result) -> dict:
+    """Each rider's contact height above the floor [m] as planned, by name
+    (a horizontal lane's: the plan's, or from its theta on the globe)."""
+    plan = getattr(result, "plan", None)
+    return {rider.name: rider.contact_height for rider in getattr(plan, "riders", ())}
+
+
+def _height_spec(result) -> ColumnSpec:
+    """The lane's height above the floor, in the unit the plan typed the
+    heights in beside m (the two go together on a narrow console, after
+    the friction needed: at 80 columns the riders' own figures fill the
+    line); — for a looper (his height changes round the loop)."""
+    heights = _heights(result)
+    return ColumnSpec("height", "height", "m", digits=4, kind="length", params=("height",), drop=7,
+                      when=lambda head: bool(heights),
+                      value=lambda get: heights.get(get.get("name"), math.nan))
+
+
 def _digits(key: str, header: str, unit: str = "", digits: int = 3, **more) -> ColumnSpec:
     return ColumnSpec(key, header, unit, digits=digits, value=lambda get: get.get(key), **more)
 
@@ -127,6 +163,7 @@ def riders_view(table: Table, total_rows: int | None = None, result=None,
                    else "horiz."),
         ColumnSpec("status", "status", justify="left", format=lambda v: status_text(str(v)),
                    value=lambda get: get.get("status")),
+        _height_spec(result),
         _speed_spec("speed", "speed", units, value=_lane_speed),
         ColumnSpec("margin", "margin\n%", format=lambda ends: _margin(*ends),
                    value=lambda get: (get.get("margin_low_pct"), get.get("margin_high_pct"))),
@@ -134,7 +171,8 @@ def riders_view(table: Table, total_rows: int | None = None, result=None,
         _digits("load_g", "load", "g"),
         _clearance_spec("head_clearance_m", "head\nclear", 2, value=lambda get: get.get("head_clearance_m")),
         _digits("mu_required", "μ\nneeded", digits=2, drop=6),
-        _digits("theta_deg", "θ°", drop=4),
+        # to a tenth of a degree, as the pairs' θ/φ (three digits read 115.2 as 115 but 82.8 as 82.8)
+        ColumnSpec("theta_deg", "θ°", format=_angle, drop=4, value=lambda get: get.get("theta_deg")),
         _digits("alpha_deg", "α°", drop=3),
         _digits("period_s", "lap", "s", drop=2),
         _speed_spec("v_bottom", "bottom", units, drop=5, when=lambda head: any(vertical),
@@ -207,7 +245,7 @@ PAIRS_VIEW = (
                value=lambda get: f"{escape(str(get.get('rider_a')))} – {escape(str(get.get('rider_b')))}"),
     ColumnSpec("verdict", "verdict", justify="left", format=lambda v: _styled(str(v), VERDICT_STYLE),
                value=lambda get: get.get("verdict")),
-    ColumnSpec("min_clearance_m", "least\nclear", "m", format=_pair_clearance, kind="length",
+    ColumnSpec("min_clearance_m", "least\nclear", "m", format=_pair_clearance, kind="length", params=RULE_KEYS,
                value=lambda get: (get.get("min_clearance_m"), str(get.get("verdict")))),
     ColumnSpec("t_s", "at t", "s", value=lambda get: get.get("t_s")),
     ColumnSpec("drift_time_s", "drift\ntime s", format=str,
@@ -225,20 +263,30 @@ def pairs_view(table: Table, total_rows: int | None = None, result=None,
     each rider's contact was, the verdict (conflict and collision in red)
     and the drift time."""
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    notes = [f"[dim]{_rule(result)}least clear: the envelopes' distance (negative: minus the overlap's depth); drift time: "
+    notes = [f"[dim]{_rule(result, units)}least clear: the envelopes' distance (negative: minus the overlap's depth); drift time: "
              "how long the pair stays clear with one rider 1 % fast or slow (the worse)[/dim]"]
     notes += _pair_notes(head, result)
     return build_table(table, PAIRS_VIEW, units=units, title=_title("Pairs", result), total_rows=total_rows,
                        notes=notes)
 
 
-def _rule(result) -> str:
+def _rule(result, units: DisplayUnits = AS_TYPED) -> str:
+    """The plan's rule, in the unit it was typed in beside m: ``conflict:
+    closer than 0.152 m (0.5 ft); ``."""
     plan = getattr(result, "plan", None)
     globe = getattr(plan, "globe", None)
     value = getattr(globe, "min_clearance", None) if globe is not None else None
     if value is None:
         return ""
-    return f"conflict: closer than {format_number(float(value), 3)} m; "
+    return f"conflict: closer than {_length_text(float(value), units.unit('length', RULE_KEYS), 3)}; "
+
+
+def _length_text(value: float, unit: DisplayUnit | None, digits: int) -> str:
+    """A length in m, and in ``unit`` in brackets where it is another: ``0.152 m (0.5 ft)``."""
+    text = f"{format_number(value, digits)} m"
+    if unit is None or unit.name == "m" or is_undefined(value):
+        return text
+    return f"{text} ({format_number(unit.of(value), digits)} {unit.name})"
 
 
 def _pair_notes(head: Table, result) -> list[str]:
@@ -278,27 +326,35 @@ def _window_text(window) -> str:
     return ", ".join(f"{lo:.0f}°–{hi:.0f}°" for lo, hi in spans)
 
 
-def _fall_line(get: dict, unit: DisplayUnit | None = KM_H) -> str:
+def _fall_line(get: dict, unit: DisplayUnit | None = KM_H, height: DisplayUnit | None = None) -> str:
     """One fall in words (plain text: it is the view's title): who, when,
     the outcome, where he leaves the wall and lands, how long and how hard."""
     who = (f"{get['rider']} at t = {format_number(get['t_fail_s'], 4)} s drops to "
            f"{100 * float(get['speed_fraction']):.0f} % of the speed: {str(get['outcome']).replace('_', ' ')}")
     if get["outcome"] == "swings" and not is_undefined(get.get("swing_height_m")):
-        return f"{who} on the wall, up to {get['swing_height_m']:.2f} m above the floor"
+        return f"{who} on the wall, up to {_height_text(float(get['swing_height_m']), height)} above the floor"
     if get["outcome"] != "falls":
         return who
     return (f"{who}; leaves the wall at t = {format_number(get['t_contact_lost_s'], 4)} s "
-            f"({_place(get, 'lost')}), lands at t = {format_number(get['t_land_s'], 4)} s ({_place(get, 'land')}) "
+            f"({_place(get, 'lost', height)}), lands at t = {format_number(get['t_land_s'], 4)} s "
+            f"({_place(get, 'land', height)}) "
             f"after {format_number(get['fall_time_s'], 3)} s at {speed_cell(get['impact_speed_m_s'], unit)} "
             f"{_speed_words(unit)}")
 
 
-def _place(get: dict, end: str) -> str:
+def _height_text(metres: float, unit: DisplayUnit | None) -> str:
+    """A height to the cm, in ``unit`` too where it is another: ``0.91 m (3.00 ft)``."""
+    beside = "" if unit is None or unit.name == "m" else f" ({unit.of(metres):.2f} {unit.name})"
+    return f"{metres:.2f} m{beside}"
+
+
+def _place(get: dict, end: str, height: DisplayUnit | None = None) -> str:
     """Where a fall leaves the wall or lands: θ and φ in the globe; on a
-    drum or a cone, where θ is not defined, the height above the floor and φ."""
+    drum or a cone, where θ is not defined, the height above the floor (in
+    the unit the plan typed the heights in beside m) and φ."""
     phi = f"φ {_angle(get[f'phi_{end}_deg'], wrap=True)}°"
     if is_undefined(get[f"theta_{end}_deg"]) and not is_undefined(get.get(f"height_{end}_m")):
-        return f"{float(get[f'height_{end}_m']):.2f} m up, {phi}"
+        return f"{_height_text(float(get[f'height_{end}_m']), height)} up, {phi}"
     return f"θ {_angle(get[f'theta_{end}_deg'])}°, {phi}"
 
 
@@ -335,6 +391,7 @@ def _text(key: str, header: str, blank: str = "", **more) -> ColumnSpec:
 
 def _clearance(decimals: int, header: str) -> ColumnSpec:
     return ColumnSpec("min_clearance_m", header, "m", format=lambda v: _fixed(v, decimals), kind="length",
+                      params=RULE_KEYS,
                       value=lambda get: get.get("min_clearance_m"))
 
 
@@ -364,7 +421,8 @@ def falls_view(table: Table, total_rows: int | None = None, result=None,
     if len(firsts) > FALLS_AS_BLOCKS:
         return _falls_list(table, total_rows, units, _min_clearance(result))
     unit = _speed_unit(units)
-    lines = [_fall_line(row_record(head, i), unit) for i in firsts.values()]
+    height = units.unit("length", ("height",))
+    lines = [_fall_line(row_record(head, i), unit, height) for i in firsts.values()]
     notes = ["[dim]least clear: between the falling rider (a ball of half his width about his centre of "
              "mass) and the other's envelope, during the fall; below zero he falls into him[/dim]"]
     return build_table(table, _fall_view(_min_clearance(result)), units=units, title="\n".join(lines), total_rows=total_rows, notes=notes)
@@ -375,12 +433,11 @@ def _falls_list(table: Table, total_rows, units: DisplayUnits, rule: float = 0.0
         _text("rider", "rider"),
         ColumnSpec("t_fail_s", "fails\nat t s", drop=2, value=lambda get: get.get("t_fail_s")),
         ColumnSpec("speed_fraction", "speed\nleft", digits=2, value=lambda get: get.get("speed_fraction")),
-        ColumnSpec("outcome", "outcome", justify="left", format=lambda v: _styled(str(v), OUTCOME_STYLE),
-                   value=lambda get: get.get("outcome")),
+        ColumnSpec("outcome", "outcome", justify="left", format=_outcome, value=lambda get: get.get("outcome")),
         _text("victim", "other"),
         ColumnSpec("hit", "", justify="left", format=str,
                    value=lambda get: _hit_cell(get.get("hit"), get.get("min_clearance_m"), rule=rule)),
-        _clearance(3, "least\nclear m"),
+        _clearance(3, "least\nclear"),
         _speed_spec("impact_speed_m_s", "impact", units, value=lambda get: get.get("impact_speed_m_s")),
         ColumnSpec("fall_time_s", "fall", "s", digits=3, drop=1, value=lambda get: get.get("fall_time_s")),
     )

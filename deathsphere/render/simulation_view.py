@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-from rich import box
-from rich.table import Table as RichTable
+from rich.markup import escape
 
 from deathsphere.render.display_units import AS_TYPED, DisplayUnits
-from deathsphere.render.terminal_table import format_number, is_undefined, row_record
+from deathsphere.render.terminal_table import Column, FitTable, echo_number, is_undefined, row_record
 from deathsphere.render.view_builder import ColumnSpec, globe_text, quantity_rows, quantity_text
 from deathsphere.table import Table
 
@@ -38,35 +37,34 @@ def _typed_line(get: dict, units: DisplayUnits) -> str:
     if speed is not None and not is_undefined(get.get("speed_m_s")):
         parts.append(f"v_cm = {quantity_text(get['speed_m_s'], 'm/s', speed)}")
     if (units.unit("length", ("r", "diameter")) is not None) and not is_undefined(get.get("r_m")):
-        parts.append(globe_text(get, units))
+        parts.append(globe_text(get, units, number=echo_number))
     return ", ".join(parts)
 
 
-def simulation_view(summary: Table, units: DisplayUnits = AS_TYPED):
+def simulation_view(summary: Table, units: DisplayUnits = AS_TYPED) -> FitTable:
     """The summary of one simulated body (the first row if several); the
     head clearance, the orbit's speed and the globe also in the unit
-    ``units`` gives."""
+    ``units`` gives.  The title and the reason wrap at the console's
+    width, not the table's."""
     get = row_record(summary)
-    # off the globe the lane is its height (flat ground: its turn radius, r_m)
-    lane = (f"θ = {format_number(get['theta_deg'])}°" if "surface" not in get
-            else f"on the {get['surface']}, turn radius {format_number(get['r_m'])} m" if get["surface"] == "plane"
-            else f"on the {get['surface']}, height {format_number(get['height_m'])} m")
+    # off the globe the lane is its height (flat ground: its turn radius, r_m); inputs echoed as typed
+    lane = (f"θ = {echo_number(get['theta_deg'])}°" if "surface" not in get
+            else f"on the {get['surface']}, turn radius {echo_number(get['r_m'])} m" if get["surface"] == "plane"
+            else f"on the {get['surface']}, height "
+                 f"{quantity_text(get['height_m'], 'm', units.unit('length', ('height',)), number=echo_number)}")
     what = (f"{get['body']} {get['side']}, {get['orbit']} orbit, {lane}"
-            + (f", α = {format_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
-            + (f", kick {format_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
+            + (f", α = {echo_number(get['alpha_deg'])}°" if not is_undefined(get.get("alpha_deg")) else "")
+            + (f", kick {echo_number(get['perturb_deg'])} deg" if get.get("perturb_deg") else ""))
     typed = _typed_line(get, units)
-    out = RichTable(title=f"simulation: {what}\n{typed + chr(10) if typed else ''}solve_ivp {get['method']}, "
-                          f"rtol {get['rtol']:g}, atol {get['atol']:g}, {get['frame']} frame",
-                    box=box.SIMPLE_HEAVY, title_justify="left")
-    for head in ("quantity", "value", "unit"):
-        out.add_column(head, justify="right" if head == "value" else "left", no_wrap=True)
+    title = (f"simulation: {what}\n{typed + chr(10) if typed else ''}solve_ivp {get['method']}, "
+             f"rtol {get['rtol']:g}, atol {get['atol']:g}, {get['frame']} frame")
     specs = [ColumnSpec(col, label, unit, kind="length" if unit == "m" else None) for col, label, unit in
              SIMULATION_FIELDS if col in get and not is_undefined(get[col])]
-    for label, value, unit, _ in quantity_rows(get, specs, units, digits=4):
-        out.add_row(label, value, unit)
+    rows = [(escape(label), value, unit) for label, value, unit, _ in quantity_rows(get, specs, units, digits=4)]
     status = get["status"]
     style = {"completed": "green", "contact_lost": "red", "slips": "yellow"}.get(status, "magenta")
-    out.add_row("status", f"[{style}]{status}[/{style}]", "")
-    out.caption = f"{status}: {get['reason']}" if get.get("reason") else None
-    out.caption_justify = "left"
-    return out
+    rows.append(("status", f"[{style}]{escape(status)}[/{style}]", ""))
+    columns = [Column(head, head, [row[k] for row in rows], "right" if head == "value" else "left")
+               for k, head in enumerate(("quantity", "value", "unit"))]
+    notes = [escape(f"{status}: {get['reason']}")] if get.get("reason") else []
+    return FitTable(columns, title=title, notes=notes)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from decimal import Decimal
 
 import numpy as np
 from rich import box
@@ -27,7 +28,26 @@ def format_number(value, digits: int = 4) -> str:
         return str(value)
     if isinstance(value, float) and math.isinf(value):
         return "∞" if value > 0 else "-∞"
+    if value == 0:      # a negative zero (a force's sign at rest) reads 0, not -0
+        return "0"
     return f"{value:.{digits}g}"
+
+
+#: The most significant digits an input is echoed with as written.
+ECHO_DIGITS = 7
+
+
+def echo_number(value, digits: int = 4) -> str:
+    """A value a title echoes (an input such as θ): as written when its
+    shortest text has at most :data:`ECHO_DIGITS` significant digits
+    (``--theta 123.456`` reads 123.456, not 123.5), else ``digits`` of them
+    as :func:`format_number` gives (a value the command computed, such as
+    the tilt of a speed, or a unit's conversion: 2.0944rad is 120.0003)."""
+    if isinstance(value, (float, np.floating)) and math.isfinite(value) and value != 0:
+        text = repr(float(value))
+        if len(Decimal(text).normalize().as_tuple().digits) <= ECHO_DIGITS:
+            return text[:-2] if text.endswith(".0") else text
+    return format_number(value, digits)
 
 
 STATUS_STYLE = {"ok": "green", "slips": "yellow", "invalid": "red"}
@@ -124,8 +144,10 @@ class FitTable:
 
 
 def left_out_line(keys, width: int) -> str:
-    """The line under a table naming the columns a narrow console left out."""
-    return (f"[dim]left out at {width} columns: {', '.join(keys)} "
+    """The line under a table naming the columns a narrow console left out
+    (a column's twin in another unit as ``height_m in ft``)."""
+    named = ", ".join(key.replace(":", " in ", 1) for key in keys)
+    return (f"[dim]left out at {width} columns: {named} "
             f"(--format csv or a wider terminal shows them)[/dim]")
 
 

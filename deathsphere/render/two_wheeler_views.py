@@ -14,6 +14,7 @@ from deathsphere.render.ride_views import _limit, _span, _spans, _stability_cell
 from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
     FitTable,
+    echo_number,
     first_rows,
     format_number,
     is_undefined,
@@ -99,7 +100,7 @@ def turns_view(table: Table, total_rows: int | None = None, title: str | None = 
     if "speeds_tried" in table:
         return turn_summary_view(table, total_rows, title, units)
     first = row_record(table)
-    setup = (f"{escape(str(first['machine']))}: {globe_text(first, units)}, steer {first['steer']}"
+    setup = (f"{escape(str(first['machine']))}: {globe_text(first, units, number=echo_number)}, steer {first['steer']}"
              f"{_limits_text(first)}; lean from the wall's normal at the rear contact, + to the rider's right (the "
              "floor's side)")
     return build_table(table, TURN_VIEW, units=units, title=title, total_rows=total_rows, setup=setup,

@@ -41,8 +41,15 @@ def _speed(v):
 
 def theta_grid(step_deg: float) -> np.ndarray:
     """The theta grid [deg] of the boundary data: multiples of ``step_deg``
-    strictly inside (0, 180), where every boundary is defined."""
-    return np.arange(step_deg, 180.0 - 0.5 * step_deg, step_deg)
+    strictly inside (0, 180), where every boundary is defined; each the
+    float nearest the decimal multiple of the step as written (``--step
+    0.1``: 0.3, not the 0.30000000000000004 of 3 x 0.1), as a range's values
+    are (grid.py: rounded to the step's decimals)."""
+    theta = np.arange(1.0, math.ceil(180.0 / step_deg - 0.5)) * step_deg
+    text = repr(float(step_deg))
+    if "e" not in text and "." in text:
+        theta = np.round(theta, len(text.split(".")[1]))
+    return theta[theta < 180.0 - 0.5 * step_deg]
 
 
 #: theta values per call of the stability boundary (a progress tick each).

@@ -166,6 +166,16 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     return Table({name: columns[name] for name in COLUMNS})
 
 
+def phi_degrees(points: int) -> np.ndarray:
+    """The azimuths of :func:`~deathsphere.physics.vertical_orbit.phi_grid`
+    in degrees as the table writes them: k x 360 / (points - 1), each the
+    float nearest that fraction (``--points 13``: 0, 30, ..., 120, not the
+    119.99999999999999 of the radians' grid turned back into degrees); the
+    radians the physics is evaluated at are within a rounding of them."""
+    k = np.arange(int(points), dtype=float)
+    return k * 360.0 / (int(points) - 1) if points > 1 else k
+
+
 def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = None) -> Table:
     """The orbit point by point: ``points`` azimuths phi from the top (0 deg)
     round to 360 deg for every valid request (rows grouped by request, in
@@ -196,7 +206,7 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
             cols[col][:m] = np.asarray(res[key]).reshape(-1)
         status[:m] = np.asarray(res["status"]).reshape(-1)
         reason[:m] = REASON_TEXT[np.asarray(res["reason"]).reshape(-1)]
-        phi_col[:m] = np.tile(np.rad2deg(phi), rows.size)
+        phi_col[:m] = np.tile(phi_degrees(points)[start:stop], rows.size)
     order = np.argsort(source, kind="stable")
     columns = {
         "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],

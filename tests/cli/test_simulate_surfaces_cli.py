@@ -46,9 +46,25 @@ def test_a_machine_on_the_drum_appends_the_machines_columns_and_the_walls(run):
     assert summary["surface"] == "cylinder" and summary["body"] == "machine" and summary["theta_deg"] == ""
 
 
+@pytest.mark.parametrize("held", [("--speed", "30mph"), ("--com-speed", "12"), ("--omega", "2.5")])
+def test_a_wheel_on_the_drum_given_its_speed_or_rate_starts_on_the_tilt_orbit_finds(run, held):
+    res = run("simulate", *DRUM, *held, "--periods", "0.05", "--summary-only", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    (summary,) = rows(res.stdout)
+    keyword = {"--speed": "speed", "--com-speed": "com_speed", "--omega": "omega"}[held[0]]
+    steady = deathsphere.orbit(surface="cylinder", diameter="32ft", height=2, stability=False, **{keyword: held[1]})
+    assert len(steady) == 1
+    assert float(summary["alpha_deg"]) == pytest.approx(float(steady["alpha_deg"][0]), rel=1e-12)
+    # the drum's contact runs round r = 16 ft: the rate the speed asks for, written out
+    rate = {"--speed": 30 * 0.44704 / 4.8768, "--omega": 2.5}.get(held[0], float(steady["omega_rad_s"][0]))
+    assert float(summary["omega_rad_s"]) == pytest.approx(rate, rel=1e-9)
+    assert summary["status"] == "completed"
+
+
 @pytest.mark.parametrize("args, option", [
     (DRUM + ("--theta", "60", "--alpha", "10"), "--theta"),
-    (DRUM + ("--speed", "10"), "--speed"),
+    (DRUM + ("--speed", "1"), "--speed"),                   # too slow for any tilt to hold the wall
+    (DRUM + ("--speed", "30mph", "--branch", "3"), "--branch"),
     (DRUM + ("--alpha", "10", "--side", "outside"), "--side"),
     (DRUM + ("--alpha", "10", "--vertical"), "--vertical"),
     (DRUM + ("--alpha", "10", "--com-speed", "20", "--machine", "stunt125"), "--com-speed"),

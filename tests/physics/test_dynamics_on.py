@@ -93,21 +93,6 @@ def _run(fun, X0, T, n_eval=4001, rtol=1e-12):
     return integrate(fun, (0.0, T), X0.reshape(-1), (), method="DOP853", rtol=rtol, atol=rtol / 10, t_eval=t).sol
 
 
-def test_golfers_dilemma_simulated_bobbing():
-    k, om, drum = 0.4, 6.0, Cylinder(5.0)
-    X0, _ = don.ball_orbit_state_on(drum, 2.0, om, A, k, G)
-    X0 = X0.copy()
-    X0[7] += 0.05 * np.hypot(X0[6], X0[8])    # a push along the wall: the ball bobs
-    p = don.ground_body(drum, A, k, G, sphere=True)
-    period = 2 * np.pi / (om * np.sqrt(k / (k + 1)))
-    sol = _run(don.ode_on(p), X0[:, None], 2 * period, 801, rtol=1e-8)
-    z = sol.y[2] - np.mean(sol.y[2])
-    i = np.nonzero(np.sign(z[:-1]) != np.sign(z[1:]))[0]
-    tc = sol.t[i] - z[i] * (sol.t[i + 1] - sol.t[i]) / (z[i + 1] - z[i])
-    measured = 2 * (tc[-1] - tc[0]) / (len(tc) - 1)
-    assert abs(measured / period - 1) < 1e-3
-
-
 def test_simulation_keeps_energy_and_contact(ground=GROUNDS[1]):
     # the well of death at 80 degrees, whose hessian varies (the drum and the
     # cone at 100 degrees: benchmarks/bench_dynamics_on.py)

@@ -4,7 +4,7 @@ agree with each other and with an independent reading of its surface."""
 import numpy as np
 import pytest
 
-from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Sphere
+from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Profile, Sphere
 
 GROUNDS = [Sphere(2.4384), Plane(), Cylinder(4.8768, 3.6576), Cone(3.0, np.radians(80.0), 9.0),
            Cone(3.0, np.radians(100.0)), Cone(12.0, np.radians(45.0), 4.0)]
@@ -136,3 +136,58 @@ def test_a_cone_leaning_in_ends_at_its_apex():
     assert cone.highest_lane == pytest.approx(3.0 * np.tan(np.radians(60.0)))
     assert cone.contact(cone.highest_lane)[0] == pytest.approx(0.0, abs=1e-12)
     assert Cone(3.0, np.radians(60.0), 2.0).highest_lane == 2.0 and Cylinder(3.0).highest_lane == np.inf
+
+
+def _bowl():
+    """A profile: a bowl of radius 3 m sampled at 60 points, its lanes up to 4 m."""
+    theta = np.linspace(np.pi - 0.02, 0.6, 60)
+    return Profile(3.0 * np.sin(theta), 3.0 * np.cos(theta))
+
+
+MERIDIANS = GROUNDS + [_bowl()]
+LANES["profile"] = np.linspace(0.05, 4.0, 23)
+
+
+@pytest.mark.parametrize("ground", MERIDIANS, ids=_id)
+def test_the_meridian_by_arc_length_is_the_lanes(ground):
+    """meridian(arc_length(lane)) gives the lane's contact, wall angle and
+    meridian curvature (the two-wheeler's rear contact reads the ground by
+    arc length), and the arc length is the chord sum of a fine polyline of
+    contacts (an independent measure of the meridian's length)."""
+    lane = LANES[ground.name]
+    s = ground.arc_length(lane)
+    rho, z, beta, kappa, dkappa = ground.meridian(s)
+    rho_c, z_c = ground.contact(lane)
+    assert np.allclose(rho, rho_c, rtol=0, atol=1e-12) and np.allclose(z, z_c, rtol=0, atol=1e-12)
+    assert np.allclose(np.mod(beta, 2 * np.pi), ground.wall_angle(lane), rtol=0, atol=1e-12)
+    assert np.allclose(kappa, ground.curvatures(lane)[0], rtol=0, atol=1e-12)
+    fine = np.linspace(lane[0], lane[-1], 20001)
+    chord = np.sum(np.hypot(*(np.diff(c) for c in ground.contact(fine))))
+    assert s[-1] - s[0] == pytest.approx(chord, rel=1e-8)
+
+
+@pytest.mark.parametrize("ground", MERIDIANS, ids=_id)
+def test_the_meridians_derivatives_by_a_complex_step(ground):
+    """rho' = cos(beta), z' = sin(beta), beta' = kappa, kappa' = dkappa in
+    the arc length, by a complex step through meridian(s): the chain rule
+    the two-wheeler's derivation assumes, and that a complex step passes."""
+    s = ground.arc_length(LANES[ground.name]) + 1j * 1e-30
+    rho, z, beta, kappa, dkappa = ground.meridian(s)
+    for value, slope in ((rho, np.cos(beta.real)), (z, np.sin(beta.real)), (beta, kappa.real), (kappa, dkappa.real)):
+        assert np.allclose(value.imag / 1e-30, slope, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("ground", MERIDIANS, ids=_id)
+def test_the_implicit_function_passes_a_complex_step(ground):
+    """F and grad F at a complex point: their imaginary parts are the
+    gradient's and the Hessian's along the step (the two-wheeler's front
+    contact takes its derivatives so), the real parts unchanged."""
+    rng = np.random.default_rng(5)
+    x, y, z = rng.uniform(0.5, 2.0, (3, 8))
+    d = rng.uniform(-1.0, 1.0, (3, 1))
+    xc, yc, zc = (v + 1j * 1e-30 * dv for v, dv in zip((x, y, z), d))
+    grad, hess = ground.gradient(x, y, z), ground.hessian(x, y, z)
+    assert np.allclose(ground.implicit(xc, yc, zc).real, ground.implicit(x, y, z), rtol=0, atol=1e-15)
+    assert np.allclose(ground.implicit(xc, yc, zc).imag / 1e-30, np.sum(grad * d, axis=0), rtol=0, atol=1e-12)
+    assert np.allclose(ground.gradient(xc, yc, zc).imag / 1e-30, np.einsum("ij...,j...->i...", hess, d[:, 0]),
+                       rtol=0, atol=1e-12)

@@ -172,7 +172,7 @@ def test_the_command_line_follows_a_fall_on_the_drum_and_the_view_draws_it(run, 
     res = run("show", WALL, "--monte-carlo", "20", "--seed", "1", "--table", "summary", "--format", "csv")
     assert res.exit_code == 0, res.stderr
     res = run("show", WALL, "--fail", "Cal@1.0:0.5", "--format", "table")
-    assert res.exit_code == 0 and "2.74 m up" in res.stdout              # his lane's height, as the plan typed it
+    assert res.exit_code == 0 and "2.74 m (9.00 ft) up" in res.stdout    # his lane's height, in the ft the plan typed it in
 
     from deathsphere.viewer.show_scene import act_scene
 

@@ -8,7 +8,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere.physics.ground.protocol import as_array
+
 __all__ = ["Cone"]
+
+
+def _radius(x, y):
+    """The distance from the axis: hypot for real points; sqrt(x^2 + y^2), analytic, for a complex step
+    (the two-wheeler's front contact takes the implicit function's derivatives by one)."""
+    if np.iscomplexobj(x) or np.iscomplexobj(y):
+        return np.sqrt(x * x + y * y)
+    return np.hypot(x, y)
 
 
 @dataclass(frozen=True)
@@ -47,8 +57,26 @@ class Cone:
             return 0.0
         return math.cos(self.wall_angle_rad) / math.sin(self.wall_angle_rad)
 
+    def _sin(self) -> float:
+        return 1.0 if self.wall_angle_rad == math.pi / 2 else math.sin(self.wall_angle_rad)
+
+    def arc_length(self, height):
+        """The meridian's arc length [m] from the floor's edge up the wall: height / sin(beta)."""
+        return as_array(height) / self._sin()
+
+    def meridian(self, s):
+        """The meridian at arc length ``s`` [m] from the lowest point: (rho,
+        z, beta, kappa, dkappa), kappa = d(beta)/ds and dkappa = d(kappa)/ds
+        (the two-wheeler's generated equations take them; beyond the paper,
+        docs/two-wheeler.md sec. 12).  Analytic in s, so a complex step
+        passes through."""
+        s = np.asarray(s)
+        zero = 0.0 * s
+        cos_beta = self._cot() * self._sin()
+        return self.radius + s * cos_beta, s * self._sin(), zero + self.wall_angle_rad, zero, zero.copy()
+
     def contact(self, height):
-        height = np.asarray(height, dtype=float)
+        height = as_array(height)
         return self.radius + height * self._cot(), height + 0.0
 
     def wall_angle(self, height):
@@ -71,30 +99,30 @@ class Cone:
         (the distance to the wall wherever the foot of the perpendicular
         lies on it)."""
         n_rho, n_z = -math.sin(self.wall_angle_rad), math.cos(self.wall_angle_rad)
-        return (np.asarray(rho, dtype=float) - self.radius) * n_rho + np.asarray(z, dtype=float) * n_z
+        return (as_array(rho) - self.radius) * n_rho + as_array(z) * n_z
 
     def implicit(self, x, y, z):
         """F = (rho - radius) sin(beta) - z cos(beta): the signed distance
         from the generator (F < 0 inside)."""
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
-        return -self.clearance(np.hypot(x, y), z)
+        x, y, z = np.broadcast_arrays(as_array(x), y, as_array(z))
+        return -self.clearance(_radius(x, y), z)
 
     def _rho(self, x, y):
-        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
-        rho = np.hypot(x, y)
+        x, y = np.broadcast_arrays(as_array(x), as_array(y))
+        rho = _radius(x, y)
         # on the axis the cone's function is not differentiable: its values
         # there are the limit along +x (the axis is never a contact)
         on_axis = rho == 0
         return np.where(on_axis, 1.0, x), np.where(on_axis, 0.0, y), np.where(on_axis, 1.0, rho)
 
     def gradient(self, x, y, z):
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
+        x, y, z = np.broadcast_arrays(as_array(x), y, as_array(z))
         xs, ys, rho = self._rho(x, y)
         s, c = math.sin(self.wall_angle_rad), math.cos(self.wall_angle_rad)
         return np.stack((s * xs / rho, s * ys / rho, np.full(z.shape, -c)))
 
     def hessian(self, x, y, z):
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
+        x, y, z = np.broadcast_arrays(as_array(x), y, as_array(z))
         xs, ys, rho = self._rho(x, y)
         s = math.sin(self.wall_angle_rad)
         ux, uy = xs / rho, ys / rho

@@ -7,6 +7,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere.physics.ground.protocol import as_array
+
 __all__ = ["Cylinder"]
 
 
@@ -30,8 +32,22 @@ class Cylinder:
         """The greatest height a lane can have [m] (the wall's top)."""
         return self.wall_height
 
+    def arc_length(self, height):
+        """The meridian's arc length [m] from the floor's edge up the wall: the height itself."""
+        return as_array(height) + 0.0
+
+    def meridian(self, s):
+        """The meridian at arc length ``s`` [m] from the lowest point: (rho,
+        z, beta, kappa, dkappa), kappa = d(beta)/ds and dkappa = d(kappa)/ds
+        (the two-wheeler's generated equations take them; beyond the paper,
+        docs/two-wheeler.md sec. 12).  Analytic in s, so a complex step
+        passes through."""
+        s = np.asarray(s)
+        zero = 0.0 * s
+        return zero + self.radius, s + 0.0, zero + np.pi / 2, zero, zero.copy()
+
     def contact(self, height):
-        height = np.asarray(height, dtype=float)
+        height = as_array(height)
         return np.full(height.shape, float(self.radius)), height + 0.0
 
     def wall_angle(self, height):
@@ -48,14 +64,14 @@ class Cylinder:
 
     def clearance(self, rho, z):
         """radius - rho: a point's distance from the wall inside [m]."""
-        return self.radius - np.asarray(rho, dtype=float) + 0.0 * np.asarray(z, dtype=float)
+        return self.radius - as_array(rho) + 0.0 * as_array(z)
 
     def implicit(self, x, y, z):
-        x, y, _ = np.broadcast_arrays(x, y, np.asarray(z, dtype=float))
+        x, y, _ = np.broadcast_arrays(x, y, as_array(z))
         return 0.5 * (x * x + y * y - self.radius * self.radius)
 
     def gradient(self, x, y, z):
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), y, np.asarray(z, dtype=float))
+        x, y, z = np.broadcast_arrays(as_array(x), y, as_array(z))
         return np.stack((x + 0.0, y + 0.0, np.zeros_like(z)))
 
     def hessian(self, x, y, z):

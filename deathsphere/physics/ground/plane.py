@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from deathsphere.physics.ground.protocol import as_array
+
 __all__ = ["Plane"]
 
 
@@ -24,8 +26,21 @@ class Plane:
         """z of the ground [m]."""
         return self.level
 
+    def arc_length(self, rho):
+        """The meridian's arc length [m] from the turn's centre: the lane's radius itself."""
+        return as_array(rho) + 0.0
+
+    def meridian(self, s):
+        """The meridian at arc length ``s`` [m] from the turn's centre: (rho,
+        z, beta, kappa, dkappa) = (s, 0, 0, 0, 0) (the two-wheeler's
+        generated equations take them; beyond the paper, docs/two-wheeler.md
+        sec. 12)."""
+        s = np.asarray(s)
+        zero = 0.0 * s
+        return s + 0.0, zero + self.level, zero.copy(), zero.copy(), zero.copy()
+
     def contact(self, rho):
-        rho = np.asarray(rho, dtype=float)
+        rho = as_array(rho)
         return rho, np.zeros_like(rho) + self.level
 
     def wall_angle(self, rho):
@@ -36,17 +51,17 @@ class Plane:
 
     def clearance(self, rho, z):
         """z - level: a point's height above the ground [m]."""
-        return np.asarray(z, dtype=float) - self.level + 0.0 * np.asarray(rho, dtype=float)
+        return as_array(z) - self.level + 0.0 * as_array(rho)
 
     def curvatures(self, rho):
         z = np.zeros(np.shape(rho))
         return z, z.copy()
 
     def implicit(self, x, y, z):
-        return self.level - np.broadcast_arrays(x, y, np.asarray(z, dtype=float))[2]
+        return self.level - np.broadcast_arrays(x, y, as_array(z))[2]
 
     def gradient(self, x, y, z):
-        x, y, z = np.broadcast_arrays(x, y, np.asarray(z, dtype=float))
+        x, y, z = np.broadcast_arrays(x, y, as_array(z))
         return np.stack((np.zeros_like(x), np.zeros_like(y), -np.ones_like(z)))
 
     def hessian(self, x, y, z):

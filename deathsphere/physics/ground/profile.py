@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.physics.ground.protocol import as_array
+
 __all__ = ["Profile", "ProfileError", "KINK_DEG", "MIN_POINTS"]
 
 #: The largest turn of the tangent [deg] between neighbouring chords: a
@@ -28,6 +30,13 @@ MIN_POINTS = 4
 #: method then converges in a few steps).
 _FINE = 32
 _NEWTON = 4
+
+
+def _length(a, b):
+    """|(a, b)|: hypot for real numbers, sqrt(a^2 + b^2), analytic, for a complex step."""
+    if np.iscomplexobj(a) or np.iscomplexobj(b):
+        return np.sqrt(a * a + b * b)
+    return np.hypot(a, b)
 
 
 class ProfileError(ValueError):
@@ -116,9 +125,14 @@ class Profile:
         from scipy.spatial import cKDTree
 
         self._tree = cKDTree(points)
+        from deathsphere.physics.ground.profile_arc import Arc
+
+        # the meridian by arc length, and the spline in complex arithmetic (the two-wheeler's)
+        self._arc = Arc(s, c)
         # the last lanes asked for and their spline values: a body's orbit asks
         # contact, normal, wall_angle and curvatures of the same heights in turn
         self._last = None
+        self._last_nearest = None
 
     #: z of the lowest point [m].
     @property
@@ -169,10 +183,27 @@ class Profile:
         self._last = (height.copy(), lane)
         return lane
 
+    def _at(self, s):
+        """(P, P', P'') at the spline's parameters s: scipy's, or for a complex s the same cubic by hand."""
+        if np.iscomplexobj(s):
+            return self._arc.derivatives(s)[:3]
+        return self._spline(s), self._d1(s), self._d2(s)
+
     def _frame(self, s):
-        d1 = self._d1(s)
-        speed = np.hypot(d1[..., 0], d1[..., 1])
+        d1 = self._at(s)[1]
+        speed = _length(d1[..., 0], d1[..., 1])
         return d1[..., 0] / speed, d1[..., 1] / speed          # cos beta, sin beta
+
+    def arc_length(self, height):
+        """The meridian's arc length [m] from the lowest sample to the lane at ``height``."""
+        return self._arc.length(self._lane(height)[0])
+
+    def meridian(self, s):
+        """The meridian at arc length ``s`` [m] from the lowest sample: (rho,
+        z, beta, kappa, dkappa), kappa = d(beta)/ds, dkappa = d(kappa)/ds
+        (the two-wheeler's generated equations take them; beyond the paper,
+        docs/two-wheeler.md sec. 12; a complex step passes through)."""
+        return self._arc.meridian(s)
 
     def contact(self, height):
         p = self._lane(height)[1]
@@ -203,13 +234,31 @@ class Profile:
     def _nearest(self, rho, z):
         """The parameter of the meridian's point nearest to each (rho, z):
         the fine table's nearest sample, then Newton's method on
-        (P(s) - q) . P'(s) = 0."""
+        (P(s) - q) . P'(s) = 0 (for complex points, from the real parts'
+        then in complex arithmetic)."""
+        if np.iscomplexobj(rho) or np.iscomplexobj(z):
+            rho, z = np.broadcast_arrays(np.asarray(rho, dtype=complex), np.asarray(z, dtype=complex))
+            s, _ = self._nearest(rho.real, z.real)
+            q = np.stack((rho, z), axis=-1)
+            return self._arc.nearest(s + 0j, q), q
         rho, z = np.broadcast_arrays(np.asarray(rho, dtype=float), np.asarray(z, dtype=float))
+        # the last points asked for: a contact's gradient and Hessian are asked of the same points in turn
+        last = self._last_nearest
+        if last is not None and last[0].shape == rho.shape and np.array_equal(last[0], rho) and np.array_equal(
+                last[1], z):
+            return last[2]
+        out = self._nearest_real(rho, z)
+        self._last_nearest = (rho.copy(), z.copy(), out)
+        return out
+
+    def _nearest_real(self, rho, z):
         q = np.stack((rho, z), axis=-1)
         _, index = self._tree.query(q.reshape(-1, 2))
         s = self._fine_s[index].reshape(rho.shape)
         for _ in range(_NEWTON):
-            p, d1, d2 = self._spline(s), self._d1(s), self._d2(s)
+            # the point and its two derivatives in one pass (the same numbers as three splines')
+            every = self._all(s)
+            p, d1, d2 = every[..., 0:2], every[..., 2:4], every[..., 4:6]
             diff = p - q
             f = np.sum(diff * d1, axis=-1)
             df = np.sum(d1 * d1, axis=-1) + np.sum(diff * d2, axis=-1)
@@ -230,17 +279,16 @@ class Profile:
         distance from the end's tangent line)."""
         s, q = self._nearest(rho, z)
         cos_b, sin_b = self._frame(s)
-        diff = q - self._spline(s)
+        diff = q - self._at(s)[0]
         return diff[..., 0] * -sin_b + diff[..., 1] * cos_b
 
     def implicit(self, x, y, z):
         """F = -clearance: the signed distance from the surface (F < 0 inside)."""
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float),
-                                      np.asarray(z, dtype=float))
-        return -self.clearance(np.hypot(x, y), z)
+        x, y, z = np.broadcast_arrays(as_array(x), as_array(y), as_array(z))
+        return -self.clearance(_length(x, y), z)
 
     def _radial(self, x, y):
-        rho = np.hypot(x, y)
+        rho = _length(x, y)
         on_axis = rho == 0
         # on the axis the values are the limit along +x (as the cone's)
         return np.where(on_axis, 1.0, x / np.where(on_axis, 1.0, rho)), np.where(on_axis, 0.0, y / np.where(
@@ -249,8 +297,7 @@ class Profile:
     def gradient(self, x, y, z):
         """grad F = -n at the nearest point, lifted off the meridian plane:
         (sin beta rho-hat, -cos beta)."""
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float),
-                                      np.asarray(z, dtype=float))
+        x, y, z = np.broadcast_arrays(as_array(x), as_array(y), as_array(z))
         ux, uy, rho = self._radial(x, y)
         s, _ = self._nearest(rho, z)
         cos_b, sin_b = self._frame(s)
@@ -261,18 +308,17 @@ class Profile:
         along the meridian's tangent (c the clearance, kappa_m the nearest
         point's meridian curvature), F_rho / rho = sin(beta) / rho along the
         parallel, 0 along the normal (docs/surfaces.md, "Profiles")."""
-        x, y, z = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float),
-                                      np.asarray(z, dtype=float))
+        x, y, z = np.broadcast_arrays(as_array(x), as_array(y), as_array(z))
         ux, uy, rho = self._radial(x, y)
         s, q = self._nearest(rho, z)
-        d1, d2 = self._d1(s), self._d2(s)
-        speed = np.hypot(d1[..., 0], d1[..., 1])
+        p, d1, d2 = self._at(s)
+        speed = _length(d1[..., 0], d1[..., 1])
         cos_b, sin_b = d1[..., 0] / speed, d1[..., 1] / speed
         k_mer = (d1[..., 0] * d2[..., 1] - d1[..., 1] * d2[..., 0]) / speed ** 3
-        diff = q - self._spline(s)
+        diff = q - p
         c = diff[..., 0] * -sin_b + diff[..., 1] * cos_b
         along = k_mer / (1.0 - c * k_mer)
-        around = np.where(rho > 0, sin_b / np.where(rho > 0, rho, 1.0), along)
+        around = np.where(rho != 0, sin_b / np.where(rho != 0, rho, 1.0), along)
         t = np.stack((cos_b * ux, cos_b * uy, sin_b))
         phi = np.stack((-uy, ux, np.zeros_like(ux)))
         return along * t[:, None] * t[None, :] + around * phi[:, None] * phi[None, :]

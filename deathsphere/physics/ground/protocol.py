@@ -31,7 +31,14 @@ up) every ground answers, vectorised over heights:
 * ``implicit(x, y, z)``, ``gradient(x, y, z)``, ``hessian(x, y, z)``: a
   function F with the surface at F = 0 (F < 0 on the inside) and its first
   and second derivatives, for the equations of motion and for finding a
-  contact from a position;
+  contact from a position (complex points pass: a complex step's
+  imaginary part is the derivative along it);
+* ``arc_length(height)`` and ``meridian(s)``: the meridian by its arc
+  length s from the lowest point (on flat ground, from the turn's centre):
+  (rho, z, beta, kappa, dkappa) with kappa = d(beta)/ds the meridian's
+  curvature and dkappa its rate, analytic in s (the two-wheeler's
+  generated equations read the rear contact's meridian so,
+  docs/two-wheeler.md sec. 12).
 * ``offset(t)``: the parallel surface a distance t [m] inside (the
   surface a torus tyre's crown circle's centre moves on), a ground of the
   same kind, exact for the globe, the drum, the cone and flat ground; None
@@ -52,7 +59,7 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
-__all__ = ["Ground", "meridian_frame"]
+__all__ = ["Ground", "meridian_frame", "as_array"]
 
 
 @runtime_checkable
@@ -86,3 +93,11 @@ def meridian_frame(beta):
     beta = np.asarray(beta, dtype=float)
     s, c = np.sin(beta), np.cos(beta)
     return (c, s), (-s, c)
+
+
+def as_array(x):
+    """x as a float64 array, or complex128 where it is complex: a ground's
+    answers pass a complex step through (the two-wheeler's derivatives are
+    taken by one; beyond the paper, docs/two-wheeler.md sec. 12)."""
+    x = np.asarray(x)
+    return np.asarray(x, dtype=np.result_type(x.dtype, np.float64))

@@ -39,6 +39,20 @@ class Sphere:
         [rad]: r (1 + cos theta)."""
         return self.radius * (1.0 + np.cos(theta))
 
+    def arc_length(self, height):
+        """The meridian's arc length [m] from the floor to the lane at ``height``: r (pi - theta)."""
+        return self.radius * (np.pi - self.theta(height))
+
+    def meridian(self, s):
+        """The meridian at arc length ``s`` [m] from the lowest point: (rho,
+        z, beta, kappa, dkappa), kappa = d(beta)/ds and dkappa = d(kappa)/ds
+        (the two-wheeler's generated equations take them; beyond the paper,
+        docs/two-wheeler.md sec. 12).  Analytic in s, so a complex step
+        passes through."""
+        beta = np.asarray(s) / self.radius
+        one = np.ones_like(beta)
+        return (self.radius * np.sin(beta), -self.radius * np.cos(beta), beta, one / self.radius, 0.0 * beta)
+
     def contact(self, height):
         theta = self.theta(height)
         return self.radius * np.sin(theta), self.radius * np.cos(theta)

@@ -1,6 +1,6 @@
 """The Whipple bicycle: two knife-edge wheels, a rear frame and a steered
-front frame (Meijaard, Papadopoulos, Ruina & Schwab 2007), on flat ground
-and, in its derivation, inside a sphere (beyond the paper;
+front frame (Meijaard, Papadopoulos, Ruina & Schwab 2007), on flat ground,
+inside a sphere and inside any surface of revolution (beyond the paper;
 docs/two-wheeler.md).
 
 ==================  ==============================================
@@ -11,6 +11,10 @@ module              concept
                     ``_generated.py`` (needs sympy; not imported at
                     run time)
 ``_generated``      the numeric equations, printed by the generator
+``grounds``         what the equations need of each ground, and the
+                    general path of a surface of revolution
+``rim_contact``     the front rim point that touches a ground, from
+                    its implicit function
 ``motion``          the constraints imposed: pitch, dependent speeds,
                     accelerations, energy
 ``linear``          the benchmark's M, C1, K0, K2, eigenvalues, weave

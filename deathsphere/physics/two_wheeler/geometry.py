@@ -59,8 +59,9 @@ def points(q, parameters, ground, head=(0.3, -1.7)):
     rear = P - p.rR * f["L"][2]
     S = rear + (p.w + p.c) * Cx + p.rR * Cz
     front = S - p.c * Ex - p.rF * Ez
-    # flat: the lowest rim point (towards N.z); sphere: the farthest from O (towards d = front - O)
-    d = on.farthest(front, q)
+    # flat: the lowest rim point (towards N.z); sphere: the farthest from O (towards d = front - O); a
+    # revolution: where the rim is tangent to the ground
+    d = on.farthest(front, q, f, p.rF)
     k = d - np.sum(d * Ey, axis=0) * Ey
     Q = front + p.rF * k / np.sqrt(np.sum(k * k, axis=0))
     return {

@@ -44,6 +44,9 @@ _NEWTON = 30
 #: unbounded speeds (1e7 m/s), the limit of gyroscopic balance, not a lane.
 MAX_SPEED = 100.0
 _TOL = 1e-12
+#: The rear wheel rate (rad/s) a steady turn's speed part H is evaluated at: far above any ridden (a few
+#: hundred), so that G + w^2 H at it is dominated by w^2 H and H's rounding is its own, not gravity's.
+_RATE = 1024.0
 
 
 def configuration(lane, lean, steer, parameters: BicycleParameters, ground):
@@ -103,10 +106,11 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, ground, 
     q1 = q.reshape(8, -1)
     n = q1.shape[1]
     unit = np.zeros((3, n))
-    unit[1] = 1.0
+    unit[1] = _RATE
     u, A = motion.full_speeds(q1, unit, p, ground)
-    condition = on.heading_condition(u, np.broadcast_to(lane, np.shape(q)[1:]).ravel())
-    # at rest the accelerations vanish (B' u = 0): G = -A^T f(q, 0), gravity alone; at unit wheel rate G + H
+    condition = on.heading_condition(u, np.broadcast_to(lane, np.shape(q)[1:]).ravel()) / _RATE
+    # at rest the accelerations vanish (B' u = 0): G = -A^T f(q, 0), gravity alone; at the wheel rate _RATE
+    # G + _RATE^2 H, whose speed part then outweighs gravity's (H is not a small difference of large numbers)
     rest = on.forcing_at_rest(q1, p, 0.0)
     M, f, B, bias = on.equations(q1, u, p, 0.0)
     dep = np.moveaxis(B, (0, 1), (-2, -1))[..., list(motion.DEPENDENT)]
@@ -114,7 +118,7 @@ def turn_coefficients(lane, lean, steer, parameters: BicycleParameters, ground, 
     a[:, list(motion.DEPENDENT)] = -np.linalg.solve(dep, np.moveaxis(bias, 0, -1)[..., None])[..., 0]
     force = np.einsum("ij...,...j->...i", M, a) - np.moveaxis(f, 0, -1)
     G = -np.einsum("...ij,i...->j...", A, rest)
-    H = np.einsum("...ij,...i->j...", A, force) - G
+    H = (np.einsum("...ij,...i->j...", A, force) - G) / _RATE**2
     shape = np.shape(q)[1:]
     return tuple(np.where(holds.ravel(), x, np.nan).reshape(x.shape[:-1] + shape) for x in (condition, G, H))
 
