@@ -13,6 +13,7 @@ from deathsphere.api.rides import RIDE_COLUMNS
 from deathsphere.errors import ParameterError
 from deathsphere.physics.ground import Cone, Cylinder, Plane, Profile
 from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.physics.machine_dynamics_on import machine_stability_on
 from deathsphere.physics.machine_surface import ride_orbit_on
 from deathsphere.records.machine_presets import PRESETS
 from deathsphere.requests.arena import arena
@@ -59,7 +60,13 @@ def test_a_lap_on_the_drum_is_the_physics_at_the_lane_asked_for(held):
     assert float(orb["v_contact"]) == pytest.approx(float(orb["omega"]) * 16 * FT, rel=1e-12)
     assert row["mu_required"] == pytest.approx(float(orb["mu_required"]), rel=1e-12)
     assert row["friction_per_mass_m_s2"] == pytest.approx(-G, rel=1e-12)
-    assert row["stability_method"] == "not-analysed-off-globe"
+    # the drum's own linearisation (docs/machine.md, "On any ground"), the physics' at the row's tilt
+    st = machine_stability_on(np.array([5 * FT]), np.radians([row["alpha_deg"]]), Cylinder(16 * FT, 12 * FT), G,
+                              machine_arrays(PRESETS["stunt125"]))
+    assert row["stability_method"] == "exact-linearisation-steer-locked"
+    assert row["growth_rate_1_s"] == pytest.approx(float(st["growth_rate"][0]), rel=1e-12)
+    assert row["freq_fast_rad_s"] == pytest.approx(float(st["freq_fast"][0]), rel=1e-12)
+    assert row["stability"] in ("stable", "unstable") and row["stability_kind"] in ("neutral", "growing")
 
 
 def test_the_globes_rows_carry_their_contact_radius_and_wall_angle():
@@ -148,6 +155,19 @@ def test_a_lap_on_a_profile_by_its_height(tmp_path):
                                                                                rel=1e-4)
         orb = ride_orbit_on(h, math.radians(row["alpha_deg"]), bowl, G, machine_arrays(PRESETS["stunt125"]))
         assert float(orb["v_cm"]) == pytest.approx(10.0, rel=1e-9)
+        # a profile's parallel surface is no quadric: its stability is not analysed, and the row says so
+        assert row["stability_method"] == "not-analysed-profile" and row["growth_rate_1_s"] is None
+
+
+def test_flat_ground_and_the_cone_are_analysed_row_by_row():
+    t = deathsphere.ride(machine="stunt125", surface="plane", turn_radius=[10.0, 20.0], com_speed="40km/h")
+    u = deathsphere.ride(machine="stunt125", surface="cone", wall_angle=80, diameter="32ft", height=[1.0, 1.5],
+                         com_speed="50km/h")
+    for table, ground, lanes in ((t, Plane(), [10.0, 20.0]), (u, Cone(16 * FT, math.radians(80)), [1.0, 1.5])):
+        alpha = np.radians(np.asarray(table["alpha_deg"], dtype=float))
+        st = machine_stability_on(np.array(lanes), alpha, ground, G, machine_arrays(PRESETS["stunt125"]))
+        np.testing.assert_allclose(np.asarray(table["growth_rate_1_s"], dtype=float), st["growth_rate"], rtol=1e-12)
+        assert set(table["stability_method"]) == {"exact-linearisation-steer-locked"}
 
 
 @pytest.mark.parametrize("kw, param", [

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 import deathsphere
+from deathsphere.physics.ground import Profile
 from deathsphere.physics.stability.methods import METHOD_TEXT, method_text
 
 
@@ -24,11 +25,13 @@ def test_every_method_a_command_writes_is_a_documented_short_label():
         deathsphere.orbit(alpha=10, surface="cylinder", diameter=10, height=1.0, side="outside"),
         deathsphere.ride(theta=[90, 100], speed=8.0, diameter="16ft"),
         deathsphere.ride(height=1.0, speed=12.0, surface="cylinder", diameter="32ft"),
+        deathsphere.ride(height=1.0, com_speed=10.0, surface="profile",
+                         profile=Profile([5.0, 5.0, 5.0, 5.0], [0.0, 1.0, 2.0, 3.0])),
     ]
     seen = set().union(*(_methods(t) for t in tables))
     assert seen <= set(METHOD_TEXT), seen - set(METHOD_TEXT)
     assert {"exact-linearisation", "exact-linearisation-steer-locked", "not-analysed-particle",
-            "not-analysed-k0", "not-analysed-off-globe"} <= seen
+            "not-analysed-k0", "not-analysed-profile"} <= seen
     for label in METHOD_TEXT:
         assert len(label) <= 32 and " " not in label
         assert f"`{label}`" in contract

@@ -6,7 +6,10 @@ The globe stays on :mod:`deathsphere.api.rides` (its tables byte for
 byte); this module takes the lane by its height up the wall (on flat
 ground its turn radius), the tilt,
 the contact's speed, the centre of mass's speed or the lap time, and gives the same columns, theta empty and the
-arena's in ``surface``, ``rho_contact_m``, ``wall_angle_deg``.
+arena's in ``surface``, ``rho_contact_m``, ``wall_angle_deg``; the
+stability on the drum, the cone and flat ground is the exact linearisation
+of the machine's equations of motion there (docs/machine.md, "On any
+ground"), not analysed on a profile.
 """
 
 from __future__ import annotations
@@ -27,8 +30,9 @@ from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks
 
 __all__ = ["ride_on_surface", "STABILITY_NOT_ON_SURFACE"]
 
-#: What the stability columns say on a drum or a cone.
-STABILITY_NOT_ON_SURFACE = methods.NOT_ANALYSED_OFF_GLOBE
+#: What the stability columns say on a ground whose parallel surface the
+#: machine's equations of motion do not take (a profile).
+STABILITY_NOT_ON_SURFACE = methods.NOT_ANALYSED_PROFILE
 
 
 def _lanes(ground, height) -> np.ndarray:
@@ -139,8 +143,12 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
     res["rho_contact"] = np.asarray(rho, dtype=float)
     res["wall_angle"] = np.asarray(ground.wall_angle(height[req]), dtype=float)
     run = rides.RowRun(np.full(req.size, radius), g[req], mu[req], max_g[req])
-    table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=False, given=given,
-                         surface=ground.name, stability_note=STABILITY_NOT_ON_SURFACE if options.stability else "")
+    # the machine's equations of motion take the ground's parallel surface (a quadric: the drum, the cone,
+    # flat ground); on a profile the columns say why they are empty
+    analysed = options.stability and ground.offset(0.0) is not None
+    note = STABILITY_NOT_ON_SURFACE if options.stability and not analysed else ""
+    table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=analysed, given=given,
+                         stability_note=note, lanes=(ground, height[req]))
     if len(table) == n and shape:
         table = type(table)(table.columns, shape=shape)
     if options.summary:

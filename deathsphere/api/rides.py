@@ -92,15 +92,18 @@ class RowRun(NamedTuple):
 
 
 def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: bool, shape=None,
-           given: dict | None = None, axes=None, surface: str = "sphere", stability_note: str = "") -> Table:
+           given: dict | None = None, axes=None, stability_note: str = "", lanes=None) -> Table:
     """The rows of ``ride``.  ``given`` holds the requested inputs per row
     (``theta_deg``, ``alpha_deg``, ``v_contact_m_s``, ``v_cm_m_s``,
     ``period_s``, NaN where not given), echoed as typed rather than as
-    recomputed (docs/contract.md).  ``surface`` names the arena; its contact
+    recomputed (docs/contract.md).  The arena is the globe, or ``lanes``'
+    ground; its contact
     radius and wall angle are ``res``'s ``rho_contact`` and ``wall_angle``
     where given, else the globe's (r sin(theta), 180 deg - theta).
     ``stability_note``: what the stability method says on the rows with an
-    orbit when not analysed."""
+    orbit when not analysed.  ``lanes``: off the globe, (ground, the
+    rows' lane heights [m]): its name is the ``surface`` and the stability
+    is on that ground (the rows' theta are empty)."""
     r, g, mu, max_g = run
     n = theta.size
     given = given or {}
@@ -138,9 +141,10 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
     rows = np.flatnonzero(has_orbit) if stability else np.zeros(0, dtype=np.int64)
     if stability_note:
         cols["stability_method"][has_orbit] = stability_note
-    _arena_columns(cols, res, surface, run.r, theta, n)
+    _arena_columns(cols, res, "sphere" if lanes is None else lanes[0].name, run.r, theta, n)
     if rows.size:
         from deathsphere.physics.machine_dynamics import machine_stability, yaw_is_determined
+        from deathsphere.physics.machine_dynamics_on import machine_stability_on
         from deathsphere.physics.stability.verdict import VERDICT_LABELS, stability_kind
 
         rr, gg = np.broadcast_to(r, (n,)), np.broadcast_to(g, (n,))
@@ -150,7 +154,10 @@ def _table(req_index, theta, alpha, run: RowRun, res, m: Machine, stability: boo
             rows = rows[:0]
         for start in range(0, rows.size, STABILITY_CHUNK):
             idx = rows[start:start + STABILITY_CHUNK]
-            st = machine_stability(theta[idx], alpha[idx], Sphere(rr[idx]), gg[idx], arrays)
+            if lanes is None:
+                st = machine_stability(theta[idx], alpha[idx], Sphere(rr[idx]), gg[idx], arrays)
+            else:
+                st = machine_stability_on(lanes[1][idx], alpha[idx], lanes[0], gg[idx], arrays)
             cols["stability"][idx] = VERDICT_LABELS[st["verdict"]]
             cols["stability_method"][idx] = STABILITY_METHOD
             cols["growth_rate_1_s"][idx] = st["growth_rate"]
@@ -212,8 +219,9 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         ``wall_angle`` degrees from the horizontal); ``wall_height`` the
         wall's top above the floor (a lane above it is refused).  On a drum
         or a cone the lane is given by ``height`` (theta is refused), one
-        radius, no vertical loops and no stability analysis (the columns
-        say so).  ``"plane"``: flat ground, a lane by ``turn_radius``;
+        radius, no vertical loops; the stability is the machine's exact
+        linearisation on that ground (docs/machine.md, "On any ground"),
+        not analysed on a profile (the columns say so).  ``"plane"``: flat ground, a lane by ``turn_radius``;
         ``"profile"``: the meridian ``profile`` (a CSV file's path or a
         :class:`~deathsphere.physics.ground.Profile`), a lane by ``height``.
         A two-wheeler (``steer``, ``steer_torque``) rides the drum, the

@@ -230,8 +230,7 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     spin or rate, inside."""
     from deathsphere.requests.arena import arena, lane_key
 
-    for key, why in (("machine", "a machine's run rides the globe"),
-                     ("theta", "theta is the sphere's polar angle"),
+    for key, why in (("theta", "theta is the sphere's polar angle"),
                      ("v_top", "vertical loops are the globe's")):
         if given[key] is not None:
             raise ParameterError(f"{why}: on another surface simulate the paper's wheel or ball on a lane by its "
@@ -250,6 +249,8 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     run = Run(ground=ground, g=_read("g", given["g"]), mu=_read("mu", given["mu"]))
     solver, periods, kick, options = _run_options(given)
     run = dataclasses.replace(run, solver=solver, periods=periods)
+    if given["machine"] is not None:
+        return dataclasses.replace(_machine_on_ground(given, ground, key), kick=kick), run, options
     kind = decode_paper_body(WHEEL if given["body"] is None else given["body"])
     if not kind.rolls:
         raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)", "body")
@@ -267,6 +268,60 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
         lane = dataclasses.replace(lane, by=Tilt(alpha))
     rider = RiderRequest(body=PaperBody(kind=kind, side="inside", a=a, k=k), lane=lane, kick=kick)
     return rider, run, options
+
+
+def _machine_on_ground(given: Mapping, ground, key: str) -> RiderRequest:
+    """A machine on a lane of ``ground`` (not the globe; beyond the paper:
+    docs/machine.md, "On any ground") at its height (on flat ground its
+    turn radius ``key``), by its tilt alpha, or its speed and branch (the tilt as ``ride`` lists them)."""
+    from deathsphere.physics.machine_arrays import machine_arrays
+    from deathsphere.physics.machine_dynamics import YAW_UNDETERMINED, yaw_is_determined
+    from deathsphere.records.machine_presets import as_machine
+
+    _refuse_for_machine(given)
+    if ground.offset(0.0) is None:
+        raise ParameterError(f"a machine is not simulated on a {ground.name}: its equations of motion move the "
+                             "tyre's crown point on the ground's parallel surface, derived for a drum, a cone and "
+                             "flat ground (docs/machine.md, \"On any ground\")", "machine")
+    m = as_machine(given["machine"])
+    if not yaw_is_determined(machine_arrays(m)):
+        raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "
+                             "inertia (--yaw-inertia) or spinning wheels (--spin-inertia)", "machine")
+    held = [name for name in ("alpha", "speed", "com_speed") if given[name] is not None]
+    if len(held) != 1:
+        raise ParameterError(f"on the {ground.name} give one of the machine's tilt alpha, its contact's speed and "
+                             "its centre of mass's com_speed" + (f" (got {' and '.join(held)})" if held else ""),
+                             held[1] if len(held) > 1 else "alpha", missing=not held)
+    lane = _read(key, given[key])
+    if held[0] == "alpha":
+        alpha = _read("alpha", given["alpha"])
+    else:
+        alpha = _machine_tilt_on(m, ground, lane, held[0], _read(held[0], given[held[0]]), given["branch"],
+                                 _read("g", given["g"]))
+    return RiderRequest(body=m, lane=Horizontal(at=Height(lane), by=Tilt(alpha)))
+
+
+def _machine_tilt_on(m, ground, lane: float, held: str, speed: float, branch, g: float) -> float:
+    """The tilt [deg] of a machine's lane on ``ground`` whose contact (held
+    ``speed``) or centre of mass (``com_speed``) runs at ``speed``: the tilt
+    number ``branch`` in increasing alpha of those ``ride`` lists there
+    (docs/machine.md eqs. M12, M12r with MS2-MS4)."""
+    from deathsphere.physics.machine_arrays import machine_arrays
+    from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
+
+    at, value = np.array([lane]), np.array([speed])
+    if held == "com_speed":
+        tilts, _ = orbits_for_speed_on(at, value, ground, np.array([g]), machine_arrays(m))
+    else:
+        tilts, _ = orbits_for_rate_on(at, contact_rate_on(at, value, ground), ground, np.array([g]), machine_arrays(m))
+    tilts = np.sort(np.degrees(tilts[0][np.isfinite(tilts[0])]))
+    if not tilts.size:
+        raise ParameterError(f"no tilt alpha gives the {'centre of mass' if held == 'com_speed' else 'contact'} "
+                             f"this speed on this lane of the {ground.name}", held)
+    if isinstance(branch, bool) or not isinstance(branch, (int, np.integer)) or not 0 <= branch < tilts.size:
+        raise ParameterError(f"branch must be one of the {tilts.size} tilts that give this speed "
+                             f"(0..{tilts.size - 1}; got {branch!r})", "branch")
+    return float(tilts[int(branch)])
 
 
 def _tilt_on(ground, height: float, by, a: float, k: float, g: float, mu: float) -> float:
@@ -462,10 +517,16 @@ def _machine_starts(rider: RiderRequest, run: Run):
     M8, M12, M16-M19): its steady orbit at (theta, alpha), or at the tilt
     ``branch`` giving the centre of mass the speed, kicked by ``rider.kick``."""
     from deathsphere.physics.ground import Sphere
-    from deathsphere.simulation.machine_starts import machine_run, machine_starts
+    from deathsphere.simulation.machine_starts import machine_ground_run, machine_ground_starts, machine_run, machine_starts
 
-    m, theta, by = rider.body, rider.lane.at.theta, rider.lane.by
+    m, by = rider.body, rider.lane.by
     kick = 0.0 if rider.kick is None else rider.kick
+    if not isinstance(run.ground, Sphere):
+        bodies = machine_ground_run(m, run.ground, run.g, rider.lane.at.height)
+        starts_of = partial(machine_ground_starts, bodies, params.reduce_angle(by.alpha), perturb_deg=kick,
+                            mu=run.mu)
+        return _started(starts_of, by.alpha)
+    theta = rider.lane.at.theta
     speed = by.speed if isinstance(by, ComSpeed) else None
     contact = by.speed if isinstance(by, ContactSpeed) else None
     alpha = (by.alpha if isinstance(by, Tilt)

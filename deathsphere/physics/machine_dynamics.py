@@ -59,7 +59,8 @@ from deathsphere.physics.vectors import cross as _cross
 from deathsphere.physics.vectors import dot as _dot
 from deathsphere.physics.vectors import zcross
 
-__all__ = ["GeometryRates", "yaw_is_determined", "YAW_UNDETERMINED", "machine_geometry", "machine_rhs", "machine_orbit_state", "machine_jacobian", "machine_stability"]
+__all__ = ["GeometryRates", "yaw_is_determined", "YAW_UNDETERMINED", "machine_geometry", "machine_rhs", "machine_orbit_state",
+           "machine_jacobian", "machine_stability", "rhs_of_geometry", "reduced_jacobian"]
 
 
 class _Jet:
@@ -159,19 +160,30 @@ class GeometryRates:
         sc2 = (_dot(self.cp1, self.cp1) - self.sc1 * self.sc1 + _dot(self.cp, cp2)) / self.sc
         return (cp2 - 2 * self.e3_1 * self.sc1 - self.e3 * sc2) / self.sc
 
+    def pitch_reaction(self):
+        """The pitch constraint's reaction per unit multiplier (eq. M18; :func:`_pitch_reaction`)."""
+        return _pitch_reaction(self)
 
-def _residuals(state, g, p: MachineArrays, Wd):
+    def outward(self):
+        """The ground's outward unit normal at the contact, P/|P| (3, ...)."""
+        return self.P / np.sqrt(_dot(self.P, self.P))
+
+
+def _residuals(state, g, p: MachineArrays, Wd, geometry=GeometryRates):
     """The Euler and axial-balance residuals (4, k, ...) of the machine at
     ``state`` for k trial wheel accelerations ``Wd`` (3, k, ...) and zero
     pitch moment, with the contact forces F (3, k, ...) [N] they need, the
     rates dC/dt and dE/dt (3, ...) and the axle e1 (3, ...).  The residual
     is affine in (dw/dt, lambda): R = b + A dw/dt - k lambda, k the pitch
-    reaction's column (:func:`_pitch_reaction`, returned with its force)."""
+    reaction's column (the geometry's ``pitch_reaction``, returned with its
+    force).  ``geometry``: the crown point's geometry class, ``geometry(C,
+    E, a, t)`` with :class:`GeometryRates`' attributes and methods (the
+    sphere's by default; any ground's, :mod:`deathsphere.physics.machine_dynamics_on`)."""
     C, E, W = state[0:3], state[3:6], state[6:9]
     a, t, h, m = p.wheel_radius, p.tyre_radius, p.com_height, p.mass
     add = (slice(None), None)  # a new axis after the vector axis: the k trials
     C_, E_, W_ = C[add], E[add], W[add]
-    geo = GeometryRates(C_, E_, a, t)
+    geo = geometry(C_, E_, a, t)
     # velocities (rolling): C moves as the wheel rolls on the contact P
     P_ = geo.P
     vC_ = -_cross(W_, P_ - C_)
@@ -202,7 +214,7 @@ def _residuals(state, g, p: MachineArrays, Wd):
     euler = Ldot - torque                                         # = lambda k_E
     axial = p.spin_inertia * _dot(Wd, h1j.x0) - _dot(_cross(Pj.x0 - C_, F), h1j.x0)   # = lambda k_A
     R = np.concatenate((euler, axial[None]), axis=0)             # (4, k, ...)
-    return R, F, vC, Edot, _pitch_reaction(geo)
+    return R, F, vC, Edot, geo.pitch_reaction()
 
 
 def _pitch_reaction(geo: GeometryRates):
@@ -238,13 +250,13 @@ def _trial_accelerations(shape, dtype):
     return Wd
 
 
-def _acceleration_system(state, g, p: MachineArrays):
+def _acceleration_system(state, g, p: MachineArrays, geometry=GeometryRates):
     """(A, b) of the accelerations: A (..., 4, 4) x = b (..., 4) for
     x = (dw/dt, lambda), from the residual at the four trials, with the forces
     of the trials (3, 4, ...) and the rates dC/dt, dE/dt, e1."""
     shape = np.broadcast_shapes(state.shape[1:], np.shape(p.wheel_radius), np.shape(g))
     Wd = _trial_accelerations(shape, state.dtype if np.iscomplexobj(state) else float)
-    R, F, vC, Edot, (kcol, fpitch) = _residuals(state, g, p, Wd)
+    R, F, vC, Edot, (kcol, fpitch) = _residuals(state, g, p, Wd, geometry)
     base = R[:, 0]
     A = R[:, 1:] - base[:, None]                                  # (4, 3, ...) columns for dw/dt
     Afull = np.concatenate((A, -kcol[:, None]), axis=1)           # (4, 4, ...): R - lambda k = 0
@@ -271,8 +283,15 @@ def machine_rhs(state, ground, g, machine: MachineArrays, frame_rate=0.0, forces
     ``frame_rate`` [rad/s]: components in a frame turning at that rate about
     +z.  With ``forces`` also returns (F/m (3, ...), lambda / m): the contact
     force per unit mass and the pitch constraint's multiplier."""
+    return rhs_of_geometry(state, g, machine, GeometryRates, frame_rate, forces)
+
+
+def rhs_of_geometry(state, g, machine: MachineArrays, geometry, frame_rate=0.0, forces=False):
+    """:func:`machine_rhs` for the crown point's ``geometry`` (a class as
+    :class:`GeometryRates`): the one solve of eqs. M16-M19 that every
+    ground's equations share."""
     state = np.asarray(state)
-    Am, bm, F, vC, Edot, fpitch = _acceleration_system(state, g, machine)
+    Am, bm, F, vC, Edot, fpitch = _acceleration_system(state, g, machine, geometry)
     x = np.moveaxis(np.linalg.solve(Am, bm[..., None])[..., 0], -1, 0)   # (4, ...)
     Wdot = x[:3]
     out = _turning(np.concatenate((vC, Edot, Wdot)), state, frame_rate)
@@ -284,19 +303,19 @@ def machine_rhs(state, ground, g, machine: MachineArrays, frame_rate=0.0, forces
     return out, Fsol / machine.mass, x[3] / machine.mass
 
 
-def _rhs_directional(X0, dirs, g, p: MachineArrays, frame_rate, step=COMPLEX_STEP):
+def _rhs_directional(X0, dirs, g, p: MachineArrays, frame_rate, step=COMPLEX_STEP, geometry=GeometryRates):
     """The Jacobian of :func:`machine_rhs` at the real states X0 (9, n)
     along ``dirs`` (9, d, n), exactly (complex step): the accelerations x =
     (dw/dt, lambda) solve A(X) x = b(X), so along dX, A dx = -dR/dX . dX with
     the residual R(X, x) held at the solved x.  One complex evaluation of
     the residual at that x replaces complex trials of all four (the same
     derivative, in a quarter of the second-order work)."""
-    Am, bm, _, _, _, _ = _acceleration_system(X0, g, p)
+    Am, bm, _, _, _, _ = _acceleration_system(X0, g, p, geometry)
     Ainv = np.linalg.inv(Am)                                      # (n, 4, 4): one LU for x and 4 directions
     x = (Ainv @ bm[..., None])[..., 0].T                          # (4, n)
     pc, gc = p.map(lambda v: np.asarray(v)[None]), np.asarray(g)[None]
     Xc = X0[:, None, :] + 1j * step * dirs                       # (9, d, n)
-    R, _, vC, Edot, (kcol, _) = _residuals(Xc, gc, pc, x[:3, None, None, :])
+    R, _, vC, Edot, (kcol, _) = _residuals(Xc, gc, pc, x[:3, None, None, :], geometry)
     R = R[:, 0] - kcol * x[3][None, None, :]
     dR = np.imag(R) / step                                        # (4, d, n)
     dx = -Ainv[:, :3] @ dR.transpose(2, 0, 1)                   # (n, 3, d)
@@ -395,28 +414,43 @@ def machine_jacobian(theta, alpha, ground, g, p: MachineArrays):
     step = COMPLEX_STEP
     dth = np.imag(machine_orbit_state(th + 1j * step, al, ground, g, p)[0]) / step
     dal = np.imag(machine_orbit_state(th, al + 1j * step, ground, g, p)[0]) / step
-    C, E, W = X0[0:3], X0[3:6], X0[6:9]
-    S = np.sqrt(np.sum(W * W, axis=0) + Om ** 2 + g / a)
-    D = np.empty((9, n))
-    D[0:3], D[3:6], D[6:9] = a, 1.0, S
     # gradients of the constraints |E|^2 = 1 and |Q|^2 = (r - t)^2 in (C, E):
     # 2E, and, with Q = (|cperp| + a - t) e3 + (C.e1) e1, d|Q|^2/dC = 2Q and
     # d|Q|^2/dE = -2 (a - t) (C.e1) e3 / |E| (docs/machine.md sec. 5)
+    C, E = X0[0:3], X0[3:6]
     e1, e3, Q, _ = machine_geometry(C, E, a, t)
     grads = np.zeros((9, 2, n))
     grads[3:6, 0] = 2 * E
     grads[0:3, 1] = 2 * Q
     grads[3:6, 1] = -2 * (a - t) * _dot(C, e1) * e3 / np.sqrt(_dot(E, E))
+    return reduced_jacobian(X0, Om, (dth, dal), grads, ok, g, p, GeometryRates)
+
+
+def reduced_jacobian(X0, Om, family, grads, ok, g, p: MachineArrays, geometry):
+    """The reduced Jacobian K (n, 4, 4), the rate scale S [1/s] and Omega
+    (NaN where not ``ok``) of the steady states X0 (9, n) turning at Om:
+    the Jacobian of the right-hand side for ``geometry`` in the frame
+    turning at Omega, on the manifold of the two constraints whose
+    gradients are ``grads`` (9, 2, n), minus the three neutral directions
+    (the phase along the orbit, about z; the two tangents ``family`` (9, n)
+    each of the family of steady states), in scaled coordinates
+    (docs/machine.md sec. 5).  Shared by every ground."""
+    n = X0.shape[1]
+    a = np.broadcast_to(p.wheel_radius, (n,))
+    W = X0[6:9]
+    S = np.sqrt(np.sum(W * W, axis=0) + Om ** 2 + g / a)
+    D = np.empty((9, n))
+    D[0:3], D[3:6], D[6:9] = a, 1.0, S
     A = np.zeros((9, 5, n))
     A[:, 0:2] = grads * D[:, None, :]
     for blk in (slice(0, 3), slice(3, 6), slice(6, 9)):
         A[blk, 2] = zcross(X0[blk]) / D[blk]
-    A[:, 3] = dth / D
-    A[:, 4] = dal / D
+    A[:, 3] = family[0] / D
+    A[:, 4] = family[1] / D
     A *= 1.0 / np.sqrt(np.einsum("ikn,ikn->kn", A, A))[None]
     Y = householder_complement(A)                                  # (9, 4, n)
     dirs = Y * D[:, None, :]                                        # (9, 4, n)
-    JdX = _rhs_directional(X0, dirs, g, p, Om)                         # (9, 4, n)
+    JdX = _rhs_directional(X0, dirs, g, p, Om, geometry=geometry)   # (9, 4, n)
     K = np.einsum("ijn,ikn->njk", Y, JdX / D[:, None, :])
     K = np.where(ok[:, None, None], K, np.nan)
     scale = np.where(ok, S, np.nan)

@@ -8,7 +8,10 @@ State (9, ...), ground, gravity and the machine's arrays as
 :mod:`deathsphere.physics.machine_dynamics` (C, E, W;
 :class:`~deathsphere.physics.machine_arrays.MachineArrays`), each function
 taking those it needs; every function is vectorised over the trailing
-(body) axes and loops over no body.
+(body) axes and loops over no body.  ``geometry`` (where taken): the crown
+point's geometry class, the globe's :class:`GeometryRates` by default, any
+ground's from :func:`deathsphere.physics.machine_dynamics_on.crown_geometry`
+(docs/machine.md, "On any ground").
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ from deathsphere.physics.machine_dynamics import (
     GeometryRates,
     machine_geometry,
     machine_orbit_state,
-    machine_rhs,
+    rhs_of_geometry,
 )
 from deathsphere.physics.vectors import cross
 from deathsphere.physics.vectors import dot as _dot
@@ -30,7 +33,7 @@ __all__ = ["machine_points", "machine_rates", "machine_contact_force", "machine_
            "machine_project", "machine_start"]
 
 
-def machine_points(state, p: MachineArrays) -> dict:
+def machine_points(state, p: MachineArrays, geometry=GeometryRates) -> dict:
     """The machine's axes and points from a state (eq. M16's geometry):
     ``e1`` the unit axle, ``e3`` the unit vector from the wheel centre
     towards the crown (the up-axis is -e3), ``C`` the wheel centre, ``Q``
@@ -40,12 +43,13 @@ def machine_points(state, p: MachineArrays) -> dict:
     state = np.asarray(state)
     C = state[0:3]
     a, t = p.wheel_radius, p.tyre_radius
-    e1, e3, Q, P = machine_geometry(C, state[3:6], a, t)
+    geo = geometry(C, state[3:6], a, t)
+    e1, e3, Q, P = geo.h1, geo.e3, geo.Q, geo.P
     return {"e1": e1, "e3": e3, "C": C, "Q": Q, "P": P, "G": C - (p.com_height - a) * e3,
             "H": Q - (p.head_height - t) * e3}
 
 
-def machine_rates(state, p: MachineArrays) -> dict:
+def machine_rates(state, p: MachineArrays, geometry=GeometryRates) -> dict:
     """First-order rates of a state (eqs. M16-M17): ``vC`` = dC/dt (rolling),
     ``e3dot`` = de3/dt, ``vG`` = dG/dt, ``omega_f`` the frame's angular
     velocity, ``psi`` its rate about the axle, ``spin`` s = w.e1 - psi the
@@ -53,7 +57,7 @@ def machine_rates(state, p: MachineArrays) -> dict:
     ``e3``."""
     state = np.asarray(state)
     C, E, W = state[0:3], state[3:6], state[6:9]
-    geo = GeometryRates(C, E, p.wheel_radius, p.tyre_radius)
+    geo = geometry(C, E, p.wheel_radius, p.tyre_radius)
     e1, e3 = geo.h1, geo.e3
     vC = -cross(W, geo.P - C)
     Edot = cross(W, E)
@@ -67,17 +71,18 @@ def machine_rates(state, p: MachineArrays) -> dict:
             "spin": w1 - psi, "e1": e1, "e2": e2, "e3": e3}
 
 
-def machine_contact_force(state, ground, g, p: MachineArrays) -> dict:
+def machine_contact_force(state, ground, g, p: MachineArrays, geometry=GeometryRates) -> dict:
     """The contact force per unit mass from eq. M18, F/m = d2G/dt2 + g z
     less the pitch constraint's force lambda f/m, with the same keys as :func:`deathsphere.physics.dynamics.contact_force`:
     ``force`` (3, ...), ``normal`` (the part pressing tyre and sphere
-    together, -F.n with n = P/|P|; > 0 while contact holds), ``friction``
+    together, -F.n with n the ground's outward normal at P, P/|P| on the
+    globe; > 0 while contact holds), ``friction``
     (3, ...) the tangential part, ``friction_magnitude`` and ``mu_required``
     (NaN where normal <= 0)."""
     state = np.asarray(state)
-    _, force, _ = machine_rhs(state, ground, g, p, forces=True)
-    P = machine_geometry(state[0:3], state[3:6], p.wheel_radius, p.tyre_radius)[3]
-    n = P / _norm(P)
+    _, force, _ = rhs_of_geometry(state, g, p, geometry, forces=True)
+    geo = geometry(state[0:3], state[3:6], p.wheel_radius, p.tyre_radius)
+    n = geo.outward()
     fn = _dot(force, n)
     friction = force - fn * n
     normal = -fn
@@ -89,7 +94,7 @@ def machine_contact_force(state, ground, g, p: MachineArrays) -> dict:
             "mu_required": mu}
 
 
-def machine_energy(state, g, p: MachineArrays):
+def machine_energy(state, g, p: MachineArrays, geometry=GeometryRates):
     """(energy, kinetic energy) per unit mass [J/kg] (beyond the paper):
     T = m |dG/dt|^2 / 2 + omega_f . I . omega_f / 2 + J s (e1 . omega_f) + J s^2 / 2
     (the locked inertia I holds the wheels' polar moments, so their spin
@@ -98,7 +103,7 @@ def machine_energy(state, g, p: MachineArrays):
     Conserved: the contact rolls and the pitch constraint's reaction is
     ideal (docs/machine.md sec. 5), so its drift is the integrator's error."""
     state = np.asarray(state)
-    rt = machine_rates(state, p)
+    rt = machine_rates(state, p, geometry)
     om = rt["omega_f"]
     o1, o2, o3 = _dot(rt["e1"], om), _dot(rt["e2"], om), _dot(rt["e3"], om)
     s = rt["spin"]

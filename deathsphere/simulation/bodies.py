@@ -14,7 +14,11 @@ the energy, the constraints.  Two models:
 * :data:`ON_GROUND` -- the paper's wheel and ball on any other ground (the
   drum, the cone, flat ground, a profile): the same equations with the
   ground's contact, :mod:`deathsphere.physics.dynamics_on` (parameters
-  :class:`GroundRun`), and two more events, the floor and the wall's top.
+  :class:`GroundRun`), and two more events, the floor and the wall's top;
+* :data:`MACHINE_ON_GROUND` -- a machine on the drum, the cone or flat
+  ground: eqs. M16-M19 with the crown point on the ground's parallel
+  surface, :mod:`deathsphere.physics.machine_dynamics_on` (parameters
+  :class:`MachineGroundRun`), with the wall's events.
 
 All states are (C, e1, w) in the same 9 rows, so the integrator's driver
 is the same.  :func:`model_of` picks the model from the parameters' type.
@@ -31,12 +35,13 @@ from deathsphere.physics import dynamics_on as don
 from deathsphere.physics import machine_motion as mm
 from deathsphere.physics.ground import Ground, Sphere
 from deathsphere.physics.machine_arrays import MachineArrays
-from deathsphere.physics.machine_dynamics import machine_rhs
+from deathsphere.physics.machine_dynamics import machine_rhs, rhs_of_geometry
 from deathsphere.physics.vectors import dot as _dot
 from deathsphere.simulation.events import ContactEvents
 from deathsphere.simulation.status import RunStatus
 
-__all__ = ["STATE_NAMES", "STATE_UNITS", "MachineRun", "GroundRun", "PAPER", "MACHINE", "ON_GROUND", "model_of",
+__all__ = ["STATE_NAMES", "STATE_UNITS", "MachineRun", "GroundRun", "MachineGroundRun", "PAPER", "MACHINE", "ON_GROUND",
+           "MACHINE_ON_GROUND", "model_of",
            "take", "concat_params", "broadcast_params"]
 
 
@@ -73,6 +78,13 @@ class MachineRun(NamedTuple):
         """The globe the machines roll in."""
         return Sphere(self.r)
 
+    def geometry(self, shape=None):
+        """The crown point's geometry class in the globe (eq. M16), as
+        :meth:`MachineGroundRun.geometry` on any other ground."""
+        from deathsphere.physics.machine_dynamics import GeometryRates
+
+        return GeometryRates
+
 
 class GroundRun(NamedTuple):
     """Per-body parameters of the paper's wheels and balls on a ground other
@@ -105,6 +117,38 @@ class GroundRun(NamedTuple):
         if shape is not None:
             arrays = tuple(np.broadcast_to(x, shape) for x in arrays)
         return don.GroundBody(self.ground, *arrays)
+
+
+class MachineGroundRun(NamedTuple):
+    """Per-body parameters of machines on a ground other than the globe
+    (beyond the paper; docs/machine.md, "On any ground"): the machines'
+    arrays ``machine``, gravity ``g`` [m/s^2], each machine's ``name``,
+    ``r`` the start lane's distance from the axis rho_P [m] (the run's
+    length, as :class:`GroundRun`'s), ``height`` the start contact's height
+    above the ground's lowest point [m], ``lane`` the start lane as the
+    ground takes it (its height; on flat ground the turn radius) [m] (n,)
+    each, and the ``ground`` record, one for the whole run."""
+
+    machine: MachineArrays
+    g: np.ndarray
+    name: np.ndarray
+    r: np.ndarray
+    height: np.ndarray
+    lane: np.ndarray
+    ground: Ground
+
+    @property
+    def a(self) -> np.ndarray:
+        """The wheel radius [m], by the name the runner shares with the paper's bodies."""
+        return self.machine.wheel_radius
+
+    def geometry(self, shape=None):
+        """The crown point's geometry class on the ground (its parallel
+        surface for the machines' tyres, broadcast to ``shape``)."""
+        from deathsphere.physics.machine_dynamics_on import geometry_on
+
+        mp = self.machine if shape is None else self.machine.map(lambda x: np.broadcast_to(x, shape))
+        return geometry_on(self.ground, mp)
 
 
 def _shared(x) -> bool:
@@ -382,6 +426,7 @@ class _OnGround(_Paper):
     ridden on), and the wall's events: the floor and the top."""
 
     name = "on_ground"
+    off_globe = True
     #: the contact's height above the ground's lowest point and its distance
     #: from the axis (on flat ground the turn radius), as ``orbit`` names them
     series_extras = ("height_m", "rho_contact_m")
@@ -465,9 +510,136 @@ class _OnGround(_Paper):
                 "rho_drift_m": np.abs(rho - p.r)}
 
 
+class _MachineOnGround(_Machine):
+    """A machine on the drum, the cone or flat ground (beyond the paper;
+    docs/machine.md, "On any ground"): eqs. M16-M19 with the crown point on
+    the ground's parallel surface (MG1-MG3), the globe's machine's series
+    and the wall's: the contact's height and distance from the axis, the
+    floor and the wall's top as events."""
+
+    name = "machine_on_ground"
+    off_globe = True
+    series_extras = ("v_cm_m_s", "head_clearance_m", "height_m", "rho_contact_m")
+    summary_extras = ("machine", "min_head_clearance_m", "surface", "height_m", "max_height_drift_m",
+                      "max_rho_drift_m")
+    extremes = (("min_head_clearance_m", np.fmin, "head_clearance_m"),
+                ("max_height_drift_m", np.fmax, "height_drift_m"), ("max_rho_drift_m", np.fmax, "rho_drift_m"))
+
+    def summary_echo(self, p: MachineGroundRun) -> dict:
+        n = int(np.size(p.a))
+        return {"machine": np.asarray(p.name, dtype=object), "surface": np.full(n, p.ground.name, dtype=object),
+                "height_m": np.asarray(p.height, dtype=float)}
+
+    def polar_angle(self, pl):
+        """No polar angle off the globe (the lane is its height): NaN."""
+        return np.full(np.shape(pl)[1:], np.nan)
+
+    def _points(self, y, p: MachineGroundRun):
+        return mm.machine_points(y, p.machine, p.geometry(np.shape(y)[1:]))
+
+    def wall_conditions(self, p: MachineGroundRun) -> tuple:
+        """(status, condition [m]), each > 0 while the machine is on the
+        wall: where the wall rises from a floor, the tyre's lowest point
+        above it (the crown circle's lowest point, a tyre radius lower:
+        eq. MS7); where the wall has a top, the contact below it."""
+        ground, out = p.ground, []
+        top = float(getattr(ground, "highest_lane", np.inf))
+        mp = p.machine
+
+        def tyre_low(y):
+            e1z = y[5] / np.sqrt(_dot(y[3:6], y[3:6]))
+            return (y[2] - (mp.wheel_radius - mp.tyre_radius) * np.sqrt(np.maximum(1.0 - e1z * e1z, 0.0))
+                    - mp.tyre_radius - ground.lowest)
+
+        if hasattr(ground, "highest_lane") and float(ground.contact(0.0)[0]) > 0:
+            out.append((RunStatus.HITS_FLOOR, tyre_low))
+        if np.isfinite(top):
+            out.append((RunStatus.OVER_THE_TOP, lambda y: top - (self._points(y, p)["P"][2] - ground.lowest)))
+        return tuple(out)
+
+    def fall_note(self, p: MachineGroundRun, theta, alpha):
+        """As on the globe (the lane's linearisation on its ground, docs/machine.md, "On any ground")."""
+        from deathsphere.physics.machine_dynamics import yaw_is_determined
+        from deathsphere.physics.machine_dynamics_on import machine_stability_on
+        from deathsphere.physics.stability.verdict import Verdict
+
+        n = int(np.size(alpha))
+        notes = np.full(n, "", dtype=object)
+        mp = p.machine.flat(n)
+        ok = np.isfinite(alpha) & np.broadcast_to(yaw_is_determined(mp), (n,))
+        if not ok.any():
+            return notes
+        idx = np.flatnonzero(ok)
+        st = machine_stability_on(np.asarray(p.lane, dtype=float)[idx], np.asarray(alpha, dtype=float)[idx], p.ground,
+                                  np.broadcast_to(np.asarray(p.g, dtype=float), (n,))[idx], mp.take(idx))
+        for i, verdict, rate in zip(idx, st["verdict"], st["growth_rate"]):
+            if verdict == Verdict.UNSTABLE:
+                notes[i] = (f"; its steady lane is unstable (growth rate {rate:.3g} /s with the steering "
+                            "locked; docs/machine.md, \"On any ground\"): a kick grows until the machine falls -- a "
+                            "rider holds such a lap by steering")
+        return notes
+
+    def ode(self, p: MachineGroundRun, frame_rate):
+        n = int(np.size(p.a))
+        mp, g = p.machine, np.asarray(p.g)
+        fr = np.broadcast_to(np.asarray(frame_rate, dtype=float), (n,))
+        mcol, gcol = mp.map(lambda x: np.asarray(x)[:, None]), g[:, None]
+        flat, column = p.geometry((n,)), p.geometry((n, 1))
+
+        def fun(t, y):
+            y = np.asarray(y)
+            if y.ndim == 1:
+                return rhs_of_geometry(y.reshape(9, n), g, mp, flat, fr).reshape(-1)
+            m = y.shape[1]
+            return rhs_of_geometry(y.reshape(9, n, m), gcol, mcol, column, fr[:, None]).reshape(9 * n, m)
+
+        return fun
+
+    def rhs(self, y, p: MachineGroundRun):
+        return rhs_of_geometry(y, p.g, p.machine, p.geometry(np.shape(y)[1:]))
+
+    def contact_force(self, y, p: MachineGroundRun):
+        return mm.machine_contact_force(y, p.ground, p.g, p.machine, p.geometry(np.shape(y)[1:]))
+
+    def contact_point(self, y, p: MachineGroundRun):
+        return self._points(y, p)["P"]
+
+    def project(self, y, p: MachineGroundRun):
+        from deathsphere.physics.machine_dynamics_on import machine_project_on
+
+        return machine_project_on(y, p.ground, p.machine)
+
+    def energy(self, y, p: MachineGroundRun):
+        return mm.machine_energy(y, p.g, p.machine, p.geometry(np.shape(y)[1:]))[0]
+
+    def energy_scale(self, y, p: MachineGroundRun, e0):
+        return np.abs(mm.machine_energy(y, p.g, p.machine, p.geometry(np.shape(y)[1:]))[1]) + p.g * p.r
+
+    def tilt_angle(self, y, p: MachineGroundRun, pvec, zp):
+        pts = self._points(y, p)
+        return np.arctan2(-np.sum(zp * pts["e3"], axis=0), -np.sum(zp * pts["e1"], axis=0))
+
+    def residual(self, y, p: MachineGroundRun):
+        crown = p.geometry(np.shape(y)[1:])(y[0:3], y[3:6], p.machine.wheel_radius, p.machine.tyre_radius)
+        axis = np.abs(np.sqrt(_dot(y[3:6], y[3:6])) - 1.0)
+        return np.maximum(axis, np.abs(crown.residual()) / p.r)
+
+    def extras(self, y, p: MachineGroundRun) -> dict:
+        mp = p.machine
+        geometry = p.geometry(np.shape(y)[1:])
+        vG = mm.machine_rates(y, mp, geometry)["vG"]
+        pts = mm.machine_points(y, mp, geometry)
+        H, P = pts["H"], pts["P"]
+        height, rho = P[2] - p.ground.lowest, np.hypot(P[0], P[1])
+        clearance = np.asarray(p.ground.clearance(np.hypot(H[0], H[1]), H[2]), dtype=float)
+        return {"v_cm_m_s": np.sqrt(_dot(vG, vG)), "head_clearance_m": clearance, "height_m": height,
+                "rho_contact_m": rho, "height_drift_m": np.abs(height - p.height), "rho_drift_m": np.abs(rho - p.r)}
+
+
 PAPER = _Paper()
 MACHINE = _Machine()
 ON_GROUND = _OnGround()
+MACHINE_ON_GROUND = _MachineOnGround()
 
 
 def model_of(params):
@@ -477,4 +649,6 @@ def model_of(params):
     sec. 7), else :data:`PAPER` (eqs. 2-7b in general form)."""
     if isinstance(params, MachineRun):
         return MACHINE
+    if isinstance(params, MachineGroundRun):
+        return MACHINE_ON_GROUND
     return ON_GROUND if isinstance(params, GroundRun) else PAPER

@@ -19,7 +19,7 @@ from deathsphere.physics import dynamics as dyn
 from deathsphere.physics import machine_motion as mm
 from deathsphere.records.paper_bodies import Ball
 from deathsphere.requests.decode import paper_body_named
-from deathsphere.simulation.bodies import MACHINE, ON_GROUND, PAPER, broadcast_params, model_of, take
+from deathsphere.simulation.bodies import MACHINE, MACHINE_ON_GROUND, ON_GROUND, PAPER, broadcast_params, model_of, take
 
 __all__ = ["frame_geometry", "machine_frame_geometry", "ground_frame_geometry", "spin_rate", "body_frames", "refine_samples", "MAX_TURN_RAD",
            "MAX_MOVE_R"]
@@ -171,7 +171,8 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
     """What the 3-D view draws of one machine at its samples (beyond the
     paper; docs/machine.md eqs. M16-M18, docs/simulation.md "3-D view").
 
-    ``params`` is one body's :class:`~deathsphere.simulation.bodies.MachineRun`.
+    ``params`` is one body's :class:`~deathsphere.simulation.bodies.MachineRun`
+    (or :class:`~deathsphere.simulation.bodies.MachineGroundRun` off the globe).
     The keys of :func:`frame_geometry`, with the machine's meanings where
     they differ: ``centre`` the wheel centre C, ``e3`` the unit vector from
     C towards the crown (the up-axis is -e3), ``contact`` P, ``spin`` the
@@ -187,9 +188,10 @@ def machine_frame_geometry(t, state, params, psi0=0.0):
     t = np.asarray(t, dtype=np.float64)
     state = np.asarray(state, dtype=np.float64)
     mp = params.machine
-    pts = mm.machine_points(state, mp)
-    rates = mm.machine_rates(state, mp)
-    f = mm.machine_contact_force(state, params.ground, params.g, mp)
+    geometry = params.geometry(np.shape(state)[1:])
+    pts = mm.machine_points(state, mp, geometry)
+    rates = mm.machine_rates(state, mp, geometry)
+    f = mm.machine_contact_force(state, params.ground, params.g, mp, geometry)
     e1, e3 = pts["e1"], pts["e3"]
     rate = rates["spin"]
     steps = 0.5 * (rate[1:] + rate[:-1]) * np.diff(t)
@@ -370,9 +372,9 @@ def body_frames(summary, states: dict, *, refine: bool = True, params=None) -> d
         if not sel.size:
             continue
         t, y = t_all[sel], state[:, sel]
-        if params is not None and model_of(params) in (MACHINE, ON_GROUND):
+        if params is not None and model_of(params) in (MACHINE, MACHINE_ON_GROUND, ON_GROUND):
             one = take(params, i)
-            geometry = machine_frame_geometry if model_of(params) is MACHINE else ground_frame_geometry
+            geometry = ground_frame_geometry if model_of(params) is ON_GROUND else machine_frame_geometry
         else:
             one = dyn.BodyParams(*(float(summary[name][i]) for name in ("a_m", "r_m", "k", "g_m_s2")),
                                  summary["side"][i] == "outside", isinstance(paper_body_named(summary["body"][i]), Ball))

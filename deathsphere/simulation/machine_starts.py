@@ -22,7 +22,7 @@ from deathsphere.simulation.bodies import MachineRun, take
 from deathsphere.simulation.starts import Starts, start_status
 from deathsphere.simulation.status import RunStatus
 
-__all__ = ["machine_starts", "machine_run"]
+__all__ = ["machine_starts", "machine_run", "machine_ground_run", "machine_ground_starts"]
 
 
 def machine_run(machine, ground: Sphere, g: float, n: int = 1) -> MachineRun:
@@ -83,6 +83,61 @@ def machine_starts(bodies: MachineRun, theta_deg, alpha_deg, *, perturb_deg=0.0,
         state=state, params=b, frame=np.broadcast_to(np.eye(3), (n, 3, 3)).copy(), input_row=rows,
         body=np.full(n, "machine", dtype=object), side=np.full(n, "inside", dtype=object),
         orbit=np.full(n, "horizontal", dtype=object), theta=th, alpha=al, theta_deg=th_d, alpha_deg=al_d,
+        rate=rate, turning=np.where(ok, rate, 0.0), period=period, phi0=np.zeros(n),
+        speed=np.where(ok, orb["v_cm"], np.nan), omega3=np.full(n, np.nan), perturb_deg=kick,
+        perturb_theta_deg=np.zeros(n), mu=np.broadcast_to(np.asarray(mu, dtype=float), (n,)).copy(),
+        status=status, reason=reason)
+
+
+def machine_ground_run(machine, ground, g: float, lane, n: int = 1):
+    """:class:`~deathsphere.simulation.bodies.MachineGroundRun` of n copies
+    of one machine record on ``ground`` (not the globe) under gravity ``g``,
+    starting on ``lane`` [m] (its height; on flat ground the turn radius),
+    broadcast to n (beyond the paper; docs/machine.md, "On any ground")."""
+    from deathsphere.simulation.bodies import MachineGroundRun
+
+    arrays = machine_arrays(machine).map(lambda x: np.full(n, float(x)))
+    lane = np.broadcast_to(np.asarray(lane, dtype=float), (n,)).copy()
+    rho, z = ground.contact(np.clip(lane, 0.0, getattr(ground, "highest_lane", np.inf)))
+    return MachineGroundRun(arrays, np.full(n, float(g)), np.full(n, getattr(machine, "name", "custom"), dtype=object),
+                            np.broadcast_to(np.asarray(rho, dtype=float), (n,)).copy(),
+                            np.broadcast_to(np.asarray(z, dtype=float) - ground.lowest, (n,)).copy(), lane, ground)
+
+
+def machine_ground_starts(bodies, alpha_deg, *, perturb_deg=0.0, mu=math.inf, input_row=None) -> Starts:
+    """Machines on steady lanes of a ground other than the globe (beyond the
+    paper; docs/machine.md, "On any ground"): ``bodies`` a
+    :class:`~deathsphere.simulation.bodies.MachineGroundRun`
+    (:func:`machine_ground_run`, its lanes), at tilt ``alpha_deg``, kicked
+    by ``perturb_deg`` about the direction of travel through the crown
+    point (:func:`~deathsphere.physics.machine_dynamics_on.machine_start_on`).
+    Lanes without a steady orbit (eqs. MS1-MS7: no_fit, no_orbit) get that
+    status and ``ride``'s reason and are not integrated."""
+    from deathsphere.physics.machine_dynamics_on import machine_start_on
+    from deathsphere.physics.machine_surface import ride_orbit_on
+
+    n = int(np.size(bodies.a))
+    al_d, kick = (np.broadcast_to(np.asarray(x, dtype=float), (n,)).copy() for x in (alpha_deg, perturb_deg))
+    if not np.all(np.isfinite(al_d)) or not np.all(np.isfinite(kick)):
+        raise ValueError("alpha and perturb_deg must be finite (degrees)")
+    b = bodies
+    al, d_al = np.deg2rad(al_d), np.deg2rad(kick)
+    orb = ride_orbit_on(b.lane, al, b.ground, b.g, b.machine)
+    status, reason = start_status(orb)
+    ok = status == RunStatus.PENDING
+    rate = np.where(ok, orb["omega"], np.nan)
+    state = np.full((9, n), np.nan)
+    if ok.any():
+        one = take(b, ok)
+        state[:, ok], _ = machine_start_on(one.lane, al[ok], d_al[ok], one.ground, one.g, one.machine)
+    period = np.where(ok, 2 * np.pi / np.where(ok, rate, 1.0), np.nan)
+    rows = (np.arange(1, n + 1, dtype=np.int64) if input_row is None
+            else np.broadcast_to(np.asarray(input_row, dtype=np.int64), (n,)).copy())
+    return Starts(
+        state=state, params=b, frame=np.broadcast_to(np.eye(3), (n, 3, 3)).copy(), input_row=rows,
+        body=np.full(n, "machine", dtype=object), side=np.full(n, "inside", dtype=object),
+        orbit=np.full(n, "horizontal", dtype=object), theta=np.full(n, np.nan), alpha=al,
+        theta_deg=np.full(n, np.nan), alpha_deg=al_d,
         rate=rate, turning=np.where(ok, rate, 0.0), period=period, phi0=np.zeros(n),
         speed=np.where(ok, orb["v_cm"], np.nan), omega3=np.full(n, np.nan), perturb_deg=kick,
         perturb_theta_deg=np.zeros(n), mu=np.broadcast_to(np.asarray(mu, dtype=float), (n,)).copy(),

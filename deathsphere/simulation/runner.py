@@ -213,7 +213,7 @@ class Simulation:
     def ground(self):
         """The ground record of a run off the globe (docs/simulation.md, "On
         any ground"), None in the globe."""
-        return self.starts.params.ground if self.model is ON_GROUND else None
+        return self.starts.params.ground if getattr(self.model, "off_globe", False) else None
 
     @property
     def n_chunks(self) -> int:

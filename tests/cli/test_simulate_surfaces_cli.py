@@ -36,6 +36,16 @@ def test_the_drum_run_starts_on_orbits_steady_orbit_and_appends_its_columns(run)
     assert summary["surface"] == "cylinder" and summary["status"] == "completed"
 
 
+def test_a_machine_on_the_drum_appends_the_machines_columns_and_the_walls(run):
+    res = run("simulate", *DRUM, "--machine", "stunt125", "--alpha", "10", "--periods", "0.02",
+              "--summary-only", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    (summary,) = rows(res.stdout)
+    assert list(summary)[-6:] == ["machine", "min_head_clearance_m", "surface", "height_m", "max_height_drift_m",
+                                  "max_rho_drift_m"]
+    assert summary["surface"] == "cylinder" and summary["body"] == "machine" and summary["theta_deg"] == ""
+
+
 @pytest.mark.parametrize("held", [("--speed", "30mph"), ("--com-speed", "12"), ("--omega", "2.5")])
 def test_a_wheel_on_the_drum_given_its_speed_or_rate_starts_on_the_tilt_orbit_finds(run, held):
     res = run("simulate", *DRUM, *held, "--periods", "0.05", "--summary-only", "--format", "csv")
@@ -57,7 +67,8 @@ def test_a_wheel_on_the_drum_given_its_speed_or_rate_starts_on_the_tilt_orbit_fi
     (DRUM + ("--speed", "30mph", "--branch", "3"), "--branch"),
     (DRUM + ("--alpha", "10", "--side", "outside"), "--side"),
     (DRUM + ("--alpha", "10", "--vertical"), "--vertical"),
-    (DRUM + ("--alpha", "10", "--machine", "stunt125"), "--machine"),
+    (DRUM + ("--alpha", "10", "--com-speed", "20", "--machine", "stunt125"), "--com-speed"),
+    (DRUM + ("--alpha", "10", "--machine", "stunt125", "--body", "sphere"), "--machine"),
     (("--surface", "plane", "--height", "2", "--alpha", "10"), "--height"),
     (("--surface", "plane", "--alpha", "10"), "--turn-radius"),
     (("--surface", "cone", "--diameter", "6", "--height", "2", "--alpha", "10"), "--wall-angle"),

@@ -129,3 +129,25 @@ class Cone:
         zero = np.zeros(x.shape)
         hxx, hxy, hyy = s * (1 - ux * ux) / rho, -s * ux * uy / rho, s * (1 - uy * uy) / rho
         return np.stack((np.stack((hxx, hxy, zero)), np.stack((hxy, hyy, zero)), np.stack((zero, zero, zero))))
+
+    def offset(self, t):
+        """The parallel surface a distance ``t`` [m] inside: the cone of
+        the same wall angle whose generator is moved by t along the inward
+        normal (-sin beta, cos beta), so that it meets the floor's plane at
+        radius - t / sin(beta) (its apex moved along the axis by
+        -t / cos(beta)); the same wall height."""
+        return Cone(self.radius - t / math.sin(self.wall_angle_rad), self.wall_angle_rad, self.wall_height)
+
+    def quadric(self):
+        """The cone as a quadric of revolution (a_rho, a_z, b_z, c) (as
+        :meth:`Sphere.quadric <deathsphere.physics.ground.Sphere.quadric>`):
+        F = ((x^2 + y^2) s^2 - (radius s + z c)^2) / 2, s, c = sin, cos of
+        the wall angle.  It is (rho s - radius s - z c) (rho s + radius s +
+        z c) / 2, the generator's signed distance times rho s on the wall:
+        the same zero set, sign and normal near the wall as :meth:`implicit`,
+        and its second derivatives constant (the equations of motion of a
+        tyre's crown point need no third derivative)."""
+        s = math.sin(self.wall_angle_rad)
+        c = 0.0 if self.wall_angle_rad == math.pi / 2 else math.cos(self.wall_angle_rad)
+        r = np.asarray(self.radius, dtype=float)
+        return s * s, -c * c, -r * s * c, -0.5 * (r * s) ** 2

@@ -78,3 +78,13 @@ class Cylinder:
         shape = np.broadcast(x, y, z).shape
         h = np.diag([1.0, 1.0, 0.0]).reshape((3, 3) + (1,) * len(shape))
         return np.broadcast_to(h, (3, 3) + shape)
+
+    def offset(self, t):
+        """The parallel surface a distance ``t`` [m] inside: the coaxial
+        drum of radius radius - t (the same wall height)."""
+        return Cylinder(self.radius - t, self.wall_height)
+
+    def quadric(self):
+        """F = (x^2 + y^2 - radius^2) / 2 as a quadric of revolution
+        (a_rho, a_z, b_z, c) (:meth:`Sphere.quadric <deathsphere.physics.ground.Sphere.quadric>`)."""
+        return 1.0, 0.0, 0.0, -0.5 * np.asarray(self.radius, dtype=float) ** 2

@@ -266,6 +266,13 @@ class Profile:
             s = np.clip(s - step, 0.0, self._s_end)
         return s, q
 
+    def offset(self, t):
+        """None: the parallel surface of a sampled meridian is not a
+        profile of the same samples (nor a quadric), and the single-contact
+        machine's equations of motion, which move the tyre's crown point on
+        it, are not derived here (docs/machine.md, "On any ground")."""
+        return None
+
     def clearance(self, rho, z):
         """A point's distance [m] from the interpolated meridian, positive
         on the inside: (q - P) . n at the nearest point P (past an end, the

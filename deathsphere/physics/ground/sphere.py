@@ -81,3 +81,13 @@ class Sphere:
     def hessian(self, x, y, z):
         shape = np.broadcast(x, y, z).shape
         return np.broadcast_to(np.eye(3).reshape((3, 3) + (1,) * len(shape)), (3, 3) + shape)
+
+    def offset(self, t):
+        """The parallel surface a distance ``t`` [m] inside (a tyre's crown
+        circle's centre moves on it): the concentric sphere of radius r - t."""
+        return Sphere(self.radius - t)
+
+    def quadric(self):
+        """F = (x^2 + y^2 + z^2 - r^2) / 2 as a quadric of revolution
+        (a_rho, a_z, b_z, c): F = a_rho (x^2 + y^2) / 2 + a_z z^2 / 2 + b_z z + c."""
+        return 1.0, 1.0, 0.0, -0.5 * np.asarray(self.radius, dtype=float) ** 2

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 __all__ = [
     "EXACT", "EXACT_STEER_LOCKED", "FLOQUET", "NOT_ANALYSED_K0", "NOT_ANALYSED_PARTICLE",
-    "NOT_ANALYSED_POINT_MASS", "NOT_ANALYSED_OFF_GLOBE", "METHOD_TEXT", "method_text",
+    "NOT_ANALYSED_POINT_MASS", "NOT_ANALYSED_OFF_GLOBE", "NOT_ANALYSED_PROFILE", "METHOD_TEXT", "method_text",
 ]
 
 #: The exact linearisation of the steady orbit (docs/stability.md).
@@ -27,8 +27,12 @@ NOT_ANALYSED_K0 = "not-analysed-k0"
 NOT_ANALYSED_PARTICLE = "not-analysed-particle"
 #: A machine with no yaw inertia and no spinning wheels (the point-mass limit).
 NOT_ANALYSED_POINT_MASS = "not-analysed-point-mass"
-#: The single-contact machine on a surface other than the globe.
+#: The single-contact machine on a surface other than the globe (no longer
+#: written by ``ride``, whose drum, cone and flat ground are analysed; kept
+#: so that a table written before reads back with its sentence).
 NOT_ANALYSED_OFF_GLOBE = "not-analysed-off-globe"
+#: The single-contact machine on a profile: its parallel surface is not a quadric.
+NOT_ANALYSED_PROFILE = "not-analysed-profile"
 
 #: What each label means, in a sentence.
 METHOD_TEXT = {
@@ -43,6 +47,9 @@ METHOD_TEXT = {
                               "docs/machine.md sec. 5)"),
     NOT_ANALYSED_OFF_GLOBE: ("not analysed: the machine's stability is derived on the globe only "
                              "(docs/machine.md sec. 5)"),
+    NOT_ANALYSED_PROFILE: ("not analysed: the machine's equations of motion move its tyre's crown point on the "
+                           "ground's parallel surface, derived for the globe, a drum, a cone and flat ground "
+                           "(a quadric of revolution), not for a profile (docs/machine.md, \"On any ground\")"),
 }
 
 
