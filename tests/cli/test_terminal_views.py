@@ -52,7 +52,7 @@ ANSI = re.compile(r"\x1b\[[0-?]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x
 #: (a sweep's example over 16,000 orbits proves nothing more than over 20).
 MAX_RANGE_POINTS = 40
 #: A simulation runs at most this many periods (or seconds, where it has no period) here.
-MAX_PERIODS = 2
+MAX_PERIODS = 1
 
 
 @dataclass(frozen=True)

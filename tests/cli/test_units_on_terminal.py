@@ -8,7 +8,7 @@ import re
 
 import pytest
 from rich.cells import cell_len
-from test_terminal_views import ANSI, run_in_pty
+from test_terminal_views import ANSI, run_in_pty, run_on_terminal
 
 WIDTHS = (80, 100)
 ACT = """
@@ -25,10 +25,28 @@ speed = 8.0
 
 
 def screen(args, columns: int) -> str:
-    text = ANSI.sub("", run_in_pty(args, columns))
-    assert "Traceback" not in text, text
+    """What a terminal ``columns`` wide shows of ``deathsphere ARGS``: the
+    in-process terminal, which test_terminal_views proves shows what a
+    pseudo-terminal shows (and :func:`test_the_in_process_screen_is_the_pseudo_terminals`
+    for the units' views), without a fresh interpreter per view."""
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        shown = run_on_terminal(args, columns, monkeypatch)
+    assert shown.traceback is None, shown.traceback
+    text = ANSI.sub("", shown.stdout + shown.stderr)
     assert max(cell_len(line) for line in text.splitlines()) <= columns, text
     return text
+
+
+@pytest.mark.parametrize("args, columns", [
+    (("ride", "--diameter", "16ft", "--height", "5ft", "--speed", "40km/h"), 80),
+    (("ride", "--machine", "stunt125-steer", "--steer", "free", "--diameter", "16ft", "--height", "3:6:1ft",
+      "--speed", "30km/h", "--units", "imperial"), 100),
+])
+def test_the_in_process_screen_is_the_pseudo_terminals(args, columns):
+    """The units' views as :func:`screen` shows them are, line for line, what
+    a pseudo-terminal of the same size shows."""
+    real = [line.rstrip() for line in ANSI.sub("", run_in_pty(args, columns)).splitlines() if line.strip()]
+    assert real == [line.rstrip() for line in screen(args, columns).splitlines() if line.strip()]
 
 
 def assert_rows(text: str, *patterns: str):
