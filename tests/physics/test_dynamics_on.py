@@ -13,7 +13,6 @@ from deathsphere.physics import dynamics_on as don
 from deathsphere.physics.ground import Cone, Cylinder, Profile, Sphere
 from deathsphere.physics.stability import sphere_stability, wheel_stability
 from deathsphere.physics.stability.on_ground import ball_stability_on, wheel_stability_on
-from deathsphere.simulation.integrator import integrate
 
 R, A, G = 3.0, 0.3, 9.81
 GROUNDS = [Cylinder(5.0), Cone(5.0, np.radians(80)), Cone(5.0, np.radians(100))]
@@ -86,11 +85,6 @@ def test_golfers_dilemma_linearisation(k):
     # eq. G9: the bobbing frequency Omega sqrt(k/(k+1)), independent of a and the drum
     assert np.allclose(out["freq_fast"], om * np.sqrt(k / (k + 1)), rtol=1e-10, atol=0)
     assert np.all(np.abs(out["eigenvalues"].real) < 1e-10 * out["rate_scale"][:, None])
-
-
-def _run(fun, X0, T, n_eval=4001, rtol=1e-12):
-    t = np.linspace(0.0, T, n_eval)
-    return integrate(fun, (0.0, T), X0.reshape(-1), (), method="DOP853", rtol=rtol, atol=rtol / 10, t_eval=t).sol
 
 
 # ---------------------------------------------------------------- the outside
