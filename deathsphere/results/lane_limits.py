@@ -12,7 +12,7 @@ import numpy as np
 from deathsphere.physics import lane_region
 from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.requests.decode import paper_body_codes
-from deathsphere.results.limits import NOT_A_WHEEL, _degrees, _limit, _speed
+from deathsphere.results.limits import NOT_A_WHEEL, _degrees, _limit, _speed, interval_rows
 from deathsphere.table import Table
 
 #: The request fields of ``limits --surface`` (an --input file's columns).
@@ -45,18 +45,7 @@ def intervals_on(ground, height: np.ndarray, a, k, g, outside, mu, max_g) -> Tab
     the speed range over each; a lane without any gives one row with
     ``intervals`` = 0."""
     iv = lane_region.allowed_alpha_on(ground, height, a, k, g, outside, mu, max_g)
-    count = np.asarray(iv.count).reshape(-1)
-
-    def slots_of(field):
-        x = np.asarray(getattr(iv, field)).reshape(count.size, -1)
-        return x if x.shape[1] else np.full((count.size, 1), np.nan)
-
-    slots = np.maximum(count, 1)
-    row = np.repeat(np.arange(count.size), slots)
-    j = np.concatenate([np.arange(s) for s in slots]) if row.size else np.empty(0, int)
-    present = j < count[row]
-    lo, hi, vmin, vmax = (np.where(present, slots_of(f)[row, np.minimum(j, slots_of(f).shape[1] - 1)], np.nan)
-                          for f in ("lo", "hi", "speed_min", "speed_max"))
+    row, j, count, present, lo, hi, vmin, vmax = interval_rows(iv)
     lift, rho, beta = _lane_geometry(ground, np.asarray(height, dtype=float).reshape(-1)[row])
     off = np.asarray(height, dtype=float).reshape(-1)[row]
     on_wall = (off >= 0) & (off <= getattr(ground, "highest_lane", math.inf))

@@ -106,25 +106,36 @@ def boundary_table(a_over_r: float, k: float, outside: bool, mu: float, max_g: f
                   "a_over_r": np.full(sum(map(len, names)), a_over_r), "k": np.full(sum(map(len, names)), k)})
 
 
+def interval_rows(iv):
+    """The rows of an intervals table from NaN-padded intervals per lane
+    (:class:`~deathsphere.physics.region.AlphaIntervals` or its lanes' kin):
+    one row per interval, one for a lane with none.  Returns (row, j,
+    count, present, lo, hi, speed_min, speed_max): each row's lane and
+    interval index, the lane's count, whether the row is an interval, and
+    its ends and speed range (NaN where it is none)."""
+    count = np.asarray(iv.count).reshape(-1)
+
+    def slots_of(field):
+        # one NaN slot when no lane has any interval (the arrays are then (n, 0))
+        x = np.asarray(getattr(iv, field)).reshape(count.size, -1)
+        return x if x.shape[1] else np.full((count.size, 1), np.nan)
+
+    slots = np.maximum(count, 1)
+    row = np.repeat(np.arange(count.size), slots)
+    j = np.concatenate([np.arange(s) for s in slots]) if row.size else np.empty(0, int)
+    present = j < count[row]
+    lo, hi, vmin, vmax = (np.where(present, slots_of(f)[row, np.minimum(j, slots_of(f).shape[1] - 1)], np.nan)
+                          for f in ("lo", "hi", "speed_min", "speed_max"))
+    return row, j, count, present, lo, hi, vmin, vmax
+
+
 def intervals_table(setup: Setup, theta_deg: np.ndarray, max_g: float) -> Table:
     """The open intervals of alpha with a feasible orbit at each theta, with
     the speed range over each; a theta without any gives one row with
     ``intervals`` = 0."""
     iv = region.allowed_alpha(np.deg2rad(theta_deg), setup.a, setup.r, setup.k, setup.g,
                               setup.side == "outside", setup.mu, max_g)
-    count = np.asarray(iv.count).reshape(-1)
-
-    def slots_of(field):
-        # one NaN slot when no theta has any interval (the arrays are then (n, 0))
-        x = np.asarray(getattr(iv, field)).reshape(count.size, -1)
-        return x if x.shape[1] else np.full((count.size, 1), np.nan)
-
-    slots = np.maximum(count, 1)
-    row = np.repeat(np.arange(theta_deg.size), slots)
-    j = np.concatenate([np.arange(s) for s in slots]) if row.size else np.empty(0, int)
-    present = j < count[row]
-    lo, hi, vmin, vmax = (np.where(present, slots_of(f)[row, np.minimum(j, slots_of(f).shape[1] - 1)], np.nan)
-                          for f in ("lo", "hi", "speed_min", "speed_max"))
+    row, j, count, present, lo, hi, vmin, vmax = interval_rows(iv)
     n = row.size
     return Table({
         "theta_deg": theta_deg[row], "intervals": count[row],
