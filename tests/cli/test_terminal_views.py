@@ -51,8 +51,9 @@ ANSI = re.compile(r"\x1b\[[0-?]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x
 #: Grid ranges longer than this are run on a coarser grid of the same span
 #: (a sweep's example over 16,000 orbits proves nothing more than over 20).
 MAX_RANGE_POINTS = 40
-#: A simulation runs at most this many periods (or seconds, where it has no period) here.
-MAX_PERIODS = 1
+#: A simulation runs at most this many periods (or seconds, where it has no period) here: its view
+#: is laid out the same over a quarter of a lap as over twenty.
+MAX_PERIODS = 0.25
 
 
 @dataclass(frozen=True)
