@@ -4,6 +4,7 @@ result table and the writers beside them and the views consuming tables.
 No module imports one above it, and no import circle exists."""
 
 import ast
+import functools
 import pathlib
 
 import deathsphere
@@ -11,8 +12,10 @@ import deathsphere
 ROOT = pathlib.Path(deathsphere.__file__).parent
 
 
+@functools.cache
 def _modules() -> dict[str, set[str]]:
-    """module -> the deathsphere modules it imports (anywhere in its body)."""
+    """module -> the deathsphere modules it imports (anywhere in its body);
+    read once, when a test first asks (not at collection, on every worker)."""
     names = {}
     for path in ROOT.rglob("*.py"):
         rel = path.relative_to(ROOT.parent).with_suffix("")
@@ -36,7 +39,23 @@ def _modules() -> dict[str, set[str]]:
     return graph
 
 
-GRAPH = _modules()
+class _Graph:
+    """The import graph, read when first used."""
+
+    def __getitem__(self, module):
+        return _modules()[module]
+
+    def __contains__(self, module):
+        return module in _modules()
+
+    def __iter__(self):
+        return iter(_modules())
+
+    def items(self):
+        return _modules().items()
+
+
+GRAPH = _Graph()
 
 
 def _layer(module: str) -> str:
