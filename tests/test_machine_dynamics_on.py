@@ -1,5 +1,6 @@
 """The single-contact machine's equations of motion and stability on the
-drum, the cone and flat ground (docs/machine.md, "On any ground"), each
+drum, the cone, flat ground and a profile (docs/machine.md, "On any
+ground" and "On a profile"), each
 held against something derived apart from them: the globe's own
 equations, the steady lanes' closed forms (MS1-MS4), central finite
 differences, the ground's distance function, and the limits where one
@@ -25,8 +26,10 @@ LANES = [
     (Cone(5.0, np.radians(45.0)), [1.0, 2.0], [45.0, 50.0]),
     (Cone(6.0, np.radians(100.0)), [1.0, 2.0], [5.0, 10.0]),
     (Plane(), [10.0, 20.0], [60.0, 70.0]),
+    # a profile: a bowl z = 0.08 rho^2 sampled every 0.2 m (its parallel surface by the meridian, MP1-MP5)
+    (Profile(np.linspace(0.0, 12.0, 61), 0.08 * np.linspace(0.0, 12.0, 61) ** 2), [1.0, 2.0], [30.0, 40.0]),
 ]
-IDS = ["drum", "well", "board-track", "leaning-in", "flat"]
+IDS = ["drum", "well", "board-track", "leaning-in", "flat", "bowl"]
 
 
 @pytest.mark.parametrize("ground", [Sphere(3.0), Cylinder(4.0), Cone(5.0, np.radians(80.0)),
@@ -49,13 +52,9 @@ def test_the_parallel_surface_is_a_tyre_radius_inside_and_its_quadric_vanishes_o
         np.testing.assert_allclose(cosine, -1.0, atol=1e-12)
 
 
-def test_a_profile_has_no_parallel_quadric_and_is_not_analysed():
+def test_a_profiles_parallel_surface_has_no_quadric():
     profile = Profile([5.0, 5.0, 5.0, 5.0], [0.0, 1.0, 2.0, 3.0])
-    assert profile.offset(0.1) is None
-    st = mo.machine_stability_on(np.array([1.0]), np.radians([10.0]), profile, G, STUNT)
-    assert np.isnan(st["growth_rate"]).all()
-    with pytest.raises(ValueError, match="quadric"):
-        mo.machine_rhs_on(np.ones((9, 1)), profile, G, STUNT)
+    assert mo.crown_quadric(profile, 0.1) is None
 
 
 @pytest.mark.parametrize("preset", sorted(PRESETS))

@@ -42,21 +42,28 @@ from __future__ import annotations
 
 import numpy as np
 
+from deathsphere.physics.crown_surfaces import QuadricCrown, crown_surface
 from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.machine_dynamics import reduced_jacobian, rhs_of_geometry
 from deathsphere.physics.machine_surface import contact_on, ride_orbit_on
 from deathsphere.physics.stability.reduction import COMPLEX_STEP, spectrum_from_invariants
+from deathsphere.physics.taylor import Taylor as _Taylor
+from deathsphere.physics.taylor import tcos_sin as _tcos_sin
+from deathsphere.physics.taylor import tcross as _tcross
+from deathsphere.physics.taylor import tdot as _tdot
+from deathsphere.physics.taylor import tunit as _tunit
+from deathsphere.physics.taylor import with_coefficient as _with
 from deathsphere.physics.vectors import cross as _cross
 from deathsphere.physics.vectors import dot as _dot
 
 __all__ = ["crown_quadric", "crown_geometry", "geometry_on", "machine_rhs_on", "machine_orbit_state_on",
-           "machine_start_on", "machine_project_on", "machine_jacobian_on", "machine_stability_on", "NO_QUADRIC",
+           "machine_start_on", "machine_project_on", "machine_jacobian_on", "machine_stability_on", "NO_PARALLEL",
            "NEWTON_STEPS"]
 
-#: Why a ground is not analysed: its parallel surface is not a quadric of revolution.
-NO_QUADRIC = ("the machine's equations of motion move the tyre's crown point on the ground's parallel surface, "
-              "derived for a quadric of revolution (the globe, a drum, a cone, flat ground): not for a profile")
+#: Why a ground is not analysed: it answers no parallel surface (every ground of the package has one).
+NO_PARALLEL = ("the machine's equations of motion move the tyre's crown point on the ground's parallel surface, "
+               "and this ground gives none")
 
 #: A Newton step [rad] after which phi is at round-off: quadratic
 #: convergence leaves an error of about its square, and a complex step's
@@ -74,152 +81,35 @@ NEWTON_STEPS = 8
 def crown_quadric(ground, t):
     """The quadric (a_rho, a_z, b_z, c) of ``ground``'s parallel surface a
     distance ``t`` [m] inside (MG1), each broadcast against t; None where
-    the ground has none (a profile).  Beyond the paper: docs/machine.md, "On any ground"."""
-    parallel = ground.offset(t)
-    if parallel is None:
-        return None
-    return tuple(np.asarray(x, dtype=float) for x in parallel.quadric())
-
-
-def _sum(*terms):
-    """The sum of the terms that are not None (a zero coefficient is None: no work); None if all are."""
-    out = None
-    for x in terms:
-        if x is not None:
-            out = x if out is None else out + x
-    return out
-
-
-def _times(f, x, y):
-    """f(x, y) (a product), None where either factor is None (zero)."""
-    return None if x is None or y is None else f(x, y)
-
-
-def _mul(x, y):
-    return x * y
-
-
-def _neg(x):
-    return None if x is None else -x
-
-
-class _Taylor:
-    """x(eps) = x0 + x1 eps + x2 eps^2 / 2, truncated: a value and its first
-    and second time derivatives.  Vectors carry a leading axis of 3; x2 may
-    carry more trailing axes than x0 (the trial accelerations).  A zero
-    coefficient is None (the value alone, or value and rate, cost only
-    their own arithmetic)."""
-
-    __slots__ = ("x0", "x1", "x2")
-    __array_ufunc__ = None
-
-    def __init__(self, x0, x1=None, x2=None):
-        self.x0, self.x1, self.x2 = x0, x1, x2
-
-    def __add__(self, o):
-        if isinstance(o, _Taylor):
-            return _Taylor(self.x0 + o.x0, _sum(self.x1, o.x1), _sum(self.x2, o.x2))
-        return _Taylor(self.x0 + o, self.x1, self.x2)
-
-    __radd__ = __add__
-
-    def __neg__(self):
-        return _Taylor(-self.x0, _neg(self.x1), _neg(self.x2))
-
-    def __sub__(self, o):
-        return self + (-o)
-
-    def __mul__(self, o):
-        if isinstance(o, _Taylor):
-            return _product(_mul, self, o)
-        return _Taylor(self.x0 * o, _times(_mul, self.x1, o), _times(_mul, self.x2, o))
-
-    __rmul__ = __mul__
-
-
-def _product(f, u: _Taylor, v: _Taylor) -> _Taylor:
-    """The jet of a bilinear product f (*, dot, cross): Leibniz's rule to second order."""
-    twice = _times(f, u.x1, v.x1)
-    return _Taylor(f(u.x0, v.x0), _sum(_times(f, u.x1, v.x0), _times(f, u.x0, v.x1)),
-                   _sum(_times(f, u.x2, v.x0), None if twice is None else 2 * twice, _times(f, u.x0, v.x2)))
-
-
-def _tdiv(x: _Taylor, y: _Taylor) -> _Taylor:
-    z0 = x.x0 / y.x0
-    z1 = _times(_mul, _sum(x.x1, _neg(_times(_mul, z0, y.x1))), 1.0 / y.x0)
-    two = _times(_mul, z1, y.x1)
-    z2 = _sum(x.x2, None if two is None else -2 * two, _neg(_times(_mul, z0, y.x2)))
-    return _Taylor(z0, z1, _times(_mul, z2, 1.0 / y.x0))
-
-
-def _tsqrt(x: _Taylor) -> _Taylor:
-    s0 = np.sqrt(x.x0)
-    s1 = _times(_mul, x.x1, 0.5 / s0)
-    sq = _times(_mul, s1, s1)
-    return _Taylor(s0, s1, _times(_mul, _sum(x.x2, None if sq is None else -2 * sq), 0.5 / s0))
-
-
-def _tdot(u: _Taylor, v: _Taylor) -> _Taylor:
-    return _product(_dot, u, v)
-
-
-def _tcross(u: _Taylor, v: _Taylor) -> _Taylor:
-    return _product(_cross, u, v)
-
-
-def _tunit(v: _Taylor) -> _Taylor:
-    return _tdiv(v, _tsqrt(_tdot(v, v)))
-
-
-def _tcos_sin(phi: _Taylor):
-    c, s = np.cos(phi.x0), np.sin(phi.x0)
-    p1, p2 = phi.x1, phi.x2
-    sq = _times(_mul, p1, p1)
-    return (_Taylor(c, _times(_mul, -s, p1), _sum(_times(_mul, -s, p2), _times(_mul, -c, sq))),
-            _Taylor(s, _times(_mul, c, p1), _sum(_times(_mul, c, p2), _times(_mul, -s, sq))))
-
-
-def _grad(quadric, X):
-    """N = grad F (3, ...) of the quadric at the point X (3, ...), array or jet."""
-    a_rho, a_z, b_z, _ = quadric
-    if isinstance(X, _Taylor):
-        return _Taylor(_grad(quadric, X.x0), None if X.x1 is None else _hess_dot(quadric, X.x1),
-                       None if X.x2 is None else _hess_dot(quadric, X.x2))
-    return np.stack((a_rho * X[0], a_rho * X[1], a_z * X[2] + b_z + 0 * X[2]))
-
-
-def _hess_dot(quadric, v):
-    """A v (3, ...) for the quadric's constant Hessian A = diag(a_rho, a_rho, a_z)."""
-    a_rho, a_z = quadric[0], quadric[1]
-    return np.stack((a_rho * v[0], a_rho * v[1], a_z * v[2]))
-
-
-def _with(jet: _Taylor, order: int, extra) -> _Taylor:
-    """``jet`` with ``extra`` added to its coefficient of ``order`` (1 or 2)."""
-    if order == 1:
-        return _Taylor(jet.x0, _sum(jet.x1, extra), jet.x2)
-    return _Taylor(jet.x0, jet.x1, _sum(jet.x2, extra))
+    it is no quadric (a profile's: :func:`crown_surface` takes either).
+    Beyond the paper: docs/machine.md, "On any ground"."""
+    surface = crown_surface(ground, t)
+    return surface.quadric if isinstance(surface, QuadricCrown) else None
 
 
 class _Crown:
-    """The crown point's geometry on a quadric parallel surface (MG1-MG3),
-    with the attributes and methods of
+    """The crown point's geometry on the ground's parallel surface (MG1-MG3;
+    on a profile MP4-MP5), with the attributes and methods of
     :class:`~deathsphere.physics.machine_dynamics.GeometryRates` (h1, e3,
     Q, P, C, t; :meth:`rates`, :meth:`e3_second`, :meth:`pitch_reaction`).
-    Built by :func:`crown_geometry` for one quadric."""
+    Built by :func:`crown_geometry` for one surface
+    (:mod:`deathsphere.physics.crown_surfaces`).  The feet of C and Q on a
+    profile's meridian are found once, at construction, and reused by the
+    rates and accelerations at the same point."""
 
-    quadric = None
+    surface = None
 
     def __init__(self, C, E, a, t):
         self.C, self.E, self.a_t, self.t = C, E, a - t, t
+        self._foot_C = self.surface.foot(C)
         jet = self._jet(_Taylor(C), _Taylor(E), None)
         self.h1, self.e3, self.Q, self.P = jet["e1"].x0, jet["e3"].x0, jet["Q"].x0, jet["P"].x0
         self.N, self.e2 = jet["N"].x0, jet["e2"].x0
 
-    def _frame(self, Cj: _Taylor, Ej: _Taylor):
+    def _frame(self, Cj: _Taylor, Ej: _Taylor, order):
         """e1 and the reference axes u, u x e1 of the wheel plane (MG1)."""
         e1 = _tunit(Ej)
-        NC = _grad(self.quadric, Cj)
+        NC = self.surface.normal(Cj, self._foot_C, order or 0)
         u = _tunit(NC - e1 * _tdot(e1, NC))
         return e1, u, _tcross(u, e1)
 
@@ -232,16 +122,19 @@ class _Crown:
     def _jet(self, Cj: _Taylor, Ej: _Taylor, order):
         """The geometry as jets; phi solved to ``order`` (None: the value by
         Newton's method; 1 or 2: that derivative from the lower ones)."""
-        e1, u, w = self._frame(Cj, Ej)
-        q, a_t = self.quadric, self.a_t
+        e1, u, w = self._frame(Cj, Ej, order)
+        surface, a_t = self.surface, self.a_t
         if order is None:
             phi0 = 0 * u.x0[0]
+            foot = self._foot_C
             for _ in range(NEWTON_STEPS):
                 c, s = np.cos(phi0), np.sin(phi0)
                 e3 = u.x0 * c + w.x0 * s
                 e2 = _cross(e3, e1.x0)
-                N = _grad(q, Cj.x0 + a_t * e3)
-                slope = a_t * _dot(e2, _hess_dot(q, e2)) - _dot(N, e3)
+                Q = Cj.x0 + a_t * e3
+                foot = surface.foot(Q, foot)
+                N, He2 = surface.normal_and_hess(Q, e2, foot)
+                slope = a_t * _dot(e2, He2) - _dot(N, e3)
                 step = _dot(N, e2) / slope
                 phi0 = phi0 - step
                 # converged: the error left is about the step's square
@@ -253,11 +146,15 @@ class _Crown:
             phi = _Taylor(phi.x0) if order == 1 else _Taylor(phi.x0, phi.x1)
         e3, e2 = self._at(phi, e1, u, w)
         Q = Cj + e3 * a_t
-        N = _grad(q, Q)
+        if order is None:
+            # the foot of the converged crown point (from the last step's)
+            self._foot_Q = surface.foot(Q.x0, foot)
+        foot = self._foot_Q
+        N = surface.normal(Q, foot, order or 0)
         if order is not None:
             # MG1 differentiated: the residual's `order`-th coefficient is slope * phi_order + rest
             g = _tdot(N, e2)
-            slope = a_t * _dot(e2.x0, _hess_dot(q, e2.x0)) - _dot(N.x0, e3.x0)
+            slope = a_t * _dot(e2.x0, surface.hess_dot(Q.x0, e2.x0, foot)) - _dot(N.x0, e3.x0)
             known = g.x1 if order == 1 else g.x2
             phi_k = -known / slope
             self._phi = _Taylor(phi.x0, phi_k) if order == 1 else _Taylor(phi.x0, phi.x1, phi_k)
@@ -265,7 +162,7 @@ class _Crown:
             turn = e2.x0 * phi_k
             e3, e2 = _with(e3, order, turn), _with(e2, order, -e3.x0 * phi_k)
             Q = _with(Q, order, turn * a_t)
-            N = _with(N, order, _hess_dot(q, turn) * a_t)
+            N = _with(N, order, surface.hess_dot(Q.x0, turn, foot) * a_t)
         else:
             self._phi = phi
         return {"e1": e1, "e3": e3, "e2": e2, "Q": Q, "N": N, "P": Q + _tunit(N) * self.t}
@@ -289,11 +186,8 @@ class _Crown:
 
     def residual(self):
         """F(Q)/|N(Q)| [m]: the crown point's distance outside its parallel
-        surface, to first order (0 on the constraint)."""
-        a_rho, a_z, b_z, c = self.quadric
-        Q = self.Q
-        F = 0.5 * a_rho * (Q[0] ** 2 + Q[1] ** 2) + 0.5 * a_z * Q[2] ** 2 + b_z * Q[2] + c
-        return F / np.sqrt(_dot(self.N, self.N))
+        surface, to first order (0 on the constraint; on a profile exactly)."""
+        return self.surface.value(self.Q, self._foot_Q) / np.sqrt(_dot(self.N, self.N))
 
     def pitch_reaction(self):
         """The pitch constraint's reaction per unit multiplier (MG3): (k, f),
@@ -301,43 +195,48 @@ class _Crown:
         e2 x n and the force f at Q about G, less the contact's share
         (P - G) x f; the axial row -((P - C) x f) . e1, f acting on the
         frame and not the wheels), f (3, ...) the force at Q."""
-        e1, e3, N, P, C = (x[:, 0] for x in (self.h1, self.e3, self.N, self.P, self.C))
+        e1, e3, N, P, C, Q = (x[:, 0] for x in (self.h1, self.e3, self.N, self.P, self.C, self.Q))
         e2 = _cross(e3, e1)
         sN = np.sqrt(_dot(N, N))
         n = N / sN
-        f = _hess_dot(self.quadric, e2 - n * _dot(n, e2)) / sN
+        foot = None if self._foot_Q is None else (self._foot_Q[0][0], tuple(d[0] for d in self._foot_Q[1]))
+        f = self.surface.hess_dot(Q, e2 - n * _dot(n, e2), foot) / sN
         k_euler = _cross(e2, n) - self.t * _cross(n, f)
         k_axial = -_dot(_cross(P - C, f), e1)
         return np.concatenate((k_euler, k_axial[None]), axis=0), f
 
 
-def crown_geometry(quadric):
+def crown_geometry(surface):
     """The crown point's geometry class for the parallel surface
-    ``quadric`` (from :func:`crown_quadric`): the ``geometry`` argument of
-    :func:`~deathsphere.physics.machine_dynamics.rhs_of_geometry` (beyond the paper; docs/machine.md, MG1-MG3)."""
-    return type("Crown", (_Crown,), {"quadric": quadric})
+    ``surface`` (a :mod:`~deathsphere.physics.crown_surfaces` surface from
+    :func:`crown_surface`, or a quadric's coefficients from
+    :func:`crown_quadric`): the ``geometry`` argument of
+    :func:`~deathsphere.physics.machine_dynamics.rhs_of_geometry` (beyond
+    the paper; docs/machine.md, MG1-MG3 and MP4-MP5)."""
+    if isinstance(surface, tuple):
+        surface = QuadricCrown(surface)
+    return type("Crown", (_Crown,), {"surface": surface})
 
 
 def geometry_on(ground, machine: MachineArrays):
-    """The crown point's geometry class of ``machine`` on ``ground`` (MG1-MG3;
-    beyond the paper, docs/machine.md, "On any ground"): the ``geometry``
-    argument of :mod:`deathsphere.physics.machine_motion`'s functions.
-    Raises ValueError on a ground without a parallel quadric."""
-    quadric = crown_quadric(ground, machine.tyre_radius)
-    if quadric is None:
-        raise ValueError(NO_QUADRIC)
-    return crown_geometry(quadric)
+    """The crown point's geometry class of ``machine`` on ``ground`` (MG1-MG3,
+    on a profile MP4-MP5; beyond the paper, docs/machine.md, "On any
+    ground"): the ``geometry`` argument of
+    :mod:`deathsphere.physics.machine_motion`'s functions.  Raises
+    ValueError on a ground without a parallel surface (:data:`NO_PARALLEL`)."""
+    surface = crown_surface(ground, machine.tyre_radius)
+    if surface is None:
+        raise ValueError(NO_PARALLEL)
+    return crown_geometry(surface)
 
 
 def machine_rhs_on(state, ground, g, machine: MachineArrays, frame_rate=0.0, forces=False):
     """d(state)/dt of the machine's exact equations on ``ground`` (beyond the
-    paper: docs/machine.md, MG1-MG3 with eqs. M16-M19; the arguments and returns of
+    paper: docs/machine.md, MG1-MG3 (a profile: MP4-MP5) with eqs. M16-M19;
+    the arguments and returns of
     :func:`~deathsphere.physics.machine_dynamics.machine_rhs`).  Raises
-    ValueError on a ground without a parallel quadric (:data:`NO_QUADRIC`)."""
-    quadric = crown_quadric(ground, machine.tyre_radius)
-    if quadric is None:
-        raise ValueError(NO_QUADRIC)
-    return rhs_of_geometry(state, g, machine, crown_geometry(quadric), frame_rate, forces)
+    ValueError on a ground without a parallel surface (:data:`NO_PARALLEL`)."""
+    return rhs_of_geometry(state, g, machine, geometry_on(ground, machine), frame_rate, forces)
 
 
 def _orbit_state(rho, z, sb, cb, alpha, g, p: MachineArrays):
@@ -453,7 +352,7 @@ def machine_jacobian_on(height, alpha, ground, g, p: MachineArrays):
     km = pick(np.where(np.isfinite(np.broadcast_to(km, (n,))), km, 0.0))
     pp = p.map(lambda x: pick(np.broadcast_to(x, (n,))))
     gg = pick(g)
-    geometry = crown_geometry(crown_quadric(ground, pp.tyre_radius))
+    geometry = crown_geometry(crown_surface(ground, pp.tyre_radius))
     X0, Om = _orbit_state(rho, z, sb, cb, al, gg, pp)
     step = COMPLEX_STEP
     ds = 1j * step

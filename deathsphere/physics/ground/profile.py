@@ -267,11 +267,28 @@ class Profile:
         return s, q
 
     def offset(self, t):
-        """None: the parallel surface of a sampled meridian is not a
-        profile of the same samples (nor a quadric), and the single-contact
-        machine's equations of motion, which move the tyre's crown point on
-        it, are not derived here (docs/machine.md, "On any ground")."""
-        return None
+        """The parallel surface a distance ``t`` [m] inside: the surface of
+        revolution whose meridian is this one moved by t along its inward
+        normal, evaluated from the spline itself
+        (:class:`~deathsphere.physics.ground.profile_offset.ParallelProfile`;
+        beyond the paper: docs/machine.md, "On a profile")."""
+        from deathsphere.physics.ground.profile_offset import ParallelProfile
+
+        return ParallelProfile(self, t)
+
+    def spline_parameter(self, height):
+        """The spline's chord parameter s of the lane at each ``height`` [m]."""
+        return self._lane(height)[0]
+
+    def spline_derivatives(self, s):
+        """The spline and its first three derivatives at its chord parameter
+        s (..., 2 each: rho, z), real or complex (a complex step passes
+        through)."""
+        return self._arc.derivatives(s)
+
+    def foot(self, rho, z):
+        """The spline parameter of the meridian's point nearest to each (rho, z) (clipped to the meridian)."""
+        return self._nearest(rho, z)[0]
 
     def clearance(self, rho, z):
         """A point's distance [m] from the interpolated meridian, positive

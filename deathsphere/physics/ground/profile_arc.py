@@ -40,6 +40,7 @@ class Arc:
 
     def __init__(self, x, c):
         self.x, self.c = np.asarray(x, dtype=float), np.asarray(c, dtype=float)
+        self._pieces = np.ascontiguousarray(self.c.transpose(1, 0, 2).reshape(self.c.shape[1], 8))
         self._nodes, self._weights = np.polynomial.legendre.leggauss(_GAUSS)
         pieces = np.arange(self.x.size - 1)
         self._knot_s = np.concatenate(([0.0], np.cumsum(self._piece_length(self.x[1:], pieces))))
@@ -54,7 +55,9 @@ class Arc:
         """(P, P', P'', P''') at t (..., 2 each: rho, z), on the pieces ``k`` (default: t's own)."""
         k = self.piece(t) if k is None else k
         dt = (t - self.x[k])[..., None]
-        a, b, c, d = (self.c[i, k] for i in range(4))
+        # one gather of the piece's four coefficients (of two columns each)
+        every = self._pieces[k]
+        a, b, c, d = every[..., 0:2], every[..., 2:4], every[..., 4:6], every[..., 6:8]
         return (((a * dt + b) * dt + c) * dt + d, (3 * a * dt + 2 * b) * dt + c, 6 * a * dt + 2 * b, 6 * a + 0 * dt)
 
     def _speed(self, t, k):

@@ -41,11 +41,15 @@ up) every ground answers, vectorised over heights:
   docs/two-wheeler.md sec. 12).
 * ``offset(t)``: the parallel surface a distance t [m] inside (the
   surface a torus tyre's crown circle's centre moves on), a ground of the
-  same kind, exact for the globe, the drum, the cone and flat ground; None
-  for a profile (not derived).  Its ``quadric()`` is the implicit function
-  as a quadric of revolution, (a_rho, a_z, b_z, c) with
+  same kind, exact for the globe, the drum, the cone and flat ground,
+  whose ``quadric()`` is the implicit function as a quadric of
+  revolution, (a_rho, a_z, b_z, c) with
   F = a_rho (x^2 + y^2) / 2 + a_z z^2 / 2 + b_z z + c (constant second
-  derivatives: the machine's equations of motion, docs/machine.md).
+  derivatives: the machine's equations of motion, docs/machine.md); for a
+  profile a :class:`~deathsphere.physics.ground.profile_offset.ParallelProfile`,
+  the meridian moved by t along its normal, which answers a point's
+  ``foot`` on the meridian and its distance inside instead (docs/machine.md,
+  "On a profile").
 
 Implementations: :class:`Sphere` (the globe, and the one place the paper's
 theta and a height convert), :class:`Cylinder` (the wall of death),
