@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from deathsphere.physics.taylor import Taylor, component, stack, tdiv, tsqrt
+from deathsphere.physics.taylor import Taylor
 
 __all__ = ["QuadricCrown", "MeridianCrown", "crown_surface"]
 
@@ -66,15 +66,27 @@ class QuadricCrown:
         return 0.5 * a_rho * (X[0] ** 2 + X[1] ** 2) + 0.5 * a_z * X[2] ** 2 + b_z * X[2] + c
 
 
-def _sq(x):
-    return x * x
+def _unit_jet(v0, v1, v2):
+    """The unit vector of a 2-vector v (2, ...) and its norm, each with its
+    first and second rates (None where v's are): s = |v|, u = v / s,
+    s1 = v0.v1 / s, u1 = (v1 - u s1) / s, s2 = (|v1|^2 + v0.v2 - s1^2) / s,
+    u2 = (v2 - 2 u1 s1 - u s2) / s."""
+    s0 = np.sqrt(v0[0] * v0[0] + v0[1] * v0[1])
+    u0 = v0 / s0
+    s1 = s2 = u1 = u2 = None
+    if v1 is not None:
+        s1 = (v0[0] * v1[0] + v0[1] * v1[1]) / s0
+        u1 = (v1 - u0 * s1) / s0
+    if v2 is not None:
+        s2 = (v1[0] * v1[0] + v1[1] * v1[1] + v0[0] * v2[0] + v0[1] * v2[1] - s1 * s1) / s0
+        u2 = (v2 - 2 * u1 * s1 - u0 * s2) / s0
+    return (u0, u1, u2), (s0, s1, s2)
 
 
-def _along(a, ta, b, tb):
-    """a ta + b tb, a zero coefficient (None) left out."""
-    if a is None:
-        return 0.0 if b is None else b * tb
-    return a * ta if b is None else a * ta + b * tb
+def _join(xy, z):
+    """The 3-vector (3, ...) of a horizontal part xy (2, ...) and a vertical z, broadcast."""
+    shape = np.broadcast_shapes(xy.shape[1:], np.shape(z))
+    return np.concatenate((np.broadcast_to(xy, (2,) + shape), np.broadcast_to(z, (1,) + shape)), axis=0)
 
 
 class MeridianCrown:
@@ -111,31 +123,36 @@ class MeridianCrown:
     def normal(self, X, foot, order=None):
         """N (MP4) at the point X with its foot ``foot``: an array for an
         array X, a jet for a jet, to ``order`` (default: X's highest
-        coefficient; the jet's higher terms are not computed)."""
+        coefficient; the higher terms are not computed).  Written out
+        (the unit vectors' jets by :func:`_unit_jet`) rather than in jet
+        arithmetic: the crown's Newton steps ask it many times."""
         if not isinstance(X, Taylor):
             return self.normal(Taylor(X), foot, 0).x0
         top = order if order is not None else (2 if X.x2 is not None else 1 if X.x1 is not None else 0)
-
-        def cut(j):
-            return Taylor(j.x0, j.x1 if top >= 1 else None, j.x2 if top >= 2 else None)
-
-        x, y, z = (cut(component(X, i)) for i in range(3))
-        rho = cut(tsqrt(x * x + y * y))
+        x0 = X.x0
+        x1 = X.x1 if top >= 1 else None
+        x2 = X.x2 if top >= 2 else None
+        # rho-hat and rho = |(x, y)| with their rates
+        (u0, u1, u2), (r0, r1, r2) = _unit_jet(x0[0:2], None if x1 is None else x1[0:2],
+                                               None if x2 is None else x2[0:2])
         p, d1, d2, d3 = foot[1]
         tr, tz, ar, az, br, bz = d1[..., 0], d1[..., 1], d2[..., 0], d2[..., 1], d3[..., 0], d3[..., 1]
-        dr, dz = p[..., 0] - rho.x0, p[..., 1] - z.x0
+        dr, dz = p[..., 0] - r0, p[..., 1] - x0[2]
         g_s = tr * tr + tz * tz + dr * ar + dz * az
-        s1 = s2 = None
-        if top >= 1:
-            s1 = _along(rho.x1, tr, z.x1, tz) / g_s
-        if top >= 2:
-            s2 = (_along(rho.x2, tr, z.x2, tz) + 2 * s1 * _along(rho.x1, ar, z.x1, az)
-                  - (3 * (tr * ar + tz * az) + dr * br + dz * bz) * _sq(s1)) / g_s
-        t_r = Taylor(tr, None if s1 is None else ar * s1, None if s2 is None else ar * s2 + br * _sq(s1))
-        t_z = Taylor(tz, None if s1 is None else az * s1, None if s2 is None else az * s2 + bz * _sq(s1))
-        speed = cut(tsqrt(t_r * t_r + t_z * t_z))
-        cos_b, sin_b = cut(tdiv(t_r, speed)), cut(tdiv(t_z, speed))
-        return cut(stack((sin_b * cut(tdiv(x, rho)), sin_b * cut(tdiv(y, rho)), -cos_b)))
+        bend = np.stack((ar, az))
+        t1 = t2 = None
+        if x1 is not None:
+            s1 = (r1 * tr + x1[2] * tz) / g_s
+            t1 = bend * s1
+        if x2 is not None:
+            s2 = (r2 * tr + x2[2] * tz + 2 * s1 * (r1 * ar + x1[2] * az)
+                  - (3 * (tr * ar + tz * az) + dr * br + dz * bz) * s1 * s1) / g_s
+            t2 = bend * s2 + np.stack((br, bz)) * (s1 * s1)
+        (c0, c1, c2), _ = _unit_jet(np.stack((tr, tz)), t1, t2)       # (cos beta, sin beta) and rates
+        n0 = _join(c0[1] * u0, -c0[0])
+        n1 = None if x1 is None else _join(c1[1] * u0 + c0[1] * u1, -c1[0])
+        n2 = None if x2 is None else _join(c2[1] * u0 + 2 * c1[1] * u1 + c0[1] * u2, -c2[0])
+        return Taylor(n0, n1, n2)
 
     def hess_dot(self, X, v, foot):
         """H v (3, ...): the first derivative of N along v at the point X."""
