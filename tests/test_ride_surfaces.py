@@ -155,8 +155,12 @@ def test_a_lap_on_a_profile_by_its_height(tmp_path):
                                                                                rel=1e-4)
         orb = ride_orbit_on(h, math.radians(row["alpha_deg"]), bowl, G, machine_arrays(PRESETS["stunt125"]))
         assert float(orb["v_cm"]) == pytest.approx(10.0, rel=1e-9)
-        # a profile's parallel surface is no quadric: its stability is not analysed, and the row says so
-        assert row["stability_method"] == "not-analysed-profile" and row["growth_rate_1_s"] is None
+    # the stability on the profile's parallel surface (the meridian moved along its normal), row by row
+    alpha = np.radians(np.asarray(t["alpha_deg"], dtype=float))
+    st = machine_stability_on(np.array([1.0, 4.0]), alpha, bowl, G, machine_arrays(PRESETS["stunt125"]))
+    assert np.isfinite(st["growth_rate"]).all()
+    np.testing.assert_allclose(np.asarray(t["growth_rate_1_s"], dtype=float), st["growth_rate"], rtol=1e-12)
+    assert set(t["stability_method"]) == {"exact-linearisation-steer-locked"}
 
 
 def test_flat_ground_and_the_cone_are_analysed_row_by_row():

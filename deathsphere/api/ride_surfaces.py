@@ -23,16 +23,11 @@ from deathsphere.params import ParameterError, reduce_angle, shown_number
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
 from deathsphere.physics.machine_surface import ride_orbit_on
-from deathsphere.physics.stability import methods
 from deathsphere.physics.status import Reason, Status
 from deathsphere.requests.arena import lane_key
 from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks through the API)
 
-__all__ = ["ride_on_surface", "STABILITY_NOT_ON_SURFACE"]
-
-#: What the stability columns say on a ground whose parallel surface the
-#: machine's equations of motion do not take (a profile).
-STABILITY_NOT_ON_SURFACE = methods.NOT_ANALYSED_PROFILE
+__all__ = ["ride_on_surface"]
 
 
 def _lanes(ground, height) -> np.ndarray:
@@ -143,12 +138,10 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
     res["rho_contact"] = np.asarray(rho, dtype=float)
     res["wall_angle"] = np.asarray(ground.wall_angle(height[req]), dtype=float)
     run = rides.RowRun(np.full(req.size, radius), g[req], mu[req], max_g[req])
-    # the machine's equations of motion take the ground's parallel surface (a quadric: the drum, the cone,
-    # flat ground); on a profile the columns say why they are empty
-    analysed = options.stability and ground.offset(0.0) is not None
-    note = STABILITY_NOT_ON_SURFACE if options.stability and not analysed else ""
-    table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=analysed, given=given,
-                         stability_note=note, lanes=(ground, height[req]))
+    # the machine's equations of motion take the ground's parallel surface: a quadric on the drum, the cone
+    # and flat ground, a profile's meridian moved along its normal on a profile (docs/machine.md)
+    table = rides._table(req, np.full(req.size, np.nan), alpha, run, res, m, stability=options.stability,
+                         given=given, stability_note="", lanes=(ground, height[req]))
     if len(table) == n and shape:
         table = type(table)(table.columns, shape=shape)
     if options.summary:

@@ -220,8 +220,8 @@ def ride(theta=None, alpha=None, *, machine=DEFAULT_MACHINE, r=R, g=G, mu=INF, m
         wall's top above the floor (a lane above it is refused).  On a drum
         or a cone the lane is given by ``height`` (theta is refused), one
         radius, no vertical loops; the stability is the machine's exact
-        linearisation on that ground (docs/machine.md, "On any ground"),
-        not analysed on a profile (the columns say so).  ``"plane"``: flat ground, a lane by ``turn_radius``;
+        linearisation on that ground (docs/machine.md, "On any ground"; on
+        a profile, "On a profile").  ``"plane"``: flat ground, a lane by ``turn_radius``;
         ``"profile"``: the meridian ``profile`` (a CSV file's path or a
         :class:`~deathsphere.physics.ground.Profile`), a lane by ``height``.
         A two-wheeler (``steer``, ``steer_torque``) rides the drum, the

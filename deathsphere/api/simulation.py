@@ -279,10 +279,6 @@ def _machine_on_ground(given: Mapping, ground, key: str) -> RiderRequest:
     from deathsphere.records.machine_presets import as_machine
 
     _refuse_for_machine(given)
-    if ground.offset(0.0) is None:
-        raise ParameterError(f"a machine is not simulated on a {ground.name}: its equations of motion move the "
-                             "tyre's crown point on the ground's parallel surface, derived for a drum, a cone and "
-                             "flat ground (docs/machine.md, \"On any ground\")", "machine")
     m = as_machine(given["machine"])
     if not yaw_is_determined(machine_arrays(m)):
         raise ParameterError(f"machine {m.name!r} cannot be simulated: {YAW_UNDETERMINED}; give it a yaw "

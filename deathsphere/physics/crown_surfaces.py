@@ -85,8 +85,10 @@ def _unit_jet(v0, v1, v2):
 
 def _join(xy, z):
     """The 3-vector (3, ...) of a horizontal part xy (2, ...) and a vertical z, broadcast."""
-    shape = np.broadcast_shapes(xy.shape[1:], np.shape(z))
-    return np.concatenate((np.broadcast_to(xy, (2,) + shape), np.broadcast_to(z, (1,) + shape)), axis=0)
+    out = np.empty((3,) + np.broadcast_shapes(xy.shape[1:], np.shape(z)), dtype=np.result_type(xy, z))
+    out[0:2] = xy
+    out[2] = z
+    return out
 
 
 class MeridianCrown:

@@ -31,7 +31,10 @@ NOT_ANALYSED_POINT_MASS = "not-analysed-point-mass"
 #: written by ``ride``, whose drum, cone and flat ground are analysed; kept
 #: so that a table written before reads back with its sentence).
 NOT_ANALYSED_OFF_GLOBE = "not-analysed-off-globe"
-#: The single-contact machine on a profile: its parallel surface is not a quadric.
+#: The single-contact machine on a profile (no longer written by ``ride``,
+#: whose profiles are analysed on their parallel surface, docs/machine.md,
+#: "On a profile"; kept so that a table written before reads back with its
+#: sentence).
 NOT_ANALYSED_PROFILE = "not-analysed-profile"
 
 #: What each label means, in a sentence.
@@ -47,9 +50,9 @@ METHOD_TEXT = {
                               "docs/machine.md sec. 5)"),
     NOT_ANALYSED_OFF_GLOBE: ("not analysed: the machine's stability is derived on the globe only "
                              "(docs/machine.md sec. 5)"),
-    NOT_ANALYSED_PROFILE: ("not analysed: the machine's equations of motion move its tyre's crown point on the "
-                           "ground's parallel surface, derived for the globe, a drum, a cone and flat ground "
-                           "(a quadric of revolution), not for a profile (docs/machine.md, \"On any ground\")"),
+    NOT_ANALYSED_PROFILE: ("not analysed: written before the machine's equations of motion took a profile's "
+                           "parallel surface (docs/machine.md, \"On a profile\"); the same ride now fills the "
+                           "stability columns"),
 }
 
 
