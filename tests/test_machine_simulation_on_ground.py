@@ -120,3 +120,18 @@ def test_a_speed_starts_on_the_tilt_ride_gives(held):
     assert summary["alpha_deg"][0] == pytest.approx(float(np.min(table["alpha_deg"])), rel=1e-12)
     assert summary["speed_m_s"][0] == pytest.approx(float(table["v_cm_m_s"][np.argmin(table["alpha_deg"])]),
                                                     rel=1e-9)
+
+
+def test_the_3d_views_frames_put_the_tyre_on_a_profile():
+    from deathsphere.simulation.frames import body_frames
+
+    lane = {k: v for k, v in CASES["profile"].items() if k != "periods"}
+    sim = prepare_simulation(*simulation_request({"record_states": True, "points_per_period": 8, "machine": "stunt125",
+                                                  "periods": 0.1, **lane}))
+    _, summary = sim.run()
+    (frames,) = body_frames(summary, sim.sample_states(), refine=False, params=sim.starts.params).values()
+    P, C = frames["contact"], frames["centre"]
+    profile = lane["profile"]
+    # the contact on the profile by its own distance function, the wheel centre inside it
+    np.testing.assert_allclose(profile.clearance(np.hypot(P[0], P[1]), P[2]), 0.0, rtol=0, atol=1e-9)
+    assert np.all(profile.clearance(np.hypot(C[0], C[1]), C[2]) > 0.1)
