@@ -1,17 +1,21 @@
 """Exact equations of motion of the single-contact machine on any ground
-whose parallel surface is a quadric of revolution -- the globe, the wall of
-death's drum, the well of death's cone, flat ground -- and the linear
-stability of its steady lanes there (beyond the paper; docs/machine.md,
-"On any ground", eqs. MG1-MG5).
+of revolution -- the globe, the wall of death's drum, the well of death's
+cone, flat ground, whose parallel surfaces are quadrics, and a profile,
+whose parallel surface is its meridian moved along its normal -- and the
+linear stability of its steady lanes there (beyond the paper;
+docs/machine.md, "On any ground", eqs. MG1-MG5, and "On a profile",
+MP1-MP5).
 
 The globe's equations (:mod:`deathsphere.physics.machine_dynamics`, eqs.
 M16-M20) use the globe in one place: the tyre's crown point Q, the point of
 the crown circle (centre C, radius a - t, in the wheel plane) that touches
 the sphere of radius r - t, is found by projecting C on the wheel plane,
 and the contact is P = Q + t Q/|Q|.  On any ground Q moves on the ground's
-parallel surface at distance t (``ground.offset(t)``), given by its
-quadric F (``quadric()``: a_rho (x^2 + y^2)/2 + a_z z^2/2 + b_z z + c,
-F < 0 inside, N = grad F).  The crown circle touches it where F is
+parallel surface at distance t (``ground.offset(t)``), given by a
+function F, zero on it and negative inside, N = grad F: its quadric
+(``quadric()``: a_rho (x^2 + y^2)/2 + a_z z^2/2 + b_z z + c), or on a
+profile the signed distance from it through the point's foot on the
+meridian (:mod:`deathsphere.physics.crown_surfaces`).  The crown circle touches it where F is
 greatest on the circle::
 
     e3 = cos(phi) u + sin(phi) (u x e1),  u = the unit projection of N(C)
@@ -20,8 +24,8 @@ greatest on the circle::
     P = Q + t N(Q)/|N(Q)|                 (MG2)
 
 and the pitch constraint n . e2 = 0 (n = N/|N|) reacts with a couple
-lambda (e2 x n) and the force lambda f, f = A (e2 - n (n.e2)) / |N| (A the
-quadric's constant Hessian) at Q (MG3).  Its time derivatives follow from
+lambda (e2 x n) and the force lambda f, f = A (e2 - n (n.e2)) / |N| (A
+F's Hessian at Q, a quadric's constant) at Q (MG3).  Its time derivatives follow from
 MG1 order by order (a second-order Taylor jet, :class:`_Taylor`: phi's
 rate and acceleration solve a linear equation each, of slope
 dg/dphi = (a - t) e2.A e2 - N.e3, which is minus the fit's margin, MG4).
@@ -34,8 +38,8 @@ the globe's (tested to 1e-12).
 
 State (9, ...) as on the globe: the wheel centre C, the axle vector E, the
 wheels' angular velocity w, lab components, in the ground's coordinates.
-A ground with no parallel quadric (a profile: ``offset`` is None) is not
-analysed (:data:`NO_QUADRIC`).
+A ground with no parallel surface (``offset`` None: none of the package's)
+is not analysed (:data:`NO_PARALLEL`).
 """
 
 from __future__ import annotations
@@ -310,7 +314,7 @@ def machine_stability_on(height, alpha, ground, g, p: MachineArrays):
     (MG5, beyond the paper: docs/machine.md, "On any ground"): the keys of
     :func:`~deathsphere.physics.machine_dynamics.machine_stability`, NaN
     where the lane has no orbit, the wheel does not fit (MS6), or the
-    ground has no parallel quadric (a profile)."""
+    ground has no parallel surface."""
     K, scale, Om = machine_jacobian_on(height, alpha, ground, g, p)
     ev, growth, slow, fast, verdict = spectrum_from_invariants(K, scale)
     return {"growth_rate": growth, "freq_slow": slow, "freq_fast": fast, "verdict": verdict,

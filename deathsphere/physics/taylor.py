@@ -81,6 +81,7 @@ def _product(f, u: Taylor, v: Taylor) -> Taylor:
 
 
 def tdiv(x: Taylor, y: Taylor) -> Taylor:
+    """x / y of two jets (the quotient rule to second order; beyond the paper: docs/machine.md, MG4)."""
     z0 = x.x0 / y.x0
     z1 = _times(_mul, _sum(x.x1, _neg(_times(_mul, z0, y.x1))), 1.0 / y.x0)
     two = _times(_mul, z1, y.x1)
@@ -89,6 +90,7 @@ def tdiv(x: Taylor, y: Taylor) -> Taylor:
 
 
 def tsqrt(x: Taylor) -> Taylor:
+    """sqrt(x) of a jet (beyond the paper: docs/machine.md, MG4)."""
     s0 = np.sqrt(x.x0)
     s1 = _times(_mul, x.x1, 0.5 / s0)
     sq = _times(_mul, s1, s1)
@@ -96,18 +98,22 @@ def tsqrt(x: Taylor) -> Taylor:
 
 
 def tdot(u: Taylor, v: Taylor) -> Taylor:
+    """u . v of two vector jets (Leibniz's rule; beyond the paper: docs/machine.md, MG4)."""
     return _product(_dot, u, v)
 
 
 def tcross(u: Taylor, v: Taylor) -> Taylor:
+    """u x v of two vector jets (Leibniz's rule; beyond the paper: docs/machine.md, MG4)."""
     return _product(_cross, u, v)
 
 
 def tunit(v: Taylor) -> Taylor:
+    """v / |v| of a vector jet (beyond the paper: docs/machine.md, MG4)."""
     return tdiv(v, tsqrt(tdot(v, v)))
 
 
 def tcos_sin(phi: Taylor):
+    """(cos phi, sin phi) of an angle's jet (beyond the paper: docs/machine.md, MG4)."""
     c, s = np.cos(phi.x0), np.sin(phi.x0)
     p1, p2 = phi.x1, phi.x2
     sq = _times(_mul, p1, p1)
@@ -116,14 +122,14 @@ def tcos_sin(phi: Taylor):
 
 
 def with_coefficient(jet: Taylor, order: int, extra) -> Taylor:
-    """``jet`` with ``extra`` added to its coefficient of ``order`` (1 or 2)."""
+    """``jet`` with ``extra`` added to its coefficient of ``order`` (1 or 2; beyond the paper: docs/machine.md, MG4)."""
     if order == 1:
         return Taylor(jet.x0, _sum(jet.x1, extra), jet.x2)
     return Taylor(jet.x0, jet.x1, _sum(jet.x2, extra))
 
 
 def component(v: Taylor, i: int) -> Taylor:
-    """The scalar jet of a vector jet's component ``i`` (its leading axis)."""
+    """The scalar jet of a vector jet's component ``i`` (its leading axis; beyond the paper: docs/machine.md)."""
     return Taylor(v.x0[i], None if v.x1 is None else v.x1[i], None if v.x2 is None else v.x2[i])
 
 
@@ -135,7 +141,8 @@ def _stacked(parts):
 
 def stack(parts) -> Taylor:
     """The vector jet (a leading axis) of scalar jets, each coefficient
-    broadcast against the others' (None where every part's is)."""
+    broadcast against the others' (None where every part's is; beyond the
+    paper: docs/machine.md)."""
     parts = list(parts)
     out = [_stacked([getattr(p, k) for p in parts]) for k in ("x0", "x1", "x2")]
     for k, name in ((1, "x1"), (2, "x2")):
