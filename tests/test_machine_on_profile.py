@@ -101,3 +101,34 @@ def test_the_crown_point_is_the_crown_circles_point_nearest_the_bowl():
     assert abs(float(bowl.clearance(np.hypot(P[0], P[1]), P[2])) - (float(bowl.clearance(np.hypot(Q[0], Q[1]), Q[2]))
                                                                       - T)) < 1e-12
     assert abs(np.linalg.norm(P - Q) - T) < 1e-12
+
+
+def test_the_crown_normals_jets_are_the_derivatives_of_the_normal_along_a_path():
+    """MP4's first and second coefficients (the foot's s1, s2 by implicit
+    differentiation) against central differences of the normal itself, each
+    point's foot found afresh, along X(eps) = X0 + X1 eps + X2 eps^2 / 2
+    off the bowl's wall."""
+    from deathsphere.physics.crown_surfaces import crown_surface
+    from deathsphere.physics.taylor import Taylor
+
+    rho = np.linspace(0.0, 12.0, 61)
+    bowl = Profile(rho, 0.08 * rho ** 2)
+    surface = crown_surface(bowl, T)
+    rng = np.random.default_rng(5)
+    q_rho, q_z = bowl.offset(T).contact(np.array([1.0, 3.0, 7.0]))
+    X0 = np.stack((q_rho * np.cos(1.0), q_rho * np.sin(1.0), q_z)) + 0.02 * rng.standard_normal((3, 3))
+    X1, X2 = rng.standard_normal((3, 3)), rng.standard_normal((3, 3))
+    jet = surface.normal(Taylor(X0, X1, X2), surface.foot(X0))
+
+    def at(eps):
+        X = X0 + X1 * eps + X2 * eps ** 2 / 2
+        return surface.normal(X, surface.foot(X))
+
+    h = 1e-4
+    first = (at(h) - at(-h)) / (2 * h)
+    second = (at(h) - 2 * at(0.0) + at(-h)) / h ** 2
+    np.testing.assert_allclose(jet.x0, at(0.0), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(jet.x1, first, rtol=0, atol=1e-7 * np.max(np.abs(jet.x1)))
+    np.testing.assert_allclose(jet.x2, second, rtol=0, atol=1e-5 * np.max(np.abs(jet.x2)))
+    # the normal is a unit vector, and its value F is the signed distance: |grad F| = 1
+    np.testing.assert_allclose(np.sum(jet.x0 ** 2, axis=0), 1.0, atol=1e-15)
