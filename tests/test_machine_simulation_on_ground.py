@@ -55,7 +55,8 @@ def _tyre_gap(ground, C, E, a, t):
         return float(ground.clearance(np.hypot(x[0], x[1]), x[2]))
 
     grid = np.linspace(0.0, 2 * np.pi, 721)
-    best = grid[np.argmin([clearance(phi) for phi in grid])]
+    ring = C[:, None] + (a - t) * (np.cos(grid) * u[:, None] + np.sin(grid) * v[:, None])
+    best = grid[np.argmin(ground.clearance(np.hypot(ring[0], ring[1]), ring[2]))]
     found = minimize_scalar(clearance, bracket=(best - 0.01, best, best + 0.01), tol=1e-12)
     return found.fun - t
 
