@@ -7,9 +7,9 @@ byte); this module takes the lane by its height up the wall (on flat
 ground its turn radius), the tilt,
 the contact's speed, the centre of mass's speed or the lap time, and gives the same columns, theta empty and the
 arena's in ``surface``, ``rho_contact_m``, ``wall_angle_deg``; the
-stability on the drum, the cone and flat ground is the exact linearisation
-of the machine's equations of motion there (docs/machine.md, "On any
-ground"), not analysed on a profile.
+stability on each is the exact linearisation of the machine's equations
+of motion there (docs/machine.md, "On any ground"; a profile's, "On a
+profile").
 """
 
 from __future__ import annotations

@@ -15,7 +15,7 @@ the energy, the constraints.  Two models:
   drum, the cone, flat ground, a profile): the same equations with the
   ground's contact, :mod:`deathsphere.physics.dynamics_on` (parameters
   :class:`GroundRun`), and two more events, the floor and the wall's top;
-* :data:`MACHINE_ON_GROUND` -- a machine on the drum, the cone or flat
+* :data:`MACHINE_ON_GROUND` -- a machine on the drum, the cone, a profile or flat
   ground: eqs. M16-M19 with the crown point on the ground's parallel
   surface, :mod:`deathsphere.physics.machine_dynamics_on` (parameters
   :class:`MachineGroundRun`), with the wall's events.
@@ -511,7 +511,7 @@ class _OnGround(_Paper):
 
 
 class _MachineOnGround(_Machine):
-    """A machine on the drum, the cone or flat ground (beyond the paper;
+    """A machine on the drum, the cone, a profile or flat ground (beyond the paper;
     docs/machine.md, "On any ground"): eqs. M16-M19 with the crown point on
     the ground's parallel surface (MG1-MG3), the globe's machine's series
     and the wall's: the contact's height and distance from the axis, the
