@@ -97,6 +97,8 @@ class Reason(IntEnum):
     LANE_ON_AXIS = 64
     NO_TILT_FITS_LANE = 65
     SURFACE_NO_ALPHA = 66
+    VERTICAL_LOOP_NO_FIT = 67
+    VERTICAL_LOOP_TOO_SLOW = 68
 
 
 REASONS = {
@@ -184,6 +186,11 @@ REASONS = {
                               "a kappa_parallel < 1: the wall bends more than the rim)",
     Reason.SURFACE_NO_ALPHA: "no tilt alpha at which the wheel fits the wall gives this speed or rate "
                              "(surfaces.md eq. S2 has no root in the window of eq. S4)",
+    # a vertical loop inside a closed profile (docs/surfaces.md eqs. S9-S12)
+    Reason.VERTICAL_LOOP_NO_FIT: "the wheel does not fit the loop's tightest bend (needs a below the meridian's "
+                                 "least radius of curvature: a kappa_max < 1)",
+    Reason.VERTICAL_LOOP_TOO_SLOW: "top speed too low: the wheel leaves the wall somewhere round the loop "
+                                   "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 all round)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

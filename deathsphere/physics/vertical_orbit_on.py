@@ -1,0 +1,479 @@
+"""A wheel's vertical loop inside a closed surface of revolution (a dome
+closed below, an egg, an ellipsoid, a sphere sampled).
+
+Beyond the paper: McDonald (1993) sec. 2.2.1 solves the vertical loop on the
+sphere only (eqs. 26-28b, :mod:`deathsphere.physics.vertical_orbit`).  Here
+the loop runs in a meridian plane (the paper's theta = 90 deg: through the
+axis) of a ground whose meridian meets the axis at its lowest and its
+highest point; the loop's curve is that meridian and its mirror through the
+axis, a closed curve.  Derivation: docs/surfaces.md, "S9-S12. A vertical
+loop inside a closed profile".
+
+The meridian is read by arc length s from its lowest point (``ground.meridian``:
+rho, z, the wall angle beta and the curvature kappa = d beta / d s).  Going
+round from the top down the side rho > 0, the loop's angle phi = pi - beta
+(:func:`turn`) is the turn of its tangent from the top (on a circle: the centre's azimuth from
+the top, the globe's phi).  The wheel (radius a, I = 2 k m a^2 about its
+axle, the paper's k) rolls in the loop's plane; its centre runs on the
+curve's inner parallel at distance a, of curvature kappa_C = kappa / (1 - a
+kappa) and height z_C = z + a cos(beta):
+
+    v^2 = v_top^2 + 2 g (z_C,top - z_C) / (2k+1)                       (S9)
+    N/m = v^2 kappa_C + g cos(beta)                                    (S10)
+    F/m = -(2k/(2k+1)) g sin(beta)   along the path                    (S11)
+    T   = 2 int_0^L (1 - a kappa) ds / v                               (S12)
+
+Both halves of the loop are mirror images, so every quantity is taken on
+the first (the descent); the friction along the path changes sign on the
+second.  Everything broadcasts over the requests (v_top, a, k, g, mu of one
+shape); the loop's curve is sampled once (:class:`Loop`), its grid the last
+axis of the arrays, and the worst point, the least top speed, the largest
+acceleration and the first slip are refined on the curve itself between
+grid points (golden section and bisection: no Python loop over requests).
+Units: m, s, rad.  A request the loop cannot hold is a status, never a NaN
+leaked or a warning (:mod:`deathsphere.physics.status`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from deathsphere.physics.geometry import SINGULAR
+from deathsphere.physics.status import Reason, Status, first_failure, mu_required
+
+__all__ = ["Loop", "loop_closure", "turn", "vertical_loop_on", "loop_points_on", "AXIS_TURN_DEG", "INTERVALS"]
+
+#: Intervals of the loop's grid on its half (Simpson's rule on the lap time;
+#: the brackets of the refined points).  The lap time's quadrature error at
+#: this grid is below 1e-12 of the lap on a sampled sphere (docs/surfaces.md).
+INTERVALS = 1024
+#: Steps of the golden section (a bracket of two grid intervals shrinks by
+#: 0.618 a step: 60 steps reach round-off) and of the bisection.
+_GOLDEN = 60
+_BISECT = 60
+#: The largest angle [deg] the meridian's tangent may make with the
+#: horizontal where it meets the axis: more, and the loop's curve and its
+#: mirror meet at a corner (a curvature without bound: no wheel fits).
+AXIS_TURN_DEG = 0.5
+_INV_PHI = (np.sqrt(5.0) - 1.0) / 2.0
+
+
+def loop_closure(ground) -> str:
+    """Why ``ground`` has no closed meridian loop, in words, or "" if it has:
+    a profile's meridian (``meridian``, ``arc_length``, a finite
+    ``highest_lane``) that starts and ends on the axis, its tangent there
+    horizontal within :data:`AXIS_TURN_DEG` (so that the mirrored halves join
+    without a corner)."""
+    top = float(getattr(ground, "highest_lane", np.inf))
+    if not np.isfinite(top) or not hasattr(ground, "meridian"):
+        return f"the {ground.name}'s meridian does not close over the top"
+    length = float(ground.arc_length(np.array(top)))
+    rho, _, beta, _, _ = ground.meridian(np.array([0.0, length]))
+    tol = 1e-9 * max(length, 1.0)
+    if rho[1] > tol:
+        return f"the {ground.name}'s meridian ends {rho[1]:.6g} m from the axis: it does not close over the top"
+    if rho[0] > tol:
+        return (f"the {ground.name}'s meridian starts {rho[0]:.6g} m from the axis: the loop needs a meridian "
+                "closed below as well (on the axis at its lowest point)")
+    # the angle wrapped to (-pi, pi]: the top's beta is pi or -pi by round-off
+    for end, angle in (("lowest", np.angle(np.exp(1j * beta[0]))), ("highest", np.angle(np.exp(1j * (np.pi - beta[1]))))):
+        if abs(np.degrees(angle)) > AXIS_TURN_DEG:
+            return (f"the {ground.name}'s meridian meets the axis at its {end} point {abs(np.degrees(angle)):.3g} deg "
+                    f"from the horizontal (at most {AXIS_TURN_DEG:g}): the loop and its mirror would meet at a corner")
+    return ""
+
+
+@dataclass(frozen=True)
+class Loop:
+    """The loop's half (the meridian) sampled once by arc length, bottom (s
+    = 0) to top (s = ``length``): ``s``, ``z``, ``beta``, ``kappa`` on
+    :data:`INTERVALS` + 1 points, ``kappa_max`` the curve's largest
+    curvature (refined between the grid's points), ``height`` the top's
+    height above the bottom.  Build it with :meth:`of`."""
+
+    ground: object
+    length: float
+    s: np.ndarray
+    z: np.ndarray
+    beta: np.ndarray
+    kappa: np.ndarray
+    kappa_max: float
+    height: float
+
+    @classmethod
+    def of(cls, ground, intervals: int = INTERVALS) -> "Loop":
+        """The loop of ``ground`` (:func:`loop_closure` must say ""), on a grid of ``intervals`` (even)."""
+        intervals = int(intervals) + int(intervals) % 2            # Simpson's rule takes pairs
+        length = float(ground.arc_length(np.array(float(ground.highest_lane))))
+        s = np.linspace(0.0, length, intervals + 1)
+        _, z, beta, kappa, _ = ground.meridian(s)
+        beta = np.unwrap(beta)                                      # 0 at the bottom to pi at the top
+        i = int(np.argmax(kappa))
+        lo, hi = s[max(i - 1, 0)], s[min(i + 1, intervals)]
+        s_max = _golden(lambda x: ground.meridian(x)[3], np.array(lo), np.array(hi))
+        kappa_max = max(float(np.max(kappa)), float(ground.meridian(s_max)[3]))
+        return cls(ground, length, s, z, beta, kappa, kappa_max, float(z[-1] - z[0]))
+
+    @property
+    def turns_one_way(self) -> bool:
+        """True where the meridian bends one way all along (kappa > 0 on the
+        grid): the loop's angle phi = pi - beta then names one point."""
+        return bool(np.all(self.kappa > 0))
+
+    def meridian(self, s):
+        """(z, beta, kappa) at arc lengths s (any shape) [m, rad, 1/m]."""
+        _, z, beta, kappa, _ = self.ground.meridian(np.asarray(s, dtype=float))
+        return z, beta, kappa
+
+
+def turn(beta):
+    """The loop's angle phi = pi - beta [rad] from the top, on the descent
+    0 (top) .. pi (bottom): wrapped so that a wall angle given as -pi at the
+    top (the same tangent as pi) is the top, not a full turn."""
+    return np.mod(np.pi - np.asarray(beta, dtype=float) + np.pi / 2, 2 * np.pi) - np.pi / 2
+
+
+def _golden(f, lo, hi, steps: int = _GOLDEN):
+    """The argument of f's largest value in [lo, hi], each element its own
+    bracket (f unimodal there), by golden section."""
+    lo, hi = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    x1 = hi - _INV_PHI * (hi - lo)
+    x2 = lo + _INV_PHI * (hi - lo)
+    f1, f2 = f(x1), f(x2)
+    for _ in range(steps):
+        left = f1 >= f2                              # the largest value is in [lo, x2]
+        hi = np.where(left, x2, hi)
+        lo = np.where(left, lo, x1)
+        x1n = np.where(left, hi - _INV_PHI * (hi - lo), x2)
+        x2n = np.where(left, x1, lo + _INV_PHI * (hi - lo))
+        x1, x2 = x1n, x2n
+        new = np.where(left, x1, x2)
+        f_new = f(new)
+        f1, f2 = np.where(left, f_new, f2), np.where(left, f1, f_new)
+    return 0.5 * (lo + hi)
+
+
+def _bisect(f, lo, hi, steps: int = _BISECT):
+    """A zero of f between lo (f <= 0) and hi (f > 0), each element its own bracket."""
+    lo, hi = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        up = f(mid) > 0
+        hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
+    return 0.5 * (lo + hi)
+
+
+@dataclass(frozen=True)
+class _Request:
+    """The requests' parameters as columns (n, 1) against the grid, and the centre's top height."""
+
+    v_top: np.ndarray
+    a: np.ndarray
+    k: np.ndarray
+    g: np.ndarray
+    z_top: np.ndarray
+
+
+def _request(loop: Loop, v_top, a, k, g) -> _Request:
+    v_top, a, k, g = (np.asarray(x, dtype=float).reshape(-1, 1) for x in np.broadcast_arrays(v_top, a, k, g))
+    return _Request(np.abs(v_top), a, k, g, loop.z[-1] + a * np.cos(loop.beta[-1]))
+
+
+def _state(req: _Request, z, beta, kappa) -> dict:
+    """Eqs. (S9)-(S11) at points of the loop's first half, per request (rows) and point (columns)."""
+    a, k, g = req.a, req.k, req.g
+    stretch = 1.0 - a * kappa                         # ds_C / ds: the centre's path is the inner parallel
+    fits = stretch > SINGULAR
+    kappa_c = kappa / np.where(fits, stretch, 1.0)
+    z_c = z + a * np.cos(beta)
+    v2 = req.v_top ** 2 + 2.0 * g * (req.z_top - z_c) / (2.0 * k + 1.0)
+    normal = v2 * kappa_c + g * np.cos(beta)
+    along = -(2.0 * k / (2.0 * k + 1.0)) * g * np.sin(beta)
+    tangential = g * np.sin(beta) / (2.0 * k + 1.0)   # dv/dt on the descent
+    return {"stretch": stretch, "kappa_c": kappa_c, "v2": v2, "normal": normal, "along": along,
+            "accel": np.hypot(v2 * kappa_c, tangential)}
+
+
+def _at(loop: Loop, req: _Request, s) -> dict:
+    """:func:`_state` at arc lengths s (n, m) off the grid."""
+    z, beta, kappa = loop.meridian(s)
+    out = _state(req, z, beta, kappa)
+    out["beta"] = beta
+    return out
+
+
+def _top_speed_bound(state, beta, req: _Request):
+    """The least v_top^2 for N > 0 at a point: from (S10), v_top^2 >
+    -g cos(beta) / kappa_C - (v^2 - v_top^2) wherever kappa_C > 0 (a point
+    bending away from the centre gives no lower bound: -inf)."""
+    rise = state["v2"] - req.v_top ** 2                          # what the wheel gains from the top down, by (S9)
+    bends = state["kappa_c"] > 0
+    return np.where(bends, -req.g * np.cos(beta) / np.where(bends, state["kappa_c"], 1.0) - rise, -np.inf)
+
+
+def _refined_max(loop: Loop, req: _Request, values: np.ndarray, quantity):
+    """Per request, where ``quantity(state, beta)`` (its grid values ``values``,
+    rows x grid) is largest: the grid's largest refined by golden section on
+    the curve between its neighbours.  Returns (s, state there, value)."""
+    i = np.argmax(values, axis=1)
+    last = loop.s.size - 1
+    lo, hi = loop.s[np.maximum(i - 1, 0)][:, None], loop.s[np.minimum(i + 1, last)][:, None]
+
+    def f(x):
+        st = _at(loop, req, x)
+        return quantity(st, st["beta"])
+
+    s = _golden(f, lo, hi)
+    st = _at(loop, req, s)
+    value = quantity(st, st["beta"])
+    grid_best = values[np.arange(values.shape[0]), i][:, None]
+    # an end of the loop (the top or the bottom) is a grid point: keep it where the refined point is no better
+    at_grid = ~(value > grid_best)
+    s = np.where(at_grid, loop.s[i][:, None], s)
+    on_grid = _at(loop, req, loop.s[i][:, None])
+    st = {key: np.where(at_grid, on_grid[key], val) for key, val in st.items()}
+    return s[:, 0], {key: val[:, 0] for key, val in st.items()}, np.where(at_grid, grid_best, value)[:, 0]
+
+
+#: :func:`_peak`'s fit: a polynomial of this degree over at most
+#: :data:`_PEAK_WINDOW` grid intervals each side of the grid's largest value
+#: and :data:`_PEAK_SHARE` of the peak's half-width, at least
+#: :data:`_PEAK_LEAST` (a sharper peak is refined on the curve itself).
+_PEAK_DEGREE = 8
+_PEAK_WINDOW = 64
+_PEAK_SHARE = 0.6
+_PEAK_LEAST = 6
+
+
+def _peak(loop: Loop, req: _Request, values: np.ndarray, quantity) -> np.ndarray:
+    """Per request, the arc length where ``values`` (rows x grid: the grid's
+    values of ``quantity(state, beta)``, a smooth function of s with one
+    peak in the half-loop or at its ends) peaks.
+
+    A spline's curvature ripples at the spacing of its samples (by ~2e-7 of
+    itself on a sphere sampled at 2001 points), and the argument of a flat
+    maximum moves by about the square root of that: a least-squares
+    polynomial (:data:`_PEAK_DEGREE`) over a window of the grid about the
+    grid's largest value averages the ripple out.  The window spans
+    :data:`_PEAK_SHARE` of the peak's half-width sqrt(f / |f''|) (from the
+    grid's second difference), at most :data:`_PEAK_WINDOW` intervals each
+    side; a peak too sharp for :data:`_PEAK_LEAST` intervals (a wheel near
+    its least top speed, its worst point near the top) is refined by golden
+    section on the curve itself, where the ripple matters less (f'' / f is
+    large).  The loop's mirror through the axis continues the grid past
+    either end (the top and the bottom are points of symmetry)."""
+    n, last = values.shape[0], loop.s.size - 1
+    h = loop.s[1] - loop.s[0]
+    i = np.argmax(values, axis=1)
+    rows = np.arange(n)
+
+    def mirrored(j):
+        j = np.abs(j)
+        return np.where(j > last, 2 * last - j, j)
+
+    f0 = values[rows, i]
+    f2 = (values[rows, mirrored(i + 1)] - 2 * f0 + values[rows, mirrored(i - 1)]) / h ** 2
+    curved = f2 < 0
+    width = np.sqrt(np.where(curved, f0, 1.0) / np.where(curved, -f2, 1.0)) / h    # half-width [intervals]
+    half = np.where(curved, np.minimum(np.floor(_PEAK_SHARE * width), _PEAK_WINDOW), _PEAK_WINDOW).astype(int)
+    sharp = half < _PEAK_LEAST
+    s_best = np.empty(n)
+    if sharp.any():
+        sub = _Request(*(getattr(req, name)[sharp] for name in ("v_top", "a", "k", "g", "z_top")))
+        s_best[sharp] = _refined_max(loop, sub, values[sharp], quantity)[0]
+    for w in np.unique(half[~sharp]):              # a few window sizes: one least-squares solve each
+        these = np.flatnonzero((half == w) & ~sharp)
+        offsets = np.arange(-w, w + 1)
+        fit = np.linalg.pinv(np.vander(offsets / float(w), _PEAK_DEGREE + 1, increasing=True))
+        c = values[these[:, None], mirrored(i[these, None] + offsets[None, :])] @ fit.T
+        power = np.arange(_PEAK_DEGREE + 1)
+        # the polynomial's stationary point nearest 0 by Newton's method from 0 (its largest near the grid's)
+        u = np.zeros(these.size)
+        for _ in range(8):
+            d1 = np.sum(c[:, 1:] * power[1:] * u[:, None] ** (power[1:] - 1), axis=1)
+            d2 = np.sum(c[:, 2:] * (power[2:] * (power[2:] - 1)) * u[:, None] ** (power[2:] - 2), axis=1)
+            u = np.clip(u - np.where(d2 < 0, d1 / np.where(d2 < 0, d2, -1.0), 0.0), -1.0, 1.0)
+        s = loop.s[i[these]] + u * w * h
+        # past an end: the mirror image of the point (the same point of the loop's other half)
+        s_best[these] = np.where(s > loop.length, 2 * loop.length - s, np.abs(s))
+    return s_best
+
+
+def _simpson(y, h):
+    """Simpson's rule over the last axis (an even number of intervals of width h)."""
+    return h / 3.0 * (y[..., 0] + y[..., -1] + 4.0 * y[..., 1:-1:2].sum(axis=-1) + 2.0 * y[..., 2:-1:2].sum(axis=-1))
+
+
+def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
+    """Everything about a wheel's vertical loop inside ``loop`` per request,
+    vectorised over the requests (v_top [m/s] the centre's speed at the top,
+    a [m], k [-] (the paper's: I = 2 k m a^2), g [m/s^2], mu [-], broadcast
+    to one shape); beyond the paper, eqs. (S9)-(S12) of docs/surfaces.md.
+
+    Returns the keys of :func:`deathsphere.physics.vertical_orbit.vertical_orbit`
+    with the same meanings, theta = 90 deg: ``r_prime`` the centre path's
+    radius of curvature at the top, ``omega`` the top rate v_top kappa_C,top
+    (the turn of its tangent per second), ``v_min`` / ``omega_min`` the
+    least top speed and rate with N > 0 all round, ``period`` the lap time
+    (S12, Simpson), ``accel`` the centre's largest acceleration round the
+    lap, ``normal``, ``friction``, ``mu_required``, ``phi_worst`` at the worst
+    point (where mu = |F|/N peaks, found where sin(beta)/N peaks so that it
+    is defined for k = 0 as on the globe), ``mu_top`` (0: at the top the
+    path is level), ``normal_top``, ``normal_bottom``, ``phi_leave`` (NaN:
+    inside), ``phi_slip`` (where mu_required first exceeds mu going round
+    from the top), ``contact``, ``status`` / ``reason`` (no_fit where a
+    kappa_max >= 1, VERTICAL_LOOP_NO_FIT; no_contact where N <= 0 somewhere,
+    VERTICAL_LOOP_TOO_SLOW; slips).  Lap quantities are NaN without contact.
+    """
+    v_top, a, k, g, mu = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (v_top, a, k, g, mu)))
+    shape = v_top.shape
+    req = _request(loop, v_top, a, k, g)
+    mu = mu.reshape(-1)
+    grid = _state(req, loop.z[None, :], loop.beta[None, :], loop.kappa[None, :])
+    fits = (req.a[:, 0] * loop.kappa_max < 1.0 - SINGULAR) & np.all(grid["stretch"] > SINGULAR, axis=1)
+    beta = loop.beta[None, :]
+    top, bottom = {key: val[:, -1] for key, val in grid.items()}, {key: val[:, 0] for key, val in grid.items()}
+    g1 = req.g[:, 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # the least top speed: the largest bound round the loop (the top's on a circle, g r')
+        _, _, bound = _refined_max(loop, req, _top_speed_bound(grid, beta, req),
+                                   lambda st, b: _top_speed_bound(st, b, req))
+        # contact: N > 0 at its least round the loop (refined: the least need not be a grid point)
+        _, low, _ = _refined_max(loop, req, -grid["normal"], lambda st, b: -st["normal"])
+    n_least = np.minimum(low["normal"], np.min(grid["normal"], axis=1))
+    contact = fits & (n_least > 0) & (np.min(grid["v2"], axis=1) > 0)
+    safe = np.where(contact[:, None], grid["normal"], 1.0)
+    # the worst point: mu = c g sin(beta) / N, located where sin(beta) / N peaks
+    shape_w = np.where(contact[:, None], np.abs(np.sin(beta)) / safe, 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s_w = _peak(loop, req, shape_w, lambda st, b: np.abs(np.sin(b)) / np.where(
+            st["normal"] > 0, st["normal"], np.inf))
+        worst = {key: val[:, 0] for key, val in _at(loop, req, s_w[:, None]).items()}
+        _, peak, _ = _refined_max(loop, req, np.where(contact[:, None], grid["accel"], 0.0),
+                                  lambda st, b: st["accel"])
+    friction = np.abs(worst["along"])
+    mu_max = np.where(contact, mu_required(np.where(contact, worst["normal"], np.nan), friction), np.nan)
+    phi_worst = np.where(contact, turn(worst["beta"]), np.nan)
+    # the lap time (S12): twice the half's, by Simpson's rule on the grid
+    speed = np.sqrt(np.where(contact[:, None], grid["v2"], 1.0))
+    period = np.where(contact & (req.v_top[:, 0] > 0),
+                      2.0 * _simpson(grid["stretch"] / speed, loop.s[1] - loop.s[0]), np.nan)
+    phi_slip = _slip(loop, req, grid, contact, mu)
+    r_prime = _top_radius(top["kappa_c"], fits)
+    v_min = np.where(fits, np.sqrt(np.maximum(bound, 0.0)), np.nan)
+    status, reason = first_failure([
+        (~fits, Status.NO_FIT, Reason.VERTICAL_LOOP_NO_FIT),
+        (~contact, Status.NO_CONTACT, Reason.VERTICAL_LOOP_TOO_SLOW),
+        (mu_max > mu, Status.SLIPS, Reason.SLIPS),
+    ])
+    v_bottom = np.where(contact, np.sqrt(np.where(contact, bottom["v2"], 0.0)), np.nan)
+    accel = np.where(contact, peak["accel"], np.nan)
+    out = {
+        "r_prime": r_prime,
+        "omega": np.where(fits, req.v_top[:, 0] * top["kappa_c"], np.nan),
+        "omega_bottom": np.where(contact, v_bottom * bottom["kappa_c"], np.nan),
+        "omega_min": np.where(fits, v_min * top["kappa_c"], np.nan),
+        "period": period,
+        "v_cm": np.where(fits, req.v_top[:, 0], np.nan),
+        "v_bottom": v_bottom,
+        "v_min": v_min,
+        "spin": np.where(fits, req.v_top[:, 0] / req.a[:, 0], np.nan),
+        "accel": accel,
+        "accel_g": accel / g1,
+        "normal": np.where(contact, worst["normal"], np.nan),
+        "friction": np.where(contact, friction, np.nan),
+        "mu_required": mu_max,
+        "phi_worst": phi_worst,
+        "mu_top": np.where(fits, 0.0, np.nan),
+        "normal_top": np.where(fits, top["normal"], np.nan),
+        "normal_bottom": np.where(fits, bottom["normal"], np.nan),
+        "phi_leave": np.full(v_top.size, np.nan),
+        "phi_slip": phi_slip,
+        "contact": contact,
+        "status": status,
+        "reason": reason,
+    }
+    return {key: val.reshape(shape) for key, val in out.items()}
+
+
+def _top_radius(kappa_c_top, fits):
+    """The centre path's radius of curvature at the top [m] (r - a on a sphere), NaN where the wheel does not fit."""
+    ok = fits & (kappa_c_top > 0)
+    return np.where(ok, 1.0 / np.where(ok, kappa_c_top, 1.0), np.nan)
+
+
+def _slip(loop: Loop, req: _Request, grid: dict, contact, mu):
+    """phi [rad] where rolling first needs more than mu going round from the
+    top (the second half mirrors the first, so the first crossing is on the
+    descent), by bisection on the curve between the grid's points; NaN where
+    it never slips or there is no contact."""
+    need = np.where(contact[:, None], np.abs(grid["along"]) / np.where(contact[:, None], grid["normal"], 1.0), 0.0)
+    mu_col = np.where(np.isfinite(mu), mu, np.inf)[:, None]
+    over = need[:, ::-1] > mu_col                                  # from the top (the grid's last point) down
+    slips = contact & over.any(axis=1)
+    j = np.argmax(over, axis=1)                                   # the first point past mu, counted from the top
+    last = loop.s.size - 1
+    hi_s = loop.s[last - j]                                       # mu exceeded here
+    lo_s = loop.s[np.minimum(last - j + 1, last)]                 # not yet here (or the top itself)
+
+    def excess(x):
+        st = _at(loop, req, x[:, None])
+        normal = st["normal"][:, 0]
+        return np.where(normal > 0, np.abs(st["along"][:, 0]) / np.where(normal > 0, normal, 1.0), np.inf) - mu_col[:, 0]
+
+    # along the path from the top s falls: bisect in the distance from the top
+    s = _bisect(lambda d: excess(loop.length - d), loop.length - lo_s, loop.length - hi_s)
+    s = np.where(j == 0, loop.length, loop.length - s)
+    beta = loop.meridian(s)[1]
+    return np.where(slips, turn(beta), np.nan)
+
+
+def loop_points_on(loop: Loop, phi, v_top, a, k, g, mu=np.inf) -> dict:
+    """The loop point by point at its angles phi [rad] from the top, 0..2 pi
+    (rows: requests; columns: the points; phi a 1-D grid), the keys of
+    :func:`deathsphere.physics.vertical_orbit.vertical_profile` (``along``
+    the friction along the path, negative on the descent; ``meridional`` 0:
+    the loop lies in a meridian plane).  phi names a point only on a loop
+    whose meridian turns one way (kappa > 0): the caller refuses another.
+    The point at phi on the descent is where pi - beta = phi, found by
+    bisection on beta(s) from the grid; the ascent mirrors it."""
+    phi = np.asarray(phi, dtype=float).reshape(-1)
+    descent = np.where(phi <= np.pi, phi, 2.0 * np.pi - phi)     # the mirror point's angle
+    on_grid = turn(loop.beta)                                     # falling from pi (bottom) to 0 (top) with s
+    guess = np.interp(descent, on_grid[::-1], loop.s[::-1])
+    h = loop.s[1] - loop.s[0]
+    s = _bisect(lambda x: descent - turn(loop.meridian(x)[1]), np.clip(guess - 2 * h, 0.0, loop.length),
+                np.clip(guess + 2 * h, 0.0, loop.length))
+    s = np.where(descent >= on_grid[0], 0.0, np.where(descent <= on_grid[-1], loop.length, s))
+    req = _request(loop, v_top, a, k, g)
+    st = _at(loop, req, np.broadcast_to(s, (req.v_top.shape[0], s.size)))
+    fits = (req.a * loop.kappa_max < 1.0 - SINGULAR)
+    normal = st["normal"]
+    sign = np.where(phi <= np.pi, 1.0, -1.0)
+    along = sign * st["along"]
+    friction = np.abs(along)
+    mu_col = np.broadcast_to(np.asarray(mu, dtype=float), v_top.shape if np.ndim(v_top) else (1,)).reshape(-1, 1)
+    need = mu_required(np.where(fits, normal, np.nan), friction)
+    speed = np.sqrt(np.maximum(st["v2"], 0.0))
+    status, reason = first_failure([
+        (np.broadcast_to(~fits, normal.shape), Status.NO_FIT, Reason.VERTICAL_LOOP_NO_FIT),
+        (~(normal > 0) | ~(st["v2"] >= 0), Status.NO_CONTACT, Reason.VERTICAL_LOOP_TOO_SLOW),
+        (need > mu_col, Status.SLIPS, Reason.SLIPS),
+    ])
+    nan = np.broadcast_to(~fits, normal.shape)
+    return {
+        "phi": np.broadcast_to(phi, normal.shape),
+        "omega": np.where(nan, np.nan, speed * st["kappa_c"]),
+        "v_cm": np.where(nan, np.nan, speed),
+        "accel": np.where(nan, np.nan, st["accel"]),
+        "along": np.where(nan, np.nan, along),
+        "radial": np.where(nan, np.nan, -normal),
+        "meridional": np.where(nan, np.nan, 0.0 * normal),
+        "friction": np.where(nan, np.nan, friction),
+        "normal": np.where(nan, np.nan, normal),
+        "mu_required": need,
+        "status": status,
+        "reason": reason,
+    }
