@@ -14,11 +14,6 @@ import math
 
 from deathsphere.params import ParameterError
 
-#: A ground closes over the top when its highest lane's contact is this
-#: close to the axis, relative to its widest lane scanned.
-AXIS_TOL = 1e-9
-
-
 def closes_over_top(ground) -> bool:
     """True when the ground's highest lane is on its axis (a finite top
     whose contact has rho = 0): a loop could run over it."""
@@ -26,6 +21,9 @@ def closes_over_top(ground) -> bool:
     if not math.isfinite(top):
         return False
     import numpy as np
+
+    # how close to the axis, relative to the widest lane scanned (the loop's own tolerance)
+    from deathsphere.physics.vertical_orbit_on import AXIS_TOL
 
     rho_top, _ = ground.contact(np.array([top]))
     rho_all, _ = ground.contact(np.linspace(0.0, top, 33))

@@ -43,7 +43,7 @@ import numpy as np
 from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
-__all__ = ["Loop", "loop_closure", "turn", "vertical_loop_on", "loop_points_on", "AXIS_TURN_DEG", "INTERVALS"]
+__all__ = ["Loop", "loop_closure", "turn", "vertical_loop_on", "loop_points_on", "AXIS_TURN_DEG", "AXIS_TOL", "INTERVALS"]
 
 #: Intervals of the loop's grid on its half (Simpson's rule on the lap time;
 #: the brackets of the refined points).  The lap time's quadrature error at
@@ -58,6 +58,11 @@ _BISECT = 60
 #: mirror meet at a corner (a curvature without bound: no wheel fits).
 AXIS_TURN_DEG = 0.5
 _INV_PHI = (np.sqrt(5.0) - 1.0) / 2.0
+#: A meridian's end is on the axis when its rho is this close to 0,
+#: relative to the ground's size: a lane is found from its height, and at
+#: a closed end z rises only to second order in s, so round-off in z moves
+#: the point along the meridian by ~sqrt(eps) of the size.
+AXIS_TOL = 1e-6
 
 
 def loop_closure(ground) -> str:
@@ -71,7 +76,7 @@ def loop_closure(ground) -> str:
         return f"the {ground.name}'s meridian does not close over the top"
     length = float(ground.arc_length(np.array(top)))
     rho, _, beta, _, _ = ground.meridian(np.array([0.0, length]))
-    tol = 1e-9 * max(length, 1.0)
+    tol = AXIS_TOL * max(length, 1.0)
     if rho[1] > tol:
         return f"the {ground.name}'s meridian ends {rho[1]:.6g} m from the axis: it does not close over the top"
     if rho[0] > tol:
@@ -114,7 +119,7 @@ class Loop:
         lo, hi = s[max(i - 1, 0)], s[min(i + 1, intervals)]
         s_max = _golden(lambda x: ground.meridian(x)[3], np.array(lo), np.array(hi))
         kappa_max = max(float(np.max(kappa)), float(ground.meridian(s_max)[3]))
-        return cls(ground, length, s, z, beta, kappa, kappa_max, float(z[-1] - z[0]))
+        return cls(ground, length, s, z, beta, kappa, kappa_max, float(ground.highest_lane))
 
     @property
     def turns_one_way(self) -> bool:
@@ -410,24 +415,27 @@ def _slip(loop: Loop, req: _Request, grid: dict, contact, mu):
     descent), by bisection on the curve between the grid's points; NaN where
     it never slips or there is no contact."""
     need = np.where(contact[:, None], np.abs(grid["along"]) / np.where(contact[:, None], grid["normal"], 1.0), 0.0)
-    mu_col = np.where(np.isfinite(mu), mu, np.inf)[:, None]
-    over = need[:, ::-1] > mu_col                                  # from the top (the grid's last point) down
+    over = need[:, ::-1] > mu[:, None]                            # from the top (the grid's last point) down
     slips = contact & over.any(axis=1)
-    j = np.argmax(over, axis=1)                                   # the first point past mu, counted from the top
+    phi = np.full(mu.size, np.nan)
+    rows = np.flatnonzero(slips)
+    if rows.size == 0:
+        return phi
+    sub = _Request(*(getattr(req, name)[rows] for name in ("v_top", "a", "k", "g", "z_top")))
+    j = np.argmax(over[rows], axis=1)                             # the first point past mu, counted from the top
     last = loop.s.size - 1
-    hi_s = loop.s[last - j]                                       # mu exceeded here
-    lo_s = loop.s[np.minimum(last - j + 1, last)]                 # not yet here (or the top itself)
+    past = loop.length - loop.s[last - j]                         # distances from the top: mu exceeded here,
+    before = loop.length - loop.s[np.minimum(last - j + 1, last)]  # not yet here (or the top itself)
 
-    def excess(x):
-        st = _at(loop, req, x[:, None])
+    def excess(d):
+        st = _at(loop, sub, (loop.length - d)[:, None])
         normal = st["normal"][:, 0]
-        return np.where(normal > 0, np.abs(st["along"][:, 0]) / np.where(normal > 0, normal, 1.0), np.inf) - mu_col[:, 0]
+        held = normal > 0
+        return np.where(held, np.abs(st["along"][:, 0]) / np.where(held, normal, 1.0) - mu[rows], 1.0)
 
-    # along the path from the top s falls: bisect in the distance from the top
-    s = _bisect(lambda d: excess(loop.length - d), loop.length - lo_s, loop.length - hi_s)
-    s = np.where(j == 0, loop.length, loop.length - s)
-    beta = loop.meridian(s)[1]
-    return np.where(slips, turn(beta), np.nan)
+    d = np.where(j == 0, 0.0, _bisect(excess, before, past))
+    phi[rows] = turn(loop.meridian(loop.length - d)[1])
+    return phi
 
 
 def loop_points_on(loop: Loop, phi, v_top, a, k, g, mu=np.inf) -> dict:
