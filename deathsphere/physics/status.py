@@ -99,6 +99,7 @@ class Reason(IntEnum):
     SURFACE_NO_ALPHA = 66
     VERTICAL_LOOP_NO_FIT = 67
     VERTICAL_LOOP_TOO_SLOW = 68
+    VERTICAL_LOOP_OVERHANG = 69
 
 
 REASONS = {
@@ -191,6 +192,8 @@ REASONS = {
                                  "least radius of curvature: a kappa_max < 1)",
     Reason.VERTICAL_LOOP_TOO_SLOW: "top speed too low: the wheel leaves the wall somewhere round the loop "
                                    "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 all round)",
+    Reason.VERTICAL_LOOP_OVERHANG: "no top speed holds the wheel round the loop: the wall overhangs (cos(beta) < 0) "
+                                   "where it does not bend towards the centre (kappa <= 0; surfaces.md eq. S10)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

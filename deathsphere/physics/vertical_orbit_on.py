@@ -50,9 +50,10 @@ __all__ = ["Loop", "loop_closure", "turn", "vertical_loop_on", "loop_points_on",
 #: this grid is below 1e-12 of the lap on a sampled sphere (docs/surfaces.md).
 INTERVALS = 1024
 #: Steps of the golden section (a bracket of two grid intervals shrinks by
-#: 0.618 a step: 60 steps reach round-off) and of the bisection.
-_GOLDEN = 60
-_BISECT = 60
+#: 0.618 a step: 48 steps leave 1e-10 of a grid interval) and of the
+#: bisection (2^-48 of its bracket).
+_GOLDEN = 48
+_BISECT = 48
 #: The largest angle [deg] the meridian's tangent may make with the
 #: horizontal where it meets the axis: more, and the loop's curve and its
 #: mirror meet at a corner (a curvature without bound: no wheel fits).
@@ -66,7 +67,8 @@ AXIS_TOL = 1e-6
 
 
 def loop_closure(ground) -> str:
-    """Why ``ground`` has no closed meridian loop, in words, or "" if it has:
+    """Why ``ground`` has no closed meridian loop, in words, or "" if it has
+    (beyond the paper: docs/surfaces.md, "S9-S12"):
     a profile's meridian (``meridian``, ``arc_length``, a finite
     ``highest_lane``) that starts and ends on the axis, its tangent there
     horizontal within :data:`AXIS_TURN_DEG` (so that the mirrored halves join
@@ -134,8 +136,9 @@ class Loop:
 
 
 def turn(beta):
-    """The loop's angle phi = pi - beta [rad] from the top, on the descent
-    0 (top) .. pi (bottom): wrapped so that a wall angle given as -pi at the
+    """The loop's angle phi = pi - beta [rad] from the top (beyond the paper:
+    docs/surfaces.md, "S9-S12"; the globe's azimuth phi of eq. 27 on a
+    circle), on the descent 0 (top) .. pi (bottom): wrapped so that a wall angle given as -pi at the
     top (the same tangent as pi) is the top, not a full turn."""
     return np.mod(np.pi - np.asarray(beta, dtype=float) + np.pi / 2, 2 * np.pi) - np.pi / 2
 
@@ -211,35 +214,43 @@ def _at(loop: Loop, req: _Request, s) -> dict:
 
 def _top_speed_bound(state, beta, req: _Request):
     """The least v_top^2 for N > 0 at a point: from (S10), v_top^2 >
-    -g cos(beta) / kappa_C - (v^2 - v_top^2) wherever kappa_C > 0 (a point
-    bending away from the centre gives no lower bound: -inf)."""
+    -g cos(beta) / kappa_C - (v^2 - v_top^2) wherever kappa_C > 0; where the
+    wall does not bend towards the centre (kappa_C <= 0) speed does not
+    help: an overhang there (cos(beta) < 0) holds the wheel at no speed
+    (+inf), a floor gives no lower bound (-inf)."""
     rise = state["v2"] - req.v_top ** 2                          # what the wheel gains from the top down, by (S9)
     bends = state["kappa_c"] > 0
-    return np.where(bends, -req.g * np.cos(beta) / np.where(bends, state["kappa_c"], 1.0) - rise, -np.inf)
+    flat = np.where(np.cos(beta) < 0, np.inf, -np.inf)
+    return np.where(bends, -req.g * np.cos(beta) / np.where(bends, state["kappa_c"], 1.0) - rise, flat)
+
+
+def _subset(req: _Request, rows) -> _Request:
+    return _Request(*(getattr(req, name)[rows] for name in ("v_top", "a", "k", "g", "z_top")))
 
 
 def _refined_max(loop: Loop, req: _Request, values: np.ndarray, quantity):
     """Per request, where ``quantity(state, beta)`` (its grid values ``values``,
-    rows x grid) is largest: the grid's largest refined by golden section on
-    the curve between its neighbours.  Returns (s, state there, value)."""
+    rows x grid) is largest: the grid's largest, refined by golden section on
+    the curve between its neighbours when it is not at an end (the top and
+    the bottom are points of the loop's mirror symmetry, where a smooth
+    quantity is stationary: there the grid's point is the answer).
+    Returns (s, state there, value)."""
     i = np.argmax(values, axis=1)
     last = loop.s.size - 1
-    lo, hi = loop.s[np.maximum(i - 1, 0)][:, None], loop.s[np.minimum(i + 1, last)][:, None]
+    s = loop.s[i].astype(float)
+    inner = np.flatnonzero((i > 0) & (i < last))
+    if inner.size:
+        sub = _subset(req, inner)
 
-    def f(x):
-        st = _at(loop, req, x)
-        return quantity(st, st["beta"])
+        def f(x):
+            st = _at(loop, sub, x)
+            return quantity(st, st["beta"])
 
-    s = _golden(f, lo, hi)
-    st = _at(loop, req, s)
-    value = quantity(st, st["beta"])
-    grid_best = values[np.arange(values.shape[0]), i][:, None]
-    # an end of the loop (the top or the bottom) is a grid point: keep it where the refined point is no better
-    at_grid = ~(value > grid_best)
-    s = np.where(at_grid, loop.s[i][:, None], s)
-    on_grid = _at(loop, req, loop.s[i][:, None])
-    st = {key: np.where(at_grid, on_grid[key], val) for key, val in st.items()}
-    return s[:, 0], {key: val[:, 0] for key, val in st.items()}, np.where(at_grid, grid_best, value)[:, 0]
+        refined = _golden(f, loop.s[i[inner] - 1][:, None], loop.s[i[inner] + 1][:, None])[:, 0]
+        better = f(refined[:, None])[:, 0] > values[inner, i[inner]]     # else the grid's point stays
+        s[inner] = np.where(better, refined, s[inner])
+    st = _at(loop, req, s[:, None])
+    return s, {key: val[:, 0] for key, val in st.items()}, quantity(st, st["beta"])[:, 0]
 
 
 #: :func:`_peak`'s fit: a polynomial of this degree over at most
@@ -286,8 +297,7 @@ def _peak(loop: Loop, req: _Request, values: np.ndarray, quantity) -> np.ndarray
     sharp = half < _PEAK_LEAST
     s_best = np.empty(n)
     if sharp.any():
-        sub = _Request(*(getattr(req, name)[sharp] for name in ("v_top", "a", "k", "g", "z_top")))
-        s_best[sharp] = _refined_max(loop, sub, values[sharp], quantity)[0]
+        s_best[sharp] = _refined_max(loop, _subset(req, sharp), values[sharp], quantity)[0]
     for w in np.unique(half[~sharp]):              # a few window sizes: one least-squares solve each
         these = np.flatnonzero((half == w) & ~sharp)
         offsets = np.arange(-w, w + 1)
@@ -330,7 +340,9 @@ def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
     inside), ``phi_slip`` (where mu_required first exceeds mu going round
     from the top), ``contact``, ``status`` / ``reason`` (no_fit where a
     kappa_max >= 1, VERTICAL_LOOP_NO_FIT; no_contact where N <= 0 somewhere,
-    VERTICAL_LOOP_TOO_SLOW; slips).  Lap quantities are NaN without contact.
+    VERTICAL_LOOP_OVERHANG where no top speed holds the wheel (the wall
+    overhangs where it bends away from the centre; ``v_min`` is then inf),
+    else VERTICAL_LOOP_TOO_SLOW; slips).  Lap quantities are NaN without contact.
     """
     v_top, a, k, g, mu = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (v_top, a, k, g, mu)))
     shape = v_top.shape
@@ -370,6 +382,7 @@ def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
     v_min = np.where(fits, np.sqrt(np.maximum(bound, 0.0)), np.nan)
     status, reason = first_failure([
         (~fits, Status.NO_FIT, Reason.VERTICAL_LOOP_NO_FIT),
+        (~contact & np.isinf(bound), Status.NO_CONTACT, Reason.VERTICAL_LOOP_OVERHANG),
         (~contact, Status.NO_CONTACT, Reason.VERTICAL_LOOP_TOO_SLOW),
         (mu_max > mu, Status.SLIPS, Reason.SLIPS),
     ])
@@ -421,7 +434,7 @@ def _slip(loop: Loop, req: _Request, grid: dict, contact, mu):
     rows = np.flatnonzero(slips)
     if rows.size == 0:
         return phi
-    sub = _Request(*(getattr(req, name)[rows] for name in ("v_top", "a", "k", "g", "z_top")))
+    sub = _subset(req, rows)
     j = np.argmax(over[rows], axis=1)                             # the first point past mu, counted from the top
     last = loop.s.size - 1
     past = loop.length - loop.s[last - j]                         # distances from the top: mu exceeded here,
@@ -439,7 +452,8 @@ def _slip(loop: Loop, req: _Request, grid: dict, contact, mu):
 
 
 def loop_points_on(loop: Loop, phi, v_top, a, k, g, mu=np.inf) -> dict:
-    """The loop point by point at its angles phi [rad] from the top, 0..2 pi
+    """The loop point by point (beyond the paper: eqs. S9-S11 of
+    docs/surfaces.md) at its angles phi [rad] from the top, 0..2 pi
     (rows: requests; columns: the points; phi a 1-D grid), the keys of
     :func:`deathsphere.physics.vertical_orbit.vertical_profile` (``along``
     the friction along the path, negative on the descent; ``meridional`` 0:

@@ -185,3 +185,25 @@ def test_a_profile_closes_only_on_the_axis_at_both_ends_without_a_corner():
     assert loop_closure(ellipsoid) == ""
     loop = Loop.of(ellipsoid)
     assert loop.turns_one_way and loop.s.size % 2 == 1             # Simpson's rule: an even number of intervals
+
+
+def _waisted(waist):
+    """A closed profile with a waist: rho = 3 sin t (1 - waist sin^2 t), z = 3.9 cos t."""
+    t = np.linspace(np.pi, 0.0, 801)
+    return Profile(np.abs(3 * np.sin(t) * (1 - waist * np.sin(t) ** 2)), 3.9 * np.cos(t))
+
+
+def test_an_overhang_bending_away_from_the_centre_holds_the_wheel_at_no_speed():
+    """At the waist the wall leans out above it (cos beta < 0 on the way up)
+    and bends away from the centre (kappa < 0): by S10 N = v^2 kappa_C + g
+    cos(beta) < 0 at every speed there."""
+    deep, shallow = _waisted(0.35), _waisted(0.2)
+    assert Loop.of(deep).kappa.min() < 0 and not Loop.of(deep).turns_one_way
+    t = deathsphere.vertical_sweep(90, [6.0, 30.0, 300.0], surface="profile", profile=deep, stability=False).table()
+    assert t["status"].tolist() == ["no_contact"] * 3
+    assert all("no top speed holds the wheel" in reason for reason in t["reason"])
+    assert np.isnan(t["v_top_min_m_s"]).all()
+    fine = deathsphere.vertical_sweep(90, 30.0, surface="profile", profile=shallow, stability=False).table()
+    assert fine["status"].tolist() == ["ok"]
+    with pytest.raises(deathsphere.ParameterError, match="bends both ways"):
+        deathsphere.vertical_sweep(90, 30.0, surface="profile", profile=deep, points=5)
