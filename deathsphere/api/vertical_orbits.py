@@ -289,7 +289,12 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
     from deathsphere.results.vertical import vertical_requests
 
     loop = loop_arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
-    fixed = _vertical_setup(side, a, sphere_radius(r, diameter) if loop is None else R, k, g, mu)
+    if loop is None:
+        fixed = _vertical_setup(side, a, sphere_radius(r, diameter), k, g, mu)
+    else:
+        from deathsphere.results.vertical_on import NO_SPHERE_R
+
+        fixed = _vertical_setup(side, a, NO_SPHERE_R, k, g, mu)          # the loop's fit is its own status
     points = None if points is None else int(checked_scalar("points", points))
     _loop_options(loop, points, fixed["side"])
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
@@ -337,15 +342,15 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
 
     # off the globe: a closed profile's loop, or refused saying why
     loop = loop_arena(surface, r, diameter, wall_angle, wall_height, profile)
-    if loop is not None:
-        r = diameter = None                      # the arena refused them on a profile: nothing to pass on
 
     points = None if points is None else int(checked_scalar("points", points))
     _loop_options(loop, points, side)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     overrides = {} if side is None else {"side": checked_choice("side", side, SIDES)}
+    # on a profile the sphere's radius is no request's (the arena refused r and diameter there)
+    radius = sphere_radius(r, diameter) if loop is None else None
     for name, value in (("theta", theta), ("v_top", v_top), ("phidot_top", phidot_top), ("a", a),
-                        ("r", sphere_radius(r, diameter)), ("k", k), ("g", g), ("mu", mu)):
+                        ("r", radius), ("k", k), ("g", g), ("mu", mu)):
         value = one_default(name, value)
         if value is not None:
             overrides[name] = value

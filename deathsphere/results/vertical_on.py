@@ -40,6 +40,11 @@ POINTS_COLUMNS = POINT_COLUMNS + ARENA_COLUMNS
 THETA_IN_MERIDIAN = ("a vertical loop on a profile runs in a meridian plane through the axis: theta must be 90 deg "
                      "(a circle of another cone angle is not a plane curve on the profile)")
 SIDE_INSIDE = "a vertical loop on a profile is computed inside only"
+#: The sphere's radius a profile's request carries: the globe's checks of a
+#: request ask r > a, which is not the loop's fit (a kappa_max < 1, its own
+#: status), so a request on a profile is checked against a radius no wheel
+#: reaches; ``r_m`` is written empty.
+NO_SPHERE_R = params.PARAMS["r"].hi
 
 
 def _validate_on(req) -> np.ndarray:
@@ -47,8 +52,7 @@ def _validate_on(req) -> np.ndarray:
     profile's: the loop's fit is its own status, a kappa_max < 1), then
     theta = 90 deg and the inside."""
     globe = dict(req)
-    # the globe's r > a is not the loop's fit: check the other values against a radius no wheel reaches
-    globe["r"] = np.full(req["r"].shape, params.PARAMS["r"].hi)
+    globe["r"] = np.full(req["r"].shape, NO_SPHERE_R)
     reason = _validate(globe)
     req["k"] = globe["k"]
     typed = req.get("typed", {})

@@ -207,3 +207,16 @@ def test_an_overhang_bending_away_from_the_centre_holds_the_wheel_at_no_speed():
     assert fine["status"].tolist() == ["ok"]
     with pytest.raises(deathsphere.ParameterError, match="bends both ways"):
         deathsphere.vertical_sweep(90, 30.0, surface="profile", profile=deep, points=5)
+
+
+def test_a_wheel_wider_than_the_globe_fits_a_large_profile(tmp_path):
+    """The globe's r > a is not asked on a profile: its fit is the curve's (a kappa_max < 1)."""
+    big = np.loadtxt(ELLIPSOID, delimiter=",", skiprows=1) * 10.0          # semi-axes 40 m and 30 m
+    t = deathsphere.vertical_sweep(90, 30.0, a=3.5, surface="profile", profile=Profile(*big.T),
+                                   stability=False).table()
+    assert t["status"].tolist() == ["ok"]
+    np.testing.assert_allclose(t["r_prime_m"], 10 * A_AXIS ** 2 / B_AXIS - 3.5, rtol=3e-5)
+    path = tmp_path / "loops.csv"
+    path.write_text("theta,v_top,a\n90,30,3.5\n")
+    rows = deathsphere.vertical_input(str(path), surface="profile", profile=Profile(*big.T)).table()
+    assert rows["status"].tolist() == ["ok"] and np.isnan(rows["r_m"]).all()
