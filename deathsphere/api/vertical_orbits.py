@@ -358,22 +358,44 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
         overrides["phi"] = 0.0  # an option's speed is the top's, whatever the file's phi
     # both outputs can be fed back: the summary and the orbit point by point
     outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
+    if loop is not None:
+        from deathsphere.results.vertical_on import ARENA_COLUMNS
+
+        outputs += list(ARENA_COLUMNS)          # a profile's outputs read back, on a profile
     reader = request_reader(source, {**VERTICAL_FIELDS, **PHI_FIELD}, overrides, VERTICAL_ECHO, outputs)
     # a row's refusal names its column as the file's header typed it
     at_phi = partial(requests_at_phi, typed=reader.typed) if loop is None else partial(
-        _requests_on, typed=reader.typed)
+        _requests_on, loop=loop, typed=reader.typed)
     batches = input_requests(reader, _vertical_chunk(points), at_phi)
     return Chunks(_vertical_work(points, stability, keep, loop)(batches))
 
 
-def _requests_on(n: int, invalid=None, input_row=None, phi=None, **fields) -> dict:
-    """A closed profile's requests from an input file's rows: the speed is the
-    top's (a row giving it at another angle phi is refused: taking it back to
-    the top by (S9) needs the loop, which the rows do not carry)."""
+def _requests_on(n: int, invalid=None, input_row=None, phi=None, *, loop, **fields) -> dict:
+    """A closed profile's requests from an input file's rows: a speed given
+    at an angle ``phi`` [deg] from the top (a point of ``vertical --points``
+    read back) is taken back to the top by energy conservation, eq. S9
+    (docs/surfaces.md); a rate given at phi is refused, as is phi on a
+    meridian that bends both ways (phi names more than one point there)."""
+    from deathsphere.physics.vertical_orbit_on import top_speed_on
     from deathsphere.results.vertical import vertical_requests
 
     req = vertical_requests(n, invalid=invalid, input_row=input_row, **fields)
     phi = np.broadcast_to(np.asarray(0.0 if phi is None else phi, dtype=float), (n,))
-    off_top = (np.nan_to_num(phi) != 0.0) & (req["invalid"] == "")
-    req["invalid"][off_top] = "phi: on a profile a row gives the speed at the top (phi 0)"
+    rows = np.flatnonzero((np.nan_to_num(phi) != 0.0) & (req["invalid"] == ""))
+    if rows.size == 0:
+        return req
+    by_rate = ~np.isnan(req["phidot_top"][rows])
+    req["invalid"][rows[by_rate]] = "phi: on a profile a rate is given at the top (phi 0); give v_top at phi"
+    if not loop.turns_one_way:
+        req["invalid"][rows[~by_rate]] = ("phi: the profile's meridian bends both ways, so phi names more than one "
+                                          "point of the loop (give the speed at the top, phi 0)")
+        return req
+    rows = rows[~by_rate & ~np.isnan(req["v_top"][rows])]
+    with np.errstate(all="ignore"):      # unchecked values: the evaluation gives their reasons
+        top = top_speed_on(loop, np.deg2rad(phi[rows]), req["v_top"][rows], req["a"][rows], req["k"][rows],
+                           req["g"][rows])
+    slow = np.isnan(top) & np.isfinite(req["v_top"][rows]) & (req["v_top"][rows] >= 0)
+    req["v_top"][rows] = np.where(slow, req["v_top"][rows], top)
+    req["invalid"][rows[slow]] = ("the speed at phi is below that of a wheel starting from rest at the top "
+                                  "(surfaces.md eq. S9), or the wheel does not fit the loop")
     return req

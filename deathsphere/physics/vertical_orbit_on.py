@@ -43,7 +43,7 @@ import numpy as np
 from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
-__all__ = ["Loop", "loop_closure", "turn", "vertical_loop_on", "loop_points_on", "AXIS_TURN_DEG", "AXIS_TOL", "INTERVALS"]
+__all__ = ["Loop", "loop_closure", "turn", "top_speed_on", "vertical_loop_on", "loop_points_on", "AXIS_TURN_DEG", "AXIS_TOL", "INTERVALS"]
 
 #: Intervals of the loop's grid on its half (Simpson's rule on the lap time;
 #: the brackets of the refined points).  The lap time's quadrature error at
@@ -451,6 +451,40 @@ def _slip(loop: Loop, req: _Request, grid: dict, contact, mu):
     return phi
 
 
+def _arc_at(loop: Loop, phi):
+    """The arc length s of the loop's point at angle phi [rad] from the top
+    (0..2 pi; past pi its mirror on the descent), where pi - beta(s) = phi:
+    from the grid, then bisection on the spline.  phi names one point where
+    the meridian bends one way (:attr:`Loop.turns_one_way`)."""
+    phi = np.mod(np.asarray(phi, dtype=float), 2.0 * np.pi)
+    descent = np.where(phi <= np.pi, phi, 2.0 * np.pi - phi)     # the mirror point's angle
+    on_grid = turn(loop.beta)                                     # falling from pi (bottom) to 0 (top) with s
+    guess = np.interp(descent, on_grid[::-1], loop.s[::-1])
+    h = loop.s[1] - loop.s[0]
+    s = _bisect(lambda x: descent - turn(loop.meridian(x)[1]), np.clip(guess - 2 * h, 0.0, loop.length),
+                np.clip(guess + 2 * h, 0.0, loop.length))
+    return np.where(descent >= on_grid[0], 0.0, np.where(descent <= on_grid[-1], loop.length, s))
+
+
+def top_speed_on(loop: Loop, phi, v, a, k, g):
+    """The top speed [m/s] of the loop whose centre runs at ``v`` [m/s] at
+    angle ``phi`` [rad] from the top, by (S9) (beyond the paper:
+    docs/surfaces.md): v_top^2 = v^2 - 2 g (z_C,top - z_C) / (2k+1).  NaN
+    where v is below a wheel's starting from rest at the top (no top speed
+    gives it) or the wheel does not fit.  Arrays of one shape (phi a point
+    each); a meridian that bends one way (:func:`_arc_at`)."""
+    phi, v, a, k, g = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (phi, v, a, k, g)))
+    req = _request(loop, np.zeros(v.shape), a, k, g)
+    st = _at(loop, req, _arc_at(loop, phi.reshape(-1))[:, None])
+    gained = st["v2"][:, 0]                                      # v^2 from rest at the top
+    top2 = v.reshape(-1) ** 2 - gained
+    # round-off in a speed read back leaves the top a hair below 0
+    top2 = np.where(top2 >= -1e-9 * (v.reshape(-1) ** 2 + np.abs(gained)), np.maximum(top2, 0.0), np.nan)
+    fits = req.a[:, 0] * loop.kappa_max < 1.0 - SINGULAR
+    return np.where(fits, np.sqrt(np.where(np.isnan(top2), 0.0, top2)) + np.where(np.isnan(top2), np.nan, 0.0),
+                    np.nan).reshape(v.shape)
+
+
 def loop_points_on(loop: Loop, phi, v_top, a, k, g, mu=np.inf) -> dict:
     """The loop point by point (beyond the paper: eqs. S9-S11 of
     docs/surfaces.md) at its angles phi [rad] from the top, 0..2 pi
@@ -462,13 +496,7 @@ def loop_points_on(loop: Loop, phi, v_top, a, k, g, mu=np.inf) -> dict:
     The point at phi on the descent is where pi - beta = phi, found by
     bisection on beta(s) from the grid; the ascent mirrors it."""
     phi = np.asarray(phi, dtype=float).reshape(-1)
-    descent = np.where(phi <= np.pi, phi, 2.0 * np.pi - phi)     # the mirror point's angle
-    on_grid = turn(loop.beta)                                     # falling from pi (bottom) to 0 (top) with s
-    guess = np.interp(descent, on_grid[::-1], loop.s[::-1])
-    h = loop.s[1] - loop.s[0]
-    s = _bisect(lambda x: descent - turn(loop.meridian(x)[1]), np.clip(guess - 2 * h, 0.0, loop.length),
-                np.clip(guess + 2 * h, 0.0, loop.length))
-    s = np.where(descent >= on_grid[0], 0.0, np.where(descent <= on_grid[-1], loop.length, s))
+    s = _arc_at(loop, phi)
     req = _request(loop, v_top, a, k, g)
     st = _at(loop, req, np.broadcast_to(s, (req.v_top.shape[0], s.size)))
     fits = (req.a * loop.kappa_max < 1.0 - SINGULAR)

@@ -75,6 +75,25 @@ def test_an_input_files_rows_on_a_profile_each_give_a_row(run, tmp_path):
     assert "theta must be 90" in rows[1] and "v_top" in rows[2]
 
 
+def test_a_profiles_points_read_back_are_requests_for_their_loop(run, tmp_path):
+    """Each point's speed at its phi goes back to the top by S9: the loop at 8 m/s, seven times."""
+    points = run("vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--theta", "90", "--v-top", "8",
+                 "--points", "7", "--format", "csv")
+    path = tmp_path / "points.csv"
+    path.write_text(points.stdout)
+    back = run("vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--input", str(path),
+               "--no-stability", "--format", "csv")
+    assert back.exit_code == 0, back.stderr
+    header, *rows = back.stdout.strip().splitlines()
+    speeds = [float(row.split(",")[header.split(",").index("v_cm_m_s")]) for row in rows]
+    np.testing.assert_allclose(speeds, 8.0, rtol=1e-12)
+    rate = tmp_path / "rate.csv"
+    rate.write_text("theta,phidot_top,phi\n90,2,30\n90,2,0\n")
+    res = run("vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--input", str(rate),
+              "--no-stability", "--format", "csv")
+    assert [row.split(",")[9] for row in res.stdout.strip().splitlines()[1:]] == ["invalid", "ok"]
+
+
 def test_the_machines_loop_on_a_profile_is_refused_saying_why(run):
     res = run("ride", "--vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--v-top", "30km/h")
     assert res.exit_code == 2 and "Traceback" not in res.stderr
