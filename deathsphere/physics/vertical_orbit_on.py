@@ -298,22 +298,37 @@ def _peak(loop: Loop, req: _Request, values: np.ndarray, quantity) -> np.ndarray
     s_best = np.empty(n)
     if sharp.any():
         s_best[sharp] = _refined_max(loop, _subset(req, sharp), values[sharp], quantity)[0]
-    for w in np.unique(half[~sharp]):              # a few window sizes: one least-squares solve each
-        these = np.flatnonzero((half == w) & ~sharp)
-        offsets = np.arange(-w, w + 1)
-        fit = np.linalg.pinv(np.vander(offsets / float(w), _PEAK_DEGREE + 1, increasing=True))
-        c = values[these[:, None], mirrored(i[these, None] + offsets[None, :])] @ fit.T
-        power = np.arange(_PEAK_DEGREE + 1)
-        # the polynomial's stationary point nearest 0 by Newton's method from 0 (its largest near the grid's)
-        u = np.zeros(these.size)
-        for _ in range(8):
-            d1 = np.sum(c[:, 1:] * power[1:] * u[:, None] ** (power[1:] - 1), axis=1)
-            d2 = np.sum(c[:, 2:] * (power[2:] * (power[2:] - 1)) * u[:, None] ** (power[2:] - 2), axis=1)
-            u = np.clip(u - np.where(d2 < 0, d1 / np.where(d2 < 0, d2, -1.0), 0.0), -1.0, 1.0)
-        s = loop.s[i[these]] + u * w * h
-        # past an end: the mirror image of the point (the same point of the loop's other half)
-        s_best[these] = np.where(s > loop.length, 2 * loop.length - s, np.abs(s))
+    fitted = np.flatnonzero(~sharp)
+    if fitted.size:
+        s_best[fitted] = _fitted_peak(loop, values[fitted], i[fitted], half[fitted], mirrored)
     return s_best
+
+
+def _fitted_peak(loop: Loop, values, i, half, mirrored):
+    """:func:`_peak`'s least-squares fit, every row at once: a Chebyshev
+    series of degree :data:`_PEAK_DEGREE` in u = (j - i) / half over the
+    row's window |j - i| <= half (weights 1 inside, 0 outside, on the widest
+    window's offsets), its stationary point nearest u = 0 by Newton's
+    method.  Returns the arc lengths."""
+    from numpy.polynomial import chebyshev
+
+    h = loop.s[1] - loop.s[0]
+    offsets = np.arange(-_PEAK_WINDOW, _PEAK_WINDOW + 1)
+    u = offsets[None, :] / half[:, None]                        # (rows, offsets)
+    inside = (np.abs(u) <= 1.0).astype(float)
+    basis = chebyshev.chebvander(np.clip(u, -1.0, 1.0), _PEAK_DEGREE)         # (rows, offsets, degree + 1)
+    window = values[np.arange(values.shape[0])[:, None], mirrored(i[:, None] + offsets[None, :])]
+    normal = np.einsum("rj,rjp,rjq->rpq", inside, basis, basis)
+    rhs = np.einsum("rj,rjp,rj->rp", inside, basis, window)
+    c = np.linalg.solve(normal, rhs[..., None])[..., 0].T         # (degree + 1, rows): a series per row
+    d1, d2 = chebyshev.chebder(c, 1), chebyshev.chebder(c, 2)
+    x = np.zeros(values.shape[0])
+    for _ in range(8):                                            # Newton's steps from the grid's largest
+        slope, bend = chebyshev.chebval(x, d1, tensor=False), chebyshev.chebval(x, d2, tensor=False)
+        x = np.clip(x - np.where(bend < 0, slope / np.where(bend < 0, bend, -1.0), 0.0), -1.0, 1.0)
+    s = loop.s[i] + x * half * h
+    # past an end: the mirror image of the point (the same point of the loop's other half)
+    return np.where(s > loop.length, 2 * loop.length - s, np.abs(s))
 
 
 def _simpson(y, h):
