@@ -23,11 +23,11 @@ from deathsphere.physics.stability import methods
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.requests.decode import as_typed
 from deathsphere.results.vertical import (
-    _ANGLE_KEYS,
-    _SUMMARY_KEYS,
+    ANGLE_KEYS,
+    SUMMARY_KEYS,
     COLUMNS,
     POINT_COLUMNS,
-    _validate,
+    validate_vertical,
     phi_degrees,
 )
 
@@ -53,7 +53,7 @@ def _validate_on(req) -> np.ndarray:
     theta = 90 deg and the inside."""
     globe = dict(req)
     globe["r"] = np.full(req["r"].shape, NO_SPHERE_R)
-    reason = _validate(globe)
+    reason = validate_vertical(globe)
     req["k"] = globe["k"]
     typed = req.get("typed", {})
     with np.errstate(invalid="ignore"):
@@ -89,21 +89,22 @@ def evaluate_vertical_on(req: dict, loop) -> Table:
     n = len(req["theta"])
     reason_words = _validate_on(req)
     rows = np.flatnonzero(reason_words == "")
-    out = {col: np.full(n, np.nan) for col in list(_SUMMARY_KEYS.values()) + list(_ANGLE_KEYS.values())}
+    out = {col: np.full(n, np.nan) for col in list(SUMMARY_KEYS.values()) + list(ANGLE_KEYS.values())}
     status = np.full(n, Status.INVALID, dtype=np.int8)
     reason = reason_words.astype(object)
     if rows.size:
         res = vertical_orbit_on.vertical_loop_on(loop, _top_speed(req, rows, loop), req["a"][rows], req["k"][rows],
                                                  req["g"][rows], req["mu"][rows])
-        for key, col in _SUMMARY_KEYS.items():
+        for key, col in SUMMARY_KEYS.items():
             out[col][rows] = res[key]
-        for key, col in _ANGLE_KEYS.items():
+        for key, col in ANGLE_KEYS.items():
             out[col][rows] = np.rad2deg(res[key])
         status[rows] = res["status"]
         reason[rows] = REASON_TEXT[res["reason"]]
     live = np.isin(status, (Status.OK, Status.SLIPS))
     columns = {
-        "stability": np.where(live, "unknown", ""), "stability_method": np.where(live, methods.NOT_ANALYSED_PROFILE, ""),
+        "stability": np.where(live, "unknown", "").astype(object),
+        "stability_method": np.where(live, methods.NOT_ANALYSED_PROFILE, "").astype(object),
         "growth_rate_1_s": np.full(n, np.nan),
         "input_row": req["input_row"].astype(np.int64), "body": req["body"], "side": req["side"],
         "theta_deg": req["theta"], "alpha_deg": req["alpha"], "a_m": req["a"],
@@ -112,8 +113,6 @@ def evaluate_vertical_on(req: dict, loop) -> Table:
         **out,
     }
     _arena(columns, n, loop)
-    columns["stability"] = columns["stability"].astype(object)
-    columns["stability_method"] = columns["stability_method"].astype(object)
     finite_or_blank(columns)
     echo_given(columns, {"v_cm_m_s": req["v_top"], "omega_rad_s": req["phidot_top"]})
     return Table({name: columns[name] for name in SUMMARY_COLUMNS})
