@@ -52,10 +52,10 @@ __all__ = ["Loop", "loop_closure", "turn", "top_speed_on", "vertical_loop_on", "
 #: sampled sphere and an ellipsoid (docs/surfaces.md, "Numerics").
 INTERVALS = 1024
 #: Steps of the golden section (a bracket of two grid intervals shrinks by
-#: 0.618 a step: 48 steps leave 1e-10 of a grid interval) and of the
-#: bisection (2^-48 of its bracket).
-_GOLDEN = 48
-_BISECT = 48
+#: 0.618 a step: 32 steps leave 4e-7 of it, and a smooth maximum's value is
+#: off by the square of that) and of the bisection (2^-36 of its bracket).
+_GOLDEN = 32
+_BISECT = 36
 #: The largest angle [deg] the meridian's tangent may make with the
 #: horizontal where it meets the axis: more, and the loop's curve and its
 #: mirror meet at a corner (a curvature without bound: no wheel fits).
