@@ -319,7 +319,10 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
 
     As :func:`orbit_input`, for :func:`vertical`: the header names
     ``theta`` and ``v_top`` or ``phidot_top`` (and optionally ``side``,
-    ``a``, ``r``, ``k``, ``g``, ``mu``); a keyword argument given applies
+    ``a``, ``r``, ``k``, ``g``, ``mu``); ``surface``, ``profile`` (and the
+    shape keywords) as for :func:`vertical_sweep`: inside a closed profile
+    every row is a loop in a meridian plane (a row with another theta is
+    invalid, saying why); a keyword argument given applies
     to every row, over the file's column (one value each); one not given
     takes the file's value, else its default (k = 0.5).  A result CSV of
     ``vertical`` is read too: the summary (``v_cm_m_s`` is the top speed)
@@ -387,8 +390,8 @@ def _requests_on(n: int, invalid=None, input_row=None, phi=None, *, loop, **fiel
     by_rate = ~np.isnan(req["phidot_top"][rows])
     req["invalid"][rows[by_rate]] = "phi: on a profile a rate is given at the top (phi 0); give v_top at phi"
     if not loop.turns_one_way:
-        req["invalid"][rows[~by_rate]] = ("phi: the profile's meridian bends both ways, so phi names more than one "
-                                          "point of the loop (give the speed at the top, phi 0)")
+        req["invalid"][rows[~by_rate]] = ("phi: the profile's meridian bends both ways: phi names more than one "
+                                          "point of the loop (give the speed at the top: phi 0)")
         return req
     rows = rows[~by_rate & ~np.isnan(req["v_top"][rows])]
     with np.errstate(all="ignore"):      # unchecked values: the evaluation gives their reasons
@@ -397,5 +400,5 @@ def _requests_on(n: int, invalid=None, input_row=None, phi=None, *, loop, **fiel
     slow = np.isnan(top) & np.isfinite(req["v_top"][rows]) & (req["v_top"][rows] >= 0)
     req["v_top"][rows] = np.where(slow, req["v_top"][rows], top)
     req["invalid"][rows[slow]] = ("the speed at phi is below that of a wheel starting from rest at the top "
-                                  "(surfaces.md eq. S9), or the wheel does not fit the loop")
+                                  "(surfaces.md eq. S9) or the wheel does not fit the loop")
     return req
