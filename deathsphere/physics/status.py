@@ -100,6 +100,7 @@ class Reason(IntEnum):
     VERTICAL_LOOP_NO_FIT = 67
     VERTICAL_LOOP_TOO_SLOW = 68
     VERTICAL_LOOP_OVERHANG = 69
+    VERTICAL_LOOP_TOO_FAST = 70
 
 
 REASONS = {
@@ -194,6 +195,8 @@ REASONS = {
                                    "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 all round)",
     Reason.VERTICAL_LOOP_OVERHANG: "no top speed holds the wheel round the loop: the wall overhangs (cos(beta) < 0) "
                                    "where it does not bend towards the centre (kappa <= 0; surfaces.md eq. S10)",
+    Reason.VERTICAL_LOOP_TOO_FAST: "too fast where the wall bends away from the centre: the wheel leaves it there "
+                                   "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 with kappa_C < 0)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -360,7 +360,9 @@ def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
     kappa_max >= 1, VERTICAL_LOOP_NO_FIT; no_contact where N <= 0 somewhere,
     VERTICAL_LOOP_OVERHANG where no top speed holds the wheel (the wall
     overhangs where it bends away from the centre; ``v_min`` is then inf),
-    else VERTICAL_LOOP_TOO_SLOW; slips).  Lap quantities are NaN without contact.
+    VERTICAL_LOOP_TOO_FAST where v_top is above ``v_min`` and the wheel
+    leaves the wall where it bends away from the centre, else
+    VERTICAL_LOOP_TOO_SLOW; slips).  Lap quantities are NaN without contact.
     """
     v_top, a, k, g, mu = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (v_top, a, k, g, mu)))
     shape = v_top.shape
@@ -401,6 +403,8 @@ def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
     status, reason = first_failure([
         (~fits, Status.NO_FIT, Reason.VERTICAL_LOOP_NO_FIT),
         (~contact & np.isinf(bound), Status.NO_CONTACT, Reason.VERTICAL_LOOP_OVERHANG),
+        # fast enough for every point that bends towards the centre: it leaves where the wall bends away
+        (~contact & (req.v_top[:, 0] ** 2 > bound), Status.NO_CONTACT, Reason.VERTICAL_LOOP_TOO_FAST),
         (~contact, Status.NO_CONTACT, Reason.VERTICAL_LOOP_TOO_SLOW),
         (mu_max > mu, Status.SLIPS, Reason.SLIPS),
     ])

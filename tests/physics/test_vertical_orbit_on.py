@@ -220,3 +220,21 @@ def test_a_wheel_wider_than_the_globe_fits_a_large_profile(tmp_path):
     path.write_text("theta,v_top,a\n90,30,3.5\n")
     rows = deathsphere.vertical_input(str(path), surface="profile", profile=Profile(*big.T)).table()
     assert rows["status"].tolist() == ["ok"] and np.isnan(rows["r_m"]).all()
+
+
+def test_a_bump_bending_away_from_the_centre_is_left_by_a_fast_wheel():
+    """Below the equator a bump bends the wall away from the centre (kappa <
+    0) where it still faces up (cos beta > 0): by S10 N = v^2 kappa_C + g
+    cos(beta) falls with speed there, and a wheel fast enough for the top
+    leaves the wall at the bump."""
+    t = np.linspace(np.pi, 0.0, 801)
+    bump = Profile(np.abs(R * np.sin(t) * (1 - 0.15 * np.exp(-((t - 2.3) / 0.25) ** 2))), R * np.cos(t))
+    loop = Loop.of(bump)
+    concave = loop.kappa < 0
+    assert concave.any() and np.all(np.cos(loop.beta[concave]) > 0)
+    rows = deathsphere.vertical_sweep(90, [5.0, 6.0, 30.0], surface="profile", profile=bump,
+                                      stability=False).table()
+    v_min = rows["v_top_min_m_s"][0]
+    assert 5.0 < v_min < 6.0 and rows["status"].tolist() == ["no_contact"] * 3
+    assert "top speed too low" in rows["reason"][0]
+    assert all("too fast where the wall bends away" in reason for reason in rows["reason"][1:])
