@@ -240,12 +240,13 @@ def _theta_in_meridian(loop, axis) -> None:
     """On a closed profile every theta typed must be 90 deg (a loop in a meridian plane), refused in one line."""
     if loop is None:
         return
-    values = axis.take(np.arange(len(axis)))
-    if np.any(values != 90.0):
-        from deathsphere.results.vertical_on import THETA_IN_MERIDIAN
+    for start in range(0, len(axis), 65536):              # in slices: a long range is never held at once
+        values = axis.take(np.arange(start, min(start + 65536, len(axis))))
+        if np.any(values != 90.0):
+            from deathsphere.results.vertical_on import THETA_IN_MERIDIAN
 
-        raise ParameterError(f"{THETA_IN_MERIDIAN} (got {shown_number(float(values[values != 90.0][0]))})",
-                             "theta")
+            raise ParameterError(f"{THETA_IN_MERIDIAN} (got {shown_number(float(values[values != 90.0][0]))})",
+                                 "theta")
 
 
 def _vertical_chunk(points: int | None) -> int:
