@@ -20,7 +20,7 @@ import numpy as np  # noqa: E402
 from timing import best_of  # noqa: E402
 
 import deathsphere  # noqa: E402
-from deathsphere.physics.vertical_orbit_on import Loop  # noqa: E402
+from deathsphere.physics.meridian_loop import Loop  # noqa: E402
 from deathsphere.records.profile_files import profile_file  # noqa: E402
 
 ELLIPSOID = Path(__file__).resolve().parents[1] / "tests" / "data" / "ellipsoid_dome.csv"

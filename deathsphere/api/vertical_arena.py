@@ -23,7 +23,7 @@ def closes_over_top(ground) -> bool:
     import numpy as np
 
     # how close to the axis, relative to the widest lane scanned (the loop's own tolerance)
-    from deathsphere.physics.vertical_orbit_on import AXIS_TOL
+    from deathsphere.physics.meridian_loop import AXIS_TOL
 
     rho_top, _ = ground.contact(np.array([top]))
     rho_all, _ = ground.contact(np.linspace(0.0, top, 33))
@@ -50,7 +50,7 @@ def loop_arena(surface=None, r=None, diameter=None, wall_angle=None, wall_height
     named = _named(surface, wall_angle, wall_height, profile)
     ground = arena(surface, r, diameter, wall_angle, wall_height, profile)
     if closes_over_top(ground) and hasattr(ground, "meridian"):
-        from deathsphere.physics.vertical_orbit_on import Loop, loop_closure
+        from deathsphere.physics.meridian_loop import Loop, loop_closure
 
         why = loop_closure(ground)
         if why:

@@ -14,7 +14,7 @@ import pytest
 
 import deathsphere
 from deathsphere.physics.ground import Profile
-from deathsphere.physics.vertical_orbit_on import Loop, loop_closure
+from deathsphere.physics.meridian_loop import Loop, loop_closure
 from deathsphere.results.vertical import COLUMNS, POINT_COLUMNS
 
 R, G = 3.0, 9.80665
