@@ -27,7 +27,7 @@ from deathsphere.model import (
 )
 from deathsphere.physics import region, wheel
 from deathsphere.physics.status import REASON_TEXT, Reason
-from deathsphere.results.vertical import VERTICAL_FIELDS, _validate, vertical_requests
+from deathsphere.results.vertical import VERTICAL_FIELDS, validate_vertical, vertical_requests
 from deathsphere.simulation.status import (
     NO_FIT_VERTICAL_REASON,
     RunStatus,
@@ -68,7 +68,7 @@ def _model_reasons() -> list[str]:
         reasons += list(validate_requests(make_requests(1, **case)))
     for case in (dict(theta=90), dict(theta=90, v_top=1, phidot_top=1), dict(theta=90, v_top=-1),
                  dict(theta=90, phidot_top=2e9)):
-        reasons += list(_validate(vertical_requests(1, **case)))
+        reasons += list(validate_vertical(vertical_requests(1, **case)))
     return reasons
 
 

@@ -82,8 +82,9 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
                                 else "contact's height above the floor)"), "theta")
     for key in ("vertical", "v_top"):
         if typed.get(key):
-            raise ParameterError(f"a vertical loop is the globe's: not on a {ground.name} (a loop over the top "
-                                 f"needs a roof; give {lane_key(ground)} for a horizontal lane)", key)
+            raise ParameterError(f"a machine's vertical loop is the globe's: not on a {ground.name} (a loop over "
+                                 "the top needs a roof, and off the globe the machine's effective inertia changes "
+                                 f"with the curvature round it; give {lane_key(ground)} for a horizontal lane)", key)
     at, where = _lane_typed(ground, typed)
     holds = [key for key in ("alpha", "speed", "com_speed", "period") if typed.get(key) is not None]
     if len(holds) != 1:

@@ -1,20 +1,18 @@
 """The arena of ``vertical``: a vertical loop runs over the top of its
-ground, so it needs a surface that closes over the rider.  The globe does;
-a drum, a cone and flat ground do not, and are refused; a profile (or a
-cone's apex) that closes over the top is refused too: the loop's equations
-(McDonald 1993 eqs. 27-28b) are solved on the sphere only
-(docs/surfaces.md, "Work left")."""
+ground, so it needs a surface that closes over the rider.  The globe does
+(McDonald 1993 eqs. 26-28b); so does a profile whose meridian meets the
+axis at its lowest and its highest point, the loop then running in a
+meridian plane (beyond the paper: docs/surfaces.md, "S9-S12. A vertical
+loop inside a closed profile").  A drum, a cone and flat ground do not
+close over the rider, and a profile open at the top does not: they are
+refused in one line, as is a ground that closes over the top but not below
+(a cone leaning in, a dome on a floor) or meets the axis at a corner."""
 
 from __future__ import annotations
 
 import math
 
 from deathsphere.params import ParameterError
-
-#: A ground closes over the top when its highest lane's contact is this
-#: close to the axis, relative to its widest lane scanned.
-AXIS_TOL = 1e-9
-
 
 def closes_over_top(ground) -> bool:
     """True when the ground's highest lane is on its axis (a finite top
@@ -24,26 +22,56 @@ def closes_over_top(ground) -> bool:
         return False
     import numpy as np
 
+    # how close to the axis, relative to the widest lane scanned (the loop's own tolerance)
+    from deathsphere.physics.meridian_loop import AXIS_TOL
+
     rho_top, _ = ground.contact(np.array([top]))
     rho_all, _ = ground.contact(np.linspace(0.0, top, 33))
     return bool(abs(float(rho_top[0])) <= AXIS_TOL * max(float(np.max(rho_all)), 1.0))
 
 
+def _named(surface, wall_angle, wall_height, profile) -> str:
+    """The keyword a refusal names: ``surface`` if typed, else the shape keyword that named a wall."""
+    if surface is not None:
+        return "surface"
+    return next(name for name, value in (("wall_angle", wall_angle), ("wall_height", wall_height),
+                                         ("profile", profile)) if value is not None)
+
+
+def loop_arena(surface=None, r=None, diameter=None, wall_angle=None, wall_height=None, profile=None):
+    """None on the globe; on a profile that closes at both ends its loop
+    (:class:`~deathsphere.physics.vertical_orbit_on.Loop`, sampled once);
+    elsewhere a ParameterError naming ``surface`` (or the shape keyword
+    that names a wall), saying why no vertical loop is computed there."""
+    from deathsphere.requests.arena import arena, names_a_wall
+
+    if not names_a_wall(surface, wall_angle, wall_height, profile):
+        return None
+    named = _named(surface, wall_angle, wall_height, profile)
+    ground = arena(surface, r, diameter, wall_angle, wall_height, profile)
+    if closes_over_top(ground) and hasattr(ground, "meridian"):
+        from deathsphere.physics.meridian_loop import Loop, loop_closure
+
+        why = loop_closure(ground)
+        if why:
+            raise ParameterError(f"no vertical loop: {why} (loops are computed on the sphere and on a profile "
+                                 "closed at both ends)", named)
+        return Loop.of(ground)
+    raise ParameterError(f"a vertical loop runs over the top of its ground and the {ground.name} does not close "
+                         "over the rider (no ground above the top of the loop): loops are computed on the sphere "
+                         "and on a profile closed at both ends", named)
+
+
 def refuse_off_globe(surface=None, r=None, diameter=None, wall_angle=None, wall_height=None, profile=None):
     """Nothing on the globe; elsewhere a ParameterError naming ``surface``
-    (or the shape keyword that names a wall): why no vertical loop is
-    computed there."""
+    (or the shape keyword that names a wall): why the globe's vertical loop
+    is not computed there (the single-contact machine's loop, whose
+    effective inertia changes with the curvature round a profile, is the
+    globe's only: docs/machine.md sec. 10)."""
     from deathsphere.requests.arena import arena, names_a_wall
 
     if not names_a_wall(surface, wall_angle, wall_height, profile):
         return
-    named = "surface" if surface is not None else next(
-        name for name, value in (("wall_angle", wall_angle), ("wall_height", wall_height), ("profile", profile))
-        if value is not None)
     ground = arena(surface, r, diameter, wall_angle, wall_height, profile)
-    if closes_over_top(ground):
-        raise ParameterError(f"a vertical loop is solved on the sphere only (eqs. 27-28b): on a {ground.name} that "
-                             "closes over the top it is not computed yet (use --surface sphere)", named)
-    raise ParameterError(f"a vertical loop runs over the top of its ground and the {ground.name} does not close "
-                         "over the rider (no ground above the top of the loop): only the sphere has vertical "
-                         "orbits", named)
+    raise ParameterError(f"this vertical loop is solved on the sphere only: not on a {ground.name}",
+                         _named(surface, wall_angle, wall_height, profile))

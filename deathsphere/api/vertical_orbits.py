@@ -37,7 +37,7 @@ from deathsphere.api.streams import (
 from deathsphere.constants import (
     SIDES,
 )
-from deathsphere.params import ParameterError
+from deathsphere.params import ParameterError, shown_number
 from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.table import Table
 
@@ -192,24 +192,61 @@ def _vertical_setup(side, a, r, k, g, mu) -> dict:
     return dict(side=setup.side, a=setup.a, r=setup.r, k=setup.k, g=setup.g, mu=setup.mu)
 
 
-def _vertical_work(points: int | None, stability: bool, keep=None):
+def _vertical_work(points: int | None, stability: bool, keep=None, loop=None):
     """What one batch of vertical requests becomes: summary rows, or the
     orbit point by point in slices of at most :data:`POINT_ROWS` rows
-    (only the rows whose status is in ``keep``, if given)."""
+    (only the rows whose status is in ``keep``, if given); on the globe,
+    or inside the closed profile's ``loop`` when given."""
     from deathsphere.results.vertical import evaluate_vertical, vertical_points
 
     def kept(table):
         return table if keep is None else table[np.isin(table["status"], keep)]
 
+    if loop is None:
+        summary = partial(evaluate_vertical, stability=stability)
+        sliced_points = vertical_points
+    else:
+        from deathsphere.results.vertical_on import evaluate_vertical_on, vertical_points_on
+
+        summary = partial(evaluate_vertical_on, loop=loop)
+        sliced_points = partial(vertical_points_on, loop=loop)
     if points is None:
-        return lambda batches: ((n, kept(evaluate_vertical(req, stability=stability))) for n, req in batches)
+        return lambda batches: ((n, kept(summary(req))) for n, req in batches)
 
     def sliced(batches):
         for n, req in batches:
             for start in range(0, points, POINT_ROWS):
                 last = start + POINT_ROWS >= points
-                yield (n if last else 0), kept(vertical_points(req, points, start, start + POINT_ROWS))
+                yield (n if last else 0), kept(sliced_points(req, points=points, start=start,
+                                                             stop=start + POINT_ROWS))
     return sliced
+
+
+def _loop_options(loop, points, side) -> None:
+    """On a closed profile: the inside only, and ``points`` (angles phi from
+    the top) only where phi names one point (a meridian that turns one way)."""
+    if loop is None:
+        return
+    if side == "outside":
+        from deathsphere.results.vertical_on import SIDE_INSIDE
+
+        raise ParameterError(SIDE_INSIDE, "side")
+    if points is not None and not loop.turns_one_way:
+        raise ParameterError("points: the profile's meridian bends both ways, so an angle phi of the loop's tangent "
+                             "names more than one point (the summary rows are computed)", "points")
+
+
+def _theta_in_meridian(loop, axis) -> None:
+    """On a closed profile every theta typed must be 90 deg (a loop in a meridian plane), refused in one line."""
+    if loop is None:
+        return
+    for start in range(0, len(axis), 65536):              # in slices: a long range is never held at once
+        values = axis.take(np.arange(start, min(start + 65536, len(axis))))
+        if np.any(values != 90.0):
+            from deathsphere.results.vertical_on import THETA_IN_MERIDIAN
+
+            raise ParameterError(f"{THETA_IN_MERIDIAN} (got {shown_number(float(values[values != 90.0][0]))})",
+                                 "theta")
 
 
 def _vertical_chunk(points: int | None) -> int:
@@ -230,8 +267,11 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
         exactly one of ``v_top`` [m/s] and ``phidot_top`` [rad/s].
     side, a, r, diameter, k, g, mu, points, only, stability : as for :func:`vertical` (one value each).
     surface, wall_angle, wall_height, profile : the arena, as for :func:`orbit`:
-        a vertical loop needs a surface that closes over the top; off the
-        globe it is refused, saying why (:mod:`deathsphere.api.vertical_arena`).
+        a vertical loop needs a surface that closes over the top: the globe,
+        or a profile closed at both ends (theta 90 only, inside; beyond the
+        paper, docs/surfaces.md eqs. S9-S12: the globe's columns, then
+        ``surface`` and ``height_m``); elsewhere it is refused, saying why
+        (:mod:`deathsphere.api.vertical_arena`).
 
     Returns
     -------
@@ -246,12 +286,18 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
     >>> t["theta_deg"].tolist(), t["v_cm_m_s"].tolist()
     ([60.0, 60.0, 90.0, 90.0], [6.0, 7.0, 6.0, 7.0])
     """
-    from deathsphere.api.vertical_arena import refuse_off_globe
+    from deathsphere.api.vertical_arena import loop_arena
     from deathsphere.results.vertical import vertical_requests
 
-    refuse_off_globe(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
-    fixed = _vertical_setup(side, a, sphere_radius(r, diameter), k, g, mu)
+    loop = loop_arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
+    if loop is None:
+        fixed = _vertical_setup(side, a, sphere_radius(r, diameter), k, g, mu)
+    else:
+        from deathsphere.results.vertical_on import NO_SPHERE_R
+
+        fixed = _vertical_setup(side, a, NO_SPHERE_R, k, g, mu)          # the loop's fit is its own status
     points = None if points is None else int(checked_scalar("points", points))
+    _loop_options(loop, points, fixed["side"])
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     if not is_given(theta):
         raise ParameterError("theta is required: one or more values or start:stop:step ranges", "theta",
@@ -261,9 +307,10 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
                              "phidot_top" if is_given(v_top) else "v_top")
     key, value = ("v_top", v_top) if is_given(v_top) else ("phidot_top", phidot_top)
     axes = {"theta": checked_axis("theta", theta), key: checked_axis(key, value)}
+    _theta_in_meridian(loop, axes["theta"])
     total = checked_grid_size(axes)
     batches = grid_requests(axes, _vertical_chunk(points), vertical_requests, fixed)
-    return Chunks(_vertical_work(points, stability, keep)(batches), total)
+    return Chunks(_vertical_work(points, stability, keep, loop)(batches), total)
 
 
 def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None, a=None, r=None, k=None,
@@ -273,7 +320,10 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
 
     As :func:`orbit_input`, for :func:`vertical`: the header names
     ``theta`` and ``v_top`` or ``phidot_top`` (and optionally ``side``,
-    ``a``, ``r``, ``k``, ``g``, ``mu``); a keyword argument given applies
+    ``a``, ``r``, ``k``, ``g``, ``mu``); ``surface``, ``profile`` (and the
+    shape keywords) as for :func:`vertical_sweep`: inside a closed profile
+    every row is a loop in a meridian plane (a row with another theta is
+    invalid, saying why); a keyword argument given applies
     to every row, over the file's column (one value each); one not given
     takes the file's value, else its default (k = 0.5).  A result CSV of
     ``vertical`` is read too: the summary (``v_cm_m_s`` is the top speed)
@@ -290,17 +340,21 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
     >>> t["status"].tolist()
     ['ok', 'invalid']
     """
-    from deathsphere.api.vertical_arena import refuse_off_globe
+    from deathsphere.api.vertical_arena import loop_arena
     from deathsphere.results.vertical import COLUMNS as VERTICAL_COLUMNS
     from deathsphere.results.vertical import POINT_COLUMNS, VERTICAL_FIELDS
 
-    refuse_off_globe(surface, r, diameter, wall_angle, wall_height, profile)   # off the globe: refused, saying why
+    # off the globe: a closed profile's loop, or refused saying why
+    loop = loop_arena(surface, r, diameter, wall_angle, wall_height, profile)
 
     points = None if points is None else int(checked_scalar("points", points))
+    _loop_options(loop, points, side)
     stability, keep = checked_flag("stability", stability), checked_statuses(only)
     overrides = {} if side is None else {"side": checked_choice("side", side, SIDES)}
+    # on a profile the sphere's radius is no request's (the arena refused r and diameter there)
+    radius = sphere_radius(r, diameter) if loop is None else None
     for name, value in (("theta", theta), ("v_top", v_top), ("phidot_top", phidot_top), ("a", a),
-                        ("r", sphere_radius(r, diameter)), ("k", k), ("g", g), ("mu", mu)):
+                        ("r", radius), ("k", k), ("g", g), ("mu", mu)):
         value = one_default(name, value)
         if value is not None:
             overrides[name] = value
@@ -308,7 +362,44 @@ def vertical_input(source, *, theta=None, v_top=None, phidot_top=None, side=None
         overrides["phi"] = 0.0  # an option's speed is the top's, whatever the file's phi
     # both outputs can be fed back: the summary and the orbit point by point
     outputs = list(dict.fromkeys(VERTICAL_COLUMNS + POINT_COLUMNS))
+    if loop is not None:
+        from deathsphere.results.vertical_on import ARENA_COLUMNS
+
+        outputs += list(ARENA_COLUMNS)          # a profile's outputs read back, on a profile
     reader = request_reader(source, {**VERTICAL_FIELDS, **PHI_FIELD}, overrides, VERTICAL_ECHO, outputs)
     # a row's refusal names its column as the file's header typed it
-    batches = input_requests(reader, _vertical_chunk(points), partial(requests_at_phi, typed=reader.typed))
-    return Chunks(_vertical_work(points, stability, keep)(batches))
+    at_phi = partial(requests_at_phi, typed=reader.typed) if loop is None else partial(
+        _requests_on, loop=loop, typed=reader.typed)
+    batches = input_requests(reader, _vertical_chunk(points), at_phi)
+    return Chunks(_vertical_work(points, stability, keep, loop)(batches))
+
+
+def _requests_on(n: int, invalid=None, input_row=None, phi=None, *, loop, **fields) -> dict:
+    """A closed profile's requests from an input file's rows: a speed given
+    at an angle ``phi`` [deg] from the top (a point of ``vertical --points``
+    read back) is taken back to the top by energy conservation, eq. S9
+    (docs/surfaces.md); a rate given at phi is refused, as is phi on a
+    meridian that bends both ways (phi names more than one point there)."""
+    from deathsphere.physics.vertical_orbit_on import top_speed_on
+    from deathsphere.results.vertical import vertical_requests
+
+    req = vertical_requests(n, invalid=invalid, input_row=input_row, **fields)
+    phi = np.broadcast_to(np.asarray(0.0 if phi is None else phi, dtype=float), (n,))
+    rows = np.flatnonzero((np.nan_to_num(phi) != 0.0) & (req["invalid"] == ""))
+    if rows.size == 0:
+        return req
+    by_rate = ~np.isnan(req["phidot_top"][rows])
+    req["invalid"][rows[by_rate]] = "phi: on a profile a rate is given at the top (phi 0); give v_top at phi"
+    if not loop.turns_one_way:
+        req["invalid"][rows[~by_rate]] = ("phi: the profile's meridian bends both ways: phi names more than one "
+                                          "point of the loop (give the speed at the top: phi 0)")
+        return req
+    rows = rows[~by_rate & ~np.isnan(req["v_top"][rows])]
+    with np.errstate(all="ignore"):      # unchecked values: the evaluation gives their reasons
+        top = top_speed_on(loop, np.deg2rad(phi[rows]), req["v_top"][rows], req["a"][rows], req["k"][rows],
+                           req["g"][rows])
+    slow = np.isnan(top) & np.isfinite(req["v_top"][rows]) & (req["v_top"][rows] >= 0)
+    req["v_top"][rows] = np.where(slow, req["v_top"][rows], top)
+    req["invalid"][rows[slow]] = ("the speed at phi is below that of a wheel starting from rest at the top "
+                                  "(surfaces.md eq. S9) or the wheel does not fit the loop")
+    return req

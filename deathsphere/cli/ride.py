@@ -294,8 +294,11 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_show
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
     if vertical or v_top:
-        raise click.UsageError("a vertical loop is the globe's: --vertical takes no --surface, --wall-angle or "
-                               "--wall-height")
+        # the paper's wheel loops inside a closed profile (vertical --surface profile); the machine's loop
+        # is not the same derivation there: its effective inertia changes with the curvature round the loop
+        raise click.UsageError("a machine's vertical loop is the globe's (off it its effective inertia changes with "
+                               "the curvature round the loop, docs/machine.md sec. 10): --vertical takes no "
+                               "--surface, --wall-angle or --wall-height")
     if theta:
         raise click.BadParameter("theta is the globe's polar angle: on a drum, a cone or a profile give --height "
                                  "(the contact's height above the floor), on flat ground --turn-radius",

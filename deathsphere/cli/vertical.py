@@ -50,9 +50,13 @@ def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, s
       deathsphere vertical --theta 90 --v-top 6 --points 13 --format csv
       deathsphere vertical --side outside --theta 90 --v-top 0
 
-    A vertical loop needs a surface that closes over the top: --surface
-    cylinder, cone or plane is refused (none closes over the rider), and so
-    is a profile that closes (the loop is solved on the sphere only).
+    A vertical loop needs a surface that closes over the top: the globe, or
+    a profile closed at both ends (--surface profile --profile FILE.csv, its
+    meridian on the axis at its lowest and highest point), where the loop
+    runs in a meridian plane (--theta 90, inside; docs/surfaces.md eqs.
+    S9-S12).  --surface cylinder, cone or
+    plane is refused (none closes over the rider), and so is a profile open
+    at the top or standing on a floor.
     """
     options = given(theta=theta, v_top=v_top, phidot_top=phidot_top, side=side, a=a, r=r, diameter=diameter, k=k,
                     g=g, mu=mu, points=points, surface=surface, wall_angle=wall_angle, wall_height=wall_height,

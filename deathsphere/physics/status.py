@@ -97,6 +97,10 @@ class Reason(IntEnum):
     LANE_ON_AXIS = 64
     NO_TILT_FITS_LANE = 65
     SURFACE_NO_ALPHA = 66
+    VERTICAL_LOOP_NO_FIT = 67
+    VERTICAL_LOOP_TOO_SLOW = 68
+    VERTICAL_LOOP_OVERHANG = 69
+    VERTICAL_LOOP_TOO_FAST = 70
 
 
 REASONS = {
@@ -184,6 +188,15 @@ REASONS = {
                               "a kappa_parallel < 1: the wall bends more than the rim)",
     Reason.SURFACE_NO_ALPHA: "no tilt alpha at which the wheel fits the wall gives this speed or rate "
                              "(surfaces.md eq. S2 has no root in the window of eq. S4)",
+    # a vertical loop inside a closed profile (docs/surfaces.md eqs. S9-S12)
+    Reason.VERTICAL_LOOP_NO_FIT: "the wheel does not fit the loop's tightest bend (needs a below the meridian's "
+                                 "least radius of curvature: a kappa_max < 1)",
+    Reason.VERTICAL_LOOP_TOO_SLOW: "top speed too low: the wheel leaves the wall somewhere round the loop "
+                                   "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 all round)",
+    Reason.VERTICAL_LOOP_OVERHANG: "no top speed holds the wheel round the loop: the wall overhangs (cos(beta) < 0) "
+                                   "where it does not bend towards the centre (kappa <= 0; surfaces.md eq. S10)",
+    Reason.VERTICAL_LOOP_TOO_FAST: "too fast where the wall bends away from the centre: the wheel leaves it there "
+                                   "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 with kappa_C < 0)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -455,10 +455,9 @@ def _vertical_spec(col: str, header: str, unit: str = "", **more) -> ColumnSpec:
     return ColumnSpec(col, header, unit, kind=kind, params=params, **more)
 
 
-#: The vertical-orbit view, a row per quantity (undefined ones left out).
-VERTICAL_FIELDS = tuple(_vertical_spec(col, label, unit, source=source,
-                                       when=lambda get, col=col: not is_undefined(get[col]))
-                        for col, label, unit, source in (
+#: The vertical-orbit view, a row per quantity (undefined ones left out):
+#: column, label, unit, source (the globe's equations).
+_VERTICAL_QUANTITIES = (
     ("r_prime_m", "r' radius of the centre's circle", "m", "eq. 8b"),
     ("v_cm_m_s", "speed at the top", "m/s", ""),
     ("v_top_min_m_s", "least top speed for contact", "m/s", "eq. 28a"),
@@ -474,7 +473,28 @@ VERTICAL_FIELDS = tuple(_vertical_spec(col, label, unit, source=source,
     ("phi_slip_deg", "first slip at φ (with --mu)", "deg", ""),
     ("phi_leave_deg", "leaves the surface at φ", "deg", "eq. 82"),
     ("growth_rate_1_s", "growth rate of a perturbation", "1/s", "floquet"),
-))
+)
+#: Inside a closed profile (docs/surfaces.md eqs. S9-S12): the labels and
+#: sources that differ (None: the globe's), and the loop's height.
+_ON_PROFILE = {
+    "r_prime_m": ("r' centre path's radius at the top", "1/κ_C"), "v_top_min_m_s": (None, "eq. S10"),
+    "omega_rad_s": ("rate at the top, v κ_C", None), "v_bottom_m_s": (None, "eq. S9"), "period_s": (None, "eq. S12"),
+    "accel_g": ("largest acceleration", None), "normal_top_per_mass_m_s2": (None, "eq. S10"),
+    "normal_bottom_per_mass_m_s2": (None, "eq. S10"), "mu_top": ("μ at top and bottom", "eq. S11"),
+    "mu_required": (None, "eq. S11"),
+}
+
+
+def _vertical_fields(quantities):
+    return tuple(_vertical_spec(col, label, unit, source=source, when=lambda get, col=col: not is_undefined(get[col]))
+                 for col, label, unit, source in quantities)
+
+
+VERTICAL_FIELDS = _vertical_fields(_VERTICAL_QUANTITIES)
+VERTICAL_FIELDS_ON_PROFILE = _vertical_fields(
+    [(col, _ON_PROFILE.get(col, (None, None))[0] or label, unit, _ON_PROFILE.get(col, (None, None))[1] or source)
+     for col, label, unit, source in _VERTICAL_QUANTITIES if col not in ("phi_leave_deg", "growth_rate_1_s")]
+    + [("height_m", "height of the loop", "m", "")])
 
 #: Left out first on a narrow console: where μ peaks and the lap time
 #: describe an orbit that works; where it leaves the wall, the μ it needs
@@ -496,9 +516,12 @@ def vertical_view(table: Table, total_rows: int | None = None, units: DisplayUni
     (the first MAX_TERMINAL_ROWS of them)."""
     if len(table) == 1 and not (total_rows or 0) > 1:
         get = row_record(table)
-        rows = quantity_rows(get, VERTICAL_FIELDS, units)
-        title = (f"vertical orbit, wheel {get['side']}, θ = {echo_number(get['theta_deg'])}°\n"
-                 f"{_setup_line(get, units)}")
+        on_profile = "surface" in table.columns
+        rows = quantity_rows(get, VERTICAL_FIELDS_ON_PROFILE if on_profile else VERTICAL_FIELDS, units)
+        title = (f"vertical orbit, wheel {get['side']}, θ = {echo_number(get['theta_deg'])}°"
+                 f"{' inside the profile (eqs. S9-S12)' if on_profile else ''}\n{_setup_line(get, units)}")
         return quantity_table(title, get, rows, "keeps contact all round with enough friction")
-    return build_table(table, VERTICAL_COLUMNS, units=units, title="Vertical orbits (eqs. 27-28b)",
+    title = "Vertical orbits inside the profile (eqs. S9-S12)" if "surface" in table.columns else \
+        "Vertical orbits (eqs. 27-28b)"
+    return build_table(table, VERTICAL_COLUMNS, units=units, title=title,
                        total_rows=total_rows, notes=status_legend(first_rows(table, MAX_TERMINAL_ROWS)))

@@ -67,14 +67,14 @@ POINT_COLUMNS = (
     "mu_required",
 )
 
-_SUMMARY_KEYS = {
+SUMMARY_KEYS = {
     "r_prime": "r_prime_m", "omega": "omega_rad_s", "period": "period_s", "v_cm": "v_cm_m_s",
     "spin": "spin_rad_s", "accel": "accel_m_s2", "accel_g": "accel_g", "normal": "normal_per_mass_m_s2",
     "friction": "friction_magnitude_per_mass_m_s2", "mu_required": "mu_required", "v_min": "v_top_min_m_s",
     "omega_min": "omega_top_min_rad_s", "v_bottom": "v_bottom_m_s", "mu_top": "mu_top",
     "normal_top": "normal_top_per_mass_m_s2", "normal_bottom": "normal_bottom_per_mass_m_s2",
 }
-_ANGLE_KEYS = {"phi_worst": "phi_worst_deg", "phi_leave": "phi_leave_deg", "phi_slip": "phi_slip_deg"}
+ANGLE_KEYS = {"phi_worst": "phi_worst_deg", "phi_leave": "phi_leave_deg", "phi_slip": "phi_slip_deg"}
 
 
 def vertical_requests(n: int, invalid=None, input_row=None, v_top=None, phidot_top=None, **fields) -> dict:
@@ -88,7 +88,9 @@ def vertical_requests(n: int, invalid=None, input_row=None, v_top=None, phidot_t
     return req
 
 
-def _validate(req) -> np.ndarray:
+def validate_vertical(req) -> np.ndarray:
+    """Each vertical request's reason to be invalid ('' if valid): the orbit
+    request's checks, then exactly one of v_top and phidot_top, in bounds."""
     reason = validate_requests(req)
     v, w = req["v_top"], req["phidot_top"]
     both_or_none = np.isnan(v) == np.isnan(w)
@@ -118,18 +120,18 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     (beyond the paper, docs/stability.md sec. 2); ``growth_rate_1_s`` is
     log(max |multiplier|) / lap time."""
     n = len(req["theta"])
-    reason_words = _validate(req)
+    reason_words = validate_vertical(req)
     rows = np.flatnonzero(reason_words == "")
-    out = {col: np.full(n, np.nan) for col in list(_SUMMARY_KEYS.values()) + list(_ANGLE_KEYS.values())}
+    out = {col: np.full(n, np.nan) for col in list(SUMMARY_KEYS.values()) + list(ANGLE_KEYS.values())}
     status = np.full(n, Status.INVALID, dtype=np.int8)
     reason = reason_words.astype(object)
     if rows.size:
         theta, outside, rate = _top_rate(req, rows)
         res = vertical_orbit.vertical_orbit(theta, rate, req["a"][rows], req["r"][rows], req["k"][rows],
                                       req["g"][rows], outside, req["mu"][rows])
-        for key, col in _SUMMARY_KEYS.items():
+        for key, col in SUMMARY_KEYS.items():
             out[col][rows] = res[key]
-        for key, col in _ANGLE_KEYS.items():
+        for key, col in ANGLE_KEYS.items():
             out[col][rows] = np.rad2deg(res[key])
         status[rows] = res["status"]
         reason[rows] = REASON_TEXT[res["reason"]]
@@ -184,7 +186,7 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
     ``start:stop`` picks a slice of the azimuths, so that a long orbit can be
     written piece by piece in bounded memory; an invalid request's row comes
     with the slice that starts at 0."""
-    reason_words = _validate(req)
+    reason_words = validate_vertical(req)
     rows = np.flatnonzero(reason_words == "")
     phi = vertical_orbit.phi_grid(points)[start:stop]
     bad = np.flatnonzero(reason_words != "") if start == 0 else np.empty(0, dtype=np.int64)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 __all__ = [
     "EXACT", "EXACT_STEER_LOCKED", "FLOQUET", "NOT_ANALYSED_K0", "NOT_ANALYSED_PARTICLE",
-    "NOT_ANALYSED_POINT_MASS", "NOT_ANALYSED_OFF_GLOBE", "NOT_ANALYSED_PROFILE", "METHOD_TEXT", "method_text",
+    "NOT_ANALYSED_POINT_MASS", "NOT_ANALYSED_OFF_GLOBE", "NOT_ANALYSED_PROFILE", "NOT_ANALYSED_LOOP_OFF_GLOBE", "METHOD_TEXT", "method_text",
 ]
 
 #: The exact linearisation of the steady orbit (docs/stability.md).
@@ -36,6 +36,10 @@ NOT_ANALYSED_OFF_GLOBE = "not-analysed-off-globe"
 #: "On a profile"; kept so that a table written before reads back with its
 #: sentence).
 NOT_ANALYSED_PROFILE = "not-analysed-profile"
+#: A vertical loop off the globe (inside a closed profile): the loop is
+#: solved (docs/surfaces.md eqs. S9-S12), its Floquet stability is the
+#: globe's only.
+NOT_ANALYSED_LOOP_OFF_GLOBE = "not-analysed-loop"
 
 #: What each label means, in a sentence.
 METHOD_TEXT = {
@@ -53,6 +57,8 @@ METHOD_TEXT = {
     NOT_ANALYSED_PROFILE: ("not analysed: written before the machine's equations of motion took a profile's "
                            "parallel surface (docs/machine.md, \"On a profile\"); the same ride now fills the "
                            "stability columns"),
+    NOT_ANALYSED_LOOP_OFF_GLOBE: ("not analysed: a vertical loop's Floquet multipliers are computed on the globe "
+                                  "only; inside a profile the loop itself is solved (docs/surfaces.md eqs. S9-S12)"),
 }
 
 

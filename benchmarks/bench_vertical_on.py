@@ -1,0 +1,46 @@
+"""Vertical loops inside a closed profile (docs/surfaces.md eqs. S9-S12)
+against the globe's closed forms: rows per second of ``vertical_sweep``
+over top speeds (the summary without stability), on the ellipsoid of
+tests/data and on the globe, and the share of the loop's sampling (once a
+command).
+
+    PYTHONPATH=. OMP_NUM_THREADS=1 python3 benchmarks/bench_vertical_on.py [--rows 10000] [--repeat 3]
+"""
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):  # one core
+    os.environ.setdefault(name, "1")
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import numpy as np  # noqa: E402
+from timing import best_of  # noqa: E402
+
+import deathsphere  # noqa: E402
+from deathsphere.physics.meridian_loop import Loop  # noqa: E402
+from deathsphere.records.profile_files import profile_file  # noqa: E402
+
+ELLIPSOID = Path(__file__).resolve().parents[1] / "tests" / "data" / "ellipsoid_dome.csv"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rows", type=int, default=10_000)
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    speeds = np.linspace(7.1, 40.0, args.rows)
+    ground = profile_file(str(ELLIPSOID))
+    on_profile = best_of(lambda: deathsphere.vertical_sweep(90, speeds, surface="profile", profile=ground,
+                                                            stability=False).table(), args.repeat)
+    globe = best_of(lambda: deathsphere.vertical_sweep(90, speeds, stability=False).table(), args.repeat)
+    sampling = best_of(lambda: Loop.of(ground), args.repeat)
+    print(f"{args.rows} loops inside the ellipsoid: {on_profile:.3f} s ({args.rows / on_profile:,.0f} rows/s)")
+    print(f"{args.rows} loops on the globe:         {globe:.3f} s ({args.rows / globe:,.0f} rows/s)")
+    print(f"the loop's sampling (1024 intervals), once a command: {sampling * 1e3:.1f} ms")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,156 @@
+"""Vertical loops of a wheel inside a closed profile as result tables
+(beyond the paper: docs/surfaces.md, "S9-S12. A vertical loop inside a
+closed profile").
+
+The same requests and columns as the globe's (:mod:`deathsphere.results.vertical`),
+then the arena's: ``surface`` and ``height_m`` (the loop's top above its
+bottom).  A request's loop runs in a meridian plane, so its ``theta`` must
+be 90 deg and its ``side`` inside: another row is ``invalid``, saying so.
+``r_m`` is empty (the sphere's radius is not the profile's), and the
+stability columns say ``not-analysed-loop`` (the globe's Floquet
+analysis integrates the sphere's equations of motion).  Physics:
+:mod:`deathsphere.physics.vertical_orbit_on`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from deathsphere import params
+from deathsphere.model import Table, echo_given, finite_or_blank
+from deathsphere.physics import vertical_orbit_on
+from deathsphere.physics.stability import methods
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+from deathsphere.requests.decode import as_typed
+from deathsphere.results.vertical import (
+    ANGLE_KEYS,
+    SUMMARY_KEYS,
+    COLUMNS,
+    POINT_COLUMNS,
+    validate_vertical,
+    phi_degrees,
+)
+
+#: The arena's columns, appended to the globe's.
+ARENA_COLUMNS = ("surface", "height_m")
+SUMMARY_COLUMNS = COLUMNS + ARENA_COLUMNS
+POINTS_COLUMNS = POINT_COLUMNS + ARENA_COLUMNS
+
+#: Why a row's theta is refused on a profile.
+THETA_IN_MERIDIAN = ("a vertical loop on a profile runs in a meridian plane through the axis: theta must be 90 deg "
+                     "(a circle of another cone angle is not a plane curve on the profile)")
+SIDE_INSIDE = "a vertical loop on a profile is computed inside only"
+#: The sphere's radius a profile's request carries: the globe's checks of a
+#: request ask r > a, which is not the loop's fit (a kappa_max < 1, its own
+#: status), so a request on a profile is checked against a radius no wheel
+#: reaches; ``r_m`` is written empty.
+NO_SPHERE_R = params.PARAMS["r"].hi
+
+
+def _validate_on(req) -> np.ndarray:
+    """The globe's checks of every value but r (the sphere's radius, not the
+    profile's: the loop's fit is its own status, a kappa_max < 1), then
+    theta = 90 deg and the inside."""
+    globe = dict(req)
+    globe["r"] = np.full(req["r"].shape, NO_SPHERE_R)
+    reason = validate_vertical(globe)
+    req["k"] = globe["k"]
+    typed = req.get("typed", {})
+    with np.errstate(invalid="ignore"):
+        theta_off = (reason == "") & (np.abs(req["theta"] - 90.0) > 0)
+    reason[theta_off] = [as_typed("theta", f"{THETA_IN_MERIDIAN} (got {params.shown_number(float(t))})", typed)
+                         for t in req["theta"][theta_off]]
+    outside = (reason == "") & (req["side"] == "outside")
+    reason[outside] = as_typed("side", SIDE_INSIDE, typed)
+    return reason
+
+
+def _top_speed(req, rows, loop):
+    """The top speed of the centre per valid row: v_top as given, or the top
+    rate phidot_top times the centre path's radius of curvature at the top."""
+    v = req["v_top"][rows]
+    rate = np.abs(req["phidot_top"][rows])
+    stretch = 1.0 - req["a"][rows] * loop.kappa[-1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        radius = np.where(stretch > 0, stretch / loop.kappa[-1], np.nan)
+    return np.where(np.isnan(v), rate * radius, v)
+
+
+def _arena(columns: dict, n: int, loop) -> None:
+    columns["surface"] = np.full(n, loop.ground.name, dtype=object)
+    columns["height_m"] = np.full(n, loop.height)
+    columns["r_m"] = np.full(n, np.nan)
+
+
+def evaluate_vertical_on(req: dict, loop) -> Table:
+    """One summary row per request on ``loop``
+    (:class:`~deathsphere.physics.vertical_orbit_on.Loop`), in input order
+    (invalid rows kept, with reasons): :data:`SUMMARY_COLUMNS`."""
+    n = len(req["theta"])
+    reason_words = _validate_on(req)
+    rows = np.flatnonzero(reason_words == "")
+    out = {col: np.full(n, np.nan) for col in list(SUMMARY_KEYS.values()) + list(ANGLE_KEYS.values())}
+    status = np.full(n, Status.INVALID, dtype=np.int8)
+    reason = reason_words.astype(object)
+    if rows.size:
+        res = vertical_orbit_on.vertical_loop_on(loop, _top_speed(req, rows, loop), req["a"][rows], req["k"][rows],
+                                                 req["g"][rows], req["mu"][rows])
+        for key, col in SUMMARY_KEYS.items():
+            out[col][rows] = res[key]
+        for key, col in ANGLE_KEYS.items():
+            out[col][rows] = np.rad2deg(res[key])
+        status[rows] = res["status"]
+        reason[rows] = REASON_TEXT[res["reason"]]
+    live = np.isin(status, (Status.OK, Status.SLIPS))
+    columns = {
+        "stability": np.where(live, "unknown", "").astype(object),
+        "stability_method": np.where(live, methods.NOT_ANALYSED_LOOP_OFF_GLOBE, "").astype(object),
+        "growth_rate_1_s": np.full(n, np.nan),
+        "input_row": req["input_row"].astype(np.int64), "body": req["body"], "side": req["side"],
+        "theta_deg": req["theta"], "alpha_deg": req["alpha"], "a_m": req["a"],
+        "k": req["k"], "g_m_s2": req["g"], "status": STATUS_LABELS[status], "reason": reason,
+        "mu_available": np.where(np.isinf(req["mu"]), np.nan, req["mu"]),
+        **out,
+    }
+    _arena(columns, n, loop)
+    finite_or_blank(columns)
+    echo_given(columns, {"v_cm_m_s": req["v_top"], "omega_rad_s": req["phidot_top"]})
+    return Table({name: columns[name] for name in SUMMARY_COLUMNS})
+
+
+def vertical_points_on(req: dict, loop, points: int, start: int = 0, stop: int | None = None) -> Table:
+    """The loop point by point at ``points`` angles phi from the top (0) round
+    to 360 deg (the turn of the loop's tangent: on a circle the centre's
+    azimuth), as :func:`deathsphere.results.vertical.vertical_points`, with
+    the arena's columns; ``start:stop`` a slice of the angles."""
+    reason_words = _validate_on(req)
+    rows = np.flatnonzero(reason_words == "")
+    phi = np.linspace(0.0, 2 * np.pi, int(points))[start:stop]
+    bad = np.flatnonzero(reason_words != "") if start == 0 else np.empty(0, dtype=np.int64)
+    source = np.concatenate([np.repeat(rows, phi.size), bad])
+    m = rows.size * phi.size
+    cols = {c: np.full(source.size, np.nan) for c in POINT_COLUMNS[5:]}
+    status = np.full(source.size, Status.INVALID, dtype=np.int8)
+    reason = np.empty(source.size, dtype=object)
+    reason[m:] = reason_words[source[m:]]
+    phi_col = np.full(source.size, np.nan)
+    if rows.size:
+        res = vertical_orbit_on.loop_points_on(loop, phi, _top_speed(req, rows, loop), req["a"][rows],
+                                               req["k"][rows], req["g"][rows], req["mu"][rows])
+        for key, col in (("omega", "omega_rad_s"), ("v_cm", "v_cm_m_s"), ("accel", "accel_m_s2"),
+                         ("normal", "normal_per_mass_m_s2"), ("along", "friction_along_per_mass_m_s2"),
+                         ("meridional", "friction_meridional_per_mass_m_s2"), ("mu_required", "mu_required")):
+            cols[col][:m] = np.asarray(res[key]).reshape(-1)
+        status[:m] = np.asarray(res["status"]).reshape(-1)
+        reason[:m] = REASON_TEXT[np.asarray(res["reason"]).reshape(-1)]
+        phi_col[:m] = np.tile(phi_degrees(points)[start:stop], rows.size)
+    order = np.argsort(source, kind="stable")
+    columns = {
+        "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],
+        "phi_deg": phi_col, "status": STATUS_LABELS[status], "reason": reason, **cols,
+    }
+    top = (phi_col == 0.0) | (phi_col == 360.0)
+    echo_given(columns, {"v_cm_m_s": np.where(top, req["v_top"][source], np.nan)})
+    columns["surface"] = np.full(source.size, loop.ground.name, dtype=object)
+    columns["height_m"] = np.full(source.size, loop.height)
+    return Table({name: columns[name][order] for name in POINTS_COLUMNS})
