@@ -98,13 +98,30 @@ def test_a_grid_of_radii_and_speeds_keeps_its_shape_and_names_its_axes():
                                [[0.4, 0.6], [0.2, 0.3]], rtol=1e-12)
 
 
+def test_the_riders_table_on_flat_ground_is_per_turn_radius():
+    """--summary: a row per circle, its radius appended (every height 0), its
+    counts and spans those of the turns' own table."""
+    typed = dict(surface="plane", turn_radius=[[10.0], [30.0]], speed=[4.0, 8.0, 12.0])
+    summary = ds.ride(machine=MACHINE, steer="free", summary=True, **typed)
+    turns = ds.ride(machine=MACHINE, steer="free", **typed)
+    assert summary.names[-1] == "rho_contact_m"
+    np.testing.assert_array_equal(np.asarray(summary["rho_contact_m"], dtype=float), [10.0, 30.0])
+    assert np.all(np.asarray(summary["height_m"], dtype=float) == 0.0)
+    rho = np.asarray(turns["rho_contact_m"], dtype=float)
+    ok = np.asarray(turns["status"]) == "ok"
+    lean = np.asarray(turns["lean_vertical_deg"], dtype=float)
+    for i, radius in enumerate((10.0, 30.0)):
+        mine = (rho == radius) & ok
+        assert int(summary["speeds_tried"][i]) == 3 and int(summary["speeds_ok"][i]) == mine.sum()
+        assert float(summary["lean_vertical_max_deg"][i]) == pytest.approx(lean[mine].max(), rel=1e-12)
+
+
 @pytest.mark.parametrize("typed, key", [
     (dict(surface="plane"), "turn_radius"),                                  # no lane
     (dict(surface="plane", turn_radius=10, height=1), "height"),             # a wall's lane
     (dict(surface="plane", turn_radius=10, theta=60), "theta"),
     (dict(surface="cylinder", diameter=10, height=1, turn_radius=10), "turn_radius"),
     (dict(turn_radius=10, theta=60), "turn_radius"),                         # the globe's lane is theta
-    (dict(surface="plane", turn_radius=10, summary=True), "summary"),
     (dict(surface="plane", turn_radius=-1), "turn_radius"),
 ])
 def test_what_flat_ground_does_not_take_is_refused_by_name(typed, key):

@@ -460,7 +460,8 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         # every lane with every value: a column of lanes and a row of values broadcast to their outer product
         lane, lane_given = lane[:, None], lane_given[:, None]
     else:
-        shape = grid_shape({"theta" if by_theta else "height": lane, "steer_torque" if by_torque else "speed": value})
+        at = "theta" if by_theta else "turn_radius" if isinstance(wall, Plane) else "height"
+        shape = grid_shape({at: lane, "steer_torque" if by_torque else "speed": value})
         if math.prod(shape) > MAX_TURN_REQUESTS:
             raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes "
                                  f"and speeds (or torques) at once (got {' x '.join(map(str, shape))}): split the "
@@ -471,9 +472,6 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
     if summary and by_torque:
         raise ParameterError("the rider's table (summary) is over rear speeds: give speed, not steer_torque (it "
                              "finds each lane's hands-free turns itself)", "steer_torque")
-    if summary and isinstance(wall, Plane):
-        raise ParameterError("the rider's table (summary) is per lane of a wall or the globe: on flat ground list "
-                             "the turns of each turn_radius without summary", "summary")
     if summary and not stability:
         raise ParameterError("the rider's table (summary) gives the stable speeds: it needs the stability "
                              "analysis, which stability=False skips", "stability")
@@ -682,6 +680,7 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
     beyond = steady & np.isin(status, BEYOND_LIMITS)
     mu_needed = np.fmax(table["mu_required_rear"], table["mu_required_front"])
     lanes, lanes_given = batch.lane[heads], batch.given[heads]
+    on_plane = isinstance(request.wall, Plane)
     free = _hands_free(request, lanes)
     rows = {c: [] for c in TURN_SUMMARY_COLUMNS}
     for i in range(heads.size):
@@ -695,7 +694,7 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
         theta = (float(lanes_given[i]) if request.by_theta else math.nan if request.wall is not None
                  else math.degrees(lanes[i]))
         rows["height_m"].append(request.r * (1 + math.cos(lanes[i])) if request.by_theta
-                                else float(lanes_given[i]))
+                                else 0.0 if on_plane else float(lanes_given[i]))
         rows["theta_deg"].append(theta)
         rows["speeds_tried"].append(int(tried[i]))
         rows["speeds_ok"].append(int(np.unique(on[fine]).size))
@@ -737,8 +736,12 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
     counts = {"speeds_tried", "speeds_ok", "speeds_stable", "hands_free_turns", "hands_free_stable",
               "stable_beyond_limits", *TURN_FAILURES}
     text = {"limits", "steer", "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s"}
-    return Table({c: np.array(v, dtype=np.int64 if c in counts else object if c in text else float)
-                  for c, v in rows.items()})
+    table = {c: np.array(v, dtype=np.int64 if c in counts else object if c in text else float)
+             for c, v in rows.items()}
+    if on_plane:
+        # flat ground's lane is its turn radius: appended (docs/contract.md), the heights being 0
+        table["rho_contact_m"] = np.asarray(lanes_given, dtype=float)
+    return Table(table)
 
 
 #: The keys of a two-wheeler's ``ride`` as typed and their defaults: a turn's and ``flat``.

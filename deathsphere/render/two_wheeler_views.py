@@ -177,6 +177,7 @@ def _doubling_cell(get: dict) -> str:
 #: go first; "why" stays, on one line.
 TURN_SUMMARY_VIEW = (
     HEIGHT,
+    TURN_RADIUS,
     ColumnSpec("theta_deg", "θ", "°", drop=1, kind="angle", params=("theta",)),
     ColumnSpec("ok", "ok", value=lambda get: f"{get['speeds_ok']}/{get['speeds_tried']}", drop=5),
     # the speeds that work in the unit typed alone (SI where none was): the rider's room goes to the rest

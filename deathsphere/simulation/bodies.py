@@ -174,7 +174,9 @@ def _take(x, index):
         return x
     if isinstance(x, tuple):
         return type(x)(*(_take(y, index) for y in x))
-    return np.asarray(x)[index]
+    x = np.asarray(x)
+    # a field left at its scalar default (GroundRun.outside) holds for every body
+    return x if x.ndim == 0 else x[index]
 
 
 def _concat(xs):

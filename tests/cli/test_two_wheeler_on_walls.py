@@ -92,8 +92,6 @@ def test_a_profile_from_a_file_rides_as_the_drum_it_samples(run, tmp_path):
     # flat ground's lane is its turn radius (its turns: tests/test_two_wheeler_flat_turns.py)
     ((*STUNT, "--surface", "plane", "--height", "1", "--speed", "5"), "--height", "flat ground has no height"),
     ((*STUNT, "--surface", "plane", "--speed", "5"), "--turn-radius", "Missing option"),
-    ((*STUNT, "--surface", "plane", "--turn-radius", "5", "--speed", "5", "--summary"), "--summary",
-     "on flat ground list the turns"),
     ((*STUNT, "--surface", "cylinder", "--diameter", "0.5", "--height", "0.1", "--speed", "5"), "--diameter",
      "do not fit in a cylinder"),
     (("ride", "--machine", "benchmark-bicycle", "--flat", "--speed", "5", "--surface", "cylinder"), "--surface",
