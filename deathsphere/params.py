@@ -277,7 +277,8 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     _length("turn_radius", "turn radius", "R_turn",
             help="Simulate, a two-wheeler on flat ground (--flat): start from the steady turn whose rear contact "
                  "runs on a circle of this radius, turning right (without it: upright straight running); orbit, "
-                 "sweep, simulate with --surface plane: the contact's distance from the turn's centre."),
+                 "sweep, simulate, ride (a two-wheeler's steady turns too) with --surface plane: the contact's "
+                 "distance from the turn's centre (a two-wheeler's, its rear contact's)."),
     Param("duration", "s", "run length in seconds", 0.0, 1e6, lo_open=True, metavar="S",
           help="Simulate, a two-wheeler: how long in seconds instead of --periods (straight running on flat "
                "ground has no period: 5 s unless given), > 0."),

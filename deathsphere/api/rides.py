@@ -445,8 +445,7 @@ _HOW = {Tilt: lambda by: ("alpha", by.alpha), ContactSpeed: lambda by: ("speed",
 
 #: What only the single-contact machine takes: a two-wheeler's ride refuses it.
 SINGLE_CONTACT_ONLY = ("alpha", "com_speed", "period", "v_top", "vertical", "mass", "com_height", "wheel_radius",
-                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height",
-                       "turn_radius")
+                       "tyre_radius", "roll_inertia", "pitch_inertia", "yaw_inertia", "spin_inertia", "head_height")
 
 
 def refuse_single_contact(given: dict) -> None:
@@ -455,7 +454,7 @@ def refuse_single_contact(given: dict) -> None:
     extra = [k for k in SINGLE_CONTACT_ONLY if given.get(k) is not None and given.get(k) is not False]
     if extra:
         raise ParameterError(f"a two-wheeler (flat or steer) does not take {', '.join(extra)} yet: give theta or "
-                             "height and speed or steer_torque (flat: speed only)", extra[0])
+                             "height (flat ground: turn_radius) and speed or steer_torque (flat: speed only)", extra[0])
 
 
 def _two_wheeler(machine, given: dict) -> Table:
@@ -466,7 +465,8 @@ def _two_wheeler(machine, given: dict) -> Table:
     return two_wheeler_ride(machine, {k: given[k] for k in ("theta", "height", "speed", "steer_torque", "flat",
                                                               "steer", "r", "diameter", "g", "mu", "max_g",
                                                               "summary", "stability", "only", "surface",
-                                                              "wall_angle", "wall_height", "profile")})
+                                                              "wall_angle", "wall_height", "profile",
+                                                              "turn_radius")})
 
 
 #: The input -> the column that echoes it (a grid's axes are named after them).

@@ -114,8 +114,10 @@ def simulate(theta=None, alpha=None, *, body: str | None = None, side: str = "in
         death's cone (``"cone"``, ``wall_angle``), flat ground (``"plane"``)
         or a meridian's samples (``"profile"``); or a ground record.  Off
         the globe the paper's wheel (given ``alpha``) or ball (``omega3``
-        and ``branch``, or ``omega``) rides inside, from the steady orbit
-        of ``orbit`` on the lane (docs/simulation.md, "On any ground"): its
+        and ``branch``, or ``omega``) rides inside or, with
+        ``side="outside"``, round a drum's outside or on a cone's or a
+        dome's roof (not on flat ground, which has one side), from the
+        steady orbit of ``orbit`` on the lane (docs/simulation.md, "On any ground"): its
         equations of motion are docs/dynamics.md sec. 7; the run also
         stops with ``hits_floor`` (the body's lowest point reaches the
         floor at the wall's foot) and ``over_the_top`` (the contact passes
@@ -227,7 +229,7 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     """:func:`simulation_request` off the globe (docs/simulation.md, "On any
     ground"): the arena from its keywords, the lane by its height (on flat
     ground its turn radius), the paper's wheel by its tilt or ball by its
-    spin or rate, inside."""
+    spin or rate, inside or outside (not on flat ground)."""
     from deathsphere.requests.arena import arena, lane_key
 
     for key, why in (("theta", "theta is the sphere's polar angle"),
@@ -254,9 +256,11 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     kind = decode_paper_body(WHEEL if given["body"] is None else given["body"])
     if not kind.rolls:
         raise ParameterError("simulate covers a wheel or a sphere (a particle has no rolling dynamics)", "body")
-    if checked_choice("side", given["side"], SIDES) != "inside":
-        raise ParameterError(f"on the {ground.name} the bodies ride inside (the equations of motion off the globe "
-                             "are written for the inside)", "side")
+    side = checked_choice("side", given["side"], SIDES)
+    if side == "outside" and not hasattr(ground, "highest_lane"):
+        # flat ground has one side: its underside has no lane a body rides in gravity
+        raise ParameterError(f"the {ground.name} has one side, its top: leave side out (inside) on flat ground",
+                             "side")
     a = _read("a", A if given["a"] is None else given["a"])
     k = kind.default_k if given["k"] is None else _read("k", given["k"])
     if not k > 0:
@@ -264,9 +268,9 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     lane = decode_paper_lane({**given, "vertical": False}, kind, _read,
                              at=Height(_read(key, given[key])))
     if isinstance(kind, Wheel) and not isinstance(lane.by, Tilt):
-        alpha = _tilt_on(ground, lane.at.height, lane.by, a, k, run.g, run.mu)
+        alpha = _tilt_on(ground, lane.at.height, lane.by, a, k, run.g, run.mu, side == "outside")
         lane = dataclasses.replace(lane, by=Tilt(alpha))
-    rider = RiderRequest(body=PaperBody(kind=kind, side="inside", a=a, k=k), lane=lane, kick=kick)
+    rider = RiderRequest(body=PaperBody(kind=kind, side=side, a=a, k=k), lane=lane, kick=kick)
     return rider, run, options
 
 
@@ -320,15 +324,16 @@ def _machine_tilt_on(m, ground, lane: float, held: str, speed: float, branch, g:
     return float(tilts[int(branch)])
 
 
-def _tilt_on(ground, height: float, by, a: float, k: float, g: float, mu: float) -> float:
-    """The tilt [deg] of a wheel's orbit on a lane of ``ground`` with this
-    contact speed, centre speed or rate: root number ``branch`` of eq. S2
-    (docs/surfaces.md, "The wheel given its rate"; as ``orbit`` numbers them)."""
+def _tilt_on(ground, height: float, by, a: float, k: float, g: float, mu: float, outside: bool = False) -> float:
+    """The tilt [deg] of a wheel's orbit on a lane of ``ground`` (inside or
+    ``outside``) with this contact speed, centre speed or rate: root number
+    ``branch`` of eq. S2 (docs/surfaces.md, "The wheel given its rate"; as
+    ``orbit`` numbers them)."""
     from deathsphere.physics.revolution_tilt import wheel_tilts
 
     key = {ContactSpeed: "speed", ComSpeed: "com_speed", Rate: "omega"}[type(by)]
     target = by.omega if isinstance(by, Rate) else by.speed
-    res = wheel_tilts(ground, height, a, k, g, mu=mu, **{key: target})
+    res = wheel_tilts(ground, height, a, k, g, mu=mu, outside=outside, **{key: target})
     alphas = np.asarray(res["alpha"], dtype=float).reshape(-1)
     found = alphas[np.isfinite(alphas)]
     what = "rate" if key == "omega" else "speed"
@@ -481,7 +486,7 @@ def _wall_starts(rider: RiderRequest, run: Run):
     held = ({"alpha_deg": params.reduce_angle(by.alpha)} if isinstance(by, Tilt)
             else {"omega": by.omega} if isinstance(by, Rate) else {"omega3": by.omega3, "branch": by.branch})
     starts_of = partial(ground_starts, run.ground, body.kind, rider.lane.at.height, held, a=body.a, k=body.k, g=run.g,
-                        mu=run.mu, perturb_deg=kick)
+                        mu=run.mu, perturb_deg=kick, outside=body.side == "outside")
     alpha = by.alpha if isinstance(by, Tilt) else None
     return _echo_requested(_started(starts_of, alpha), **{"rate": getattr(by, "omega", None),
                                                           "omega3": getattr(by, "omega3", None)})

@@ -19,7 +19,8 @@ from deathsphere.chunker import grid_chunks
 
 def two_wheeler_ride_sweep(machine, *, theta=None, height=None, speed=None, steer_torque=None, steer=None, r=R,
                            diameter=None, g=G, mu=INF, max_g=INF, summary=False, stability=True, only=None,
-                           surface=None, wall_angle=None, wall_height=None, profile=None, chunk_size: int = TURN_CHUNK, jobs: int = 1, scheduler=None, **single_contact) -> Chunks:
+                           surface=None, wall_angle=None, wall_height=None, profile=None, turn_radius=None,
+                           chunk_size: int = TURN_CHUNK, jobs: int = 1, scheduler=None, **single_contact) -> Chunks:
     """Every steady turn of a two-wheeler at each lane and rear speed (or
     steer torque), or with ``summary`` its rider's table, lane after lane:
     ``deathsphere ride --steer`` (docs/two-wheeler.md sec. 10, through

@@ -327,7 +327,8 @@ class TurnRequest:
     max_g: float
     summary: bool
     only: tuple | None = None
-    #: the drum or the cone ridden (None: the globe of radius r); a wall's lanes are heights
+    #: the drum, the cone, the profile or flat ground ridden (None: the globe of radius r); a wall's lanes are
+    #: heights, flat ground's the paths' curvatures (1 / the turn radius, as given in ``lanes_given``)
     wall: object = None
 
     @property
@@ -353,7 +354,7 @@ class TurnRequest:
         ndim = len(self.shape)
         lane = (1,) * (ndim - self.lanes.ndim) + self.lanes.shape
         value = (1,) * (ndim - self.values.ndim) + self.values.shape
-        at = "theta_deg" if self.by_theta else "height_m"
+        at = "theta_deg" if self.by_theta else "rho_contact_m" if isinstance(self.wall, Plane) else "height_m"
         by = "steer_torque_n_m" if self.by_torque else "v_contact_m_s"
         return tuple(None if (lane[d] > 1) == (value[d] > 1) else by if value[d] > 1 else at for d in range(ndim))
 
@@ -397,7 +398,7 @@ class TurnBatch:
 #: ``ride --steer``'s keys and their defaults (a key not given: its default).
 TURN_KEYS = {"theta": None, "height": None, "speed": None, "steer_torque": None, "steer": None, "r": R,
              "diameter": None, "g": G, "mu": INF, "max_g": INF, "summary": False, "stability": True, "only": None,
-             "surface": None, "wall_angle": None, "wall_height": None, "profile": None}
+             "surface": None, "wall_angle": None, "wall_height": None, "profile": None, "turn_radius": None}
 
 #: The columns a two-wheeler's table on a drum, a cone or a profile appends (the single-contact ride's there).
 TURN_ARENA_COLUMNS = ("surface", "rho_contact_m", "wall_angle_deg")
@@ -438,7 +439,13 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         raise ParameterError(f"the two-wheeler's wheels (rR = {t.rR:g} m, rF = {t.rF:g} m) do not fit in {where} "
                              "(needs r > rR and r > rF)", "diameter" if diameter is not None else "r")
     limit = MAX_STREAMED_LANES if streamed else MAX_TURN_REQUESTS
-    if wall is None:
+    turn_radius = given["turn_radius"]
+    if isinstance(wall, Plane):
+        lane, lane_given, by_theta = _plane_lanes(theta, height, turn_radius, limit, shaped=not streamed)
+    elif turn_radius is not None:
+        where = "the globe's lane is theta or height" if wall is None else f"on the {wall.name} give height"
+        raise ParameterError(f"turn_radius is a turn's lane on flat ground (surface plane): {where}", "turn_radius")
+    elif wall is None:
         lane, lane_given, by_theta = _lanes(theta, height, r, limit, shaped=not streamed)
     else:
         lane, lane_given, by_theta = _wall_lanes(wall, theta, height, limit, shaped=not streamed)
@@ -453,7 +460,8 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
         # every lane with every value: a column of lanes and a row of values broadcast to their outer product
         lane, lane_given = lane[:, None], lane_given[:, None]
     else:
-        shape = grid_shape({"theta" if by_theta else "height": lane, "steer_torque" if by_torque else "speed": value})
+        at = "theta" if by_theta else "turn_radius" if isinstance(wall, Plane) else "height"
+        shape = grid_shape({at: lane, "steer_torque" if by_torque else "speed": value})
         if math.prod(shape) > MAX_TURN_REQUESTS:
             raise ParameterError(f"a two-wheeler's steady turns are sought for at most {MAX_TURN_REQUESTS} lanes "
                                  f"and speeds (or torques) at once (got {' x '.join(map(str, shape))}): split the "
@@ -478,21 +486,31 @@ def turn_request(machine, typed: Mapping, streamed: bool = False) -> TurnRequest
 
 
 def _wall(surface, r, diameter, wall_angle, wall_height, profile):
-    """The drum, the cone or the profile the two-wheeler rides (None: the
-    globe), from the arena's keywords as typed; flat ground refused in one
-    line naming surface (its question is flat's; docs/two-wheeler.md sec. 12)."""
-    from deathsphere.physics.ground import Cone, Cylinder, Profile
+    """The drum, the cone, the profile or flat ground the two-wheeler rides
+    (None: the globe), from the arena's keywords as typed (docs/two-wheeler.md
+    sec. 12; flat ground's lanes are turn radii, sec. 12.8)."""
     from deathsphere.requests.arena import arena, names_a_wall
 
     if not names_a_wall(surface, wall_angle, wall_height, profile):
         return None
     ground = arena(surface, None if r is R else r, diameter, wall_angle, wall_height, profile)
-    if isinstance(ground, Sphere):
-        return None
-    if not isinstance(ground, (Cylinder, Cone, Profile)):
-        raise ParameterError(f"a two-wheeler rides the inside of the sphere, a cylinder, a cone or a profile, not "
-                             f"a {ground.name} (upright straight running on flat ground: flat)", "surface")
-    return ground
+    return None if isinstance(ground, Sphere) else ground
+
+
+def _plane_lanes(theta, height, turn_radius, limit: int, shaped: bool):
+    """Flat ground's lanes: the paths' curvatures 1 / turn_radius [1/m] (the
+    steady-turn solver's lane on a plane) and the turn radii as given (the
+    rear contact's distance from the turn's centre [m]); theta and height
+    refused (a sphere's and a wall's)."""
+    for key, value in (("theta", theta), ("height", height)):
+        if value is not None:
+            raise ParameterError(f"flat ground has no {key}: its lane is turn_radius (the rear contact's distance "
+                                 "from the turn's centre)", key)
+    if turn_radius is None:
+        raise ParameterError("on flat ground give turn_radius (the rear contact's distance from the turn's centre)",
+                             "turn_radius", missing=True)
+    given = _values("turn_radius", turn_radius, limit, shaped=shaped)
+    return 1.0 / np.asarray(given, dtype=float), given, False
 
 
 def _wall_lanes(wall, theta, height, limit: int, shaped: bool):
@@ -550,6 +568,7 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
     lean = pick("lean")
     th = lanes[req]
     on_wall = request.wall is not None
+    on_plane = isinstance(request.wall, Plane)
     # the tilt from the inward horizontal, 90 deg - beta - the lean from the wall's normal (the globe's beta = 180 -
     # theta): the machine's alpha
     beta = np.degrees(request.wall.wall_angle(th)) if on_wall else 180.0 - np.degrees(th)
@@ -563,7 +582,9 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
         "theta_deg": given[req] if by_theta else np.full(n, np.nan) if on_wall else np.degrees(th),
         "alpha_deg": np.where(has, alpha, np.nan),
         "lean_deg": np.where(has, 90.0 - alpha, np.nan), "r_m": np.full(n, r),
-        "height_m": r * (1 + np.cos(th)) if by_theta else given[req], "g_m_s2": np.full(n, request.g),
+        # on flat ground the lane is the turn radius (rho_contact_m): the contact's height is 0, as ride's there
+        "height_m": (r * (1 + np.cos(th)) if by_theta else np.zeros(n) if on_plane else given[req]),
+        "g_m_s2": np.full(n, request.g),
         "omega_rad_s": omega, "period_s": period,
         "v_cm_m_s": pick("v_cm"), "v_cm_km_h": np.round(pick("v_cm") * 3.6, 9), "v_contact_m_s": pick("v_rear"),
         "load_g": pick("load_g"), "head_clearance_m": pick("head_clearance"),
@@ -607,7 +628,8 @@ def turn_rows(request: TurnRequest, batch: TurnBatch | None = None) -> Table:
                 "lean_vertical_deg": cols["lean_deg"]}
     if on_wall:
         # the arena's, as a single-contact machine's table there appends them (docs/contract.md)
-        rho, _ = request.wall.contact(th)
+        # (flat ground's lane is the path's curvature: the contact's distance from the turn's centre is its radius)
+        rho, _ = request.wall.contact(given[req] if on_plane else th)
         appended |= {"surface": np.full(n, request.wall.name, dtype=object),
                      "rho_contact_m": np.asarray(rho, dtype=float) + np.zeros(n),
                      "wall_angle_deg": beta + np.zeros(n)}
@@ -658,6 +680,7 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
     beyond = steady & np.isin(status, BEYOND_LIMITS)
     mu_needed = np.fmax(table["mu_required_rear"], table["mu_required_front"])
     lanes, lanes_given = batch.lane[heads], batch.given[heads]
+    on_plane = isinstance(request.wall, Plane)
     free = _hands_free(request, lanes)
     rows = {c: [] for c in TURN_SUMMARY_COLUMNS}
     for i in range(heads.size):
@@ -671,7 +694,7 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
         theta = (float(lanes_given[i]) if request.by_theta else math.nan if request.wall is not None
                  else math.degrees(lanes[i]))
         rows["height_m"].append(request.r * (1 + math.cos(lanes[i])) if request.by_theta
-                                else float(lanes_given[i]))
+                                else 0.0 if on_plane else float(lanes_given[i]))
         rows["theta_deg"].append(theta)
         rows["speeds_tried"].append(int(tried[i]))
         rows["speeds_ok"].append(int(np.unique(on[fine]).size))
@@ -713,8 +736,12 @@ def _turn_summary(request: TurnRequest, table: Table, batch: TurnBatch) -> Table
     counts = {"speeds_tried", "speeds_ok", "speeds_stable", "hands_free_turns", "hands_free_stable",
               "stable_beyond_limits", *TURN_FAILURES}
     text = {"limits", "steer", "hands_free_v_rear_m_s", "hands_free_stable_v_rear_m_s"}
-    return Table({c: np.array(v, dtype=np.int64 if c in counts else object if c in text else float)
-                  for c, v in rows.items()})
+    table = {c: np.array(v, dtype=np.int64 if c in counts else object if c in text else float)
+             for c, v in rows.items()}
+    if on_plane:
+        # flat ground's lane is its turn radius: appended (docs/contract.md), the heights being 0
+        table["rho_contact_m"] = np.asarray(lanes_given, dtype=float)
+    return Table(table)
 
 
 #: The keys of a two-wheeler's ``ride`` as typed and their defaults: a turn's and ``flat``.
@@ -759,6 +786,9 @@ def two_wheeler_ride(machine, typed: Mapping) -> Table:
         if theta is not None or height is not None or diameter is not None or r is not R:
             raise ParameterError("flat ground has no lane and no sphere: give speed only (not theta, height, r "
                                  "or diameter)", "flat")
+        if given["turn_radius"] is not None:
+            raise ParameterError("flat is upright straight running: a steady turn on flat ground is surface plane "
+                                 "with turn_radius (without flat)", "turn_radius")
         for key in ("surface", "wall_angle", "wall_height"):
             if given[key] is not None:
                 raise ParameterError(f"flat ground is the arena of flat: {key} is not for it", key)
@@ -930,6 +960,9 @@ def two_wheeler_run(machine, typed: Mapping, view=False, progress=None) -> tuple
         raise ParameterError("a locked steer has no steer rate to kick: perturb_steer_rate is for steer free",
                              "perturb_steer_rate")
     wall = _wall(given["surface"], r, diameter, given["wall_angle"], given["wall_height"], given["profile"])
+    if isinstance(wall, Plane):
+        raise ParameterError("a two-wheeler's run on flat ground is flat's (with turn_radius for a steady turn), "
+                             "not surface plane's", "surface")
     if flat and wall is not None:
         raise ParameterError(f"flat is flat ground: the {wall.name}'s arena keywords are not for it", "flat")
     if flat and (theta is not None or height is not None or diameter is not None or r is not R):

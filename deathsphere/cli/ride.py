@@ -88,7 +88,7 @@ def _grid(where, how, mus):
         help="With --surface profile: a CSV of the meridian's points from the lowest up, header rho_m,z_m (or "
              "rho_ft,z_ft ...; docs/surfaces.md); a lane is its --height.")
 @param_option("turn_radius", multiple=True, help="With --surface plane (flat ground): the contact's distance "
-              "from the turn's centre, the lane instead of --height.")
+              "from the turn's centre (a two-wheeler's rear contact's), the lane instead of --height.")
 @param_option("g")
 @param_option("mu", multiple=True, help="Friction coefficient available; an orbit needing more has status "
               "slips (e.g. 0.8:1:0.1: each value a set of rows; the rider's table a row per height and value; a "
@@ -155,6 +155,8 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
       deathsphere ride --surface cone --wall-angle 80 --diameter 32ft \\
           --height 5ft --speed 30:80:10km/h --mu 1 --summary
       deathsphere ride --surface plane --turn-radius 10:50:10 --speed 30km/h
+      deathsphere ride --machine stunt125-steer --surface plane \\
+          --turn-radius 10 --speed 20km/h --steer free
       deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1
       deathsphere ride --machine benchmark-bicycle --flat --speed 0:10:0.1 \\
           --summary
@@ -210,7 +212,9 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
         from deathsphere.api.two_wheeler_streams import two_wheeler_ride_sweep
 
         chunks = two_wheeler_ride_sweep(**given, jobs=jobs or 1, scheduler=scheduler)
-        where = "the globe" if not on_wall else f"the {str(surface or 'sphere').strip().lower()}'s wall"
+        arena_word = str(surface or "sphere").strip().lower()
+        where = ("the globe" if not on_wall else "flat ground's circles" if arena_word == "plane"
+                 else f"the {arena_word}'s wall")
         title = (f"{name}: the rider's table on {where}, per lane (docs/two-wheeler.md sec. 10)" if summary
                  else f"{name}: steady turns on {where} (docs/two-wheeler.md sec. " + ("12)" if on_wall else "8)"))
         finish(_written(stream(chunks, fmt, label="ride", title=title,

@@ -132,8 +132,9 @@ def simulate_command(theta, height, steer, flat, turn_radius, duration, perturb_
     Off the globe (--surface cylinder, cone, plane or profile, docs/
     surfaces.md): the paper's wheel (--alpha, or --speed, --com-speed or
     --omega with --branch) or ball (--omega3 and --branch, or --omega)
-    inside, from the steady orbit on the lane
-    --height (flat ground: --turn-radius); the run also stops with
+    inside or, with --side outside, round a drum's outside or on a cone's
+    or a dome's roof (flat ground has one side), from the steady orbit on
+    the lane --height (flat ground: --turn-radius); the run also stops with
     hits_floor (the body's lowest point reaches the floor at the wall's
     foot) or over_the_top (the contact passes --wall-height), and --perturb
     tilts a wheel about its direction of travel or turns a ball's velocity

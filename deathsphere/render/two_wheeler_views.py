@@ -10,7 +10,7 @@ from __future__ import annotations
 from rich.markup import escape
 
 from deathsphere.render.display_units import AS_TYPED, DisplayUnits
-from deathsphere.render.ride_views import _limit, _span, _spans, _stability_cell
+from deathsphere.render.ride_views import _limit, _span, _spans, _stability_cell, _turn_radius_shown
 from deathsphere.render.terminal_table import (
     MAX_TERMINAL_ROWS,
     FitTable,
@@ -28,6 +28,9 @@ from deathsphere.table import Table
 #: The rear contact's speed: typed as --speed.
 REAR_SPEED = dict(kind="speed", params=("speed",))
 HEIGHT = ColumnSpec("height_m", "height", "m", kind="length", params=("height",))
+#: flat ground's lane: the rear contact's distance from the turn's centre (shown where every height is 0)
+TURN_RADIUS = ColumnSpec("rho_contact_m", "turn\nradius", "m", kind="length", params=("turn_radius",),
+                         when=_turn_radius_shown)
 
 #: The turns on the globe, in order: the row's identity and the rider's
 #: numbers, then the rest (left out first, from the right); the steer
@@ -35,6 +38,7 @@ HEIGHT = ColumnSpec("height_m", "height", "m", kind="length", params=("height",)
 TURN_VIEW = (
     ColumnSpec("input_row", "#", format=str),
     HEIGHT,
+    TURN_RADIUS,
     ColumnSpec("status", "status", format=status_text, justify="left"),
     ColumnSpec("v_rear_m_s", "v rear", "m/s", **REAR_SPEED),
     ColumnSpec("lean_surface_deg", "lean°\nwall"),
@@ -100,9 +104,14 @@ def turns_view(table: Table, total_rows: int | None = None, title: str | None = 
     if "speeds_tried" in table:
         return turn_summary_view(table, total_rows, title, units)
     first = row_record(table)
-    setup = (f"{escape(str(first['machine']))}: {globe_text(first, units, number=echo_number)}, steer {first['steer']}"
-             f"{_limits_text(first)}; lean from the wall's normal at the rear contact, + to the rider's right (the "
-             "floor's side)")
+    if first.get("surface") == "plane":
+        # flat ground: no radius to name, and the ground's normal is the vertical
+        setup = (f"{escape(str(first['machine']))}: flat ground, steer {first['steer']}{_limits_text(first)}; lean "
+                 "from the vertical, into the turn")
+    else:
+        setup = (f"{escape(str(first['machine']))}: {globe_text(first, units, number=echo_number)}, steer "
+                 f"{first['steer']}{_limits_text(first)}; lean from the wall's normal at the rear contact, + to the "
+                 "rider's right (the floor's side)")
     return build_table(table, TURN_VIEW, units=units, title=title, total_rows=total_rows, setup=setup,
                        notes=status_legend(first_rows(table, MAX_TERMINAL_ROWS)))
 
@@ -168,6 +177,7 @@ def _doubling_cell(get: dict) -> str:
 #: go first; "why" stays, on one line.
 TURN_SUMMARY_VIEW = (
     HEIGHT,
+    TURN_RADIUS,
     ColumnSpec("theta_deg", "θ", "°", drop=1, kind="angle", params=("theta",)),
     ColumnSpec("ok", "ok", value=lambda get: f"{get['speeds_ok']}/{get['speeds_tried']}", drop=5),
     # the speeds that work in the unit typed alone (SI where none was): the rider's room goes to the rest

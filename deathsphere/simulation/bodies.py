@@ -94,8 +94,11 @@ class GroundRun(NamedTuple):
     run's length: the centre's tolerance, the energy's scale, the
     constraint's residual, as the globe's radius is there), ``height`` the
     start contact's height above the ground's lowest point [m] (on flat
-    ground 0: its lane is the turn radius ``r``) (n,) each, and the
-    ``ground`` record, one for the whole run."""
+    ground 0: its lane is the turn radius ``r``) (n,) each, the
+    ``ground`` record, one for the whole run, and ``outside`` (n,) bool,
+    the bodies on the ground's far side (F > 0: round the outside of a
+    drum, on a cone's or a dome's roof; docs/dynamics.md sec. 7,
+    "Outside"), False inside."""
 
     a: np.ndarray
     k: np.ndarray
@@ -104,16 +107,12 @@ class GroundRun(NamedTuple):
     r: np.ndarray
     height: np.ndarray
     ground: Ground
-
-    @property
-    def outside(self) -> np.ndarray:
-        """False: on a ground other than the globe the bodies ride inside."""
-        return np.zeros(np.shape(self.a), dtype=bool)
+    outside: np.ndarray = np.False_
 
     def body(self, shape=None) -> don.GroundBody:
         """The bodies as :mod:`deathsphere.physics.dynamics_on` takes them
         (their arrays broadcast to ``shape``, as a state's trailing axes)."""
-        arrays = (self.a, self.k, self.g, self.sphere)
+        arrays = (self.a, self.k, self.g, self.sphere, np.asarray(self.outside, dtype=bool))
         if shape is not None:
             arrays = tuple(np.broadcast_to(x, shape) for x in arrays)
         return don.GroundBody(self.ground, *arrays)
@@ -175,7 +174,9 @@ def _take(x, index):
         return x
     if isinstance(x, tuple):
         return type(x)(*(_take(y, index) for y in x))
-    return np.asarray(x)[index]
+    x = np.asarray(x)
+    # a field left at its scalar default (GroundRun.outside) holds for every body
+    return x if x.ndim == 0 else x[index]
 
 
 def _concat(xs):
@@ -422,8 +423,8 @@ class _OnGround(_Paper):
     """The paper's wheel and ball on any ground but the globe (beyond the
     paper; docs/dynamics.md sec. 7): the equations of
     :mod:`deathsphere.physics.dynamics_on`, the paper's tilt, speed and
-    energy scale as on the globe (inside: the side every other ground is
-    ridden on), and the wall's events: the floor and the top."""
+    energy scale as on the globe (inside or outside: ``GroundRun.outside``,
+    as the globe's side), and the wall's events: the floor and the top."""
 
     name = "on_ground"
     off_globe = True

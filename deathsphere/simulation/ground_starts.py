@@ -18,6 +18,14 @@ kicked off it by ``perturb_deg``:
   speed; contact and rolling hold exactly.  (On the globe a ball's kick
   moves its contact down the meridian; a wall's meridian has no angle to
   move it by.)
+
+On the outside (``outside``: round a drum's outside, on a cone's or a
+dome's roof, McDonald sec. 3 off the globe) the orbit is ``orbit``'s with
+``side="outside"`` (S4 and S3 outside, S6 with the centre on the far side);
+a wheel's steady state is the same formula (its tilt alone puts the centre
+on either side of the contact, docs/dynamics.md sec. 7, "Outside"), a
+ball's e3 is the wall's inward normal, and the kicks are the same, still
+positive up the wall.
 """
 
 from __future__ import annotations
@@ -58,31 +66,34 @@ def _wheel_state(ground, height, alpha, kick, a, k, g, phi):
     return np.concatenate((tilted[0:6], steady[6:9]))
 
 
-def _ball_state(ground, height, rate, kick, a, k, g, phi):
+def _ball_state(ground, height, rate, kick, a, k, g, phi, outside):
     """(states (9, n), omega3) of balls on their steady orbits of rate
     ``rate``, their velocity turned ``kick`` [rad] up the wall."""
-    steady, spin = don.ball_orbit_state_on(ground, height, rate, a, k, g, phi)
-    # e3, from the centre to the contact: -n of the lane
+    steady, spin = don.ball_orbit_state_on(ground, height, rate, a, k, g, phi, outside)
+    # e3, from the centre to the contact: -n of the lane inside, +n outside
+    side = np.where(outside, -1.0, 1.0)
     n_rho, n_z = ground.normal(height)
     rhat = np.stack((np.cos(phi), np.sin(phi), np.zeros_like(phi)))
-    e3 = -(n_rho * rhat + n_z * np.array([0.0, 0.0, 1.0])[:, None])
-    w = turned_about(steady[6:9], e3, np.sign(rate) * kick)
+    e3 = -side * (n_rho * rhat + n_z * np.array([0.0, 0.0, 1.0])[:, None])
+    # v = a e3 x w (eq. 6): turning w about e3 turns v the same way, so the axis's
+    # flip outside flips the angle to keep a positive kick up the wall
+    w = turned_about(steady[6:9], e3, side * np.sign(rate) * kick)
     return np.concatenate((steady[0:6], w)), spin
 
 
-def _orbit(ground, height, ball, held, branch, a, k, g):
-    """The steady orbits on the lanes (docs/surfaces.md S1-S7): a wheel's
-    at tilt ``held`` [rad], a ball's at spin ``held`` (root ``branch``) or,
-    with branch None, at rate ``held``."""
+def _orbit(ground, height, ball, held, branch, a, k, g, outside):
+    """The steady orbits on the lanes (docs/surfaces.md S1-S7), inside or
+    ``outside``: a wheel's at tilt ``held`` [rad], a ball's at spin
+    ``held`` (root ``branch``) or, with branch None, at rate ``held``."""
     if not ball:
-        return revolution.wheel_orbit(ground, height, held, a, k, g)
+        return revolution.wheel_orbit(ground, height, held, a, k, g, outside=outside)
     if branch is None:
-        return revolution.ball_orbit_from_rate(ground, height, held, a, k, g)
-    return revolution.ball_orbit(ground, height, held, a, k, g, branch=branch)
+        return revolution.ball_orbit_from_rate(ground, height, held, a, k, g, outside=outside)
+    return revolution.ball_orbit(ground, height, held, a, k, g, outside=outside, branch=branch)
 
 
 def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, mu=np.inf, perturb_deg=0.0,
-                  phi_deg=0.0, input_row=None) -> Starts:
+                  phi_deg=0.0, input_row=None, outside=False) -> Starts:
     """Wheels or balls on steady horizontal orbits of ``ground`` at lane
     ``height`` [m] (on flat ground: the turn radius), arrays broadcast.
 
@@ -90,12 +101,16 @@ def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, m
     ``{"alpha_deg": ...}`` [deg]; a ball by its spin, ``{"omega3": ...,
     "branch": 0 | 1}`` (the root of docs/surfaces.md S6: 0 slow, 1 fast),
     or its signed rate, ``{"omega": ...}`` [rad/s].  ``perturb_deg`` [deg] kicks it
-    (module docstring).  Bodies with no steady orbit there get status
-    no_fit / no_orbit and the orbit's reason, and are not integrated.
-    Summary fields: theta NaN (no polar angle off the globe), alpha the
-    wheel's tilt or a ball's equivalent tilt 90 deg - beta (sec. 4 of the
-    paper: the ball's axis 3 along the normal, as ``orbit`` reports it).
+    (module docstring); ``outside`` puts the bodies on the ground's far
+    side (one side for the run).  Bodies with no steady orbit there get
+    status no_fit / no_orbit and the orbit's reason, and are not
+    integrated.  Summary fields: theta NaN (no polar angle off the globe),
+    alpha the wheel's tilt or a ball's equivalent tilt 90 deg - beta inside,
+    270 deg - beta outside (sec. 4 of the paper: the ball's axis 3 along
+    the normal, theta -/+ 90 deg on the tangent sphere, as ``orbit``
+    reports it).
     """
+    outside = bool(outside)
     ball = isinstance(body, Ball)
     by_rate = ball and held.get("omega") is not None
     branch = None if by_rate else held.get("branch", 0)
@@ -104,18 +119,20 @@ def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, m
                                    for x in np.broadcast_arrays(height, value, perturb_deg, phi_deg))
     n = h.size
     kick, phi = np.deg2rad(kick_deg), np.deg2rad(phi_deg)
-    orb = _orbit(ground, h, ball, value if ball else np.deg2rad(value), branch, a, k, g)
+    orb = _orbit(ground, h, ball, value if ball else np.deg2rad(value), branch, a, k, g, outside)
     status, reason = start_status(orb)
     ok = status == RunStatus.PENDING
     rate = np.where(ok, orb["omega"], np.nan)
     state, omega3_out = np.full((9, n), np.nan), np.full(n, np.nan)
     on_wall = _on_wall(ground, h)
     if ball:
-        # a ball's equivalent tilt (axis 3 along the normal): 90 deg - beta, as orbit gives it
-        alpha = np.deg2rad(90.0) - np.asarray(ground.wall_angle(on_wall), dtype=float)
+        # a ball's equivalent tilt (axis 3 along the normal): 90 deg - beta (outside 270 deg - beta), as orbit
+        # gives it
+        alpha = np.deg2rad(270.0 if outside else 90.0) - np.asarray(ground.wall_angle(on_wall), dtype=float)
         alpha_deg_out = np.rad2deg(alpha)
         if ok.any():
-            state[:, ok], omega3_out[ok] = _ball_state(ground, on_wall[ok], rate[ok], kick[ok], a, k, g, phi[ok])
+            state[:, ok], omega3_out[ok] = _ball_state(ground, on_wall[ok], rate[ok], kick[ok], a, k, g, phi[ok],
+                                                       outside)
     else:
         alpha, alpha_deg_out = np.deg2rad(value), value
         if ok.any():
@@ -123,13 +140,14 @@ def ground_starts(ground, body: PaperBodyKind, height, held: dict, *, a, k, g, m
     rho, z = ground.contact(_on_wall(ground, h))
     rho, z = np.broadcast_to(rho, (n,)).astype(float), np.broadcast_to(z, (n,)).astype(float)
     params = GroundRun(a=np.full(n, float(a)), k=np.full(n, float(k)), g=np.full(n, float(g)),
-                       sphere=np.full(n, ball), r=rho, height=z - ground.lowest, ground=ground)
+                       sphere=np.full(n, ball), r=rho, height=z - ground.lowest, ground=ground,
+                       outside=np.full(n, outside))
     period = np.where(ok, 2 * np.pi / np.abs(np.where(ok, rate, 1.0)), np.nan)
     return Starts(
         state=state, params=params, frame=np.broadcast_to(np.eye(3), (n, 3, 3)).copy(),
         input_row=np.arange(1, n + 1, dtype=np.int64) if input_row is None
         else np.broadcast_to(np.asarray(input_row, dtype=np.int64), (n,)).copy(),
-        body=np.full(n, body.word, dtype=object), side=np.full(n, "inside", dtype=object),
+        body=np.full(n, body.word, dtype=object), side=np.full(n, "outside" if outside else "inside", dtype=object),
         orbit=np.full(n, "horizontal", dtype=object), theta=np.full(n, np.nan),
         alpha=np.broadcast_to(alpha, (n,)).astype(float), theta_deg=np.full(n, np.nan),
         alpha_deg=np.broadcast_to(alpha_deg_out, (n,)).astype(float),

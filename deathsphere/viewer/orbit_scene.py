@@ -123,8 +123,9 @@ def _title(meta: dict, title: str) -> str:
 def _wall_title(meta: dict, title: str, ground) -> str:
     lane = "turn radius" if ground.name == "plane" else "height"
     at = meta["rho0"] if ground.name == "plane" else meta["height0"]
+    where = "outside" if meta["side"] == "outside" else "on"
     return (f"{title}: " if title else "") + (
-        f"{_drawn(meta['body'])[2] or meta['body']} on the {ground.name}, horizontal orbit ({lane} {at:.2f} m, "
+        f"{_drawn(meta['body'])[2] or meta['body']} {where} the {ground.name}, horizontal orbit ({lane} {at:.2f} m, "
         f"\u03b1\u2080 = {meta['alpha0_deg']:.1f}\u00b0, a = {meta['a']:g} m)")
 
 

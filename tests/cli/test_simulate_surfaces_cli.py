@@ -61,11 +61,29 @@ def test_a_wheel_on_the_drum_given_its_speed_or_rate_starts_on_the_tilt_orbit_fi
     assert summary["status"] == "completed"
 
 
+def test_a_wheel_on_a_cone_roof_starts_on_orbits_outside_orbit(run):
+    roof = ("--surface", "cone", "--diameter", "10", "--wall-angle", "120", "--height", "2", "--side", "outside",
+            "-a", "2", "--alpha", "235")
+    res = run("simulate", *roof, "--periods", "0.05", "--points-per-period", "40", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    table = rows(res.stdout)
+    steady = deathsphere.orbit(surface="cone", diameter=10, wall_angle=120, height=2, side="outside", a=2,
+                               alpha=235, stability=False)
+    assert str(steady["status"]) == "ok"
+    assert float(table[0]["speed_m_s"]) == pytest.approx(float(steady["v_cm_m_s"]), rel=1e-12)
+    assert float(table[0]["normal_per_mass_m_s2"]) == pytest.approx(float(steady["normal_per_mass_m_s2"]),
+                                                                     rel=1e-9)
+    res = run("simulate", *roof, "--periods", "0.05", "--summary-only", "--format", "csv")
+    (summary,) = rows(res.stdout)
+    assert summary["side"] == "outside" and summary["status"] == "completed"
+
+
 @pytest.mark.parametrize("args, option", [
     (DRUM + ("--theta", "60", "--alpha", "10"), "--theta"),
     (DRUM + ("--speed", "1"), "--speed"),                   # too slow for any tilt to hold the wall
     (DRUM + ("--speed", "30mph", "--branch", "3"), "--branch"),
-    (DRUM + ("--alpha", "10", "--side", "outside"), "--side"),
+    # flat ground has one side (a drum, a cone and a profile are ridden outside too)
+    (("--surface", "plane", "--turn-radius", "5", "--alpha", "10", "--side", "outside"), "--side"),
     (DRUM + ("--alpha", "10", "--vertical"), "--vertical"),
     (DRUM + ("--alpha", "10", "--com-speed", "20", "--machine", "stunt125"), "--com-speed"),
     (DRUM + ("--alpha", "10", "--machine", "stunt125", "--body", "sphere"), "--machine"),

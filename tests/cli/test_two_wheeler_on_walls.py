@@ -89,9 +89,9 @@ def test_a_profile_from_a_file_rides_as_the_drum_it_samples(run, tmp_path):
 @pytest.mark.parametrize("args, option, words", [
     ((*DRUM, "--height", "4", "--speed", "60km/h"), "--height", "at most 3.6576 m on this cylinder"),
     ((*DRUM, "--theta", "90", "--speed", "60km/h"), "--theta", "on a cylinder give height"),
-    ((*STUNT, "--surface", "plane", "--height", "1", "--speed", "5"), "--surface", "not a plane"),
-    ((*STUNT, "--surface", "plane", "--turn-radius", "5", "--speed", "5"), "--turn-radius",
-     "does not take turn_radius"),
+    # flat ground's lane is its turn radius (its turns: tests/test_two_wheeler_flat_turns.py)
+    ((*STUNT, "--surface", "plane", "--height", "1", "--speed", "5"), "--height", "flat ground has no height"),
+    ((*STUNT, "--surface", "plane", "--speed", "5"), "--turn-radius", "Missing option"),
     ((*STUNT, "--surface", "cylinder", "--diameter", "0.5", "--height", "0.1", "--speed", "5"), "--diameter",
      "do not fit in a cylinder"),
     (("ride", "--machine", "benchmark-bicycle", "--flat", "--speed", "5", "--surface", "cylinder"), "--surface",
@@ -101,3 +101,21 @@ def test_what_a_two_wheeler_cannot_ride_exits_2_with_one_line(run, args, option,
     res = run(*args)
     assert res.exit_code == 2 and res.stdout == ""
     assert option in res.stderr and words in res.stderr and len(res.stderr.strip().splitlines()) == 1
+
+
+def test_flat_grounds_turn_from_the_command_line_is_the_apis(run):
+    """``ride --surface plane --turn-radius`` (docs/two-wheeler.md sec. 12.8): the API's turn, its lane
+    echoed as the contact's distance from the turn's centre."""
+    import csv
+    import io
+
+    import deathsphere
+
+    res = run(*STUNT, "--surface", "plane", "--turn-radius", "10", "--speed", "20km/h", "--steer", "free",
+              "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    (row,) = list(csv.DictReader(io.StringIO(res.stdout)))
+    api = deathsphere.ride(machine="stunt125-steer", steer="free", surface="plane", turn_radius=10, speed="20km/h")
+    assert row["surface"] == "plane" and float(row["rho_contact_m"]) == 10.0 and row["status"] == "ok"
+    for col in ("lean_deg", "steer_deg", "steer_torque_n_m", "omega_rad_s", "eig_1_re", "head_clearance_m"):
+        assert float(row[col]) == pytest.approx(float(api[col][0]), rel=1e-12), col

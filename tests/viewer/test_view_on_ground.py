@@ -39,3 +39,36 @@ def test_the_page_draws_the_cone_and_the_track_on_its_wall(tmp_path, browser):
     attrs = body_attributes(dump_dom(browser, out))
     assert attrs["errors"] == "0" and attrs["ready"] == "1"
     assert int(attrs["frame"]) > 0
+
+
+def test_the_page_draws_a_cone_roof_and_the_wheel_on_its_outside(tmp_path, browser):
+    """A wheel round a cone's roof (the wall leaning in at 120 degrees, a 10 m
+    foot, up to 3 m): the ground is the same meridian, the contacts on it,
+    the wheel's centre on the far side of the wall from the inside (its
+    clearance negative: outside) and the title says so."""
+    roof = dict(surface="cone", diameter=10, wall_angle=120, wall_height=3)
+    sim = prepare_simulation(*simulation_request(dict(height=2, alpha=235, a=2.0, side="outside", perturb=0.5,
+                                                      periods=0.5, points_per_period=20, record_states=True,
+                                                      **roof)))
+    series, summary = sim.run()
+    assert summary["status"][0] == "completed"
+    out = tmp_path / "roof.html"
+    write_view(out, series, summary, sim.view_frames(), ground=sim.ground)
+    data = page_data(out.read_text(encoding="utf-8"))
+    ground = data["ground"]
+    rho, z = np.asarray(ground["rho"]), np.asarray(ground["z"])
+    assert ground["kind"] == "revolution" and rho[0] == 0.0 and z[-1] == 3.0
+    np.testing.assert_allclose(rho[1:], 5.0 + z[1:] / np.tan(np.radians(120.0)), rtol=1e-12)
+    (track,) = data["tracks"]
+    n_out = -np.sin(np.radians(120.0)), np.cos(np.radians(120.0))        # the inward normal (rho, z)
+
+    def clearance(points):
+        return (np.hypot(points[0], points[1]) - 5.0) * n_out[0] + points[2] * n_out[1]
+
+    contact, centre = (decode_array(point_set(track, key), rows=3) for key in ("contact", "centre"))
+    assert np.max(np.abs(clearance(contact))) < 1e-5
+    # the rim's centre a |sin(alpha + beta)| = 2 sin(5 deg) = 0.174 m out from the wall
+    np.testing.assert_allclose(clearance(centre), -2.0 * np.sin(np.radians(5.0)), atol=0.02)
+    assert "wheel outside the cone" in data["title"]
+    attrs = body_attributes(dump_dom(browser, out))
+    assert attrs["errors"] == "0" and attrs["ready"] == "1"

@@ -103,16 +103,19 @@ class OnPlane:
 
     def turn(self, u, points, v_rear):
         """(omega, head clearance, theta_front, swept) of a steady turn: the rate about the vertical
-        (the heading rate), the head's clearance (+inf: no globe), the front contact's polar angle (pi)
-        and swept(x), the horizontal offset whose z-cross is the velocity of the point x."""
+        (the heading rate), the head's clearance (its height above the ground, as the single-contact
+        machine's there; N.z is down), the front contact's polar angle (pi) and swept(x), the horizontal
+        offset whose z-cross is the velocity of the point x."""
         omega = u[_HEADING]
         Y = points["frames"]["Y"]
+        head = points["head"]
+        clearance = self.ground.clearance(np.hypot(head[0], head[1]), -head[2]) + 0.0 * v_rear
 
         def swept(x):
             # omega (x - centre), the centre P + Y.y / kappa: regular at kappa = 0 (straight)
             return omega * _horizontal(x - points["P"]) - v_rear * Y[1]
 
-        return omega, np.full_like(v_rear, np.inf), np.full_like(v_rear, np.pi), swept
+        return omega, clearance, np.full_like(v_rear, np.pi), swept
 
 
 class OnSphere:

@@ -380,7 +380,7 @@ def turn_state(lane, lean, steer, parameters: BicycleParameters, ground, g=STAND
     force per total mass, m/s^2: along the inward normal, positive when
     pushing; the tangential part's magnitude), ``mu_required_*``,
     ``load_g`` (|total contact force| / weight), ``head_clearance`` (m,
-    r - |head|; +inf on flat ground), ``theta_rear``, ``theta_front``
+    r - |head|; on flat ground the head's height above it), ``theta_rear``, ``theta_front``
     (polar angles of the contacts from the upward vertical), ``contact``
     (1 where both normal forces push, 0 where a wheel would lift), ``q``,
     ``u``.
