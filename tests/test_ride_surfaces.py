@@ -100,7 +100,8 @@ def test_a_lane_a_wall_does_not_have_is_refused_in_one_line(kw, param):
 
 def test_a_two_wheeler_rides_the_wall_not_the_globe():
     """Its turns are the drum's (docs/two-wheeler.md sec. 12), not a globe's
-    of that diameter; a surface it does not ride is refused naming surface."""
+    of that diameter; on flat ground a lane by height is refused naming
+    height (a circle there is its turn radius)."""
     rows = deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="cylinder", diameter="32ft",
                             height=1, speed=8)
     globe = deathsphere.ride(machine="benchmark-bicycle", steer="free", diameter="32ft", height=1, speed=8)
@@ -109,7 +110,7 @@ def test_a_two_wheeler_rides_the_wall_not_the_globe():
     assert not np.allclose(rows["lean_wall_deg"][0], globe["lean_wall_deg"][0])
     with pytest.raises(ParameterError) as err:
         deathsphere.ride(machine="benchmark-bicycle", steer="free", surface="plane", height=1, speed=8)
-    assert err.value.param == "surface" and "\n" not in str(err.value)
+    assert err.value.param == "height" and "turn_radius" in str(err.value) and "\n" not in str(err.value)
 
 
 def test_the_riders_table_counts_a_head_reaching_a_wall_as_head_hits():
