@@ -1,5 +1,5 @@
 """The plan of a show (docs/show.md): a globe (or an ``[arena]``: the wall
-of death's drum, the well of death's cone, sec. 11) and its riders, read
+of death's drum, the well of death's cone, sec. 11; a profile, sec. 12) and its riders, read
 from a TOML file or a dict and checked once, before any work.  Every fault is one
 line naming the rider (or the globe) and the key; every dimensional value
 takes the command line's unit suffixes ("16ft", "32km/h")."""
@@ -387,8 +387,9 @@ def _plain(raw):
 def read_plan(plan) -> Plan:
     """A checked :class:`Plan` from a path to a TOML file (str or
     pathlib.Path) or a dict of the same tables ({"globe": {...}, "rider":
-    [{...}, ...]}, or {"arena": {...}, ...}: a drum or a cone, whose riders
-    ride horizontal lanes by their height).  Raises ParameterError, one line naming the rider (or
+    [{...}, ...]}, or {"arena": {...}, ...}: a drum, a cone or a profile,
+    whose riders ride horizontal lanes by their height; a profile file's
+    path is relative to the plan file's directory).  Raises ParameterError, one line naming the rider (or
     the globe) and the key: an unknown key, an unknown machine, a rider
     outside the globe, duplicate names, no riders, a value outside its
     range or of the wrong unit.  (A vertical lane that is not feasible at
