@@ -221,3 +221,16 @@ def test_the_scene_draws_the_bowl_from_its_meridian():
     assert rho[1:] == pytest.approx(want_rho, abs=2e-4)
     steps = np.hypot(np.diff(rho[1:]), np.diff(z[1:]))
     assert steps.max() < 1.01 * steps.min()
+
+
+def test_the_command_line_rides_the_bowl_and_refuses_a_missing_profile_in_one_line(run, tmp_path):
+    res = run("show", str(BOWL), "--table", "pairs", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    rows = [line.split(",") for line in res.stdout.splitlines()]
+    assert rows[3][:2] == ["Ben", "Cal"] and float(rows[3][2]) == pytest.approx(0.2397, abs=1e-3)
+    plan = tmp_path / "plan.toml"
+    plan.write_text(BOWL.read_text(encoding="utf-8"), encoding="utf-8")      # bowl.csv is not beside it
+    res = run("show", str(plan))
+    assert res.exit_code == 2
+    (line,) = res.stderr.strip().splitlines()
+    assert "arena: profile: cannot read the profile file" in line and "bowl.csv" in line
