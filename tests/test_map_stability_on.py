@@ -77,3 +77,17 @@ def test_the_command_line_gives_the_stability_rows_and_the_stable_tilts(run):
     assert res.exit_code == 0, res.stderr
     assert "stable alpha" in res.stdout and f"0.00 .. {alpha:.2f}" in res.stdout
     assert not math.isnan(alpha)
+
+
+def test_the_figure_draws_the_boundary_and_a_bad_flag_is_refused(tmp_path):
+    pytest.importorskip("matplotlib")
+    from deathsphere.errors import ParameterError
+    from deathsphere.render.lane_map_figure import plot_lane_map
+
+    curves = deathsphere.region_curves(a=A, stability=True, height="0.5:2.5:0.5", **CASES["cone"])
+    fig = plot_lane_map(curves, output=str(tmp_path / "cone.png"))
+    labels = [text.get_text() for text in fig.axes[0].get_legend().get_texts()] if fig.axes[0].get_legend() else \
+        [text.get_text() for text in fig.legends[0].get_texts()]
+    assert "stability boundary (exact linearisation)" in labels and (tmp_path / "cone.png").stat().st_size > 1000
+    with pytest.raises(ParameterError, match="stability must be True or False"):
+        deathsphere.region(a=A, stability="yes", height=1.5, **CASES["cone"])
