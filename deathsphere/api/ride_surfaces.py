@@ -18,7 +18,8 @@ import math
 
 import numpy as np
 
-from deathsphere.api.arguments import TILTS_PER_SPEED, broadcast_flat, checked_array, grid_shape, refuse_large_grid
+from deathsphere.api.arguments import (TILTS_PER_SPEED, broadcast_flat, checked_array, checked_flag, grid_shape,
+                                      refuse_large_grid)
 from deathsphere.params import ParameterError, reduce_angle, shown_number
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
@@ -76,15 +77,18 @@ def ride_on_surface(ground, typed: dict, m, options, rides):
     refused: a lane on a wall is its height), ``m`` the machine record,
     ``options`` the :class:`~deathsphere.api.rides.RideOptions`, ``rides``
     the module whose table builder and rider's table it shares."""
+    if checked_flag("vertical", typed.get("vertical", False)):
+        # the machine's loop inside a profile closed over the top (docs/machine.md sec. 10, eqs. M25-M30)
+        from deathsphere.api.ride_loops import ride_loop_on
+
+        return ride_loop_on(ground, typed, m, options, rides)
     if typed.get("theta") is not None:
         raise ParameterError(f"theta is the globe's polar angle: on a {ground.name} give {lane_key(ground)} (the "
                              + ("contact's distance from the turn's centre)" if lane_key(ground) == "turn_radius"
                                 else "contact's height above the floor)"), "theta")
-    for key in ("vertical", "v_top"):
-        if typed.get(key):
-            raise ParameterError(f"a machine's vertical loop is the globe's: not on a {ground.name} (a loop over "
-                                 "the top needs a roof, and off the globe the machine's effective inertia changes "
-                                 f"with the curvature round it; give {lane_key(ground)} for a horizontal lane)", key)
+    if typed.get("v_top") is not None:
+        raise ParameterError(f"v_top is a vertical loop's top speed: give vertical (a loop inside a profile closed "
+                             f"over the top), or {lane_key(ground)} for a horizontal lane", "v_top")
     at, where = _lane_typed(ground, typed)
     holds = [key for key in ("alpha", "speed", "com_speed", "period") if typed.get(key) is not None]
     if len(holds) != 1:

@@ -48,7 +48,14 @@ def loop_arena(surface=None, r=None, diameter=None, wall_angle=None, wall_height
     if not names_a_wall(surface, wall_angle, wall_height, profile):
         return None
     named = _named(surface, wall_angle, wall_height, profile)
-    ground = arena(surface, r, diameter, wall_angle, wall_height, profile)
+    return loop_of(arena(surface, r, diameter, wall_angle, wall_height, profile), named)
+
+
+def loop_of(ground, named: str):
+    """The loop of ``ground`` (:class:`~deathsphere.physics.meridian_loop.Loop`,
+    sampled once) if it closes at both ends, else a ParameterError naming
+    ``named`` (the keyword typed), saying why no vertical loop is computed
+    there (the paper's wheel's and the machine's alike)."""
     if closes_over_top(ground) and hasattr(ground, "meridian"):
         from deathsphere.physics.meridian_loop import Loop, loop_closure
 

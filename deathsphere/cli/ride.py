@@ -297,12 +297,23 @@ def _ride_on_wall(chosen, wall: dict, setup: dict, mu, mus, lane: dict, how_show
                                                                            "output", "shown"))
     from deathsphere.api.arguments import TILTS_PER_SPEED, refuse_large_grid, value_counts
 
-    if vertical or v_top:
-        # the paper's wheel loops inside a closed profile (vertical --surface profile); the machine's loop
-        # is not the same derivation there: its effective inertia changes with the curvature round the loop
-        raise click.UsageError("a machine's vertical loop is the globe's (off it its effective inertia changes with "
-                               "the curvature round the loop, docs/machine.md sec. 10): --vertical takes no "
-                               "--surface, --wall-angle or --wall-height")
+    if vertical:
+        # the machine's loop inside a profile closed over the top (docs/machine.md sec. 10, eqs. M25-M30)
+        if not theta or not v_top or at[1] or holds or summary:
+            raise click.UsageError("--vertical takes --theta 90 (the loop runs through the profile's axis) and "
+                                   "--v-top only")
+        refuse_large_grid(value_counts({"theta": theta, "mu": mu, "v_top": v_top}), command="ride --vertical",
+                          limit=api.rides.MAX_RIDE_ROWS)
+        where, how, friction = _grid(_axis("theta", theta), _axis("v_top", v_top), mus)
+        table = api.ride(where, vertical=True, v_top=how, machine=chosen, only=only or None, **wall, **friction,
+                         **setup)
+        title = f"Vertical loops of {chosen.name} inside the {str(wall['surface']).strip().lower()} " \
+                "(docs/machine.md sec. 10, eqs. M25-M30)"
+        _written(stream(pieces(table), fmt, label="ride --vertical", title=title,
+                        view=_view("loop_view", title=title, units=shown), output=output), output)
+        return
+    if v_top:
+        raise click.UsageError("--v-top is a vertical loop's top speed: give --vertical")
     if theta:
         raise click.BadParameter("theta is the globe's polar angle: on a drum, a cone or a profile give --height "
                                  "(the contact's height above the floor), on flat ground --turn-radius",

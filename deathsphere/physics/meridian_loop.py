@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Loop", "loop_closure", "turn", "golden_max", "bisect_zero", "AXIS_TURN_DEG", "AXIS_TOL", "INTERVALS",
-           "GOLDEN_STEPS", "BISECT_STEPS"]
+__all__ = ["Loop", "loop_closure", "turn", "golden_max", "bisect_zero", "refined_max", "smooth_peak", "simpson", "AXIS_TURN_DEG",
+           "AXIS_TOL", "INTERVALS", "GOLDEN_STEPS", "BISECT_STEPS"]
 
 #: Intervals of the loop's grid on its half (Simpson's rule on the lap time;
 #: the brackets of the refined points).  The lap time's quadrature error at
@@ -167,3 +167,115 @@ def bisect_zero(f, lo, hi, steps: int = BISECT_STEPS):
         up = f(mid) > 0
         hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
     return 0.5 * (lo + hi)
+
+
+def refined_max(loop: Loop, values, at):
+    """Per row, where a smooth quantity of the loop is largest (beyond the
+    paper: the loop's refined points, docs/surfaces.md, "Numerics"):
+    ``values`` its values on the loop's grid (rows x grid, no NaN),
+    ``at(rows, s)`` its values for those rows at arc lengths s (rows x m).
+    The grid's largest, refined by golden section on the curve between its
+    neighbours when it is not at an end (the top and the bottom are points
+    of the loop's mirror symmetry, where a smooth quantity is stationary:
+    there the grid's point is the answer).  Returns (s, value) per row."""
+    values = np.asarray(values, dtype=float)
+    i = np.argmax(values, axis=1)
+    last = loop.s.size - 1
+    s = loop.s[i].astype(float)
+    best = values[np.arange(values.shape[0]), i]
+    inner = np.flatnonzero((i > 0) & (i < last))
+    if inner.size:
+        def f(x):
+            return at(inner, x)
+
+        refined = golden_max(f, loop.s[i[inner] - 1][:, None], loop.s[i[inner] + 1][:, None])[:, 0]
+        value = f(refined[:, None])[:, 0]
+        better = value > best[inner]                   # else the grid's point stays
+        s[inner] = np.where(better, refined, s[inner])
+        best[inner] = np.where(better, value, best[inner])
+    return s, best
+
+
+def simpson(y, h):
+    """Simpson's rule over the last axis (an even number of intervals of
+    width h; beyond the paper: the loop's lap time, docs/surfaces.md eq. S12)."""
+    return h / 3.0 * (y[..., 0] + y[..., -1] + 4.0 * y[..., 1:-1:2].sum(axis=-1) + 2.0 * y[..., 2:-1:2].sum(axis=-1))
+
+
+#: :func:`smooth_peak`'s fit: a polynomial of this degree over at most
+#: :data:`_PEAK_WINDOW` grid intervals each side of the grid's largest value
+#: and :data:`_PEAK_SHARE` of the peak's half-width, at least
+#: :data:`_PEAK_LEAST` (a sharper peak is refined on the curve itself).
+_PEAK_DEGREE = 8
+_PEAK_WINDOW = 64
+_PEAK_SHARE = 0.6
+_PEAK_LEAST = 6
+
+
+def smooth_peak(loop: Loop, values: np.ndarray, at) -> np.ndarray:
+    """Per row, the arc length where ``values`` (rows x grid: the grid's
+    values of a smooth function of s with one peak in the half-loop or at
+    its ends; ``at(rows, s)`` its values for those rows at arc lengths s,
+    rows x m) peaks (beyond the paper: docs/surfaces.md, "Numerics").
+
+    A spline's curvature ripples at the spacing of its samples (by ~2e-7 of
+    itself on a sphere sampled at 2001 points), and the argument of a flat
+    maximum moves by about the square root of that: a least-squares
+    polynomial (:data:`_PEAK_DEGREE`) over a window of the grid about the
+    grid's largest value averages the ripple out.  The window spans
+    :data:`_PEAK_SHARE` of the peak's half-width sqrt(f / |f''|) (from the
+    grid's second difference), at most :data:`_PEAK_WINDOW` intervals each
+    side; a peak too sharp for :data:`_PEAK_LEAST` intervals (a wheel near
+    its least top speed, its worst point near the top) is refined by golden
+    section on the curve itself, where the ripple matters less (f'' / f is
+    large).  The loop's mirror through the axis continues the grid past
+    either end (the top and the bottom are points of symmetry)."""
+    n, last = values.shape[0], loop.s.size - 1
+    h = loop.s[1] - loop.s[0]
+    i = np.argmax(values, axis=1)
+    rows = np.arange(n)
+
+    def mirrored(j):
+        j = np.abs(j)
+        return np.where(j > last, 2 * last - j, j)
+
+    f0 = values[rows, i]
+    f2 = (values[rows, mirrored(i + 1)] - 2 * f0 + values[rows, mirrored(i - 1)]) / h ** 2
+    curved = f2 < 0
+    width = np.sqrt(np.where(curved, f0, 1.0) / np.where(curved, -f2, 1.0)) / h    # half-width [intervals]
+    half = np.where(curved, np.minimum(np.floor(_PEAK_SHARE * width), _PEAK_WINDOW), _PEAK_WINDOW).astype(int)
+    sharp = np.flatnonzero(half < _PEAK_LEAST)
+    s_best = np.empty(n)
+    if sharp.size:
+        s_best[sharp] = refined_max(loop, values[sharp], lambda r, x: at(sharp[r], x))[0]
+    fitted = np.flatnonzero(half >= _PEAK_LEAST)
+    if fitted.size:
+        s_best[fitted] = _fitted_peak(loop, values[fitted], i[fitted], half[fitted], mirrored)
+    return s_best
+
+
+def _fitted_peak(loop: Loop, values, i, half, mirrored):
+    """:func:`_peak`'s least-squares fit, every row at once: a Chebyshev
+    series of degree :data:`_PEAK_DEGREE` in u = (j - i) / half over the
+    row's window |j - i| <= half (weights 1 inside, 0 outside, on the widest
+    window's offsets), its stationary point nearest u = 0 by Newton's
+    method.  Returns the arc lengths."""
+    from numpy.polynomial import chebyshev
+
+    h = loop.s[1] - loop.s[0]
+    offsets = np.arange(-_PEAK_WINDOW, _PEAK_WINDOW + 1)
+    u = offsets[None, :] / half[:, None]                        # (rows, offsets)
+    inside = (np.abs(u) <= 1.0).astype(float)
+    basis = chebyshev.chebvander(np.clip(u, -1.0, 1.0), _PEAK_DEGREE)         # (rows, offsets, degree + 1)
+    window = values[np.arange(values.shape[0])[:, None], mirrored(i[:, None] + offsets[None, :])]
+    normal = np.einsum("rj,rjp,rjq->rpq", inside, basis, basis)
+    rhs = np.einsum("rj,rjp,rj->rp", inside, basis, window)
+    c = np.linalg.solve(normal, rhs[..., None])[..., 0].T         # (degree + 1, rows): a series per row
+    d1, d2 = chebyshev.chebder(c, 1), chebyshev.chebder(c, 2)
+    x = np.zeros(values.shape[0])
+    for _ in range(8):                                            # Newton's steps from the grid's largest
+        slope, bend = chebyshev.chebval(x, d1, tensor=False), chebyshev.chebval(x, d2, tensor=False)
+        x = np.clip(x - np.where(bend < 0, slope / np.where(bend < 0, bend, -1.0), 0.0), -1.0, 1.0)
+    s = loop.s[i] + x * half * h
+    # past an end: the mirror image of the point (the same point of the loop's other half)
+    return np.where(s > loop.length, 2 * loop.length - s, np.abs(s))

@@ -101,6 +101,13 @@ class Reason(IntEnum):
     VERTICAL_LOOP_TOO_SLOW = 68
     VERTICAL_LOOP_OVERHANG = 69
     VERTICAL_LOOP_TOO_FAST = 70
+    MACHINE_LOOP_NO_FIT = 71
+    MACHINE_LOOP_HEAD_HITS = 72
+    MACHINE_LOOP_TOO_SLOW = 73
+    MACHINE_LOOP_OVERHANG = 74
+    MACHINE_LOOP_TOO_FAST = 75
+    MACHINE_LOOP_SLIPS = 76
+    MACHINE_LOOP_OVER_G = 77
 
 
 REASONS = {
@@ -197,6 +204,21 @@ REASONS = {
                                    "where it does not bend towards the centre (kappa <= 0; surfaces.md eq. S10)",
     Reason.VERTICAL_LOOP_TOO_FAST: "too fast where the wall bends away from the centre: the wheel leaves it there "
                                    "(surfaces.md eq. S10 needs N = v^2 kappa_C + g cos(beta) > 0 with kappa_C < 0)",
+    # a machine's vertical loop inside a closed profile (docs/machine.md eqs. M25-M30)
+    Reason.MACHINE_LOOP_NO_FIT: "the machine does not fit the loop's tightest bend (machine.md eq. M25 needs a "
+                                "kappa_max < 1 and h kappa_max < 1 and eq. M26 a positive effective inertia)",
+    Reason.MACHINE_LOOP_HEAD_HITS: "the rider's head reaches the wall somewhere round the loop (head_clearance_m "
+                                   "<= 0: the least round it; machine.md eq. M30)",
+    Reason.MACHINE_LOOP_TOO_SLOW: "top speed too low: the machine leaves the wall somewhere round the loop "
+                                  "(machine.md eq. M29 needs the normal force of eq. M28 > 0 all round)",
+    Reason.MACHINE_LOOP_OVERHANG: "no top speed holds the machine round the loop: the wall overhangs where it "
+                                  "does not bend towards the centre (machine.md eq. M29)",
+    Reason.MACHINE_LOOP_TOO_FAST: "too fast where the wall bends away from the centre: the machine leaves it there "
+                                  "(machine.md eq. M29)",
+    Reason.MACHINE_LOOP_SLIPS: "somewhere round the loop rolling needs more friction than given: mu_required "
+                               "(the most round the loop; machine.md eq. M30) exceeds mu_available",
+    Reason.MACHINE_LOOP_OVER_G: "the largest load round the loop load_max_g (machine.md eq. M30) exceeds the "
+                                "largest given (max_g)",
 }
 
 # Reasons never contain a comma, so CSV output stays splittable with awk -F,.

@@ -42,7 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR
-from deathsphere.physics.meridian_loop import Loop, bisect_zero, golden_max, turn
+from deathsphere.physics.meridian_loop import Loop, bisect_zero, golden_max, simpson, smooth_peak, turn
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
 __all__ = ["vertical_loop_on", "loop_points_on", "top_speed_on"]
@@ -127,87 +127,15 @@ def _refined_max(loop: Loop, req: _Request, values: np.ndarray, quantity):
     return s, {key: val[:, 0] for key, val in st.items()}, quantity(st, st["beta"])[:, 0]
 
 
-#: :func:`_peak`'s fit: a polynomial of this degree over at most
-#: :data:`_PEAK_WINDOW` grid intervals each side of the grid's largest value
-#: and :data:`_PEAK_SHARE` of the peak's half-width, at least
-#: :data:`_PEAK_LEAST` (a sharper peak is refined on the curve itself).
-_PEAK_DEGREE = 8
-_PEAK_WINDOW = 64
-_PEAK_SHARE = 0.6
-_PEAK_LEAST = 6
-
-
 def _peak(loop: Loop, req: _Request, values: np.ndarray, quantity) -> np.ndarray:
     """Per request, the arc length where ``values`` (rows x grid: the grid's
-    values of ``quantity(state, beta)``, a smooth function of s with one
-    peak in the half-loop or at its ends) peaks.
+    values of ``quantity(state, beta)``) peaks, the ripple of the spline's
+    curvature averaged out (:func:`~deathsphere.physics.meridian_loop.smooth_peak`)."""
+    def at(rows, x):
+        st = _at(loop, _subset(req, rows), x)
+        return quantity(st, st["beta"])
 
-    A spline's curvature ripples at the spacing of its samples (by ~2e-7 of
-    itself on a sphere sampled at 2001 points), and the argument of a flat
-    maximum moves by about the square root of that: a least-squares
-    polynomial (:data:`_PEAK_DEGREE`) over a window of the grid about the
-    grid's largest value averages the ripple out.  The window spans
-    :data:`_PEAK_SHARE` of the peak's half-width sqrt(f / |f''|) (from the
-    grid's second difference), at most :data:`_PEAK_WINDOW` intervals each
-    side; a peak too sharp for :data:`_PEAK_LEAST` intervals (a wheel near
-    its least top speed, its worst point near the top) is refined by golden
-    section on the curve itself, where the ripple matters less (f'' / f is
-    large).  The loop's mirror through the axis continues the grid past
-    either end (the top and the bottom are points of symmetry)."""
-    n, last = values.shape[0], loop.s.size - 1
-    h = loop.s[1] - loop.s[0]
-    i = np.argmax(values, axis=1)
-    rows = np.arange(n)
-
-    def mirrored(j):
-        j = np.abs(j)
-        return np.where(j > last, 2 * last - j, j)
-
-    f0 = values[rows, i]
-    f2 = (values[rows, mirrored(i + 1)] - 2 * f0 + values[rows, mirrored(i - 1)]) / h ** 2
-    curved = f2 < 0
-    width = np.sqrt(np.where(curved, f0, 1.0) / np.where(curved, -f2, 1.0)) / h    # half-width [intervals]
-    half = np.where(curved, np.minimum(np.floor(_PEAK_SHARE * width), _PEAK_WINDOW), _PEAK_WINDOW).astype(int)
-    sharp = half < _PEAK_LEAST
-    s_best = np.empty(n)
-    if sharp.any():
-        s_best[sharp] = _refined_max(loop, _subset(req, sharp), values[sharp], quantity)[0]
-    fitted = np.flatnonzero(~sharp)
-    if fitted.size:
-        s_best[fitted] = _fitted_peak(loop, values[fitted], i[fitted], half[fitted], mirrored)
-    return s_best
-
-
-def _fitted_peak(loop: Loop, values, i, half, mirrored):
-    """:func:`_peak`'s least-squares fit, every row at once: a Chebyshev
-    series of degree :data:`_PEAK_DEGREE` in u = (j - i) / half over the
-    row's window |j - i| <= half (weights 1 inside, 0 outside, on the widest
-    window's offsets), its stationary point nearest u = 0 by Newton's
-    method.  Returns the arc lengths."""
-    from numpy.polynomial import chebyshev
-
-    h = loop.s[1] - loop.s[0]
-    offsets = np.arange(-_PEAK_WINDOW, _PEAK_WINDOW + 1)
-    u = offsets[None, :] / half[:, None]                        # (rows, offsets)
-    inside = (np.abs(u) <= 1.0).astype(float)
-    basis = chebyshev.chebvander(np.clip(u, -1.0, 1.0), _PEAK_DEGREE)         # (rows, offsets, degree + 1)
-    window = values[np.arange(values.shape[0])[:, None], mirrored(i[:, None] + offsets[None, :])]
-    normal = np.einsum("rj,rjp,rjq->rpq", inside, basis, basis)
-    rhs = np.einsum("rj,rjp,rj->rp", inside, basis, window)
-    c = np.linalg.solve(normal, rhs[..., None])[..., 0].T         # (degree + 1, rows): a series per row
-    d1, d2 = chebyshev.chebder(c, 1), chebyshev.chebder(c, 2)
-    x = np.zeros(values.shape[0])
-    for _ in range(8):                                            # Newton's steps from the grid's largest
-        slope, bend = chebyshev.chebval(x, d1, tensor=False), chebyshev.chebval(x, d2, tensor=False)
-        x = np.clip(x - np.where(bend < 0, slope / np.where(bend < 0, bend, -1.0), 0.0), -1.0, 1.0)
-    s = loop.s[i] + x * half * h
-    # past an end: the mirror image of the point (the same point of the loop's other half)
-    return np.where(s > loop.length, 2 * loop.length - s, np.abs(s))
-
-
-def _simpson(y, h):
-    """Simpson's rule over the last axis (an even number of intervals of width h)."""
-    return h / 3.0 * (y[..., 0] + y[..., -1] + 4.0 * y[..., 1:-1:2].sum(axis=-1) + 2.0 * y[..., 2:-1:2].sum(axis=-1))
+    return smooth_peak(loop, values, at)
 
 
 def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
@@ -267,7 +195,7 @@ def vertical_loop_on(loop: Loop, v_top, a, k, g, mu=np.inf) -> dict:
     # the lap time (S12): twice the half's, by Simpson's rule on the grid
     speed = np.sqrt(np.where(contact[:, None], grid["v2"], 1.0))
     period = np.where(contact & (req.v_top[:, 0] > 0),
-                      2.0 * _simpson(grid["stretch"] / speed, loop.s[1] - loop.s[0]), np.nan)
+                      2.0 * simpson(grid["stretch"] / speed, loop.s[1] - loop.s[0]), np.nan)
     phi_slip = _slip(loop, req, grid, contact, mu)
     r_prime = _top_radius(top["kappa_c"], fits)
     v_min = np.where(fits, np.sqrt(np.maximum(bound, 0.0)), np.nan)

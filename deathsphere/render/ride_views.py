@@ -292,6 +292,36 @@ LOOP_COLUMNS = (
 )
 
 
+#: The one-loop view inside a closed profile (docs/machine.md eqs. M25-M30): the load is largest
+#: where the curve bends most, not always at the bottom; the lap time.
+LOOP_ON_FIELDS = (
+    ColumnSpec("v_top_m_s", "speed at the top", "m/s", **LOOP_SPEED),
+    ColumnSpec("v_top_min_m_s", "least top speed for contact", "m/s", source="eq. M29", **LOOP_SPEED),
+    ColumnSpec("v_bottom_m_s", "speed at the bottom", "m/s", source="eq. M26", **LOOP_SPEED),
+    ColumnSpec("load_max_g", "load, the most round the loop", "g", source="eq. M30"),
+    ColumnSpec("phi_load_max_deg", "where the load peaks, φ from the top", "deg", source="eq. M30"),
+    ColumnSpec("load_bottom_g", "load at the bottom", "g", source="eq. M28"),
+    ColumnSpec("load_top_g", "load at the top", "g", source="eq. M28"),
+    ColumnSpec("mu_required", "μ required (most round loop)", source="eq. M30"),
+    ColumnSpec("phi_worst_deg", "where μ peaks, φ from the top", "deg", source="eq. M30"),
+    ColumnSpec("period_s", "lap time", "s", source="eq. M30"),
+    ColumnSpec("head_clearance_m", "head clearance (the least round the loop)", "m", source="eq. M30", **LENGTH),
+    ColumnSpec("com_loop_radius_m", "radius of the CoM's path at the top", "m", **LENGTH),
+    ColumnSpec("omega_top_rad_s", "rate at the top", "rad/s", kind="rate"),
+    ColumnSpec("omega_bottom_rad_s", "rate at the bottom", "rad/s", kind="rate"),
+)
+#: Several loops inside a profile: the largest load round the loop in place of the bottom's.
+LOOP_ON_COLUMNS = tuple(ColumnSpec("load_max_g", "load\nmost", "g") if spec.key == "load_bottom_g" else spec
+                        for spec in LOOP_COLUMNS)
+
+
+def _loop_on_line(get: dict, mu: bool = True) -> str:
+    """The arena and the limits of a loop inside a profile (no sphere's radius names it)."""
+    friction = f"μ available {_limit(get['mu_available'])}, " if mu else ""
+    return (f"inside the {get['surface']} ({format_number(get['height_m'], 6)} m high), "
+            f"g = {format_number(get['g_m_s2'], 6)} m/s², {friction}max load {_limit(get['max_g'])} g")
+
+
 def _loop_title(get: dict, units: DisplayUnits) -> str:
     return (f"vertical loop of {get['machine']}, θ = {echo_number(get['theta_deg'])}°\n"
             f"{_setup_line(get, units=units)}")
@@ -301,14 +331,21 @@ def loop_view(table: Table, total_rows: int | None = None, title: str | None = N
               units: DisplayUnits = AS_TYPED) -> FitTable:
     """Vertical loops of a machine: one loop a quantity per line, several a
     line each; the speeds in the unit typed beside m/s (km/h when none was)."""
+    inside = "surface" in table.columns           # a profile's loop (docs/machine.md eqs. M25-M30)
     if len(table) == 1 and not (total_rows or 0) > 1:
         get = row_record(table)
-        fields = [spec for spec in LOOP_FIELDS if spec.key in LOOP_SPEEDS or not is_undefined(get[spec.key])]
+        specs = LOOP_ON_FIELDS if inside else LOOP_FIELDS
+        fields = [spec for spec in specs if spec.key in LOOP_SPEEDS or not is_undefined(get[spec.key])]
         rows = quantity_rows(get, fields, units)
-        return quantity_table(_loop_title(get, units), {**get, "stability": ""}, rows, LOOP_OK)
+        heading = (f"vertical loop of {get['machine']}, θ = {echo_number(get['theta_deg'])}°\n{_loop_on_line(get)}"
+                   if inside else _loop_title(get, units))
+        return quantity_table(heading, {**get, "stability": ""}, rows, LOOP_OK)
     head = first_rows(table, MAX_TERMINAL_ROWS)
-    return build_table(table, LOOP_COLUMNS, units=units, title=title, total_rows=total_rows,
-                       setup=_machine_line(head, units), notes=status_legend(head), extra=_with_mu_column("theta_deg"))
+    setup = (f"{row_record(head)['machine']}: {_loop_on_line(row_record(head), not _mu_varies(head))}" if inside
+             else _machine_line(head, units))
+    return build_table(table, LOOP_ON_COLUMNS if inside else LOOP_COLUMNS, units=units, title=title,
+                       total_rows=total_rows, setup=setup, notes=status_legend(head),
+                       extra=_with_mu_column("theta_deg"))
 
 
 def ride_view(table: Table, total_rows: int | None = None, title: str | None = None,
