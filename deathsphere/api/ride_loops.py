@@ -71,7 +71,8 @@ def ride_loop_on(ground, typed: dict, m, options, rides) -> Table:
     n = math.prod(shape)
     res = {k: np.asarray(v).reshape(-1) for k, v in
            machine_loop_on(loop, flat["v_top"], flat["g"], machine_arrays(m), flat["mu"], flat["max_g"]).items()}
-    live = np.isin(res["status"], (Status.OK, Status.SLIPS))
+    # a loop that keeps contact all round (as ride's orbits: ok, slips, over_g) is one to analyse
+    live = np.isin(res["status"], (Status.OK, Status.SLIPS, Status.OVER_G))
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),
             "theta_deg": flat["theta"], "r_m": np.full(n, np.nan), "g_m_s2": flat["g"], "v_top_m_s": flat["v_top"],
             "status": STATUS_LABELS[res["status"]], "reason": REASON_TEXT[res["reason"]],
