@@ -51,11 +51,13 @@ def _refuse_other_lanes(typed: dict) -> None:
 
 def ride_loop_on(ground, typed: dict, m, options, rides) -> Table:
     """The machine's vertical loops inside ``ground`` (a profile closed at
-    both ends; else refused naming ``surface``): ``typed`` the keywords as
+    both ends; else refused naming ``vertical``): ``typed`` the keywords as
     given (theta, v_top, g, mu, max_g), ``m`` the machine record,
     ``options`` the ride's options (the statuses kept; the rider's table is
     refused), ``rides`` the module of the globe's loop columns (appended
     to) and the row limit."""
+    # the ground first: on a drum or a cone the loop itself is what is refused (the option typed: vertical)
+    loop = loop_of(ground, "vertical")
     _refuse_other_lanes(typed)
     if options.summary:
         raise ParameterError("the rider's table (summary) is for horizontal orbits, not a vertical loop", "summary")
@@ -65,7 +67,6 @@ def ride_loop_on(ground, typed: dict, m, options, rides) -> Table:
     if off.size:
         raise ParameterError("a vertical loop on a profile runs in a meridian plane through the axis: theta must "
                              f"be 90 deg (got {shown_number(float(off.reshape(-1)[0]))})", "theta")
-    loop = loop_of(ground, "surface")
     refuse_large_grid(grid_shape(checked), command="ride --vertical", limit=rides.MAX_RIDE_ROWS)
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)

@@ -71,10 +71,8 @@ def loop_of(ground, named: str):
 
 def refuse_off_globe(surface=None, r=None, diameter=None, wall_angle=None, wall_height=None, profile=None):
     """Nothing on the globe; elsewhere a ParameterError naming ``surface``
-    (or the shape keyword that names a wall): why the globe's vertical loop
-    is not computed there (the single-contact machine's loop, whose
-    effective inertia changes with the curvature round a profile, is the
-    globe's only: docs/machine.md sec. 10)."""
+    (or the shape keyword that names a wall): why a vertical loop solved on
+    the sphere only is not computed there."""
     from deathsphere.requests.arena import arena, names_a_wall
 
     if not names_a_wall(surface, wall_angle, wall_height, profile):

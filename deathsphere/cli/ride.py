@@ -97,7 +97,8 @@ def _grid(where, how, mus):
               "it has status over_g.")
 @click.option("--vertical", is_flag=True, default=False,
               help="A vertical loop instead: --theta is its cone angle (90 = a great circle), --v-top the "
-                   "speed of the centre of mass at the top.")
+                   "speed of the centre of mass at the top; with --surface profile, inside a profile closed at "
+                   "both ends, --theta 90 only.")
 @param_option("v_top", multiple=True, help="Vertical loop: speed of the centre of mass at the top, >= 0.")
 @click.option("--summary", is_flag=True, default=False,
               help="The rider's table: per contact point (height or theta), how many speeds are ok, their "
@@ -148,6 +149,8 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
       deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h \\
           --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
+      deathsphere ride --vertical --surface profile --profile egg.csv \\
+          --theta 90 --v-top 20:40:5km/h
       deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 \\
           --output ride.parquet
       deathsphere ride --machine stunt125 --surface cylinder --diameter 32ft \\

@@ -61,7 +61,7 @@ def test_a_loop_off_the_meridian_plane_or_with_another_lane_is_refused(run, args
 ])
 def test_a_ground_that_does_not_close_over_the_rider_is_refused(run, shape, why):
     res = run("ride", "--vertical", *shape, "--theta", "90", "--v-top", "8")
-    assert res.exit_code == 2 and "--surface" in res.stderr and why in res.stderr
+    assert res.exit_code == 2 and "--vertical" in res.stderr and why in res.stderr
     assert len(res.stderr.strip().splitlines()) == 1 and "Traceback" not in res.stderr
 
 

@@ -37,8 +37,8 @@ NOT_ANALYSED_OFF_GLOBE = "not-analysed-off-globe"
 #: sentence).
 NOT_ANALYSED_PROFILE = "not-analysed-profile"
 #: A vertical loop off the globe (inside a closed profile): the loop is
-#: solved (docs/surfaces.md eqs. S9-S12), its Floquet stability is the
-#: globe's only.
+#: solved (the wheel's: docs/surfaces.md eqs. S9-S12; the machine's:
+#: docs/machine.md eqs. M25-M30), its Floquet stability is the globe's only.
 NOT_ANALYSED_LOOP_OFF_GLOBE = "not-analysed-loop"
 
 #: What each label means, in a sentence.
@@ -58,7 +58,8 @@ METHOD_TEXT = {
                            "parallel surface (docs/machine.md, \"On a profile\"); the same ride now fills the "
                            "stability columns"),
     NOT_ANALYSED_LOOP_OFF_GLOBE: ("not analysed: a vertical loop's Floquet multipliers are computed on the globe "
-                                  "only; inside a profile the loop itself is solved (docs/surfaces.md eqs. S9-S12)"),
+                                  "only; inside a profile the loop itself is solved (docs/surfaces.md eqs. S9-S12, a machine's "
+                                  "docs/machine.md eqs. M25-M30)"),
 }
 
 
