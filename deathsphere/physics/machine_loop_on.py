@@ -34,7 +34,7 @@ status, never a NaN leaked or a warning.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -74,6 +74,7 @@ def _inertia(rd: _Ride, kappa):
 
 
 def _ride(loop: Loop, v_top, g, machine: MachineArrays) -> _Ride:
+    """The requests as rows, the top's values computed once."""
     cols = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in
                                  (v_top, g, machine.mass, machine.com_height, machine.wheel_radius,
                                   machine.pitch_inertia, machine.spin_inertia)))
@@ -81,7 +82,7 @@ def _ride(loop: Loop, v_top, g, machine: MachineArrays) -> _Ride:
     _, z_t, beta_t, kappa_t, _ = loop.ground.meridian(np.array([loop.length]))
     stretch_t = 1.0 - h * kappa_t
     rd = _Ride(np.abs(v_top), g, m, h, a, ip, js, np.ones_like(v_top), stretch_t, z_t + h * np.cos(beta_t))
-    return _Ride(*tuple(getattr(rd, f.name) for f in fields(rd))[:7], _inertia(rd, kappa_t), stretch_t, rd.zg_top)
+    return replace(rd, m_top=_inertia(rd, kappa_t))
 
 
 def _state(rd: _Ride, z, beta, kappa, dkappa) -> dict:
@@ -135,6 +136,7 @@ _HUGE = np.finfo(float).max / 4
 
 
 def _finite(bound):
+    """M29's bound with +-inf clipped to +-:data:`_HUGE`."""
     return np.clip(bound, -_HUGE, _HUGE)
 
 
@@ -169,18 +171,14 @@ def _distance_inside(loop: Loop, q_rho, q_z):
 
 
 def head_clearance_on(loop: Loop, head) -> tuple:
-    """The least distance [m] inside the ground of the rider's head round
-    the loop (M30; beyond the paper): the head at ``head`` [m] along the
-    inward normal n from the contact, H = P + head n in the loop's plane,
-    its distance inside the loop's curve (the mirror half is the same).  Per value of ``head`` (any shape): (least
-    clearance, the loop's angle phi [rad] from the top where it is least)."""
+    """The least distance [m] inside the loop's curve of the rider's head
+    round the loop (M30; beyond the paper): the head at ``head`` [m] along
+    the inward normal n from the contact, H = P + head n in the loop's
+    plane (past the axis, the mirror of a point of the meridian's side).
+    Per value of ``head`` (any shape): (least clearance, the loop's angle
+    phi [rad] from the top where it is least)."""
     head = np.asarray(head, dtype=float)
     values, where = np.unique(head.reshape(-1), return_inverse=True)     # one machine: one row of the grid
-
-    def clearance(rows, s):
-        rho, z, beta, _, _ = loop.ground.meridian(np.asarray(s, dtype=float))
-        across = rho - values[rows, None] * np.sin(beta)
-        return -loop.ground.clearance(np.abs(across), z + values[rows, None] * np.cos(beta))
 
     rho, z, beta, _, _ = loop.ground.meridian(loop.s)
     q_rho = np.abs(rho[None, :] - values[:, None] * np.sin(beta)[None, :])     # past the axis: the mirror half
@@ -226,8 +224,8 @@ def machine_loop_on(loop: Loop, v_top, g, machine: MachineArrays, mu=np.inf, max
     rd = _ride(loop, v_top, g, arrays)
     _, z, beta, kappa, dkappa = loop.ground.meridian(loop.s)
     grid = _state(rd, z[None, :], beta[None, :], kappa[None, :], dkappa[None, :])
-    a_col = rd.a[:, 0]
-    fits = np.all(grid["fits"], axis=1) & (a_col * loop.kappa_max < 1.0 - SINGULAR) & (
+    # the grid's fit, and the tightest bend's between grid points (M25)
+    fits = np.all(grid["fits"], axis=1) & (rd.a[:, 0] * loop.kappa_max < 1.0 - SINGULAR) & (
         rd.h[:, 0] * loop.kappa_max < 1.0 - SINGULAR)
     live = fits[:, None]
 
@@ -241,8 +239,7 @@ def machine_loop_on(loop: Loop, v_top, g, machine: MachineArrays, mu=np.inf, max
         bound = np.where(bound >= _HUGE, np.inf, bound)
         # contact: N > 0 at its least round the loop (refined: the least need not be a grid point)
         _, least_neg = refine(-grid["normal"], lambda st: -st["normal"])
-    n_least = -least_neg
-    contact = fits & (n_least > 0) & (np.min(grid["sdot2"], axis=1) > 0)
+    contact = fits & (-least_neg > 0) & (np.min(grid["sdot2"], axis=1) > 0)
     held = contact[:, None]
     need = np.where(held, _worst(grid), 0.0)
 

@@ -9,7 +9,10 @@ request of a command (:mod:`deathsphere.physics.vertical_orbit_on`);
 :func:`turn` is the loop's angle phi = pi - beta from the top, the turn of
 its tangent.  :func:`golden_max` and :func:`bisect_zero` refine a point of
 it between the grid's, every request its own bracket, in one pass of
-numpy per step.
+numpy per step; :func:`refined_max` and :func:`smooth_peak` find a
+quantity's largest value and its peak per request, :func:`simpson` the
+lap's quadrature (the wheel's loop and the machine's,
+:mod:`deathsphere.physics.machine_loop_on`, share them).
 """
 
 from __future__ import annotations
@@ -18,8 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Loop", "loop_closure", "turn", "golden_max", "bisect_zero", "refined_max", "smooth_peak", "simpson", "AXIS_TURN_DEG",
-           "AXIS_TOL", "INTERVALS", "GOLDEN_STEPS", "BISECT_STEPS"]
+__all__ = ["Loop", "loop_closure", "turn", "golden_max", "bisect_zero", "refined_max", "smooth_peak", "simpson",
+           "AXIS_TURN_DEG", "AXIS_TOL", "INTERVALS", "GOLDEN_STEPS", "BISECT_STEPS"]
 
 #: Intervals of the loop's grid on its half (Simpson's rule on the lap time;
 #: the brackets of the refined points).  The lap time's quadrature error at

@@ -42,7 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from deathsphere.physics.geometry import SINGULAR
-from deathsphere.physics.meridian_loop import Loop, bisect_zero, golden_max, simpson, smooth_peak, turn
+from deathsphere.physics.meridian_loop import Loop, bisect_zero, refined_max, simpson, smooth_peak, turn
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
 
 __all__ = ["vertical_loop_on", "loop_points_on", "top_speed_on"]
@@ -104,25 +104,14 @@ def _subset(req: _Request, rows) -> _Request:
 
 def _refined_max(loop: Loop, req: _Request, values: np.ndarray, quantity):
     """Per request, where ``quantity(state, beta)`` (its grid values ``values``,
-    rows x grid) is largest: the grid's largest, refined by golden section on
-    the curve between its neighbours when it is not at an end (the top and
-    the bottom are points of the loop's mirror symmetry, where a smooth
-    quantity is stationary: there the grid's point is the answer).
+    rows x grid) is largest, refined on the curve between grid points
+    (:func:`~deathsphere.physics.meridian_loop.refined_max`).
     Returns (s, state there, value)."""
-    i = np.argmax(values, axis=1)
-    last = loop.s.size - 1
-    s = loop.s[i].astype(float)
-    inner = np.flatnonzero((i > 0) & (i < last))
-    if inner.size:
-        sub = _subset(req, inner)
+    def at(rows, x):
+        st = _at(loop, _subset(req, rows), x)
+        return quantity(st, st["beta"])
 
-        def f(x):
-            st = _at(loop, sub, x)
-            return quantity(st, st["beta"])
-
-        refined = golden_max(f, loop.s[i[inner] - 1][:, None], loop.s[i[inner] + 1][:, None])[:, 0]
-        better = f(refined[:, None])[:, 0] > values[inner, i[inner]]     # else the grid's point stays
-        s[inner] = np.where(better, refined, s[inner])
+    s, _ = refined_max(loop, values, at)
     st = _at(loop, req, s[:, None])
     return s, {key: val[:, 0] for key, val in st.items()}, quantity(st, st["beta"])[:, 0]
 
