@@ -33,6 +33,13 @@ __all__ = ["ride_loop_on", "ARENA_COLUMNS"]
 #: Appended to the globe's loop columns (``deathsphere.api.rides.LOOP_COLUMNS``).
 ARENA_COLUMNS = ("surface", "height_m", "period_s", "load_max_g", "phi_load_max_deg", "stability",
                  "stability_method")
+#: Loops per call of the physics: each is a row of arrays against the loop's
+#: grid of 1025 points, so a call's memory grows with it (512 loops: about
+#: 140 MB at the peak, 600 loops a second on the development machine).
+LOOPS_PER_CALL = 512
+#: The most loops one ``ride --vertical`` on a profile computes (about three
+#: minutes at the rate above); the globe's closed forms take far more.
+MAX_LOOP_ON_ROWS = 100_000
 #: What a lane of ``ride --vertical`` is not on a profile.
 NOT_A_LOOP = ("height", "alpha", "speed", "com_speed", "period", "turn_radius")
 
@@ -67,11 +74,18 @@ def ride_loop_on(ground, typed: dict, m, options, rides) -> Table:
     if off.size:
         raise ParameterError("a vertical loop on a profile runs in a meridian plane through the axis: theta must "
                              f"be 90 deg (got {shown_number(float(off.reshape(-1)[0]))})", "theta")
-    refuse_large_grid(grid_shape(checked), command="ride --vertical", limit=rides.MAX_RIDE_ROWS)
+    refuse_large_grid(grid_shape(checked), command="ride --vertical on a profile",
+                      limit=min(MAX_LOOP_ON_ROWS, rides.MAX_RIDE_ROWS),
+                      instead="give fewer top speeds (a loop on a profile is integrated round its curve, some "
+                              "hundreds a second)")
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
-    res = {k: np.asarray(v).reshape(-1) for k, v in
-           machine_loop_on(loop, flat["v_top"], flat["g"], machine_arrays(m), flat["mu"], flat["max_g"]).items()}
+    arrays = machine_arrays(m)
+    # a few hundred loops a call: the memory stays flat (the arrays are loops x the loop's grid)
+    pieces = [machine_loop_on(loop, *(flat[k][lo:lo + LOOPS_PER_CALL] for k in ("v_top", "g")), arrays,
+                              *(flat[k][lo:lo + LOOPS_PER_CALL] for k in ("mu", "max_g")))
+              for lo in range(0, n, LOOPS_PER_CALL)] or [machine_loop_on(loop, np.zeros(0), np.zeros(0), arrays)]
+    res = {k: np.concatenate([np.asarray(p[k]).reshape(-1) for p in pieces]) for k in pieces[0]}
     # a loop that keeps contact all round (as ride's orbits: ok, slips, over_g) is one to analyse
     live = np.isin(res["status"], (Status.OK, Status.SLIPS, Status.OVER_G))
     cols = {"input_row": np.arange(n) + 1, "machine": np.full(n, m.name, dtype=object),

@@ -70,3 +70,22 @@ def test_a_top_speed_without_vertical_is_refused_naming_it(run):
     assert res.exit_code == 2 and "--vertical" in res.stderr and "Traceback" not in res.stderr
     with pytest.raises(deathsphere.ParameterError, match="v_top"):
         deathsphere.ride(height=1.0, v_top=8.0, surface="profile", profile=str(ELLIPSOID))
+
+
+def test_loops_computed_a_few_hundred_at_a_time_are_those_computed_at_once(monkeypatch):
+    from deathsphere.api import ride_loops
+
+    v_top = np.linspace(5.0, 15.0, 7)
+    whole = deathsphere.ride(90, vertical=True, v_top=v_top, surface="profile", profile=str(ELLIPSOID), mu=0.5)
+    monkeypatch.setattr(ride_loops, "LOOPS_PER_CALL", 3)
+    pieces = deathsphere.ride(90, vertical=True, v_top=v_top, surface="profile", profile=str(ELLIPSOID), mu=0.5)
+    assert len(set(whole["status"].tolist())) > 1                        # rows of more than one kind
+    for name in whole.columns:
+        a, b = np.asarray(whole[name]), np.asarray(pieces[name])
+        same = np.array_equal(a, b, equal_nan=True) if a.dtype.kind == "f" else a.tolist() == b.tolist()
+        assert same, name
+
+
+def test_too_many_loops_are_refused_in_one_line(run):
+    res = run(*LOOP, "--theta", "90", "--v-top", "0:200:0.001")
+    assert res.exit_code == 2 and "fewer top speeds" in res.stderr and "Traceback" not in res.stderr
