@@ -35,10 +35,11 @@ ARENA_COLUMNS = ("surface", "height_m", "period_s", "load_max_g", "phi_load_max_
                  "stability_method")
 #: Loops per call of the physics: each is a row of arrays against the loop's
 #: grid of 1025 points, so a call's memory grows with it (512 loops: about
-#: 140 MB at the peak, 600 loops a second on the development machine).
+#: 140 MB at the peak; about 2,000 loops a second on one core,
+#: benchmarks/bench_machine_loop_on.py).
 LOOPS_PER_CALL = 512
-#: The most loops one ``ride --vertical`` on a profile computes (about three
-#: minutes at the rate above); the globe's closed forms take far more.
+#: The most loops one ``ride --vertical`` on a profile computes (about a
+#: minute at the rate above); the globe's closed forms take far more.
 MAX_LOOP_ON_ROWS = 100_000
 #: What a lane of ``ride --vertical`` is not on a profile.
 NOT_A_LOOP = ("height", "alpha", "speed", "com_speed", "period", "turn_radius")
@@ -76,8 +77,8 @@ def ride_loop_on(ground, typed: dict, m, options, rides) -> Table:
                              f"be 90 deg (got {shown_number(float(off.reshape(-1)[0]))})", "theta")
     refuse_large_grid(grid_shape(checked), command="ride --vertical on a profile",
                       limit=min(MAX_LOOP_ON_ROWS, rides.MAX_RIDE_ROWS),
-                      instead="give fewer top speeds (a loop on a profile is integrated round its curve, some "
-                              "hundreds a second)")
+                      instead="give fewer top speeds (a loop on a profile is solved round its curve, about "
+                              "2,000 a second)")
     shape, flat = broadcast_flat(checked)
     n = math.prod(shape)
     arrays = machine_arrays(m)
