@@ -21,7 +21,9 @@ coordinate s says where it is and energy is exact:
     N/m = (1 - h kappa) kappa sdot^2 + g cos(beta)
     F/m = (1 - h kappa) sddot - h kappa' sdot^2 + g sin(beta)             (M28)
 
-and contact all round needs N > 0 (M29: N is linear in v_top^2); the
+(kappa' the central difference of kappa on the loop's grid,
+:func:`curvature_slope`: a cubic spline's own jumps at every sample) and
+contact all round needs N > 0 (M29: N is linear in v_top^2); the
 friction needed |F|/N, the load |a_G - g|/g, the lap time and the head's
 clearance (M30).  Both halves of the loop are mirror images, so every
 quantity is taken on the meridian (the other half's friction changes sign).
@@ -43,7 +45,7 @@ from deathsphere.physics.machine_arrays import MachineArrays
 from deathsphere.physics.meridian_loop import Loop, refined_max, simpson, smooth_peak, turn
 from deathsphere.physics.status import Reason, Status, first_failure
 
-__all__ = ["machine_loop_on", "head_clearance_on"]
+__all__ = ["machine_loop_on", "head_clearance_on", "curvature_slope"]
 
 
 @dataclass(frozen=True)
@@ -109,10 +111,26 @@ def _state(rd: _Ride, z, beta, kappa, dkappa) -> dict:
             "rest": stretch * kappa * gained + rd.g * np.cos(beta), "beta": beta, "kappa": kappa}
 
 
-def _at(loop: Loop, rd: _Ride, s) -> dict:
-    """:func:`_state` at arc lengths s (n, m) off the grid."""
-    _, z, beta, kappa, dkappa = loop.ground.meridian(np.asarray(s, dtype=float))
-    return _state(rd, z, beta, kappa, dkappa)
+def curvature_slope(loop: Loop) -> np.ndarray:
+    """kappa' [1/m^2] on the loop's grid as M27-M28 take it (beyond the
+    paper: docs/machine.md, "Inside a closed profile"): the central
+    difference of the curvature over the grid's step, the mirror through
+    the axis continuing it past either end (kappa' = 0 there).  A cubic
+    spline's own kappa' jumps at every sample (its third derivative is
+    piecewise constant: on a sphere sampled at 2001 points by 8e-4 / r^2,
+    a sawtooth the grid aliases); the difference is its mean over two grid
+    steps, which keeps the curvature's change on every longer scale."""
+    k = loop.kappa
+    step = loop.s[1] - loop.s[0]
+    mirrored = np.concatenate(([k[1]], k, [k[-2]]))
+    return (mirrored[2:] - mirrored[:-2]) / (2.0 * step)
+
+
+def _at(loop: Loop, rd: _Ride, s, slope) -> dict:
+    """:func:`_state` at arc lengths s (n, m) off the grid, kappa' interpolated from ``slope`` on the grid."""
+    s = np.asarray(s, dtype=float)
+    _, z, beta, kappa, _ = loop.ground.meridian(s)
+    return _state(rd, z, beta, kappa, np.interp(s, loop.s, slope))
 
 
 def _top_speed_bound(st: dict):
@@ -222,8 +240,9 @@ def machine_loop_on(loop: Loop, v_top, g, machine: MachineArrays, mu=np.inf, max
     v_top, g, mu, max_g = (np.broadcast_to(x, shape).reshape(-1) for x in (v_top, g, mu, max_g))
     arrays = machine.map(lambda x: np.broadcast_to(np.asarray(x, dtype=float), shape).reshape(-1))
     rd = _ride(loop, v_top, g, arrays)
-    _, z, beta, kappa, dkappa = loop.ground.meridian(loop.s)
-    grid = _state(rd, z[None, :], beta[None, :], kappa[None, :], dkappa[None, :])
+    _, z, beta, kappa, _ = loop.ground.meridian(loop.s)
+    slope = curvature_slope(loop)
+    grid = _state(rd, z[None, :], beta[None, :], kappa[None, :], slope[None, :])
     # the grid's fit, and the tightest bend's between grid points (M25)
     fits = np.all(grid["fits"], axis=1) & (rd.a[:, 0] * loop.kappa_max < 1.0 - SINGULAR) & (
         rd.h[:, 0] * loop.kappa_max < 1.0 - SINGULAR)
@@ -231,7 +250,7 @@ def machine_loop_on(loop: Loop, v_top, g, machine: MachineArrays, mu=np.inf, max
 
     def refine(values, quantity):
         return refined_max(loop, np.where(live, values, 0.0),
-                           lambda rows, s: quantity(_at(loop, rd.rows(rows), s)))
+                           lambda rows, s: quantity(_at(loop, rd.rows(rows), s, slope)))
 
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # the least top speed: the largest bound round the loop (the top's on a circle, g r_G)
@@ -244,14 +263,14 @@ def machine_loop_on(loop: Loop, v_top, g, machine: MachineArrays, mu=np.inf, max
     need = np.where(held, _worst(grid), 0.0)
 
     def need_at(rows, s):
-        return _worst(_at(loop, rd.rows(rows), s))
+        return _worst(_at(loop, rd.rows(rows), s, slope))
 
-    # the most friction needed: the largest on the curve; where: the peak with the spline's ripple averaged
-    # out (its kappa' jumps at the samples, and a flat maximum's argument moves by far more than its value)
+    # the most friction needed: the largest on the curve; where: the least-squares peak (a flat maximum's
+    # argument moves by far more than its value with the curvature's ripple)
     _, mu_max = refined_max(loop, need, need_at)
     s_w = smooth_peak(loop, need, need_at)
     s_l, load_max = refined_max(loop, np.where(held, grid["load"], 0.0),
-                                lambda rows, s: _at(loop, rd.rows(rows), s)["load"])
+                                lambda rows, s: _at(loop, rd.rows(rows), s, slope)["load"])
     clearance, _ = head_clearance_on(loop, arrays.head_height)
     speed = np.sqrt(np.where(held, grid["sdot2"], 1.0))
     period = np.where(contact & (v_top > 0), 2.0 * simpson(1.0 / speed, loop.s[1] - loop.s[0]), np.nan)

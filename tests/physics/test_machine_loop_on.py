@@ -42,13 +42,11 @@ def ellipse_loop():
 #: 2001 points (relative, or absolute below 1): the speeds, rates, loads and
 #: radii 1e-7 to 4.7e-6 (the spline's curvature is the sphere's to 1.7e-6
 #: at the axis, where the loop's top and bottom are); the friction needed
-#: 2.2e-4, its worst point 0.034 rad: they take the curvature's derivative
-#: (eq. M27-M28), which a cubic spline of samples jumps at every sample
-#: (by 8e-4 / r^2 here; 4 times less at 8001 samples, where mu_required
-#: agrees to 6.7e-5 and phi_worst to 4.5e-3 rad), and the worst point is a
-#: flat maximum.
+#: 4.6e-6 and its worst point, on a flat maximum, 1.4e-4 rad, with kappa'
+#: the grid's central difference (with the spline's own kappa', which jumps
+#: at every sample, they were 6e-3 and 0.034 rad).
 AGREE = 1e-5
-LOOSER = {"mu_required": 5e-4, "phi_worst": 0.06}
+LOOSER = {"mu_required": 2e-5, "phi_worst": 5e-4}
 
 
 @pytest.mark.parametrize("name", sorted(PRESETS))
@@ -184,12 +182,12 @@ def test_on_an_ellipsoid_the_lagrangian_integrated_gives_the_lap_the_friction_an
     push, along = np.sum(force * normal, axis=0), np.sum(force * tangent, axis=0)
     assert np.all(push > 0)
     need = np.abs(along) / push
-    # the spline's kappa' jumps at each of the 801 samples (eq. M28): measured 2.3e-3, the ripple's crest
-    np.testing.assert_allclose(got["mu_required"], need.max(), rtol=5e-3)
-    np.testing.assert_allclose(got["load_max"], np.hypot(push, along).max() / G, rtol=1e-4)
+    # measured 3.6e-5 and 1.9e-6 (801 samples; the reference's largest of 4001 points in time)
+    np.testing.assert_allclose(got["mu_required"], need.max(), rtol=2e-4)
+    np.testing.assert_allclose(got["load_max"], np.hypot(push, along).max() / G, rtol=2e-5)
     i = np.argmax(need)
     phi = np.arctan2(B_AXIS * np.sin(u[i]), -A_AXIS * np.cos(u[i]))            # the tangent's turn from the top
-    np.testing.assert_allclose(got["phi_worst"], phi, atol=0.02)
+    np.testing.assert_allclose(got["phi_worst"], phi, atol=5e-3)     # measured 1.7e-3: the reference's spacing
 
 
 def test_a_machine_taller_than_the_tightest_bend_does_not_fit_and_a_low_roof_hits_the_head(ellipse_loop):
