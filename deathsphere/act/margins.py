@@ -29,6 +29,9 @@ GRID = np.geomspace(1 / 16, 16, 145)
 #: Each edge is found to this, relative to itself: the bracket (GRID's
 #: ratio, about 1.04) halved until it is half this narrow (about 30 steps).
 RTOL = 1e-10
+#: A two-wheeler's edges are found to this (each step seeks its steady
+#: turns anew, some 0.15 s a lane: about 17 steps, not 30).
+TWO_WHEELER_RTOL = 1e-6
 #: The most bisection steps (a bracket of the whole GRID halved to below RTOL).
 MAX_STEPS = 64
 
@@ -37,6 +40,8 @@ def speeds_hold(lanes, globe, speeds) -> np.ndarray:
     """bool (n, k): lane i stays feasible at speeds[i, j] [m/s] (module
     docstring); the lanes share one kind: one physics call."""
     speeds = np.asarray(speeds, dtype=float)
+    if lanes[0].body is not None:
+        return np.stack([_two_wheeler_holds(lane, globe, row) for lane, row in zip(lanes, speeds)])
     machines = machine_arrays([lane.machine for lane in lanes]).expand(-1)        # (n, 1): one per lane
     ground = globe.ground
     if lanes[0].kind == "vertical":
@@ -53,7 +58,21 @@ def speeds_hold(lanes, globe, speeds) -> np.ndarray:
     return ok.reshape(speeds.shape)
 
 
-def _bands(lanes, globe, planned) -> np.ndarray:
+def _two_wheeler_holds(lane, globe, speeds) -> np.ndarray:
+    """bool (k,): the two-wheeler's lane has a steady turn with status ok at
+    each rear contact speed [m/s] (ride's statuses, docs/two-wheeler.md sec. 8)."""
+    from deathsphere.physics.two_wheeler import steady
+
+    t, ground = lane.machine, globe.ground
+    at = np.full(speeds.size, lane.theta if is_globe(ground) else lane.height)
+    out = steady.turns_for_speed(at, speeds, t.parameters(), ground, globe.g, t.head)
+    codes, _ = steady.turn_status(np.isfinite(out["lean"]), out["head_clearance"], out["contact"] == 1,
+                                  out["mu_required_rear"], out["mu_required_front"], out["load_g"], globe.mu,
+                                  globe.max_g)
+    return (codes == Status.OK).any(axis=1)
+
+
+def _bands(lanes, globe, planned, rtol: float = RTOL) -> np.ndarray:
     """(n, 2) [m/s] low and high edges for lanes of one kind."""
     planned = np.asarray(planned, dtype=float)
     grid = planned[:, None] * GRID
@@ -74,7 +93,7 @@ def _bands(lanes, globe, planned) -> np.ndarray:
     found = np.isfinite(inside)
     for _ in range(MAX_STEPS):
         # half the tolerance of the edge itself: the edge lies between inside and outside
-        open_ = found & (np.abs(outside - inside) > 0.5 * RTOL * np.abs(inside))
+        open_ = found & (np.abs(outside - inside) > 0.5 * rtol * np.abs(inside))
         if not open_.any():
             break
         mid = np.where(open_, 0.5 * (inside + outside), planned[:, None])
@@ -94,7 +113,7 @@ def speed_bands(lanes, globe, planned) -> np.ndarray:
     out = np.full((len(lanes), 2), np.nan)
     groups = {}
     for i, lane in enumerate(lanes):
-        groups.setdefault(lane.kind, []).append(i)
-    for idx in groups.values():
-        out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx])
+        groups.setdefault((lane.kind, lane.body is not None), []).append(i)
+    for (_, two_wheeler), idx in groups.items():
+        out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx], TWO_WHEELER_RTOL if two_wheeler else RTOL)
     return out
