@@ -18,7 +18,9 @@ contact -> head, rear contact -> front contact, the line through both
 wheels' centres from the back of the rear rim to the front of the front
 rim, and the wheels' tops (each wheel's rim point opposite its contact).
 Every rim point lies within 0.71 of its wheel's radius of one of the last
-three.  Each point of the configuration turns about the vertical at the
+three with the steer straight, within 0.83 at the presets' steady turns
+(the front rim steered out of the line's plane; tests/show/test_two_wheeler_riders.py):
+a width of 1.7 wheel radii or more holds both wheels.  Each point of the configuration turns about the vertical at the
 lane's rate, so it moves at its distance from the axis times the rate: the
 greatest such distance over the segments' ends (a segment's points are
 their convex combinations) is the lane's ``reach``, which bounds how fast
