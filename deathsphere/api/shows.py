@@ -93,7 +93,10 @@ class ShowResult:
 
     def positions(self, t) -> dict:
         """Each rider's 'contact', 'head' and 'com' points (3, n) [m, the
-        globe's frame] at the times t (n,) [s], by name; ParameterError for
+        globe's frame] at the times t (n,) [s], by name (a two-wheeler's
+        'contact' its rear contact, and the other ends of its envelope's
+        segments: 'front_contact', 'rear_back', 'front_front', 'rear_top',
+        'front_top'); ParameterError for
         a time that is not a finite number."""
         try:
             t = np.asarray(t, dtype=float).reshape(-1)
@@ -102,7 +105,8 @@ class ShowResult:
         if not np.isfinite(t).all():
             bad = t[~np.isfinite(t)][0]
             raise ParameterError(f"t must be finite times in seconds (got {float(bad)!r})", "t")
-        return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
+        return {lane.name: {k: v for k, v in lane.kinematics(t).items()
+                            if k in ("contact", "head", "com") or any(k in pair for pair in lane.segments)}
                 for lane in self.lanes}
 
     def fall(self, rider: str, t: float, speed_fraction: float = 0.5) -> Table:

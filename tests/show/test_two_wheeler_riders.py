@@ -212,3 +212,17 @@ def test_a_two_wheelers_fall_is_refused_naming_the_rider(act):
     fall = act.fall("Cal", 0.5, 0.0)
     assert fall[0]["victim"] == "Ana"
     assert math.isfinite(fall[0]["min_clearance_m"])
+
+
+def test_the_3d_view_draws_a_two_wheeler_as_its_segments(act):
+    from deathsphere.viewer.show_scene import act_scene
+
+    scene = act_scene(act)
+    ana, cal = scene.tracks
+    drawn = [item["points"] for item in ana.draw if item["kind"] == "capsule"]
+    assert drawn == [list(ends) for ends in PROMISED]
+    assert [item["points"] for item in cal.draw if item["kind"] == "capsule"] == [["contact", "head"]]
+    # the front wheel's front is where the show puts it
+    t = ana.t[:3]
+    want = act.lanes[0].at_angle(act.lanes[0].phase + act.lanes[0].rate * t)["front_front"]
+    assert np.allclose(ana.points["front_front"][:, :3], want, atol=1e-12)
