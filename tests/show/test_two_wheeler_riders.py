@@ -27,8 +27,9 @@ def _two_wheeler(name="Ana", height="5ft", speed="40km/h", **extra):
 
 
 def _machine(name="Cal", height="2.6m", speed="30km/h", **extra):
-    return {"name": name, "machine": "stunt125", "width": "0.6m", "lane": "horizontal", "height": height,
-            "speed": speed, **extra}
+    rider = {"name": name, "machine": "stunt125", "width": "0.6m", "lane": "horizontal", "height": height,
+             "speed": speed, **extra}
+    return {k: v for k, v in rider.items() if v is not None}
 
 
 def _plan(*riders, **globe):
@@ -226,3 +227,26 @@ def test_the_3d_view_draws_a_two_wheeler_as_its_segments(act):
     t = ana.t[:3]
     want = act.lanes[0].at_angle(act.lanes[0].phase + act.lanes[0].rate * t)["front_front"]
     assert np.allclose(ana.points["front_front"][:, :3], want, atol=1e-12)
+
+
+def test_a_two_wheelers_parameter_file_rides_and_a_bad_one_is_refused_naming_machine(tmp_path):
+    from deathsphere.records.two_wheeler_files import two_wheeler_text
+
+    good = tmp_path / "mine.toml"
+    good.write_text(two_wheeler_text("stunt125-steer"))
+    plan = tmp_path / "act.toml"
+    plan.write_text(f'[globe]\nradius = {R}\nmu = 0.9\nmax_g = 8\n\n[[rider]]\nname = "Ana"\nmachine = "mine.toml"\n'
+                    'width = "0.6m"\nlane = "horizontal"\nheight = "5ft"\nspeed = "40km/h"\n')
+    lane, = _lanes(plan)
+    preset, = _lanes(_plan(_two_wheeler()))
+    assert lane.orbit["alpha_deg"] == pytest.approx(preset.orbit["alpha_deg"], rel=1e-12)
+    good.write_text(two_wheeler_text("stunt125-steer").replace("\nw = ", "\nw = -1\nold_w = "))
+    with pytest.raises(ParameterError) as err:
+        _lanes(plan)
+    assert str(err.value).startswith("rider 'Ana': machine: machine file mine.toml")
+    assert "\n" not in str(err.value)
+
+
+def test_a_machine_may_ride_a_two_wheelers_lap():
+    ana, dee = _lanes(_plan(_two_wheeler(), _machine(name="Dee", speed=None, same_lap_as="Ana", phase=180)))
+    assert dee.period_s == pytest.approx(ana.period_s, rel=1e-9)
