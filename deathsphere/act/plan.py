@@ -1,5 +1,5 @@
 """The plan of a show (docs/show.md): a globe (or an ``[arena]``: the wall
-of death's drum, the well of death's cone, sec. 11) and its riders, read
+of death's drum, the well of death's cone, sec. 11; a profile, sec. 12) and its riders, read
 from a TOML file or a dict and checked once, before any work.  Every fault is one
 line naming the rider (or the globe) and the key; every dimensional value
 takes the command line's unit suffixes ("16ft", "32km/h")."""
@@ -28,13 +28,13 @@ from deathsphere.requests.values import typed_value, table_reader
 
 #: The keys of the ``[globe]`` table.
 GLOBE_KEYS = ("diameter", "radius", "mu", "max_g", "min_clearance", "g", "duration")
-#: The keys of the ``[arena]`` table: the wall of death's drum or the well
-#: of death's cone (requests/arena.py builds the ground), and the run's keys
-#: as in ``[globe]``.
-ARENA_KEYS = ("surface", "diameter", "radius", "wall_angle", "wall_height", "mu", "max_g", "min_clearance", "g",
-              "duration")
+#: The keys of the ``[arena]`` table: the wall of death's drum, the well
+#: of death's cone or a profile's surface of revolution (requests/arena.py
+#: builds the ground), and the run's keys as in ``[globe]``.
+ARENA_KEYS = ("surface", "diameter", "radius", "wall_angle", "wall_height", "profile", "mu", "max_g",
+              "min_clearance", "g", "duration")
 #: The surfaces a show's ``[arena]`` takes (flat ground has no wall to ride).
-ARENA_SURFACES = ("sphere", "cylinder", "cone")
+ARENA_SURFACES = ("sphere", "cylinder", "cone", "profile")
 #: The keys of a ``[[rider]]`` table (``width`` overrides the machine's).
 RIDER_KEYS = ("name", "machine", "lane", "height", "theta", "speed", "com_speed", "period", "same_lap_as",
               "direction", "phase", "azimuth", "v_top", "width")
@@ -46,6 +46,9 @@ NOT_IN_NAMES = ",@\n\r"
 #: The crew's rule when the plan gives none [m] (the spacing quoted for an
 #: eight-rider act is 10-15 cm).
 DEFAULT_MIN_CLEARANCE = 0.15
+#: A contact closer than this to the axis [m] is on it (a profile's
+#: spline meets the axis to about this, not to the bit).
+ON_AXIS_M = 1e-6
 #: The globe's keys a plan may leave out.
 GLOBE_DEFAULTS = {"g": G, "mu": math.inf, "max_g": math.inf}
 
@@ -232,22 +235,43 @@ def _globe(raw) -> Globe:
     return Globe(run=run, min_clearance=clear)
 
 
-def _arena(raw) -> Globe:
+def _profile(keys: Keys, raw, base_dir: pathlib.Path | None):
+    """An ``[arena]``'s ``profile``: a Profile as it is (a dict plan from the
+    API), or a CSV file's path, relative to the plan file's directory when
+    the plan is a file (as a machine file's), else to the working directory."""
+    from deathsphere.physics.ground import Profile
+
+    if isinstance(raw, Profile):
+        return raw
+    if not isinstance(raw, (str, pathlib.Path)):
+        keys.fail("profile", f"must be a profile CSV file's path (rho_m,z_m rows) or a Profile (got {raw!r})")
+    path = pathlib.Path(raw)
+    return base_dir / path if base_dir is not None and not path.is_absolute() else path
+
+
+def _arena(raw, base_dir: pathlib.Path | None = None) -> Globe:
     """An ``[arena]`` table: the ground from its ``surface`` and shape
     through :func:`deathsphere.requests.arena.arena` (a refusal names the
-    plan's key: ``arena: wall_angle: ...``), the run's keys as ``[globe]``'s."""
+    plan's key: ``arena: wall_angle: ...``; a profile file's path is read
+    from ``base_dir``, the plan file's directory), the run's keys as
+    ``[globe]``'s."""
     keys = Keys("arena")
     if not isinstance(raw, dict):
-        keys.fail(None, "must be a table (surface, diameter, wall_height; a cone's wall_angle)")
+        keys.fail(None, "must be a table (surface, diameter, wall_height; a cone's wall_angle; a profile's profile)")
     _unknown(keys.where, raw, ARENA_KEYS)
     surface = raw.get("surface")
     if surface is None:
         keys.fail("surface", f"the arena needs its surface ({' | '.join(ARENA_SURFACES)})")
+    if isinstance(surface, str) and surface.strip().lower() == "profile" and "profile" not in raw:
+        keys.fail("profile", "a profile arena needs its meridian: profile = \"FILE.csv\" (rho_m,z_m rows, the "
+                             "path relative to the plan's directory)")
     if not isinstance(surface, str) or surface.strip().lower() not in ARENA_SURFACES:
         keys.fail("surface", f"must be one of {' | '.join(ARENA_SURFACES)} (got {surface!r}): a show's riders "
                              "ride up a wall")
     typed = {"radius": "r"}
     shape = {typed.get(k, k): raw[k] for k in ("diameter", "radius", "wall_angle", "wall_height") if k in raw}
+    if "profile" in raw:
+        shape["profile"] = _profile(keys, raw["profile"], base_dir)
     try:
         ground = arena(surface, **shape)
     except ParameterError as exc:
@@ -269,11 +293,20 @@ def _on_a_wall(keys: Keys, raw: dict, ground) -> None:
     """A rider on a drum or a cone: a horizontal lane by its height (theta
     and a vertical loop are the globe's), no higher than the wall's top."""
     if raw.get("lane") == "vertical":
-        keys.fail("lane", f"a vertical loop is the globe's: not on a {ground.name} (a loop over the top needs a "
-                          "roof; ride horizontal lanes by their height)")
+        roof = "a show's loops ride the globe's great circles" if _closed_on_top(ground) else \
+            "a loop over the top needs a roof"
+        keys.fail("lane", f"a vertical loop is the globe's: not on a {ground.name} ({roof}; ride horizontal lanes "
+                          "by their height)")
     if "theta" in raw:
         keys.fail("theta", f"a lane on a {ground.name} is given by its height above the floor (theta is the "
                            "globe's polar angle)")
+
+
+def _closed_on_top(ground) -> bool:
+    """True for a wall whose meridian ends on the axis at its top (a
+    profile's dome): it has a roof, though a show's loops are the globe's."""
+    top = float(ground.highest_lane)
+    return math.isfinite(top) and not float(ground.contact(top)[0]) > ON_AXIS_M
 
 
 def _machine(where: str, raw, base_dir: pathlib.Path | None) -> Machine:
@@ -333,6 +366,8 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     if not globe.is_globe:
         _on_a_wall(keys, raw, globe.ground)
     rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground, plan=True)
+    if not globe.is_globe:
+        _off_the_axis(keys, rider, globe.ground)
     return Rider(request=rider, ground=globe.ground)
 
 
@@ -355,7 +390,19 @@ def _two_wheeler_rider(keys: Keys, raw: dict, machine: TwoWheeler, globe: Globe)
     if not globe.is_globe:
         _on_a_wall(keys, raw, globe.ground)
     rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground, plan=True)
+    if not globe.is_globe:
+        _off_the_axis(keys, rider, globe.ground)
     return Rider(request=rider, ground=globe.ground, width_m=width)
+
+
+def _off_the_axis(keys: Keys, rider, ground) -> None:
+    """A lane by its height on a wall whose meridian meets the axis there (a
+    profile closed at the bottom or the top): the contact would not go
+    round, so no speed or lap holds it; refused naming ``height``."""
+    at = getattr(rider.lane, "at", None)
+    if isinstance(at, requests.Height) and not float(ground.contact(float(at.height))[0]) > ON_AXIS_M:
+        keys.fail("height", f"the {ground.name}'s meridian meets its axis at this height (the contact would not "
+                            "go round): a lane is a height where the wall is away from the axis")
 
 
 def _plain(raw):
@@ -373,8 +420,9 @@ def _plain(raw):
 def read_plan(plan) -> Plan:
     """A checked :class:`Plan` from a path to a TOML file (str or
     pathlib.Path) or a dict of the same tables ({"globe": {...}, "rider":
-    [{...}, ...]}, or {"arena": {...}, ...}: a drum or a cone, whose riders
-    ride horizontal lanes by their height).  Raises ParameterError, one line naming the rider (or
+    [{...}, ...]}, or {"arena": {...}, ...}: a drum, a cone or a profile,
+    whose riders ride horizontal lanes by their height; a profile file's
+    path is relative to the plan file's directory).  Raises ParameterError, one line naming the rider (or
     the globe) and the key: an unknown key, an unknown machine, a rider
     outside the globe, duplicate names, no riders, a value outside its
     range or of the wrong unit.  (A vertical lane that is not feasible at
@@ -400,7 +448,7 @@ def read_plan(plan) -> Plan:
     _unknown("plan", plan, ("globe", "arena", "rider"))
     if "globe" in plan and "arena" in plan:
         _fail("plan", "arena", "give [globe] (the globe of death) or [arena] (a drum or a cone), not both")
-    globe = _arena(plan["arena"]) if "arena" in plan else _globe(plan.get("globe"))
+    globe = _arena(plan["arena"], base_dir) if "arena" in plan else _globe(plan.get("globe"))
     raw = plan.get("rider", [])
     if isinstance(raw, dict):
         raw = [raw]

@@ -14,13 +14,11 @@ from deathsphere.params import ParameterError
 
 def _setup(typed: dict):
     """The ground, the lanes [m], the setup's scalars and the side from the
-    keywords of :func:`deathsphere.region` as given (``typed``)."""
+    keywords of :func:`deathsphere.region` as given (``typed``; its
+    ``stability`` is read by the callers)."""
     from deathsphere.params import first_problem
     from deathsphere.results.lane_map import default_lanes
 
-    if typed.get("stability"):
-        raise ParameterError("the stability map is the globe's: off the globe map draws the allowed region "
-                             "only (orbit --surface gives each orbit's stability)", "stability")
     if typed.get("step") is not None:
         raise ParameterError("step is the globe's theta step: on another surface give the lanes as "
                              "height start:stop:step (turn_radius on flat ground)", "step")
@@ -54,13 +52,23 @@ def region_on(typed: dict):
     each lane (``height`` [m] values or ``start:stop:step`` text, on flat
     ground ``turn_radius``; default: 361 lanes from the floor to the top):
     ``curve`` (S4 fit, S5 floor, S2 Omega^2 = 0 or pole, S3 contact, mu,
-    max_g), ``equation``, ``height_m``, ``alpha_deg`` and whether the orbit
+    max_g; with ``stability`` also ``stability``, where the exact
+    linearisation's verdict changes), ``equation``, ``height_m``,
+    ``alpha_deg`` and whether the orbit
     just below and just above it in alpha is feasible (``feasible_below``,
     ``feasible_above``), then the setup and the lane."""
     from deathsphere.results.lane_map import lane_boundary_table
 
     ground, heights, v, outside = _setup(typed)
-    return lane_boundary_table(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"])
+    return lane_boundary_table(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"],
+                               stability=_stability(typed))
+
+
+def _stability(typed: dict) -> bool:
+    from deathsphere.api.arguments import checked_flag
+
+    value = typed.get("stability")
+    return checked_flag("stability", False if value is None else value)
 
 
 def region_curves_on(typed: dict):
@@ -70,7 +78,8 @@ def region_curves_on(typed: dict):
     from deathsphere.results.lane_map import lane_curves
 
     ground, heights, v, outside = _setup(typed)
-    return lane_curves(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"])
+    return lane_curves(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"],
+                       stability=_stability(typed))
 
 
 __all__ = ["region_on", "region_curves_on", "MAX_LANES"]

@@ -78,7 +78,8 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
         Off the globe (docs/limits.md sec. 8): the region in (lane, alpha)
         on that arena, :func:`deathsphere.api.lane_map.region_on` (the
         lanes ``height``, or ``turn_radius`` on flat ground, in place of
-        theta; no stability).
+        theta; ``stability`` adds the curve ``stability`` along each lane,
+        on one process).
     stability : bool
         Also the curve ``stability`` (slow: exact linearisation).
     jobs : int

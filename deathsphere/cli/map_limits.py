@@ -83,7 +83,9 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
     --height start:stop:step gives the lanes [default: 361 from the floor to
     the wall's top]; --format csv/json the boundary points with whether the
     orbit is feasible just below and above each; on a terminal the allowed
-    intervals of a few lanes.  No --stability or --step there (docs/limits.md
+    intervals of a few lanes.  --stability there adds the curve 'stability'
+    (the exact linearisation on that ground, bisected as on the globe) and
+    on a terminal each lane's stable tilts.  No --step there (docs/limits.md
     sec. 8).
     """
     options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.render.figures import figure_format, import_matplotlib, save_figure
-from deathsphere.render.map_figure import CURVES, FILL, _region_quads
+from deathsphere.render.map_figure import CURVES, FILL, STABILITY_STYLE, _region_quads
 
 #: Off-globe boundary -> the globe's curve of the same condition (its colour)
 #: and the legend's words.
@@ -25,6 +25,7 @@ STYLES = {
     "S3": ("eq33", "contact (S3)"),
     "mu": ("mu", r"friction $\mu$ = {mu:g}"),
     "max_g": ("max_g", "load {max_g:g} g"),
+    "stability": ("stability", "stability boundary (exact linearisation)"),
 }
 #: The floor's own colour (the globe has no floor).
 FLOOR_COLOUR = "#7f8c8d"
@@ -54,7 +55,8 @@ def plot_lane_map(curves, *, output=None, title=None, dpi=200):
     hi_d = max(95.0, float(np.max(shown)) + 5.0) if shown.size else 95.0
     for name, (x, alpha) in curves.points.items():
         globe, words = STYLES[name]
-        colour = FLOOR_COLOUR if name == "S5" else CURVES[globe][2]["color"]
+        colour = FLOOR_COLOUR if name == "S5" else STABILITY_STYLE["color"] if name == "stability" else \
+            CURVES[globe][2]["color"]
         keep = (alpha >= lo_d) & (alpha <= hi_d)
         if keep.any():
             ax.plot(x[keep], alpha[keep], ".", ms=1.6, color=colour, zorder=3)

@@ -13,7 +13,9 @@ SHOWN_LANES = 13
 
 def lane_map_text(curves, lanes: int = SHOWN_LANES):
     """A rich Table of ``curves`` (a LaneCurves): one row per picked lane,
-    its allowed alpha intervals [deg] ("none" where no tilt is feasible)."""
+    its allowed alpha intervals [deg] ("none" where no tilt is feasible)
+    and, with stability, their parts where the orbit is linearly stable
+    (the exact linearisation; "none" where every allowed tilt is unstable)."""
     from rich.table import Table as RichTable
 
     n = curves.x_m.size
@@ -22,11 +24,19 @@ def lane_map_text(curves, lanes: int = SHOWN_LANES):
               f"max {curves.max_g:g} g" if np.isfinite(curves.max_g) else ""]
     limits = ", ".join(x for x in limits if x)
     side = "outside" if curves.outside else "inside"
-    table = RichTable(title=f"Allowed tilts of a wheel {side} the {curves.ground_name}: a = {curves.a:g} m, "
+    what = "Stability of allowed" if curves.stable is not None else "Allowed"
+    table = RichTable(title=f"{what} tilts of a wheel {side} the {curves.ground_name}: a = {curves.a:g} m, "
                             f"k = {curves.k:g}" + (f", {limits}" if limits else ""))
     table.add_column(curves.x_label, justify="right")
     table.add_column("allowed alpha [deg]")
+    if curves.stable is not None:
+        table.add_column("stable alpha [deg]")
     for i in pick:
         spans = [f"{curves.lo_deg[i, j]:.2f} .. {curves.hi_deg[i, j]:.2f}" for j in range(int(curves.count[i]))]
-        table.add_row(f"{curves.x_m[i]:.4g}", ",  ".join(spans) or "none")
+        row = [f"{curves.x_m[i]:.4g}", ",  ".join(spans) or "none"]
+        if curves.stable is not None:
+            lo, hi = curves.stable
+            row.append(",  ".join(f"{lo[i, j]:.2f} .. {hi[i, j]:.2f}" for j in range(lo.shape[1])
+                                  if np.isfinite(lo[i, j])) or "none")
+        table.add_row(*row)
     return table

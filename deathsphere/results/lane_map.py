@@ -30,6 +30,7 @@ EQUATIONS = {
     "S3": "contact (S3; eq. 33 on the globe)",
     "mu": "friction limit mu_required = mu (S3 and eq. 35)",
     "max_g": "load limit load_g = max_g (eqs. 32 and 36)",
+    "stability": "stability boundary (exact linearisation)",
 }
 #: How far either side of a boundary point its two sides are tested [rad].
 SIDE_STEP = 1e-7
@@ -55,15 +56,29 @@ def _x_of(ground, heights):
     return where["z"] - ground.lowest, where["rho"], np.rad2deg(where["wall_angle"])
 
 
-def lane_boundary_table(ground, heights, a, k, g, outside, mu, max_g) -> Table:
+def _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability: bool) -> dict:
+    """Each boundary's alphas (n, m) [rad] on the lanes, by name; with
+    ``stability`` also ``stability``, where feasible orbits change from
+    stable to unstable (the exact linearisation on that ground, bisected
+    to 1e-10 rad between samples 0.25 deg apart, as on the globe)."""
+    curves = lane_region.lane_boundaries(ground, heights, a, k, outside, mu, max_g)
+    if stability:
+        from deathsphere.physics.stability.lane_margin import stability_boundary_alphas_on
+
+        curves["stability"] = stability_boundary_alphas_on(ground, heights, a, k, g, outside, mu, max_g)
+    return curves
+
+
+def lane_boundary_table(ground, heights, a, k, g, outside, mu, max_g, stability: bool = False) -> Table:
     """Every boundary point of the allowed region at each lane, one row each:
-    ``curve`` (S4, S5, S2, S3, mu, max_g), ``equation``, ``height_m``,
+    ``curve`` (S4, S5, S2, S3, mu, max_g; with ``stability`` also
+    ``stability``), ``equation``, ``height_m``,
     ``alpha_deg``, and whether the orbit is feasible just below and just
     above it in alpha (``feasible_below``, ``feasible_above``: status ok of
     ``orbit --surface`` within mu, and the load within max_g, SIDE_STEP rad
     away), then the setup and the lane's ``rho_contact_m``, ``wall_angle_deg``."""
     heights = np.asarray(heights, dtype=float).reshape(-1)
-    curves = lane_region.lane_boundaries(ground, heights, a, k, outside, mu, max_g)
+    curves = _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability)
     names, eqs, rows, alphas = [], [], [], []
     for name, alpha in curves.items():
         i, j = np.nonzero(np.isfinite(alpha))
@@ -96,7 +111,8 @@ class LaneCurves:
     the floor, or on flat ground the turn radius: ``x_label`` says which),
     the allowed intervals ``lo_deg``, ``hi_deg`` (n, m) and ``count`` (n,);
     ``points``: curve name -> (x_m, alpha_deg) of its boundary points;
-    the setup for the title."""
+    the setup for the title; ``stable`` (with stability) the stable parts
+    of the allowed intervals."""
 
     ground_name: str
     x_label: str
@@ -110,21 +126,56 @@ class LaneCurves:
     outside: bool
     mu: float
     max_g: float
+    #: with stability: the allowed intervals' stable parts per lane, (lo_deg, hi_deg) (n, m) NaN-padded
+    stable: tuple | None = None
 
 
-def lane_curves(ground, heights, a, k, g, outside, mu, max_g) -> LaneCurves:
-    """The allowed intervals and the boundary points at ``heights`` [m]."""
+def lane_curves(ground, heights, a, k, g, outside, mu, max_g, stability: bool = False) -> LaneCurves:
+    """The allowed intervals and the boundary points at ``heights`` [m]
+    (with ``stability`` the stability boundary's too, and each allowed
+    interval's stable parts)."""
     heights = np.asarray(heights, dtype=float).reshape(-1)
     iv = lane_region.allowed_alpha_on(ground, heights, a, k, g, outside, mu, max_g)
     lift, rho, _ = _x_of(ground, heights)
     on_flat = not hasattr(ground, "highest_lane")
     x = rho if on_flat else lift
-    curves = lane_region.lane_boundaries(ground, heights, a, k, outside, mu, max_g)
+    curves = _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability)
     points = {}
     for name, alpha in curves.items():
         i, j = np.nonzero(np.isfinite(alpha))
         points[name] = (x[i], np.rad2deg(alpha[i, j]))
+    stable = stable_parts(ground, heights, iv, curves["stability"], a, k, g, outside) if stability else None
     return LaneCurves(ground_name=ground.name,
                       x_label="turn radius of the contact [m]" if on_flat else "height of the lane [m]",
                       x_m=x, lo_deg=_degrees(iv.lo), hi_deg=_degrees(iv.hi), count=iv.count, points=points,
-                      a=float(a), k=float(k), outside=bool(outside), mu=float(mu), max_g=float(max_g))
+                      a=float(a), k=float(k), outside=bool(outside), mu=float(mu), max_g=float(max_g),
+                      stable=stable)
+
+
+def stable_parts(ground, heights, iv, crossings, a, k, g, outside):
+    """Per lane, the parts of its allowed intervals where the orbit is
+    stable: (lo_deg, hi_deg) arrays (n, m), NaN-padded.  Each allowed
+    interval is cut at the stability boundary's alphas inside it and each
+    piece's stability is its midpoint's sign of the margin (one batched
+    call over every piece of every lane)."""
+    from deathsphere.physics.stability.lane_margin import stability_margin_on
+
+    n = heights.size
+    cuts = np.sort(np.concatenate((np.where(np.isfinite(iv.lo), iv.lo, np.nan),
+                                   np.where(np.isfinite(iv.hi), iv.hi, np.nan), crossings), axis=1), axis=1)
+    left, right = cuts[:, :-1], cuts[:, 1:]
+    mid = 0.5 * (left + right)
+    inside = np.zeros(mid.shape, dtype=bool)
+    for j in range(iv.lo.shape[1]):                          # the few intervals of a lane, not its orbits
+        inside |= (mid > iv.lo[:, j:j + 1]) & (mid < iv.hi[:, j:j + 1])
+    inside &= np.isfinite(mid)
+    stable = np.zeros(mid.shape, dtype=bool)
+    rows = np.broadcast_to(heights[:, None], mid.shape)
+    stable[inside] = stability_margin_on(ground, rows[inside], mid[inside], a, k, g, outside) > 0
+    lo, hi = np.full(mid.shape, np.nan), np.full(mid.shape, np.nan)
+    lo[stable], hi[stable] = left[stable], right[stable]
+    # the stable pieces of a lane, first ones first (the NaNs last)
+    order = np.argsort(np.where(stable, left, np.inf), axis=1, kind="stable")
+    lo, hi = np.take_along_axis(lo, order, axis=1), np.take_along_axis(hi, order, axis=1)
+    keep = max(int(np.max(np.sum(stable, axis=1), initial=0)), 1)
+    return _degrees(lo[:, :keep]).reshape(n, keep), _degrees(hi[:, :keep]).reshape(n, keep)

@@ -68,11 +68,13 @@ def wall_ground(ground, open_top: float) -> dict:
     """A wall's ground record (a drum, a cone, a profile) as the scene draws
     it: its meridian from the floor's centre out along the floor and up the
     wall to its top (a wall without a top: up to the height ``open_top``
-    [m] above its lowest point), :data:`WALL_POINTS` points up the wall."""
+    [m] above its lowest point), :data:`WALL_POINTS` points up the wall,
+    evenly spaced along the meridian (a profile's bowl, whose wall leaves
+    the floor flat, is drawn as finely there as up its side)."""
     top = float(ground.highest_lane)
     if not math.isfinite(top):
         top = float(open_top)
-    rho, z = ground.contact(np.linspace(0.0, top, WALL_POINTS))
+    rho, z = ground.meridian(np.linspace(0.0, float(ground.arc_length(top)), WALL_POINTS))[:2]
     rho, z = np.concatenate(([0.0], rho)), np.concatenate(([float(ground.lowest)], z))
     return revolution_ground(rho, z)
 

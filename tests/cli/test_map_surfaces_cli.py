@@ -59,7 +59,6 @@ def test_the_csv_and_the_figure_through_the_command_line(run, tmp_path):
 
 
 @pytest.mark.parametrize("args, option", [
-    (("--stability",), "--stability"),
     (("--step", "1"), "--step"),
     (("--height", "-2"), "--height"),
     (("--turn-radius", "2"), "--turn-radius"),

@@ -13,7 +13,7 @@ from deathsphere.physics import region
 from deathsphere.physics.stability.horizontal import wheel_reduced_jacobian
 from deathsphere.physics.stability.reduction import characteristic_invariants
 
-__all__ = ["STABILITY_ALPHA_STEP_DEG", "stability_margin", "stability_boundary_alphas"]
+__all__ = ["STABILITY_ALPHA_STEP_DEG", "stability_margin", "margin_of", "stability_boundary_alphas"]
 
 #: alpha step [deg] of the samples between which the stability boundary is
 #: bisected (:func:`stability_boundary_alphas`).
@@ -45,6 +45,14 @@ def stability_margin(theta, alpha, a, r, k, g=STANDARD_GRAVITY, outside=False):
     if theta.size == 0:
         return np.empty(theta.shape)
     K = wheel_reduced_jacobian(theta, alpha, a, r, k, g, outside)["K"]
+    return margin_of(K).reshape(theta.shape)
+
+
+def margin_of(K):
+    """The signed margin of :func:`stability_margin` from reduced Jacobians
+    K (n, 4, 4) of the 4 nutation modes, on the globe or any ground
+    (beyond the paper; docs/stability.md sec. 1): (n,), NaN where K is not
+    finite (no orbit)."""
     finite = np.all(np.isfinite(K), axis=(-2, -1))
     K = np.where(finite[:, None, None], K, 0.0)
     e2, e4 = characteristic_invariants(K)
@@ -52,7 +60,7 @@ def stability_margin(theta, alpha, a, r, k, g=STANDARD_GRAVITY, outside=False):
     ok = finite & (n2 > 0)
     n2 = np.where(ok, n2, 1.0)
     margin = np.minimum(np.minimum(e2 / n2, e4 / n2 ** 2), (e2 ** 2 - 4.0 * e4) / n2 ** 2)
-    return np.where(ok, margin, np.nan).reshape(theta.shape)
+    return np.where(ok, margin, np.nan)
 
 
 def stability_boundary_alphas(theta, a, r, k, g=STANDARD_GRAVITY, outside=False, mu=np.inf, max_g=np.inf,

@@ -28,7 +28,7 @@ from deathsphere.physics.stability.reduction import (
 from deathsphere.physics.stability.horizontal import stability_result
 from deathsphere.physics.vectors import dot, zcross
 
-__all__ = ["wheel_stability_on", "ball_stability_on"]
+__all__ = ["wheel_stability_on", "wheel_reduced_jacobian_on", "ball_stability_on"]
 
 
 def _flat(*xs):
@@ -53,6 +53,20 @@ def wheel_stability_on(ground, height, alpha, a, k, g, outside=False):
     The steady state is the same on both sides (eqs. 11-13, 29: alpha fixes
     e3, the centre a behind the contact); the side enters through the
     contact's e3 against grad F (docs/dynamics.md sec. 7, "Outside")."""
+    red = wheel_reduced_jacobian_on(ground, height, alpha, a, k, g, outside)
+    ok, Om = red["ok"], red["omega"]
+    scale = np.where(ok, red["scale"], np.nan)
+    ev, growth, slow, fast, verdict = spectrum_from_invariants(red["K"], scale)
+    return stability_result(red["shape"], ev, growth, slow, fast, verdict, scale, np.where(ok, Om, np.nan))
+
+
+def wheel_reduced_jacobian_on(ground, height, alpha, a, k, g, outside=False):
+    """Beyond the paper (docs/stability.md, "On any ground"): the reduced
+    Jacobian of :func:`wheel_stability_on`, flat over the broadcast orbits
+    (n,): ``K`` (n, 4, 4) (NaN where no orbit), ``ok`` (n,) where the
+    orbit exists, ``scale`` its rate scale [rad/s], ``omega`` Omega
+    [rad/s], ``shape`` the broadcast shape (the stability map's signed
+    margin is taken from K's invariants, as on the globe)."""
     shape, (h, al, a, k, g, out) = _flat(height, alpha, a, k, g, outside)
     out = out != 0
     n = h.size
@@ -82,9 +96,7 @@ def wheel_stability_on(ground, height, alpha, a, k, g, outside=False):
     A[:, 4] = np.nan_to_num(da) / D
     K = _reduced(X0, A, D, p, Om_s)
     K = np.where(ok[:, None, None], K, np.nan)
-    scale = np.where(ok, S, np.nan)
-    ev, growth, slow, fast, verdict = spectrum_from_invariants(K, scale)
-    return stability_result(shape, ev, growth, slow, fast, verdict, scale, np.where(ok, Om, np.nan))
+    return {"K": K, "ok": ok, "scale": S, "omega": Om, "shape": shape}
 
 
 def ball_stability_on(ground, height, omega, a, k, g, outside=False):
