@@ -29,11 +29,11 @@ GRID = np.geomspace(1 / 16, 16, 145)
 #: Each edge is found to this, relative to itself: the bracket (GRID's
 #: ratio, about 1.04) halved until it is half this narrow (about 30 steps).
 RTOL = 1e-10
-#: A two-wheeler's edges are found to this, each bracket cut into
+#: A two-wheeler's edges are found to the same RTOL, each bracket cut into
 #: :data:`SECTIONS` + 1 at a step (seeking its steady turns costs some 0.15 s
 #: a call on the globe however many speeds it takes, 0.4 s on a drum: a few
-#: calls of many speeds, not thirty of one): three steps.
-TWO_WHEELER_RTOL = 1e-6
+#: calls of many speeds, not thirty of one): five steps.
+TWO_WHEELER_RTOL = RTOL
 SECTIONS = 127
 #: The most bisection steps (a bracket of the whole GRID halved to below RTOL).
 MAX_STEPS = 64
@@ -146,4 +146,16 @@ def speed_bands(lanes, globe, planned) -> np.ndarray:
         groups.setdefault((lane.kind, lane.body is not None), []).append(i)
     for (_, two_wheeler), idx in groups.items():
         out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx], TWO_WHEELER_RTOL if two_wheeler else RTOL)
+        if two_wheeler:
+            out[idx] = _unsearched(out[idx])
     return out
+
+
+def _unsearched(band) -> np.ndarray:
+    """A two-wheeler's band with an edge at the fastest turn its solver seeks
+    (steady.MAX_SPEED, a rear wheel's 100 m/s) made NaN: the lane holds to
+    there, and the edge itself lies beyond what is searched (as an edge
+    beyond 16 times the planned speed is NaN)."""
+    from deathsphere.physics.two_wheeler.steady import MAX_SPEED
+
+    return np.where(band >= MAX_SPEED * (1.0 - 1e-8), np.nan, band)

@@ -250,3 +250,17 @@ def test_a_two_wheelers_parameter_file_rides_and_a_bad_one_is_refused_naming_mac
 def test_a_machine_may_ride_a_two_wheelers_lap():
     ana, dee = _lanes(_plan(_two_wheeler(), _machine(name="Dee", speed=None, same_lap_as="Ana", phase=180)))
     assert dee.period_s == pytest.approx(ana.period_s, rel=1e-9)
+
+
+def test_a_two_wheelers_speed_band_edges_are_rides_to_1e_9():
+    """The band's edges, found to 1e-10 of themselves, are where ride's own
+    turns change status: ok at each edge, not 1e-9 beyond it (slips below,
+    over_g above, under mu 0.9 and 8 g); with no limits the top edge is the
+    solver's fastest turn (100 m/s), left empty."""
+    act = deathsphere.show(_plan(_two_wheeler()))
+    low, high = act.riders[0]["speed_low_m_s"], act.riders[0]["speed_high_m_s"]
+    rows = deathsphere.ride(machine="stunt125-steer", steer="free", stability=False, mu=0.9, max_g=8,
+                            diameter="16ft", height="5ft", speed=[low * (1 - 1e-9), low, high, high * (1 + 1e-9)])
+    assert list(rows["status"]) == ["slips", "ok", "ok", "over_g"]
+    free = deathsphere.show({"globe": {"radius": R}, "rider": [_two_wheeler()]})
+    assert math.isfinite(free.riders[0]["speed_low_m_s"]) and free.riders[0]["speed_high_m_s"] is None
