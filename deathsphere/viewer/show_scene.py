@@ -316,7 +316,8 @@ def _wall(result, probe: dict) -> dict | None:
     r = float(np.max(rho))
     return {"ground": drawn, "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
             "extent": 1.05 * max(r, 0.5 * float(z[-1] - z[0])),
-            "what": f"on a {ground.name} of {2 * float(rho[1]):.2f} m"}
+            # its widest: a drum's diameter, a cone's or a bowl's rim (a dome's floor may be a point)
+            "what": f"on a {ground.name} {2 * r:.2f} m across"}
 
 
 def _title(n: int, r: float, t_end: float, pair: dict | None, where: str | None = None) -> str:
