@@ -1,5 +1,14 @@
-"""Collection of the package's docstring examples (``--doctest-modules``).
+"""What every process of the suite does before it collects a test.
 
+Bytecode is cached.  Each worker of a parallel run imports the suite's
+test modules (pytest rewrites their asserts) and the package's modules (the
+doctest collection imports every one); with no cached bytecode
+(PYTHONDONTWRITEBYTECODE set) each worker parses, rewrites and compiles all
+of them again, about 5 s of CPU a worker on every run.  The caches go to
+``__pycache__`` (ignored by git), as in any run without that variable;
+the command-line processes the tests start read them.
+
+Collection of the package's docstring examples (``--doctest-modules``).
 Collecting a module's doctests imports it.  The modules below hold the
 two-wheeler's symbolic derivation: importing them imports sympy (about 2 s
 per worker, paid by every worker of a parallel run before its first test),
@@ -9,7 +18,10 @@ import is still checked; a module here that gains an example is collected
 again.
 """
 
+import sys
 from pathlib import Path
+
+sys.dont_write_bytecode = False
 
 SYMBOLIC = {Path(__file__).parent / "deathsphere" / name for name in (
     "codegen.py", "physics/two_wheeler/derivation.py")}
