@@ -38,6 +38,7 @@ from pathlib import Path
 import click
 import pytest
 from rich.cells import cell_len
+from shipped_plans import copy_plan
 
 from deathsphere.cli import cli
 
@@ -199,10 +200,7 @@ def provided(args: tuple, folder: Path) -> tuple:
 
         for arg in args[1:]:
             if arg.endswith(".toml") and not (folder / arg).exists():
-                shipped = README.parent / arg
-                (folder / arg).parent.mkdir(parents=True, exist_ok=True)
-                (folder / arg).write_text(shipped.read_text(encoding="utf-8") if shipped.is_file() else EXAMPLE_PLAN,
-                                          encoding="utf-8")
+                copy_plan(README.parent / arg, folder / arg, EXAMPLE_PLAN)
     out, skip = [], False
     for i, arg in enumerate(args):
         if skip:
