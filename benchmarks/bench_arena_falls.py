@@ -1,5 +1,7 @@
 """Falls on the wall of death (docs/show.md sec. 11): a Monte Carlo of 10^5
-falls in the shipped worked act (three riders on a 32 ft drum), against the
+falls in the shipped worked act (three riders on a 32 ft drum) and in the
+shipped bowl (a profile, whose flights' landings are certified by the gap's
+Lipschitz bound: physics/first_touch.py), against the
 show's target for the globe (under a minute for 10^5, bench_show.py), and
 the flight alone (physics.landing.landing_on) per flight.
 
@@ -25,6 +27,7 @@ from deathsphere.physics.landing import landing_on  # noqa: E402
 
 FALLS_TARGET_S = 60.0
 PLAN = Path(__file__).resolve().parents[1] / "examples" / "wall_of_death.toml"
+BOWL = Path(__file__).resolve().parents[1] / "examples" / "bowl_of_death.toml"
 
 
 def main():
@@ -36,6 +39,9 @@ def main():
     t_mc = best_of(lambda: act.falls(args.falls, seed=1), args.repeat)
     print(f"Monte Carlo of {args.falls} falls on the drum: {t_mc:.2f} s (target {FALLS_TARGET_S:.0f} s for 10^5: "
           f"{t_mc / FALLS_TARGET_S * 100_000 / args.falls:.3f} of it)")
+    bowl = show(str(BOWL))
+    t_bowl = best_of(lambda: bowl.falls(args.falls, seed=1), args.repeat)
+    print(f"Monte Carlo of {args.falls} falls in the bowl (a profile): {t_bowl:.2f} s")
     rng = np.random.default_rng(0)
     n = args.falls
     radius = 16 * 0.3048

@@ -25,8 +25,32 @@ def run():
     return invoke
 
 
+def _chunk_starts(n: int, workers: int) -> list[int]:
+    """Where each worker's first share of ``n`` tests starts: worksteal
+    sends the idle workers ``len(pending) // workers_left`` in turn, from
+    the front of the collection."""
+    starts, start, left = [], 0, n
+    for j in range(workers):
+        starts.append(start)
+        take = left // (workers - j)
+        start, left = start + take, left - take
+    return starts
+
+
 def pytest_collection_modifyitems(config, items):
-    """The longest tests first (marked ``longest``): worksteal hands tests
-    out in collection order, and a run that met the sphere's tens of seconds
-    of sympy at its end would wait on one core for it."""
-    items.sort(key=lambda item: item.get_closest_marker("longest") is None)
+    """The longest tests (marked ``longest``) at the head of each worker's
+    first share, dealt round the workers: worksteal splits the collection
+    into contiguous shares, so sorted to the front they would all fall to
+    the first worker one after another, and a run that met one at its end
+    would wait on one core for it.  In one process: simply first."""
+    longest = [item for item in items if item.get_closest_marker("longest") is not None]
+    others = [item for item in items if item.get_closest_marker("longest") is None]
+    workers = int(getattr(config, "workerinput", {}).get("workercount", 1))
+    starts = _chunk_starts(len(items), workers) + [len(items)]
+    order = []
+    for j in range(workers):
+        mine = longest[j::workers]
+        fill = starts[j + 1] - starts[j] - len(mine)
+        order += mine + others[:max(fill, 0)]
+        others = others[max(fill, 0):]
+    items[:] = order + others

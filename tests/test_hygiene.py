@@ -6,12 +6,13 @@ import ast
 import pathlib
 
 from hypothesis import settings
+from source_trees import tree
 
 TESTS = pathlib.Path(__file__).parent
 
 
 def _sources():
-    return [(path, path.read_text(encoding="utf-8")) for path in TESTS.rglob("*.py")]
+    return [(path, tree(path)) for path in TESTS.rglob("*.py")]
 
 
 def test_hypothesis_is_derandomized():
@@ -21,8 +22,8 @@ def test_hypothesis_is_derandomized():
 def test_no_test_puts_a_stand_in_module_into_sys_modules():
     """A monkeypatched sys.modules entry may only be None (which makes the
     real import fail, to test the missing-extra message), never a fake."""
-    for path, text in _sources():
-        for node in ast.walk(ast.parse(text)):
+    for path, module in _sources():
+        for node in ast.walk(module):
             if (isinstance(node, ast.Call) and getattr(node.func, "attr", "") == "setitem"
                     and node.args and "sys.modules" in ast.unparse(node.args[0])):
                 assert isinstance(node.args[2], ast.Constant) and node.args[2].value is None, \
@@ -32,10 +33,10 @@ def test_no_test_puts_a_stand_in_module_into_sys_modules():
 def test_no_unit_test_asserts_on_the_clock():
     """Timings are measured in benchmarks/, not asserted in tests: a shared,
     noisy machine makes such an assertion flaky."""
-    for path, text in _sources():
+    for path, module in _sources():
         if path.name == "test_hygiene.py":
             continue
-        for node in ast.walk(ast.parse(text)):
+        for node in ast.walk(module):
             if isinstance(node, ast.Assert):
                 source = ast.unparse(node.test)
                 assert "perf_counter" not in source and "time.time" not in source and "monotonic" not in source, \
@@ -71,8 +72,8 @@ def _name_of(node) -> str | None:
     return None
 
 
-def _body_word_comparisons(source: str, other_meanings=()) -> list[int]:
-    """The lines of ``source`` that compare a value with a body's word
+def _body_word_comparisons(module: str | ast.Module, other_meanings=()) -> list[int]:
+    """The lines of ``module`` (source text or its parsed tree) that compare a value with a body's word
     (``==``, ``!=``, ``in``, ``not in``, a ``case``; the word alone or in a
     literal tuple, list or set), but for values called one of
     ``other_meanings``."""
@@ -84,7 +85,7 @@ def _body_word_comparisons(source: str, other_meanings=()) -> list[int]:
         return False
 
     lines = []
-    for node in ast.walk(ast.parse(source)):
+    for node in ast.walk(ast.parse(module) if isinstance(module, str) else module):
         if isinstance(node, ast.Compare):
             sides = (node.left, *node.comparators)
             if (any(names_a_body(side) for side in sides)
@@ -121,7 +122,7 @@ def test_no_body_is_tested_by_its_name_outside_the_decoder():
         if rel.startswith(MAY_COMPARE_BODY_WORDS):
             continue
         meanings = next((names for where, names in OTHER_MEANINGS.items() if rel.startswith(where)), ())
-        found += [f"{rel}:{line}" for line in _body_word_comparisons(path.read_text(encoding="utf-8"), meanings)]
+        found += [f"{rel}:{line}" for line in _body_word_comparisons(tree(path), meanings)]
     assert found == []
 
 
@@ -156,7 +157,7 @@ def test_only_the_adapters_take_more_than_twelve_parameters():
     long_lists = []
     for path in sorted(PACKAGE.rglob("*.py")):
         rel = path.relative_to(PACKAGE).as_posix()
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in ast.walk(tree(path)):
             if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 continue
             if _parameter_count(node) <= MOST_PARAMETERS or node.name in KEYWORD_ADAPTERS.get(rel, ()):

@@ -7,6 +7,8 @@ import ast
 import functools
 import pathlib
 
+from source_trees import tree
+
 import deathsphere
 
 ROOT = pathlib.Path(deathsphere.__file__).parent
@@ -25,7 +27,7 @@ def _modules() -> dict[str, set[str]]:
     for name, path in names.items():
         package = name if path.name == "__init__.py" else name.rsplit(".", 1)[0]
         targets = set()
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in ast.walk(tree(path)):
             if isinstance(node, ast.Import):
                 targets |= {a.name for a in node.names}
             elif isinstance(node, ast.ImportFrom):

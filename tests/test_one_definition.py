@@ -7,6 +7,8 @@ import ast
 from collections import defaultdict
 from pathlib import Path
 
+from source_trees import tree
+
 PACKAGE = Path(__file__).resolve().parents[1] / "deathsphere"
 #: Where one name is one equation per body.
 PER_BODY = PACKAGE / "physics"
@@ -16,7 +18,7 @@ def definitions(root: Path) -> dict[str, list[str]]:
     """Public module-level function and class names -> the modules defining them."""
     found = defaultdict(list)
     for path in sorted(root.rglob("*.py")):
-        for node in ast.parse(path.read_text(encoding="utf-8")).body:
+        for node in tree(path).body:
             if isinstance(node, (ast.FunctionDef, ast.ClassDef)) and not node.name.startswith("_"):
                 found[node.name].append(str(path.relative_to(root.parent)))
     return found

@@ -6,6 +6,7 @@ import shlex
 from pathlib import Path
 
 import pytest
+from shipped_plans import copy_plan
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 
@@ -29,18 +30,6 @@ def test_readme_has_commands():
     assert len(commands()) >= 8
 
 
-def _copy_profile(shipped: Path, copy: Path) -> None:
-    """A shipped plan's profile file (its [arena]'s ``profile``, relative to
-    the plan) beside its copy, as a user's checkout has it."""
-    import tomllib
-
-    if not shipped.is_file():
-        return
-    name = tomllib.loads(shipped.read_text(encoding="utf-8")).get("arena", {}).get("profile")
-    if name:
-        (copy.parent / name).write_bytes((shipped.parent / name).read_bytes())
-
-
 @pytest.mark.parametrize("line, stdin", commands())
 def test_readme_command_runs(run, line, stdin, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)     # a command with --output FILE writes it here
@@ -50,11 +39,7 @@ def test_readme_command_runs(run, line, stdin, tmp_path, monkeypatch):
 
         for arg in args[1:]:
             if arg.endswith(".toml"):
-                shipped = README.parent / arg
-                (tmp_path / arg).parent.mkdir(parents=True, exist_ok=True)
-                (tmp_path / arg).write_text(shipped.read_text(encoding="utf-8") if shipped.is_file() else EXAMPLE_PLAN,
-                                            encoding="utf-8")
-                _copy_profile(shipped, tmp_path / arg)
+                copy_plan(README.parent / arg, tmp_path / arg, EXAMPLE_PLAN)
     if "sweep" in args:  # keep the suite fast: the same command on a coarser grid
         args = [re.sub(r"^(\d+):(\d+):1$", r"\1:\2:20", a) for a in args]
     res = run(*args, input=stdin)

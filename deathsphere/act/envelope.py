@@ -108,8 +108,28 @@ def overlap_clearance(p0, p1, q0, q1, radii, points: int = AXIS_POINTS):
     return c
 
 
-def clearance(a: dict, b: dict, width_a, width_b):
+#: A single-contact machine's envelope: one segment, from the contact to the head.
+CAPSULE = (("contact", "head"),)
+
+
+def segments_clearance(ends_a, ends_b, radii):
+    """Clearance [m] of two envelopes of several segments each, ``ends_a``
+    and ``ends_b`` lists of (p0, p1) (3, ...): the least over every pair of
+    segments of their capsules' :func:`overlap_clearance` (a two-wheeler's
+    envelope, docs/show.md, "Two-wheeler riders").  The distance of two
+    unions is the least of their parts' distances; where capsules overlap
+    the depth is the deepest pair's.  One segment each: that pair's,
+    unchanged."""
+    if len(ends_a) == len(ends_b) == 1:
+        return overlap_clearance(*ends_a[0], *ends_b[0], radii)
+    return np.minimum.reduce([overlap_clearance(p0, p1, q0, q1, radii) for p0, p1 in ends_a for q0, q1 in ends_b])
+
+
+def clearance(a: dict, b: dict, width_a, width_b, segments_a=CAPSULE, segments_b=CAPSULE):
     """Clearance [m] of two riders' envelopes: ``a`` and ``b`` hold their
-    'contact' and 'head' points (3, ...); width/2 is each capsule's radius
-    (:func:`overlap_clearance`)."""
-    return overlap_clearance(a["contact"], a["head"], b["contact"], b["head"], 0.5 * (width_a + width_b))
+    points (3, ...) by name ('contact' and 'head' for a single-contact
+    machine), ``segments_a`` and ``segments_b`` the envelope's segments by
+    the names of their ends; width/2 is each capsule's radius
+    (:func:`segments_clearance`)."""
+    return segments_clearance([(a[p], a[q]) for p, q in segments_a], [(b[p], b[q]) for p, q in segments_b],
+                              0.5 * (width_a + width_b))

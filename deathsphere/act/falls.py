@@ -172,8 +172,9 @@ def _victims(lanes, g: float, rider, res, flight, samples: int):
     point = x0 + v0 * s - 0.5 * g * s * s * _Z[:, :, None]            # (3, m, K)
     radius = np.array([lanes[k].width_m for k in rider[flying]]) * 0.5
     for k, victim in enumerate(lanes):
-        p0, p1 = victim.ends(times.reshape(-1))
-        d = point_segment_distance(point, p0.reshape(point.shape), p1.reshape(point.shape))
+        # the least over the victim's segments (a two-wheeler's several, a machine's one)
+        d = np.minimum.reduce([point_segment_distance(point, p0.reshape(point.shape), p1.reshape(point.shape))
+                               for p0, p1 in victim.segment_ends(times.reshape(-1))])
         d = d - radius[:, None] - 0.5 * victim.width_m
         best = np.argmin(d, axis=1)
         rows = np.arange(flying.size)
@@ -195,8 +196,9 @@ def refine_victim(lane_f, victim, x0, v0, t_lost: float, flight: float, g: float
     speed = max(float(np.linalg.norm(v0)), float(np.linalg.norm(v0[:, 0] - g * flight * _Z[:, 0])))
 
     def gap(s):
-        p0, p1 = victim.ends(t_lost + s)
-        return point_segment_distance(x0 + v0 * s - 0.5 * g * s * s * _Z, p0, p1) - radii
+        x = x0 + v0 * s - 0.5 * g * s * s * _Z
+        return np.minimum.reduce([point_segment_distance(x, p0, p1) for p0, p1 in victim.segment_ends(t_lost + s)]) \
+            - radii
 
     c, s = minimise(gap, 0.0, flight, speed + victim.speed_bound())
     return c, t_lost + s

@@ -41,6 +41,7 @@ from deathsphere.physics.machine_surface import meridian_points_on
 from deathsphere.requests.arena import is_globe
 from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
 from deathsphere.records.machine import Machine
+from deathsphere.records.two_wheeler import TwoWheeler
 
 #: Statuses with which a vertical lane is not ridden at all (the plan is refused).
 LOOP_REFUSED = (Status.NO_FIT, Status.NO_ORBIT, Status.NO_CONTACT)
@@ -78,6 +79,11 @@ class Lane:
     rate: float = math.nan            # horizontal: signed Omega; vertical: psidot at the top [rad/s]
     rate_bottom: float = math.nan     # vertical: psidot at the bottom [rad/s]
     azimuth: float = math.nan         # vertical: the loop plane's direction [rad]
+    #: a two-wheeler's points (3,) [m] at lane angle 0 (act/two_wheeler_lanes.py; None: a single-contact
+    #: machine's, in the contact's meridian plane, ``points``)
+    body: dict | None = field(default=None, repr=False)
+    #: the envelope's segments by the names of their ends (a single-contact machine's: contact -> head)
+    segments: tuple = (("contact", "head"),)
 
     @property
     def status(self) -> str:
@@ -103,8 +109,11 @@ class Lane:
         return out
 
     def ends(self, t, clock: float = 1.0):
-        """(contact, head) (3, n) [m]: the envelope's segment at the times t."""
+        """(contact, head) (3, n) [m]: the envelope's segment at the times t
+        (a two-wheeler's first segment: :meth:`segment_ends` gives them all)."""
         t = np.asarray(t, dtype=float).reshape(-1) * clock
+        if self.body is not None:
+            return self.segment_ends(t)[0]
         if self.kind == "horizontal":
             angle = self.phase + self.rate * t
             c, s = np.cos(angle), np.sin(angle)
@@ -119,6 +128,14 @@ class Lane:
         n = np.sin(angle) * self._e() + np.cos(angle) * _Z
         return self.points["contact"] * n, self.points["head"] * n
 
+    def segment_ends(self, t, clock: float = 1.0) -> list:
+        """[(p0, p1)] (3, n) [m]: every segment of the envelope at the times t."""
+        if self.body is None:
+            return [self.ends(t, clock)]
+        t = np.asarray(t, dtype=float).reshape(-1) * clock
+        pts = self.at_angle(self.phase + self.rate * t)
+        return [(pts[a], pts[b]) for a, b in self.segments]
+
     def at_angle(self, angle) -> dict:
         """'contact', 'head', 'com' (3, n) [m] with the lane's angle (phi or
         psi [rad], (n,)) at ``angle``."""
@@ -127,6 +144,9 @@ class Lane:
             n = np.sin(angle) * self._e() + np.cos(angle) * _Z
             return {k: self.points[k] * n for k in ("contact", "com", "head")}
         c, s = np.cos(angle), np.sin(angle)
+        if self.body is not None:            # a two-wheeler: its points turned about the vertical
+            return {k: np.stack((x * c - y * s, x * s + y * c, np.full_like(angle, z)))
+                    for k, (x, y, z) in self.body.items()}
         return {k: np.stack((rho * c, rho * s, np.full_like(angle, z))) for k, (rho, z) in self.points.items()}
 
     def _e(self):
@@ -136,6 +156,10 @@ class Lane:
         """d(com)/d(angle) (3, n): the centre of mass's velocity per unit rate."""
         if self.kind == "vertical":
             return self.points["com"] * (np.cos(angle) * self._e() - np.sin(angle) * _Z)
+        if self.body is not None:
+            x, y, _ = self.body["com"]
+            c, s = np.cos(angle), np.sin(angle)
+            return np.stack((-x * s - y * c, x * c - y * s, np.zeros_like(angle)))
         rg = self.points["com"][0]
         return np.stack((-rg * np.sin(angle), rg * np.cos(angle), np.zeros_like(angle)))
 
@@ -223,6 +247,14 @@ def horizontal_lanes_of(riders: list[Rider], ground, globe, laps: dict | None = 
     ParameterError (not raised) in his place."""
     if not riders:
         return []
+    two = [isinstance(r.machine, TwoWheeler) for r in riders]
+    if any(two):
+        # a two-wheeler's lane is its steady turn (act/two_wheeler_lanes.py); the machines' as before
+        from deathsphere.act.two_wheeler_lanes import two_wheeler_lane
+
+        machines = iter(horizontal_lanes_of([r for r, t in zip(riders, two) if not t], ground, globe, laps))
+        found = [two_wheeler_lane(r, ground, globe) if t else next(machines) for r, t in zip(riders, two)]
+        return [Lane(**x) if isinstance(x, dict) else x for x in found]
     if not is_globe(ground):
         return _wall_lanes_of(riders, ground, globe, laps)
     machines = machine_arrays([r.machine for r in riders])

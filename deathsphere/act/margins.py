@@ -29,6 +29,12 @@ GRID = np.geomspace(1 / 16, 16, 145)
 #: Each edge is found to this, relative to itself: the bracket (GRID's
 #: ratio, about 1.04) halved until it is half this narrow (about 30 steps).
 RTOL = 1e-10
+#: A two-wheeler's edges are found to the same RTOL, each bracket cut into
+#: :data:`SECTIONS` + 1 at a step (seeking its steady turns costs some 0.15 s
+#: a call on the globe however many speeds it takes, 0.4 s on a drum: a few
+#: calls of many speeds, not thirty of one): five steps.
+TWO_WHEELER_RTOL = RTOL
+SECTIONS = 127
 #: The most bisection steps (a bracket of the whole GRID halved to below RTOL).
 MAX_STEPS = 64
 
@@ -37,6 +43,8 @@ def speeds_hold(lanes, globe, speeds) -> np.ndarray:
     """bool (n, k): lane i stays feasible at speeds[i, j] [m/s] (module
     docstring); the lanes share one kind: one physics call."""
     speeds = np.asarray(speeds, dtype=float)
+    if lanes[0].body is not None:
+        return np.stack([_two_wheeler_holds(lane, globe, row) for lane, row in zip(lanes, speeds)])
     machines = machine_arrays([lane.machine for lane in lanes]).expand(-1)        # (n, 1): one per lane
     ground = globe.ground
     if lanes[0].kind == "vertical":
@@ -53,7 +61,21 @@ def speeds_hold(lanes, globe, speeds) -> np.ndarray:
     return ok.reshape(speeds.shape)
 
 
-def _bands(lanes, globe, planned) -> np.ndarray:
+def _two_wheeler_holds(lane, globe, speeds) -> np.ndarray:
+    """bool (k,): the two-wheeler's lane has a steady turn with status ok at
+    each rear contact speed [m/s] (ride's statuses, docs/two-wheeler.md sec. 8)."""
+    from deathsphere.physics.two_wheeler import steady
+
+    t, ground = lane.machine, globe.ground
+    at = np.full(speeds.size, lane.theta if is_globe(ground) else lane.height)
+    out = steady.turns_for_speed(at, speeds, t.parameters(), ground, globe.g, t.head)
+    codes, _ = steady.turn_status(np.isfinite(out["lean"]), out["head_clearance"], out["contact"] == 1,
+                                  out["mu_required_rear"], out["mu_required_front"], out["load_g"], globe.mu,
+                                  globe.max_g)
+    return (codes == Status.OK).any(axis=1)
+
+
+def _bands(lanes, globe, planned, rtol: float = RTOL) -> np.ndarray:
     """(n, 2) [m/s] low and high edges for lanes of one kind."""
     planned = np.asarray(planned, dtype=float)
     grid = planned[:, None] * GRID
@@ -72,14 +94,41 @@ def _bands(lanes, globe, planned) -> np.ndarray:
             j = above[0]
             inside[i, 1], outside[i, 1] = (grid[i, j - 1] if j - 1 >= k else planned[i]), grid[i, j]
     found = np.isfinite(inside)
+    if lanes[0].body is not None:
+        return _sections(lanes, globe, planned, inside, outside, found, rtol)
     for _ in range(MAX_STEPS):
         # half the tolerance of the edge itself: the edge lies between inside and outside
-        open_ = found & (np.abs(outside - inside) > 0.5 * RTOL * np.abs(inside))
+        open_ = found & (np.abs(outside - inside) > 0.5 * rtol * np.abs(inside))
         if not open_.any():
             break
         mid = np.where(open_, 0.5 * (inside + outside), planned[:, None])
         good = speeds_hold(lanes, globe, mid)
         inside, outside = np.where(open_ & good, mid, inside), np.where(open_ & ~good, mid, outside)
+    return np.where(found, inside, np.nan)
+
+
+def _sections(lanes, globe, planned, inside, outside, found, rtol: float) -> np.ndarray:
+    """:func:`_bands`'s edges by multisection: each open bracket (inside
+    feasible, outside not) sampled at :data:`SECTIONS` points at once, the
+    bracket narrowed to the first change from feasible to not counted from
+    the inside (the run holding the planned speed), until it is narrower
+    than ``rtol`` of its edge."""
+    frac = np.arange(1, SECTIONS + 1) / (SECTIONS + 1)
+    n = planned.size
+    for _ in range(MAX_STEPS):
+        open_ = found & (np.abs(outside - inside) > 0.5 * rtol * np.abs(inside))
+        if not open_.any():
+            break
+        pts = inside[..., None] + (outside - inside)[..., None] * frac                  # (n, 2, SECTIONS)
+        pts = np.where(open_[..., None], pts, planned[:, None, None])
+        good = speeds_hold(lanes, globe, pts.reshape(n, -1)).reshape(pts.shape)
+        first_bad = np.argmax(~good, axis=-1)                                         # SECTIONS: none bad
+        first_bad = np.where((~good).any(axis=-1), first_bad, SECTIONS)
+        take = np.clip(first_bad - 1, 0, SECTIONS - 1)[..., None]
+        last_good = np.where(first_bad > 0, np.take_along_axis(pts, take, -1)[..., 0], inside)
+        bad = np.where(first_bad < SECTIONS,
+                       np.take_along_axis(pts, np.minimum(first_bad, SECTIONS - 1)[..., None], -1)[..., 0], outside)
+        inside, outside = np.where(open_, last_good, inside), np.where(open_, bad, outside)
     return np.where(found, inside, np.nan)
 
 
@@ -94,7 +143,19 @@ def speed_bands(lanes, globe, planned) -> np.ndarray:
     out = np.full((len(lanes), 2), np.nan)
     groups = {}
     for i, lane in enumerate(lanes):
-        groups.setdefault(lane.kind, []).append(i)
-    for idx in groups.values():
-        out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx])
+        groups.setdefault((lane.kind, lane.body is not None), []).append(i)
+    for (_, two_wheeler), idx in groups.items():
+        out[idx] = _bands([lanes[i] for i in idx], globe, planned[idx], TWO_WHEELER_RTOL if two_wheeler else RTOL)
+        if two_wheeler:
+            out[idx] = _unsearched(out[idx])
     return out
+
+
+def _unsearched(band) -> np.ndarray:
+    """A two-wheeler's band with an edge at the fastest turn its solver seeks
+    (steady.MAX_SPEED, a rear wheel's 100 m/s) made NaN: the lane holds to
+    there, and the edge itself lies beyond what is searched (as an edge
+    beyond 16 times the planned speed is NaN)."""
+    from deathsphere.physics.two_wheeler.steady import MAX_SPEED
+
+    return np.where(band >= MAX_SPEED * (1.0 - 1e-8), np.nan, band)

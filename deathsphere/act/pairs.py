@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from deathsphere.act.envelope import clearance, overlap_clearance
+from deathsphere.act.envelope import clearance, overlap_clearance, segments_clearance
 from deathsphere.act.lipschitz import refine_intervals
 
 #: Every least clearance is found to this [m].
@@ -106,7 +106,7 @@ def _clearance_at(a, b, clock_a=1.0):
     radii = 0.5 * (a.width_m + b.width_m)
 
     def f(t):
-        return overlap_clearance(*a.ends(t, clock_a), *b.ends(t), radii)
+        return segments_clearance(a.segment_ends(t, clock_a), b.segment_ends(t), radii)
     return f
 
 
@@ -151,6 +151,16 @@ def _grid_part(duration: float, n: int, start: int, stop: int) -> np.ndarray:
 def _chunk_clearances(lanes, pairs, x, bound) -> list[tuple[float, float]]:
     """[(least clearance, when)] of the pairs over the evenly spaced times x:
     every lane sampled once, the pairs' distances in batches, each refined."""
+    several = [p for p in pairs if lanes[p[0]].body is not None or lanes[p[1]].body is not None]
+    if several:
+        # a two-wheeler's envelope is several segments: its pairs one by one, the others batched as before
+        simple = [p for p in pairs if p not in several]
+        found = dict(zip(simple, _chunk_clearances(lanes, simple, x, bound)))
+        for i, j in several:
+            f = _clearance_at(lanes[i], lanes[j])
+            found[(i, j)] = deepest(f, *refine(f, x, f(x), bound[i] + bound[j]), float(x[0]), float(x[-1]),
+                                    bound[i] + bound[j], 0.5 * (lanes[i].width_m + lanes[j].width_m))
+        return [found[p] for p in pairs]
     ends = [lane.ends(x) for lane in lanes]
     out = []
     per_batch = max(1, BATCH_SAMPLES // x.size)
@@ -177,7 +187,7 @@ def least_clearance(a, b, duration: float, *, clock_a: float = 1.0) -> tuple[flo
         meridian_b = b.at_angle(np.zeros(1))
 
         def apart(delta):
-            return clearance(a.at_angle(delta), meridian_b, a.width_m, b.width_m)
+            return clearance(a.at_angle(delta), meridian_b, a.width_m, b.width_m, a.segments, b.segments)
 
         # phi_a - phi_b = delta0 + (Omega_a - Omega_b) t; a point moves its reach per radian at most
         c, delta = deepest(apart, *minimise(apart, 0.0, 2 * math.pi, a.reach), 0.0, 2 * math.pi, a.reach,
@@ -242,11 +252,16 @@ def where_closest(a, b, t: float, ground) -> dict:
     0..360)."""
     from deathsphere.act.envelope import segment_distance
 
-    (p0, p1), (q0, q1) = a.ends(np.array([t])), b.ends(np.array([t]))
+    now = np.array([t])
+    # the segments of the two envelopes that come closest (a single-contact machine has one)
+    (p0, p1), (q0, q1) = min(((e, f) for e in a.segment_ends(now) for f in b.segment_ends(now)),
+                             key=lambda ef: float(segment_distance(*ef[0], *ef[1])[0][0]))
     _, s, u = segment_distance(p0, p1, q0, q1)
     mid = 0.5 * (p0 + s * (p1 - p0) + q0 + u * (q1 - q0))[:, 0]
     low = float(ground.lowest)               # the floor's z: -r on the globe, 0 on a drum or a cone
-    return {"height_a": float(p0[2, 0]) - low, "height_b": float(q0[2, 0]) - low, "height": float(mid[2]) - low,
+    contact_a, contact_b = a.ends(now)[0], b.ends(now)[0]      # each envelope's first segment starts at its contact
+    return {"height_a": float(contact_a[2, 0]) - low, "height_b": float(contact_b[2, 0]) - low,
+            "height": float(mid[2]) - low,
             "phi": math.degrees(math.atan2(mid[1], mid[0])) % 360.0}
 
 

@@ -18,6 +18,8 @@ from deathsphere.errors import ParameterError
 from deathsphere.records.machine import Machine
 from deathsphere.records.machine_files import FILE_KEYS
 from deathsphere.records.machine_presets import PRESETS, as_machine
+from deathsphere.records.two_wheeler import TwoWheeler
+from deathsphere.records.two_wheeler_presets import TWO_WHEELERS
 from deathsphere.requests import decode
 from deathsphere.requests.arena import arena, is_globe
 from deathsphere.requests.keys import Keys
@@ -93,6 +95,8 @@ class Rider:
 
     request: requests.RiderRequest
     ground: object
+    #: the plan's ``width`` [m] of a two-wheeler (whose record has none; a machine's is its record's)
+    width_m: float | None = None
 
     name = property(lambda self: self.request.name)
     machine = property(lambda self: self.request.body)
@@ -102,7 +106,7 @@ class Rider:
 
     @property
     def width(self) -> float:
-        return self.machine.width
+        return self.machine.width if self.width_m is None else self.width_m
 
     @property
     def theta_deg(self) -> float:
@@ -321,16 +325,19 @@ def _machine(where: str, raw, base_dir: pathlib.Path | None) -> Machine:
         _fail(where, "machine", f"must be a preset's name, a machine file or a table of parameters (got {raw!r})")
     if raw.strip().lower() in PRESETS:
         return PRESETS[raw.strip().lower()]
+    if raw.strip().lower() in TWO_WHEELERS:
+        return TWO_WHEELERS[raw.strip().lower()]
     path = pathlib.Path(raw)
     if base_dir is not None and not path.is_absolute():
         path = base_dir / path
-    if path.suffix.lower() in (".toml", ".csv") and path.is_file():
-        try:
-            return decode.decode_machine_file(path)
+    if path.suffix.lower() in (".toml", ".csv", ".txt") and path.is_file():
+        try:      # ride's --machine-file reader: a two-wheeler's file or a single-contact machine's
+            return decode.read_machine_file(path)
         except ParameterError as exc:
             _fail(where, "machine", str(exc))
-    _fail(where, "machine", f"unknown machine {raw!r} (a preset: {' | '.join(PRESETS)}; or a .toml/.csv machine "
-                            "file; or an inline table)")
+    _fail(where, "machine", f"unknown machine {raw!r} (a preset: {' | '.join(PRESETS)}; a two-wheeler: "
+                            f"{' | '.join(TWO_WHEELERS)}; or a .toml/.csv machine file or a two-wheeler's .txt; or "
+                            "an inline table)")
 
 
 def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
@@ -346,6 +353,8 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     if raw.get("lane") not in decode.LANES:     # a plan names its lane (no default)
         keys.fail("lane", f"must be horizontal or vertical (got {raw.get('lane')!r})")
     machine = _machine(keys.where, raw.get("machine", "stunt125"), base_dir)
+    if isinstance(machine, TwoWheeler):
+        return _two_wheeler_rider(keys, raw, machine, globe)
     if "width" in raw:
         machine = replace(machine, width=typed_value(keys, "width", raw["width"], "length", "width"))
     if machine.width is None:
@@ -360,6 +369,30 @@ def _rider(i: int, raw, globe: Globe, base_dir) -> Rider:
     if not globe.is_globe:
         _off_the_axis(keys, rider, globe.ground)
     return Rider(request=rider, ground=globe.ground)
+
+
+def _two_wheeler_rider(keys: Keys, raw: dict, machine: TwoWheeler, globe: Globe) -> Rider:
+    """A two-wheeler rider (docs/show.md, "Two-wheeler riders"): a
+    horizontal lane held by its rear contact's speed, ``ride``'s steady
+    turn there; its width from the plan (the record has none)."""
+    if raw.get("lane") == "vertical":
+        keys.fail("lane", f"a two-wheeler ({machine.name!r}) rides horizontal lanes only in a show (its vertical "
+                          "loop is not analysed: ride it on a single-contact machine)")
+    held = next((k for k in ("com_speed", "period", "same_lap_as") if k in raw), None)
+    if held is not None:
+        keys.fail(held, f"a two-wheeler's lane is held by speed (its rear contact's, as ride's --speed); {held} is "
+                        "a single-contact machine's hold in a show")
+    if "width" not in raw:
+        keys.fail("width", f"two-wheeler {machine.name!r} has no width: give width (handlebar or shoulders)")
+    width = typed_value(keys, "width", raw["width"], "length", "width")
+    if "speed" not in raw:
+        keys.fail("speed", "a two-wheeler's horizontal lane needs speed (its rear contact's along the ground)")
+    if not globe.is_globe:
+        _on_a_wall(keys, raw, globe.ground)
+    rider = decode.decode_rider(raw, keys, table_reader(keys), machine, globe.ground, plan=True)
+    if not globe.is_globe:
+        _off_the_axis(keys, rider, globe.ground)
+    return Rider(request=rider, ground=globe.ground, width_m=width)
 
 
 def _off_the_axis(keys: Keys, rider, ground) -> None:

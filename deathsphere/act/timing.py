@@ -31,7 +31,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from deathsphere.act.envelope import overlap_clearance
+from deathsphere.act.envelope import overlap_clearance, segments_clearance
 from deathsphere.act.lipschitz import refine_intervals
 from deathsphere.act.pairs import SAME_RATE_RTOL, TOLERANCE_M, is_geometric
 
@@ -76,13 +76,15 @@ def phase_clearances_each(lane, others, duration: float, steps: int = PHASE_STEP
     least = np.full((len(others), steps), np.inf)
     times = np.arange(int(math.ceil(duration / dt)) + 1) * dt
     for o, other in enumerate(others):
-        q0, q1 = _segments(other, times)
-        radii = 0.5 * (lane.width_m + other.width_m)
-        for start in range(0, times.size, SLICE):
-            j = np.arange(start, min(start + SLICE, times.size))
-            idx = (j[None, :] + k[:, None]) % steps                 # (steps, slice): the loop shifted by k
-            c = overlap_clearance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j], radii, PHASE_AXIS_POINTS)
-            least[o] = np.minimum(least[o], c.min(axis=1))
+        # a two-wheeler's envelope is several segments: the least over them
+        for q0, q1 in ([_segments(other, times)] if other.body is None else other.segment_ends(times)):
+            radii = 0.5 * (lane.width_m + other.width_m)
+            for start in range(0, times.size, SLICE):
+                j = np.arange(start, min(start + SLICE, times.size))
+                idx = (j[None, :] + k[:, None]) % steps                 # (steps, slice): the loop shifted by k
+                c = overlap_clearance(p0[:, idx], p1[:, idx], q0[:, None, j], q1[:, None, j], radii,
+                                      PHASE_AXIS_POINTS)
+                least[o] = np.minimum(least[o], c.min(axis=1))
     return phases, least
 
 
@@ -180,7 +182,8 @@ def drift_time(a, b, min_clearance: float, error: float = DRIFT_ERROR) -> float:
         soonest = math.inf
         for sense in (1.0, -1.0):
             def apart(x, sense=sense):
-                return clearance(a.at_angle(start + sense * x), meridian_b, a.width_m, b.width_m)
+                return clearance(a.at_angle(start + sense * x), meridian_b, a.width_m, b.width_m, a.segments,
+                                 b.segments)
             soonest = min(soonest, first_below(apart, 0.0, 2 * math.pi, a.reach, min_clearance) / rate)
         return soonest
     horizon = (1.0 / error + 1.0) * max(a.period_s, b.period_s)
@@ -188,7 +191,7 @@ def drift_time(a, b, min_clearance: float, error: float = DRIFT_ERROR) -> float:
     soonest = math.inf
     for clock in (1.0 + error, 1.0 - error):
         def gap(t, clock=clock):
-            return overlap_clearance(*a.ends(t, clock), *b.ends(t), radii)
+            return segments_clearance(a.segment_ends(t, clock), b.segment_ends(t), radii)
         lipschitz = clock * a.speed_bound() + b.speed_bound()
         soonest = min(soonest, first_below(gap, 0.0, min(horizon, soonest), lipschitz, min_clearance))
     return soonest

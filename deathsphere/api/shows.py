@@ -93,7 +93,10 @@ class ShowResult:
 
     def positions(self, t) -> dict:
         """Each rider's 'contact', 'head' and 'com' points (3, n) [m, the
-        globe's frame] at the times t (n,) [s], by name; ParameterError for
+        globe's frame] at the times t (n,) [s], by name (a two-wheeler's
+        'contact' its rear contact, and the other ends of its envelope's
+        segments: 'front_contact', 'rear_back', 'front_front', 'rear_top',
+        'front_top'); ParameterError for
         a time that is not a finite number."""
         try:
             t = np.asarray(t, dtype=float).reshape(-1)
@@ -102,7 +105,8 @@ class ShowResult:
         if not np.isfinite(t).all():
             bad = t[~np.isfinite(t)][0]
             raise ParameterError(f"t must be finite times in seconds (got {float(bad)!r})", "t")
-        return {lane.name: {k: v for k, v in lane.kinematics(t).items() if k in ("contact", "head", "com")}
+        return {lane.name: {k: v for k, v in lane.kinematics(t).items()
+                            if k in ("contact", "head", "com") or any(k in pair for pair in lane.segments)}
                 for lane in self.lanes}
 
     def fall(self, rider: str, t: float, speed_fraction: float = 0.5) -> Table:
@@ -119,6 +123,7 @@ class ShowResult:
         names = [lane.name for lane in self.lanes]
         if rider not in names:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
+        _falls_of(self.lanes[names.index(rider)])
         # a time beyond the act is not in it (and an enormous one rounds the flight away)
         t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
@@ -156,6 +161,7 @@ class ShowResult:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
         t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
+        _falls_of(self.lanes[names.index(rider)])
         res = simulate_falls(self.lanes, self.plan.globe, [names.index(rider)], [t], [speed_fraction])
         flight = float(res["fall_time"][0])
         if not math.isfinite(flight):
@@ -182,6 +188,8 @@ class ShowResult:
             raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ParameterError(f"seed must be a whole number >= 0 (got {seed!r})", "seed")
+        for lane in self.lanes:             # a Monte Carlo draws every rider
+            _falls_of(lane)
         rng = np.random.default_rng(int(seed))
         rider = rng.integers(0, len(self.lanes), int(n))
         t = rng.uniform(0.0, self.duration_s, int(n))
@@ -203,6 +211,15 @@ class ShowResult:
                for key in parts[0]}
         res = _typed_heights(res, self.plan, rider)
         return _outcomes_table(self, res, rider, t, fraction), _summary_table(self, res, rider)
+
+
+def _falls_of(lane: Lane) -> None:
+    """A two-wheeler's fall is not analysed (its flight starts from two
+    contacts and a steered front frame, not one rigid body): refused, one
+    line naming the rider."""
+    if lane.body is not None:
+        raise ParameterError(f"rider {lane.name!r}: a two-wheeler's fall is not analysed (a fall is a single-contact "
+                             "machine's: fail another rider)", "rider")
 
 
 #: The most falls one Monte Carlo draws, and how many are evaluated at once.

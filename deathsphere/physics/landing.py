@@ -22,7 +22,10 @@ z cos(beta) is concave for the same reasons (sin, cos >= 0).  A concave q
 with q(0) >= 0 is >= 0 on one interval from t = 0 and negative after, so
 the first scanned instant with q <= 0 brackets the only crossing.  On a
 cone leaning in or a profile q need not be concave: a graze between two
-scanned instants (shorter than T / :data:`SCAN`) is then not seen.
+scanned instants (shorter than T / :data:`SCAN`) is found by q's
+Lipschitz bound, |dq/dt| <= the point's greatest speed
+(:mod:`deathsphere.physics.first_touch`), which on a concave q finds
+nothing the scan had not.
 
 Vectorised over a trailing batch axis n: positions and velocities (3, n),
 g broadcast to (n,); the scan is (3, n, SCAN), the bisection steps each
@@ -86,6 +89,7 @@ def landing_on(x0, v0, ground, g):
     not finite or g not positive: then NaN and on_floor False).
     """
     from deathsphere.physics.fall import LANDS, NOT_FLOWN, STARTS_OUTSIDE
+    from deathsphere.physics.first_touch import first_crossing
 
     x0 = np.asarray(x0, dtype=float)
     v0 = np.asarray(v0, dtype=float)
@@ -109,9 +113,11 @@ def landing_on(x0, v0, ground, g):
     below = q <= 0.0
     below[:, -1] = True                                                # by T he is on the floor
     first = np.argmax(below, axis=1)
-    rows = np.arange(n)
-    hi = ts[rows, first]
-    lo = np.where(first > 0, ts[rows, np.maximum(first - 1, 0)], 0.0)
+    # a graze between scanned instants, where q is not concave, found by its Lipschitz bound (first_touch.py)
+    fastest = np.maximum(np.sqrt(np.sum(v0 * v0, axis=0)),
+                         np.sqrt(v0[0] ** 2 + v0[1] ** 2 + (v0[2] - g * t_max) ** 2)) * (1.0 + 1e-9)
+    lo, hi = first_crossing(lambda rows, t: _gap(ground, _at(x0[:, rows], v0[:, rows], g[rows], t))[0],
+                            ts, q, first, np.where(~bad & (q0 > tol), q0, -1.0), fastest)
     for _ in range(_BISECTIONS):                                       # bisection steps, each over every flight
         mid = 0.5 * (lo + hi)
         inside = _gap(ground, _at(x0, v0, g, mid))[0] > 0.0

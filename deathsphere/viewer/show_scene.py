@@ -200,10 +200,10 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
     for k, name in enumerate(names):
         colour = COLOURS[k % len(COLOURS)]
         in_pair = pair is not None and name in (pair["a"], pair["b"])
-        track = Track(name=name, t=t, points={key: np.asarray(positions[name][key], dtype=np.float64)
-                                              for key in ("contact", "head", "com")},
+        track = Track(name=name, t=t, points={key: np.asarray(value, dtype=np.float64)
+                                              for key, value in positions[name].items()},
                       meta={"lane": lanes[k], "radius": 0.5 * widths[k], "colour": colour})
-        track.draw = _rider_draw(track, in_pair, pair, near)
+        track.draw = _rider_draw(track, in_pair, pair, near, _segments(result, name))
         for fall in drawn:
             if fall["rider"] == name:
                 _add_fall(track, fall)
@@ -236,15 +236,28 @@ def act_scene(result, falls: Table | None = None, *, max_frames: int = MAX_FRAME
     return scene
 
 
-def _rider_draw(track: Track, in_pair: bool, pair: dict | None, near: float) -> list:
-    """A rider: his envelope, a capsule from the contact to the head, and
-    his name; the pair of least clearance ringed, red around its moment."""
-    capsule = {"kind": "capsule", "name": track.name, "points": ["contact", "head"],
-               "radius": track.meta["radius"], "colour": track.meta["colour"], "print": track.meta["colour"]}
-    if in_pair:
-        capsule.update({"halo": "rgba(255,59,48,0.55)", "highlight": {"colour": _PAIR, "from": pair["t"] - near,
-                                                                       "until": pair["t"] + near}})
-    return [capsule, {"kind": "label", "name": track.name, "point": "head", "text": track.name}]
+def _segments(result, name: str) -> tuple:
+    """The rider's envelope's segments by the names of their ends (a
+    single-contact machine's one, contact to head; a two-wheeler's several)."""
+    lanes = getattr(result, "lanes", None) or []
+    return next((tuple(lane.segments) for lane in lanes if lane.name == name), (("contact", "head"),))
+
+
+def _rider_draw(track: Track, in_pair: bool, pair: dict | None, near: float,
+                segments=(("contact", "head"),)) -> list:
+    """A rider: his envelope, a capsule per segment (a single-contact
+    machine's from the contact to the head; a two-wheeler's from its
+    contacts, head and wheels), and his name; the pair of least clearance
+    ringed, red around its moment."""
+    out = []
+    for ends in segments:
+        capsule = {"kind": "capsule", "name": track.name, "points": list(ends),
+                   "radius": track.meta["radius"], "colour": track.meta["colour"], "print": track.meta["colour"]}
+        if in_pair:
+            capsule.update({"halo": "rgba(255,59,48,0.55)", "highlight": {"colour": _PAIR, "from": pair["t"] - near,
+                                                                           "until": pair["t"] + near}})
+        out.append(capsule)
+    return out + [{"kind": "label", "name": track.name, "point": "head", "text": track.name}]
 
 
 def _add_fall(track: Track, fall: dict) -> None:
@@ -303,7 +316,8 @@ def _wall(result, probe: dict) -> dict | None:
     r = float(np.max(rho))
     return {"ground": drawn, "r": r, "target": [0.0, 0.0, 0.5 * float(z[-1] + z[0])],
             "extent": 1.05 * max(r, 0.5 * float(z[-1] - z[0])),
-            "what": f"on a {ground.name} of {2 * float(rho[1]):.2f} m"}
+            # its widest: a drum's diameter, a cone's or a bowl's rim (a dome's floor may be a point)
+            "what": f"on a {ground.name} {2 * r:.2f} m across"}
 
 
 def _title(n: int, r: float, t_end: float, pair: dict | None, where: str | None = None) -> str:

@@ -5,6 +5,8 @@ clearance, the speeds that work, the hands-free speeds, how soon a
 disturbance doubles), other columns go first, and "why the others fail"
 takes one line per lane (docs/two-wheeler.md sec. 10)."""
 
+import functools
+
 import pytest
 from rich.cells import cell_len
 from test_terminal_views import ANSI, run_in_pty
@@ -15,10 +17,13 @@ RIDER = ("ride", "--machine", "sport-tourer", "--steer", "locked", "--diameter",
 ASKED = ("lean°", "T_δ", "clear", "v rear", "free", "to 2×")
 
 
-def _screen(columns: int) -> list[str]:
+@functools.cache
+def _screen(columns: int) -> tuple[str, ...]:
+    """The screen at a width, drawn once for the tests that read it (a
+    fresh interpreter on a pseudo-terminal: some 1.5 s)."""
     text = ANSI.sub("", run_in_pty(RIDER, columns))
     assert "Traceback" not in text, text
-    lines = text.splitlines()
+    lines = tuple(text.splitlines())
     assert max(cell_len(line) for line in lines) <= columns, text
     return lines
 

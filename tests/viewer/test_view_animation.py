@@ -14,7 +14,9 @@ pytest.importorskip("matplotlib")
 
 def test_gif_has_the_frames_and_size(tmp_path):
     Image = pytest.importorskip("PIL.Image")
-    series, summary, states, _ = run_case("unstable", periods=1)     # 1.56 s, ends in contact lost
+    # 0.4 s of the run: 13 frames at the loop's default size (the event's last frame is
+    # test_view_truth.py's test_the_gif_clock_is_true; each frame here costs 70 ms)
+    series, summary, states, _ = run_case("unstable", seconds=0.4)
     scene = build_scene(series, summary, body_frames(summary, states))
     times, factor = loop_plan(scene)
     # 25 frames a second of loop, each factor / 25 s of the run, ending on the event
@@ -44,7 +46,7 @@ def test_mp4_where_ffmpeg_is(tmp_path):
 
     if not has_ffmpeg():
         pytest.skip("no ffmpeg on PATH: .mp4 is refused (tested in test_view_preflight.py)")
-    series, summary, states, _ = run_case("wheel_inside", periods=0.15)
+    series, summary, states, _ = run_case("wheel_inside", periods=0.05)      # 14 frames
     out = tmp_path / "orbit.mp4"
     write_view(out, series, summary, body_frames(summary, states))
     head = out.read_bytes()[:64]

@@ -166,7 +166,9 @@ def test_writing_a_file_prints_nothing_on_stdout(tmp_path, run, ext):
     if ext in ("gif", "png"):
         pytest.importorskip("matplotlib")
     out = tmp_path / f"o.{ext}"
-    res = run("simulate", "--theta", "90", "--alpha", "80", "--perturb", "0.06", "--periods", "0.5",
+    # a GIF of a quarter of a second of loop: 7 frames, not 49
+    loop = ("--loop-seconds", "0.25") if ext == "gif" else ()
+    res = run("simulate", "--theta", "90", "--alpha", "80", "--perturb", "0.06", "--periods", "0.5", *loop,
               "--output", str(out))
     assert res.exit_code == 0, res.stderr
     assert res.stdout == "" and out.stat().st_size > 0
