@@ -170,7 +170,8 @@ class ShowResult:
         return {"t": float(res["t_lost"][0]) + s, "com": flight_point(res["x0"], res["v0"], s, self.plan.globe.g)}
 
     def falls(self, n: int, seed: int = 0, scheduler=None, progress=None) -> tuple[Table, Table]:
-        """Monte Carlo of ``n`` falls: a random rider, a random time in the
+        """Monte Carlo of ``n`` falls: a random rider (of the single-contact
+        machines: a two-wheeler's fall is not analysed, it is an obstacle), a random time in the
         act, a random speed fraction in [0, 1), drawn from ``seed``;
         evaluated vectorised, in chunks, on a dask.distributed cluster with
         ``scheduler`` (an address or a Client; the same rows in the same
@@ -188,10 +189,14 @@ class ShowResult:
             raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ParameterError(f"seed must be a whole number >= 0 (got {seed!r})", "seed")
-        for lane in self.lanes:             # a Monte Carlo draws every rider
-            _falls_of(lane)
+        # the falling rider is drawn from those whose fall is analysed (a
+        # two-wheeler rides on as the others' obstacle); an act of
+        # single-contact machines draws every rider, as it always has
+        fallers = np.array([i for i, lane in enumerate(self.lanes) if lane.body is None], dtype=int)
+        if fallers.size == 0:
+            _falls_of(self.lanes[0])
         rng = np.random.default_rng(int(seed))
-        rider = rng.integers(0, len(self.lanes), int(n))
+        rider = fallers[rng.integers(0, fallers.size, int(n))]
         t = rng.uniform(0.0, self.duration_s, int(n))
         fraction = rng.uniform(0.0, 1.0, int(n))
         client, own = (None, False)

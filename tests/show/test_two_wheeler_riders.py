@@ -208,7 +208,10 @@ def test_a_two_wheelers_fall_is_refused_naming_the_rider(act):
     with pytest.raises(ParameterError, match="^rider 'Ana': a two-wheeler's fall is not analysed"):
         act.fall("Ana", 0.5)
     with pytest.raises(ParameterError, match="^rider 'Ana': "):
-        act.falls(10)
+        deathsphere.show(_plan(_two_wheeler())).falls(10)
+    # a mixed act's Monte Carlo: only the machine falls, the two-wheeler is among its victims
+    outcomes, _ = act.falls(400, seed=3)
+    assert set(outcomes["rider"]) == {"Cal"} and "Ana" in set(outcomes["victim"])
     # a machine's fall into a two-wheeler: the victim's envelope is its segments
     fall = act.fall("Cal", 0.5, 0.0)
     assert fall[0]["victim"] == "Ana"
