@@ -149,7 +149,7 @@ def ride_command(theta, height, alpha, speed, com_speed, period, machine, machin
       deathsphere ride --diameter 16ft --height 1.2m --speed 10:30:5km/h \\
           --mu 0.8:1:0.1 --summary
       deathsphere ride --vertical --theta 90 --v-top 20:40:5km/h --diameter 16ft
-      deathsphere ride --vertical --surface profile --profile egg.csv \\
+      deathsphere ride --vertical --surface profile --profile examples/egg.csv \\
           --theta 90 --v-top 20:40:5km/h
       deathsphere ride --theta 0:180:0.1 --alpha -90:90:0.1 --jobs 2 \\
           --output ride.parquet

@@ -192,7 +192,8 @@ MACHINE_FILES = {".toml": 'name = "my bike"\nmass = 160\n', ".csv": "name,mass\n
 
 def provided(args: tuple, folder: Path) -> tuple:
     """What an example leaves to the person, provided: the machine file it
-    names is written in ``folder``, and a show's plan (one shipped in
+    names is written in ``folder``, a profile shipped in examples/ copied
+    there, and a show's plan (one shipped in
     examples/, else the one ``show --example`` prints); a dask scheduler's
     address is left out (the output is that of a local run, docs/contract.md)."""
     if args and args[0] == "show":
@@ -209,6 +210,9 @@ def provided(args: tuple, folder: Path) -> tuple:
         if arg == "--scheduler":
             skip = True
             continue
+        if i > 0 and args[i - 1] == "--profile" and (README.parent / arg).is_file() and not (folder / arg).exists():
+            (folder / arg).parent.mkdir(parents=True, exist_ok=True)       # a profile shipped in examples/
+            (folder / arg).write_bytes((README.parent / arg).read_bytes())
         if i > 0 and args[i - 1] == "--machine-file" and not (folder / arg).exists():
             (folder / arg).write_text(MACHINE_FILES[Path(arg).suffix.lower()], encoding="utf-8")
         out.append(arg)
