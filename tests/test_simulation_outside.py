@@ -93,7 +93,7 @@ def _energy(state, p, a, k, ball):
 
 CASES = {
     # a wheel on a cone's roof (an upright drum's outside has no steady orbit:
-    # test_a_drums_outside_loses_contact_at_once); large bodies, so that three laps take few steps
+    # test_a_drums_outside_loses_contact_at_once); large bodies, so that a lap takes few steps
     "cone120_wheel": dict(surface="cone", diameter=10, wall_angle=120, height=2, alpha=235, a=2.0, perturb=0.5),
     # a ball on a flatter roof, on a lane orbit calls stable
     "cone150_ball": dict(surface="cone", diameter=10, wall_angle=150, height=0.5, body="sphere", omega=1.5, a=2.0,
@@ -106,7 +106,10 @@ CASES = {
 
 @pytest.mark.parametrize("name", list(CASES))
 def test_energy_and_contact_hold_outside(name):
-    typed = {"periods": 3, **CASES[name]}
+    """Over a lap, to a third of the three laps' 1e-9 of the kinetic energy
+    (a drift growing with time fails here as it would over three; measured
+    over three laps: 2.1e-11 and 1.3e-11 on the cones)."""
+    typed = {"periods": 1, **CASES[name]}
     ball = typed.get("body") == "sphere"
     series, summary, states, ground = _run(rtol=1e-12, **typed)
     assert summary["status"][0] == "completed"
@@ -122,7 +125,7 @@ def test_energy_and_contact_hold_outside(name):
     # cone's wall, 0.17 m on cone120_wheel)
     assert np.all(_distance(ground, states[0:3]) > 0.05)
     energy, kinetic = _energy(states, p, a, k, ball)
-    assert np.max(np.abs(energy - energy[0])) < 1e-9 * np.min(kinetic)
+    assert np.max(np.abs(energy - energy[0])) < 1e-9 / 3 * np.min(kinetic)
     # the kick moved it: the run is not a fixed point's
     assert np.ptp(np.asarray(series["height_m"], dtype=float)) > 1e-3
 
