@@ -186,9 +186,33 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
     ``start:stop`` picks a slice of the azimuths, so that a long orbit can be
     written piece by piece in bounded memory; an invalid request's row comes
     with the slice that starts at 0."""
-    reason_words = validate_vertical(req)
+    def evaluate(rows, phi):
+        theta, outside, rate = _top_rate(req, rows)
+        return vertical_orbit.vertical_profile(phi[None, :], theta[:, None], rate[:, None], req["a"][rows, None],
+                                               req["r"][rows, None], req["k"][rows, None], req["g"][rows, None],
+                                               outside[:, None], req["mu"][rows, None])
+
+    columns, order = point_columns(req, validate_vertical(req), vertical_orbit.phi_grid(points), points, start,
+                                   stop, evaluate, ("v_cm_m_s", "omega_rad_s"))
+    return Table({name: columns[name][order] for name in POINT_COLUMNS})
+
+
+#: The physics' keys of a loop's points and the columns they fill.
+POINT_KEYS = (("omega", "omega_rad_s"), ("v_cm", "v_cm_m_s"), ("accel", "accel_m_s2"),
+              ("normal", "normal_per_mass_m_s2"), ("along", "friction_along_per_mass_m_s2"),
+              ("meridional", "friction_meridional_per_mass_m_s2"), ("mu_required", "mu_required"))
+
+
+def point_columns(req: dict, reason_words, phi_all, points: int, start: int, stop, evaluate, echoed) -> tuple:
+    """(columns, row order) of a loop's points table: ``points`` angles phi
+    (``phi_all`` [rad], sliced ``start:stop``) for every valid request
+    (``reason_words`` empty), rows grouped by request, an invalid request's
+    one row with the slice that starts at 0; ``evaluate(rows, phi)`` the
+    physics (on the globe or round a profile's loop), its dict of
+    :data:`POINT_KEYS`, ``status`` and ``reason`` of shape (rows, phi); at the
+    top (phi = 0 and 360 deg) the ``echoed`` columns given print as given."""
     rows = np.flatnonzero(reason_words == "")
-    phi = vertical_orbit.phi_grid(points)[start:stop]
+    phi = phi_all[start:stop]
     bad = np.flatnonzero(reason_words != "") if start == 0 else np.empty(0, dtype=np.int64)
     source = np.concatenate([np.repeat(rows, phi.size), bad])
     m = rows.size * phi.size
@@ -198,13 +222,8 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
     reason[m:] = reason_words[source[m:]]
     phi_col = np.full(source.size, np.nan)
     if rows.size:
-        theta, outside, rate = _top_rate(req, rows)
-        res = vertical_orbit.vertical_profile(phi[None, :], theta[:, None], rate[:, None], req["a"][rows, None],
-                                        req["r"][rows, None], req["k"][rows, None], req["g"][rows, None],
-                                        outside[:, None], req["mu"][rows, None])
-        for key, col in (("omega", "omega_rad_s"), ("v_cm", "v_cm_m_s"), ("accel", "accel_m_s2"),
-                         ("normal", "normal_per_mass_m_s2"), ("along", "friction_along_per_mass_m_s2"),
-                         ("meridional", "friction_meridional_per_mass_m_s2"), ("mu_required", "mu_required")):
+        res = evaluate(rows, phi)
+        for key, col in POINT_KEYS:
             cols[col][:m] = np.asarray(res[key]).reshape(-1)
         status[:m] = np.asarray(res["status"]).reshape(-1)
         reason[:m] = REASON_TEXT[np.asarray(res["reason"]).reshape(-1)]
@@ -214,8 +233,7 @@ def vertical_points(req: dict, points: int, start: int = 0, stop: int | None = N
         "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],
         "phi_deg": phi_col, "status": STATUS_LABELS[status], "reason": reason, **cols,
     }
-    # at the top (phi = 0 and 360 deg) the speed or rate given is printed as given
+    given = {"v_cm_m_s": "v_top", "omega_rad_s": "phidot_top"}
     top = (phi_col == 0.0) | (phi_col == 360.0)
-    echo_given(columns, {"v_cm_m_s": np.where(top, req["v_top"][source], np.nan),
-                         "omega_rad_s": np.where(top, req["phidot_top"][source], np.nan)})
-    return Table({name: columns[name][order] for name in POINT_COLUMNS})
+    echo_given(columns, {col: np.where(top, req[given[col]][source], np.nan) for col in echoed})
+    return columns, order

@@ -27,8 +27,8 @@ from deathsphere.results.vertical import (
     SUMMARY_KEYS,
     COLUMNS,
     POINT_COLUMNS,
+    point_columns,
     validate_vertical,
-    phi_degrees,
 )
 
 #: The arena's columns, appended to the globe's.
@@ -123,34 +123,13 @@ def vertical_points_on(req: dict, loop, points: int, start: int = 0, stop: int |
     to 360 deg (the turn of the loop's tangent: on a circle the centre's
     azimuth), as :func:`deathsphere.results.vertical.vertical_points`, with
     the arena's columns; ``start:stop`` a slice of the angles."""
-    reason_words = _validate_on(req)
-    rows = np.flatnonzero(reason_words == "")
-    phi = np.linspace(0.0, 2 * np.pi, int(points))[start:stop]
-    bad = np.flatnonzero(reason_words != "") if start == 0 else np.empty(0, dtype=np.int64)
-    source = np.concatenate([np.repeat(rows, phi.size), bad])
-    m = rows.size * phi.size
-    cols = {c: np.full(source.size, np.nan) for c in POINT_COLUMNS[5:]}
-    status = np.full(source.size, Status.INVALID, dtype=np.int8)
-    reason = np.empty(source.size, dtype=object)
-    reason[m:] = reason_words[source[m:]]
-    phi_col = np.full(source.size, np.nan)
-    if rows.size:
-        res = vertical_orbit_on.loop_points_on(loop, phi, _top_speed(req, rows, loop), req["a"][rows],
-                                               req["k"][rows], req["g"][rows], req["mu"][rows])
-        for key, col in (("omega", "omega_rad_s"), ("v_cm", "v_cm_m_s"), ("accel", "accel_m_s2"),
-                         ("normal", "normal_per_mass_m_s2"), ("along", "friction_along_per_mass_m_s2"),
-                         ("meridional", "friction_meridional_per_mass_m_s2"), ("mu_required", "mu_required")):
-            cols[col][:m] = np.asarray(res[key]).reshape(-1)
-        status[:m] = np.asarray(res["status"]).reshape(-1)
-        reason[:m] = REASON_TEXT[np.asarray(res["reason"]).reshape(-1)]
-        phi_col[:m] = np.tile(phi_degrees(points)[start:stop], rows.size)
-    order = np.argsort(source, kind="stable")
-    columns = {
-        "input_row": req["input_row"][source].astype(np.int64), "theta_deg": req["theta"][source],
-        "phi_deg": phi_col, "status": STATUS_LABELS[status], "reason": reason, **cols,
-    }
-    top = (phi_col == 0.0) | (phi_col == 360.0)
-    echo_given(columns, {"v_cm_m_s": np.where(top, req["v_top"][source], np.nan)})
-    columns["surface"] = np.full(source.size, loop.ground.name, dtype=object)
-    columns["height_m"] = np.full(source.size, loop.height)
+    def evaluate(rows, phi):
+        return vertical_orbit_on.loop_points_on(loop, phi, _top_speed(req, rows, loop), req["a"][rows],
+                                                req["k"][rows], req["g"][rows], req["mu"][rows])
+
+    columns, order = point_columns(req, _validate_on(req), np.linspace(0.0, 2 * np.pi, int(points)), points, start,
+                                   stop, evaluate, ("v_cm_m_s",))
+    n = order.size
+    columns["surface"] = np.full(n, loop.ground.name, dtype=object)
+    columns["height_m"] = np.full(n, loop.height)
     return Table({name: columns[name][order] for name in POINTS_COLUMNS})
