@@ -1,8 +1,9 @@
-"""Vertical loops inside a closed profile (docs/surfaces.md eqs. S9-S12)
-against the globe's closed forms: rows per second of ``vertical_sweep``
-over top speeds (the summary without stability), on the ellipsoid of
-tests/data and on the globe, and the share of the loop's sampling (once a
-command).
+"""Vertical loops inside a closed profile against the globe's closed forms:
+rows per second of the paper's wheel's ``vertical_sweep`` over top speeds
+(docs/surfaces.md eqs. S9-S12; the summary without stability) and of the
+single-contact machine's ``ride(90, vertical=True, v_top=...)`` (docs/machine.md
+eqs. M25-M30 against M21-M24), on the ellipsoid of tests/data and on the
+globe, and the share of the loop's sampling (once a command).
 
     PYTHONPATH=. OMP_NUM_THREADS=1 python3 benchmarks/bench_vertical_on.py [--rows 10000] [--repeat 3]
 """
@@ -37,9 +38,18 @@ def main():
                                                             stability=False).table(), args.repeat)
     globe = best_of(lambda: deathsphere.vertical_sweep(90, speeds, stability=False).table(), args.repeat)
     sampling = best_of(lambda: Loop.of(ground), args.repeat)
+    machine_speeds = np.linspace(5.0, 40.0, args.rows)
+    machine_on = best_of(lambda: deathsphere.ride(90, vertical=True, v_top=machine_speeds, surface="profile",
+                                                  profile=ground, mu=0.8, max_g=8), args.repeat)
+    machine_globe = best_of(lambda: deathsphere.ride(90, vertical=True, v_top=machine_speeds, diameter="16ft", mu=0.8,
+                                                     max_g=8), args.repeat)
     print(f"{args.rows} loops inside the ellipsoid: {on_profile:.3f} s ({args.rows / on_profile:,.0f} rows/s)")
     print(f"{args.rows} loops on the globe:         {globe:.3f} s ({args.rows / globe:,.0f} rows/s)")
     print(f"the loop's sampling (1024 intervals), once a command: {sampling * 1e3:.1f} ms")
+    print(f"{args.rows} machine's loops inside the ellipsoid: {machine_on:.3f} s "
+          f"({args.rows / machine_on:,.0f} loops/s)")
+    print(f"{args.rows} machine's loops in a 16-ft globe:     {machine_globe:.3f} s "
+          f"({args.rows / machine_globe:,.0f} loops/s)")
 
 
 if __name__ == "__main__":

@@ -36,7 +36,7 @@ ARENA_COLUMNS = ("surface", "height_m", "period_s", "load_max_g", "phi_load_max_
 #: Loops per call of the physics: each is a row of arrays against the loop's
 #: grid of 1025 points, so a call's memory grows with it (512 loops: about
 #: 140 MB at the peak; about 2,500 loops a second on one core,
-#: benchmarks/bench_machine_loop_on.py).
+#: benchmarks/bench_vertical_on.py).
 LOOPS_PER_CALL = 512
 #: The most loops one ``ride --vertical`` on a profile computes (about a
 #: minute at the rate above); the globe's closed forms take far more.
