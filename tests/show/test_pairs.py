@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+from brute_segments import brute_distance
 
 import deathsphere
 from deathsphere.act.lanes import build_lanes
@@ -46,25 +47,6 @@ def test_two_riders_one_lane_phases_apart_closed_form(delta):
     assert got["verdict"] == ("clear" if expect >= 0.15 else "conflict" if expect >= 0 else "collision")
 
 
-def _brute_distance(p0, p1, q0, q1):
-    """Segment distance the long way: the four endpoint-to-segment distances
-    and, where both feet fall inside, the distance of the two lines."""
-    def point_seg(x, a, b):
-        d = b - a
-        s = np.clip(np.sum((x - a) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
-        return np.linalg.norm(x - a - s * d, axis=0)
-
-    best = np.minimum.reduce([point_seg(p0, q0, q1), point_seg(p1, q0, q1), point_seg(q0, p0, p1),
-                              point_seg(q1, p0, p1)])
-    u, v, w = p1 - p0, q1 - q0, p0 - q0
-    a, b, c, d, e = (np.sum(x * y, axis=0) for x, y in ((u, u), (u, v), (v, v), (u, w), (v, w)))
-    den = a * c - b * b
-    s, t = (b * e - c * d) / den, (a * e - b * d) / den
-    inside = (s > 0) & (s < 1) & (t > 0) & (t < 1)
-    line = np.linalg.norm(w + s * u - t * v, axis=0)
-    return np.where(inside, np.minimum(best, line), best)
-
-
 def _with_overlap(clearance, pa, pb, radii, n=101):
     """Where the envelopes overlap, less the overlap across integrated along
     the axes per unit of the radii (docs/show.md), the long way: each axis as
@@ -93,7 +75,7 @@ def test_a_looper_and_a_horizontal_rider_against_sampling_ten_times_finer():
     times = np.linspace(0, span, int(math.ceil(10 * span * lipschitz / FIRST_STEP_M)) + 1)
     a, b = h.kinematics(times), v.kinematics(times)
     radii = 0.5 * (h.width_m + v.width_m)
-    brute = _with_overlap(_brute_distance(a["contact"], a["head"], b["contact"], b["head"]) - radii, a, b, radii)
+    brute = _with_overlap(brute_distance(a["contact"], a["head"], b["contact"], b["head"]) - radii, a, b, radii)
     k = int(np.argmin(brute))
     assert basis == "act"
     assert c <= brute[k] + 1e-12                  # never above a sample: no minimum missed
@@ -111,7 +93,7 @@ def test_horizontal_lanes_of_different_rates_take_the_geometric_least_clearance(
     delta = np.linspace(0, 2 * np.pi, 20001)
     pa, pb = a.at_angle(delta), b.at_angle(np.zeros_like(delta))
     radii = 0.5 * (a.width_m + b.width_m)
-    brute = _brute_distance(pa["contact"], pa["head"], pb["contact"], pb["head"]) - radii
+    brute = brute_distance(pa["contact"], pa["head"], pb["contact"], pb["head"]) - radii
     brute = _with_overlap(brute, pa, pb, radii)
     assert brute.min() - 1e-3 <= row["min_clearance_m"] <= brute.min() + 1e-12
     # whatever the phases

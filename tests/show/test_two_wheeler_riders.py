@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+from brute_segments import brute_distance
 
 import deathsphere
 from deathsphere.act.lanes import build_lanes
@@ -113,26 +114,6 @@ def test_both_wheels_rims_lie_within_the_envelope(name):
             assert d.max() < 0.85 * radius
 
 
-def _brute_distance(p0, p1, q0, q1):
-    """Segment distance the long way: the four endpoint-to-segment distances
-    and, where both feet fall inside, the distance of the two lines."""
-    def point_seg(x, a, b):
-        d = b - a
-        s = np.clip(np.sum((x - a) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
-        return np.linalg.norm(x - a - s * d, axis=0)
-
-    best = np.minimum.reduce([point_seg(p0, q0, q1), point_seg(p1, q0, q1), point_seg(q0, p0, p1),
-                              point_seg(q1, p0, p1)])
-    u, v, w = p1 - p0, q1 - q0, p0 - q0
-    a, b, c, d, e = (np.sum(x * y, axis=0) for x, y in ((u, u), (u, v), (v, v), (u, w), (v, w)))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        den = a * c - b * b
-        s, t = (b * e - c * d) / den, (a * e - b * d) / den
-        inside = (s > 0) & (s < 1) & (t > 0) & (t < 1)
-        line = np.linalg.norm(w + s * u - t * v, axis=0)
-    return np.where(inside, np.minimum(best, line), best)
-
-
 #: A two-wheeler's envelope as docs/show.md states it: rear contact -> head, front contact -> head, rear
 #: contact -> front contact, the wheels' line from the back of the rear rim to the front of the front rim, the
 #: wheels' tops.
@@ -154,7 +135,7 @@ def test_the_certified_clearance_holds_where_the_front_wheel_comes_closest(act):
     # the envelope the show promises (docs/show.md), spelt out here: the contacts, the head, both wheels
     ends_a = [(pa[p], pa[q]) for p, q in PROMISED]
     radii = 0.5 * (a.width_m + b.width_m)
-    each = np.array([_brute_distance(p0, p1, pb["contact"], pb["head"]) for p0, p1 in ends_a]) - radii
+    each = np.array([brute_distance(p0, p1, pb["contact"], pb["head"]) for p0, p1 in ends_a]) - radii
     brute = each.min(axis=0)
     assert brute.min() > 0                          # clear: no overlap's depth enters
     # certified to 1 mm above the true least; the samples miss it by at most half a step's change
@@ -166,7 +147,7 @@ def test_the_certified_clearance_holds_where_the_front_wheel_comes_closest(act):
     front = a.at_angle(np.array([a.phase + a.rate * t[k]]))["front_front"][:, 0]
     assert np.linalg.norm(front - pb["contact"][:, k]) == pytest.approx(brute[k] + radii, abs=1e-6)
     # the head-only envelope is wrong here: its least clearance is far above the certified one
-    head_only = (_brute_distance(pa["contact"], pa["head"], pb["contact"], pb["head"]) - radii).min()
+    head_only = (brute_distance(pa["contact"], pa["head"], pb["contact"], pb["head"]) - radii).min()
     assert head_only > row["min_clearance_m"] + 0.1
 
 
@@ -181,7 +162,7 @@ def test_a_looper_against_a_two_wheeler_over_the_acts_times():
     t = np.linspace(0.0, 2.0, int(math.ceil(10 * 2.0 * lipschitz / 0.05)) + 1)
     pv = v.kinematics(t)
     radii = 0.5 * (h.width_m + v.width_m)
-    brute = np.min([_brute_distance(p0, p1, pv["contact"], pv["head"]) for p0, p1 in h.segment_ends(t)],
+    brute = np.min([brute_distance(p0, p1, pv["contact"], pv["head"]) for p0, p1 in h.segment_ends(t)],
                    axis=0) - radii
     k = int(np.argmin(brute))
     if brute[k] > 0:

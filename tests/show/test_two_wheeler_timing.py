@@ -7,6 +7,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from brute_segments import brute_distance
 
 from deathsphere.act.lanes import build_lanes
 from deathsphere.act.plan import read_plan
@@ -25,27 +26,6 @@ def _two_wheeler(**more):
     return {k: v for k, v in rider.items() if v is not None}
 
 
-def _brute_distance(p0, p1, q0, q1):
-    """Segment distance the long way: the four endpoint-to-segment distances
-    and, where both feet fall inside, the distance of the two lines."""
-    def point_seg(x, a, b):
-        d = b - a
-        s = np.clip(np.sum((x - a) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
-        return np.linalg.norm(x - a - s * d, axis=0)
-
-    p0, p1, q0, q1 = np.broadcast_arrays(p0, p1, q0, q1)
-    best = np.minimum.reduce([point_seg(p0, q0, q1), point_seg(p1, q0, q1), point_seg(q0, p0, p1),
-                              point_seg(q1, p0, p1)])
-    u, v, w = p1 - p0, q1 - q0, p0 - q0
-    a, b, c, d, e = (np.sum(x * y, axis=0) for x, y in ((u, u), (u, v), (v, v), (u, w), (v, w)))
-    den = a * c - b * b
-    with np.errstate(divide="ignore", invalid="ignore"):
-        s, t = (b * e - c * d) / den, (a * e - b * d) / den
-    inside = (s > 0) & (s < 1) & (t > 0) & (t < 1)
-    line = np.linalg.norm(w + np.where(inside, s, 0) * u - np.where(inside, t, 0) * v, axis=0)
-    return np.where(inside, np.minimum(best, line), best)
-
-
 def test_the_drift_of_a_two_wheeler_and_a_machine_on_one_lap_against_brute_force_over_the_azimuth():
     # the machine rides the two-wheeler's lap 60 deg ahead of her rear contact, 0.5 m higher: they turn as one, and
     # her clock 1 % off slips her round at 1 % of her rate until some segment pair comes within 0.15 m
@@ -58,7 +38,7 @@ def test_the_drift_of_a_two_wheeler_and_a_machine_on_one_lap_against_brute_force
     first = np.inf
     for sense in (1.0, -1.0):
         pa = t.at_angle(t.phase + sense * x)
-        c = np.minimum.reduce([_brute_distance(pa[a], pa[b], pb["contact"], pb["head"])
+        c = np.minimum.reduce([brute_distance(pa[a], pa[b], pb["contact"], pb["head"])
                                for a, b in t.segments]) - radii
         below = np.flatnonzero(c < 0.15)
         if below.size:
@@ -89,7 +69,7 @@ def test_a_loopers_phase_search_through_a_two_wheeler_takes_his_whole_envelope()
         q0, q1 = replace(v, phase=math.radians(phases[k])).ends(times)
         each = [overlap_clearance(p0, p1, q0, q1, radii, PHASE_AXIS_POINTS).min() for p0, p1 in ends]
         assert least[0, k] == pytest.approx(min(each), abs=1e-9)
-        brute = min(float(np.min(_brute_distance(p0, p1, q0, q1))) for p0, p1 in ends) - radii
+        brute = min(float(np.min(brute_distance(p0, p1, q0, q1))) for p0, p1 in ends) - radii
         if brute > 0:
             assert least[0, k] == pytest.approx(brute, abs=1e-9)
             misses += 1
