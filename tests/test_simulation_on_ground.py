@@ -16,6 +16,7 @@ geometry of its own, not the equations' contact search:
 
 import numpy as np
 import pytest
+from wall_contacts import ball_contact, state_energy, wheel_contact
 
 from deathsphere.api.simulation import prepare_simulation, simulation_request
 from deathsphere.physics.ground import Profile
@@ -30,58 +31,6 @@ def _run(**typed):
     sim = prepare_simulation(*simulation_request({"record_states": True, "points_per_period": 4, **typed}))
     series, summary = sim.run()
     return series, summary, sim.sample_states()["state"], sim.starts.params.ground
-
-
-def _rim(c, e1, a, angle):
-    """Points of the rim circle (radius a about c, normal e1) at ``angle`` (n,)."""
-    e1 = e1 / np.linalg.norm(e1, axis=0)
-    ref = np.where(np.abs(e1[2]) < 0.9, 1.0, 0.0) * np.array([0.0, 0.0, 1.0])[:, None] + \
-        np.where(np.abs(e1[2]) < 0.9, 0.0, 1.0) * np.array([1.0, 0.0, 0.0])[:, None]
-    u = np.cross(e1, ref, axis=0)
-    u /= np.linalg.norm(u, axis=0)
-    v = np.cross(e1, u, axis=0)
-    return c + a * (np.cos(angle) * u + np.sin(angle) * v)
-
-
-def _clearance(ground, pts):
-    return ground.clearance(np.hypot(pts[0], pts[1]), pts[2])
-
-
-def _wheel_contact(ground, c, e1, a):
-    """The rim's point nearest the wall and its clearance: the least of 720
-    samples, then golden-section steps on its bracket."""
-    n = c.shape[1]
-    grid = np.linspace(0.0, 2 * np.pi, 720, endpoint=False)
-    values = np.stack([_clearance(ground, _rim(c, e1, a, np.full(n, t))) for t in grid])
-    best = grid[np.argmin(values, axis=0)]
-    lo, hi = best - 2 * np.pi / 720, best + 2 * np.pi / 720
-    ratio = (np.sqrt(5.0) - 1) / 2
-    for _ in range(60):
-        x1, x2 = hi - ratio * (hi - lo), lo + ratio * (hi - lo)
-        left = _clearance(ground, _rim(c, e1, a, x1)) < _clearance(ground, _rim(c, e1, a, x2))
-        hi, lo = np.where(left, x2, hi), np.where(left, lo, x1)
-    p = _rim(c, e1, a, 0.5 * (lo + hi))
-    return p, _clearance(ground, p)
-
-
-def _ball_contact(ground, c, a):
-    gap = _clearance(ground, c) - a
-    # the nearest point of the wall: along the clearance's gradient, by a central difference whose
-    # step balances its round-off (eps |clearance| / h) and its truncation (h^2 / 6 of the third derivative)
-    h = 1e-5
-    grad = np.stack([(_clearance(ground, c + h * e[:, None]) - _clearance(ground, c - h * e[:, None])) / (2 * h)
-                     for e in np.eye(3)])
-    outward = -grad / np.linalg.norm(grad, axis=0)
-    return c + a * outward, gap
-
-
-def _energy(state, p, a, k, ball):
-    c, e1, w = state[0:3], state[3:6] / np.linalg.norm(state[3:6], axis=0), state[6:9]
-    v = np.cross(w, c - p, axis=0)
-    w1 = np.sum(w * e1, axis=0)
-    rot = 0.5 * k * a * a * (np.sum(w * w, axis=0) + (0.0 if ball else w1 * w1))
-    kinetic = 0.5 * np.sum(v * v, axis=0) + rot
-    return kinetic + G * c[2], kinetic
 
 
 CASES = {
@@ -104,11 +53,11 @@ def test_energy_and_contact_hold_over_three_laps(name):
     assert summary["status"][0] == "completed" and summary["periods_simulated"][0] == 3.0
     a, k = typed["a"], float(summary["k"][0])
     if ball:
-        p, gap = _ball_contact(ground, states[0:3], a)
+        p, gap = ball_contact(ground, states[0:3], a)
     else:
-        p, gap = _wheel_contact(ground, states[0:3], states[3:6], a)
+        p, gap = wheel_contact(ground, states[0:3], states[3:6], a)
     assert np.max(np.abs(gap)) < 1e-12
-    energy, kinetic = _energy(states, p, a, k, ball)
+    energy, kinetic = state_energy(states, p, a, k, ball)
     assert np.max(np.abs(energy - energy[0])) < 1e-9 * np.min(kinetic)
     # the kick moved it: the run is not a fixed point's
     assert np.ptp(np.asarray(series["height_m"], dtype=float)) > 1e-3

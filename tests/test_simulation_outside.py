@@ -20,6 +20,7 @@ states with geometry of its own, not the equations' contact search:
 
 import numpy as np
 import pytest
+from wall_contacts import ball_contact, distance, state_energy, wheel_contact
 
 from deathsphere.api.orbits import orbit
 from deathsphere.api.simulation import prepare_simulation, simulate, simulation_request
@@ -37,58 +38,6 @@ def _run(**typed):
                                                   **typed}))
     series, summary = sim.run()
     return series, summary, sim.sample_states()["state"], sim.starts.params.ground
-
-
-def _rim(c, e1, a, angle):
-    """Points of the rim circle (radius a about c, normal e1) at ``angle`` (n,)."""
-    e1 = e1 / np.linalg.norm(e1, axis=0)
-    ref = np.where(np.abs(e1[2]) < 0.9, 1.0, 0.0) * np.array([0.0, 0.0, 1.0])[:, None] + \
-        np.where(np.abs(e1[2]) < 0.9, 0.0, 1.0) * np.array([1.0, 0.0, 0.0])[:, None]
-    u = np.cross(e1, ref, axis=0)
-    u /= np.linalg.norm(u, axis=0)
-    v = np.cross(e1, u, axis=0)
-    return c + a * (np.cos(angle) * u + np.sin(angle) * v)
-
-
-def _distance(ground, pts):
-    """A point's distance from the wall on the outside (the ground's
-    clearance is measured inside: negative out here)."""
-    return -ground.clearance(np.hypot(pts[0], pts[1]), pts[2])
-
-
-def _wheel_contact(ground, c, e1, a):
-    """The rim's point nearest the wall and its distance: the least of 720
-    samples, then golden-section steps on its bracket."""
-    n = c.shape[1]
-    grid = np.linspace(0.0, 2 * np.pi, 720, endpoint=False)
-    values = np.stack([_distance(ground, _rim(c, e1, a, np.full(n, t))) for t in grid])
-    best = grid[np.argmin(values, axis=0)]
-    lo, hi = best - 2 * np.pi / 720, best + 2 * np.pi / 720
-    ratio = (np.sqrt(5.0) - 1) / 2
-    for _ in range(60):
-        x1, x2 = hi - ratio * (hi - lo), lo + ratio * (hi - lo)
-        left = _distance(ground, _rim(c, e1, a, x1)) < _distance(ground, _rim(c, e1, a, x2))
-        hi, lo = np.where(left, x2, hi), np.where(left, lo, x1)
-    p = _rim(c, e1, a, 0.5 * (lo + hi))
-    return p, _distance(ground, p)
-
-
-def _ball_contact(ground, c, a):
-    gap = _distance(ground, c) - a
-    # the nearest point of the wall: down the distance's gradient (a central difference)
-    h = 1e-5
-    grad = np.stack([(_distance(ground, c + h * e[:, None]) - _distance(ground, c - h * e[:, None])) / (2 * h)
-                     for e in np.eye(3)])
-    return c - a * grad / np.linalg.norm(grad, axis=0), gap
-
-
-def _energy(state, p, a, k, ball):
-    c, e1, w = state[0:3], state[3:6] / np.linalg.norm(state[3:6], axis=0), state[6:9]
-    v = np.cross(w, c - p, axis=0)
-    w1 = np.sum(w * e1, axis=0)
-    rot = 0.5 * k * a * a * (np.sum(w * w, axis=0) + (0.0 if ball else w1 * w1))
-    kinetic = 0.5 * np.sum(v * v, axis=0) + rot
-    return kinetic + G * c[2], kinetic
 
 
 CASES = {
@@ -117,14 +66,14 @@ def test_energy_and_contact_hold_outside(name):
     assert summary["side"][0] == "outside"
     a, k = typed["a"], float(summary["k"][0])
     if ball:
-        p, gap = _ball_contact(ground, states[0:3], a)
+        p, gap = ball_contact(ground, states[0:3], a, outside=True)
     else:
-        p, gap = _wheel_contact(ground, states[0:3], states[3:6], a)
+        p, gap = wheel_contact(ground, states[0:3], states[3:6], a, outside=True)
     assert np.max(np.abs(gap)) < (1e-11 if isinstance(typed["surface"], Profile) else 1e-12)
     # the body is on the outside: its centre on the wall's far side (a wheel's a |sin(alpha + beta)| from the
     # cone's wall, 0.17 m on cone120_wheel)
-    assert np.all(_distance(ground, states[0:3]) > 0.05)
-    energy, kinetic = _energy(states, p, a, k, ball)
+    assert np.all(distance(ground, states[0:3], outside=True) > 0.05)
+    energy, kinetic = state_energy(states, p, a, k, ball)
     assert np.max(np.abs(energy - energy[0])) < 1e-9 / 3 * np.min(kinetic)
     # the kick moved it: the run is not a fixed point's
     assert np.ptp(np.asarray(series["height_m"], dtype=float)) > 1e-3
