@@ -111,6 +111,28 @@ def _top_rate(req, rows):
         return theta, outside, np.where(np.isnan(req["v_top"][rows]), np.abs(req["phidot_top"][rows]), from_speed)
 
 
+def summary_arrays(reason_words, evaluate) -> tuple:
+    """(out, status, reason) of a loop's summary rows: every request's
+    :data:`SUMMARY_KEYS` and :data:`ANGLE_KEYS` columns (angles in degrees),
+    filled where ``reason_words`` is empty from ``evaluate(rows)`` (the
+    physics, on the globe or round a profile's loop), an invalid row keeping
+    its reason."""
+    n = len(reason_words)
+    rows = np.flatnonzero(reason_words == "")
+    out = {col: np.full(n, np.nan) for col in list(SUMMARY_KEYS.values()) + list(ANGLE_KEYS.values())}
+    status = np.full(n, Status.INVALID, dtype=np.int8)
+    reason = reason_words.astype(object)
+    if rows.size:
+        res = evaluate(rows)
+        for key, col in SUMMARY_KEYS.items():
+            out[col][rows] = res[key]
+        for key, col in ANGLE_KEYS.items():
+            out[col][rows] = np.rad2deg(res[key])
+        status[rows] = res["status"]
+        reason[rows] = REASON_TEXT[res["reason"]]
+    return out, status, reason
+
+
 def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     """One summary row per request, in input order (invalid rows kept, with reasons).
 
@@ -120,21 +142,13 @@ def evaluate_vertical(req: dict, stability: bool = True) -> Table:
     (beyond the paper, docs/stability.md sec. 2); ``growth_rate_1_s`` is
     log(max |multiplier|) / lap time."""
     n = len(req["theta"])
-    reason_words = validate_vertical(req)
-    rows = np.flatnonzero(reason_words == "")
-    out = {col: np.full(n, np.nan) for col in list(SUMMARY_KEYS.values()) + list(ANGLE_KEYS.values())}
-    status = np.full(n, Status.INVALID, dtype=np.int8)
-    reason = reason_words.astype(object)
-    if rows.size:
+
+    def evaluate(rows):
         theta, outside, rate = _top_rate(req, rows)
-        res = vertical_orbit.vertical_orbit(theta, rate, req["a"][rows], req["r"][rows], req["k"][rows],
-                                      req["g"][rows], outside, req["mu"][rows])
-        for key, col in SUMMARY_KEYS.items():
-            out[col][rows] = res[key]
-        for key, col in ANGLE_KEYS.items():
-            out[col][rows] = np.rad2deg(res[key])
-        status[rows] = res["status"]
-        reason[rows] = REASON_TEXT[res["reason"]]
+        return vertical_orbit.vertical_orbit(theta, rate, req["a"][rows], req["r"][rows], req["k"][rows],
+                                             req["g"][rows], outside, req["mu"][rows])
+
+    out, status, reason = summary_arrays(validate_vertical(req), evaluate)
     verdict = np.full(n, "", dtype=object)
     method = np.full(n, "", dtype=object)
     growth = np.full(n, np.nan)

@@ -20,14 +20,13 @@ from deathsphere import params
 from deathsphere.model import Table, echo_given, finite_or_blank
 from deathsphere.physics import vertical_orbit_on
 from deathsphere.physics.stability import methods
-from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Status
+from deathsphere.physics.status import STATUS_LABELS, Status
 from deathsphere.requests.decode import as_typed
 from deathsphere.results.vertical import (
-    ANGLE_KEYS,
-    SUMMARY_KEYS,
     COLUMNS,
     POINT_COLUMNS,
     point_columns,
+    summary_arrays,
     validate_vertical,
 )
 
@@ -87,20 +86,12 @@ def evaluate_vertical_on(req: dict, loop) -> Table:
     (:class:`~deathsphere.physics.vertical_orbit_on.Loop`), in input order
     (invalid rows kept, with reasons): :data:`SUMMARY_COLUMNS`."""
     n = len(req["theta"])
-    reason_words = _validate_on(req)
-    rows = np.flatnonzero(reason_words == "")
-    out = {col: np.full(n, np.nan) for col in list(SUMMARY_KEYS.values()) + list(ANGLE_KEYS.values())}
-    status = np.full(n, Status.INVALID, dtype=np.int8)
-    reason = reason_words.astype(object)
-    if rows.size:
-        res = vertical_orbit_on.vertical_loop_on(loop, _top_speed(req, rows, loop), req["a"][rows], req["k"][rows],
-                                                 req["g"][rows], req["mu"][rows])
-        for key, col in SUMMARY_KEYS.items():
-            out[col][rows] = res[key]
-        for key, col in ANGLE_KEYS.items():
-            out[col][rows] = np.rad2deg(res[key])
-        status[rows] = res["status"]
-        reason[rows] = REASON_TEXT[res["reason"]]
+
+    def evaluate(rows):
+        return vertical_orbit_on.vertical_loop_on(loop, _top_speed(req, rows, loop), req["a"][rows], req["k"][rows],
+                                                  req["g"][rows], req["mu"][rows])
+
+    out, status, reason = summary_arrays(_validate_on(req), evaluate)
     live = np.isin(status, (Status.OK, Status.SLIPS))
     columns = {
         "stability": np.where(live, "unknown", "").astype(object),
