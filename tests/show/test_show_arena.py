@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from brute_segments import wall_lanes_least_clearance
 
 import deathsphere
 from deathsphere.constants import STANDARD_GRAVITY as G
@@ -82,26 +83,11 @@ def _brute_least(a, b, t, wall_angle=90.0):
     Q + (head - t)(-cos alpha rho-hat + sin alpha z-hat)), sampled at 401
     points along a's axis, each point's distance to b's axis by projection."""
     beta = math.radians(wall_angle)
-    z_hat = np.array([0, 0, 1.0])[:, None]
 
-    def axis(lane, t):
-        m, phi = lane.machine, lane.phase + lane.rate * t
-        rho_hat = np.stack((np.cos(phi), np.sin(phi), 0 * phi))
-        p = (R + lane.height * math.cos(beta) / math.sin(beta)) * rho_hat + lane.height * z_hat
-        q = p + m.tyre_radius * (-math.sin(beta) * rho_hat + math.cos(beta) * z_hat)
-        u = -math.cos(lane.alpha) * rho_hat + math.sin(lane.alpha) * z_hat
-        return p, q + (m.head_height - m.tyre_radius) * u
+    def meridian(height):
+        return R + height * math.cos(beta) / math.sin(beta), height, beta
 
-    best = math.inf
-    s = np.linspace(0.0, 1.0, 401)
-    for chunk in np.array_split(t, max(1, t.size // 500)):
-        (p0, p1), (q0, q1) = axis(a, chunk), axis(b, chunk)
-        x = p0[:, :, None] + (p1 - p0)[:, :, None] * s                     # (3, n, 401)
-        d = (q1 - q0)[:, :, None]
-        u = np.clip(np.sum((x - q0[:, :, None]) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
-        gap = x - q0[:, :, None] - u * d
-        best = min(best, float(np.sqrt(np.sum(gap * gap, axis=0)).min()))
-    return best - 0.5 * (a.width_m + b.width_m)
+    return wall_lanes_least_clearance(a, b, t, meridian)
 
 
 def test_two_riders_on_a_32ft_drum_against_a_brute_force_over_sampled_times():

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from brute_segments import wall_lanes_least_clearance
 
 import deathsphere
 from deathsphere.constants import STANDARD_GRAVITY as G
@@ -100,27 +101,7 @@ def _brute_least(act, a, b, t):
     n = (-sin beta, cos beta), Q = P + t n, H = Q + (head - t)(-cos alpha,
     sin alpha) in the meridian plane at phi = phase + rate t; 401 points
     along a's axis, each one's distance to b's axis by projection."""
-    z_hat = np.array([0, 0, 1.0])[:, None]
-
-    def axis(lane, t):
-        m, phi = lane.machine, lane.phase + lane.rate * t
-        rho_hat = np.stack((np.cos(phi), np.sin(phi), 0 * phi))
-        rho, z, beta = (float(x) for x in _bowl(lane.height))
-        p = rho * rho_hat + z * z_hat
-        q = p + m.tyre_radius * (-math.sin(beta) * rho_hat + math.cos(beta) * z_hat)
-        u = -math.cos(lane.alpha) * rho_hat + math.sin(lane.alpha) * z_hat
-        return p, q + (m.head_height - m.tyre_radius) * u
-
-    best = math.inf
-    s = np.linspace(0.0, 1.0, 401)
-    for chunk in np.array_split(t, max(1, t.size // 500)):
-        (p0, p1), (q0, q1) = axis(a, chunk), axis(b, chunk)
-        x = p0[:, :, None] + (p1 - p0)[:, :, None] * s
-        d = (q1 - q0)[:, :, None]
-        w = np.clip(np.sum((x - q0[:, :, None]) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
-        gap = x - q0[:, :, None] - w * d
-        best = min(best, float(np.sqrt(np.sum(gap * gap, axis=0)).min()))
-    return best - 0.5 * (a.width_m + b.width_m)
+    return wall_lanes_least_clearance(a, b, t, _bowl)
 
 
 def test_the_bowls_pairs_least_clearance_against_a_brute_force_over_sampled_times():
