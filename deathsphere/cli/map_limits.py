@@ -77,16 +77,18 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
       deathsphere map -a 0.9 -r 3 --stability --output map.png
       deathsphere map --surface cone --diameter 6 --wall-angle 80 \\
           --wall-height 8 --mu 1 --output cone.png
+      deathsphere map --surface cylinder --diameter 32ft --wall-height 12ft \\
+          --mu 0.8 --max-g 3
 
     On a drum, a cone, flat ground or a profile (--surface) the map is the
     allowed (height, alpha) region (on flat ground (turn radius, alpha)):
     --height start:stop:step gives the lanes [default: 361 from the floor to
     the wall's top]; --format csv/json the boundary points with whether the
-    orbit is feasible just below and above each; on a terminal the allowed
-    intervals of a few lanes.  --stability there adds the curve 'stability'
-    (the exact linearisation on that ground, bisected as on the globe) and
-    on a terminal each lane's stable tilts.  No --step there (docs/limits.md
-    sec. 8).
+    orbit is feasible just below and above each; on a terminal a character
+    plot over (height, alpha) and the allowed intervals of a few lanes.
+    --stability there adds the curve 'stability' (the exact linearisation
+    on that ground, bisected as on the globe) and on a terminal each lane's
+    stable tilts.  No --step there (docs/limits.md sec. 8).
     """
     options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
@@ -142,9 +144,15 @@ def _map_on(arena, options, output, fmt, step, stability):
         return
     fmt = choose_format(fmt)
     if fmt == "table":
+        from deathsphere.render.charplot import to_rich
+        from deathsphere.render.lane_charplot import drawable, lane_char_map
         from deathsphere.render.lane_map_text import lane_map_text
 
         curves = api.region_curves(stability=stability, **step, **arena, **options)
+        if drawable(curves):
+            # the chart of the whole wall, then the intervals of a few lanes in numbers
+            width = max(40, min(stdout_console().width, 100))
+            stdout_console().print(to_rich(lane_char_map(curves, width)), end="")
         stdout_console().print(lane_map_text(curves))
         return
     emit([api.region(stability=stability, **step, **arena, **options)], fmt)

@@ -16,6 +16,9 @@ def lane_map_text(curves, lanes: int = SHOWN_LANES):
     its allowed alpha intervals [deg] ("none" where no tilt is feasible)
     and, with stability, their parts where the orbit is linearly stable
     (the exact linearisation; "none" where every allowed tilt is unstable)."""
+    from rich.markup import escape
+
+    from deathsphere.render.lane_charplot import where_on
     from rich.table import Table as RichTable
 
     n = curves.x_m.size
@@ -23,14 +26,14 @@ def lane_map_text(curves, lanes: int = SHOWN_LANES):
     limits = [f"mu = {curves.mu:g}" if np.isfinite(curves.mu) else "",
               f"max {curves.max_g:g} g" if np.isfinite(curves.max_g) else ""]
     limits = ", ".join(x for x in limits if x)
-    side = "outside" if curves.outside else "inside"
     what = "Stability of allowed" if curves.stable is not None else "Allowed"
-    table = RichTable(title=f"{what} tilts of a wheel {side} the {curves.ground_name}: a = {curves.a:g} m, "
-                            f"k = {curves.k:g}" + (f", {limits}" if limits else ""))
-    table.add_column(curves.x_label, justify="right")
-    table.add_column("allowed alpha [deg]")
+    # escaped: rich reads "[m]" and "[deg]" as markup tags and would drop the units
+    table = RichTable(title=escape(f"{what} tilts of a wheel {where_on(curves.ground_name, curves.outside)}: a = {curves.a:g} m, "
+                            f"k = {curves.k:g}" + (f", {limits}" if limits else "")))
+    table.add_column(escape(curves.x_label), justify="right")
+    table.add_column(escape("allowed alpha [deg]"))
     if curves.stable is not None:
-        table.add_column("stable alpha [deg]")
+        table.add_column(escape("stable alpha [deg]"))
     for i in pick:
         spans = [f"{curves.lo_deg[i, j]:.2f} .. {curves.hi_deg[i, j]:.2f}" for j in range(int(curves.count[i]))]
         row = [f"{curves.x_m[i]:.4g}", ",  ".join(spans) or "none"]
