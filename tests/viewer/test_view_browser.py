@@ -4,10 +4,14 @@ loads without script errors and its animation advances.
 The page records script errors (window "error" events) and the current
 frame index as attributes of <body>; the browser runs with a virtual time
 budget and dumps the DOM.  Skipped only where no browser binary is on PATH.
+
+The pages are tabs of one browser shared by the test session; the last
+test holds that browser's read of a page to the one a browser process of
+its own (``--dump-dom``) prints.
 """
 
 import pytest
-from view_page import body_attributes, dump_dom
+from view_page import body_attributes, dump_dom, dump_dom_by_process, layout_of, page_url
 from viewer_cases import run_case
 
 from deathsphere.simulation.frames import body_frames
@@ -34,3 +38,19 @@ def test_a_broken_page_is_caught(tmp_path, browser):
     out.write_text(page.replace("var DATA = {", "var DATA = {bodies: null, x: {", 1), encoding="utf-8")
     attrs = body_attributes(dump_dom(browser, out, budget_ms=500))
     assert int(attrs["errors"]) >= 1 and attrs["ready"] == "0" and attrs["frame"] == "0"
+
+
+def test_the_shared_browser_reads_a_page_as_a_process_of_its_own_does(tmp_path, browser):
+    """The harness itself: a page paused at its run's end (#end: nothing on
+    it moves with the clock) reads the same, byte for byte, in a tab of the
+    session's browser given the viewport a separate ``chromium --headless
+    --window-size=800,600 --dump-dom`` process gave it, as in that process."""
+    series, summary, states, _ = run_case("unstable", periods=1)
+    out = tmp_path / "u.html"
+    write_view(out, series, summary, body_frames(summary, states), title="contact lost")
+    url = page_url(out, "end")
+    alone = dump_dom_by_process(browser.binary, url, budget_ms=500, window=(800, 600))
+    layout, attrs, _ = layout_of(alone)
+    assert attrs["ready"] == "1" and attrs["errors"] == "0" and int(attrs["ink"]) > 500
+    shared = browser.dom(url, 500, tuple(layout["window"]))
+    assert shared == alone
