@@ -10,7 +10,11 @@ test holds that browser's read of a page to the one a browser process of
 its own (``--dump-dom``) prints.
 """
 
+import os
+from pathlib import Path
+
 import pytest
+from devtools_pipe import Chromium
 from view_page import body_attributes, dump_dom, dump_dom_by_process, layout_of, page_url
 from viewer_cases import run_case
 
@@ -54,3 +58,30 @@ def test_the_shared_browser_reads_a_page_as_a_process_of_its_own_does(tmp_path, 
     assert attrs["ready"] == "1" and attrs["errors"] == "0" and int(attrs["ink"]) > 500
     shared = browser.dom(url, 500, tuple(layout["window"]))
     assert shared == alone
+
+
+def _alive_in_group(group: int) -> list[str]:
+    """The processes of a process group that are not yet dead (zombies,
+    waiting for their new parent to reap them, are): from /proc."""
+    alive = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            text = stat.read_text()
+        except OSError:
+            continue                                   # ended meanwhile
+        state, _, pgrp = text.rsplit(")", 1)[1].split()[:3]
+        if int(pgrp) == group and state != "Z":
+            alive.append(text.split(" ", 2)[1])
+    return alive
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads the processes from /proc (Linux)")
+def test_a_closed_browser_leaves_no_process_and_no_profile(browser):
+    """The harness itself: closing the shared browser ends every process it
+    started (its helpers share its process group) and removes its profile."""
+    chromium = Chromium(browser.binary)
+    group, profile = chromium.process.pid, Path(chromium.profile)
+    assert _alive_in_group(group) and profile.is_dir()
+    chromium.close()
+    assert _alive_in_group(group) == [] and not profile.exists()
+    assert chromium.process.returncode is not None
