@@ -1,16 +1,19 @@
 """One headless Chromium for a whole test session, driven over the DevTools
 protocol through a pipe.
 
-Starting a browser costs about half a second to a second of the two cores;
-a page costs a few tens of milliseconds.  So a test worker starts ONE
+A browser process per page cost about 0.7 s a page (a measured layout
+1.8 s: loaded twice, to find the strip of its window the page does not
+get); a tab of a running browser costs 0.2 to 0.6 s, most of it the
+page's own virtual-time budget played.  So a test worker starts ONE
 browser (``--remote-debugging-pipe``: the browser reads JSON commands,
 each ended by a NUL byte, on its file descriptor 3 and writes replies and
 events the same way on 4) and opens each page in a new tab of it.  A page
 is loaded as ``--dump-dom --virtual-time-budget`` loads it: virtual time
 paused while the page is fetched, then ``budget_ms`` of it granted, the
 DOM read when the browser says the budget is spent.  No wall-clock wait
-enters, so what the page has done by then does not depend on the
-machine's speed or load.
+enters: how far the page has played is its virtual clock's, whatever the
+machine's load (to within a frame or two of the page's animation, which
+a loaded machine may start a little later, as with ``--dump-dom``).
 """
 
 import fcntl

@@ -10,7 +10,6 @@ test holds that browser's read of a page to the one a browser process of
 its own (``--dump-dom``) prints.
 """
 
-import os
 from pathlib import Path
 
 import pytest
