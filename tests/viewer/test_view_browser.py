@@ -5,9 +5,10 @@ The page records script errors (window "error" events) and the current
 frame index as attributes of <body>; the browser runs with a virtual time
 budget and dumps the DOM.  Skipped only where no browser binary is on PATH.
 
-The pages are tabs of one browser shared by the test session; the last
-test holds that browser's read of a page to the one a browser process of
-its own (``--dump-dom``) prints.
+The pages are tabs of one browser shared by the test session; two tests
+check that browser itself: its read of a page is the one a browser process
+of its own (``--dump-dom``) prints, and closed it leaves no process and no
+profile behind.
 """
 
 from pathlib import Path
