@@ -4,7 +4,7 @@ wheel, where eq. M2 puts them, and the GIF loop draws them."""
 
 import numpy as np
 import pytest
-from view_page import browser_binary, dump_dom, page_data, point_set, readout
+from view_page import dump_dom, page_data, point_set, readout
 
 import deathsphere
 from deathsphere.api.machines import PRESETS
@@ -66,12 +66,9 @@ def test_a_wheels_page_has_no_machine():
     assert "com" not in scene.points and "head" not in scene.points
 
 
-def test_the_page_draws_the_machine_in_a_browser(machine_page, tmp_path):
-    binary = browser_binary()
-    if binary is None:
-        pytest.skip("no chromium or chrome on PATH")
+def test_the_page_draws_the_machine_in_a_browser(machine_page, browser):
     out, _, _ = machine_page
-    dom = dump_dom(binary, out)
+    dom = dump_dom(browser, out)
     assert 'data-errors="0"' in dom and 'data-ready="1"' in dom
     assert "machine inside the sphere" in dom
 

@@ -1,4 +1,6 @@
-"""Read the data a 3-D view page embeds, and load pages in a real browser."""
+"""Read the data a 3-D view page embeds, and load pages in a real browser
+(the session's shared one, ``devtools_pipe.Chromium``, or a process of
+their own)."""
 
 import json
 import os
@@ -25,17 +27,22 @@ def browser_binary():
     return None
 
 
-def dump_dom(binary, html_path, budget_ms=3000):
-    """The page's DOM after ``budget_ms`` of virtual time in headless mode
-    (virtual time: no wall-clock waits, the same on a slow machine)."""
-    with tempfile.TemporaryDirectory() as profile:
-        res = subprocess.run(
-            [binary, "--headless", "--disable-gpu", "--no-sandbox", "--no-first-run",
-             f"--user-data-dir={profile}", f"--virtual-time-budget={budget_ms}", "--dump-dom",
-             "file://" + os.path.abspath(html_path)],
-            capture_output=True, text=True, timeout=120)
-    assert res.returncode == 0, res.stderr[-2000:]
-    return res.stdout
+#: The viewport a page read whole gets [CSS px]: the one a separate
+#: ``chromium --headless --dump-dom`` process gives it (its 800 x 600
+#: window less the window's own strip), so that the shared browser's pages
+#: are drawn as they were in a process of their own.
+DOM_VIEWPORT = (780, 437)
+
+
+def page_url(html_path, fragment="") -> str:
+    return "file://" + os.path.abspath(html_path) + (f"#{fragment}" if fragment else "")
+
+
+def dump_dom(browser, html_path, budget_ms=3000):
+    """The page's DOM after ``budget_ms`` of virtual time in the session's
+    headless browser (virtual time: no wall-clock waits, the same on a slow
+    machine)."""
+    return browser.dom(page_url(html_path), budget_ms, DOM_VIEWPORT)
 
 
 def body_attributes(dom: str) -> dict:
@@ -44,39 +51,37 @@ def body_attributes(dom: str) -> dict:
     return dict(re.findall(r'data-([a-z]+)="([^"]*)"', m.group(1)))
 
 
-#: (browser, window width) -> the strip of the window the page does not get [px], once measured.
-_STRIPS = {}
+def layout_of(dom: str):
+    """A DOM's ``data-layout`` (read), its <body> attributes and the DOM."""
+    attrs = body_attributes(dom)
+    return json.loads(attrs["layout"].replace("&quot;", '"')), attrs, dom
 
 
-def page_layout(binary, html_path, width, height, fragment="", budget_ms=3000):
+def page_layout(browser, html_path, width, height, fragment="", budget_ms=3000):
     """The page's own record of where its parts are (``data-layout``: boxes
     [left, top, width, height] in CSS pixels) in a viewport of width x
-    height, and its <body> attributes.  Headless Chromium's window size
-    includes a strip the page does not get: measured once and added (once
-    per browser and width in a test session; a page that gets another
-    height is measured again)."""
-    target = "file://" + os.path.abspath(html_path) + (f"#{fragment}" if fragment else "")
+    height, its <body> attributes and its DOM."""
+    return layout_of(browser.dom(page_url(html_path, fragment), budget_ms, (width, height)))
 
-    def measure(h):
-        with tempfile.TemporaryDirectory() as profile:
-            res = subprocess.run(
-                [binary, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                 f"--user-data-dir={profile}", f"--window-size={width},{h}", f"--virtual-time-budget={budget_ms}",
-                 "--dump-dom", target],
-                capture_output=True, text=True, timeout=120)
-        assert res.returncode == 0, res.stderr[-2000:]
-        attrs = body_attributes(res.stdout)
-        return json.loads(attrs["layout"].replace("&quot;", '"')), attrs, res.stdout
 
-    strip = _STRIPS.get((binary, width), 0)
-    layout, attrs, dom = measure(height + strip)
-    missing = height - layout["window"][1]
-    if missing:
-        strip += missing
-        layout, attrs, dom = measure(height + strip)
-    _STRIPS[(binary, width)] = strip
-    return layout, attrs, dom
+# ---------------------------------------------------------------- a browser process per page
+# The way pages were loaded before the session shared one browser, kept to
+# check the shared browser against.
+
+def dump_dom_by_process(binary, url, budget_ms, window=None):
+    """The DOM ``chromium --headless --dump-dom`` prints for ``url`` after
+    ``budget_ms`` of virtual time, in a process of its own (``window``:
+    its ``--window-size``)."""
+    size = [f"--window-size={window[0]},{window[1]}"] if window else []
+    with tempfile.TemporaryDirectory() as profile:
+        res = subprocess.run(
+            [binary, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+             "--disable-background-networking", "--disable-component-update", "--disable-sync",
+             f"--user-data-dir={profile}", *size, f"--virtual-time-budget={budget_ms}",
+             "--dump-dom", url],
+            capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stderr[-2000:]
+    return res.stdout
 
 
 def readout(track: dict, key: str) -> str:
