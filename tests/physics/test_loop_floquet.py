@@ -34,6 +34,15 @@ def egg_loop():
     return Loop.of(Profile(np.abs(3 * np.sin(u)), 3 * np.cos(u) + 0.4 * np.cos(u) ** 2))
 
 
+#: An unstable and a stable loop inside the egg (found by scanning k and the top speed near the least).
+EGG_LOOPS = dict(v_top=np.array([3.3454, 3.742]), a=np.array([1.5, 1.2]), k=np.array([0.1, 0.1]))
+
+
+@pytest.fixture(scope="module")
+def egg_floquet(egg_loop):
+    return loop_floquet_on(egg_loop, EGG_LOOPS["v_top"], EGG_LOOPS["a"], EGG_LOOPS["k"], G)
+
+
 def test_one_dual_pass_gives_the_rates_and_their_derivatives(egg_loop):
     p = don.ground_body(egg_loop.ground, np.array([0.5, 1.0]), np.array([0.5, 0.1]), G)
     X = loop_state_on(egg_loop.z[-1], np.array([4.0, 5.0]), p.a)
@@ -79,7 +88,7 @@ def test_on_a_sampled_sphere_the_multipliers_are_the_globes(sphere_loop):
 
 
 @pytest.mark.longest
-def test_on_an_egg_kicked_runs_grow_by_the_multipliers_lap_after_lap(egg_loop):
+def test_on_an_egg_kicked_runs_grow_by_the_multipliers_lap_after_lap(egg_loop, egg_floquet):
     """The nonlinear flow (scipy's DOP853 on the equations of motion) from
     the top, and from the top kicked along each of the quotient's four
     directions: the kicks' deviations after n laps, on the same quotient,
@@ -87,8 +96,8 @@ def test_on_an_egg_kicked_runs_grow_by_the_multipliers_lap_after_lap(egg_loop):
     |eigenvalue| ^ (1/n) is max |mu|: 2.18 per lap on the unstable loop (a
     real pair, the loop's plane tilting away), 1 on the stable one
     (bounded); the unkicked run returns to the top after one lap."""
-    a, k, v = np.array([1.5, 1.2]), np.array([0.1, 0.1]), np.array([3.3454, 3.742])
-    floquet = loop_floquet_on(egg_loop, v, a, k, G)
+    a, k, v = EGG_LOOPS["a"], EGG_LOOPS["k"], EGG_LOOPS["v_top"]
+    floquet = egg_floquet
     assert floquet["verdict"].tolist() == [Verdict.UNSTABLE, Verdict.STABLE]
     T = floquet["period"]
     X0 = loop_state_on(egg_loop.z[-1], v, a)
@@ -123,3 +132,14 @@ def test_a_loop_without_an_orbit_or_with_k_0_is_not_analysed(egg_loop):
     assert not got["analysed"].any()
     for key in ("max_abs", "growth_rate", "period", "return_error"):
         assert np.isnan(got[key]).all()
+
+
+def test_a_loops_multipliers_do_not_depend_on_the_loops_computed_with_it(egg_loop, egg_floquet):
+    """Each loop takes its own number of steps (a loop done waits for the
+    others): the egg's unstable loop alone, or beside the stable one, which
+    needs 21 steps to its 20."""
+    alone = loop_floquet_on(egg_loop, EGG_LOOPS["v_top"][0], EGG_LOOPS["a"][0], EGG_LOOPS["k"][0], G)
+    together = egg_floquet
+    assert together["analysed"].all()
+    np.testing.assert_allclose(together["multipliers"][0], alone["multipliers"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(together["return_error"][0], alone["return_error"], rtol=1e-6)

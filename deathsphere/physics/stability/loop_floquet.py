@@ -87,12 +87,14 @@ def loop_neutral_basis_on(X, p, dspeed, D):
 
 
 def _rk8(x, d, p, dt, steps):
-    """``steps`` fixed steps dt (n,) of the order-8 method of the state x
-    (9, n) and its tangent vectors d (9, m, n), one dual pass a stage
-    (:func:`~deathsphere.physics.dynamics_on.rhs_jvp_on`)."""
-    h = np.asarray(dt, dtype=float)
+    """``steps`` (n,) fixed steps dt (n,) of the order-8 method of the state
+    x (9, n) and its tangent vectors d (9, m, n), one dual pass a stage
+    (:func:`~deathsphere.physics.dynamics_on.rhs_jvp_on`); a loop that has
+    taken its own steps waits (a zero step) for the others, so that its
+    result does not depend on the loops it is computed with."""
     nst = len(rk8.B)
-    for _ in range(steps):
+    for i in range(int(np.max(steps, initial=0))):
+        h = np.where(i < steps, dt, 0.0)
         kx, kd = [None] * nst, [None] * nst
         for s, row in enumerate(rk8.A):
             xs, ds = x, d
@@ -175,7 +177,7 @@ def _monodromy(loop, v_top, v_bottom, T, a, k, g, step):
     # the fastest rate: the spin at the bottom, the centre's turn where its path bends most, the pendulum's
     kappa_c = loop.kappa_max / (1.0 - a * loop.kappa_max)
     S = np.sqrt((v_bottom / a) ** 2 + (v_bottom * kappa_c) ** 2 + g / a)
-    N = max(int(np.ceil(np.max(T * S) / (2 * step))), 1)
+    N = np.maximum(np.ceil(T * S / (2 * step)), 1.0).astype(int)   # steps per half lap, each loop its own
     D = np.concatenate((np.broadcast_to(a, (3, n)), np.ones((3, n)), np.broadcast_to(S, (3, n))))
     zero = np.zeros((9, n))
     d_top, d_bottom = zero.copy(), zero.copy()
