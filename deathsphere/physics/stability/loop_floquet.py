@@ -77,7 +77,7 @@ def loop_neutral_basis_on(X, p, dspeed, D):
     the loop's five neutral directions at X (its top or its bottom): the two
     constraint normals, phase f(X), rotation about the vertical axis z x X
     (for each of c, e1, w) and ``dspeed``, d X / d v_top of the family
-    (9, n); docs/stability.md sec. 2.1."""
+    (9, n).  Beyond the paper: docs/stability.md sec. 2.1."""
     fx = don.rhs_on(X, p)
     gen = np.concatenate([np.stack((-X[i + 1], X[i], np.zeros_like(X[i]))) for i in (0, 3, 6)])
     V = np.stack((fx, gen, dspeed), axis=-1) / D[..., None]
