@@ -8,8 +8,8 @@ names the arena), then the arena's, ``surface`` and ``height_m`` (the
 loop's top above its bottom, as the paper's wheel's loop on a profile),
 then what a loop of varying curvature adds: the lap time, the largest
 load round the loop and where, and the stability columns (``unknown``,
-``not-analysed-loop``: no loop's Floquet analysis is computed off the
-globe).  theta must be 90 deg (the loop runs through the axis) and the
+``not-analysed-loop``: the machine's loop has no Floquet analysis; the
+paper's wheel's loop inside a profile has, docs/stability.md sec. 2.1).  theta must be 90 deg (the loop runs through the axis) and the
 machine rides inside.
 """
 

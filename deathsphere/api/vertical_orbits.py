@@ -208,7 +208,7 @@ def _vertical_work(points: int | None, stability: bool, keep=None, loop=None):
     else:
         from deathsphere.results.vertical_on import evaluate_vertical_on, vertical_points_on
 
-        summary = partial(evaluate_vertical_on, loop=loop)
+        summary = partial(evaluate_vertical_on, loop=loop, stability=stability)
         sliced_points = partial(vertical_points_on, loop=loop)
     if points is None:
         return lambda batches: ((n, kept(summary(req))) for n, req in batches)

@@ -31,7 +31,7 @@ from deathsphere.physics import dynamics as dyn
 from deathsphere.physics.dynamics import _Dual, _dual_sqrt
 from deathsphere.physics.status import mu_required
 
-__all__ = ["GroundBody", "ground_body", "rhs_on", "jvp_on", "ode_on", "energy_on", "contact_on",
+__all__ = ["GroundBody", "ground_body", "rhs_on", "jvp_on", "rhs_jvp_on", "ode_on", "energy_on", "contact_on",
            "contact_force_on", "gap_on", "project_on", "lowest_point_on", "spin_rate_on", "wheel_orbit_state_on",
            "ball_orbit_state_on"]
 
@@ -321,6 +321,23 @@ def jvp_on(state, directions, p: GroundBody, frame_rate=0.0):
         out = _equations(X, p, _dual_sqrt)
     dd = [o.d if _is_dual(o) else np.zeros_like(directions[0]) for o in out]
     return _stack(_turning(dd, directions, frame_rate))
+
+
+def rhs_jvp_on(state, directions, p: GroundBody):
+    """(:func:`rhs_on`, :func:`jvp_on`) of one pass of forward-mode
+    derivatives (beyond the paper; docs/dynamics.md sec. 7): the rates
+    (9, ..., n) and J(state) @ directions (9, m, ..., n), the values carried
+    by the same dual numbers as the derivatives (a state and its tangent
+    vectors stepped together, as the vertical loop's Floquet monodromy
+    does: docs/stability.md, "A vertical loop inside a closed profile")."""
+    state = np.asarray(state, dtype=float)
+    directions = np.asarray(directions, dtype=float)
+    X = np.array([_Dual(state[i], directions[i]) for i in range(9)], dtype=object)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = _equations(X, p, _dual_sqrt)
+    values = _stack([o.v if _is_dual(o) else o for o in out])
+    dd = _stack([o.d if _is_dual(o) else np.zeros_like(directions[0]) for o in out])
+    return np.broadcast_to(values, state.shape), dd
 
 
 def ode_on(p: GroundBody, frame_rate=0.0):

@@ -6,10 +6,12 @@ The same requests and columns as the globe's (:mod:`deathsphere.results.vertical
 then the arena's: ``surface`` and ``height_m`` (the loop's top above its
 bottom).  A request's loop runs in a meridian plane, so its ``theta`` must
 be 90 deg and its ``side`` inside: another row is ``invalid``, saying so.
-``r_m`` is empty (the sphere's radius is not the profile's), and the
-stability columns say ``not-analysed-loop`` (the globe's Floquet
-analysis integrates the sphere's equations of motion).  Physics:
-:mod:`deathsphere.physics.vertical_orbit_on`.
+``r_m`` is empty (the sphere's radius is not the profile's).  The
+stability columns are the globe's: the loop's Floquet multipliers over one
+lap of the wheel's exact equations of motion on the profile
+(``floquet``; docs/stability.md sec. 2.1), ``not-analysed-k0`` where k =
+0.  Physics: :mod:`deathsphere.physics.vertical_orbit_on`,
+:mod:`deathsphere.physics.stability.loop_floquet`.
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere import params
-from deathsphere.model import Table, echo_given, finite_or_blank
+from deathsphere.model import NOT_ANALYSED_K0, Table, echo_given, finite_or_blank
 from deathsphere.physics import vertical_orbit_on
 from deathsphere.physics.stability import methods
 from deathsphere.physics.status import STATUS_LABELS, Status
@@ -81,10 +83,39 @@ def _arena(columns: dict, n: int, loop) -> None:
     columns["r_m"] = np.full(n, np.nan)
 
 
-def evaluate_vertical_on(req: dict, loop) -> Table:
+def _stability(req, loop, status, stability: bool) -> tuple:
+    """(stability, stability_method, growth_rate_1_s) per row, as the
+    globe's (:func:`deathsphere.results.vertical.evaluate_vertical`): with
+    ``stability``, a loop that keeps contact (ok or slips) gets its Floquet
+    verdict and growth rate, k = 0 ``unknown``, ``not-analysed-k0``."""
+    n = status.size
+    verdict = np.full(n, "", dtype=object)
+    method = np.full(n, "", dtype=object)
+    growth = np.full(n, np.nan)
+    live = np.flatnonzero(np.isin(status, (Status.OK, Status.SLIPS)))
+    if not stability:
+        return verdict, method, growth
+    # k = 0 (no rotational inertia) makes the equations of motion singular
+    singular = live[req["k"][live] == 0]
+    verdict[singular] = "unknown"
+    method[singular] = NOT_ANALYSED_K0
+    live = live[req["k"][live] > 0]
+    if live.size:
+        from deathsphere.physics.stability import VERDICT_LABELS, loop_floquet_on
+
+        floquet = loop_floquet_on(loop, _top_speed(req, live, loop), req["a"][live], req["k"][live], req["g"][live])
+        verdict[live] = VERDICT_LABELS[floquet["verdict"]]
+        method[live] = methods.FLOQUET
+        growth[live] = floquet["growth_rate"]
+    return verdict, method, growth
+
+
+def evaluate_vertical_on(req: dict, loop, stability: bool = True) -> Table:
     """One summary row per request on ``loop``
     (:class:`~deathsphere.physics.vertical_orbit_on.Loop`), in input order
-    (invalid rows kept, with reasons): :data:`SUMMARY_COLUMNS`."""
+    (invalid rows kept, with reasons): :data:`SUMMARY_COLUMNS`; with
+    ``stability`` the loop's Floquet stability (beyond the paper,
+    docs/stability.md sec. 2.1)."""
     n = len(req["theta"])
 
     def evaluate(rows):
@@ -92,11 +123,11 @@ def evaluate_vertical_on(req: dict, loop) -> Table:
                                                   req["g"][rows], req["mu"][rows])
 
     out, status, reason = summary_arrays(_validate_on(req), evaluate)
-    live = np.isin(status, (Status.OK, Status.SLIPS))
+    verdict, method, growth = _stability(req, loop, status, stability)
     columns = {
-        "stability": np.where(live, "unknown", "").astype(object),
-        "stability_method": np.where(live, methods.NOT_ANALYSED_LOOP_OFF_GLOBE, "").astype(object),
-        "growth_rate_1_s": np.full(n, np.nan),
+        "stability": verdict,
+        "stability_method": method,
+        "growth_rate_1_s": growth,
         "input_row": req["input_row"].astype(np.int64), "body": req["body"], "side": req["side"],
         "theta_deg": req["theta"], "alpha_deg": req["alpha"], "a_m": req["a"],
         "k": req["k"], "g_m_s2": req["g"], "status": STATUS_LABELS[status], "reason": reason,

@@ -41,14 +41,16 @@ def test_a_dome_on_a_floor_closes_over_the_top_only_and_is_refused(run, tmp_path
 
 def test_an_ellipsoid_rides_its_loop_with_the_arenas_columns(run):
     res = run("vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--theta", "90", "--v-top", "8",
-              "--v-top", "6", "--format", "csv")
+              "--v-top", "6", "-a", "1", "--format", "csv")
     assert res.exit_code == 0, res.stderr
     header, *rows = res.stdout.strip().splitlines()
     assert header.endswith(",stability,stability_method,growth_rate_1_s,surface,height_m")
     assert [row.split(",")[9] for row in rows] == ["ok", "no_contact"]
     assert all(row.endswith(",profile,6.0") for row in rows)
+    # the loop that keeps contact has its Floquet verdict (docs/stability.md sec. 2.1), the other none
+    assert [row.split(",")[31:33] for row in rows] == [["stable", "floquet"], ["", ""]]
     view = run("vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--theta", "90", "--v-top", "8",
-               "--format", "table")
+               "--no-stability", "--format", "table")
     assert view.exit_code == 0, view.stderr
     # the loop's own equations are cited, not the globe's
     assert "eqs. S9-S12" in view.stdout and "eq. S10" in view.stdout and "eq. 28a" not in view.stdout
@@ -68,7 +70,7 @@ def test_an_input_files_rows_on_a_profile_each_give_a_row(run, tmp_path):
     path = tmp_path / "loops.csv"
     path.write_text("theta,v_top\n90,8\n80,8\n90,-1\n")
     res = run("vertical", "--surface", "profile", "--profile", str(ELLIPSOID), "--input", str(path),
-              "--format", "csv")
+              "--no-stability", "--format", "csv")
     assert res.exit_code == 1 and "2 input row(s) invalid" in res.stderr       # every row answered, two refused
     rows = res.stdout.strip().splitlines()[1:]
     assert [row.split(",")[9] for row in rows] == ["ok", "invalid", "invalid"]

@@ -41,7 +41,7 @@ WORST_POINT = {"normal_per_mass_m_s2": 3e-5, "friction_magnitude_per_mass_m_s2":
                "mu_required": 3e-5, "phi_slip_deg": 1e-5}
 AGREE = 3e-6
 #: Not the globe's to compare: the sphere's radius (empty on a profile), the
-#: stability (the Floquet analysis is the globe's), the reason (the loop's
+#: stability (compared on its own below), the reason (the loop's
 #: no_contact names its own equation).
 #: The largest force per mass of a loop (at its bottom), the scale of every force's error.
 FORCE_SCALE = "normal_bottom_per_mass_m_s2"
@@ -80,8 +80,29 @@ def test_on_a_sampled_sphere_every_column_is_the_globes(sampled_sphere, k):
     assert got["surface"].tolist() == ["profile"] * 6
     np.testing.assert_allclose(got["height_m"], 2 * R, rtol=1e-12)
     assert np.isnan(got["r_m"]).all()
-    live = np.isin(got["status"], ("ok", "slips"))
-    assert got["stability_method"][live].tolist() == ["not-analysed-loop"] * int(live.sum())
+    for name in ("stability", "stability_method"):                     # not asked for: empty, as the globe's
+        assert got[name].tolist() == ref[name].tolist() == [""] * 6
+
+
+def test_the_stability_columns_are_the_globes(sampled_sphere):
+    """A stable and an unstable loop (a light rim, k = 0.1, in a resonance
+    tongue) and k = 0: the globe's verdicts, methods and growth rates (the
+    Floquet analyses of the sphere's and of the profile's equations of
+    motion: tests/physics/test_loop_floquet.py)."""
+    v_top = np.array([1.2, 1.1, 1.2]) * np.sqrt(9.80665 * 1.5)
+    got, ref = ({name: [] for name in ("stability", "stability_method", "growth_rate_1_s")} for _ in range(2))
+    for v, k in zip(v_top, (0.5, 0.1, 0.0)):
+        on = deathsphere.vertical_sweep(90, v, a=1.5, k=k, surface="profile", profile=sampled_sphere).table()
+        globe = deathsphere.vertical_sweep(90, v, a=1.5, k=k).table()
+        for name in got:
+            got[name].append(on[name][0])
+            ref[name].append(globe[name][0])
+    got, ref = ({name: np.array(values) for name, values in d.items()} for d in (got, ref))
+    assert got["stability"].tolist() == ref["stability"].tolist() == ["stable", "unstable", "unknown"]
+    assert got["stability_method"].tolist() == ref["stability_method"].tolist() == [
+        "floquet", "floquet", "not-analysed-k0"]
+    np.testing.assert_allclose(got["growth_rate_1_s"][:2], ref["growth_rate_1_s"][:2], rtol=1e-6, atol=1e-9)
+    assert ref["growth_rate_1_s"][1] > 0.1 and np.isnan(got["growth_rate_1_s"][2])
 
 
 def test_a_top_rate_is_the_globes_too(sampled_sphere):
@@ -218,7 +239,7 @@ def test_a_wheel_wider_than_the_globe_fits_a_large_profile(tmp_path):
     np.testing.assert_allclose(t["r_prime_m"], 10 * A_AXIS ** 2 / B_AXIS - 3.5, rtol=3e-5)
     path = tmp_path / "loops.csv"
     path.write_text("theta,v_top,a\n90,30,3.5\n")
-    rows = deathsphere.vertical_input(str(path), surface="profile", profile=Profile(*big.T)).table()
+    rows = deathsphere.vertical_input(str(path), surface="profile", profile=Profile(*big.T), stability=False).table()
     assert rows["status"].tolist() == ["ok"] and np.isnan(rows["r_m"]).all()
 
 

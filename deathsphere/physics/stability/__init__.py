@@ -18,6 +18,8 @@ module             concept
                    stability boundary (beyond the paper; ``map --stability``)
 ``floquet``        exact stability of vertical orbits by Floquet analysis
                    (beyond the paper), with the order-8 tableau ``rk8``
+``loop_floquet``   the same for a wheel's vertical loop inside a closed
+                   profile (beyond the paper)
 ``paper``          the paper's results as printed and corrected: vertical
                    orbits eqs. (100)-(106), the equator eqs. (127)-(138),
                    small wheels eqs. (201)-(207), near the poles eq. (208)
@@ -46,6 +48,7 @@ _HOME = {
     "FLOQUET_STABLE_TOL": "floquet",
     "FLOQUET_UNSTABLE_TOL": "floquet",
     "vertical_floquet": "floquet",
+    "loop_floquet_on": "loop_floquet",
     "CHUNK": "horizontal",
     "sphere_stability": "horizontal",
     "wheel_reduced_jacobian": "horizontal",
@@ -70,7 +73,7 @@ _HOME = {
 }
 
 #: The submodules, reachable as attributes as if they had been imported here.
-_MODULES = ("methods", "verdict", "reduction", "frequencies", "horizontal", "on_ground", "margin", "floquet", "rk8", "paper",
+_MODULES = ("methods", "verdict", "reduction", "frequencies", "horizontal", "on_ground", "margin", "floquet", "loop_floquet", "rk8", "paper",
             "closed_forms", "comparison")
 
 __all__ = list(_HOME)

@@ -19,7 +19,8 @@ __all__ = [
 EXACT = "exact-linearisation"
 #: The single-contact machine's exact linearisation, its steering locked (docs/machine.md sec. 5).
 EXACT_STEER_LOCKED = "exact-linearisation-steer-locked"
-#: A vertical orbit's Floquet multipliers (docs/stability.md).
+#: A vertical orbit's Floquet multipliers, on the globe or inside a closed
+#: profile (docs/stability.md sec. 2, 2.1).
 FLOQUET = "floquet"
 #: k = 0 (all the mass at the contact): the equations of motion are singular.
 NOT_ANALYSED_K0 = "not-analysed-k0"
@@ -36,9 +37,10 @@ NOT_ANALYSED_OFF_GLOBE = "not-analysed-off-globe"
 #: "On a profile"; kept so that a table written before reads back with its
 #: sentence).
 NOT_ANALYSED_PROFILE = "not-analysed-profile"
-#: A vertical loop off the globe (inside a closed profile): the loop is
-#: solved (the wheel's: docs/surfaces.md eqs. S9-S12; the machine's:
-#: docs/machine.md eqs. M25-M30), its Floquet stability is the globe's only.
+#: The machine's vertical loop inside a closed profile: the loop is solved
+#: (docs/machine.md eqs. M25-M30), not its stability (the wheel's loop
+#: there is ``floquet``'s since its Floquet analysis on any closed profile,
+#: docs/stability.md sec. 2.1; a table written before said this of it).
 NOT_ANALYSED_LOOP_OFF_GLOBE = "not-analysed-loop"
 
 #: What each label means, in a sentence.
@@ -46,7 +48,8 @@ METHOD_TEXT = {
     EXACT: "exact linearisation of the steady orbit (docs/stability.md)",
     EXACT_STEER_LOCKED: ("exact linearisation of the machine with its steering locked (docs/machine.md sec. 5): "
                          "an unsteered machine is unstable on most orbits; a rider steers"),
-    FLOQUET: "Floquet multipliers of the vertical orbit over one period (docs/stability.md)",
+    FLOQUET: ("Floquet multipliers of the vertical orbit over one period, on the globe or inside a closed profile "
+              "(docs/stability.md)"),
     NOT_ANALYSED_K0: "not analysed (k = 0: the equations of motion are singular)",
     NOT_ANALYSED_PARTICLE: "not analysed (sliding particle)",
     NOT_ANALYSED_POINT_MASS: ("not analysed: no yaw inertia and no spinning wheels: a turn about the up-axis moves "
@@ -57,9 +60,9 @@ METHOD_TEXT = {
     NOT_ANALYSED_PROFILE: ("not analysed: written before the machine's equations of motion took a profile's "
                            "parallel surface (docs/machine.md, \"On a profile\"); the same ride now fills the "
                            "stability columns"),
-    NOT_ANALYSED_LOOP_OFF_GLOBE: ("not analysed: a vertical loop's Floquet multipliers are computed on the globe "
-                                  "only; inside a profile the loop itself is solved (docs/surfaces.md eqs. S9-S12, a machine's "
-                                  "docs/machine.md eqs. M25-M30)"),
+    NOT_ANALYSED_LOOP_OFF_GLOBE: ("not analysed: the machine's vertical loop inside a closed profile is solved "
+                                  "(docs/machine.md eqs. M25-M30), not its stability; a wheel's loop there is "
+                                  "analysed (floquet, docs/stability.md sec. 2.1) since it was written"),
 }
 
 
