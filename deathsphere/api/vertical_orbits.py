@@ -270,7 +270,9 @@ def vertical_sweep(theta=None, v_top=None, *, phidot_top=None, side: str = "insi
         a vertical loop needs a surface that closes over the top: the globe,
         or a profile closed at both ends (theta 90 only, inside; beyond the
         paper, docs/surfaces.md eqs. S9-S12: the globe's columns, then
-        ``surface`` and ``height_m``); elsewhere it is refused, saying why
+        ``surface`` and ``height_m``; with ``stability`` the loop's Floquet
+        stability on the profile, docs/stability.md sec. 2.1: 1-3 s for a
+        few loops, about 6 s for 100); elsewhere it is refused, saying why
         (:mod:`deathsphere.api.vertical_arena`).
 
     Returns

@@ -30,7 +30,8 @@ from deathsphere.cli.options import (
 @param_option("points")
 @input_option("theta, v_top or phidot_top, phi (where that speed is: deg from the top, 0), side, a, r, k, g, mu")
 @only_option(api.STATUSES)
-@stability_option(help="Exact stability by Floquet analysis over one lap (docs/stability.md).")
+@stability_option(help="Exact stability by Floquet analysis over one lap, on the globe or inside a closed profile "
+                       "(docs/stability.md).")
 @output_options()
 @units_option()
 def vertical_command(theta, v_top, phidot_top, side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height,
