@@ -88,7 +88,8 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
     plot over (height, alpha) and the allowed intervals of a few lanes.
     --stability there adds the curve 'stability' (the exact linearisation
     on that ground, bisected as on the globe) and on a terminal each lane's
-    stable tilts.  No --step there (docs/limits.md sec. 8).
+    stable tilts.  No --step, --jobs or --scheduler there (docs/limits.md
+    sec. 8); on the globe only --format csv/json takes them.
     """
     options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
@@ -96,10 +97,19 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
     from deathsphere.api.ride_surfaces import names_a_wall
 
     if names_a_wall(surface, wall_angle, wall_height, profile):
+        # off the globe the map is one process and its lanes are --height's
+        _refuse_unused("the map off the globe runs in one process (docs/limits.md sec. 8)", jobs=jobs,
+                       scheduler=scheduler)
         _map_on(arena, options, output, fmt, given(step=step), stability)
         return
     if height or turn_radius:
         api.region(**given(height=height, turn_radius=turn_radius))   # refused: the globe's lane is theta
+    if output is not None or choose_format(fmt) == "table":
+        # the figure and the terminal plot draw exact curves on grids of their own: a
+        # step or processes given for the data would be silently ignored there
+        _refuse_unused("only the boundary data (--format csv or json) takes it; the figure and the "
+                       "terminal plot are drawn on grids of their own",
+                       step=step, jobs=jobs, scheduler=scheduler)
     if output is not None:
         from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
         from deathsphere.render.map_figure import plot_map
@@ -126,6 +136,13 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
         table = api.region(stability=stability, progress=bar.update,
                            **given(step=step, jobs=jobs, scheduler=scheduler), **options)
     emit([table], fmt)
+
+
+def _refuse_unused(why, **typed):
+    """A usage error for the first of ``typed`` given where it has no effect."""
+    for name, value in typed.items():
+        if value is not None:
+            raise click.BadParameter(why, param_hint=f"'--{name}'")
 
 
 def _map_on(arena, options, output, fmt, step, stability):

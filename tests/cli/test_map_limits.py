@@ -121,3 +121,26 @@ def test_map_stability_boundary_as_data(run):
     # e.g. at theta = 45 deg the orbits go unstable above alpha = 16.84 deg (docs/stability.md 6.4)
     (at45,) = [float(r["alpha_deg"]) for r in stab if float(r["theta_deg"]) == 45.0]
     assert at45 == pytest.approx(16.84, abs=0.01)
+
+
+@pytest.mark.parametrize("args, option", [
+    (["--step", "15", "--output", "map.png"], "--step"),       # a step past the data's range, once accepted
+    (["--step", "1", "--output", "map.png"], "--step"),
+    (["--step", "1", "--format", "table"], "--step"),
+    (["--jobs", "2", "--format", "table"], "--jobs"),
+    (["--surface", "cylinder", "--diameter", "10", "--jobs", "2", "--format", "csv"], "--jobs"),
+    (["--surface", "cylinder", "--diameter", "10", "--scheduler", "tcp://127.0.0.1:1", "--format", "csv"],
+     "--scheduler"),
+])
+def test_an_option_the_map_would_ignore_is_refused_by_name(args, option, run, tmp_path):
+    # the figure and the terminal plot are drawn on grids of their own, and the map
+    # off the globe runs in one process: a step or processes given there did nothing
+    res = run("map", *[str(tmp_path / a) if a.endswith(".png") else a for a in args])
+    assert res.exit_code == 2 and res.stdout == ""
+    assert res.stderr.count("\n") == 1 and f"'{option}'" in res.stderr
+    assert not (tmp_path / "map.png").exists()
+
+
+def test_the_step_still_sets_the_globes_boundary_data(run):
+    coarse, fine = (rows(run("map", "--format", "csv", "--step", s).stdout) for s in ("5", "1"))
+    assert len(fine) > len(coarse) > 0

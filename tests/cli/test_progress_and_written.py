@@ -37,7 +37,7 @@ def test_long_ride_shows_its_bar_on_stderr_only(name):
 def test_map_figure_with_stability_shows_a_bar_while_the_curves_are_found(tmp_path):
     pytest.importorskip("matplotlib")
     out = tmp_path / "map.png"
-    proc, seen = _with_stderr_on_a_terminal("map", "--stability", "-a", "0.9", "-r", "3", "--step", "15",
+    proc, seen = _with_stderr_on_a_terminal("map", "--stability", "-a", "0.9", "-r", "3",
                                             "--output", str(out), delay=0)
     assert proc.returncode == 0 and proc.stdout == b"" and out.stat().st_size > 0
     assert b"map" in seen and b"0:00:0" in seen  # the label and the time elapsed
