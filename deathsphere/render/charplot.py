@@ -46,17 +46,18 @@ MIN_WIDTH = 40
 
 
 @dataclass
-class CharMap:
-    """A rendered map: ``lines`` to print, and the plot grid behind them.
+class CharGrid:
+    """A rendered chart over alpha: ``lines`` to print, and the plot grid
+    behind them (what :func:`to_rich` colours).
 
     ``cells[i][j]`` is the character at row i (top = largest alpha) and
-    column j; their centres are ``alpha_deg[i]`` and ``theta_deg[j]``; the
-    grid's first row is ``lines[row0]`` starting at column ``col0``.
+    column j; row i's centre is ``alpha_deg[i]``; the grid's first row is
+    ``lines[row0]`` starting at column ``col0``.  What a column is (a theta,
+    a lane) is the subclass's.
     """
 
     lines: list
     cells: list
-    theta_deg: np.ndarray
     alpha_deg: np.ndarray
     row0: int
     col0: int
@@ -64,6 +65,13 @@ class CharMap:
 
     def __str__(self):
         return "\n".join(self.lines)
+
+
+@dataclass
+class CharMap(CharGrid):
+    """The globe's map over (theta, alpha): column j's centre is ``theta_deg[j]``."""
+
+    theta_deg: np.ndarray = field(kw_only=True)
 
 
 def _fmt(x):

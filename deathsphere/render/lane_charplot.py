@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from deathsphere.render.charplot import MIN_WIDTH, SHADE, UNSTABLE
+from deathsphere.render.charplot import MIN_WIDTH, SHADE, UNSTABLE, CharGrid
 
 #: Boundary name -> (character, legend text), in drawing order (later wins).
 MARKS = {"S2": ("=", "S2: Omega^2 = 0 or a pole"), "S5": ("f", "S5: the rim reaches the floor"),
@@ -44,23 +44,11 @@ _LEFT = 6            # " -90 |"
 
 
 @dataclass
-class LaneCharMap:
-    """A rendered chart: ``lines`` to print; ``cells[i]`` the characters of
-    row i (top = largest alpha) whose centres are ``alpha_deg[i]`` and, per
-    column, the lane ``x_m[j]``; the grid starts at ``lines[row0]``, column
-    ``col0`` (as :class:`deathsphere.render.charplot.CharMap`, so that
-    :func:`deathsphere.render.charplot.to_rich` colours it)."""
+class LaneCharMap(CharGrid):
+    """The map off the globe over (lane, alpha): column j is the lane
+    ``x_m[j]`` (its height, on flat ground its turn radius)."""
 
-    lines: list
-    cells: list
-    x_m: np.ndarray
-    alpha_deg: np.ndarray
-    row0: int
-    col0: int
-    legend: dict = field(default_factory=dict)
-
-    def __str__(self):
-        return "\n".join(self.lines)
+    x_m: np.ndarray = field(kw_only=True)
 
 
 def drawable(curves) -> bool:
