@@ -5,6 +5,7 @@ orbit; the boundary characters sit on the rows of their curves; the
 layout fits the terminal; the lanes' table keeps its units."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -98,3 +99,35 @@ def test_a_few_lanes_are_a_table_whose_headers_keep_their_units():
     console.print(lane_map_text(curves))
     text = console.export_text()
     assert "height of the lane [m]" in text and "allowed alpha [deg]" in text
+
+
+@pytest.mark.parametrize("unit_name, metres_per_unit", [(None, 1.0), ("ft", FT)])
+def test_each_tick_names_the_lane_drawn_above_it(unit_name, metres_per_unit):
+    from deathsphere.render.display_units import DisplayUnit
+
+    unit = None if unit_name is None else DisplayUnit(unit_name, 1 / metres_per_unit)
+    curves, _, *_ = _chart("drum")
+    chart = lane_char_map(curves, 80, unit)
+    assert f"height of the lane [{unit_name or 'm'}]" in str(chart)
+    # each tick's label, read in its unit, is the lane of the column under its centre, to a column
+    ticks = chart.lines[chart.row0 + len(chart.cells) + 1]
+    column_width = (curves.x_m[-1] - curves.x_m[0]) / len(chart.cells[0])
+    labels = [(m.start() + len(m.group()) / 2 - 0.5, float(m.group())) for m in re.finditer(r"\S+", ticks)]
+    assert len(labels) >= 3
+    for centre, value in labels:
+        j = min(max(int(round(centre - chart.col0)), 0), len(chart.x_m) - 1)
+        assert abs(chart.x_m[j] - value * metres_per_unit) <= column_width, (centre, value)
+
+
+def test_the_lanes_table_adds_the_lanes_in_the_unit_typed():
+    from deathsphere.render.display_units import DisplayUnit
+
+    curves, _, *_ = _chart("drum")
+    console = Console(width=100, record=True, color_system=None)
+    console.print(lane_map_text(curves, unit=DisplayUnit("ft", 1 / FT)))
+    text = console.export_text()
+    assert "height of the lane [m]" in text and "height of the lane [ft]" in text
+    body = [line.split("│") for line in text.splitlines() if line.startswith("│")]
+    assert len(body) == 13
+    for row in body:
+        assert float(row[2]) == pytest.approx(float(row[1]) / FT, rel=1e-3)   # both at 4 figures

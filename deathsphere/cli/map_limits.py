@@ -100,7 +100,9 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
         # off the globe the map is one process and its lanes are --height's
         _refuse_unused("the map off the globe runs in one process (docs/limits.md sec. 8)", jobs=jobs,
                        scheduler=scheduler)
-        _map_on(arena, options, output, fmt, given(step=step), stability)
+        # the lanes come back in the unit they were typed in (--wall-height 12ft: ft)
+        lane_unit = display_units(None, click.get_current_context().params).unit("length", ("height", "turn_radius"))
+        _map_on(arena, options, output, fmt, given(step=step), stability, lane_unit)
         return
     if height or turn_radius:
         api.region(**given(height=height, turn_radius=turn_radius))   # refused: the globe's lane is theta
@@ -145,9 +147,10 @@ def _refuse_unused(why, **typed):
             raise click.BadParameter(why, param_hint=f"'--{name}'")
 
 
-def _map_on(arena, options, output, fmt, step, stability):
+def _map_on(arena, options, output, fmt, step, stability, lane_unit):
     """``map`` off the globe: the figure, the data, or on a terminal the
-    allowed intervals of a few lanes."""
+    chart and the allowed intervals of a few lanes (the lanes beside metres
+    in ``lane_unit``, a DisplayUnit or None)."""
     if output is not None:
         from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
         from deathsphere.render.lane_map_figure import plot_lane_map
@@ -169,8 +172,8 @@ def _map_on(arena, options, output, fmt, step, stability):
         if drawable(curves):
             # the chart of the whole wall, then the intervals of a few lanes in numbers
             width = max(40, min(stdout_console().width, 100))
-            stdout_console().print(to_rich(lane_char_map(curves, width)), end="")
-        stdout_console().print(lane_map_text(curves))
+            stdout_console().print(to_rich(lane_char_map(curves, width, lane_unit)), end="")
+        stdout_console().print(lane_map_text(curves, unit=lane_unit))
         return
     emit([api.region(stability=stability, **step, **arena, **options)], fmt)
 

@@ -88,25 +88,31 @@ def where_on(ground_name: str, outside: bool) -> str:
     return f"{'outside' if outside else 'inside'} the {ground_name}"
 
 
-def _ticks(x0, x1, ncol):
-    """A few round values of x in [x0, x1] and their columns."""
+def _ticks(x0, x1):
+    """A few round values of x in [x0, x1]."""
     span = x1 - x0
     raw = span / 5 if span > 0 else 1.0
     step = 10.0 ** math.floor(math.log10(raw))
     step *= next(m for m in (1, 2, 5, 10) if m * step >= raw)
     first = math.ceil(x0 / step - 1e-9) * step
-    values = np.arange(first, x1 + 1e-9 * max(span, 1.0), step)
-    cols = np.round((values - x0) / span * (ncol - 1)).astype(int) if span > 0 else np.zeros(values.size, int)
-    return values, cols
+    return np.arange(first, x1 + 1e-9 * max(span, 1.0), step)
 
 
 def _label(v):
     return f"{0.0 if abs(v) < 1e-12 else v:g}"
 
 
-def lane_char_map(curves, width: int) -> LaneCharMap:
+def lane_label(curves, unit=None) -> str:
+    """The lanes' axis name in ``unit`` (a
+    :class:`~deathsphere.render.display_units.DisplayUnit`; None: metres)."""
+    return curves.x_label if unit is None else curves.x_label.replace("[m]", f"[{unit.name}]")
+
+
+def lane_char_map(curves, width: int, unit=None) -> LaneCharMap:
     """The chart of ``curves`` in ``width`` characters (>= MIN_WIDTH), for
-    :func:`drawable` curves."""
+    :func:`drawable` curves; the lanes' axis in ``unit`` (a
+    :class:`~deathsphere.render.display_units.DisplayUnit`, the one typed:
+    ft for ``--wall-height 12ft``; None: metres)."""
     if width < MIN_WIDTH:
         raise ValueError(f"width must be >= {MIN_WIDTH} characters, got {width}")
     x = np.asarray(curves.x_m, dtype=float)
@@ -157,13 +163,19 @@ def lane_char_map(curves, width: int) -> LaneCharMap:
         label = _label(round(alpha[i], 1)) if on_tick or i in (0, rows - 1) else ""
         lines.append(f"{label:>{_LEFT - 2}} |" + "".join(grid[i]))
     lines.append(" " * (_LEFT - 1) + "+" + "-" * ncol)
-    ticks = [" "] * (ncol + 4)
-    for value, col in zip(*_ticks(x0, x1, ncol)):
+    per = 1.0 if unit is None else unit.per_api_unit
+    # round values in the unit shown, each centred under the column whose centre is
+    # nearest it (column j's centre is x0 + (j + 1/2) / ncol of the span, in metres)
+    values = _ticks(x0 * per, x1 * per)
+    cols = np.clip(np.round((values / per - x0) / (x1 - x0) * ncol - 0.5), 0, ncol - 1).astype(int) \
+        if x1 > x0 else np.zeros(values.size, int)
+    ticks = [" "] * (ncol + 2)
+    for value, col in zip(values, cols):
         s = _label(float(np.round(value, 10)))
-        start = min(max(col - len(s) // 2, 0), ncol + 4 - len(s))
+        start = min(max(col - len(s) // 2, 0), ncol + 2 - len(s))
         ticks[start:start + len(s)] = list(s)
-    lines.append(" " * (_LEFT - 1) + "".join(ticks).rstrip())
-    lines.append(" " * (_LEFT - 1) + curves.x_label.center(ncol).rstrip())
+    lines.append(" " * _LEFT + "".join(ticks).rstrip())
+    lines.append(" " * (_LEFT - 1) + lane_label(curves, unit).center(ncol).rstrip())
     shades = [f"{SHADE} allowed, stable", f"{UNSTABLE} allowed, unstable"] if curves.stable is not None \
         else [f"{SHADE} allowed"]
     line = " "

@@ -11,14 +11,16 @@ import numpy as np
 SHOWN_LANES = 13
 
 
-def lane_map_text(curves, lanes: int = SHOWN_LANES):
+def lane_map_text(curves, lanes: int = SHOWN_LANES, unit=None):
     """A rich Table of ``curves`` (a LaneCurves): one row per picked lane,
     its allowed alpha intervals [deg] ("none" where no tilt is feasible)
     and, with stability, their parts where the orbit is linearly stable
-    (the exact linearisation; "none" where every allowed tilt is unstable)."""
+    (the exact linearisation; "none" where every allowed tilt is unstable).
+    With ``unit`` (a :class:`~deathsphere.render.display_units.DisplayUnit`,
+    the one the lanes were typed in) the lane in it follows the lane in m."""
     from rich.markup import escape
 
-    from deathsphere.render.lane_charplot import where_on
+    from deathsphere.render.lane_charplot import lane_label, where_on
     from rich.table import Table as RichTable
 
     n = curves.x_m.size
@@ -31,12 +33,15 @@ def lane_map_text(curves, lanes: int = SHOWN_LANES):
     table = RichTable(title=escape(f"{what} tilts of a wheel {where_on(curves.ground_name, curves.outside)}: a = {curves.a:g} m, "
                             f"k = {curves.k:g}" + (f", {limits}" if limits else "")))
     table.add_column(escape(curves.x_label), justify="right")
+    if unit is not None:
+        table.add_column(escape(lane_label(curves, unit)), justify="right")
     table.add_column(escape("allowed alpha [deg]"))
     if curves.stable is not None:
         table.add_column(escape("stable alpha [deg]"))
     for i in pick:
         spans = [f"{curves.lo_deg[i, j]:.2f} .. {curves.hi_deg[i, j]:.2f}" for j in range(int(curves.count[i]))]
-        row = [f"{curves.x_m[i]:.4g}", ",  ".join(spans) or "none"]
+        lane = [f"{curves.x_m[i]:.4g}"] + ([] if unit is None else [f"{unit.of(curves.x_m[i]):.4g}"])
+        row = [*lane, ",  ".join(spans) or "none"]
         if curves.stable is not None:
             lo, hi = curves.stable
             row.append(",  ".join(f"{lo[i, j]:.2f} .. {hi[i, j]:.2f}" for j in range(lo.shape[1])

@@ -144,3 +144,19 @@ def test_an_option_the_map_would_ignore_is_refused_by_name(args, option, run, tm
 def test_the_step_still_sets_the_globes_boundary_data(run):
     coarse, fine = (rows(run("map", "--format", "csv", "--step", s).stdout) for s in ("5", "1"))
     assert len(fine) > len(coarse) > 0
+
+
+def test_off_the_globe_the_terminal_shows_the_lanes_in_the_unit_typed(run):
+    feet = run("map", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "12ft", "--format", "table",
+               env={"COLUMNS": "100"}).stdout
+    assert "height of the lane [ft]" in feet and "height of the lane [m]" in feet
+    assert any(cells[1:3] == ["3.658", "12"] for cells in
+               ([c.strip() for c in line.split("│")] for line in feet.splitlines()))
+    metres = run("map", "--surface", "cylinder", "--diameter", str(32 * 0.3048), "--wall-height", str(12 * 0.3048),
+                 "--format", "table", env={"COLUMNS": "100"}).stdout
+    assert "[ft]" not in metres and "height of the lane [m]" in metres
+    # the data stay in metres whatever was typed
+    csv_feet = run("map", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "12ft", "--format", "csv")
+    csv_metres = run("map", "--surface", "cylinder", "--diameter", "9.7536", "--wall-height", "3.6576",
+                     "--format", "csv")
+    assert csv_feet.stdout == csv_metres.stdout
