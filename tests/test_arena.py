@@ -47,12 +47,18 @@ def test_bad_arenas_name_the_keyword(kwargs, param):
 
 
 def test_a_record_and_its_keywords_give_one_table():
-    by_record = deathsphere.orbit(surface=Cylinder(4.8768, 6.0), height=[1.0, 7.0], alpha=10, stability=False)
-    by_words = deathsphere.orbit(surface="cylinder", diameter=9.7536, wall_height=6, height=[1.0, 7.0], alpha=10,
-                                 stability=False)
+    by_record = deathsphere.orbit(surface=Cylinder(4.8768, 6.0), height=[1.0, 5.0], alpha=[10, 89.9],
+                                  stability=False)
+    by_words = deathsphere.orbit(surface="cylinder", diameter=9.7536, wall_height=6, height=[1.0, 5.0],
+                                 alpha=[10, 89.9], stability=False)
     for name in ("v_cm_m_s", "mu_required", "rho_contact_m"):
         assert np.array_equal(by_record[name], by_words[name], equal_nan=True)
-    assert by_record["status"].tolist() == ["ok", "no_fit"]
+    assert by_record["status"].tolist() == by_words["status"].tolist() == ["ok", "no_fit"]
+    # a lane over the wall's top is refused alike, naming height
+    for surface in (dict(surface=Cylinder(4.8768, 6.0)), dict(surface="cylinder", diameter=9.7536, wall_height=6)):
+        with pytest.raises(ParameterError) as err:
+            deathsphere.orbit(height=[1.0, 7.0], alpha=10, stability=False, **surface)
+        assert err.value.param == "height" and "at most 6 m" in str(err.value)
     globe = deathsphere.orbit(60, 10, surface=Sphere(2.0), stability=False)
     assert float(globe["v_cm_m_s"]) == float(deathsphere.orbit(60, 10, r=2.0, stability=False)["v_cm_m_s"])
 

@@ -193,6 +193,14 @@ class ValuesAxis(Axis):
         return self._values[np.asarray(index, dtype=np.int64)]
 
 
+def axis_max(axis: Axis) -> float:
+    """The largest value of an axis (-inf when empty), a range's without
+    materialising it: each segment is monotone, so its largest is an end."""
+    if isinstance(axis, ValuesAxis):
+        return float(np.max(axis.take(np.arange(len(axis))))) if len(axis) else -math.inf
+    return max((max(s.first, s.last) for s in axis.segments), default=-math.inf)
+
+
 class UnitSegment(Segment):
     """A range written with a unit: each value converted from the decimal
     written with the unit's exact factor (``scale``, a Fraction), rounded

@@ -7,6 +7,8 @@ from __future__ import annotations
 import math
 from functools import partial
 
+import numpy as np
+
 from deathsphere.api.arguments import (
     CHUNK,
     R,
@@ -25,7 +27,7 @@ from deathsphere.api.streams import Chunks, input_requests, request_reader
 from deathsphere.constants import SIDES
 from deathsphere.params import ParameterError
 from deathsphere.records.paper_bodies import Wheel
-from deathsphere.requests.arena import arena, lane_key
+from deathsphere.requests.arena import arena, lane_key, refuse_above_top
 from deathsphere.requests.decode import decode_paper_body
 
 #: Lanes :func:`limits_on` evaluates at once (each a root search).
@@ -102,6 +104,8 @@ def limits_on(typed: dict):
     checked = {name: checked_array(word if name == "height" else name, v) for name, v in given.items()
                if v is not None}
     _too_many(word, grid_shape(checked))
+    if word == "height" and "height" in checked and np.size(checked["height"]):
+        refuse_above_top(ground, float(np.max(checked["height"])))
     shape, flat = broadcast_flat(checked)
     req = make_requests(math.prod(shape), body=body, side=side, ground=ground, **flat)
     return raise_if_all_invalid(lane_limits_rows(req, ground, lanes=not is_given(lane)))

@@ -10,6 +10,7 @@ from deathsphere.api.arguments import INF, A, G, checked_axis, checked_choice, c
 from deathsphere.api.lane_limits import MAX_LANES, _arena, _too_many
 from deathsphere.constants import SIDES
 from deathsphere.params import ParameterError
+from deathsphere.requests.arena import refuse_above_top
 
 
 def _setup(typed: dict):
@@ -40,6 +41,8 @@ def _setup(typed: dict):
         problem = first_problem("height", heights)
         if problem:
             raise ParameterError(problem.replace("height", word, 1), word)
+        if word == "height" and heights.size:
+            refuse_above_top(ground, float(np.max(heights)))
     else:
         heights = default_lanes(ground, values["a"])
     return ground, heights, values, side == "outside"

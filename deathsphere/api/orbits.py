@@ -14,6 +14,7 @@ from deathsphere.api.arguments import (
     A,
     G,
     R,
+    axis_max,
     broadcast_flat,
     checked_array,
     checked_axis,
@@ -242,7 +243,7 @@ def _arena_of(surface, r, diameter, wall_angle, wall_height, profile, height, tu
     (whose radius or diameter, possibly an axis, goes on as before).  On
     flat ground the lane is ``turn_radius``; elsewhere ``height`` (``axis``:
     sweep's axis text, checked as an axis by the caller)."""
-    from deathsphere.requests.arena import arena, is_globe, lane_key
+    from deathsphere.requests.arena import arena, is_globe, lane_key, refuse_above_top
 
     if is_globe(surface):
         if turn_radius is not None:
@@ -273,6 +274,9 @@ def _arena_of(surface, r, diameter, wall_angle, wall_height, profile, height, tu
     elif not is_given(height):
         raise ParameterError(f"on the {ground.name} give the lane's height (its height above the lowest point)",
                              "height", missing=True)
+    else:
+        # a lane typed above the wall is bad input, as in ride (a file's rows say no_fit instead)
+        refuse_above_top(ground, axis_max(checked_axis("height", height)))
     return ground, R, None, height
 
 

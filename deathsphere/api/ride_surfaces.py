@@ -20,12 +20,12 @@ import numpy as np
 
 from deathsphere.api.arguments import (TILTS_PER_SPEED, broadcast_flat, checked_array, checked_flag, grid_shape,
                                       refuse_large_grid)
-from deathsphere.params import ParameterError, reduce_angle, shown_number
+from deathsphere.params import ParameterError, reduce_angle
 from deathsphere.physics.machine_arrays import machine_arrays
 from deathsphere.physics.machine_lanes import contact_rate_on, orbits_for_rate_on, orbits_for_speed_on
 from deathsphere.physics.machine_surface import ride_orbit_on
 from deathsphere.physics.status import Reason, Status
-from deathsphere.requests.arena import lane_key
+from deathsphere.requests.arena import lane_key, refuse_above_top
 from deathsphere.requests.arena import names_a_wall  # noqa: F401  (the CLI asks through the API)
 
 __all__ = ["ride_on_surface"]
@@ -35,11 +35,8 @@ def _lanes(ground, height) -> np.ndarray:
     """The heights, each on the wall: above the ground's highest lane (its
     wall's top, a cone's apex, a profile's last sample) refused in one line;
     flat ground has no top (its lane is a turn radius)."""
-    top = getattr(ground, "highest_lane", math.inf)
-    if np.any(height > top):
-        raise ParameterError(f"height must be at most {shown_number(top)} m on this {ground.name}, its highest "
-                             f"lane (the wall's top, or a cone's apex; got {shown_number(float(np.max(height)))} m)",
-                             "height")
+    if np.size(height):
+        refuse_above_top(ground, float(np.max(height)))
     return height
 
 

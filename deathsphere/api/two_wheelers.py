@@ -29,6 +29,7 @@ from deathsphere.records.two_wheeler import DEFAULT_HEAD, TwoWheeler, benchmark_
 from deathsphere.records.two_wheeler_files import is_two_wheeler_file, two_wheeler_file, two_wheeler_text
 from deathsphere.records.two_wheeler_presets import NAMES as TWO_WHEELER_NAMES
 from deathsphere.records.two_wheeler_presets import TWO_WHEELERS, as_two_wheeler
+from deathsphere.requests.arena import refuse_above_top
 from deathsphere.requests.decode import read_machine_file
 from deathsphere.table import Table
 
@@ -524,11 +525,8 @@ def _wall_lanes(wall, theta, height, limit: int, shaped: bool):
         raise ParameterError(f"give height (the rear contact's height above the {wall.name}'s floor)", "height",
                              missing=True)
     given = _values("height", height, limit, shaped=shaped)
-    top = wall.highest_lane
-    if np.any(given > top):
-        raise ParameterError(f"height must be at most {shown_number(top)} m on this {wall.name}, its highest lane "
-                             f"(the wall's top, or a cone's apex; got {shown_number(float(np.max(given)))} m)",
-                             "height")
+    if np.size(given):
+        refuse_above_top(wall, float(np.max(given)))
     return np.asarray(given, dtype=float), given, False
 
 
@@ -1122,10 +1120,8 @@ def _wall_lane(t: TwoWheeler, wall, theta, height, diameter) -> tuple[float, flo
     if height is None:
         raise ParameterError(f"give height (the rear contact's height above the {wall.name}'s floor)", "height",
                              missing=True)
-    h, top = checked_scalar("height", height), float(wall.highest_lane)
-    if h > top:
-        raise ParameterError(f"height must be at most {shown_number(top)} m on this {wall.name}, its highest lane "
-                             f"(the wall's top, or a cone's apex; got {shown_number(h)} m)", "height")
+    h = checked_scalar("height", height)
+    refuse_above_top(wall, h)
     return r, h
 
 

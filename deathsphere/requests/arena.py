@@ -13,7 +13,7 @@ from deathsphere import params
 from deathsphere.errors import ParameterError
 from deathsphere.physics.ground import Cone, Cylinder, Ground, Plane, Profile, Sphere
 
-__all__ = ["SURFACES", "SHAPE_KEYS", "arena", "is_globe", "lane_key", "names_a_wall"]
+__all__ = ["SURFACES", "SHAPE_KEYS", "arena", "is_globe", "lane_key", "names_a_wall", "refuse_above_top"]
 
 #: The surfaces by name (``--surface``); the sphere is the paper's globe.
 SURFACES = ("sphere", "cylinder", "cone", "plane", "profile")
@@ -145,3 +145,15 @@ def names_a_wall(surface=None, wall_angle=None, wall_height=None, profile=None) 
     if name not in SURFACES:
         raise ParameterError(f"surface must be one of {' | '.join(SURFACES)} (got {surface!r})", "surface")
     return name != "sphere" or any(v is not None for v in (wall_angle, wall_height, profile))
+
+
+def refuse_above_top(ground, highest: float, key: str = "height") -> None:
+    """Refuse, naming ``key``, a lane typed above the ground's highest lane
+    (a drum's or a cone's wall top, a leaning-in cone's apex, a profile's
+    last sample): one meaning for every command.  A batch's rows are not
+    refused here: each says ``no_fit`` with its reason instead."""
+    top = getattr(ground, "highest_lane", math.inf)
+    if highest > top:
+        raise ParameterError(f"height must be at most {params.shown_number(top)} m on this {ground.name}, its "
+                             f"highest lane (the wall's top, or a cone's apex; got {params.shown_number(highest)} m)",
+                             key)

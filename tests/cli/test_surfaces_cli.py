@@ -149,9 +149,27 @@ def test_the_wall_of_death_given_its_speed(run):
     assert float(slow["rho_contact_m"]) == pytest.approx(4.8768)
 
 
-def test_a_lane_off_the_wall_is_a_status(run):
-    res = run("orbit", "--surface", "cylinder", "--diameter", "9", "--wall-height", "3", "--height", "2",
-              "--height", "4", "--alpha", "10", "--format", "csv")
+@pytest.mark.parametrize("command, extra", [
+    ("orbit", ["--height", "2", "--height", "4", "--alpha", "10"]),
+    ("sweep", ["--height", "0:4:0.5", "--alpha", "10"]),
+    ("limits", ["--height", "2", "--height", "4"]),
+    ("map", ["--height", "0:4:0.1"]),
+    ("ride", ["--height", "4", "--speed", "40km/h"]),
+])
+def test_a_lane_typed_above_the_wall_is_refused_by_every_command(run, command, extra):
+    # one meaning everywhere: the wall's top is the arena's, a lane over it is bad input
+    res = run(command, "--surface", "cylinder", "--diameter", "9", "--wall-height", "3", *extra, "--format", "csv")
+    assert res.exit_code == 2 and res.stdout == "" and res.stderr.count("\n") == 1
+    assert "'--height'" in res.stderr and "at most 3 m on this cylinder" in res.stderr and "got 4 m" in res.stderr
+
+
+def test_a_row_of_a_file_off_the_wall_is_a_status(run, tmp_path):
+    # in a batch every row yields its row: the one above the wall's top says why
+    path = tmp_path / "lanes.csv"
+    path.write_text("height,alpha\n2,10\n4,10\n")
+    res = run("orbit", "--input", str(path), "--surface", "cylinder", "--diameter", "9", "--wall-height", "3",
+              "--format", "csv")
+    assert res.exit_code == 0, res.stderr
     got = rows(res.stdout)
     assert [r["status"] for r in got] == ["ok", "no_fit"] and "above the wall's top" in got[1]["reason"]
 
