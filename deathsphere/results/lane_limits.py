@@ -10,6 +10,7 @@ import math
 import numpy as np
 
 from deathsphere.physics import lane_region
+from deathsphere.physics.status import REASON_TEXT, STATUS_LABELS, Reason, Status
 from deathsphere.records.paper_bodies import WHEEL
 from deathsphere.requests.decode import paper_body_codes
 from deathsphere.results.limits import NOT_A_WHEEL, _degrees, _limit, _speed, interval_rows
@@ -123,6 +124,12 @@ def lane_limits_rows(req: dict, ground, lanes: bool) -> Table:
     reason = np.where((reason == "") & (body >= 0) & (body != WHEEL.code), NOT_A_WHEEL, reason)
     reason = np.where(reason == "", validate_requests(probe), reason)
     k_all = probe["k"]
+    # a file's lane off the wall is its row, no_fit with the orbit's reason (typed ones are refused before)
+    off_wall = np.zeros(n, dtype=bool)
+    if not lanes:
+        h = np.asarray(req["height"], dtype=float)
+        off_wall = (reason == "") & ((h < 0) | (h > getattr(ground, "highest_lane", math.inf)))
+        reason = np.where(off_wall, REASON_TEXT[Reason.LANE_OFF_WALL], reason)
     ok = reason == ""
     keys = np.column_stack([req["a"], k_all, req["g"], req["mu"], req["max_g"],
                             (req["side"] == "outside").astype(float)])
@@ -170,6 +177,7 @@ def lane_limits_rows(req: dict, ground, lanes: bool) -> Table:
     columns["input_row"] = np.asarray(req["input_row"], dtype=np.int64)[src]
     columns["body"] = req["body"][src].astype(object)
     columns["side"] = req["side"][src].astype(object)
-    columns["status"] = np.where(reason[src] == "", "ok", "invalid").astype(object)
+    columns["status"] = np.where(reason[src] == "", "ok", np.where(off_wall[src], STATUS_LABELS[Status.NO_FIT],
+                                                                  "invalid")).astype(object)
     columns["reason"] = reason[src].astype(object)
     return Table(columns)

@@ -185,3 +185,15 @@ def test_bad_profile_files_are_one_line_and_exit_2(run, tmp_path, text, words):
     path.write_bytes(text)
     res = run("orbit", "--surface", "profile", "--profile", str(path), "--height", "1", "--alpha", "10")
     assert res.exit_code == 2 and res.stderr.count("\n") == 1 and words in res.stderr
+
+
+def test_limits_of_a_file_row_off_the_wall_is_its_no_fit_row(run, tmp_path):
+    path = tmp_path / "lanes.csv"
+    path.write_text("height\n2\n4\n")
+    res = run("limits", "--input", str(path), "--surface", "cylinder", "--diameter", "9", "--wall-height", "3",
+              "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    on, off = rows(res.stdout)
+    assert on["status"] == "ok" and int(on["intervals"]) == 1
+    # the lane echoed as given, its status and reason the orbit's
+    assert (off["status"], float(off["height_m"])) == ("no_fit", 4.0) and "above the wall's top" in off["reason"]
