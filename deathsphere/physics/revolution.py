@@ -40,6 +40,7 @@ from __future__ import annotations
 import numpy as np
 
 from deathsphere.physics import particle as _particle
+from deathsphere.physics import rim_fit as _rim_fit
 from deathsphere.physics import sphere as _sphere
 from deathsphere.physics.geometry import SINGULAR
 from deathsphere.physics.status import Reason, Status, first_failure, mu_required
@@ -58,7 +59,8 @@ def lane(ground, height):
     that of the nearest lane, masked by the callers), ``rho``, ``z`` (the
     contact [m]), ``wall_angle`` beta, ``sin_beta``, ``cos_beta`` (from the
     ground's normal, exact on an upright wall), ``kappa_meridian``,
-    ``kappa_parallel`` [1/m] (docs/surfaces.md, S0)."""
+    ``kappa_parallel`` [1/m] (docs/surfaces.md, S0); ``at`` the height
+    the geometry is of (clipped to the wall)."""
     height = np.asarray(height, dtype=float)
     top = _highest(ground)
     off = ~((height >= 0) & (height <= top))          # NaN is off the wall too
@@ -66,7 +68,7 @@ def lane(ground, height):
     rho, z = ground.contact(safe)
     n_rho, n_z = ground.normal(safe)
     k_mer, k_par = ground.curvatures(safe)
-    return {"height": height, "off_wall": off, "rho": np.asarray(rho, dtype=float), "z": np.asarray(z, dtype=float),
+    return {"height": height, "off_wall": off, "at": safe, "rho": np.asarray(rho, dtype=float), "z": np.asarray(z, dtype=float),
             "wall_angle": np.asarray(ground.wall_angle(safe), dtype=float),
             "sin_beta": -np.asarray(n_rho, dtype=float), "cos_beta": np.asarray(n_z, dtype=float),
             "kappa_meridian": np.asarray(k_mer, dtype=float), "kappa_parallel": np.asarray(k_par, dtype=float)}
@@ -104,10 +106,29 @@ def _pick(condition, if_true, if_false):
     return np.where(condition, np.int8(if_true), np.int8(if_false)).astype(np.int8)
 
 
+def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
+    """Where the rim, fitting by S4 near its contact, leaves the wall away
+    from it (docs/surfaces.md eq. S4g): never where S4 is the whole fit (the
+    sphere, the drum, the cone, flat ground); on a profile, the lanes whose
+    rim the tangent ball (a <= r_P |sin(alpha + beta)|, less a margin) does
+    not hold are sampled (:func:`deathsphere.physics.rim_fit.rim_crosses_wall`)."""
+    crosses = np.zeros(np.shape(candidates), dtype=bool)
+    if ground.local_fit_is_global or not np.any(candidates):
+        return crosses
+    reach = ground.tangent_ball_radius(where["at"], outside)
+    held = a <= (1.0 - _rim_fit.BALL_MARGIN) * reach * np.abs(tilt)
+    check = np.nonzero(candidates & ~held)
+    if check[0].size:
+        crosses[check] = _rim_fit.rim_crosses_wall(ground, where["rho"][check], where["z"][check], alpha[check],
+                                                   a[check], outside[check])
+    return crosses
+
+
 def wheel_orbit(ground, height, alpha, a, k, g, outside=False, mu=np.inf):
     """Every quantity of a wheel's steady horizontal orbit on ``ground``,
-    vectorised (docs/surfaces.md S1-S5; McDonald 1993 eqs. 13, 29-36 with
-    the surface entering only through S3-S5).
+    vectorised (docs/surfaces.md S1-S5 and S4g, the rim's fit away from its
+    contact, beyond the paper; McDonald 1993 eqs. 13, 29-36 with the surface
+    entering only through S3-S5).
 
     height : [m] the contact's height above the ground's lowest point (the
         turn radius on flat ground); alpha : [rad] the tilt of the wheel's
@@ -135,6 +156,7 @@ def wheel_orbit(ground, height, alpha, a, k, g, outside=False, mu=np.inf):
     lowest = where["z"] + a * sin_a - a * np.abs(sin_a)
     length = _length_scale(where, a)
     floor_hit = ~outside & (lowest < ground.lowest - SINGULAR * length)
+    crosses = _rim_crosses(ground, where, alpha, a, tilt, outside, ~where["off_wall"] & fits & ~floor_hit)
     den = sin_a * ((2 * k + 1) * rp + k * a * cos_a)                         # eq. (29)
     undefined = np.abs(den) <= SINGULAR * ((2 * k + 1) * length + (k + 1) * a)
     om2 = np.where(undefined, np.nan, g * cos_a / np.where(undefined, 1.0, den))
@@ -153,6 +175,7 @@ def wheel_orbit(ground, height, alpha, a, k, g, outside=False, mu=np.inf):
         (where["off_wall"], Status.NO_FIT, Reason.LANE_OFF_WALL),
         (~fits, Status.NO_FIT, _pick(outside, Reason.SURFACE_NO_FIT_OUTSIDE, Reason.SURFACE_NO_FIT)),
         (floor_hit, Status.NO_FIT, Reason.BELOW_FLOOR),
+        (crosses, Status.NO_FIT, Reason.RIM_CROSSES_WALL),
         (undefined, Status.NO_ORBIT, _pick(np.abs(sin_a) <= SINGULAR, Reason.ALPHA_IN_ORBIT_PLANE,
                                            Reason.ZERO_DENOMINATOR)),
         (om2_zero, Status.NO_ORBIT, Reason.OMEGA_ZERO),
@@ -211,6 +234,24 @@ def _ball_failures(where, a, outside):
     return no_fit
 
 
+def _ball_crosses(ground, where, a, outside, candidates):
+    """Where the ball, fitting by S7 at its contact, reaches the wall away
+    from it (docs/surfaces.md eq. S7g): never where S7 is the whole fit; on
+    a profile, the lanes the tangent ball r_P (less a margin) does not hold
+    are decided by the centre's distance from the meridian and its mirror
+    (:func:`deathsphere.physics.rim_fit.ball_crosses_wall`)."""
+    crosses = np.zeros(np.shape(candidates), dtype=bool)
+    if ground.local_fit_is_global or not np.any(candidates):
+        return crosses
+    reach = ground.tangent_ball_radius(where["at"], outside)
+    check = np.nonzero(candidates & ~(a <= (1.0 - _rim_fit.BALL_MARGIN) * reach))
+    if check[0].size:
+        crosses[check] = _rim_fit.ball_crosses_wall(ground, where["rho"][check], where["z"][check],
+                                                    where["sin_beta"][check], where["cos_beta"][check], a[check],
+                                                    outside[check])
+    return crosses
+
+
 def _ball(ground, height, second, a, k, g, outside, mu, branch, solve):
     a, k, g, mu = (np.asarray(x, dtype=float) for x in (a, k, g, mu))
     outside = np.asarray(outside, dtype=bool)
@@ -224,16 +265,18 @@ def _ball(ground, height, second, a, k, g, outside, mu, branch, solve):
     # S5: inside, the centre sits a along the normal: its lowest point a below it
     length = _length_scale(where, a)
     floor_hit = ~outside & (where["z"] + a * where["cos_beta"] - a < ground.lowest - SINGULAR * length)
+    crosses = _ball_crosses(ground, where, a, outside, ~where["off_wall"] & ~flat & ~no_fit & ~floor_hit)
     res = solve(theta_t, second, a, radius_t, k, g, outside, mu, branch)
-    extra = [where["off_wall"], flat, no_fit, floor_hit]
+    extra = [where["off_wall"], flat, no_fit, floor_hit, crosses]
     if np.ndim(res["status"]) > len(shape):          # both branches on a new last axis
         extra = [np.expand_dims(m, -1) for m in extra]
-    off, flat, no_fit, floor_hit = (np.broadcast_to(m, np.shape(res["status"])) for m in extra)
+    off, flat, no_fit, floor_hit, crosses = (np.broadcast_to(m, np.shape(res["status"])) for m in extra)
     status, reason = first_failure([
         (off, Status.NO_FIT, Reason.LANE_OFF_WALL),
         (flat, Status.NO_ORBIT, Reason.BALL_FLAT_GROUND),
         (no_fit, Status.NO_FIT, Reason.BALL_NO_FIT_MERIDIAN),
         (floor_hit, Status.NO_FIT, Reason.BELOW_FLOOR),
+        (crosses, Status.NO_FIT, Reason.BALL_CROSSES_WALL),
         (res["status"] != Status.OK, res["status"], _renamed(res["reason"], _BALL_REASONS)),
     ])
     res = dict(res, status=status, reason=reason)

@@ -108,6 +108,8 @@ class Reason(IntEnum):
     MACHINE_LOOP_TOO_FAST = 75
     MACHINE_LOOP_SLIPS = 76
     MACHINE_LOOP_OVER_G = 77
+    RIM_CROSSES_WALL = 78
+    BALL_CROSSES_WALL = 79
 
 
 REASONS = {
@@ -195,6 +197,10 @@ REASONS = {
                               "a kappa_parallel < 1: the wall bends more than the rim)",
     Reason.SURFACE_NO_ALPHA: "no tilt alpha at which the wheel fits the wall gives this speed or rate "
                              "(surfaces.md eq. S2 has no root in the window of eq. S4)",
+    Reason.RIM_CROSSES_WALL: "the wheel's rim crosses the wall away from its contact (surfaces.md eq. S4g: "
+                             "it fits by eq. S4 only near the contact)",
+    Reason.BALL_CROSSES_WALL: "the ball reaches the wall away from its contact (surfaces.md eq. S7g: it fits "
+                              "the wall's bend at the contact only)",
     # a vertical loop inside a closed profile (docs/surfaces.md eqs. S9-S12)
     Reason.VERTICAL_LOOP_NO_FIT: "the wheel does not fit the loop's tightest bend (needs a below the meridian's "
                                  "least radius of curvature: a kappa_max < 1)",

@@ -35,6 +35,9 @@ class Cone:
     wall_angle_rad: float
     wall_height: float = math.inf
     name: str = "cone"
+    #: S4 (the wheel) and S7 (the ball) are the whole fit here, not only near
+    #: the contact (docs/surfaces.md, S4g).
+    local_fit_is_global = True
 
     #: z of the floor [m].
     lowest = 0.0

@@ -23,6 +23,9 @@ class Cylinder:
     radius: float
     wall_height: float = math.inf
     name: str = "cylinder"
+    #: S4 (the wheel) and S7 (the ball) are the whole fit here, not only near
+    #: the contact (docs/surfaces.md, S4g).
+    local_fit_is_global = True
 
     #: z of the floor [m].
     lowest = 0.0

@@ -19,6 +19,9 @@ class Plane:
     :meth:`contact` takes that radius."""
 
     name: str = "plane"
+    #: S4 (the wheel) and S7 (the ball) are the whole fit here, not only near
+    #: the contact (docs/surfaces.md, S4g).
+    local_fit_is_global = True
     level: float = 0.0
 
     @property

@@ -63,6 +63,9 @@ class Profile:
     chords), or an interpolated meridian that turns down between rows."""
 
     name = "profile"
+    #: S4 and S7 decide the fit only near the contact: the rim and the ball
+    #: are checked against the whole meridian (docs/surfaces.md, S4g).
+    local_fit_is_global = False
 
     def __init__(self, rho, z):
         from scipy.interpolate import CubicSpline
@@ -133,6 +136,7 @@ class Profile:
         # contact, normal, wall_angle and curvatures of the same heights in turn
         self._last = None
         self._last_nearest = None
+        self._balls = None
 
     #: z of the lowest point [m].
     @property
@@ -265,6 +269,27 @@ class Profile:
             step = np.where(df > 0, f / np.where(df > 0, df, 1.0), 0.0)
             s = np.clip(s - step, 0.0, self._s_end)
         return s, q
+
+    def tangent_ball_radius(self, height, outside=False):
+        """The largest ball tangent to the wall at each lane that stays
+        inside it (``outside``: outside it) [m], the lower of the table's
+        two values about the lane (beyond the paper: docs/surfaces.md,
+        S4g; :mod:`~deathsphere.physics.ground.profile_reach`)."""
+        if self._balls is None:
+            from deathsphere.physics.ground.profile_reach import tangent_ball_table
+
+            def curvature(s):
+                d1, d2 = self._d1(s), self._d2(s)
+                return (d1[..., 0] * d2[..., 1] - d1[..., 1] * d2[..., 0]) / np.hypot(d1[..., 0], d1[..., 1]) ** 3
+
+            self._balls = tangent_ball_table(self._spline, self._frame, curvature, self._s_end)
+        s_table, r_in, r_out = self._balls
+        s = self._lane(height)[0]
+        step = s_table[1] - s_table[0]
+        i = np.clip((s / step).astype(int), 0, s_table.size - 2)
+        r = np.where(np.asarray(outside, dtype=bool), np.minimum(r_out[i], r_out[i + 1]),
+                     np.minimum(r_in[i], r_in[i + 1]))
+        return r
 
     def offset(self, t):
         """The parallel surface a distance ``t`` [m] inside: the surface of

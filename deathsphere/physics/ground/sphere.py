@@ -17,6 +17,9 @@ class Sphere:
 
     radius: float
     name: str = "sphere"
+    #: S4 (the wheel) and S7 (the ball) are the whole fit here, not only near
+    #: the contact (docs/surfaces.md, S4g).
+    local_fit_is_global = True
 
     @property
     def lowest(self) -> float:

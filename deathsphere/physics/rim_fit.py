@@ -1,0 +1,114 @@
+"""The wheel's rim and the ball checked against the whole wall of a profile.
+
+Beyond the paper (docs/surfaces.md, eq. S4g).  On the sphere, the drum and
+the cone the local fits S4 (the wheel) and S7 (the ball) are the whole fit
+(proved there); on a profile the wall can come back to meet the body away
+from its contact (a neck, a bump, the far side of a narrow bowl).  Two
+stages, vectorised over lanes:
+
+1. the **tangent ball**: the largest ball r_P tangent at the contact that
+   stays inside the wall (``ground.tangent_ball_radius``).  The rim lies in
+   that ball when a <= r_P sin(alpha + beta) (the wheel's plane cuts it in
+   a circle of radius r_P sin(alpha + beta) through the contact), the ball
+   when a <= r_P.  A lane accepted so, with a margin of
+   :data:`BALL_MARGIN` off r_P for the table's spacing, fits;
+2. the rest are **certified by sampling**: the rim point at angle s from
+   the contact, X(s) = P + a (1 - cos s) u + a sin s e_phi, has the
+   clearance c(s) = clearance(|X_xy|, X_z), a signed distance and so
+   a-Lipschitz in s (|dX/ds| = a); a point above the wall's top (or below
+   its lowest point) has nothing to hit, so the margin is
+   m(s) = max(c(s), z(s) - z_top, z_low - z(s)), a-Lipschitz too.  On an
+   interval [s1, s2] m >= (m1 + m2)/2 - a (s2 - s1)/2; intervals that bound
+   does not decide are halved, all lanes' together, until it does or the
+   half-width's bound is under the tolerance.  The ball's disc is decided
+   by its centre's distance from the meridian and from its mirror.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["rim_crosses_wall", "ball_crosses_wall", "BALL_MARGIN", "NEAR_CONTACT", "TOLERANCE", "GRID"]
+
+#: The fraction taken off the table's tangent ball before it accepts a lane.
+BALL_MARGIN = 0.02
+#: The arc |s| < NEAR_CONTACT [rad] of the rim about the contact is S4's:
+#: there the clearance is (a s^2 / 2)(sin(alpha + beta) - a kappa_parallel)
+#: to second order.
+NEAR_CONTACT = 0.125
+#: The depth [in units of a] a rim point may lie outside the wall and still
+#: be called inside (and the least depth that is called outside).
+TOLERANCE = 1e-8
+#: Intervals of the first grid on s in [NEAR_CONTACT, pi] (the rim is
+#: symmetric about the contact's meridian plane: s and -s have one image).
+GRID = 32
+
+
+def _rim_margin(ground, rho0, z0, cos_a, sin_a, a, side, s):
+    """m(s) at the rim angles s (rows of lanes): side * clearance of the
+    rim point, or its height past the wall's ends where that is larger."""
+    w = 1.0 - np.cos(s)
+    x = rho0 - a * w * cos_a
+    y = a * np.sin(s)
+    z = z0 + a * w * sin_a
+    c = side * ground.clearance(np.hypot(x, y), z)
+    z_low = ground.lowest
+    z_top = z_low + ground.highest_lane
+    return np.maximum(c, np.maximum(z - z_top, z_low - z))
+
+
+def rim_crosses_wall(ground, rho0, z0, alpha, a, outside):
+    """Whether the wheel's rim (radius a [m], tilt alpha [rad], its contact
+    at (rho0, z0) [m] on ``ground``) leaves the wall away from its contact,
+    for lanes that pass S4 (docs/surfaces.md eq. S4g, sampling and the
+    Lipschitz bound; 1-d arrays of one length, a bool array back).  True:
+    a rim point lies more than TOLERANCE a outside; False: no rim point
+    with |s| >= NEAR_CONTACT lies more than 2 TOLERANCE a outside."""
+    rho0, z0, alpha, a = (np.asarray(x, dtype=float) for x in (rho0, z0, alpha, a))
+    side = np.where(np.asarray(outside, dtype=bool), -1.0, 1.0)
+    n = rho0.size
+    crosses = np.zeros(n, dtype=bool)
+    if n == 0:
+        return crosses
+    cos_a, sin_a = np.cos(alpha), np.sin(alpha)
+    s = np.linspace(NEAR_CONTACT, np.pi, GRID + 1)[None, :]
+    col = (rho0[:, None], z0[:, None], cos_a[:, None], sin_a[:, None], a[:, None], side[:, None])
+    m = _rim_margin(ground, *col, s)
+    tol = TOLERANCE * a
+    crosses |= np.any(m < -tol[:, None], axis=1)
+    # the undecided intervals: (lane, s1, s2, m1, m2)
+    half = 0.5 * (s[0, 1] - s[0, 0])
+    lower = 0.5 * (m[:, :-1] + m[:, 1:]) - a[:, None] * half
+    lane, j = np.nonzero((lower < -tol[:, None]) & ~crosses[:, None])
+    s1, s2 = s[0, j], s[0, j + 1]
+    m1, m2 = m[lane, j], m[lane, j + 1]
+    while lane.size and half > TOLERANCE:
+        mid = 0.5 * (s1 + s2)
+        mm = _rim_margin(ground, rho0[lane], z0[lane], cos_a[lane], sin_a[lane], a[lane], side[lane], mid)
+        crosses[lane[mm < -tol[lane]]] = True
+        half *= 0.5
+        lane, s1, s2, m1, m2 = (np.concatenate((v, v)) for v in (lane, s1, s2, m1, m2))
+        k = mid.size
+        mid2, mm2 = np.concatenate((mid, mid)), np.concatenate((mm, mm))
+        s2[:k], m2[:k] = mid2[:k], mm2[:k]            # [s1, mid]
+        s1[k:], m1[k:] = mid2[k:], mm2[k:]            # [mid, s2]
+        keep = (0.5 * (m1 + m2) - a[lane] * half < -tol[lane]) & ~crosses[lane]
+        lane, s1, s2, m1, m2 = (v[keep] for v in (lane, s1, s2, m1, m2))
+    return crosses
+
+
+def ball_crosses_wall(ground, rho0, z0, sin_beta, cos_beta, a, outside):
+    """Whether the ball (radius a [m], touching the wall of ``ground`` at
+    (rho0, z0) with wall angle beta, its centre a along the normal on its
+    side) reaches the wall away from its contact: its centre nearer than
+    a (1 - TOLERANCE) to the meridian or to the meridian's mirror through
+    the axis (docs/surfaces.md eq. S7g; a ball's nearest point on a surface
+    of revolution is in the meridian half-plane of its centre)."""
+    rho0, z0, sin_beta, cos_beta, a = (np.asarray(x, dtype=float) for x in (rho0, z0, sin_beta, cos_beta, a))
+    side = np.where(np.asarray(outside, dtype=bool), -1.0, 1.0)
+    rho_c = rho0 - side * a * sin_beta
+    z_c = z0 + side * a * cos_beta
+    near = a * (1.0 - TOLERANCE)
+    own = np.abs(ground.clearance(rho_c, z_c)) < near
+    mirror = np.abs(ground.clearance(-rho_c, z_c)) < near
+    return own | mirror
