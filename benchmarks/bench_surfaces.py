@@ -2,7 +2,10 @@
 second of physics.revolution.wheel_orbit on the drum, the cone, a profile
 sampled from that cone (its spline found by height at every lane) and, for
 scale, the globe's own path (physics.wheel.horizontal_orbit), with each
-time's ratio to the cone's (docs/surfaces.md, "Performance").
+time's ratio to the cone's (docs/surfaces.md, "Performance").  A profile
+with a neck (rho = 2 - 0.9 sin(0.9 z), 121 samples) shows the rim's global
+check at work: its lanes the tangent ball does not hold are sampled
+(docs/surfaces.md eq. S4g).
 
     PYTHONPATH=. python3 benchmarks/bench_surfaces.py [--n 200000] [--repeat 5]
 """
@@ -28,15 +31,21 @@ def main():
     cone = Cone(3.0, np.radians(80.0), 8.0)
     rho, z = cone.contact(np.linspace(0.0, 8.0, 101))
     profile = Profile(rho, z)
+    zz = np.linspace(0.0, 6.0, 121)
+    neck = Profile(2.0 - 0.9 * np.sin(0.9 * zz), zz)
+    neck_height = height * (6.0 / 8.0)
 
     def forget():
         profile._last = None      # every call finds its lanes afresh, as a new request would
+        neck._last = None
 
     times = {
         "drum": best_of(lambda: wheel_orbit(Cylinder(3.0, 8.0), height, alpha, 0.3, 0.5, 9.80665), args.repeat),
         "cone 80 deg": best_of(lambda: wheel_orbit(cone, height, alpha, 0.3, 0.5, 9.80665), args.repeat),
         "profile (the cone, 101 samples)": best_of(lambda: wheel_orbit(profile, height, alpha, 0.3, 0.5, 9.80665),
                                                    args.repeat, forget),
+        "profile with a neck (121 samples)": best_of(lambda: wheel_orbit(neck, neck_height, alpha, 0.3, 0.5,
+                                                                         9.80665), args.repeat, forget),
         "globe (sphere path)": best_of(lambda: horizontal_orbit(np.radians(rng.uniform(30, 150, args.n)), alpha, 0.3,
                                                                 3.0, 0.5, 9.80665), args.repeat),
     }

@@ -110,14 +110,20 @@ def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
     """Where the rim, fitting by S4 near its contact, leaves the wall away
     from it (docs/surfaces.md eq. S4g): never where S4 is the whole fit (the
     sphere, the drum, the cone, flat ground); on a profile, the lanes whose
-    rim the tangent ball (a <= r_P |sin(alpha + beta)|, less a margin) does
-    not hold are sampled (:func:`deathsphere.physics.rim_fit.rim_crosses_wall`)."""
+    rim neither the tangent ball (a <= r_P |sin(alpha + beta)|, less a
+    margin) nor, inside, the tangent cone (the wall bending outwards over
+    the rim's heights) holds are sampled (:func:`deathsphere.physics.rim_fit.rim_crosses_wall`)."""
     crosses = np.zeros(np.shape(candidates), dtype=bool)
     if ground.local_fit_is_global or not np.any(candidates):
         return crosses
     reach = ground.tangent_ball_radius(where["at"], outside)
     held = a <= (1.0 - _rim_fit.BALL_MARGIN) * reach * np.abs(tilt)
     check = np.nonzero(candidates & ~held)
+    # inside, a wall that bends outwards over the rim's heights holds what
+    # its tangent cone holds, and the cone holds the rim by S4 (the proof)
+    z, rise = where["z"][check], 2.0 * a[check] * np.sin(alpha[check])
+    cone_holds = ~outside[check] & ground.bends_out(z + np.minimum(rise, 0.0), z + np.maximum(rise, 0.0))
+    check = tuple(axis[~cone_holds] for axis in check)
     if check[0].size:
         crosses[check] = _rim_fit.rim_crosses_wall(ground, where["rho"][check], where["z"][check], alpha[check],
                                                    a[check], outside[check])

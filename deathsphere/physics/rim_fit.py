@@ -41,7 +41,7 @@ NEAR_CONTACT = 0.125
 TOLERANCE = 1e-8
 #: Intervals of the first grid on s in [NEAR_CONTACT, pi] (the rim is
 #: symmetric about the contact's meridian plane: s and -s have one image).
-GRID = 32
+GRID = 16
 
 
 def _rim_margin(ground, rho0, z0, cos_a, sin_a, a, side, s):

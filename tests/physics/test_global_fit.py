@@ -145,8 +145,8 @@ def test_on_a_profile_the_rim_fits_where_dense_samples_do(outside):
     the rim sampled at 5000 points a half (the rim is symmetric about the
     contact's meridian plane: 10^4 on the whole rim) with the profile's own
     clearance, on lanes chosen to test every stage: rims held by the tangent
-    ball, rims sampled that fit and rims that cross the wall away from the
-    contact."""
+    ball or the tangent cone, rims sampled that fit and rims that cross the
+    wall away from the contact."""
     rng = np.random.default_rng(3)
     height, alpha, a = _lanes(rng, NECK.highest_lane, 4000, 2.5)
     res = revolution.wheel_orbit(NECK, height, alpha, a, 0.5, G, outside=outside)
@@ -154,8 +154,12 @@ def test_on_a_profile_the_rim_fits_where_dense_samples_do(outside):
     crossing = np.flatnonzero(res["reason"] == Reason.RIM_CROSSES_WALL)
     reach = NECK.tangent_ball_radius(height, outside)
     tilt = np.abs(np.sin(alpha + res["wall_angle"]))
-    sampled = np.flatnonzero(local & (res["reason"] != Reason.RIM_CROSSES_WALL) & (a > 0.98 * reach * tilt))
-    held = np.flatnonzero(local & (a <= 0.98 * reach * tilt))
+    rise = 2 * a * np.sin(alpha)
+    z0 = res["z_contact"]
+    cone = ~outside & NECK.bends_out(z0 + np.minimum(rise, 0), z0 + np.maximum(rise, 0))
+    ball = a <= 0.98 * reach * tilt
+    sampled = np.flatnonzero(local & (res["reason"] != Reason.RIM_CROSSES_WALL) & ~ball & ~cone)
+    held = np.flatnonzero(local & (ball | cone))
     assert crossing.size >= 5 and sampled.size >= 5 and held.size >= 5
     pick = np.concatenate((crossing[:16], sampled[:16], held[:8]))
     rho0, z0 = NECK.contact(height[pick])

@@ -137,6 +137,7 @@ class Profile:
         self._last = None
         self._last_nearest = None
         self._balls = None
+        self._outward = None
 
     #: z of the lowest point [m].
     @property
@@ -290,6 +291,21 @@ class Profile:
         r = np.where(np.asarray(outside, dtype=bool), np.minimum(r_out[i], r_out[i + 1]),
                      np.minimum(r_in[i], r_in[i + 1]))
         return r
+
+    def bends_out(self, z_low, z_high):
+        """Whether the meridian bends away from the inside (kappa_meridian
+        <= 0, on the fine table) everywhere between the heights z_low and
+        z_high [m] (the profile's own z; clipped to the wall; the table's
+        points bracketing the range included): there the wall lies on the
+        outer side of each of its tangent lines, so it holds whatever its
+        tangent cone holds (beyond the paper: docs/surfaces.md, S4g)."""
+        if self._outward is None:
+            d1, d2 = self._d1(self._fine_s), self._d2(self._fine_s)
+            bends_in = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) > 0
+            self._outward = np.concatenate(([0], np.cumsum(bends_in)))
+        lo = np.clip(np.searchsorted(self._fine_z, z_low, side="right") - 1, 0, self._fine_z.size - 1)
+        hi = np.clip(np.searchsorted(self._fine_z, z_high, side="left"), 0, self._fine_z.size - 1)
+        return self._outward[hi + 1] - self._outward[lo] == 0
 
     def offset(self, t):
         """The parallel surface a distance ``t`` [m] inside: the surface of
