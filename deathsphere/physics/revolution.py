@@ -14,13 +14,15 @@ curvatures:
 * the wheel: eq. (29) holds unchanged with r' = rho - a cos(alpha) (S1);
   the contact force per unit mass g z-hat - Omega^2 r' rho-hat (eq. 32) is
   split along the wall's frame (S3); the rim fits where it bends more than
-  the wall along the lane (S4) and stays above the floor (S5);
+  the wall along the lane (S4) and stays above the floor (S5), the whole
+  fit on the sphere, a drum and a cone, and on a profile is checked
+  against the whole wall (S4g, :mod:`deathsphere.physics.rim_fit`);
 * the ball: eq. (55) becomes k a omega3 Omega sin(beta) = (k+1) Omega^2
   r_C cos(beta) - g sin(beta) (S6), which is eq. (55) itself on the sphere
   tangent to the ground along the lane (centre on the axis, radius
   R_t = rho / sin(beta), polar angle pi - beta): the ball is solved there
   by :mod:`deathsphere.physics.sphere`, and the fit takes both principal
-  curvatures (S7);
+  curvatures (S7) and, on a profile, the whole wall (S7g);
 * the particle: Omega^2 = g tan(beta) / rho (S8), the sphere's particle on
   the same tangent sphere.
 
