@@ -20,8 +20,13 @@ stages, vectorised over lanes:
    m(s) = max(c(s), z(s) - z_top, z_low - z(s)), a-Lipschitz too.  On an
    interval [s1, s2] m >= (m1 + m2)/2 - a (s2 - s1)/2; intervals that bound
    does not decide are halved, all lanes' together, until it does or the
-   half-width's bound is under the tolerance.  The ball's disc is decided
-   by its centre's distance from the meridian and from its mirror.
+   half-width's bound is under the tolerance.  Outside, the wheel's disc
+   meets the solid exactly when its diameter through the contact does (a
+   point of the solid in the disc has its foot on that diameter, at its
+   height and nearer the axis, in the solid too), so the diameter's point
+   P + a (1 - cos s) u is sampled instead, a-Lipschitz in s as well.  The
+   ball's disc is decided by its centre's distance from the meridian and
+   from its mirror.
 """
 
 from __future__ import annotations
@@ -46,10 +51,11 @@ GRID = 16
 
 def _rim_margin(ground, rho0, z0, cos_a, sin_a, a, side, s):
     """m(s) at the rim angles s (rows of lanes): side * clearance of the
-    rim point, or its height past the wall's ends where that is larger."""
+    rim point (outside: of its foot on the diameter through the contact,
+    y = 0), or its height past the wall's ends where that is larger."""
     w = 1.0 - np.cos(s)
     x = rho0 - a * w * cos_a
-    y = a * np.sin(s)
+    y = np.where(side > 0, a * np.sin(s), 0.0)
     z = z0 + a * w * sin_a
     c = side * ground.clearance(np.hypot(x, y), z)
     z_low = ground.lowest
@@ -63,7 +69,9 @@ def rim_crosses_wall(ground, rho0, z0, alpha, a, outside):
     for lanes that pass S4 (docs/surfaces.md eq. S4g, sampling and the
     Lipschitz bound; 1-d arrays of one length, a bool array back).  True:
     a rim point lies more than TOLERANCE a outside; False: no rim point
-    with |s| >= NEAR_CONTACT lies more than 2 TOLERANCE a outside."""
+    with |s| >= NEAR_CONTACT lies more than 2 TOLERANCE a outside.
+    ``outside``: the wheel on the convex side, whose disc is checked by its
+    diameter through the contact (in the solid instead of outside it)."""
     rho0, z0, alpha, a = (np.asarray(x, dtype=float) for x in (rho0, z0, alpha, a))
     side = np.where(np.asarray(outside, dtype=bool), -1.0, 1.0)
     n = rho0.size

@@ -144,7 +144,7 @@ def test_on_a_profile_the_rim_fits_where_dense_samples_do(outside):
     """The global check (the tangent ball, then certified sampling) against
     the rim sampled at 5000 points a half (the rim is symmetric about the
     contact's meridian plane: 10^4 on the whole rim) with the profile's own
-    clearance, on lanes chosen to test every stage: rims held by the tangent
+    clearance (outside, the disc: the rim and four circles within it), on lanes chosen to test every stage: rims held by the tangent
     ball or the tangent cone, rims sampled that fit and rims that cross the
     wall away from the contact."""
     rng = np.random.default_rng(3)
@@ -164,8 +164,13 @@ def test_on_a_profile_the_rim_fits_where_dense_samples_do(outside):
     pick = np.concatenate((crossing[:16], sampled[:16], held[:8]))
     rho0, z0 = NECK.contact(height[pick])
     s = np.linspace(0.125, np.pi, 5000)
-    x, y, z = _rim(rho0, z0, alpha[pick], a[pick], s)
-    margin = _profile_margin(NECK, x, y, z, -1.0 if outside else 1.0).min(axis=1)
+    margin = np.full(pick.size, np.inf)
+    # inside, the rim; outside, the whole disc (the rim and circles within it about its centre)
+    for fraction in ((0.2, 0.4, 0.6, 0.8, 1.0) if outside else (1.0,)):
+        shift = a[pick] * (1.0 - fraction)
+        x, y, z = _rim(rho0 - shift * np.cos(alpha[pick]), z0 + shift * np.sin(alpha[pick]), alpha[pick],
+                       fraction * a[pick], s if fraction == 1.0 else np.linspace(0.0, np.pi, 1000))
+        margin = np.minimum(margin, _profile_margin(NECK, x, y, z, -1.0 if outside else 1.0).min(axis=1))
     inside = margin >= -1e-7 * a[pick]
     assert np.array_equal(res["reason"][pick] != Reason.RIM_CROSSES_WALL, inside)
 
