@@ -119,8 +119,10 @@ def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
     if ground.local_fit_is_global or not np.any(candidates):
         return crosses
     reach = ground.tangent_ball_radius(where["at"], outside)
-    held = a <= (1.0 - _rim_fit.BALL_MARGIN) * reach * np.abs(tilt)
-    check = np.nonzero(candidates & ~held)
+    check = np.nonzero(candidates)
+    # (on the candidates only: elsewhere an infinite reach may meet tilt 0)
+    held = a[check] <= (1.0 - _rim_fit.BALL_MARGIN) * reach[check] * np.abs(tilt[check])
+    check = tuple(axis[~held] for axis in check)
     # inside, a wall that bends outwards over the rim's heights holds what
     # its tangent cone holds, and the cone holds the rim by S4 (the proof)
     z, rise = where["z"][check], 2.0 * a[check] * np.sin(alpha[check])

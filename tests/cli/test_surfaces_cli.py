@@ -197,3 +197,23 @@ def test_limits_of_a_file_row_off_the_wall_is_its_no_fit_row(run, tmp_path):
     assert on["status"] == "ok" and int(on["intervals"]) == 1
     # the lane echoed as given, its status and reason the orbit's
     assert (off["status"], float(off["height_m"])) == ("no_fit", 4.0) and "above the wall's top" in off["reason"]
+
+
+def test_a_rim_that_meets_a_profile_away_from_its_contact_is_no_fit(run, tmp_path):
+    """A wheel of 1 m on a lane 4 m up a profile with a neck (its wall
+    bulging out above the lane): at 80 deg it rides, at 100 deg it fits the
+    wall's bend at the contact (S4) but its rim crosses the wall higher up
+    (docs/surfaces.md eq. S4g)."""
+    z = np.linspace(0.0, 6.0, 121)
+    path = tmp_path / "neck.csv"
+    path.write_text("rho_m,z_m\n" + "".join(f"{2.0 - 0.9 * np.sin(0.9 * v):.12f},{v:.12f}\n" for v in z))
+    res = run("orbit", "--surface", "profile", "--profile", str(path), "-a", "1", "--height", "4",
+              "--alpha", "80", "--alpha", "100", "--no-stability", "--format", "csv")
+    assert res.exit_code == 0, res.stderr
+    rides, crosses = rows(res.stdout)
+    assert rides["status"] == "ok"
+    assert crosses["status"] == "no_fit"
+    assert crosses["reason"].startswith("the wheel's rim crosses the wall away from its contact")
+    # S4 holds there: the local margin sin(alpha + beta) - a kappa_parallel is positive
+    beta, rho = np.radians(float(crosses["wall_angle_deg"])), float(crosses["rho_contact_m"])
+    assert np.sin(np.radians(100.0) + beta) - 1.0 * np.sin(beta) / rho > 0.05
