@@ -51,6 +51,14 @@ up) every ground answers, vectorised over heights:
   ``foot`` on the meridian and its distance inside instead (docs/machine.md,
   "On a profile").
 
+* ``local_fit_is_global``: True where the wheel's S4 and the ball's S7,
+  tested at the contact, are the whole fit (the globe, the drum, the cone,
+  flat ground: proved in docs/surfaces.md, S4g); False for a profile, which
+  answers ``tangent_ball_radius(height, outside)`` (the largest ball
+  tangent at the lane inside the wall) and ``bends_out(z_low, z_high)``
+  (the meridian bending away from the inside between two heights) for the
+  rim's and the ball's global check (``physics/rim_fit.py``).
+
 Implementations: :class:`Sphere` (the globe, and the one place the paper's
 theta and a height convert), :class:`Cylinder` (the wall of death),
 :class:`Cone` (the well of death, a board track), :class:`Plane` (flat
