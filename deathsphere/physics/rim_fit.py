@@ -60,7 +60,24 @@ def _rim_margin(ground, rho0, z0, cos_a, sin_a, a, side, s):
     c = side * ground.clearance(np.hypot(x, y), z)
     z_low = ground.lowest
     z_top = z_low + ground.highest_lane
-    return np.maximum(c, np.maximum(z - z_top, z_low - z))
+    # where the point is on the wall's heights the margin is c itself (for
+    # the bound on c'' below), else nothing there to hit past the wall's ends
+    on_wall = (z >= z_low) & (z <= z_top)
+    return np.maximum(c, np.maximum(z - z_top, z_low - z)), np.where(on_wall, c, np.nan)
+
+
+def _lower_bound(m1, m2, c1, c2, half, a, bend):
+    """The least the margin can be on an interval of half-width ``half``
+    with these ends: the Lipschitz bound (m1 + m2)/2 - a half, and, where
+    both ends are on the wall's heights (so the whole interval is: z is
+    monotone in s on [0, pi]) and the bend bound applies, min(c1, c2) -
+    bend half^2 / 2 (the margin is at least the clearance c, and c'' >=
+    -bend)."""
+    lipschitz = 0.5 * (m1 + m2) - a * half
+    with np.errstate(invalid="ignore"):
+        quadratic = np.where(np.isfinite(c1) & np.isfinite(c2) & np.isfinite(bend),
+                             np.minimum(c1, c2) - 0.5 * bend * half * half, -np.inf)
+    return np.maximum(lipschitz, quadratic)
 
 
 def rim_crosses_wall(ground, rho0, z0, alpha, a, outside):
@@ -81,27 +98,36 @@ def rim_crosses_wall(ground, rho0, z0, alpha, a, outside):
     cos_a, sin_a = np.cos(alpha), np.sin(alpha)
     s = np.linspace(NEAR_CONTACT, np.pi, GRID + 1)[None, :]
     col = (rho0[:, None], z0[:, None], cos_a[:, None], sin_a[:, None], a[:, None], side[:, None])
-    m = _rim_margin(ground, *col, s)
+    m, c = _rim_margin(ground, *col, s)
     tol = TOLERANCE * a
     crosses |= np.any(m < -tol[:, None], axis=1)
-    # the undecided intervals: (lane, s1, s2, m1, m2)
+    # c'' >= -(a + a^2 K / (1 - d K)) along the rim: its acceleration is a,
+    # and the clearance's second derivative along a unit direction is at
+    # least -K / (1 - d K) at a distance d < 1/K from a wall whose principal
+    # curvatures are at most K (d <= 2.2 a on an interval of half-width
+    # 0.1 about a rim point within 2 a of the contact); inf: no bound
+    k_max = ground.bend_bound()
+    reach = 2.2 * a * k_max
+    bend = np.where(reach < 0.9, a + a * a * k_max / np.maximum(1.0 - reach, 0.1), np.inf)
+    # the undecided intervals: (lane, s1, s2, m1, m2, c1, c2)
     half = 0.5 * (s[0, 1] - s[0, 0])
-    lower = 0.5 * (m[:, :-1] + m[:, 1:]) - a[:, None] * half
+    lower = _lower_bound(m[:, :-1], m[:, 1:], c[:, :-1], c[:, 1:], half, a[:, None], bend[:, None])
     lane, j = np.nonzero((lower < -tol[:, None]) & ~crosses[:, None])
     s1, s2 = s[0, j], s[0, j + 1]
-    m1, m2 = m[lane, j], m[lane, j + 1]
+    m1, m2, c1, c2 = m[lane, j], m[lane, j + 1], c[lane, j], c[lane, j + 1]
     while lane.size and half > TOLERANCE:
         mid = 0.5 * (s1 + s2)
-        mm = _rim_margin(ground, rho0[lane], z0[lane], cos_a[lane], sin_a[lane], a[lane], side[lane], mid)
+        mm, cm = _rim_margin(ground, rho0[lane], z0[lane], cos_a[lane], sin_a[lane], a[lane], side[lane], mid)
         crosses[lane[mm < -tol[lane]]] = True
         half *= 0.5
-        lane, s1, s2, m1, m2 = (np.concatenate((v, v)) for v in (lane, s1, s2, m1, m2))
+        lane, s1, s2, m1, m2, c1, c2 = (np.concatenate((v, v)) for v in (lane, s1, s2, m1, m2, c1, c2))
         k = mid.size
-        mid2, mm2 = np.concatenate((mid, mid)), np.concatenate((mm, mm))
-        s2[:k], m2[:k] = mid2[:k], mm2[:k]            # [s1, mid]
-        s1[k:], m1[k:] = mid2[k:], mm2[k:]            # [mid, s2]
-        keep = (0.5 * (m1 + m2) - a[lane] * half < -tol[lane]) & ~crosses[lane]
-        lane, s1, s2, m1, m2 = (v[keep] for v in (lane, s1, s2, m1, m2))
+        mid2, mm2, cm2 = np.concatenate((mid, mid)), np.concatenate((mm, mm)), np.concatenate((cm, cm))
+        s2[:k], m2[:k], c2[:k] = mid2[:k], mm2[:k], cm2[:k]            # [s1, mid]
+        s1[k:], m1[k:], c1[k:] = mid2[k:], mm2[k:], cm2[k:]            # [mid, s2]
+        lower = _lower_bound(m1, m2, c1, c2, half, a[lane], bend[lane])
+        keep = (lower < -tol[lane]) & ~crosses[lane]
+        lane, s1, s2, m1, m2, c1, c2 = (v[keep] for v in (lane, s1, s2, m1, m2, c1, c2))
     return crosses
 
 

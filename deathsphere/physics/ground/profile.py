@@ -138,6 +138,7 @@ class Profile:
         self._last_nearest = None
         self._balls = None
         self._outward = None
+        self._bend = None
 
     #: z of the lowest point [m].
     @property
@@ -291,6 +292,21 @@ class Profile:
         r = np.where(np.asarray(outside, dtype=bool), np.minimum(r_out[i], r_out[i + 1]),
                      np.minimum(r_in[i], r_in[i + 1]))
         return r
+
+    def bend_bound(self):
+        """A bound K [1/m] on the principal curvatures of the wall bending
+        towards the inside (kappa_meridian, and sin(beta) / rho along the
+        parallels): their largest on the fine table, a quarter added for
+        the table's spacing (beyond the paper: docs/surfaces.md, S4g)."""
+        if self._bend is None:
+            d1, d2 = self._d1(self._fine_s), self._d2(self._fine_s)
+            speed = np.hypot(d1[:, 0], d1[:, 1])
+            k_mer = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / speed ** 3
+            rho = self._fine_rho
+            on_axis = rho <= 1e-9 * max(self._s_end, 1.0)
+            k_par = np.where(on_axis, k_mer, d1[:, 1] / speed / np.where(on_axis, 1.0, rho))
+            self._bend = 1.25 * float(max(np.max(k_mer), np.max(k_par), 0.0))
+        return self._bend
 
     def bends_out(self, z_low, z_high):
         """Whether the meridian bends away from the inside (kappa_meridian
