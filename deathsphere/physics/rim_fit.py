@@ -3,7 +3,7 @@
 Beyond the paper (docs/surfaces.md, eq. S4g).  On the sphere, the drum and
 the cone the local fits S4 (the wheel) and S7 (the ball) are the whole fit
 (proved there); on a profile the wall can come back to meet the body away
-from its contact (a neck, a bump, the far side of a narrow bowl).  Two
+from its contact (a neck, a bump, the far side of a narrow bowl).  Three
 stages, vectorised over lanes:
 
 1. the **tangent ball**: the largest ball r_P tangent at the contact that
@@ -12,15 +12,21 @@ stages, vectorised over lanes:
    a circle of radius r_P sin(alpha + beta) through the contact), the ball
    when a <= r_P.  A lane accepted so, with a margin of
    :data:`BALL_MARGIN` off r_P for the table's spacing, fits;
-2. the rest are **certified by sampling**: the rim point at angle s from
+2. inside, the **tangent cone**: where the wall bends outwards over the
+   rim's heights it holds what its tangent cone holds, and the cone holds
+   the rim by S4 (``ground.bends_out``; in :mod:`deathsphere.physics.revolution`);
+3. the rest are **certified by sampling**: the rim point at angle s from
    the contact, X(s) = P + a (1 - cos s) u + a sin s e_phi, has the
    clearance c(s) = clearance(|X_xy|, X_z), a signed distance and so
    a-Lipschitz in s (|dX/ds| = a); a point above the wall's top (or below
    its lowest point) has nothing to hit, so the margin is
    m(s) = max(c(s), z(s) - z_top, z_low - z(s)), a-Lipschitz too.  On an
-   interval [s1, s2] m >= (m1 + m2)/2 - a (s2 - s1)/2; intervals that bound
-   does not decide are halved, all lanes' together, until it does or the
-   half-width's bound is under the tolerance.  Outside, the wheel's disc
+   interval [s1, s2] m >= (m1 + m2)/2 - a (s2 - s1)/2, and where the
+   interval is on the wall's heights m >= c >= min(c1, c2) - L (s2 - s1)^2
+   / 8, L bounding -c'' by the rim's curvature and the wall's
+   (``ground.bend_bound()``); intervals neither bound decides are halved,
+   all lanes' together, until one does or the half-width is under the
+   tolerance.  Outside, the wheel's disc
    meets the solid exactly when its diameter through the contact does (a
    point of the solid in the disc has its foot on that diameter, at its
    height and nearer the axis, in the solid too), so the diameter's point
