@@ -221,12 +221,16 @@ def test_a_profile_sampled_from_a_cone_gives_the_cones_verdicts(beta_deg):
 
 def test_the_tangent_ball_of_simple_profiles():
     """A sampled sphere's tangent ball is the sphere (to the sampling's
-    1e-4); a sampled cone's is the tangent sphere of the lane, rho / sin(beta)
-    (a ball tangent to the wall, centred on the axis, touching the far side)."""
+    1e-4), and its bound on the wall's bend 1/R with the quarter's margin; a
+    sampled cone's tangent ball is the tangent sphere of the lane, rho /
+    sin(beta) (a ball tangent to the wall, centred on the axis, touching the
+    far side)."""
     u = np.linspace(0.0, np.pi, 401)
     globe = Profile(2.0 * np.sin(u), -2.0 * np.cos(u))
     h = np.linspace(0.2, 3.8, 9)
     assert np.allclose(globe.tangent_ball_radius(h), 2.0, rtol=1e-4)
+    # the bound on the wall's principal curvatures: the sphere's 1/R, and a quarter more
+    assert abs(globe.bend_bound() - 1.25 / 2.0) < 1e-4
     cone = Cone(3.0, np.radians(80.0))
     rho, z = cone.contact(np.linspace(0.0, 6.0, 61))
     profile = Profile(rho, z)
