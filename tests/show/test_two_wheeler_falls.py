@@ -23,7 +23,7 @@ def _plan():
     ana = {"name": "Ana", "machine": "stunt125-steer", "width": "0.6m", "lane": "horizontal", "height": HEIGHT,
            "speed": "45km/h"}
     cal = {"name": "Cal", "machine": "stunt125", "width": "0.7m", "lane": "horizontal", "height": "9ft",
-           "speed": "45mph", "phase": 180}
+           "speed": "40mph", "phase": 180}
     return {"arena": {"surface": "cylinder", "diameter": "32ft", "wall_height": "12ft", "mu": 0.8, "max_g": 6},
             "rider": [ana, cal]}
 
