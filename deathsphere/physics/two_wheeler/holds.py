@@ -6,8 +6,8 @@ docs/two-wheeler.md sec. 8 for the turns).
 One call of :func:`deathsphere.physics.two_wheeler.steady.turns_for_speed`
 over every (lane, speed) given: the lean curve is computed once per distinct
 lane and serves all its speeds, so many speeds at a few lanes cost about as
-much as one (the two-wheeler's ``ride --steer --speed a:b:c`` path, and the
-show's speed bands).  A turn holds where :func:`steady.turn_status` gives it
+much as one (the solver ``ride --steer --speed a:b:c`` evaluates its speeds
+with; the show's speed bands and its falls call this).  A turn holds where :func:`steady.turn_status` gives it
 ``ok``: found, the head clear, both wheels pushing, each wheel's friction
 within ``mu`` and the load within ``max_g`` (a show's fall passes
 ``max_g = inf``: a single-contact machine's fall asks friction only, and so
