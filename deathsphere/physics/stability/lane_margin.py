@@ -59,7 +59,7 @@ def stability_boundary_alphas_on(ground, height, a, k, g, outside=False, mu=np.i
 def lane_batches(height) -> list:
     """The lanes ``height`` [m] cut into the batches of LANE_CHUNK lanes
     that :func:`stability_boundary_alphas_on` evaluates one call each (every
-    alpha sample of a batch at once): the pieces a caller may evaluate on
+    alpha sample of a batch at once; beyond the paper, docs/limits.md sec. 8): the pieces a caller may evaluate on
     other processes and join with :func:`joined_crossings`, to the same
     values (a lane's crossings depend only on that lane)."""
     h1 = np.asarray(height, dtype=float).reshape(-1)
@@ -69,7 +69,7 @@ def lane_batches(height) -> list:
 def joined_crossings(parts, n: int) -> np.ndarray:
     """The crossings of consecutive batches of lanes (each (n_i, m_i) from
     :func:`stability_crossings_on`) as one (n, m) array, each batch padded
-    with NaN to the widest."""
+    with NaN to the widest (beyond the paper, docs/limits.md sec. 8)."""
     m = max((p.shape[1] for p in parts), default=0)
     out = np.full((n, m), np.nan)
     if parts:
