@@ -84,3 +84,19 @@ def test_the_globes_figure_takes_no_processes():
 def test_jobs_and_a_scheduler_together_are_refused_off_the_globe():
     with pytest.raises(ParameterError, match="not both"):
         deathsphere.region(stability=True, jobs=2, scheduler="tcp://127.0.0.1:1", **API["drum"])
+
+
+def test_a_terminal_sees_the_lanes_counted_on_stderr(monkeypatch, run):
+    import io
+
+    from rich.console import Console
+
+    import deathsphere.cli.base as base
+
+    screen = io.StringIO()
+    monkeypatch.setattr(base, "_isatty", lambda stream: True)
+    monkeypatch.setattr(base, "PROGRESS_DELAY_S", 0.0)
+    monkeypatch.setattr(base, "stderr_console", lambda: Console(file=screen, force_terminal=True, width=80))
+    res = run("map", *CLI["drum"], "--stability", "--format", "csv", "--jobs", "2")
+    assert res.exit_code == 0 and "stability," in res.stdout
+    assert "boundaries" in screen.getvalue() and "19/19" in screen.getvalue()   # 0:3.6:0.2 m: 19 lanes
