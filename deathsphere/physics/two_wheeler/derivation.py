@@ -48,6 +48,7 @@ from dataclasses import dataclass
 import sympy as sm
 import sympy.physics.mechanics as me
 
+from deathsphere.physics.two_wheeler.generalized_forces import kanes_equations
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
 
 __all__ = ["SURFACES", "COORDINATES", "MERIDIAN", "RIM_ANGLE", "Derivation", "derive"]
@@ -256,15 +257,14 @@ def derive(surface: str = "flat") -> Derivation:
     ]
     loads = [(b.masscenter, b.mass * g * N.z) for b in bodies]
     loads += [(E, steer_torque * s), (C, -steer_torque * s)]
-    kane = me.KanesMethod(N, q_ind=q, u_ind=u, kd_eqs=[a - b for a, b in zip(qd, u)])
-    kane.kanes_equations(bodies, loads)
+    mass_matrix, forcing = kanes_equations(N, q, u, bodies, loads)
     kinetic = sum(b.kinetic_energy(N) for b in bodies).xreplace(to_u)
     potential = -sum(b.mass * g * b.masscenter.pos_from(O).dot(N.z) for b in bodies)
     if surface != "revolution":
         parameters = list(p) + ([r] if surface == "sphere" else [])
         return Derivation(
             surface=surface, q=q, u=u, parameters=parameters, steer_torque=steer_torque,
-            mass_matrix=kane.mass_matrix, forcing=kane.forcing,
+            mass_matrix=mass_matrix, forcing=forcing,
             constraint_matrix=B, constraint_bias=bias,
             holonomic=holonomic, holonomic_dpitch=sm.diff(holonomic, q[PITCH]),
             kinetic=kinetic, potential=potential,
@@ -281,7 +281,7 @@ def derive(surface: str = "flat") -> Derivation:
     rim += [m.diff(q[PITCH]) for m in rim]
     return Derivation(
         surface=surface, q=q, u=u, parameters=list(p) + list(meridian.symbols) + [psi], steer_torque=steer_torque,
-        mass_matrix=matrix(kane.mass_matrix), forcing=matrix(kane.forcing),
+        mass_matrix=matrix(mass_matrix), forcing=matrix(forcing),
         constraint_matrix=matrix(B), constraint_bias=matrix(bias),
         holonomic=None, holonomic_dpitch=None,
         kinetic=plain(chain(kinetic)), potential=plain(chain(potential)),
