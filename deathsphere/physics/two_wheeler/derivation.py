@@ -43,6 +43,7 @@ what the bias of the rolling constraints needs of psi's rate.
 from __future__ import annotations
 
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import sympy as sm
@@ -178,7 +179,36 @@ def _jacobian(rows: sm.Matrix, by: list) -> sm.Matrix:
     through a substitution per derivative, by a symbol directly, to the same
     expressions (the generated code is unchanged) in a third of the time."""
     symbols = [sm.Dummy() for _ in by]
-    return rows.xreplace(dict(zip(by, symbols))).jacobian(symbols).xreplace(dict(zip(symbols, by)))
+    with _free_symbols_remembered():
+        jacobian = rows.xreplace(dict(zip(by, symbols))).jacobian(symbols)
+    return jacobian.xreplace(dict(zip(symbols, by)))
+
+
+@contextmanager
+def _free_symbols_remembered():
+    """Within the block, a sympy expression's free symbols computed once per
+    node.  Every derivative sympy takes asks its expression for its free
+    symbols, which sympy finds by walking the whole subtree each time; a
+    Jacobian of the rolling constraints takes a derivative of every node of
+    their expressions, so the same subtrees were walked once per ancestor.
+    The sets are the same (an expression is immutable), so are the
+    derivatives; each call still gets a fresh set, as sympy's does."""
+    walk = sm.Basic.free_symbols
+    seen = {}
+
+    def free_symbols(self):
+        try:
+            return set(seen[id(self)][1])
+        except KeyError:
+            found = walk.fget(self)
+            seen[id(self)] = (self, frozenset(found))   # self kept alive: its id stays its own
+            return found
+
+    sm.Basic.free_symbols = property(free_symbols, doc=walk.__doc__)
+    try:
+        yield
+    finally:
+        sm.Basic.free_symbols = walk
 
 
 def derive(surface: str = "flat") -> Derivation:
