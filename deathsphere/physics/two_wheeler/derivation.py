@@ -51,6 +51,7 @@ import sympy.physics.mechanics as me
 
 from deathsphere.physics.two_wheeler.generalized_forces import kanes_equations
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
+from deathsphere.physics.two_wheeler.substitution import xreplace
 
 __all__ = ["SURFACES", "COORDINATES", "MERIDIAN", "RIM_ANGLE", "Derivation", "derive"]
 
@@ -129,7 +130,7 @@ class _Meridian:
 
     def plain(self, expr):
         """expr with the functions of s replaced by the plain symbols of MERIDIAN."""
-        return expr.xreplace(dict(zip((self.rho, self.z, self.beta, self.kappa, self.dkappa), self.symbols)))
+        return xreplace(expr, dict(zip((self.rho, self.z, self.beta, self.kappa, self.dkappa), self.symbols)))
 
 
 def _surface_frame(surface, N, O, q, r, meridian=None):
@@ -180,8 +181,8 @@ def _jacobian(rows: sm.Matrix, by: list) -> sm.Matrix:
     expressions (the generated code is unchanged) in a third of the time."""
     symbols = [sm.Dummy() for _ in by]
     with _free_symbols_remembered():
-        jacobian = rows.xreplace(dict(zip(by, symbols))).jacobian(symbols)
-    return jacobian.xreplace(dict(zip(symbols, by)))
+        jacobian = xreplace(rows, dict(zip(by, symbols))).jacobian(symbols)
+    return xreplace(jacobian, dict(zip(symbols, by)))
 
 
 @contextmanager
@@ -288,7 +289,7 @@ def derive(surface: str = "flat") -> Derivation:
     loads = [(b.masscenter, b.mass * g * N.z) for b in bodies]
     loads += [(E, steer_torque * s), (C, -steer_torque * s)]
     mass_matrix, forcing = kanes_equations(N, q, u, bodies, loads)
-    kinetic = sum(b.kinetic_energy(N) for b in bodies).xreplace(to_u)
+    kinetic = xreplace(sum(b.kinetic_energy(N) for b in bodies), to_u)
     potential = -sum(b.mass * g * b.masscenter.pos_from(O).dot(N.z) for b in bodies)
     if surface != "revolution":
         parameters = list(p) + ([r] if surface == "sphere" else [])
