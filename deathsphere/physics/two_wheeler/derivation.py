@@ -180,20 +180,21 @@ def _jacobian(rows: sm.Matrix, by: list) -> sm.Matrix:
     through a substitution per derivative, by a symbol directly, to the same
     expressions (the generated code is unchanged) in a third of the time."""
     symbols = [sm.Dummy() for _ in by]
-    with _free_symbols_remembered():
-        jacobian = xreplace(rows, dict(zip(by, symbols))).jacobian(symbols)
+    jacobian = xreplace(rows, dict(zip(by, symbols))).jacobian(symbols)
     return xreplace(jacobian, dict(zip(symbols, by)))
 
 
 @contextmanager
 def _free_symbols_remembered():
-    """Within the block, a sympy expression's free symbols computed once per
-    node.  Every derivative sympy takes asks its expression for its free
-    symbols, which sympy finds by walking the whole subtree each time; a
-    Jacobian of the rolling constraints takes a derivative of every node of
-    their expressions, so the same subtrees were walked once per ancestor.
-    The sets are the same (an expression is immutable), so are the
-    derivatives; each call still gets a fresh set, as sympy's does."""
+    """Within the block (the whole derivation), a sympy expression's free
+    symbols computed once per node.  Every derivative sympy takes asks its
+    expression for its free symbols, which sympy finds by walking the whole
+    subtree each time; a Jacobian of the rolling constraints takes a
+    derivative of every node of their expressions, so the same subtrees were
+    walked once per ancestor (and Kane's dot products and the meridian's
+    chain rule ask as often).  The sets are the same (an expression is
+    immutable), so are the derivatives; each call still gets a fresh set,
+    as sympy's does, and sympy's own property is put back on leaving."""
     walk = sm.Basic.free_symbols
     seen = {}
 
@@ -217,6 +218,14 @@ def derive(surface: str = "flat") -> Derivation:
     paper; docs/two-wheeler.md sec. 3)."""
     if surface not in SURFACES:
         raise ValueError(f"surface must be one of {SURFACES}, not {surface!r}")
+    start = time.perf_counter()
+    with _free_symbols_remembered():
+        derivation = _derive(surface)
+    derivation.seconds = time.perf_counter() - start
+    return derivation
+
+
+def _derive(surface: str) -> Derivation:
     start = time.perf_counter()
     p = sm.symbols(PARAMETER_NAMES, real=True)
     P_ = dict(zip(PARAMETER_NAMES, p))
