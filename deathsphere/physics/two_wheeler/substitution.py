@@ -19,7 +19,8 @@ __all__ = ["xreplace"]
 
 def xreplace(x, rule: dict):
     """``x.xreplace(rule)`` for a sympy expression or matrix, the walk
-    shared by every element."""
+    shared by every element (a tool of the derivation, docs/two-wheeler.md
+    sec. 5: no physics of its own)."""
     memo = {}
 
     def walk(e):
