@@ -23,7 +23,9 @@ limits within 1 s.  Timed without a goal: the sweep of a small grid;
 ``verify --jobs 2`` against ``verify`` and ``verify.run(jobs=1)`` against
 ``verify.run(jobs=2)`` (the checklist on one and on two processes, from the
 command line and through the Python API); ``map --stability`` (the
-stability boundary as data) with ``--jobs 1`` and ``--jobs 2``.
+stability boundary as data) with ``--jobs 1`` and ``--jobs 2``, on the globe
+and off it (the default 361 lanes of a 32-ft drum 12 ft tall and of
+examples/bowl.csv; slow rows).
 
 The package runs from bytecode, as an installed one does: before timing,
 the benchmark compiles its modules (``compileall``, what ``pip install``
@@ -60,6 +62,10 @@ from pathlib import Path
 DS = [sys.executable, "-m", "deathsphere"]
 API_VERIFY = "from deathsphere.results import verify; verify.run(jobs={})"
 
+MAP_DRUM = ["map", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "12ft", "--stability",
+            "--format", "csv"]
+MAP_BOWL = ["map", "--surface", "profile", "--profile", str(Path(__file__).resolve().parents[1] / "examples" /
+                                                            "bowl.csv"), "--stability", "--format", "csv"]
 #: name -> (command, slow, goal); goal is ("x numpy", limit), ("s", limit) or None
 COMMANDS = {
     "import numpy": ([sys.executable, "-c", "import numpy"], False, None),
@@ -81,6 +87,11 @@ COMMANDS = {
     "sweep": (DS + ["sweep", "--theta", "0:180:1", "--alpha", "0:90:1", "--format", "csv"], False, None),
     "map --stability -j1": (DS + ["map", "--stability", "--format", "csv", "--jobs", "1"], False, None),
     "map --stability -j2": (DS + ["map", "--stability", "--format", "csv", "--jobs", "2"], False, None),
+    # off the globe: the default 361 lanes of a 32-ft drum and of the bowl's profile
+    "map drum --stab -j1": (DS + MAP_DRUM + ["--jobs", "1"], True, None),
+    "map drum --stab -j2": (DS + MAP_DRUM + ["--jobs", "2"], True, None),
+    "map bowl --stab -j1": (DS + MAP_BOWL + ["--jobs", "1"], True, None),
+    "map bowl --stab -j2": (DS + MAP_BOWL + ["--jobs", "2"], True, None),
     "verify": (DS + ["verify", "--format", "csv"], True, ("s", 5.0)),
     "verify --jobs 2": (DS + ["verify", "--format", "csv", "--jobs", "2"], True, None),
     "verify.run(jobs=1)": ([sys.executable, "-c", API_VERIFY.format(1)], True, None),
@@ -186,7 +197,9 @@ def main():
           f"{sim_s:.3f} s (least {min(integration):.3f} s)")
     for label, one_name, two_name in (("verify", "verify", "verify --jobs 2"),
                                       ("verify.run", "verify.run(jobs=1)", "verify.run(jobs=2)"),
-                                      ("map --stability", "map --stability -j1", "map --stability -j2")):
+                                      ("map --stability", "map --stability -j1", "map --stability -j2"),
+                                      ("map drum --stability", "map drum --stab -j1", "map drum --stab -j2"),
+                                      ("map bowl --stability", "map bowl --stab -j1", "map bowl --stab -j2")):
         one, two = (statistics.median(walls[n]) for n in (one_name, two_name))
         print(f"{label}: 2 processes take {two / one:.2f}x the wall time of 1")
     for with_unit, without in (("orbit -r 8ft", "orbit"), ("ride 16ft 40km/h", "ride")):

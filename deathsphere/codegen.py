@@ -17,6 +17,7 @@ import sympy as sm
 
 from deathsphere.physics.two_wheeler import derivation as _derivation
 from deathsphere.physics.two_wheeler.derivation import SURFACES, Derivation, derive
+from deathsphere.physics.two_wheeler.substitution import xreplace
 
 __all__ = ["GENERATED", "generated_functions", "generated_source"]
 
@@ -111,7 +112,7 @@ def generated_functions(derivation: Derivation) -> str:
     s = derivation.surface
 
     def sub(m):
-        return sm.Matrix(m).xreplace(plain)
+        return xreplace(sm.Matrix(m), plain)
 
     T = derivation.steer_torque
     equations = [((8, 8), sub(derivation.mass_matrix), True), ((8,), sub(derivation.forcing), False),
@@ -163,7 +164,7 @@ def generated_functions(derivation: Derivation) -> str:
         _function(f"{s}_forcing_at_rest",
                   "The forcing f (8) of Kane's equations at rest (u = 0): gravity and the steer torque.",
                   ["q", "p", str(T)], unpack_q + unpack_p + ["shape, dtype = _batch(q, " + str(T) + ", *p)"],
-                  [((8,), sub(derivation.forcing).xreplace({x: 0 for x in us}), False)], printer),
+                  [((8,), xreplace(sub(derivation.forcing), {x: 0 for x in us}), False)], printer),
     ]
     return "\n\n".join(parts)
 

@@ -117,3 +117,12 @@ def test_command_line_map_stability_on_the_cluster(client, run):
     local = run(*args)
     remote = run(*args, "--scheduler", client.scheduler.address)
     assert remote.exit_code == 0 and remote.output == local.output
+
+
+def test_command_line_map_stability_off_the_globe_on_the_cluster(client, run):
+    # the stability boundary's batches of 16 lanes on a drum, on the cluster
+    args = ["map", "--surface", "cylinder", "--diameter", "32ft", "--wall-height", "12ft", "--height", "0:3.6:0.2",
+            "--stability", "--format", "csv"]
+    local = run(*args)
+    remote = run(*args, "--scheduler", client.scheduler.address)
+    assert remote.exit_code == 0 and remote.output == local.output and "stability," in local.output

@@ -5,10 +5,12 @@ physics (:mod:`deathsphere.physics.fall`), vectorised over falls.
 At time t the rider's speed drops to a fraction of his speed, along his
 direction of travel.  A horizontal rider rides on where some tilt at his
 height holds the new speed within mu (``horizontal_holds``; on a drum or a
-cone ``horizontal_holds_on``, by the lane's height), else he leaves the
-wall at once; a looper keeps his energy until the loop's normal force
-vanishes (``loop_departure``: rides on over the top, swings below the
-equator, or falls where it vanishes).  From contact loss his centre of mass
+cone ``horizontal_holds_on``, by the lane's height), a two-wheeler where
+some steady turn at his height holds the new rear contact speed within mu
+(``turn_holds``, docs/show.md sec. 13), else he leaves the wall at once;
+a looper keeps his energy until the loop's normal force vanishes
+(``loop_departure``: rides on over the top, swings below the equator, or
+falls where it vanishes).  From contact loss his centre of mass
 flies a parabola to the globe (``ballistic_landing``), or on a drum or a
 cone to its wall or its floor (``landing_on``, docs/show.md sec. 11).  During the flight
 he is a sphere of radius width/2 about his centre of mass, each other rider
@@ -35,6 +37,7 @@ from deathsphere.physics.fall import (
 from deathsphere.act.envelope import point_segment_distance
 from deathsphere.physics.landing import landing_on
 from deathsphere.physics.machine_arrays import machine_arrays
+from deathsphere.records.two_wheeler import TwoWheeler
 
 #: Instants of each flight at which the clearance to every other rider is sampled.
 FLIGHT_SAMPLES = 64
@@ -55,19 +58,39 @@ def _effective_inertia(lane, g: float) -> float:
     return 4.0 * lane.machine.mass * g * r_g / (lane.rate_bottom ** 2 - lane.rate ** 2)
 
 
+def _held(lane, globe, kin, fraction):
+    """(n,) bool: the horizontal lane still holds its rider after the drop
+    to ``fraction`` of his speed (the lane's kinematics ``kin`` at the
+    falls' times).  A single-contact machine: some tilt gives a steady
+    orbit at the dropped centre of mass's speed.  A two-wheeler: some steady
+    turn at the rear contact's speed times ``fraction`` (its whole
+    configuration turns at one rate, so every point's speed drops by the
+    same fraction), ok within mu (and no max_g, as the machine's test)."""
+    # the globe's lane by its polar angle, a wall's by its height (lanes.py)
+    where = lane.theta if globe.is_globe else lane.height
+    if isinstance(lane.machine, TwoWheeler):
+        # the two-wheeler's equations are imported only for an act that has one
+        from deathsphere.physics.two_wheeler.holds import turn_holds
+
+        t = lane.machine
+        return turn_holds(where, fraction * lane.orbit["v_contact"], t.parameters(), globe.ground, globe.g, t.head,
+                          globe.mu)["holds"]
+    speed = np.sqrt(np.sum(kin["v_com"] ** 2, axis=0))
+    holds = horizontal_holds if globe.is_globe else horizontal_holds_on
+    return holds(where, fraction * speed, lane.alpha, globe.ground, globe.g, machine_arrays(lane.machine),
+                 globe.mu)["holds"]
+
+
 def _one_lane(lane, globe, t, fraction) -> dict:
     """The falls of one rider at the times t with the fractions, (n,) each."""
     m, n = lane.machine, t.size
+    # a two-wheeler's 'com' is the whole machine's (rider included) and its 'contact' the rear contact's
     kin = lane.kinematics(t)
     out = {"outcome": np.full(n, RIDES_ON, dtype=np.int8), "t_lost": np.full(n, np.nan),
            "x0": np.full((3, n), np.nan), "v0": np.full((3, n), np.nan), "contact_lost": np.full((3, n), np.nan),
            "swing_height": np.full(n, np.nan)}
     if lane.kind == "horizontal":
-        speed = np.sqrt(np.sum(kin["v_com"] ** 2, axis=0))
-        # the globe's lane by its polar angle, a wall's by its height (lanes.py)
-        holds, where = (horizontal_holds, lane.theta) if globe.is_globe else (horizontal_holds_on, lane.height)
-        held = holds(where, fraction * speed, lane.alpha, globe.ground, globe.g, machine_arrays(m), globe.mu)["holds"]
-        falls = ~held
+        falls = ~_held(lane, globe, kin, fraction)
         out["outcome"] = np.where(falls, FALLS, RIDES_ON).astype(np.int8)
         out["t_lost"] = np.where(falls, t, np.nan)
         out["x0"] = np.where(falls, kin["com"], np.nan)

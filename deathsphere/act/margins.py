@@ -64,15 +64,11 @@ def speeds_hold(lanes, globe, speeds) -> np.ndarray:
 def _two_wheeler_holds(lane, globe, speeds) -> np.ndarray:
     """bool (k,): the two-wheeler's lane has a steady turn with status ok at
     each rear contact speed [m/s] (ride's statuses, docs/two-wheeler.md sec. 8)."""
-    from deathsphere.physics.two_wheeler import steady
+    from deathsphere.physics.two_wheeler.holds import turn_holds
 
     t, ground = lane.machine, globe.ground
-    at = np.full(speeds.size, lane.theta if is_globe(ground) else lane.height)
-    out = steady.turns_for_speed(at, speeds, t.parameters(), ground, globe.g, t.head)
-    codes, _ = steady.turn_status(np.isfinite(out["lean"]), out["head_clearance"], out["contact"] == 1,
-                                  out["mu_required_rear"], out["mu_required_front"], out["load_g"], globe.mu,
-                                  globe.max_g)
-    return (codes == Status.OK).any(axis=1)
+    at = lane.theta if is_globe(ground) else lane.height
+    return turn_holds(at, speeds, t.parameters(), ground, globe.g, t.head, globe.mu, globe.max_g)["holds"]
 
 
 def _bands(lanes, globe, planned, rtol: float = RTOL) -> np.ndarray:

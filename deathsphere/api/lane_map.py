@@ -63,8 +63,9 @@ def region_on(typed: dict):
     from deathsphere.results.lane_map import lane_boundary_table
 
     ground, heights, v, outside = _setup(typed)
+    stability = _stability(typed)
     return lane_boundary_table(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"],
-                               stability=_stability(typed))
+                               stability=stability, run=_run(typed, stability, heights.size))
 
 
 def _stability(typed: dict) -> bool:
@@ -74,6 +75,26 @@ def _stability(typed: dict) -> bool:
     return checked_flag("stability", False if value is None else value)
 
 
+def _run(typed: dict, stability: bool, lanes: int):
+    """Where the stability boundary's batches of lanes run, from ``typed``'s
+    ``jobs``, ``scheduler`` and ``progress`` (``progress(done, total)`` in
+    lanes), as the globe's map: a scheduler is connected now (a missing
+    extra or an unreachable one fails before any work), only with stability."""
+    from deathsphere.api.streams import cluster_of
+    from deathsphere.results.lane_map import StabilityRun
+
+    jobs = int(checked_scalar("jobs", 1 if typed.get("jobs") is None else typed["jobs"]))
+    cluster = cluster_of(typed.get("scheduler"), jobs) if stability else None
+    report, tick = typed.get("progress"), None
+    if report is not None:
+        done = [0]
+
+        def tick(n):
+            done[0] += n
+            report(done[0], lanes)
+    return StabilityRun(jobs=jobs, cluster=cluster, progress=tick)
+
+
 def region_curves_on(typed: dict):
     """The allowed region off the globe as a figure's curves
     (:class:`deathsphere.results.lane_map.LaneCurves`): what ``deathsphere
@@ -81,8 +102,9 @@ def region_curves_on(typed: dict):
     from deathsphere.results.lane_map import lane_curves
 
     ground, heights, v, outside = _setup(typed)
+    stability = _stability(typed)
     return lane_curves(ground, heights, v["a"], v["k"], v["g"], outside, v["mu"], v["max_g"],
-                       stability=_stability(typed))
+                       stability=stability, run=_run(typed, stability, heights.size))
 
 
 __all__ = ["region_on", "region_curves_on", "MAX_LANES"]

@@ -79,7 +79,8 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
         on that arena, :func:`deathsphere.api.lane_map.region_on` (the
         lanes ``height``, or ``turn_radius`` on flat ground, in place of
         theta; ``stability`` adds the curve ``stability`` along each lane,
-        on one process).
+        its batches of 16 lanes on ``jobs`` processes or ``scheduler``'s
+        cluster, ``progress`` told in lanes).
     stability : bool
         Also the curve ``stability`` (slow: exact linearisation).
     jobs : int
@@ -89,8 +90,8 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
         scheduler's address or a Client; the ``distributed`` extra): the
         same values as a local run.  Not with ``jobs`` > 1.
     progress : callable, optional
-        ``progress(done, total)`` as blocks of thetas of the stability
-        boundary are done (the slow part).
+        ``progress(done, total)`` as blocks of thetas (off the globe: of
+        lanes) of the stability boundary are done (the slow part).
 
     Returns
     -------
@@ -111,7 +112,7 @@ def region(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, dia
         from deathsphere.api.lane_map import region_on
 
         return region_on(dict(arena, a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
-                              stability=stability, step=step))
+                              stability=stability, step=step, jobs=jobs, scheduler=scheduler, progress=progress))
     step = 0.5 if step is None else step
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g), ("step", step),
@@ -162,7 +163,7 @@ def region_cells(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=
 
 
 def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g=G, diameter=None,
-                  stability: bool = False, **arena):
+                  stability: bool = False, jobs: int = 1, scheduler=None, progress=None, **arena):
     """The allowed region as curves: what ``deathsphere map --output FILE``
     draws (:mod:`deathsphere.render.map_figure`; the paper's figure).
 
@@ -173,7 +174,12 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
         ``stability``, the stability margin on a 0.25 deg grid and its
         zero contour (beyond the paper).  Needs contourpy (the plot extra).
         Off the globe (``surface`` ... in ``arena``, as for :func:`region`):
-        a :class:`deathsphere.results.lane_map.LaneCurves`.
+        a :class:`deathsphere.results.lane_map.LaneCurves`, its stability
+        boundary on ``jobs`` processes or ``scheduler``'s cluster with
+        ``progress`` as for :func:`region` (the same curves as with one).
+        On the globe the curves are drawn on grids of their own in one
+        process: ``jobs`` other than 1 or a ``scheduler`` is refused there,
+        and ``progress`` is not told.
     """
     from deathsphere.results.region_map import curve_map
 
@@ -181,7 +187,11 @@ def region_curves(a=A, r=R, *, k=0.5, side: str = "inside", mu=INF, max_g=INF, g
         from deathsphere.api.lane_map import region_curves_on
 
         return region_curves_on(dict(arena, a=a, r=r, diameter=diameter, k=k, g=g, side=side, mu=mu, max_g=max_g,
-                                     stability=stability))
+                                     stability=stability, jobs=jobs, scheduler=scheduler, progress=progress))
+    if scheduler is not None or int(checked_scalar("jobs", jobs)) != 1:
+        raise ParameterError("on the sphere the figure's curves are drawn on grids of their own in one process: "
+                             "jobs and scheduler are the boundary data's (region) or another surface's",
+                             "scheduler" if scheduler is not None else "jobs")
     a_over_r, side = _ratio(a, r, side, g, diameter)
     values = {name: checked_scalar(name, v) for name, v in (("k", k), ("mu", mu), ("max_g", max_g))}
     return curve_map(a_over_r, 1.0, values["k"], outside=side == "outside", mu=values["mu"],

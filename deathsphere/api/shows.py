@@ -123,7 +123,6 @@ class ShowResult:
         names = [lane.name for lane in self.lanes]
         if rider not in names:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
-        _falls_of(self.lanes[names.index(rider)])
         # a time beyond the act is not in it (and an enormous one rounds the flight away)
         t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
@@ -161,7 +160,6 @@ class ShowResult:
             raise ParameterError(f"rider must be one of {', '.join(names)} (got {rider!r})", "rider")
         t = _number("t", t, 0.0, self.duration_s, " s (the act's times)")
         speed_fraction = _number("speed_fraction", speed_fraction, 0.0, 1.0)
-        _falls_of(self.lanes[names.index(rider)])
         res = simulate_falls(self.lanes, self.plan.globe, [names.index(rider)], [t], [speed_fraction])
         flight = float(res["fall_time"][0])
         if not math.isfinite(flight):
@@ -170,8 +168,8 @@ class ShowResult:
         return {"t": float(res["t_lost"][0]) + s, "com": flight_point(res["x0"], res["v0"], s, self.plan.globe.g)}
 
     def falls(self, n: int, seed: int = 0, scheduler=None, progress=None) -> tuple[Table, Table]:
-        """Monte Carlo of ``n`` falls: a random rider (of the single-contact
-        machines: a two-wheeler's fall is not analysed, it is an obstacle), a random time in the
+        """Monte Carlo of ``n`` falls: a random rider (any: a single-contact
+        machine or a two-wheeler, docs/show.md sec. 13), a random time in the
         act, a random speed fraction in [0, 1), drawn from ``seed``;
         evaluated vectorised, in chunks, on a dask.distributed cluster with
         ``scheduler`` (an address or a Client; the same rows in the same
@@ -189,14 +187,8 @@ class ShowResult:
             raise ParameterError(f"n must be a whole number of falls 1..{MAX_FALLS} (got {n!r})", "n")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ParameterError(f"seed must be a whole number >= 0 (got {seed!r})", "seed")
-        # the falling rider is drawn from those whose fall is analysed (a
-        # two-wheeler rides on as the others' obstacle); an act of
-        # single-contact machines draws every rider, as it always has
-        fallers = np.array([i for i, lane in enumerate(self.lanes) if lane.body is None], dtype=int)
-        if fallers.size == 0:
-            _falls_of(self.lanes[0])
         rng = np.random.default_rng(int(seed))
-        rider = fallers[rng.integers(0, fallers.size, int(n))]
+        rider = rng.integers(0, len(self.lanes), int(n))
         t = rng.uniform(0.0, self.duration_s, int(n))
         fraction = rng.uniform(0.0, 1.0, int(n))
         client, own = (None, False)
@@ -216,15 +208,6 @@ class ShowResult:
                for key in parts[0]}
         res = _typed_heights(res, self.plan, rider)
         return _outcomes_table(self, res, rider, t, fraction), _summary_table(self, res, rider)
-
-
-def _falls_of(lane: Lane) -> None:
-    """A two-wheeler's fall is not analysed (its flight starts from two
-    contacts and a steered front frame, not one rigid body): refused, one
-    line naming the rider."""
-    if lane.body is not None:
-        raise ParameterError(f"rider {lane.name!r}: a two-wheeler's fall is not analysed (a fall is a single-contact "
-                             "machine's: fail another rider)", "rider")
 
 
 #: The most falls one Monte Carlo draws, and how many are evaluated at once.

@@ -230,7 +230,7 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
     ground"): the arena from its keywords, the lane by its height (on flat
     ground its turn radius), the paper's wheel by its tilt or ball by its
     spin or rate, inside or outside (not on flat ground)."""
-    from deathsphere.requests.arena import arena, lane_key
+    from deathsphere.requests.arena import arena, lane_key, refuse_above_top
 
     for key, why in (("theta", "theta is the sphere's polar angle"),
                      ("v_top", "vertical loops are the globe's")):
@@ -248,6 +248,8 @@ def _wall_request(given: Mapping) -> tuple[RiderRequest, Run, SimulationOptions]
         raise ParameterError(f"{other} is not a lane of the {ground.name}: give its {key}", other)
     if given[key] is None:
         raise ParameterError(f"on the {ground.name} give the lane's {key}", key, missing=True)
+    if key == "height":
+        refuse_above_top(ground, _read(key, given[key]))      # as every command does
     run = Run(ground=ground, g=_read("g", given["g"]), mu=_read("mu", given["mu"]))
     solver, periods, kick, options = _run_options(given)
     run = dataclasses.replace(run, solver=solver, periods=periods)

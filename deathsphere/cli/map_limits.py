@@ -88,8 +88,10 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
     plot over (height, alpha) and the allowed intervals of a few lanes.
     --stability there adds the curve 'stability' (the exact linearisation
     on that ground, bisected as on the globe) and on a terminal each lane's
-    stable tilts.  No --step, --jobs or --scheduler there (docs/limits.md
-    sec. 8); on the globe only --format csv/json takes them.
+    stable tilts; --jobs N or --scheduler ADDR compute its batches of lanes
+    on N processes or a dask cluster (the same output as one), whatever the
+    output.  No --step there (docs/limits.md sec. 8); on the globe only
+    --format csv/json takes --step, --jobs and --scheduler.
     """
     options = given(side=side, a=a, r=r, diameter=diameter, k=k, g=g, mu=mu, max_g=max_g)
     arena = given(surface=surface, wall_angle=wall_angle, wall_height=wall_height, profile=profile, height=height,
@@ -97,12 +99,10 @@ def map_command(side, a, r, diameter, k, g, mu, surface, wall_angle, wall_height
     from deathsphere.api.ride_surfaces import names_a_wall
 
     if names_a_wall(surface, wall_angle, wall_height, profile):
-        # off the globe the map is one process and its lanes are --height's
-        _refuse_unused("the map off the globe runs in one process (docs/limits.md sec. 8)", jobs=jobs,
-                       scheduler=scheduler)
         # the lanes come back in the unit they were typed in (--wall-height 12ft: ft)
         lane_unit = display_units(None, click.get_current_context().params).unit("length", ("height", "turn_radius"))
-        _map_on(arena, options, output, fmt, given(step=step), stability, lane_unit)
+        _map_on(arena, options, output, fmt, given(step=step, jobs=jobs, scheduler=scheduler), stability,
+                lane_unit)
         return
     if height or turn_radius:
         api.region(**given(height=height, turn_radius=turn_radius))   # refused: the globe's lane is theta
@@ -147,17 +147,20 @@ def _refuse_unused(why, **typed):
             raise click.BadParameter(why, param_hint=f"'--{name}'")
 
 
-def _map_on(arena, options, output, fmt, step, stability, lane_unit):
+def _map_on(arena, options, output, fmt, typed, stability, lane_unit):
     """``map`` off the globe: the figure, the data, or on a terminal the
     chart and the allowed intervals of a few lanes (the lanes beside metres
-    in ``lane_unit``, a DisplayUnit or None)."""
+    in ``lane_unit``, a DisplayUnit or None); ``typed``: --step, --jobs and
+    --scheduler as given.  A bar on stderr counts the stability boundary's lanes."""
     if output is not None:
         from deathsphere.render.figures import PlotExtraMissing, import_matplotlib
         from deathsphere.render.lane_map_figure import plot_lane_map
 
         try:
             import_matplotlib()
-            plot_lane_map(api.region_curves(stability=stability, **step, **arena, **options), output=output)
+            with progress("map", None) as bar:
+                curves = api.region_curves(stability=stability, progress=bar.update, **typed, **arena, **options)
+            plot_lane_map(curves, output=output)
         except PlotExtraMissing as exc:
             fail(one_line(str(exc)))
         say_written(output)
@@ -168,14 +171,17 @@ def _map_on(arena, options, output, fmt, step, stability, lane_unit):
         from deathsphere.render.lane_charplot import drawable, lane_char_map
         from deathsphere.render.lane_map_text import lane_map_text
 
-        curves = api.region_curves(stability=stability, **step, **arena, **options)
+        with progress("map", None) as bar:
+            curves = api.region_curves(stability=stability, progress=bar.update, **typed, **arena, **options)
         if drawable(curves):
             # the chart of the whole wall, then the intervals of a few lanes in numbers
             width = max(40, min(stdout_console().width, 100))
             stdout_console().print(to_rich(lane_char_map(curves, width, lane_unit)), end="")
         stdout_console().print(lane_map_text(curves, unit=lane_unit))
         return
-    emit([api.region(stability=stability, **step, **arena, **options)], fmt)
+    with progress("boundaries", None) as bar:
+        table = api.region(stability=stability, progress=bar.update, **typed, **arena, **options)
+    emit([table], fmt)
 
 
 @cli.command("limits")

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -56,29 +57,65 @@ def _x_of(ground, heights):
     return where["z"] - ground.lowest, where["rho"], np.rad2deg(where["wall_angle"])
 
 
-def _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability: bool) -> dict:
+def _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability: bool, run=None) -> dict:
     """Each boundary's alphas (n, m) [rad] on the lanes, by name; with
     ``stability`` also ``stability``, where feasible orbits change from
     stable to unstable (the exact linearisation on that ground, bisected
-    to 1e-10 rad between samples 0.25 deg apart, as on the globe)."""
+    to 1e-10 rad between samples 0.25 deg apart, as on the globe), its
+    batches of lanes run by ``run`` (a :class:`StabilityRun`; None: here)."""
     curves = lane_region.lane_boundaries(ground, heights, a, k, outside, mu, max_g)
     if stability:
-        from deathsphere.physics.stability.lane_margin import stability_boundary_alphas_on
-
-        curves["stability"] = stability_boundary_alphas_on(ground, heights, a, k, g, outside, mu, max_g)
+        curves["stability"] = (run or StabilityRun()).crossings(ground, heights, a, k, g, outside, mu, max_g)
     return curves
 
 
-def lane_boundary_table(ground, heights, a, k, g, outside, mu, max_g, stability: bool = False) -> Table:
+@dataclass
+class StabilityRun:
+    """Where the stability boundary's batches of lanes run: ``jobs`` local
+    processes, or a dask cluster (``cluster`` = ``(client, own)`` from
+    :func:`deathsphere.cluster.connect`), through the house's one runner
+    (:func:`deathsphere.parallel.ordered_map`, results in input order, so
+    the values are those of one process); ``progress(n)`` is told as each
+    batch of n lanes is done."""
+
+    jobs: int = 1
+    cluster: tuple | None = None
+    progress: object = None
+
+    def crossings(self, ground, heights, a, k, g, outside, mu, max_g) -> np.ndarray:
+        from deathsphere.parallel import ordered_map
+        from deathsphere.physics.stability.lane_margin import joined_crossings, lane_batches
+
+        batches = lane_batches(heights)
+        work = partial(_stability_batch, ground=ground, a=a, k=k, g=g, outside=outside, mu=mu, max_g=max_g)
+        client, own = self.cluster if self.cluster is not None else (None, False)
+        parts = []
+        for batch, part in zip(batches, ordered_map(work, batches, self.jobs, client=client, close=own)):
+            parts.append(part)
+            if self.progress is not None:
+                self.progress(batch.size)
+        return joined_crossings(parts, heights.size)
+
+
+def _stability_batch(heights, ground, a, k, g, outside, mu, max_g) -> np.ndarray:
+    """The stability boundary on one batch of lanes (one unit of parallel work)."""
+    from deathsphere.physics.stability.lane_margin import stability_crossings_on
+
+    return stability_crossings_on(ground, heights, a, k, g, outside, mu, max_g)
+
+
+def lane_boundary_table(ground, heights, a, k, g, outside, mu, max_g, stability: bool = False,
+                        run: StabilityRun | None = None) -> Table:
     """Every boundary point of the allowed region at each lane, one row each:
     ``curve`` (S4, S5, S2, S3, mu, max_g; with ``stability`` also
     ``stability``), ``equation``, ``height_m``,
     ``alpha_deg``, and whether the orbit is feasible just below and just
     above it in alpha (``feasible_below``, ``feasible_above``: status ok of
     ``orbit --surface`` within mu, and the load within max_g, SIDE_STEP rad
-    away), then the setup and the lane's ``rho_contact_m``, ``wall_angle_deg``."""
+    away), then the setup and the lane's ``rho_contact_m``, ``wall_angle_deg``;
+    ``run``: where the stability boundary runs (:class:`StabilityRun`)."""
     heights = np.asarray(heights, dtype=float).reshape(-1)
-    curves = _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability)
+    curves = _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability, run)
     names, eqs, rows, alphas = [], [], [], []
     for name, alpha in curves.items():
         i, j = np.nonzero(np.isfinite(alpha))
@@ -130,16 +167,17 @@ class LaneCurves:
     stable: tuple | None = None
 
 
-def lane_curves(ground, heights, a, k, g, outside, mu, max_g, stability: bool = False) -> LaneCurves:
+def lane_curves(ground, heights, a, k, g, outside, mu, max_g, stability: bool = False,
+                run: StabilityRun | None = None) -> LaneCurves:
     """The allowed intervals and the boundary points at ``heights`` [m]
-    (with ``stability`` the stability boundary's too, and each allowed
-    interval's stable parts)."""
+    (with ``stability`` the stability boundary's too, run by ``run`` as for
+    :func:`lane_boundary_table`, and each allowed interval's stable parts)."""
     heights = np.asarray(heights, dtype=float).reshape(-1)
     iv = lane_region.allowed_alpha_on(ground, heights, a, k, g, outside, mu, max_g)
     lift, rho, _ = _x_of(ground, heights)
     on_flat = not hasattr(ground, "highest_lane")
     x = rho if on_flat else lift
-    curves = _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability)
+    curves = _boundaries(ground, heights, a, k, g, outside, mu, max_g, stability, run)
     points = {}
     for name, alpha in curves.items():
         i, j = np.nonzero(np.isfinite(alpha))

@@ -155,6 +155,9 @@ def test_the_wall_of_death_given_its_speed(run):
     ("limits", ["--height", "2", "--height", "4"]),
     ("map", ["--height", "0:4:0.1"]),
     ("ride", ["--height", "4", "--speed", "40km/h"]),
+    ("stability", ["--height", "4", "--alpha", "10"]),
+    ("simulate", ["--height", "4", "--alpha", "10", "--periods", "0.1"]),
+    ("simulate", ["--machine", "stunt125", "--height", "4", "--speed", "40km/h", "--periods", "0.1"]),
 ])
 def test_a_lane_typed_above_the_wall_is_refused_by_every_command(run, command, extra):
     # one meaning everywhere: the wall's top is the arena's, a lane over it is bad input

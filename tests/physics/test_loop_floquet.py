@@ -7,6 +7,7 @@ finite differences of kicked runs: no dual numbers, no reversal)."""
 
 import numpy as np
 import pytest
+from sampled_grounds import sampled_sphere
 from scipy.integrate import solve_ivp
 
 from deathsphere.physics import dynamics_on as don
@@ -23,8 +24,7 @@ R = 3.0
 @pytest.fixture(scope="module")
 def sphere_loop():
     """The globe of radius 3 m sampled at 2001 points from its bottom to its top."""
-    t = np.linspace(np.pi, 0.0, 2001)
-    return Loop.of(Profile(np.abs(R * np.sin(t)), R * np.cos(t)))
+    return Loop.of(sampled_sphere(R))
 
 
 @pytest.fixture(scope="module")

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from sampled_grounds import sampled_sphere
 
 from deathsphere.physics.ground import Profile, Sphere
 from deathsphere.physics.machine import vertical_loop
@@ -29,8 +30,7 @@ A_AXIS, B_AXIS = 4.0, 3.0                        # the ellipsoid's semi-axes: ac
 
 @pytest.fixture(scope="module")
 def globe_loop():
-    t = np.linspace(np.pi, 0.0, 2001)
-    return Loop.of(Profile(np.abs(R * np.sin(t)), R * np.cos(t)))
+    return Loop.of(sampled_sphere(R))
 
 
 @pytest.fixture(scope="module")

@@ -205,9 +205,9 @@ def test_regenerating_the_shipped_code_changes_nothing(surface):
     """The generator writes today, for each ground, exactly the shipped
     functions of _generated.py, byte for byte (regenerate with
     ``python tools/generate_two_wheeler.py --write``).  One test per ground,
-    so that the three derivations (the suite's most expensive work, tens of
-    seconds of sympy each: the sphere's the longest, the revolution's about
-    40 s with its printing) run side by side on a parallel run.  On flat
+    so that the three derivations (the suite's most expensive work, seconds
+    of sympy each: the sphere's and the revolution's about 8 s of CPU with
+    their printing, flat ground's 3 s) run side by side on a parallel run.  On flat
     ground the fresh symbolic equations, evaluated at a random state, also
     agree with the shipped numeric code."""
     from deathsphere import codegen

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import sampled_grounds
 
 import deathsphere
 from deathsphere.physics.ground import Profile
@@ -25,8 +26,7 @@ A_AXIS, B_AXIS = 4.0, 3.0                     # the ellipsoid's semi-axes: acros
 @pytest.fixture(scope="module")
 def sampled_sphere():
     """The globe of radius 3 m sampled at 2001 points from its bottom to its top."""
-    t = np.linspace(np.pi, 0.0, 2001)
-    return Profile(np.abs(R * np.sin(t)), R * np.cos(t))
+    return sampled_grounds.sampled_sphere(R)
 
 
 #: Agreement with the globe, measured (relative, or absolute below 1): the

@@ -185,14 +185,23 @@ def test_a_plan_refuses_what_a_two_wheeler_does_not_ride_naming_the_key(extra, k
     assert "\n" not in str(err.value)
 
 
-def test_a_two_wheelers_fall_is_refused_naming_the_rider(act):
-    with pytest.raises(ParameterError, match="^rider 'Ana': a two-wheeler's fall is not analysed"):
-        act.fall("Ana", 0.5)
-    with pytest.raises(ParameterError, match="^rider 'Ana': "):
-        deathsphere.show(_plan(_two_wheeler())).falls(10)
-    # a mixed act's Monte Carlo: only the machine falls, the two-wheeler is among its victims
+def test_a_two_wheelers_fall_in_the_globe_flies_its_centre_of_mass_to_the_sphere(act):
+    assert act.fall("Ana", 0.5, 1.0)[0]["outcome"] == "rides_on"
+    row = act.fall("Ana", 0.5, 0.0)[0]
+    assert row["outcome"] == "falls"
+    # a dead stop: the centre of mass drops from rest, |x0 - g s^2/2 z-hat| = R at s^2 = 2 (z0 + sqrt(R^2 -
+    # rho0^2)) / g (the lower crossing of the vertical line through it)
+    x0 = act.lanes[0].kinematics(np.array([0.5]))["com"][:, 0]
+    rho0 = math.hypot(x0[0], x0[1])
+    s = math.sqrt(2.0 * (x0[2] + math.sqrt(R * R - rho0 * rho0)) / G)
+    assert row["fall_time_s"] == pytest.approx(s, rel=1e-9)
+    assert row["theta_land_deg"] == pytest.approx(math.degrees(math.pi - math.asin(rho0 / R)), rel=1e-9)
+    assert row["phi_land_deg"] == pytest.approx(math.degrees(math.atan2(x0[1], x0[0])) % 360.0, abs=1e-9)
+    assert row["impact_speed_m_s"] == pytest.approx(G * s, rel=1e-9)
+    assert row["victim"] == "Cal" and math.isfinite(row["min_clearance_m"])
+    # a mixed act's Monte Carlo draws both riders, each among the other's victims
     outcomes, _ = act.falls(400, seed=3)
-    assert set(outcomes["rider"]) == {"Cal"} and "Ana" in set(outcomes["victim"])
+    assert set(outcomes["rider"]) == {"Ana", "Cal"} and {"Ana", "Cal"} <= set(outcomes["victim"])
     # a machine's fall into a two-wheeler: the victim's envelope is its segments
     fall = act.fall("Cal", 0.5, 0.0)
     assert fall[0]["victim"] == "Ana"

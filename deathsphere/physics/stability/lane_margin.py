@@ -13,11 +13,13 @@ from deathsphere.physics.lane_region import _lane, feasible_on, fit_window
 from deathsphere.physics.stability.margin import STABILITY_ALPHA_STEP_DEG, margin_of
 from deathsphere.physics.stability.on_ground import wheel_reduced_jacobian_on
 
-__all__ = ["stability_margin_on", "stability_boundary_alphas_on"]
+__all__ = ["stability_margin_on", "stability_boundary_alphas_on", "lane_batches", "stability_crossings_on",
+           "joined_crossings", "LANE_CHUNK"]
 
 #: Lanes per batch of :func:`stability_boundary_alphas_on` (bounds memory:
-#: each lane holds up to 720 alpha samples of a 9 x 9 flow).
-_LANE_CHUNK = 16
+#: each lane holds up to 720 alpha samples of a 9 x 9 flow); also the unit
+#: of work ``map --surface ... --stability --jobs N`` hands a process.
+LANE_CHUNK = 16
 
 
 def stability_margin_on(ground, height, alpha, a, k, g, outside=False):
@@ -50,17 +52,37 @@ def stability_boundary_alphas_on(ground, height, a, k, g, outside=False, mu=np.i
 
     Returns (n, m) for the n lanes, sorted, NaN-padded."""
     h1 = np.asarray(height, dtype=float).reshape(-1)
-    parts = [_crossings(ground, h1[i:i + _LANE_CHUNK], a, k, g, outside, mu, max_g, alpha_step_deg, xtol)
-             for i in range(0, h1.size, _LANE_CHUNK)]
+    return joined_crossings([stability_crossings_on(ground, batch, a, k, g, outside, mu, max_g, alpha_step_deg, xtol)
+                             for batch in lane_batches(h1)], h1.size)
+
+
+def lane_batches(height) -> list:
+    """The lanes ``height`` [m] cut into the batches of LANE_CHUNK lanes
+    that :func:`stability_boundary_alphas_on` evaluates one call each (every
+    alpha sample of a batch at once; beyond the paper, docs/limits.md sec. 8): the pieces a caller may evaluate on
+    other processes and join with :func:`joined_crossings`, to the same
+    values (a lane's crossings depend only on that lane)."""
+    h1 = np.asarray(height, dtype=float).reshape(-1)
+    return [h1[i:i + LANE_CHUNK] for i in range(0, h1.size, LANE_CHUNK)]
+
+
+def joined_crossings(parts, n: int) -> np.ndarray:
+    """The crossings of consecutive batches of lanes (each (n_i, m_i) from
+    :func:`stability_crossings_on`) as one (n, m) array, each batch padded
+    with NaN to the widest (beyond the paper, docs/limits.md sec. 8)."""
     m = max((p.shape[1] for p in parts), default=0)
-    out = np.full((h1.size, m), np.nan)
+    out = np.full((n, m), np.nan)
     if parts:
         out[:] = np.concatenate([np.pad(p, ((0, 0), (0, m - p.shape[1])), constant_values=np.nan) for p in parts])
     return out
 
 
-def _crossings(ground, h1, a, k, g, outside, mu, max_g, alpha_step_deg, xtol):
-    """:func:`stability_boundary_alphas_on` for a batch of lanes."""
+def stability_crossings_on(ground, h1, a, k, g, outside=False, mu=np.inf, max_g=np.inf,
+                           alpha_step_deg=STABILITY_ALPHA_STEP_DEG, xtol=1e-10):
+    """:func:`stability_boundary_alphas_on` for one batch of lanes ``h1``
+    [m] (1-d; beyond the paper, docs/stability.md "Stability maps"): (n, m)
+    sorted, NaN-padded to this batch's most crossings."""
+    h1 = np.asarray(h1, dtype=float).reshape(-1)
     lo, hi = fit_window(_lane(ground, h1), a, outside)
     fits = np.isfinite(lo) & np.isfinite(hi)
     lo, hi = np.where(fits, lo, 0.0), np.where(fits, hi, 0.0)

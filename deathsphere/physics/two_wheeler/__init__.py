@@ -24,6 +24,8 @@ module              concept
                     and frame lines)
 ``steady``          steady turns on the globe's lanes (and flat
                     circles): every turn for a speed or a steer torque
+``holds``           whether a lane holds the bicycle at each of
+                    many speeds (a show's fall, its speed bands)
 ``stability``       their eigenvalues in the turning frame, steer free
                     or locked, and a verdict
 ``simulate``        the nonlinear motion integrated from a turn or

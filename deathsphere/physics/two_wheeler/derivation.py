@@ -43,12 +43,15 @@ what the bias of the rolling constraints needs of psi's rate.
 from __future__ import annotations
 
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import sympy as sm
 import sympy.physics.mechanics as me
 
+from deathsphere.physics.two_wheeler.generalized_forces import kanes_equations
 from deathsphere.physics.two_wheeler.parameters import PARAMETER_NAMES
+from deathsphere.physics.two_wheeler.substitution import xreplace
 
 __all__ = ["SURFACES", "COORDINATES", "MERIDIAN", "RIM_ANGLE", "Derivation", "derive"]
 
@@ -127,7 +130,7 @@ class _Meridian:
 
     def plain(self, expr):
         """expr with the functions of s replaced by the plain symbols of MERIDIAN."""
-        return expr.xreplace(dict(zip((self.rho, self.z, self.beta, self.kappa, self.dkappa), self.symbols)))
+        return xreplace(expr, dict(zip((self.rho, self.z, self.beta, self.kappa, self.dkappa), self.symbols)))
 
 
 def _surface_frame(surface, N, O, q, r, meridian=None):
@@ -177,7 +180,37 @@ def _jacobian(rows: sm.Matrix, by: list) -> sm.Matrix:
     through a substitution per derivative, by a symbol directly, to the same
     expressions (the generated code is unchanged) in a third of the time."""
     symbols = [sm.Dummy() for _ in by]
-    return rows.xreplace(dict(zip(by, symbols))).jacobian(symbols).xreplace(dict(zip(symbols, by)))
+    jacobian = xreplace(rows, dict(zip(by, symbols))).jacobian(symbols)
+    return xreplace(jacobian, dict(zip(symbols, by)))
+
+
+@contextmanager
+def _free_symbols_remembered():
+    """Within the block (the whole derivation), a sympy expression's free
+    symbols computed once per node.  Every derivative sympy takes asks its
+    expression for its free symbols, which sympy finds by walking the whole
+    subtree each time; a Jacobian of the rolling constraints takes a
+    derivative of every node of their expressions, so the same subtrees were
+    walked once per ancestor (and Kane's dot products and the meridian's
+    chain rule ask as often).  The sets are the same (an expression is
+    immutable), so are the derivatives; each call still gets a fresh set,
+    as sympy's does, and sympy's own property is put back on leaving."""
+    walk = sm.Basic.free_symbols
+    seen = {}
+
+    def free_symbols(self):
+        try:
+            return set(seen[id(self)][1])
+        except KeyError:
+            found = walk.fget(self)
+            seen[id(self)] = (self, frozenset(found))   # self kept alive: its id stays its own
+            return found
+
+    sm.Basic.free_symbols = property(free_symbols, doc=walk.__doc__)
+    try:
+        yield
+    finally:
+        sm.Basic.free_symbols = walk
 
 
 def derive(surface: str = "flat") -> Derivation:
@@ -185,6 +218,14 @@ def derive(surface: str = "flat") -> Derivation:
     paper; docs/two-wheeler.md sec. 3)."""
     if surface not in SURFACES:
         raise ValueError(f"surface must be one of {SURFACES}, not {surface!r}")
+    start = time.perf_counter()
+    with _free_symbols_remembered():
+        derivation = _derive(surface)
+    derivation.seconds = time.perf_counter() - start
+    return derivation
+
+
+def _derive(surface: str) -> Derivation:
     start = time.perf_counter()
     p = sm.symbols(PARAMETER_NAMES, real=True)
     P_ = dict(zip(PARAMETER_NAMES, p))
@@ -256,15 +297,14 @@ def derive(surface: str = "flat") -> Derivation:
     ]
     loads = [(b.masscenter, b.mass * g * N.z) for b in bodies]
     loads += [(E, steer_torque * s), (C, -steer_torque * s)]
-    kane = me.KanesMethod(N, q_ind=q, u_ind=u, kd_eqs=[a - b for a, b in zip(qd, u)])
-    kane.kanes_equations(bodies, loads)
-    kinetic = sum(b.kinetic_energy(N) for b in bodies).xreplace(to_u)
+    mass_matrix, forcing = kanes_equations(N, q, u, bodies, loads)
+    kinetic = xreplace(sum(b.kinetic_energy(N) for b in bodies), to_u)
     potential = -sum(b.mass * g * b.masscenter.pos_from(O).dot(N.z) for b in bodies)
     if surface != "revolution":
         parameters = list(p) + ([r] if surface == "sphere" else [])
         return Derivation(
             surface=surface, q=q, u=u, parameters=parameters, steer_torque=steer_torque,
-            mass_matrix=kane.mass_matrix, forcing=kane.forcing,
+            mass_matrix=mass_matrix, forcing=forcing,
             constraint_matrix=B, constraint_bias=bias,
             holonomic=holonomic, holonomic_dpitch=sm.diff(holonomic, q[PITCH]),
             kinetic=kinetic, potential=potential,
@@ -281,7 +321,7 @@ def derive(surface: str = "flat") -> Derivation:
     rim += [m.diff(q[PITCH]) for m in rim]
     return Derivation(
         surface=surface, q=q, u=u, parameters=list(p) + list(meridian.symbols) + [psi], steer_torque=steer_torque,
-        mass_matrix=matrix(kane.mass_matrix), forcing=matrix(kane.forcing),
+        mass_matrix=matrix(mass_matrix), forcing=matrix(forcing),
         constraint_matrix=matrix(B), constraint_bias=matrix(bias),
         holonomic=None, holonomic_dpitch=None,
         kinetic=plain(chain(kinetic)), potential=plain(chain(potential)),
