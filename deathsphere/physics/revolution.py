@@ -115,22 +115,30 @@ def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
     rim neither the tangent ball (a <= r_P |sin(alpha + beta)|, less a
     margin) nor, inside, the tangent cone (the wall bending outwards over
     the rim's heights) holds are sampled (:func:`deathsphere.physics.rim_fit.rim_crosses_wall`)."""
-    crosses = np.zeros(np.shape(candidates), dtype=bool)
+    shape = np.shape(candidates)
+    crosses = np.zeros(shape, dtype=bool)
     if ground.local_fit_is_global or not np.any(candidates):
         return crosses
-    reach = ground.tangent_ball_radius(where["at"], outside)
-    check = np.nonzero(candidates)
+
+    def flat(x):        # every input on the lanes' shape, as one row (a single lane is 0-d)
+        return np.reshape(np.broadcast_to(x, shape), -1)
+
+    reach = flat(ground.tangent_ball_radius(where["at"], outside))
+    check = np.flatnonzero(flat(candidates))
+    a, alpha, tilt, outside = flat(a), flat(alpha), flat(tilt), flat(outside)
     # (on the candidates only: elsewhere an infinite reach may meet tilt 0)
     held = a[check] <= (1.0 - _rim_fit.BALL_MARGIN) * reach[check] * np.abs(tilt[check])
-    check = tuple(axis[~held] for axis in check)
+    check = check[~held]
     # inside, a wall that bends outwards over the rim's heights holds what
     # its tangent cone holds, and the cone holds the rim by S4 (the proof)
-    z, rise = where["z"][check], 2.0 * a[check] * np.sin(alpha[check])
+    z, rise = flat(where["z"])[check], 2.0 * a[check] * np.sin(alpha[check])
     cone_holds = ~outside[check] & ground.bends_out(z + np.minimum(rise, 0.0), z + np.maximum(rise, 0.0))
-    check = tuple(axis[~cone_holds] for axis in check)
-    if check[0].size:
-        crosses[check] = _rim_fit.rim_crosses_wall(ground, where["rho"][check], where["z"][check], alpha[check],
-                                                   a[check], outside[check])
+    check = check[~cone_holds]
+    if check.size:
+        out = crosses.reshape(-1)
+        out[check] = _rim_fit.rim_crosses_wall(ground, flat(where["rho"])[check], flat(where["z"])[check],
+                                               alpha[check], a[check], outside[check])
+        crosses = out.reshape(shape)
     return crosses
 
 
@@ -250,15 +258,23 @@ def _ball_crosses(ground, where, a, outside, candidates):
     a profile, the lanes the tangent ball r_P (less a margin) does not hold
     are decided by the centre's distance from the meridian and its mirror
     (:func:`deathsphere.physics.rim_fit.ball_crosses_wall`)."""
-    crosses = np.zeros(np.shape(candidates), dtype=bool)
+    shape = np.shape(candidates)
+    crosses = np.zeros(shape, dtype=bool)
     if ground.local_fit_is_global or not np.any(candidates):
         return crosses
-    reach = ground.tangent_ball_radius(where["at"], outside)
-    check = np.nonzero(candidates & ~(a <= (1.0 - _rim_fit.BALL_MARGIN) * reach))
-    if check[0].size:
-        crosses[check] = _rim_fit.ball_crosses_wall(ground, where["rho"][check], where["z"][check],
-                                                    where["sin_beta"][check], where["cos_beta"][check], a[check],
-                                                    outside[check])
+
+    def flat(x):        # every input on the lanes' shape, as one row (a single lane is 0-d)
+        return np.reshape(np.broadcast_to(x, shape), -1)
+
+    reach = flat(ground.tangent_ball_radius(where["at"], outside))
+    a, outside = flat(a), flat(outside)
+    check = np.flatnonzero(flat(candidates) & ~(a <= (1.0 - _rim_fit.BALL_MARGIN) * reach))
+    if check.size:
+        out = crosses.reshape(-1)
+        out[check] = _rim_fit.ball_crosses_wall(ground, flat(where["rho"])[check], flat(where["z"])[check],
+                                                flat(where["sin_beta"])[check], flat(where["cos_beta"])[check],
+                                                a[check], outside[check])
+        crosses = out.reshape(shape)
     return crosses
 
 

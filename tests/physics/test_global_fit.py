@@ -237,3 +237,16 @@ def test_the_tangent_ball_of_simple_profiles():
     h = np.linspace(0.5, 5.5, 11)
     expected = cone.contact(h)[0] / np.sin(cone.wall_angle_rad)
     assert np.allclose(profile.tangent_ball_radius(h), expected, rtol=2e-3)
+
+
+def test_one_lane_at_a_time_gets_the_verdicts_of_the_batch():
+    # a single lane is a 0-d request: the global check takes it as the batch's element
+    rng = np.random.default_rng(5)
+    height, alpha, a = _lanes(rng, NECK.highest_lane, 400, 2.5)
+    batch = revolution.wheel_orbit(NECK, height, alpha, a, 0.5, G)["reason"]
+    crossing = np.flatnonzero(batch == Reason.RIM_CROSSES_WALL)[:3]
+    others = np.flatnonzero(batch != Reason.RIM_CROSSES_WALL)[:3]
+    assert crossing.size == 3
+    for i in np.concatenate((crossing, others)):
+        one = revolution.wheel_orbit(NECK, height[i], alpha[i], a[i], 0.5, G)["reason"]
+        assert np.shape(one) == () and one == batch[i]
