@@ -419,6 +419,24 @@ def _per_sample(fn, y, p: GroundRun):
     return fn(y, p.body(np.shape(y)[1:]))
 
 
+def _kinks_under_contacts(model, p):
+    """On a profile, y -> where each body's contact lies among the spline's
+    knots (:meth:`Profile.knot_index`), y the runner's flat state: the
+    integrator restarts where one crosses a knot, at which the right-hand
+    side has a kink (docs/simulation.md, "On any ground").  None on a ground
+    without knots."""
+    index = getattr(p.ground, "knot_index", None)
+    if index is None:
+        return None
+    n = int(np.size(p.a))
+
+    def at(y):
+        point = model.contact_point(np.asarray(y, dtype=float).reshape(9, n), p)
+        return index(np.hypot(point[0], point[1]), point[2])
+
+    return at
+
+
 class _OnGround(_Paper):
     """The paper's wheel and ball on any ground but the globe (beyond the
     paper; docs/dynamics.md sec. 7): the equations of
@@ -490,6 +508,11 @@ class _OnGround(_Paper):
 
     def contact_point(self, y, p: GroundRun):
         return _per_sample(don.contact_on, y, p)[1]
+
+    def kinks(self, p: GroundRun):
+        """The contacts' places among a profile's knots, from a flat state
+        (:func:`_kinks_under_contacts`); None on another ground."""
+        return _kinks_under_contacts(self, p)
 
     def project(self, y, p: GroundRun):
         return _per_sample(don.project_on, y, p)
@@ -604,6 +627,10 @@ class _MachineOnGround(_Machine):
 
     def contact_point(self, y, p: MachineGroundRun):
         return self._points(y, p)["P"]
+
+    def kinks(self, p: MachineGroundRun):
+        """As the paper's bodies' (:func:`_kinks_under_contacts`)."""
+        return _kinks_under_contacts(self, p)
 
     def project(self, y, p: MachineGroundRun):
         from deathsphere.physics.machine_dynamics_on import machine_project_on

@@ -376,8 +376,10 @@ class Simulation:
         options = {"max_step": _MAX_STEP_RATES / float(np.max(scale_w))}
         if self.method in ("Radau", "BDF") and nA > 1:
             options["jac_sparsity"] = _jac_sparsity(nA)
+        # on a profile the steps stop at the spline's knots under the contacts
+        kinks = self.model.kinks(p) if hasattr(self.model, "kinks") else None
         done = integrate(fun, (t_cur, t_b), y.reshape(-1), events, method=self.method, rtol=self.rtol, atol=atol,
-                         dense_output=True, vectorized=self.method not in _EXPLICIT, **options)
+                         dense_output=True, vectorized=self.method not in _EXPLICIT, kinks=kinks, **options)
         return done, events
 
     def _integrate(self, active, y, t_cur, t_b, j0, j1, ledger, rows):

@@ -343,6 +343,14 @@ class Profile:
         through)."""
         return self._arc.derivatives(s)
 
+    def knot_index(self, rho, z):
+        """Where the foot of each (rho, z) on the meridian lies among the
+        spline's knots (its samples): k at the k-th, linear between; the
+        meridian's curvature is continuous there but its rate of change
+        jumps (so an integration restarts at a whole number: docs/simulation.md)."""
+        s = self.foot(rho, z)
+        return np.interp(s, self._spline.x, np.arange(self._spline.x.size, dtype=float))
+
     def foot(self, rho, z):
         """The spline parameter of the meridian's point nearest to each (rho, z) (clipped to the meridian)."""
         return self._nearest(rho, z)[0]
