@@ -108,6 +108,18 @@ def _pick(condition, if_true, if_false):
     return np.where(condition, np.int8(if_true), np.int8(if_false)).astype(np.int8)
 
 
+def _global_check(ground, candidates):
+    """No crossing yet on the lanes' shape, and a function putting an input
+    on that shape as one row (a single lane is 0-d); None for it where no
+    lane needs the global check (S4 or S7 is the whole fit on this ground,
+    or no lane is a candidate)."""
+    shape = np.shape(candidates)
+    crosses = np.zeros(shape, dtype=bool)
+    if ground.local_fit_is_global or not np.any(candidates):
+        return crosses, None
+    return crosses, lambda x: np.reshape(np.broadcast_to(x, shape), -1)
+
+
 def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
     """Where the rim, fitting by S4 near its contact, leaves the wall away
     from it (docs/surfaces.md eq. S4g): never where S4 is the whole fit (the
@@ -115,14 +127,9 @@ def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
     rim neither the tangent ball (a <= r_P |sin(alpha + beta)|, less a
     margin) nor, inside, the tangent cone (the wall bending outwards over
     the rim's heights) holds are sampled (:func:`deathsphere.physics.rim_fit.rim_crosses_wall`)."""
-    shape = np.shape(candidates)
-    crosses = np.zeros(shape, dtype=bool)
-    if ground.local_fit_is_global or not np.any(candidates):
+    crosses, flat = _global_check(ground, candidates)
+    if flat is None:
         return crosses
-
-    def flat(x):        # every input on the lanes' shape, as one row (a single lane is 0-d)
-        return np.reshape(np.broadcast_to(x, shape), -1)
-
     reach = flat(ground.tangent_ball_radius(where["at"], outside))
     check = np.flatnonzero(flat(candidates))
     a, alpha, tilt, outside = flat(a), flat(alpha), flat(tilt), flat(outside)
@@ -138,7 +145,7 @@ def _rim_crosses(ground, where, alpha, a, tilt, outside, candidates):
         out = crosses.reshape(-1)
         out[check] = _rim_fit.rim_crosses_wall(ground, flat(where["rho"])[check], flat(where["z"])[check],
                                                alpha[check], a[check], outside[check])
-        crosses = out.reshape(shape)
+        crosses = out.reshape(crosses.shape)
     return crosses
 
 
@@ -258,14 +265,9 @@ def _ball_crosses(ground, where, a, outside, candidates):
     a profile, the lanes the tangent ball r_P (less a margin) does not hold
     are decided by the centre's distance from the meridian and its mirror
     (:func:`deathsphere.physics.rim_fit.ball_crosses_wall`)."""
-    shape = np.shape(candidates)
-    crosses = np.zeros(shape, dtype=bool)
-    if ground.local_fit_is_global or not np.any(candidates):
+    crosses, flat = _global_check(ground, candidates)
+    if flat is None:
         return crosses
-
-    def flat(x):        # every input on the lanes' shape, as one row (a single lane is 0-d)
-        return np.reshape(np.broadcast_to(x, shape), -1)
-
     reach = flat(ground.tangent_ball_radius(where["at"], outside))
     a, outside = flat(a), flat(outside)
     check = np.flatnonzero(flat(candidates) & ~(a <= (1.0 - _rim_fit.BALL_MARGIN) * reach))
@@ -274,7 +276,7 @@ def _ball_crosses(ground, where, a, outside, candidates):
         out[check] = _rim_fit.ball_crosses_wall(ground, flat(where["rho"])[check], flat(where["z"])[check],
                                                 flat(where["sin_beta"])[check], flat(where["cos_beta"])[check],
                                                 a[check], outside[check])
-        crosses = out.reshape(shape)
+        crosses = out.reshape(crosses.shape)
     return crosses
 
 
