@@ -166,14 +166,19 @@ def test_a_lane_typed_above_the_wall_is_refused_by_every_command(run, command, e
     assert "'--height'" in res.stderr and "at most 3 m on this cylinder" in res.stderr and "got 4 m" in res.stderr
 
 
-def test_a_row_of_a_file_off_the_wall_is_a_status(run, tmp_path):
-    # in a batch every row yields its row: the one above the wall's top says why
+def _rows_of_a_file_on_the_drum(run, tmp_path, command, text):
+    """``command --input`` of the lanes ``text`` on a 9 m drum 3 m high: its rows."""
     path = tmp_path / "lanes.csv"
-    path.write_text("height,alpha\n2,10\n4,10\n")
-    res = run("orbit", "--input", str(path), "--surface", "cylinder", "--diameter", "9", "--wall-height", "3",
+    path.write_text(text)
+    res = run(command, "--input", str(path), "--surface", "cylinder", "--diameter", "9", "--wall-height", "3",
               "--format", "csv")
     assert res.exit_code == 0, res.stderr
-    got = rows(res.stdout)
+    return rows(res.stdout)
+
+
+def test_a_row_of_a_file_off_the_wall_is_a_status(run, tmp_path):
+    # in a batch every row yields its row: the one above the wall's top says why
+    got = _rows_of_a_file_on_the_drum(run, tmp_path, "orbit", "height,alpha\n2,10\n4,10\n")
     assert [r["status"] for r in got] == ["ok", "no_fit"] and "above the wall's top" in got[1]["reason"]
 
 
@@ -191,12 +196,7 @@ def test_bad_profile_files_are_one_line_and_exit_2(run, tmp_path, text, words):
 
 
 def test_limits_of_a_file_row_off_the_wall_is_its_no_fit_row(run, tmp_path):
-    path = tmp_path / "lanes.csv"
-    path.write_text("height\n2\n4\n")
-    res = run("limits", "--input", str(path), "--surface", "cylinder", "--diameter", "9", "--wall-height", "3",
-              "--format", "csv")
-    assert res.exit_code == 0, res.stderr
-    on, off = rows(res.stdout)
+    on, off = _rows_of_a_file_on_the_drum(run, tmp_path, "limits", "height\n2\n4\n")
     assert on["status"] == "ok" and int(on["intervals"]) == 1
     # the lane echoed as given, its status and reason the orbit's
     assert (off["status"], float(off["height_m"])) == ("no_fit", 4.0) and "above the wall's top" in off["reason"]
